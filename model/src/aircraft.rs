@@ -1,0 +1,313 @@
+//! Aircraft data: the inertia coefficients and dimensional derivatives of Table A.1, exact.
+//!
+//! Every value is held as the exact rational its decimal literal denotes (`-13.52504` is
+//! `-338126/25000`), so that the symbolic derivation specialised to an aircraft is exact and the
+//! only rounding happens once, when a result is printed or emitted. Built-in aircraft A and B are
+//! Table A.1 of the paper; users bring their own as TOML (see [`crate::aircraft::load`]).
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{ToPrimitive, Zero};
+use std::str::FromStr;
+
+mod load;
+pub use load::{load, parse, AircraftError, Location};
+
+/// The seventeen parameters of the PSS model (Appendix A.2), in the paper's notation.
+///
+/// The order is the order of the fields of the generated `Derivatives` struct and of the
+/// TOML keys in error messages; it never changes silently.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Param {
+    /// Inertia coupling coefficient in pitch, C = (Iz - Ix)/Iy.
+    C,
+    /// Inertia coupling coefficient in yaw, D = (Iy - Ix)/Iz.
+    D,
+    /// Inertia coupling coefficient in roll, E = (Iz - Iy)/Ix.
+    E,
+    /// z_alpha, 1/s.
+    ZAlpha,
+    /// y_beta, 1/s.
+    YBeta,
+    /// l_p, 1/s.
+    Lp,
+    /// l_r, 1/s.
+    Lr,
+    /// l_beta, 1/s^2.
+    LBeta,
+    /// l_delta_a, 1/s^2.
+    LDeltaA,
+    /// m_q, 1/s.
+    Mq,
+    /// m_alpha, 1/s^2.
+    MAlpha,
+    /// m_delta_e, 1/s^2.
+    MDeltaE,
+    /// n_p, 1/s.
+    Np,
+    /// n_r, 1/s.
+    Nr,
+    /// n_beta, 1/s^2.
+    NBeta,
+    /// n_delta_a, 1/s^2.
+    NDeltaA,
+    /// n_delta_r, 1/s^2.
+    NDeltaR,
+}
+
+impl Param {
+    /// All parameters in their fixed order.
+    pub const ALL: [Param; 17] = [
+        Param::C,
+        Param::D,
+        Param::E,
+        Param::ZAlpha,
+        Param::YBeta,
+        Param::Lp,
+        Param::Lr,
+        Param::LBeta,
+        Param::LDeltaA,
+        Param::Mq,
+        Param::MAlpha,
+        Param::MDeltaE,
+        Param::Np,
+        Param::Nr,
+        Param::NBeta,
+        Param::NDeltaA,
+        Param::NDeltaR,
+    ];
+
+    /// Snake-case name: the TOML key (`[derivatives]` or `[inertia]`) and the Rust field name.
+    pub fn key(self) -> &'static str {
+        match self {
+            Param::C => "C",
+            Param::D => "D",
+            Param::E => "E",
+            Param::ZAlpha => "z_alpha",
+            Param::YBeta => "y_beta",
+            Param::Lp => "l_p",
+            Param::Lr => "l_r",
+            Param::LBeta => "l_beta",
+            Param::LDeltaA => "l_delta_a",
+            Param::Mq => "m_q",
+            Param::MAlpha => "m_alpha",
+            Param::MDeltaE => "m_delta_e",
+            Param::Np => "n_p",
+            Param::Nr => "n_r",
+            Param::NBeta => "n_beta",
+            Param::NDeltaA => "n_delta_a",
+            Param::NDeltaR => "n_delta_r",
+        }
+    }
+
+    /// LaTeX symbol as printed in the paper.
+    pub fn latex(self) -> &'static str {
+        match self {
+            Param::C => "C",
+            Param::D => "D",
+            Param::E => "E",
+            Param::ZAlpha => "z_\\alpha",
+            Param::YBeta => "y_\\beta",
+            Param::Lp => "l_p",
+            Param::Lr => "l_r",
+            Param::LBeta => "l_\\beta",
+            Param::LDeltaA => "l_{\\delta a}",
+            Param::Mq => "m_q",
+            Param::MAlpha => "m_\\alpha",
+            Param::MDeltaE => "m_{\\delta e}",
+            Param::Np => "n_p",
+            Param::Nr => "n_r",
+            Param::NBeta => "n_\\beta",
+            Param::NDeltaA => "n_{\\delta a}",
+            Param::NDeltaR => "n_{\\delta r}",
+        }
+    }
+
+    /// Unit of the parameter, for documentation.
+    pub fn unit(self) -> &'static str {
+        match self {
+            Param::C | Param::D | Param::E => "1",
+            Param::ZAlpha | Param::YBeta | Param::Lp | Param::Lr | Param::Mq | Param::Np => "1/s",
+            Param::Nr => "1/s",
+            _ => "1/s^2",
+        }
+    }
+
+    /// Position in [`Param::ALL`].
+    pub fn index(self) -> usize {
+        self as usize
+    }
+}
+
+/// Speed used for the g/V terms of the 7th-order model when a file gives none.
+///
+/// The paper does not state a speed. 150 m/s (Mach 0.45 at sea level) is a typical speed for the
+/// rapid-roll manoeuvres of fighter aircraft of this class; it only affects the slow gravity
+/// terms (g/V = 0.065 1/s), not the PSS model or the criterion.
+pub const DEFAULT_SPEED_M_S: f64 = 150.0;
+
+/// One aircraft: a name, the 17 exact parameters, and the speed for the 7th-order model.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Aircraft {
+    /// Display name, e.g. "Aircraft A".
+    pub name: String,
+    values: Vec<BigRational>,
+    /// Flight speed in m/s (only used by the g/V terms of the 7th-order model, Appendix A.1).
+    pub speed: f64,
+}
+
+impl Aircraft {
+    /// Builds an aircraft from exact values in [`Param::ALL`] order.
+    pub fn new(name: impl Into<String>, values: Vec<BigRational>, speed: f64) -> Self {
+        assert_eq!(values.len(), Param::ALL.len(), "one value per parameter");
+        Aircraft {
+            name: name.into(),
+            values,
+            speed,
+        }
+    }
+
+    /// Builds an aircraft from decimal literals in [`Param::ALL`] order (for built-ins and tests).
+    pub fn from_decimals(name: &str, decimals: [&str; 17], speed: f64) -> Self {
+        let values = decimals
+            .iter()
+            .map(|s| decimal_to_rational(s).expect("built-in decimal literal"))
+            .collect();
+        Aircraft::new(name, values, speed)
+    }
+
+    /// The exact value of a parameter.
+    pub fn exact(&self, p: Param) -> &BigRational {
+        &self.values[p.index()]
+    }
+
+    /// The value of a parameter rounded once to f64.
+    pub fn value(&self, p: Param) -> f64 {
+        rational_to_f64(self.exact(p))
+    }
+
+    /// All values rounded to f64, in [`Param::ALL`] order.
+    pub fn values_f64(&self) -> [f64; 17] {
+        let mut out = [0.0; 17];
+        for p in Param::ALL {
+            out[p.index()] = self.value(p);
+        }
+        out
+    }
+
+    /// Aircraft A of Table A.1 (after ref. 9 of the paper).
+    pub fn a() -> Self {
+        Aircraft::from_decimals(
+            "Aircraft A",
+            [
+                "0.959", "0.786", "0.705", "-3.0076", "-0.0558", "-21.7529", "1.5207", "-110.45",
+                "-327.28", "-1.815", "-13.52504", "-33.268", "0", "-0.2608", "3.716", "0", "-1",
+            ],
+            DEFAULT_SPEED_M_S,
+        )
+    }
+
+    /// Aircraft B of Table A.1 (after ref. 2 of the paper).
+    pub fn b() -> Self {
+        Aircraft::from_decimals(
+            "Aircraft B",
+            [
+                "0.949", "0.716", "0.727", "-1.329", "-0.196", "-3.933", "0.126", "-9.99",
+                "-45.83", "-0.814", "-23.18", "-28.37", "0", "-0.235", "5.67", "0", "-1",
+            ],
+            DEFAULT_SPEED_M_S,
+        )
+    }
+
+    /// A built-in aircraft by its short name (`A` or `B`, case-insensitive).
+    pub fn builtin(name: &str) -> Option<Self> {
+        match name.to_ascii_uppercase().as_str() {
+            "A" => Some(Aircraft::a()),
+            "B" => Some(Aircraft::b()),
+            _ => None,
+        }
+    }
+}
+
+/// Parses a decimal literal (`-13.52504`, `1e-3`, `2.5E+2`) into the exact rational it denotes.
+pub fn decimal_to_rational(s: &str) -> Option<BigRational> {
+    let s = s.trim();
+    let (mantissa, exp) = match s.find(['e', 'E']) {
+        Some(i) => (&s[..i], i64::from_str(&s[i + 1..]).ok()?),
+        None => (s, 0),
+    };
+    let (neg, digits) = match mantissa.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, mantissa.strip_prefix('+').unwrap_or(mantissa)),
+    };
+    let (int_part, frac_part) = match digits.find('.') {
+        Some(i) => (&digits[..i], &digits[i + 1..]),
+        None => (digits, ""),
+    };
+    if int_part.is_empty() && frac_part.is_empty() {
+        return None;
+    }
+    if !int_part.chars().chain(frac_part.chars()).all(|c| c.is_ascii_digit()) {
+        return None;
+    }
+    let all = format!("{int_part}{frac_part}");
+    let mut num = BigInt::from_str(if all.is_empty() { "0" } else { &all }).ok()?;
+    if neg {
+        num = -num;
+    }
+    let scale = exp - frac_part.len() as i64;
+    if scale.unsigned_abs() > 400 {
+        return None;
+    }
+    let ten = BigInt::from(10);
+    let p = num_traits::pow(ten, scale.unsigned_abs() as usize);
+    Some(if scale >= 0 {
+        BigRational::from_integer(num * p)
+    } else {
+        BigRational::new(num, p)
+    })
+}
+
+/// The exact rational denoted by the shortest decimal that round-trips to `x`.
+///
+/// TOML numbers arrive as f64; Rust prints the shortest round-trip decimal, which is the literal
+/// the user wrote whenever it had at most 17 significant digits. Returns `None` for NaN or inf.
+pub fn f64_to_rational(x: f64) -> Option<BigRational> {
+    if !x.is_finite() {
+        return None;
+    }
+    decimal_to_rational(&format!("{x:e}"))
+}
+
+/// Rounds an exact rational to the nearest f64 (within one ulp).
+pub fn rational_to_f64(q: &BigRational) -> f64 {
+    if q.is_zero() {
+        return 0.0;
+    }
+    q.to_f64().unwrap_or(f64::NAN)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimals_enter_as_the_exact_rational_they_denote() {
+        let q = decimal_to_rational("-13.52504").unwrap();
+        assert_eq!(q, BigRational::new((-1352504).into(), 100000.into()));
+        assert_eq!(
+            decimal_to_rational("2.5e-3").unwrap(),
+            BigRational::new(1.into(), 400.into())
+        );
+        assert_eq!(f64_to_rational(-110.45).unwrap(), decimal_to_rational("-110.45").unwrap());
+        assert!(f64_to_rational(f64::NAN).is_none());
+        assert!(decimal_to_rational("1.2.3").is_none());
+    }
+
+    #[test]
+    fn builtin_aircraft_are_table_a1() {
+        let a = Aircraft::a();
+        assert_eq!(a.value(Param::MAlpha), -13.52504);
+        assert_eq!(Aircraft::b().value(Param::LDeltaA), -45.83);
+    }
+}

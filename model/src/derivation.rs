@@ -1,0 +1,362 @@
+//! The paper's derivation (sections II, IV, V), carried out by the algebra layer.
+//!
+//! Every result is derived from [`crate::equations::pss`]; nothing is transcribed from the
+//! paper, whose printed signs disagree with each other in places (compare the p-terms of Eq. 13
+//! with Eq. 28). The identity of step 7, `det J5 = d det K`, checks the whole chain.
+//!
+//! A derivation is either *parametric* (every parameter a symbol: what the emitter turns into
+//! code and LaTeX) or *specialised* to an aircraft and elevator setting (parameters replaced by
+//! their exact rational values before the first step: what `model analyze` uses, because the
+//! resulting polynomials are univariate in P0 and tiny). Both run the same code.
+//!
+//! Rational functions are never normalized: trims are numerators over the common denominator
+//! `det A`, and the stiffness matrix is kept as `K = K0 - g h^T / d`, whose determinant times
+//! `d` is a polynomial (matrix determinant lemma).
+
+use crate::aircraft::Param;
+use crate::algebra::{Matrix, Poly, Q, Sym};
+use crate::equations::{pss, symbols, Symbols};
+
+/// A quotient `num / den` of two polynomials, not normalized.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Ratio {
+    /// Numerator.
+    pub num: Poly,
+    /// Denominator.
+    pub den: Poly,
+}
+
+/// The results of the derivation, each named after the paper's equation.
+#[derive(Clone, Debug)]
+pub struct Derivation {
+    /// The PSS model (Appendix A.2) with the fixed values substituted, d/dt [alpha,beta,p,q,r].
+    pub model: [Poly; 5],
+    /// The PSS model used for unconstrained rolls: as `model` with n_delta_a = 0 (and delta_r
+    /// substituted when a value was given). See [`Derivation::derive`].
+    pub unconstrained_model: [Poly; 5],
+    /// Eq. 2: the 4x4 matrix A of the trim system in x = [alpha, beta, q, r] at p = P0.
+    pub a: Matrix,
+    /// Eq. 1-2: the constant part `b u + b1 P0` of the trim system `A x + b u + b1 P0 = 0`.
+    pub a_rhs: Vec<Poly>,
+    /// Eq. 4: det A, the common denominator of the trim states.
+    pub det_a: Poly,
+    /// Eq. 3-4: numerators of [alpha0, beta0, Q0, R0] over `det_a`: `-adj(A) (b u + b1 P0)`.
+    pub trim: [Poly; 4],
+    /// Eq. 5: coefficients of P0^0, P0^2, P0^4 of det A (odd powers vanish identically).
+    pub biquadratic: [Poly; 3],
+    /// The aileron deflection that holds a trim, from the roll equation, in trim symbols.
+    pub delta_a: Ratio,
+    /// The 5x5 Jacobian of the PSS model at the trim (alpha0, beta0, P0, Q0, R0).
+    pub jacobian: Matrix,
+    /// Eqs. 6-10: the linearized equations, right-hand sides in the perturbations.
+    pub linearized: [Poly; 5],
+    /// Eq. 11: q in terms of alpha, alpha_dot, beta, p.
+    pub q_elim: Poly,
+    /// Eq. 12: r in terms of alpha, beta, beta_dot, p.
+    pub r_elim: Poly,
+    /// Eqs. 13-14: the coupled second-order equations (= 0), leading coefficients 1.
+    pub second_order: [Poly; 2],
+    /// Eq. 21: the roll-mode equation, d p / dt in terms of alpha, alpha_dot, beta, beta_dot, p.
+    pub roll_mode: Poly,
+    /// Eq. 22: the static-residual denominator d = l_p + l_r alpha0 - E Q0 alpha0 - E R0 beta0.
+    pub d: Poly,
+    /// Eq. 22: `h = [h_alpha, h_beta]` with the static residual `p_s = -(h . y) / d`.
+    pub h: [Poly; 2],
+    /// Eqs. 24-25: d p_s / d alpha and d p_s / d beta.
+    pub dps: [Ratio; 2],
+    /// Eq. 16: the stiffness matrix without the roll residual (coefficients of y in Eqs 13-14).
+    pub k0: [[Poly; 2]; 2],
+    /// Coefficients of p in Eqs 13-14 (g); the residual terms are `f_ij = -g_i h_j / d`.
+    pub g: [Poly; 2],
+    /// Eqs. 16, 27-31: `d K` entry by entry, `d K0_ij - g_i h_j`.
+    pub k_times_d: [[Poly; 2]; 2],
+    /// Eq. 27: `d det K = d det K0 - h^T adj(K0) g`, a polynomial.
+    pub d_det_k: Poly,
+    /// det J5 at the trim, in trim symbols.
+    pub det_j5: Poly,
+    /// Step 7: `det J5 - d det K`; identically zero.
+    pub identity_residual: Poly,
+    /// Step 8: the jump polynomial `det J5 * det(A)^2` in P0 (trims substituted).
+    pub jump: Poly,
+    /// `d * det A` in P0: its roots (not cancelled by det A) are the poles of det K.
+    pub d_det_a: Poly,
+    /// Eqs. 32-34: the zero-sideslip trim system in [alpha, q, r] (beta = 0, delta_r freed).
+    pub zs_a: Matrix,
+    /// Eq. 35: det of the zero-sideslip system, common denominator of `zs_trim`.
+    pub zs_det: Poly,
+    /// Eq. 35: numerators of [alpha0, Q0, R0] of the zero-sideslip trim.
+    pub zs_trim: [Poly; 3],
+    /// Eq. 35: the rudder deflection holding beta = 0, in trim symbols and delta_a.
+    pub zs_delta_r: Ratio,
+    /// The aileron deflection of the zero-sideslip trim, in trim symbols.
+    pub zs_delta_a: Ratio,
+    /// det J5 at the zero-sideslip trim times `zs_det^2`, in P0.
+    pub zs_jump: Poly,
+    /// `d * zs_det` at the zero-sideslip trim, in P0.
+    pub zs_d_det: Poly,
+}
+
+impl Derivation {
+    /// The derivation with every parameter and control a symbol.
+    pub fn parametric() -> Derivation {
+        Derivation::derive(&[])
+    }
+
+    /// The derivation specialised to exact parameter and control values.
+    ///
+    /// `values` may fix any symbol of the model (parameters, delta_e, delta_r). A value for
+    /// delta_r applies to the unconstrained roll only: the zero-sideslip trim frees the rudder.
+    pub fn derive(values: &[(Sym, Q)]) -> Derivation {
+        let s = symbols();
+        let base_values: Vec<(Sym, Q)> =
+            values.iter().filter(|(v, _)| *v != s.delta_r).cloned().collect();
+        let model = pss().map(|f| f.subs_values(&base_values));
+        // With n_delta_a != 0 the aileron enters the yaw equation and, for given P0, the trim
+        // is no longer linear in (alpha, beta, q, r): the aileron then solves a quadratic. The
+        // paper's aircraft have n_delta_a = 0 and so does the P0-parametrised criterion.
+        let mut unc_values: Vec<(Sym, Q)> = values
+            .iter()
+            .filter(|(v, _)| *v == s.delta_r)
+            .cloned()
+            .collect();
+        unc_values.push((s.param(Param::NDeltaA), Q::ZERO));
+        let unc = model.clone().map(|f| f.subs_values(&unc_values));
+
+        let at_trim = |f: &Poly| -> Poly {
+            f.subs_all(
+                &s.states()
+                    .iter()
+                    .zip(s.trims())
+                    .map(|(x, t)| (*x, Poly::var(t)))
+                    .collect::<Vec<_>>(),
+            )
+        };
+
+        // Step 1, Eqs 1-5: the trim system with p = P0 is linear in [alpha, beta, q, r].
+        let unknowns = [s.alpha, s.beta, s.q, s.r];
+        let at_p0: Vec<Poly> = [0usize, 1, 3, 4]
+            .iter()
+            .map(|&i| unc[i].subs(s.p, &Poly::var(s.p0)))
+            .collect();
+        let (a, a_rhs) = linear_system(&at_p0, &unknowns);
+        let (trim, det_a) = solve(&a, &a_rhs);
+        let biquadratic = {
+            let c = det_a.coeffs(s.p0);
+            assert!(
+                c.len() == 5 && c[1].is_zero() && c[3].is_zero(),
+                "Eq. 5: det A must be a biquadratic in P0"
+            );
+            [c[0].clone(), c[2].clone(), c[4].clone()]
+        };
+        let delta_a = solve_for(&at_trim(&unc[2]), s.delta_a);
+
+        // Step 2, Eqs 6-10: linearize by symbolic differentiation at the trim.
+        let jacobian = Matrix::from_rows(
+            unc.iter()
+                .map(|f| s.states().iter().map(|x| at_trim(&f.diff(*x))).collect())
+                .collect(),
+        );
+        let linearized: [Poly; 5] = std::array::from_fn(|i| {
+            s.states().iter().enumerate().fold(Poly::zero(), |acc, (j, x)| {
+                &acc + &(jacobian.get(i, j) * &Poly::var(*x))
+            })
+        });
+
+        // Step 3, Eqs 11-15: q from the alpha equation, r from the beta equation.
+        let q_elim = solve_for(&(&linearized[0] - &Poly::var(s.alpha_dot)), s.q).as_poly();
+        let r_elim = solve_for(&(&linearized[1] - &Poly::var(s.beta_dot)), s.r).as_poly();
+        let elim = |f: &Poly| f.subs_all(&[(s.q, q_elim.clone()), (s.r, r_elim.clone())]);
+        let eq13 = &time_derivative(s, &q_elim) - &elim(&linearized[3]);
+        let eq14 = &time_derivative(s, &r_elim) - &elim(&linearized[4]);
+        let second_order = [monic_in(&eq13, s.alpha_ddot), monic_in(&eq14, s.beta_ddot)];
+
+        // Step 4, Eqs 21-26: roll mode and its static residual (alpha_dot = beta_dot = 0).
+        let roll_mode = elim(&linearized[2]);
+        let statics = roll_mode
+            .subs_values(&[(s.alpha_dot, Q::ZERO), (s.beta_dot, Q::ZERO)]);
+        let d = statics.coeff(s.p, 1).coeff(s.alpha, 0).coeff(s.beta, 0);
+        let h = [
+            statics.coeff(s.alpha, 1).coeff(s.p, 0),
+            statics.coeff(s.beta, 1).coeff(s.p, 0),
+        ];
+        let dps = h.clone().map(|hj| Ratio {
+            num: -hj,
+            den: d.clone(),
+        });
+
+        // Step 5, Eqs 16, 27-31: stiffness matrix with p = p_s substituted.
+        let y = [s.alpha, s.beta];
+        let k0: [[Poly; 2]; 2] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| coefficient_of(&second_order[i], y[j]))
+        });
+        let g: [Poly; 2] = std::array::from_fn(|i| coefficient_of(&second_order[i], s.p));
+        let k_times_d: [[Poly; 2]; 2] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| &(&d * &k0[i][j]) - &(&g[i] * &h[j]))
+        });
+        let k0m = Matrix::from_rows(k0.iter().map(|r| r.to_vec()).collect());
+        let adj = k0m.adjugate();
+        let h_adj_g = (0..2).fold(Poly::zero(), |acc, i| {
+            (0..2).fold(acc, |acc, j| &acc + &(&(&h[i] * adj.get(i, j)) * &g[j]))
+        });
+        let d_det_k = &(&d * &k0m.det()) - &h_adj_g;
+
+        // Step 7: det J5 = d det K, identically in the trim symbols.
+        let det_j5 = jacobian.det();
+        let identity_residual = &det_j5 - &d_det_k;
+
+        // Step 8: substitute the trim and clear denominators.
+        let trims4 = [s.alpha0, s.beta0, s.q0, s.r0];
+        let jump = homogenize(&det_j5, &trims4, &trim, &det_a);
+        let d_det_a = homogenize(&d, &trims4, &trim, &det_a);
+
+        // Step 6, Eqs 32-35: zero sideslip; the rudder is freed and beta = 0.
+        let zs_eqs: Vec<Poly> = [0usize, 1, 3]
+            .iter()
+            .map(|&i| {
+                model[i].subs_all(&[(s.p, Poly::var(s.p0)), (s.beta, Poly::zero())])
+            })
+            .collect();
+        assert!(
+            zs_eqs.iter().all(|e| !e.contains(s.delta_r)),
+            "Eq. 34: A1 is block-triangular, the rudder only enters the yaw equation"
+        );
+        let (zs_a, zs_rhs) = linear_system(&zs_eqs, &[s.alpha, s.q, s.r]);
+        let (zs_trim_v, zs_det) = solve(&zs_a, &zs_rhs);
+        let zs_trim: [Poly; 3] = [zs_trim_v[0].clone(), zs_trim_v[1].clone(), zs_trim_v[2].clone()];
+        let zs_at_trim = |f: &Poly| at_trim(f).subs(s.beta0, &Poly::zero());
+        let zs_delta_r = solve_for(&zs_at_trim(&model[4]), s.delta_r);
+        let zs_delta_a = solve_for(&zs_at_trim(&model[2]), s.delta_a);
+        let trims3 = [s.alpha0, s.q0, s.r0];
+        let zs_jump = homogenize(&det_j5.subs(s.beta0, &Poly::zero()), &trims3, &zs_trim, &zs_det);
+        let zs_d_det = homogenize(&d.subs(s.beta0, &Poly::zero()), &trims3, &zs_trim, &zs_det);
+
+        Derivation {
+            model,
+            unconstrained_model: unc,
+            a,
+            a_rhs,
+            det_a,
+            trim: [trim[0].clone(), trim[1].clone(), trim[2].clone(), trim[3].clone()],
+            biquadratic,
+            delta_a,
+            jacobian,
+            linearized,
+            q_elim,
+            r_elim,
+            second_order,
+            roll_mode,
+            d,
+            h,
+            dps,
+            k0,
+            g,
+            k_times_d,
+            d_det_k,
+            det_j5,
+            identity_residual,
+            jump,
+            d_det_a,
+            zs_a,
+            zs_det,
+            zs_trim,
+            zs_delta_r,
+            zs_delta_a,
+            zs_jump,
+            zs_d_det,
+        }
+    }
+}
+
+impl Ratio {
+    /// The quotient as a polynomial when the denominator is a constant.
+    ///
+    /// Panics when it is not: used only where the derivation has shown it (e.g. Eq. 11 divides
+    /// by the coefficient 1 of q).
+    pub fn as_poly(&self) -> Poly {
+        let c = self
+            .den
+            .as_constant()
+            .expect("denominator is a constant by construction");
+        self.num.scale(&Q::ONE.div(&c))
+    }
+}
+
+/// Splits equations that are linear in `unknowns` into `A x + c = 0`.
+fn linear_system(eqs: &[Poly], unknowns: &[Sym]) -> (Matrix, Vec<Poly>) {
+    for e in eqs {
+        assert!(e.degree_in(unknowns) <= 1, "trim equations must be linear in the unknowns");
+    }
+    let rows = eqs
+        .iter()
+        .map(|e| unknowns.iter().map(|u| e.coeff(*u, 1)).collect())
+        .collect();
+    let zero: Vec<(Sym, Q)> = unknowns.iter().map(|u| (*u, Q::ZERO)).collect();
+    (Matrix::from_rows(rows), eqs.iter().map(|e| e.subs_values(&zero)).collect())
+}
+
+/// Solves `A x + c = 0`: numerators `-adj(A) c` over the common denominator `det A`.
+fn solve(a: &Matrix, c: &[Poly]) -> (Vec<Poly>, Poly) {
+    let (num, den) = a.solve(c);
+    (num.iter().map(|n| -n).collect(), den)
+}
+
+/// Solves `f = 0` for `x`, where `f` is linear in `x`: `x = -f|_{x=0} / (df/dx)`.
+fn solve_for(f: &Poly, x: Sym) -> Ratio {
+    assert!(f.degree(x) == 1, "equation must be linear in {x}");
+    Ratio {
+        num: -f.coeff(x, 0),
+        den: f.coeff(x, 1),
+    }
+}
+
+/// Divides `f` by its (constant) coefficient of `x`, making the equation monic in `x`.
+fn monic_in(f: &Poly, x: Sym) -> Poly {
+    let c = f.coeff(x, 1).as_constant().expect("leading coefficient is a constant");
+    f.scale(&Q::ONE.div(&c))
+}
+
+/// The coefficient of the perturbation `x` in an expression linear in the perturbations.
+fn coefficient_of(f: &Poly, x: Sym) -> Poly {
+    f.coeff(x, 1)
+}
+
+/// d/dt of an expression linear in the perturbations (trims and parameters are constant).
+fn time_derivative(s: &Symbols, f: &Poly) -> Poly {
+    let chain = [
+        (s.alpha, s.alpha_dot),
+        (s.alpha_dot, s.alpha_ddot),
+        (s.beta, s.beta_dot),
+        (s.beta_dot, s.beta_ddot),
+        (s.p, s.p_dot),
+    ];
+    for x in [s.q, s.r, s.alpha_ddot, s.beta_ddot, s.p_dot] {
+        assert!(!f.contains(x), "time derivative of {x} is not part of the derivation");
+    }
+    chain.iter().fold(Poly::zero(), |acc, (x, xd)| {
+        &acc + &(&f.diff(*x) * &Poly::var(*xd))
+    })
+}
+
+/// Substitutes `t_i = num_i / den` into `f` (of degree k in the `t_i`) and multiplies by
+/// `den^k`, giving a polynomial: each term of degree j in the `t_i` gets `den^(k-j)`.
+fn homogenize(f: &Poly, t: &[Sym], num: &[Poly], den: &Poly) -> Poly {
+    let k = f.degree_in(t);
+    let mut den_pows = vec![Poly::int(1)];
+    for _ in 0..k {
+        let next = den_pows.last().map(|p| p * den).unwrap_or_default();
+        den_pows.push(next);
+    }
+    // Group the terms of f by their degree in t, substitute the numerators, scale by den^(k-j).
+    let mut by_degree = vec![Poly::zero(); k as usize + 1];
+    for (m, c) in f.terms() {
+        let j = t.iter().map(|s| m.exp(*s)).sum::<u32>() as usize;
+        by_degree[j] = &by_degree[j] + &Poly::term(*m, c.clone());
+    }
+    let subs: Vec<(Sym, Poly)> = t.iter().copied().zip(num.iter().cloned()).collect();
+    by_degree
+        .iter()
+        .enumerate()
+        .fold(Poly::zero(), |acc, (j, part)| {
+            &acc + &(&part.subs_all(&subs) * &den_pows[k as usize - j])
+        })
+}

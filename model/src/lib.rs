@@ -1,0 +1,15 @@
+//! Roll-coupling jump criterion of Mahale & Ananthkrishnan (AIAA 2006-6267), derived exactly.
+//!
+//! Data flow is one way: [`equations`] (Appendix A written once) -> [`derivation`] (the paper's
+//! steps, Eqs 1-35, as named symbolic results) -> [`analysis`] (what `model analyze` prints).
+//! [`algebra`] and [`aircraft`] depend on nothing of ours; [`roots`] isolates real roots of the
+//! univariate polynomials exactly.
+#![warn(missing_docs)]
+
+pub mod aircraft;
+pub mod algebra;
+pub mod analysis;
+pub mod derivation;
+pub mod equations;
+pub mod numeric;
+pub mod roots;

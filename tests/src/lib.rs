@@ -1,0 +1,145 @@
+//! An independent numeric oracle for the integration tests.
+//!
+//! Nothing here uses the symbolic layer: the PSS model of Appendix A.2 is written again by hand
+//! in f64, Jacobians are central differences, trims are solved with nalgebra's LU, and
+//! eigenvalues come from nalgebra. Tests compare the derived formulas against this.
+
+use nalgebra::{Matrix4, Matrix5, Vector4};
+
+/// Parameter values in the order C, D, E, z_alpha, y_beta, l_p, l_r, l_beta, l_delta_a, m_q,
+/// m_alpha, m_delta_e, n_p, n_r, n_beta, n_delta_a, n_delta_r (the order of `model::aircraft::Param::ALL`).
+pub type Params = [f64; 17];
+
+/// Named access to [`Params`].
+#[allow(missing_docs)]
+pub mod ix {
+    pub const C: usize = 0;
+    pub const D: usize = 1;
+    pub const E: usize = 2;
+    pub const ZA: usize = 3;
+    pub const YB: usize = 4;
+    pub const LP: usize = 5;
+    pub const LR: usize = 6;
+    pub const LB: usize = 7;
+    pub const LDA: usize = 8;
+    pub const MQ: usize = 9;
+    pub const MA: usize = 10;
+    pub const MDE: usize = 11;
+    pub const NP: usize = 12;
+    pub const NR: usize = 13;
+    pub const NB: usize = 14;
+    pub const NDA: usize = 15;
+    pub const NDR: usize = 16;
+}
+
+/// Appendix A.2 by hand: d/dt [alpha, beta, p, q, r] for controls u = [delta_a, delta_e, delta_r].
+pub fn pss_rhs(k: &Params, x: &[f64; 5], u: &[f64; 3]) -> [f64; 5] {
+    use ix::*;
+    let [a, b, p, q, r] = *x;
+    let [da, de, dr] = *u;
+    [
+        q - p * b + k[ZA] * a,
+        p * a - r + k[YB] * b,
+        k[LP] * p + k[LB] * b + k[LR] * r - k[E] * q * r + k[LDA] * da,
+        k[MQ] * q + k[MA] * a + k[C] * p * r + k[MDE] * de,
+        k[NR] * r + k[NB] * b + k[NP] * p - k[D] * p * q + k[NDR] * dr + k[NDA] * da,
+    ]
+}
+
+/// Central-difference Jacobian of [`pss_rhs`] with respect to the states.
+pub fn fd_jacobian(k: &Params, x: &[f64; 5], u: &[f64; 3]) -> Matrix5<f64> {
+    let mut j = Matrix5::zeros();
+    for c in 0..5 {
+        let h = 1e-6 * (1.0 + x[c].abs());
+        let (mut xp, mut xm) = (*x, *x);
+        xp[c] += h;
+        xm[c] -= h;
+        let (fp, fm) = (pss_rhs(k, &xp, u), pss_rhs(k, &xm, u));
+        for r in 0..5 {
+            j[(r, c)] = (fp[r] - fm[r]) / (2.0 * h);
+        }
+    }
+    j
+}
+
+/// The pseudo-steady trim at roll rate `p0` (n_delta_a = 0): [alpha, beta, q, r] from the
+/// four non-roll equations by LU, then delta_a from the roll equation. `None` if singular.
+pub fn trim(k: &Params, p0: f64, de: f64, dr: f64) -> Option<([f64; 5], f64)> {
+    use ix::*;
+    // Linear in y = [alpha, beta, q, r] at p = p0: columns from unit responses of the model.
+    let f = |y: [f64; 4]| {
+        let v = pss_rhs(k, &[y[0], y[1], p0, y[2], y[3]], &[0.0, de, dr]);
+        Vector4::new(v[0], v[1], v[3], v[4])
+    };
+    let c0 = f([0.0; 4]);
+    let mut a = Matrix4::zeros();
+    for i in 0..4 {
+        let mut e = [0.0; 4];
+        e[i] = 1.0;
+        a.set_column(i, &(f(e) - c0));
+    }
+    let y = a.lu().solve(&(-c0))?;
+    let x = [y[0], y[1], p0, y[2], y[3]];
+    let roll = pss_rhs(k, &x, &[0.0, de, dr])[2];
+    Some((x, -roll / k[LDA]))
+}
+
+/// Zero-sideslip trim at `p0`: [alpha, 0, p0, q, r], delta_a and delta_r, by LU on the
+/// alpha, beta, q equations with beta = 0, then the roll and yaw equations.
+pub fn zero_sideslip_trim(k: &Params, p0: f64, de: f64) -> Option<([f64; 5], f64, f64)> {
+    use ix::*;
+    let f = |y: [f64; 3]| {
+        let v = pss_rhs(k, &[y[0], 0.0, p0, y[1], y[2]], &[0.0, de, 0.0]);
+        nalgebra::Vector3::new(v[0], v[1], v[3])
+    };
+    let c0 = f([0.0; 3]);
+    let mut a = nalgebra::Matrix3::zeros();
+    for i in 0..3 {
+        let mut e = [0.0; 3];
+        e[i] = 1.0;
+        a.set_column(i, &(f(e) - c0));
+    }
+    let y = a.lu().solve(&(-c0))?;
+    let x = [y[0], 0.0, p0, y[1], y[2]];
+    let da = -pss_rhs(k, &x, &[0.0, de, 0.0])[2] / k[LDA];
+    let dr = -pss_rhs(k, &x, &[da, de, 0.0])[4] / k[NDR];
+    Some((x, da, dr))
+}
+
+/// The static-residual denominator d computed numerically: dp/dp of the roll equation after
+/// eliminating q and r, i.e. l_p + (l_r - E Q0) alpha0 - E R0 beta0, from the Jacobian.
+pub fn residual_denominator(j: &Matrix5<f64>) -> f64 {
+    // Eq. 11-12 at alpha_dot = beta_dot = 0, alpha = beta = 0: q = -J[0][2] p / J[0][3],
+    // r = -J[1][2] p / J[1][4]; then d = J[2][2] + J[2][3] q/p + J[2][4] r/p.
+    let q_per_p = -j[(0, 2)] / j[(0, 3)];
+    let r_per_p = -j[(1, 2)] / j[(1, 4)];
+    j[(2, 2)] + j[(2, 3)] * q_per_p + j[(2, 4)] * r_per_p
+}
+
+/// Real eigenvalues of a 5x5 matrix (imaginary part below `1e-9` relative).
+pub fn real_eigenvalues(j: &Matrix5<f64>) -> Vec<f64> {
+    j.complex_eigenvalues()
+        .iter()
+        .filter(|z| z.im.abs() <= 1e-9 * (1.0 + z.re.abs()))
+        .map(|z| z.re)
+        .collect()
+}
+
+/// A small deterministic generator for random test data (no dependency, reproducible).
+pub struct Lcg(pub u64);
+
+impl Lcg {
+    /// Uniform in [0, 1).
+    pub fn next_f64(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next_f64()
+    }
+}

@@ -3,7 +3,7 @@
 //! same run (one LU trim plus the eigenvalues of the 5x5 Jacobian: the route the criterion
 //! replaces, at a single P0).
 //!
-//! Run with `cargo bench -p model --bench derivation`.
+//! Also `emit` end to end (issue 3). Run with `cargo bench -p model --bench derivation`.
 
 use model::aircraft::Aircraft;
 use model::analysis::analyze;
@@ -34,16 +34,66 @@ fn baseline_numeric_trim_and_eigenvalues_one_p0() -> f64 {
     let k = Aircraft::a().values_f64();
     let [c, d, e, za, yb, lp, lr, lb, _lda, mq, ma, mde, np, nr, nb, _nda, _ndr] = k;
     let (p0, de) = (divan::black_box(1.7), 2f64.to_radians());
-    let a = Matrix4::new(za, -p0, 1.0, 0.0, p0, yb, 0.0, -1.0, ma, 0.0, mq, c * p0, 0.0, nb, -d * p0, nr);
+    let a = Matrix4::new(
+        za,
+        -p0,
+        1.0,
+        0.0,
+        p0,
+        yb,
+        0.0,
+        -1.0,
+        ma,
+        0.0,
+        mq,
+        c * p0,
+        0.0,
+        nb,
+        -d * p0,
+        nr,
+    );
     let rhs = Vector4::new(0.0, 0.0, -mde * de, -np * p0);
     let y = a.lu().solve(&rhs).unwrap();
     let (al, be, q, r) = (y[0], y[1], y[2], y[3]);
     let j = Matrix5::new(
-        za, -p0, -be, 1.0, 0.0, //
-        p0, yb, al, 0.0, -1.0, //
-        0.0, lb, lp, -e * r, lr - e * q, //
-        ma, 0.0, c * r, mq, c * p0, //
-        0.0, nb, np - d * q, -d * p0, nr,
+        za,
+        -p0,
+        -be,
+        1.0,
+        0.0, //
+        p0,
+        yb,
+        al,
+        0.0,
+        -1.0, //
+        0.0,
+        lb,
+        lp,
+        -e * r,
+        lr - e * q, //
+        ma,
+        0.0,
+        c * r,
+        mq,
+        c * p0, //
+        0.0,
+        nb,
+        np - d * q,
+        -d * p0,
+        nr,
     );
-    j.complex_eigenvalues().iter().map(|z| z.re).fold(f64::MIN, f64::max)
+    j.complex_eigenvalues()
+        .iter()
+        .map(|z| z.re)
+        .fold(f64::MIN, f64::max)
+}
+
+/// Issue 3: `emit` end to end (derive, CSE, print, format, write to a scratch directory).
+#[divan::bench]
+fn emit_end_to_end() -> usize {
+    let dir = std::env::temp_dir().join(format!("emit-bench-{}", std::process::id()));
+    let outputs = model::emit::generate().unwrap();
+    // Remove the previous run's files so that every iteration really writes.
+    let _ = std::fs::remove_dir_all(&dir);
+    model::emit::write(&dir, &outputs).unwrap().len()
 }

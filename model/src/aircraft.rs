@@ -200,8 +200,23 @@ impl Aircraft {
         Aircraft::from_decimals(
             "Aircraft A",
             [
-                "0.959", "0.786", "0.705", "-3.0076", "-0.0558", "-21.7529", "1.5207", "-110.45",
-                "-327.28", "-1.815", "-13.52504", "-33.268", "0", "-0.2608", "3.716", "0", "-1",
+                "0.959",
+                "0.786",
+                "0.705",
+                "-3.0076",
+                "-0.0558",
+                "-21.7529",
+                "1.5207",
+                "-110.45",
+                "-327.28",
+                "-1.815",
+                "-13.52504",
+                "-33.268",
+                "0",
+                "-0.2608",
+                "3.716",
+                "0",
+                "-1",
             ],
             DEFAULT_SPEED_M_S,
         )
@@ -247,7 +262,11 @@ pub fn decimal_to_rational(s: &str) -> Option<BigRational> {
     if int_part.is_empty() && frac_part.is_empty() {
         return None;
     }
-    if !int_part.chars().chain(frac_part.chars()).all(|c| c.is_ascii_digit()) {
+    if !int_part
+        .chars()
+        .chain(frac_part.chars())
+        .all(|c| c.is_ascii_digit())
+    {
         return None;
     }
     let all = format!("{int_part}{frac_part}");
@@ -299,7 +318,10 @@ mod tests {
             decimal_to_rational("2.5e-3").unwrap(),
             BigRational::new(1.into(), 400.into())
         );
-        assert_eq!(f64_to_rational(-110.45).unwrap(), decimal_to_rational("-110.45").unwrap());
+        assert_eq!(
+            f64_to_rational(-110.45).unwrap(),
+            decimal_to_rational("-110.45").unwrap()
+        );
         assert!(f64_to_rational(f64::NAN).is_none());
         assert!(decimal_to_rational("1.2.3").is_none());
     }

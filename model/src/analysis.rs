@@ -4,12 +4,13 @@
 //!
 //! The derivation is specialised to the aircraft's exact data and the elevator setting, so the
 //! criterion polynomials are univariate in P0 with exact rational coefficients. det K is the
-//! rational function `jump / (det A * d det A)`; common factors are cancelled exactly by
+//! rational function `jump / (d det(A)^2)` (both carry det(A)^2 from clearing the trim's
+//! denominators); common factors are cancelled exactly by
 //! univariate gcds before any root is sought, so a pole is never reported as a root, however
 //! close a true root lies.
 
 use crate::aircraft::{Aircraft, Param};
-use crate::algebra::{Poly, Q, Sym};
+use crate::algebra::{Poly, Sym, Q};
 use crate::derivation::{Derivation, Ratio};
 use crate::equations::symbols;
 use crate::roots::{positive_roots, UPoly};
@@ -118,7 +119,7 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         return Err(AnalysisError::AileronYaw(nda));
     }
     let s = symbols();
-    let d = Derivation::derive(&specialisation(aircraft, delta_e_rad));
+    let d = CriterionPolys::new(&Derivation::parametric(), aircraft, delta_e_rad);
     let u = |p: &Poly| univariate(p, s.p0);
 
     let det_a = u(&d.det_a);
@@ -128,7 +129,7 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
     let det_k_poles = positive_roots(&poles_num).iter().map(|r| r.value).collect();
 
     // A root shared with det A after cancellation has no finite trim: not a jump point.
-    let jump_num = strip(&cancel(&u(&d.jump), &det_a.mul(&u(&d.d_det_a))).0, &det_a);
+    let jump_num = strip(&cancel(&u(&d.jump), &u(&d.d_det_a)).0, &det_a);
     let trim_u: Vec<UPoly> = d.trim.iter().map(u).collect();
     let jump = positive_roots(&jump_num)
         .iter()
@@ -137,13 +138,30 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
             let [alpha, beta, q, r] = trim_at(&trim_u, &det_a, p0)[..] else {
                 unreachable!("four trim states")
             };
-            let da = eval_trim(&d.delta_a, &[(s.alpha0, alpha), (s.beta0, beta), (s.p0, p0), (s.q0, q), (s.r0, r)]);
-            JumpPoint { p0, delta_a_rad: da, delta_a_deg: da.to_degrees(), alpha, beta, q, r }
+            let da = eval_trim(
+                &d.delta_a,
+                &[
+                    (s.alpha0, alpha),
+                    (s.beta0, beta),
+                    (s.p0, p0),
+                    (s.q0, q),
+                    (s.r0, r),
+                ],
+            );
+            JumpPoint {
+                p0,
+                delta_a_rad: da,
+                delta_a_deg: da.to_degrees(),
+                alpha,
+                beta,
+                q,
+                r,
+            }
         })
         .collect();
 
     let zs_det = u(&d.zs_det);
-    let zs_num = strip(&cancel(&u(&d.zs_jump), &zs_det.mul(&u(&d.zs_d_det))).0, &zs_det);
+    let zs_num = strip(&cancel(&u(&d.zs_jump), &u(&d.zs_d_det)).0, &zs_det);
     let zs_trim_u: Vec<UPoly> = d.zs_trim.iter().map(u).collect();
     let departure = positive_roots(&zs_num)
         .iter()
@@ -152,8 +170,24 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
             let [alpha, q, r] = trim_at(&zs_trim_u, &zs_det, p0)[..] else {
                 unreachable!("three trim states")
             };
-            let da = eval_trim(&d.zs_delta_a, &[(s.alpha0, alpha), (s.beta0, 0.0), (s.p0, p0), (s.q0, q), (s.r0, r)]);
-            DeparturePoint { p0, delta_a_rad: da, delta_a_deg: da.to_degrees(), alpha, q, r }
+            let da = eval_trim(
+                &d.zs_delta_a,
+                &[
+                    (s.alpha0, alpha),
+                    (s.beta0, 0.0),
+                    (s.p0, p0),
+                    (s.q0, q),
+                    (s.r0, r),
+                ],
+            );
+            DeparturePoint {
+                p0,
+                delta_a_rad: da,
+                delta_a_deg: da.to_degrees(),
+                alpha,
+                q,
+                r,
+            }
         })
         .collect();
 
@@ -164,6 +198,140 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         jump,
         det_k_poles,
         zero_sideslip: ZeroSideslip { departure },
+    })
+}
+
+/// The criterion polynomials of one aircraft and elevator setting, univariate in P0, each
+/// exact up to a positive or negative constant factor (which moves no root and cancels in
+/// every ratio used: the trim `trim_i / det_a`, det K `jump / d_det_a`).
+///
+/// Built from the parametric derivation by substituting the data into the small trim-level
+/// results (det A, the trim numerators, det J5 and d in the trim symbols) with every
+/// denominator cleared by one integer scale per group, and only then clearing the trim's
+/// denominator (step 8) on dense univariate polynomials.
+/// `tests/tests/derivation.rs` checks that they are proportional to the fully specialised
+/// derivation's.
+#[derive(Clone, Debug)]
+pub struct CriterionPolys {
+    /// det A (Eq. 4), up to a constant.
+    pub det_a: Poly,
+    /// Numerators of [alpha0, beta0, Q0, R0] over `det_a`.
+    pub trim: [Poly; 4],
+    /// The aileron of a trim, in trim symbols (from the parametric derivation, data substituted).
+    pub delta_a: Ratio,
+    /// `det J5 det(A)^2` in P0, up to a constant.
+    pub jump: Poly,
+    /// `d det(A)^2` in P0, up to the same constant as `jump` times a constant.
+    pub d_det_a: Poly,
+    /// det A1 of the zero-sideslip trim, up to a constant.
+    pub zs_det: Poly,
+    /// Numerators of [alpha0, Q0, R0] of the zero-sideslip trim over `zs_det`.
+    pub zs_trim: [Poly; 3],
+    /// The aileron of a zero-sideslip trim, in trim symbols.
+    pub zs_delta_a: Ratio,
+    /// `det J5 det(A1)^2` at the zero-sideslip trim, up to a constant.
+    pub zs_jump: Poly,
+    /// `d det(A1)^2` at the zero-sideslip trim, up to a constant.
+    pub zs_d_det: Poly,
+}
+
+impl CriterionPolys {
+    /// Specialises the parametric derivation `par` to an aircraft at `delta_e_rad`, delta_r = 0.
+    pub fn new(par: &Derivation, aircraft: &Aircraft, delta_e_rad: f64) -> CriterionPolys {
+        let s = symbols();
+        let values = specialisation(aircraft, delta_e_rad);
+        let ratio = |r: &Ratio| Ratio {
+            num: r.num.subs_values(&values),
+            den: r.den.subs_values(&values),
+        };
+        // One scale for det A and the numerators keeps every trim ratio exact.
+        let cleared = |ps: &[&Poly]| {
+            Poly::subs_values_cleared(ps, &values)
+                .expect("the parametric derivation has integer coefficients")
+        };
+        let t = cleared(&[
+            &par.det_a,
+            &par.trim[0],
+            &par.trim[1],
+            &par.trim[2],
+            &par.trim[3],
+        ]);
+        let (det_a, trim) = (
+            t[0].clone(),
+            [t[1].clone(), t[2].clone(), t[3].clone(), t[4].clone()],
+        );
+        let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
+        let det_j5 = cleared(&[&par.det_j5])[0].clone();
+        let d = cleared(&[&par.d])[0].clone();
+        let jump = clear_denominators(&det_j5, &t4, &trim, &det_a);
+        let d_det_a = clear_denominators(&d, &t4, &trim, &det_a);
+
+        let z = cleared(&[
+            &par.zs_det,
+            &par.zs_trim[0],
+            &par.zs_trim[1],
+            &par.zs_trim[2],
+        ]);
+        let (zs_det, zs_trim) = (z[0].clone(), [z[1].clone(), z[2].clone(), z[3].clone()]);
+        let t3 = [s.alpha0, s.q0, s.r0];
+        let beta0_zero = [(s.beta0, Q::ZERO)];
+        let zs_jump = clear_denominators(&det_j5.subs_values(&beta0_zero), &t3, &zs_trim, &zs_det);
+        let zs_d_det = clear_denominators(&d.subs_values(&beta0_zero), &t3, &zs_trim, &zs_det);
+        CriterionPolys {
+            det_a,
+            trim,
+            delta_a: ratio(&par.delta_a),
+            jump,
+            d_det_a,
+            zs_det,
+            zs_trim,
+            zs_delta_a: ratio(&par.zs_delta_a),
+            zs_jump,
+            zs_d_det,
+        }
+    }
+}
+
+/// Step 8 for a specialised derivation: `f(t = num / den) den^k` as a polynomial in P0, where
+/// `f` is a polynomial in the trim symbols `t` (degree k) and P0. Same result as
+/// [`homogenize`], computed on dense univariate polynomials: f is grouped by its monomial in
+/// `t` and each product of numerators is formed once.
+fn clear_denominators(f: &Poly, t: &[Sym], num: &[Poly], den: &Poly) -> Poly {
+    let s = symbols();
+    let k = f.degree_in(t) as usize;
+    let num: Vec<UPoly> = num.iter().map(|n| univariate(n, s.p0)).collect();
+    let den = univariate(den, s.p0);
+    let mut den_pows = vec![UPoly::new(vec![BigRational::from_integer(1.into())])];
+    for i in 0..k {
+        let next = den_pows[i].mul(&den);
+        den_pows.push(next);
+    }
+    let mut groups: Vec<(Vec<u32>, Poly)> = Vec::new();
+    for (m, c) in f.terms() {
+        let e: Vec<u32> = t.iter().map(|x| m.exp(*x)).collect();
+        let mut rest = *m;
+        for x in t {
+            rest.set(*x, 0);
+        }
+        let term = Poly::term(rest, c.clone());
+        match groups.iter_mut().find(|(g, _)| *g == e) {
+            Some((_, p)) => *p = &*p + &term,
+            None => groups.push((e, term)),
+        }
+    }
+    let mut acc = UPoly::new(vec![]);
+    for (e, c) in groups {
+        let mut prod = den_pows[k - e.iter().sum::<u32>() as usize].clone();
+        for (i, ei) in e.iter().enumerate() {
+            for _ in 0..*ei {
+                prod = prod.mul(&num[i]);
+            }
+        }
+        acc = acc.add(&univariate(&c, s.p0).mul(&prod));
+    }
+    let p0 = Poly::var(s.p0);
+    acc.coeffs().iter().rev().fold(Poly::zero(), |a, c| {
+        &(&a * &p0) + &Poly::constant(Q::from_big(c.clone()))
     })
 }
 
@@ -201,16 +369,20 @@ fn strip(p: &UPoly, q: &UPoly) -> UPoly {
     }
 }
 
-/// Trim states `num_i(P0) / den(P0)` evaluated exactly at the f64 `p0`, then rounded.
+/// Trim states `num_i(P0) / den(P0)` at `p0`, evaluated in f64 (Horner on the correctly
+/// rounded coefficients). Jump points are never at roots of det A (those are stripped), so
+/// the quotient is well conditioned; `tests/tests/paper.rs` checks the PSS residuals.
 fn trim_at(nums: &[UPoly], den: &UPoly, p0: f64) -> Vec<f64> {
-    let x = exact_f64(p0).to_big();
-    let dv = den.eval(&x);
-    nums.iter()
-        .map(|n| Q::from_big(n.eval(&x) / dv.clone()).to_f64())
-        .collect()
+    let dv = den.eval_f64(p0);
+    nums.iter().map(|n| n.eval_f64(p0) / dv).collect()
 }
 
 fn eval_trim(r: &Ratio, values: &[(Sym, f64)]) -> f64 {
-    let look = |s: Sym| values.iter().find(|(t, _)| *t == s).map_or(f64::NAN, |(_, v)| *v);
+    let look = |s: Sym| {
+        values
+            .iter()
+            .find(|(t, _)| *t == s)
+            .map_or(f64::NAN, |(_, v)| *v)
+    };
     r.num.eval_f64(&look) / r.den.eval_f64(&look)
 }

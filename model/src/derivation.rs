@@ -14,8 +14,9 @@
 //! `d` is a polynomial (matrix determinant lemma).
 
 use crate::aircraft::Param;
-use crate::algebra::{Matrix, Poly, Q, Sym};
+use crate::algebra::{Matrix, Poly, Sym, Q};
 use crate::equations::{pss, symbols, Symbols};
+use std::sync::OnceLock;
 
 /// A quotient `num / den` of two polynomials, not normalized.
 #[derive(Clone, Debug, PartialEq)]
@@ -29,7 +30,7 @@ pub struct Ratio {
 /// The results of the derivation, each named after the paper's equation.
 #[derive(Clone, Debug)]
 pub struct Derivation {
-    /// The PSS model (Appendix A.2) with the fixed values substituted, d/dt [alpha,beta,p,q,r].
+    /// The PSS model (Appendix A.2) with the fixed values substituted, `d/dt [alpha, beta, p, q, r]`.
     pub model: [Poly; 5],
     /// The PSS model used for unconstrained rolls: as `model` with n_delta_a = 0 (and delta_r
     /// substituted when a value was given). See [`Derivation::derive`].
@@ -76,12 +77,12 @@ pub struct Derivation {
     pub det_j5: Poly,
     /// Step 7: `det J5 - d det K`; identically zero.
     pub identity_residual: Poly,
-    /// Step 8: the jump polynomial `det J5 * det(A)^2` in P0 (trims substituted).
-    pub jump: Poly,
-    /// `d * det A` in P0: its roots (not cancelled by det A) are the poles of det K.
-    pub d_det_a: Poly,
+    /// Step 8, computed on first use (see [`Derivation::jump`]).
+    step8: OnceLock<Step8>,
     /// Eqs. 32-34: the zero-sideslip trim system in [alpha, q, r] (beta = 0, delta_r freed).
     pub zs_a: Matrix,
+    /// Eqs. 32-33: the constant part of the zero-sideslip trim system `zs_a x + zs_rhs = 0`.
+    pub zs_rhs: Vec<Poly>,
     /// Eq. 35: det of the zero-sideslip system, common denominator of `zs_trim`.
     pub zs_det: Poly,
     /// Eq. 35: numerators of [alpha0, Q0, R0] of the zero-sideslip trim.
@@ -90,10 +91,15 @@ pub struct Derivation {
     pub zs_delta_r: Ratio,
     /// The aileron deflection of the zero-sideslip trim, in trim symbols.
     pub zs_delta_a: Ratio,
-    /// det J5 at the zero-sideslip trim times `zs_det^2`, in P0.
-    pub zs_jump: Poly,
-    /// `d * zs_det` at the zero-sideslip trim, in P0.
-    pub zs_d_det: Poly,
+}
+
+/// Step 8 results, cleared of the trim's denominators.
+#[derive(Clone, Debug)]
+struct Step8 {
+    jump: Poly,
+    d_det_a: Poly,
+    zs_jump: Poly,
+    zs_d_det: Poly,
 }
 
 impl Derivation {
@@ -108,8 +114,11 @@ impl Derivation {
     /// delta_r applies to the unconstrained roll only: the zero-sideslip trim frees the rudder.
     pub fn derive(values: &[(Sym, Q)]) -> Derivation {
         let s = symbols();
-        let base_values: Vec<(Sym, Q)> =
-            values.iter().filter(|(v, _)| *v != s.delta_r).cloned().collect();
+        let base_values: Vec<(Sym, Q)> = values
+            .iter()
+            .filter(|(v, _)| *v != s.delta_r)
+            .cloned()
+            .collect();
         let model = pss().map(|f| f.subs_values(&base_values));
         // With n_delta_a != 0 the aileron enters the yaw equation and, for given P0, the trim
         // is no longer linear in (alpha, beta, q, r): the aileron then solves a quadratic. The
@@ -157,9 +166,12 @@ impl Derivation {
                 .collect(),
         );
         let linearized: [Poly; 5] = std::array::from_fn(|i| {
-            s.states().iter().enumerate().fold(Poly::zero(), |acc, (j, x)| {
-                &acc + &(jacobian.get(i, j) * &Poly::var(*x))
-            })
+            s.states()
+                .iter()
+                .enumerate()
+                .fold(Poly::zero(), |acc, (j, x)| {
+                    &acc + &(jacobian.get(i, j) * &Poly::var(*x))
+                })
         });
 
         // Step 3, Eqs 11-15: q from the alpha equation, r from the beta equation.
@@ -172,8 +184,7 @@ impl Derivation {
 
         // Step 4, Eqs 21-26: roll mode and its static residual (alpha_dot = beta_dot = 0).
         let roll_mode = elim(&linearized[2]);
-        let statics = roll_mode
-            .subs_values(&[(s.alpha_dot, Q::ZERO), (s.beta_dot, Q::ZERO)]);
+        let statics = roll_mode.subs_values(&[(s.alpha_dot, Q::ZERO), (s.beta_dot, Q::ZERO)]);
         let d = statics.coeff(s.p, 1).coeff(s.alpha, 0).coeff(s.beta, 0);
         let h = [
             statics.coeff(s.alpha, 1).coeff(s.p, 0),
@@ -190,9 +201,8 @@ impl Derivation {
             std::array::from_fn(|j| coefficient_of(&second_order[i], y[j]))
         });
         let g: [Poly; 2] = std::array::from_fn(|i| coefficient_of(&second_order[i], s.p));
-        let k_times_d: [[Poly; 2]; 2] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| &(&d * &k0[i][j]) - &(&g[i] * &h[j]))
-        });
+        let k_times_d: [[Poly; 2]; 2] =
+            std::array::from_fn(|i| std::array::from_fn(|j| &(&d * &k0[i][j]) - &(&g[i] * &h[j])));
         let k0m = Matrix::from_rows(k0.iter().map(|r| r.to_vec()).collect());
         let adj = k0m.adjugate();
         let h_adj_g = (0..2).fold(Poly::zero(), |acc, i| {
@@ -204,17 +214,10 @@ impl Derivation {
         let det_j5 = jacobian.det();
         let identity_residual = &det_j5 - &d_det_k;
 
-        // Step 8: substitute the trim and clear denominators.
-        let trims4 = [s.alpha0, s.beta0, s.q0, s.r0];
-        let jump = homogenize(&det_j5, &trims4, &trim, &det_a);
-        let d_det_a = homogenize(&d, &trims4, &trim, &det_a);
-
         // Step 6, Eqs 32-35: zero sideslip; the rudder is freed and beta = 0.
         let zs_eqs: Vec<Poly> = [0usize, 1, 3]
             .iter()
-            .map(|&i| {
-                model[i].subs_all(&[(s.p, Poly::var(s.p0)), (s.beta, Poly::zero())])
-            })
+            .map(|&i| model[i].subs_all(&[(s.p, Poly::var(s.p0)), (s.beta, Poly::zero())]))
             .collect();
         assert!(
             zs_eqs.iter().all(|e| !e.contains(s.delta_r)),
@@ -222,13 +225,14 @@ impl Derivation {
         );
         let (zs_a, zs_rhs) = linear_system(&zs_eqs, &[s.alpha, s.q, s.r]);
         let (zs_trim_v, zs_det) = solve(&zs_a, &zs_rhs);
-        let zs_trim: [Poly; 3] = [zs_trim_v[0].clone(), zs_trim_v[1].clone(), zs_trim_v[2].clone()];
+        let zs_trim: [Poly; 3] = [
+            zs_trim_v[0].clone(),
+            zs_trim_v[1].clone(),
+            zs_trim_v[2].clone(),
+        ];
         let zs_at_trim = |f: &Poly| at_trim(f).subs(s.beta0, &Poly::zero());
         let zs_delta_r = solve_for(&zs_at_trim(&model[4]), s.delta_r);
         let zs_delta_a = solve_for(&zs_at_trim(&model[2]), s.delta_a);
-        let trims3 = [s.alpha0, s.q0, s.r0];
-        let zs_jump = homogenize(&det_j5.subs(s.beta0, &Poly::zero()), &trims3, &zs_trim, &zs_det);
-        let zs_d_det = homogenize(&d.subs(s.beta0, &Poly::zero()), &trims3, &zs_trim, &zs_det);
 
         Derivation {
             model,
@@ -236,7 +240,12 @@ impl Derivation {
             a,
             a_rhs,
             det_a,
-            trim: [trim[0].clone(), trim[1].clone(), trim[2].clone(), trim[3].clone()],
+            trim: [
+                trim[0].clone(),
+                trim[1].clone(),
+                trim[2].clone(),
+                trim[3].clone(),
+            ],
             biquadratic,
             delta_a,
             jacobian,
@@ -254,16 +263,64 @@ impl Derivation {
             d_det_k,
             det_j5,
             identity_residual,
-            jump,
-            d_det_a,
+            step8: OnceLock::new(),
             zs_a,
+            zs_rhs,
             zs_det,
             zs_trim,
             zs_delta_r,
             zs_delta_a,
-            zs_jump,
-            zs_d_det,
         }
+    }
+}
+
+impl Derivation {
+    fn step8(&self) -> &Step8 {
+        self.step8.get_or_init(|| {
+            // Step 8: substitute the trim and clear denominators.
+            let s = symbols();
+            let trims4 = [s.alpha0, s.beta0, s.q0, s.r0];
+            let trims3 = [s.alpha0, s.q0, s.r0];
+            let zero = Poly::zero();
+            Step8 {
+                jump: homogenize(&self.det_j5, &trims4, &self.trim, &self.det_a),
+                d_det_a: homogenize(&self.d, &trims4, &self.trim, &self.det_a),
+                zs_jump: homogenize(
+                    &self.det_j5.subs(s.beta0, &zero),
+                    &trims3,
+                    &self.zs_trim,
+                    &self.zs_det,
+                ),
+                zs_d_det: homogenize(
+                    &self.d.subs(s.beta0, &zero),
+                    &trims3,
+                    &self.zs_trim,
+                    &self.zs_det,
+                ),
+            }
+        })
+    }
+
+    /// Step 8: the jump polynomial `det J5 * det(A)^2` in P0 (trims substituted). Computed on
+    /// first use: `model analyze` works from the trim-level results and never needs it.
+    pub fn jump(&self) -> &Poly {
+        &self.step8().jump
+    }
+
+    /// `d * det(A)^2` in P0 (d is quadratic in the trim states through `E Q0 alpha0`), so that
+    /// `det K = jump / d_det_a`; its roots not shared with det A are the poles of det K.
+    pub fn d_det_a(&self) -> &Poly {
+        &self.step8().d_det_a
+    }
+
+    /// det J5 at the zero-sideslip trim times `zs_det^2`, in P0.
+    pub fn zs_jump(&self) -> &Poly {
+        &self.step8().zs_jump
+    }
+
+    /// `d * zs_det^2` at the zero-sideslip trim, in P0: `det K = zs_jump / zs_d_det` there.
+    pub fn zs_d_det(&self) -> &Poly {
+        &self.step8().zs_d_det
     }
 }
 
@@ -284,14 +341,20 @@ impl Ratio {
 /// Splits equations that are linear in `unknowns` into `A x + c = 0`.
 fn linear_system(eqs: &[Poly], unknowns: &[Sym]) -> (Matrix, Vec<Poly>) {
     for e in eqs {
-        assert!(e.degree_in(unknowns) <= 1, "trim equations must be linear in the unknowns");
+        assert!(
+            e.degree_in(unknowns) <= 1,
+            "trim equations must be linear in the unknowns"
+        );
     }
     let rows = eqs
         .iter()
         .map(|e| unknowns.iter().map(|u| e.coeff(*u, 1)).collect())
         .collect();
     let zero: Vec<(Sym, Q)> = unknowns.iter().map(|u| (*u, Q::ZERO)).collect();
-    (Matrix::from_rows(rows), eqs.iter().map(|e| e.subs_values(&zero)).collect())
+    (
+        Matrix::from_rows(rows),
+        eqs.iter().map(|e| e.subs_values(&zero)).collect(),
+    )
 }
 
 /// Solves `A x + c = 0`: numerators `-adj(A) c` over the common denominator `det A`.
@@ -311,7 +374,10 @@ fn solve_for(f: &Poly, x: Sym) -> Ratio {
 
 /// Divides `f` by its (constant) coefficient of `x`, making the equation monic in `x`.
 fn monic_in(f: &Poly, x: Sym) -> Poly {
-    let c = f.coeff(x, 1).as_constant().expect("leading coefficient is a constant");
+    let c = f
+        .coeff(x, 1)
+        .as_constant()
+        .expect("leading coefficient is a constant");
     f.scale(&Q::ONE.div(&c))
 }
 
@@ -330,7 +396,10 @@ fn time_derivative(s: &Symbols, f: &Poly) -> Poly {
         (s.p, s.p_dot),
     ];
     for x in [s.q, s.r, s.alpha_ddot, s.beta_ddot, s.p_dot] {
-        assert!(!f.contains(x), "time derivative of {x} is not part of the derivation");
+        assert!(
+            !f.contains(x),
+            "time derivative of {x} is not part of the derivation"
+        );
     }
     chain.iter().fold(Poly::zero(), |acc, (x, xd)| {
         &acc + &(&f.diff(*x) * &Poly::var(*xd))
@@ -338,8 +407,8 @@ fn time_derivative(s: &Symbols, f: &Poly) -> Poly {
 }
 
 /// Substitutes `t_i = num_i / den` into `f` (of degree k in the `t_i`) and multiplies by
-/// `den^k`, giving a polynomial: each term of degree j in the `t_i` gets `den^(k-j)`.
-fn homogenize(f: &Poly, t: &[Sym], num: &[Poly], den: &Poly) -> Poly {
+/// `den^k` (step 8), giving a polynomial: each term of degree j in the `t_i` gets `den^(k-j)`.
+pub fn homogenize(f: &Poly, t: &[Sym], num: &[Poly], den: &Poly) -> Poly {
     let k = f.degree_in(t);
     let mut den_pows = vec![Poly::int(1)];
     for _ in 0..k {

@@ -9,7 +9,16 @@
 pub mod aircraft;
 pub mod algebra;
 pub mod analysis;
+pub mod continuation;
 pub mod derivation;
+pub mod emit;
 pub mod equations;
+pub mod files;
 pub mod numeric;
+#[cfg(feature = "cli")]
+pub mod plot;
+#[cfg(feature = "cli")]
+pub mod report;
 pub mod roots;
+#[cfg(feature = "cli")]
+pub mod simulation;

@@ -7,7 +7,7 @@
 //! term lists. One source of truth, evaluated at machine speed.
 
 use crate::aircraft::{Aircraft, Param};
-use crate::algebra::{Poly, Q, Sym, MAX_SYMS};
+use crate::algebra::{Poly, Sym, MAX_SYMS, Q};
 use crate::equations::{pss, symbols};
 
 /// A polynomial flattened for f64 evaluation: coefficient and (symbol index, power) factors.
@@ -24,7 +24,11 @@ impl Compiled {
                 .terms()
                 .iter()
                 .map(|(m, c)| {
-                    let f = m.factors().iter().map(|(s, e)| (s.index(), *e as i32)).collect();
+                    let f = m
+                        .factors()
+                        .iter()
+                        .map(|(s, e)| (s.index(), *e as i32))
+                        .collect();
                     (c.to_f64(), f)
                 })
                 .collect(),
@@ -38,7 +42,11 @@ impl Compiled {
         for (c, factors) in &self.terms {
             let mut t = *c;
             for (i, e) in factors {
-                t *= if *e == 1 { values[*i] } else { values[*i].powi(*e) };
+                t *= if *e == 1 {
+                    values[*i]
+                } else {
+                    values[*i].powi(*e)
+                };
             }
             acc += t;
         }
@@ -79,7 +87,9 @@ impl PssModel {
         let controls = [s.delta_a, s.delta_e, s.delta_r];
         PssModel {
             rhs: std::array::from_fn(|i| Compiled::new(&f[i])),
-            jac: std::array::from_fn(|i| std::array::from_fn(|j| Compiled::new(&f[i].diff(states[j])))),
+            jac: std::array::from_fn(|i| {
+                std::array::from_fn(|j| Compiled::new(&f[i].diff(states[j])))
+            }),
             dcontrol: std::array::from_fn(|i| {
                 std::array::from_fn(|j| Compiled::new(&f[i].diff(controls[j])))
             }),
@@ -126,7 +136,11 @@ mod tests {
         let ac = Aircraft::a();
         let m = PssModel::new(&ac);
         let x = [0.1, -0.05, 2.0, 0.3, -0.2];
-        let u = Controls { delta_a: -0.05, delta_e: 0.03, delta_r: 0.01 };
+        let u = Controls {
+            delta_a: -0.05,
+            delta_e: 0.03,
+            delta_r: 0.01,
+        };
         let f = m.rhs(&x, &u);
         // alpha_dot = q - p beta + z_alpha alpha
         let want = 0.3 - 2.0 * -0.05 + -3.0076 * 0.1;

@@ -19,7 +19,11 @@ fn repo(path: &str) -> String {
 }
 
 fn json(out: &Output) -> serde_json::Value {
-    assert!(out.status.success(), "stderr: {}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "stderr: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     serde_json::from_slice(&out.stdout).expect("valid JSON")
 }
 
@@ -31,7 +35,15 @@ fn analyze_json_has_the_documented_shape() {
     assert_eq!(v["divergence_roll_rates"].as_array().unwrap().len(), 0);
     let jump = v["jump"].as_array().unwrap();
     assert_eq!(jump.len(), 2);
-    for key in ["p0", "delta_a_rad", "delta_a_deg", "alpha", "beta", "q", "r"] {
+    for key in [
+        "p0",
+        "delta_a_rad",
+        "delta_a_deg",
+        "alpha",
+        "beta",
+        "q",
+        "r",
+    ] {
         assert!(jump[0][key].is_f64(), "jump[0].{key}");
     }
     assert!(v["det_k_poles"].is_array());
@@ -39,7 +51,10 @@ fn analyze_json_has_the_documented_shape() {
     for key in ["p0", "delta_a_rad", "delta_a_deg", "alpha", "q", "r"] {
         assert!(dep[0][key].is_f64(), "departure[0].{key}");
     }
-    assert!(dep[0].get("beta").is_none(), "beta is zero by construction and not reported");
+    assert!(
+        dep[0].get("beta").is_none(),
+        "beta is zero by construction and not reported"
+    );
 }
 
 #[test]
@@ -48,7 +63,13 @@ fn analyze_prints_a_table_for_b_and_a_users_file() {
     assert!(out.status.success());
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("Aircraft B") && text.contains("2.986460") && text.contains("4.627182"));
-    let c = json(&model(&["analyze", &repo("aircraft/c.toml"), "--json", "--delta-e-deg", "-1.5"]));
+    let c = json(&model(&[
+        "analyze",
+        &repo("aircraft/c.toml"),
+        "--json",
+        "--delta-e-deg",
+        "-1.5",
+    ]));
     assert!((c["delta_e_rad"].as_f64().unwrap() + 1.5f64.to_radians()).abs() < 1e-15);
     // The built-in A and the shipped a.toml are the same aircraft.
     let from_file = json(&model(&["analyze", &repo("aircraft/a.toml"), "--json"]));
@@ -66,7 +87,10 @@ fn bad_input_exits_2_with_a_message_naming_the_file_and_key() {
     let out = model(&["analyze", bad.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("bad.toml") && err.contains("l_delta_a"), "{err}");
+    assert!(
+        err.contains("bad.toml") && err.contains("l_delta_a"),
+        "{err}"
+    );
     assert!(!err.contains("panicked"), "{err}");
 
     let out = model(&["analyze", dir.join("missing.toml").to_str().unwrap()]);
@@ -76,4 +100,125 @@ fn bad_input_exits_2_with_a_message_naming_the_file_and_key() {
     let out = model(&["analyze", "A", "--delta-e-deg", "nan"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("delta_e"));
+}
+
+#[test]
+fn continue_reports_the_folds_of_fig_1_as_json_and_csv() {
+    let dir = std::env::temp_dir().join(format!("model-cli-cont-{}", std::process::id()));
+    let csv = dir.join("a.csv");
+    let v = json(&model(&[
+        "continue",
+        "A",
+        "--json",
+        "--csv",
+        csv.to_str().unwrap(),
+    ]));
+    assert_eq!(v["parameter"], "delta_a");
+    let point = &v["branches"][0]["points"][0];
+    for key in ["delta_a", "alpha", "beta", "p", "q", "r"] {
+        assert!(point[key].is_f64(), "point.{key}");
+    }
+    assert!(point["stable"].is_boolean());
+    let folds: Vec<f64> = v["special_points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| s["kind"] == "fold")
+        .map(|s| s["p"].as_f64().unwrap())
+        .filter(|p| *p > 0.0)
+        .collect();
+    // The jump roots of `analyze` (Fig. 7): 1.706288 and 3.033180.
+    assert_eq!(folds.len(), 2, "{folds:?}");
+    assert!(folds.iter().any(|p| (p - 1.706288).abs() < 1e-6));
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert!(
+        text.starts_with("branch,delta_a,alpha,beta,p,q,r,stable"),
+        "{}",
+        &text[..60]
+    );
+    assert!(text.lines().count() > 100);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn continue_zero_sideslip_finds_the_branch_point_of_fig_9() {
+    let v = json(&model(&["continue", "A", "--zero-sideslip", "--json"]));
+    let bp: Vec<&serde_json::Value> = v["special_points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| s["kind"] == "branch")
+        .collect();
+    // analyze: departure at P0 = 2.130625, delta_a = -0.14249 rad (paper: about -0.15 rad).
+    assert!(
+        bp.iter()
+            .any(|s| (s["p"].as_f64().unwrap() - 2.130625).abs() < 1e-6
+                && (s["delta_a"].as_f64().unwrap() + 0.14249).abs() < 1e-5),
+        "{bp:?}"
+    );
+    let out = model(&["continue", "A", "--param", "delta_x"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("delta_x"));
+}
+
+#[test]
+fn report_writes_every_figure_and_a_summary() {
+    let dir = std::env::temp_dir().join(format!("model-cli-report-{}", std::process::id()));
+    let out = model(&["report", "B", "--out", dir.to_str().unwrap()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for stem in [
+        "fig01_bifurcation",
+        "fig03_trim_states",
+        "fig05_roll_response",
+        "fig07_det_k",
+        "fig09_zero_sideslip",
+        "fig10_zero_sideslip_response",
+        "fig11_zero_sideslip_det_k",
+    ] {
+        let png = std::fs::read(dir.join(format!("{stem}.png"))).unwrap();
+        assert!(
+            png.starts_with(b"\x89PNG") && png.len() > 10_000,
+            "{stem}.png"
+        );
+        let svg = std::fs::read_to_string(dir.join(format!("{stem}.svg"))).unwrap();
+        assert!(svg.contains("<svg"), "{stem}.svg");
+    }
+    let md = std::fs::read_to_string(dir.join("summary.md")).unwrap();
+    // B's first jump (Fig. 8) and its Hopf points (Fig. 2) are in the report.
+    assert!(md.contains("2.595015") && md.contains("hopf"), "{md}");
+    assert!(md.contains("![Figs 1, 2](fig01_bifurcation.png)"));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["analysis"]["aircraft"], "Aircraft B");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn simulate_writes_a_time_history() {
+    let dir = std::env::temp_dir().join(format!("model-cli-sim-{}", std::process::id()));
+    let csv = dir.join("run.csv");
+    let out = model(&[
+        "simulate",
+        "A",
+        "--delta-a-deg",
+        "-5",
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("steady roll rate"), "{text}");
+    let rows = std::fs::read_to_string(&csv).unwrap();
+    assert!(rows.lines().count() > 900, "20 s at 0.02 s");
+    let bad = model(&["simulate", "A", "--delta-a-deg", "inf"]);
+    assert_eq!(bad.status.code(), Some(2));
+    std::fs::remove_dir_all(&dir).unwrap();
 }

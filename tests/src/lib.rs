@@ -125,6 +125,33 @@ pub fn real_eigenvalues(j: &Matrix5<f64>) -> Vec<f64> {
         .collect()
 }
 
+/// A random, plausible aircraft: signs as for a conventional airplane, magnitudes spread wide
+/// (inertias from Ix = 1 and Iy, Iz in [2, 8] x [2, 9]; n_p != 0; n_delta_a = 0). Tests use
+/// it so that nothing is tuned to the paper's aircraft A and B.
+pub fn random_params(rng: &mut Lcg) -> Params {
+    use ix::*;
+    let mut k = [0.0; 17];
+    let (ix_, iy, iz) = (1.0, rng.range(2.0, 8.0), rng.range(2.0, 9.0));
+    k[C] = (iz - ix_) / iy;
+    k[D] = (iy - ix_) / iz;
+    k[E] = (iz - iy) / ix_;
+    k[ZA] = rng.range(-4.0, -0.5);
+    k[YB] = rng.range(-0.5, -0.02);
+    k[LP] = rng.range(-25.0, -2.0);
+    k[LR] = rng.range(-0.5, 2.0);
+    k[LB] = rng.range(-120.0, -5.0);
+    k[LDA] = rng.range(-300.0, -30.0);
+    k[MQ] = rng.range(-2.0, -0.3);
+    k[MA] = rng.range(-25.0, -5.0);
+    k[MDE] = rng.range(-35.0, -10.0);
+    k[NP] = rng.range(-0.3, 0.3);
+    k[NR] = rng.range(-0.6, -0.1);
+    k[NB] = rng.range(1.0, 8.0);
+    k[NDA] = 0.0;
+    k[NDR] = rng.range(-5.0, -0.5);
+    k
+}
+
 /// A small deterministic generator for random test data (no dependency, reproducible).
 pub struct Lcg(pub u64);
 

@@ -2,11 +2,11 @@
 //! random aircraft that are neither A nor B (n_p != 0, other inertias): nothing is tuned.
 
 use model::aircraft::{Aircraft, Param};
-use model::algebra::{Poly, Q, Sym};
+use model::algebra::{Poly, Sym, Q};
 use model::analysis::analyze;
 use model::derivation::Derivation;
 use model::equations::symbols;
-use paper_tests::{fd_jacobian, ix, pss_rhs, residual_denominator, trim, Lcg, Params};
+use paper_tests::{fd_jacobian, pss_rhs, random_params, residual_denominator, trim, Lcg, Params};
 use std::sync::OnceLock;
 
 fn parametric() -> &'static Derivation {
@@ -14,36 +14,20 @@ fn parametric() -> &'static Derivation {
     D.get_or_init(Derivation::parametric)
 }
 
-/// A random, plausible aircraft: signs as for a conventional airplane, magnitudes spread wide.
-fn random_params(rng: &mut Lcg) -> Params {
-    let mut k = [0.0; 17];
-    let (ix_, iy, iz) = (1.0, rng.range(2.0, 8.0), rng.range(2.0, 9.0));
-    k[ix::C] = (iz - ix_) / iy;
-    k[ix::D] = (iy - ix_) / iz;
-    k[ix::E] = (iz - iy) / ix_;
-    k[ix::ZA] = rng.range(-4.0, -0.5);
-    k[ix::YB] = rng.range(-0.5, -0.02);
-    k[ix::LP] = rng.range(-25.0, -2.0);
-    k[ix::LR] = rng.range(-0.5, 2.0);
-    k[ix::LB] = rng.range(-120.0, -5.0);
-    k[ix::LDA] = rng.range(-300.0, -30.0);
-    k[ix::MQ] = rng.range(-2.0, -0.3);
-    k[ix::MA] = rng.range(-25.0, -5.0);
-    k[ix::MDE] = rng.range(-35.0, -10.0);
-    k[ix::NP] = rng.range(-0.3, 0.3);
-    k[ix::NR] = rng.range(-0.6, -0.1);
-    k[ix::NB] = rng.range(1.0, 8.0);
-    k[ix::NDA] = 0.0;
-    k[ix::NDR] = rng.range(-5.0, -0.5);
-    k
-}
-
 /// Symbol values for evaluating parametric results in f64.
 fn lookup(k: &Params, extra: &[(Sym, f64)]) -> impl Fn(Sym) -> f64 {
     let s = symbols();
-    let mut table: Vec<(Sym, f64)> = Param::ALL.iter().map(|p| (s.param(*p), k[p.index()])).collect();
+    let mut table: Vec<(Sym, f64)> = Param::ALL
+        .iter()
+        .map(|p| (s.param(*p), k[p.index()]))
+        .collect();
     table.extend_from_slice(extra);
-    move |x| table.iter().find(|(t, _)| *t == x).map_or(f64::NAN, |(_, v)| *v)
+    move |x| {
+        table
+            .iter()
+            .find(|(t, _)| *t == x)
+            .map_or(f64::NAN, |(_, v)| *v)
+    }
 }
 
 fn eval(p: &Poly, f: &impl Fn(Sym) -> f64) -> f64 {
@@ -54,7 +38,11 @@ fn eval(p: &Poly, f: &impl Fn(Sym) -> f64) -> f64 {
 fn identity_det_j5_equals_d_det_k_symbolically() {
     // Step 7: the difference normalizes to exactly zero for symbolic parameters.
     let d = parametric();
-    assert!(d.identity_residual.is_zero(), "det J5 - d det K = {:?}", d.identity_residual);
+    assert!(
+        d.identity_residual.is_zero(),
+        "det J5 - d det K = {:?}",
+        d.identity_residual
+    );
     // and the matrix-determinant-lemma form agrees with the entrywise d K: det(dK) = d (d det K).
     let kd = &d.k_times_d;
     let det_dk = &(&kd[0][0] * &kd[1][1]) - &(&kd[0][1] * &kd[1][0]);
@@ -69,10 +57,20 @@ fn symbolic_linearization_equals_central_difference_jacobian() {
     for _ in 0..200 {
         let k = random_params(&mut rng);
         let x: [f64; 5] = std::array::from_fn(|_| rng.range(-1.0, 1.0));
-        let u = [rng.range(-0.2, 0.2), rng.range(-0.1, 0.1), rng.range(-0.1, 0.1)];
+        let u = [
+            rng.range(-0.2, 0.2),
+            rng.range(-0.1, 0.1),
+            rng.range(-0.1, 0.1),
+        ];
         let f = lookup(
             &k,
-            &[(s.alpha0, x[0]), (s.beta0, x[1]), (s.p0, x[2]), (s.q0, x[3]), (s.r0, x[4])],
+            &[
+                (s.alpha0, x[0]),
+                (s.beta0, x[1]),
+                (s.p0, x[2]),
+                (s.q0, x[3]),
+                (s.r0, x[4]),
+            ],
         );
         let num = fd_jacobian(&k, &x, &u);
         for i in 0..5 {
@@ -100,7 +98,13 @@ fn identity_holds_numerically_at_random_points() {
         let x: [f64; 5] = std::array::from_fn(|_| rng.range(-1.0, 1.0));
         let f = lookup(
             &k,
-            &[(s.alpha0, x[0]), (s.beta0, x[1]), (s.p0, x[2]), (s.q0, x[3]), (s.r0, x[4])],
+            &[
+                (s.alpha0, x[0]),
+                (s.beta0, x[1]),
+                (s.p0, x[2]),
+                (s.q0, x[3]),
+                (s.r0, x[4]),
+            ],
         );
         let j = fd_jacobian(&k, &x, &[0.0; 3]);
         let det_j5 = j.determinant();
@@ -111,7 +115,11 @@ fn identity_holds_numerically_at_random_points() {
             - eval(&kd[0][1], &f) * eval(&kd[1][0], &f))
             / (dd * dd);
         let scale = 1.0 + det_j5.abs() + (dd * det_k).abs();
-        assert!((det_j5 - dd * det_k).abs() < 1e-6 * scale, "det J5 {det_j5}, d det K {}", dd * det_k);
+        assert!(
+            (det_j5 - dd * det_k).abs() < 1e-6 * scale,
+            "det J5 {det_j5}, d det K {}",
+            dd * det_k
+        );
     }
 }
 
@@ -122,23 +130,39 @@ fn trim_formulas_solve_the_pss_equations() {
     let mut rng = Lcg(3);
     for _ in 0..200 {
         let k = random_params(&mut rng);
-        let (p0, de, dr) = (rng.range(0.0, 6.0), rng.range(-0.1, 0.1), rng.range(-0.1, 0.1));
+        let (p0, de, dr) = (
+            rng.range(0.0, 6.0),
+            rng.range(-0.1, 0.1),
+            rng.range(-0.1, 0.1),
+        );
         let f = lookup(&k, &[(s.p0, p0), (s.delta_e, de), (s.delta_r, dr)]);
         let den = eval(&d.det_a, &f);
         let t: Vec<f64> = d.trim.iter().map(|n| eval(n, &f) / den).collect();
         let g = lookup(
             &k,
-            &[(s.alpha0, t[0]), (s.beta0, t[1]), (s.p0, p0), (s.q0, t[2]), (s.r0, t[3])],
+            &[
+                (s.alpha0, t[0]),
+                (s.beta0, t[1]),
+                (s.p0, p0),
+                (s.q0, t[2]),
+                (s.r0, t[3]),
+            ],
         );
         let da = eval(&d.delta_a.num, &g) / eval(&d.delta_a.den, &g);
         let (x, da_lu) = trim(&k, p0, de, dr).unwrap();
         let scale = 1.0 + x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         for (i, (a, b)) in [x[0], x[1], x[3], x[4]].iter().zip(&t).enumerate() {
-            assert!((a - b).abs() < 1e-8 * scale, "state {i}: LU {a}, formula {b}");
+            assert!(
+                (a - b).abs() < 1e-8 * scale,
+                "state {i}: LU {a}, formula {b}"
+            );
         }
         assert!((da - da_lu).abs() < 1e-8 * (1.0 + da.abs()));
         let res = pss_rhs(&k, &[t[0], t[1], p0, t[2], t[3]], &[da, de, dr]);
-        assert!(res.iter().all(|v| v.abs() < 1e-8 * scale * 100.0), "{res:?}");
+        assert!(
+            res.iter().all(|v| v.abs() < 1e-8 * scale * 100.0),
+            "{res:?}"
+        );
     }
 }
 
@@ -148,12 +172,15 @@ fn jump_polynomial_is_even_in_p0_with_delta_r_zero() {
     // polynomial even when delta_r = 0; degree 12, 7 nonzero coefficients.
     let s = symbols();
     let d = Derivation::derive(&[(s.delta_r, Q::ZERO)]);
-    let c = d.jump.coeffs(s.p0);
+    let c = d.jump().coeffs(s.p0);
     assert_eq!(c.len(), 13, "degree 12 in P0");
-    assert!(c.iter().skip(1).step_by(2).all(Poly::is_zero), "odd coefficients vanish");
+    assert!(
+        c.iter().skip(1).step_by(2).all(Poly::is_zero),
+        "odd coefficients vanish"
+    );
     assert_eq!(c.iter().filter(|p| !p.is_zero()).count(), 7);
     // Its parameters: every derivative that enters J5 or the trim, and nothing else.
-    assert!(!d.jump.contains(s.param(Param::LDeltaA)) && !d.jump.contains(s.delta_a));
+    assert!(!d.jump().contains(s.param(Param::LDeltaA)) && !d.jump().contains(s.delta_a));
 }
 
 #[test]
@@ -167,8 +194,11 @@ fn eq_5_odd_powers_of_det_a_vanish_and_leading_coefficient_is_cd() {
 /// Zeros of det J5 along the trim curve by an independent numeric scan (LU trims,
 /// nalgebra determinant); those with d != 0 are the jump points (det J5 = d det K).
 fn numeric_jump_points(k: &Params, de: f64, p_max: f64) -> Vec<f64> {
-    let det = |p0: f64| trim(k, p0, de, 0.0).map(|(x, _)| fd_jacobian(k, &x, &[0.0; 3]).determinant());
-    let dd = |p0: f64| trim(k, p0, de, 0.0).map(|(x, _)| residual_denominator(&fd_jacobian(k, &x, &[0.0; 3])));
+    let det =
+        |p0: f64| trim(k, p0, de, 0.0).map(|(x, _)| fd_jacobian(k, &x, &[0.0; 3]).determinant());
+    let dd = |p0: f64| {
+        trim(k, p0, de, 0.0).map(|(x, _)| residual_denominator(&fd_jacobian(k, &x, &[0.0; 3])))
+    };
     let n = 20000;
     let mut out = Vec::new();
     let mut prev = (1e-4, det(1e-4));
@@ -187,7 +217,8 @@ fn numeric_jump_points(k: &Params, de: f64, p_max: f64) -> Vec<f64> {
                 }
                 let root = 0.5 * (lo + hi);
                 // Discard sign changes at poles of the trim (det A = 0) and at d = 0.
-                let finite = det(root).is_some_and(|v| v.abs() < 1e-3 * (1.0 + a.abs().max(b.abs())));
+                let finite =
+                    det(root).is_some_and(|v| v.abs() < 1e-3 * (1.0 + a.abs().max(b.abs())));
                 if finite && dd(root).is_some_and(|v| v.abs() > 1e-6) {
                     out.push(root);
                 }
@@ -204,7 +235,10 @@ fn analyze_matches_an_independent_numeric_scan_on_random_aircraft() {
     let mut total = 0;
     for case in 0..40 {
         let k = random_params(&mut rng);
-        let values = k.iter().map(|v| model::aircraft::f64_to_rational(*v).unwrap()).collect();
+        let values = k
+            .iter()
+            .map(|v| model::aircraft::f64_to_rational(*v).unwrap())
+            .collect();
         let ac = Aircraft::new(format!("random {case}"), values, 150.0);
         let de = rng.range(-0.05, 0.05);
         let a = analyze(&ac, de).unwrap();
@@ -213,11 +247,70 @@ fn analyze_matches_an_independent_numeric_scan_on_random_aircraft() {
         let got: Vec<f64> = a.jump.iter().map(|j| j.p0).filter(|p| *p < p_max).collect();
         // Roots of even multiplicity do not change sign and escape the scan; the random data
         // make them non-generic, so the sets must agree.
-        assert_eq!(got.len(), want.len(), "case {case}: analyze {got:?}, scan {want:?}");
+        assert_eq!(
+            got.len(),
+            want.len(),
+            "case {case}: analyze {got:?}, scan {want:?}"
+        );
         for (g, w) in got.iter().zip(&want) {
             assert!((g - w).abs() < 1e-6 * (1.0 + w), "case {case}: {g} vs {w}");
         }
         total += got.len();
     }
-    assert!(total > 10, "the random aircraft must exercise the criterion ({total} roots)");
+    assert!(
+        total > 10,
+        "the random aircraft must exercise the criterion ({total} roots)"
+    );
+}
+
+/// `x` and `y` differ by a nonzero constant factor, exactly: `x * lc(y) == y * lc(x)`.
+fn proportional(x: &Poly, y: &Poly) -> bool {
+    let s = symbols();
+    let lead = |p: &Poly| p.coeff(s.p0, p.degree(s.p0)).as_constant().unwrap();
+    !x.is_zero() && (&x.scale(&lead(y)) - &y.scale(&lead(x))).is_zero()
+}
+
+#[test]
+fn analysis_polynomials_are_proportional_to_the_specialised_derivation() {
+    // `analyze` substitutes the data into trim-level parametric results and clears
+    // denominators with integer scales; the full derivation specialised before its first step
+    // must give the same polynomials up to constants.
+    let mut rng = Lcg(77);
+    let mut aircraft = vec![Aircraft::a(), Aircraft::b()];
+    for i in 0..3 {
+        let k = random_params(&mut rng);
+        let values = k
+            .iter()
+            .map(|v| model::aircraft::f64_to_rational(*v).unwrap())
+            .collect();
+        aircraft.push(Aircraft::new(format!("random {i}"), values, 150.0));
+    }
+    for ac in aircraft {
+        let de = 2f64.to_radians();
+        let fast = model::analysis::CriterionPolys::new(parametric(), &ac, de);
+        let full = Derivation::derive(&model::analysis::specialisation(&ac, de));
+        assert!(proportional(&fast.det_a, &full.det_a), "{}: det A", ac.name);
+        assert!(proportional(&fast.jump, full.jump()), "{}: jump", ac.name);
+        assert!(
+            proportional(&fast.d_det_a, full.d_det_a()),
+            "{}: d det A",
+            ac.name
+        );
+        assert!(
+            proportional(&fast.zs_jump, full.zs_jump()),
+            "{}: zs jump",
+            ac.name
+        );
+        assert!(
+            proportional(&fast.zs_d_det, full.zs_d_det()),
+            "{}: zs d",
+            ac.name
+        );
+        // The trims are the same ratios.
+        for (n_fast, n_full) in fast.trim.iter().zip(&full.trim) {
+            let lhs = n_fast * &full.det_a;
+            let rhs = n_full * &fast.det_a;
+            assert!((&lhs - &rhs).is_zero(), "{}: trim ratio", ac.name);
+        }
+    }
 }

@@ -20,7 +20,10 @@ fn at_2deg(ac: &Aircraft) -> Analysis {
 fn assert_close(got: &[f64], want: &[f64], rel: f64, what: &str) {
     assert_eq!(got.len(), want.len(), "{what}: got {got:?}, want {want:?}");
     for (g, w) in got.iter().zip(want) {
-        assert!(((g - w) / w).abs() <= rel, "{what}: got {g}, want {w} (rel tol {rel})");
+        assert!(
+            ((g - w) / w).abs() <= rel,
+            "{what}: got {g}, want {w} (rel tol {rel})"
+        );
     }
 }
 
@@ -44,20 +47,42 @@ fn fig_7_det_k_roots_aircraft_a_are_the_saddle_nodes_of_fig_1() {
     assert_close(&p0, &[1.706288, 3.033180], 1e-6, "Fig. 7 (independent)");
     assert_close(&p0, &[1.70, 3.03], 4e-3, "Fig. 7 (paper)");
     // Fig. 1: saddle-nodes near delta_a = -4 deg and +8 deg; issue: -3.847 deg at the first.
-    assert!((a.jump[0].delta_a_deg - -3.847).abs() < 1e-3, "{:?}", a.jump[0]);
+    assert!(
+        (a.jump[0].delta_a_deg - -3.847).abs() < 1e-3,
+        "{:?}",
+        a.jump[0]
+    );
     assert!((a.jump[0].delta_a_rad - -0.06714).abs() < 1e-5);
     assert!((a.jump[1].delta_a_deg - 8.0).abs() < 1.0, "{:?}", a.jump[1]);
-    assert!(a.det_k_poles.is_empty(), "A has no poles below the range: {:?}", a.det_k_poles);
+    assert!(
+        a.det_k_poles.is_empty(),
+        "A has no poles below the range: {:?}",
+        a.det_k_poles
+    );
 }
 
 #[test]
 fn fig_8_det_k_roots_and_poles_aircraft_b() {
     let b = at_2deg(&Aircraft::b());
     let p0: Vec<f64> = b.jump.iter().map(|j| j.p0).collect();
-    assert_close(&p0, &[2.595015, 3.006127, 3.351058, 4.627182], 1e-6, "Fig. 8 roots");
-    assert_close(&b.det_k_poles, &[2.95891, 3.01944, 4.68475, 4.88055], 1e-5, "Fig. 8 poles");
+    assert_close(
+        &p0,
+        &[2.595015, 3.006127, 3.351058, 4.627182],
+        1e-6,
+        "Fig. 8 roots",
+    );
+    assert_close(
+        &b.det_k_poles,
+        &[2.95891, 3.01944, 4.68475, 4.88055],
+        1e-5,
+        "Fig. 8 poles",
+    );
     // Fig. 2: the primary branch folds near delta_a = -12 deg.
-    assert!((b.jump[0].delta_a_deg - -12.0).abs() < 1.0, "{:?}", b.jump[0]);
+    assert!(
+        (b.jump[0].delta_a_deg - -12.0).abs() < 1.0,
+        "{:?}",
+        b.jump[0]
+    );
 }
 
 #[test]
@@ -65,7 +90,12 @@ fn fig_11_zero_sideslip_departure_aircraft_a() {
     let a = at_2deg(&Aircraft::a());
     let p0: Vec<f64> = a.zero_sideslip.departure.iter().map(|j| j.p0).collect();
     assert_close(&p0, &[2.130625, 4.457684], 1e-6, "Fig. 11 (independent)");
-    assert_close(&p0, &[2.1293, 4.4546], 1e-3, "Fig. 11 (paper, rounded data)");
+    assert_close(
+        &p0,
+        &[2.1293, 4.4546],
+        1e-3,
+        "Fig. 11 (paper, rounded data)",
+    );
 }
 
 /// At every reported jump point a real eigenvalue of J5 (nalgebra, finite-difference Jacobian
@@ -112,7 +142,11 @@ fn reported_trims_satisfy_the_pss_equations() {
                 &[j.alpha, j.beta, j.p0, j.q, j.r],
                 &[j.delta_a_rad, a.delta_e_rad, 0.0],
             );
-            assert!(f.iter().all(|v| v.abs() < 1e-9), "{}: residual {f:?}", a.aircraft);
+            assert!(
+                f.iter().all(|v| v.abs() < 1e-9),
+                "{}: residual {f:?}",
+                a.aircraft
+            );
         }
         for z in &a.zero_sideslip.departure {
             let (x, da, _) = paper_tests::zero_sideslip_trim(&k, z.p0, a.delta_e_rad).unwrap();

@@ -115,26 +115,32 @@ impl Matrix {
             for j in 0..n {
                 let rows: Vec<usize> = (0..n).filter(|r| *r != i).collect();
                 let cols: Vec<usize> = (0..n).filter(|c| *c != j).collect();
-                let m = if n == 1 { Poly::int(1) } else { self.minor_det(&rows, &cols) };
+                let m = if n == 1 {
+                    Poly::int(1)
+                } else {
+                    self.minor_det(&rows, &cols)
+                };
                 // adj(A)[j][i] = (-1)^(i+j) M_ij
                 data[j * n + i] = if (i + j) % 2 == 0 { m } else { -m };
             }
         }
-        Matrix { rows: n, cols: n, data }
+        Matrix {
+            rows: n,
+            cols: n,
+            data,
+        }
     }
 
     /// Matrix-vector product.
     pub fn mul_vec(&self, v: &[Poly]) -> Vec<Poly> {
         assert_eq!(v.len(), self.cols);
         (0..self.rows)
-            .map(|i| {
-                (0..self.cols).fold(Poly::zero(), |acc, j| &acc + &(self.get(i, j) * &v[j]))
-            })
+            .map(|i| (0..self.cols).fold(Poly::zero(), |acc, j| &acc + &(self.get(i, j) * &v[j])))
             .collect()
     }
 
     /// Solves `A x = b` by the adjugate: returns the numerators `adj(A) b` and the common
-    /// denominator `det A`, unnormalised (x_i = numerators[i] / det).
+    /// denominator `det A`, unnormalised (`x_i = numerators[i] / det`).
     pub fn solve(&self, b: &[Poly]) -> (Vec<Poly>, Poly) {
         (self.adjugate().mul_vec(b), self.det())
     }

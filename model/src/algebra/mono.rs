@@ -56,7 +56,10 @@ impl Mono {
             *slot = self.0[i] + o.0[i];
             high |= *slot;
         }
-        assert!(high & HIGH_BITS == 0, "exponent overflow in monomial product");
+        assert!(
+            high & HIGH_BITS == 0,
+            "exponent overflow in monomial product"
+        );
         Mono(r)
     }
 
@@ -103,7 +106,13 @@ impl fmt::Debug for Mono {
         let parts: Vec<String> = self
             .factors()
             .iter()
-            .map(|(s, e)| if *e == 1 { s.name().to_string() } else { format!("{}^{e}", s.name()) })
+            .map(|(s, e)| {
+                if *e == 1 {
+                    s.name().to_string()
+                } else {
+                    format!("{}^{e}", s.name())
+                }
+            })
             .collect();
         f.write_str(&parts.join("*"))
     }

@@ -45,7 +45,9 @@ impl Poly {
         if c.is_zero() {
             Poly::zero()
         } else {
-            Poly { terms: vec![(m, c)] }
+            Poly {
+                terms: vec![(m, c)],
+            }
         }
     }
 
@@ -53,14 +55,16 @@ impl Poly {
     pub fn from_terms(terms: impl IntoIterator<Item = (Mono, Q)>) -> Poly {
         let mut map: FxHashMap<Mono, Q> = FxHashMap::default();
         for (m, c) in terms {
-            map.entry(m).and_modify(|a| a.add_assign_ref(&c)).or_insert(c);
+            map.entry(m)
+                .and_modify(|a| a.add_assign_ref(&c))
+                .or_insert(c);
         }
         Poly::from_map(map)
     }
 
     fn from_map(map: FxHashMap<Mono, Q>) -> Poly {
         let mut terms: Vec<(Mono, Q)> = map.into_iter().filter(|(_, c)| !c.is_zero()).collect();
-        terms.sort_unstable_by(|a, b| a.0.cmp(&b.0));
+        terms.sort_unstable_by_key(|t| t.0);
         Poly { terms }
     }
 
@@ -72,6 +76,11 @@ impl Poly {
     /// Number of terms.
     pub fn len(&self) -> usize {
         self.terms.len()
+    }
+
+    /// True for the zero polynomial (no terms); the same as [`Poly::is_zero`].
+    pub fn is_empty(&self) -> bool {
+        self.terms.is_empty()
     }
 
     /// True for the zero polynomial.
@@ -101,7 +110,11 @@ impl Poly {
     /// Multiplies by the monomial `m` (order is preserved, so no re-sort).
     pub fn mul_mono(&self, m: &Mono) -> Poly {
         Poly {
-            terms: self.terms.iter().map(|(t, a)| (t.mul(m), a.clone())).collect(),
+            terms: self
+                .terms
+                .iter()
+                .map(|(t, a)| (t.mul(m), a.clone()))
+                .collect(),
         }
     }
 
@@ -120,7 +133,11 @@ impl Poly {
                     j += 1;
                 }
                 std::cmp::Ordering::Equal => {
-                    let c = if negate { &a[i].1 - &b[j].1 } else { &a[i].1 + &b[j].1 };
+                    let c = if negate {
+                        &a[i].1 - &b[j].1
+                    } else {
+                        &a[i].1 + &b[j].1
+                    };
                     if !c.is_zero() {
                         out.push((a[i].0, c));
                     }
@@ -130,7 +147,11 @@ impl Poly {
             }
         }
         out.extend_from_slice(&a[i..]);
-        out.extend(b[j..].iter().map(|(m, c)| (*m, if negate { -c } else { c.clone() })));
+        out.extend(
+            b[j..]
+                .iter()
+                .map(|(m, c)| (*m, if negate { -c } else { c.clone() })),
+        );
         Poly { terms: out }
     }
 
@@ -212,11 +233,15 @@ impl Poly {
 
     /// The coefficient of `s^k`, a polynomial free of `s`.
     pub fn coeff(&self, s: Sym, k: u32) -> Poly {
-        let terms = self.terms.iter().filter(|(m, _)| m.exp(s) == k).map(|(m, c)| {
-            let mut m2 = *m;
-            m2.set(s, 0);
-            (m2, c.clone())
-        });
+        let terms = self
+            .terms
+            .iter()
+            .filter(|(m, _)| m.exp(s) == k)
+            .map(|(m, c)| {
+                let mut m2 = *m;
+                m2.set(s, 0);
+                (m2, c.clone())
+            });
         Poly::from_terms(terms)
     }
 
@@ -259,17 +284,159 @@ impl Poly {
                 factor = factor.mul_ref(&powers[i][e]);
             }
             for (fm, fc) in factor.mul_mono(&rest).terms {
-                map.entry(fm).and_modify(|a| a.add_assign_ref(&fc)).or_insert(fc);
+                map.entry(fm)
+                    .and_modify(|a| a.add_assign_ref(&fc))
+                    .or_insert(fc);
             }
         }
         Poly::from_map(map)
     }
 
     /// Substitutes exact rational values for symbols.
+    ///
+    /// Per term, the numerators and denominators of the factors are multiplied as big integers
+    /// and reduced once, so substituting an aircraft's decimal data costs one gcd per term.
     pub fn subs_values(&self, values: &[(Sym, Q)]) -> Poly {
-        let subs: Vec<(Sym, Poly)> =
-            values.iter().map(|(s, v)| (*s, Poly::constant(v.clone()))).collect();
-        self.subs_all(&subs)
+        use num_bigint::BigInt;
+        let present: Vec<&(Sym, Q)> = values.iter().filter(|(s, _)| self.contains(*s)).collect();
+        if present.is_empty() {
+            return self.clone();
+        }
+        let parts: Vec<(BigInt, BigInt)> = present
+            .iter()
+            .map(|(_, v)| {
+                let b = v.to_big();
+                (b.numer().clone(), b.denom().clone())
+            })
+            .collect();
+        // powers[i][e] = (n_i^e, d_i^e), grown on demand.
+        let mut powers: Vec<Vec<(BigInt, BigInt)>> = parts
+            .iter()
+            .map(|_| vec![(BigInt::from(1), BigInt::from(1))])
+            .collect();
+        let mut map: FxHashMap<Mono, Q> = FxHashMap::default();
+        for (m, c) in &self.terms {
+            let mut rest = *m;
+            let cb = c.to_big();
+            let (mut num, mut den) = (cb.numer().clone(), cb.denom().clone());
+            for (i, (s, _)) in present.iter().enumerate() {
+                let e = m.exp(*s) as usize;
+                if e == 0 {
+                    continue;
+                }
+                rest.set(*s, 0);
+                while powers[i].len() <= e {
+                    let last = &powers[i][powers[i].len() - 1];
+                    let next = (&last.0 * &parts[i].0, &last.1 * &parts[i].1);
+                    powers[i].push(next);
+                }
+                num *= &powers[i][e].0;
+                den *= &powers[i][e].1;
+            }
+            let q = Q::from_big(num_rational::BigRational::new(num, den));
+            map.entry(rest)
+                .and_modify(|a| a.add_assign_ref(&q))
+                .or_insert(q);
+        }
+        Poly::from_map(map)
+    }
+
+    /// Substitutes exact values into several integer-coefficient polynomials at once and
+    /// multiplies all of them by one positive integer, the least common multiple of the terms'
+    /// denominators, so that the results have integer coefficients and keep every ratio between
+    /// them. Decimal data and f64 values have denominators 2^a 5^b, for which the lcm is
+    /// exponent arithmetic; other denominators fall back to big-integer lcm. Returns `None`
+    /// if a coefficient is not an integer.
+    pub fn subs_values_cleared(polys: &[&Poly], values: &[(Sym, Q)]) -> Option<Vec<Poly>> {
+        use num_bigint::BigInt;
+        use num_integer::Integer;
+        use num_traits::{One, Zero};
+        let parts: Vec<(Sym, BigInt, BigInt, usize)> = values
+            .iter()
+            .map(|(s, v)| {
+                let b = v.to_big();
+                let d = polys.iter().map(|p| p.degree(*s)).max().unwrap_or(0) as usize;
+                (*s, b.numer().clone(), b.denom().clone(), d)
+            })
+            .filter(|(_, _, _, d)| *d > 0)
+            .collect();
+        // Denominators as 2^a 5^b when possible.
+        let two_five = |d: &BigInt| -> Option<(u64, u64)> {
+            let a = d.trailing_zeros().unwrap_or(0);
+            let mut rest = d >> a;
+            let mut b = 0;
+            let five = BigInt::from(5);
+            while !rest.is_one() {
+                let (q, r) = rest.div_rem(&five);
+                if !r.is_zero() {
+                    return None;
+                }
+                rest = q;
+                b += 1;
+            }
+            Some((a, b))
+        };
+        let exps: Option<Vec<(u64, u64)>> = parts.iter().map(|(_, _, d, _)| two_five(d)).collect();
+        let num_pows: Vec<Vec<BigInt>> = parts
+            .iter()
+            .map(|(_, n, _, d)| (0..=*d).map(|e| num_traits::pow(n.clone(), e)).collect())
+            .collect();
+        let mut out = Vec::with_capacity(polys.len());
+        // Per polynomial, per term: monomial, numerator, (2, 5) exponents or denominator.
+        type Scaled = (Mono, BigInt, (u64, u64), BigInt);
+        let mut terms: Vec<Vec<Scaled>> = Vec::new();
+        for p in polys {
+            let mut v = Vec::with_capacity(p.len());
+            for (m, c) in &p.terms {
+                if !c.is_integer() {
+                    return None;
+                }
+                let mut num = c.to_big().numer().clone();
+                let (mut a, mut b) = (0u64, 0u64);
+                let mut den = BigInt::one();
+                let mut rest = *m;
+                for (i, (s, _, d, _)) in parts.iter().enumerate() {
+                    let e = m.exp(*s) as usize;
+                    if e > 0 {
+                        rest.set(*s, 0);
+                        num *= &num_pows[i][e];
+                        match &exps {
+                            Some(x) => {
+                                a += x[i].0 * e as u64;
+                                b += x[i].1 * e as u64;
+                            }
+                            None => den *= num_traits::pow(d.clone(), e),
+                        }
+                    }
+                }
+                v.push((rest, num, (a, b), den));
+            }
+            terms.push(v);
+        }
+        let all = terms.iter().flatten();
+        let (max_a, max_b) = all
+            .clone()
+            .fold((0, 0), |m, t| (m.0.max(t.2 .0), m.1.max(t.2 .1)));
+        let lcm = all.fold(BigInt::one(), |l, t| l.lcm(&t.3));
+        let five_pows: Vec<BigInt> = (0..=max_b)
+            .map(|k| num_traits::pow(BigInt::from(5), k as usize))
+            .collect();
+        for v in terms {
+            let mut map: FxHashMap<Mono, Q> = FxHashMap::default();
+            for (rest, num, (a, b), den) in v {
+                let scaled = if exps.is_some() {
+                    (num * &five_pows[(max_b - b) as usize]) << (max_a - a)
+                } else {
+                    num * (&lcm / den)
+                };
+                let q = Q::from_big(num_rational::BigRational::from_integer(scaled));
+                map.entry(rest)
+                    .and_modify(|x| x.add_assign_ref(&q))
+                    .or_insert(q);
+            }
+            out.push(Poly::from_map(map));
+        }
+        Some(out)
     }
 
     /// Evaluates in f64 with `value(sym)` for every symbol.

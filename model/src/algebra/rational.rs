@@ -201,7 +201,9 @@ impl Mul for &Q {
         match (&self.0, &o.0) {
             (Repr::Int(a), Repr::Int(b)) => match a.checked_mul(*b) {
                 Some(p) => Q::int(p),
-                None => Q::from_big(BigRational::from_integer(BigInt::from(*a) * BigInt::from(*b))),
+                None => Q::from_big(BigRational::from_integer(
+                    BigInt::from(*a) * BigInt::from(*b),
+                )),
             },
             (Repr::Int(0), _) | (_, Repr::Int(0)) => Q::ZERO,
             (Repr::Int(1), _) => o.clone(),
@@ -283,9 +285,16 @@ mod tests {
     fn integer_overflow_promotes_to_big_and_stays_exact() {
         let big = Q::int(i64::MAX);
         let s = &big + &Q::ONE;
-        assert_eq!(s.to_big(), BigRational::from_integer(BigInt::from(i64::MAX) + 1));
+        assert_eq!(
+            s.to_big(),
+            BigRational::from_integer(BigInt::from(i64::MAX) + 1)
+        );
         let back = &s - &Q::ONE;
-        assert_eq!(back, Q::int(i64::MAX), "canonical form returns to the fast path");
+        assert_eq!(
+            back,
+            Q::int(i64::MAX),
+            "canonical form returns to the fast path"
+        );
         let p = &big * &big;
         assert_eq!(p.div(&big), big);
     }

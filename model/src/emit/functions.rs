@@ -1,0 +1,743 @@
+//! Which derived results become which generated functions, and with what documentation.
+//!
+//! Each [`Function`] is a straight-line program over a [`Dag`] built from the derivation's
+//! polynomials: the trim first (one division by det A), then the quantities that use it, so
+//! that det K costs one trim, one reciprocal of d and a 2x2 determinant.
+
+use super::expr::{Dag, Id};
+use crate::aircraft::Param;
+use crate::algebra::{Matrix, Poly, Sym, Q};
+use crate::derivation::Derivation;
+use crate::equations::symbols;
+
+/// How a generated function returns its outputs.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Ret {
+    /// A single f64.
+    Scalar,
+    /// `[f64; N]`.
+    Array(usize),
+    /// `[[f64; C]; R]`.
+    Matrix(usize, usize),
+    /// A named struct with one f64 field per output.
+    Struct(&'static str),
+}
+
+/// A scalar argument of a generated function (besides `k: &Derivatives`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Arg {
+    /// Rust name.
+    pub name: &'static str,
+    /// Doc: meaning and unit.
+    pub doc: &'static str,
+}
+
+/// One generated function.
+#[derive(Clone, Debug)]
+pub struct Function {
+    /// Rust name.
+    pub name: &'static str,
+    /// Doc comment lines (formula, equation numbers, units).
+    pub doc: Vec<String>,
+    /// Whether the function takes `k: &Derivatives` (parametric) or has the data folded in.
+    pub takes_derivatives: bool,
+    /// Scalar arguments.
+    pub args: Vec<Arg>,
+    /// The program.
+    pub dag: Dag,
+    /// Output names (struct fields, or `""` for arrays) and nodes.
+    pub outputs: Vec<(String, Id)>,
+    /// Return shape.
+    pub ret: Ret,
+}
+
+/// A struct the functions return: name, doc, fields (name, doc).
+pub type StructSpec = (
+    &'static str,
+    &'static str,
+    Vec<(&'static str, &'static str)>,
+);
+
+/// The struct types the functions return.
+pub fn structs() -> Vec<StructSpec> {
+    vec![
+        (
+            "Trim",
+            "Pseudo-steady trim of the unconstrained roll at roll rate P0 (Eqs 3-4 and the roll equation).",
+            vec![
+                ("alpha", "Angle of attack alpha_0, rad."),
+                ("beta", "Sideslip beta_0, rad."),
+                ("q", "Pitch rate Q_0, rad/s."),
+                ("r", "Yaw rate R_0, rad/s."),
+                ("delta_a", "Aileron deflection holding the trim, rad."),
+            ],
+        ),
+        (
+            "ZeroSideslipTrim",
+            "Trim of the zero-sideslip roll at roll rate P0 (Eqs 32-35): beta = 0, rudder freed.",
+            vec![
+                ("alpha", "Angle of attack alpha_0, rad."),
+                ("q", "Pitch rate Q_0, rad/s."),
+                ("r", "Yaw rate R_0, rad/s."),
+                ("delta_a", "Aileron deflection holding the trim, rad."),
+                (
+                    "n_delta_r_delta_r",
+                    "Yawing acceleration the rudder must supply, n_delta_r * delta_r, 1/s^2 (divide by n_delta_r for the schedule).",
+                ),
+            ],
+        ),
+    ]
+}
+
+const P0: Arg = Arg {
+    name: "p0",
+    doc: "trim roll rate P0, rad/s",
+};
+const DE: Arg = Arg {
+    name: "delta_e",
+    doc: "elevator deflection, rad",
+};
+const DR: Arg = Arg {
+    name: "delta_r",
+    doc: "rudder deflection, rad",
+};
+
+/// Builds the leaf map of a function: parameters from `k`, controls and P0 from arguments,
+/// trim symbols from already-computed nodes.
+struct Ctx {
+    dag: Dag,
+    bound: Vec<(Sym, Id)>,
+}
+
+impl Ctx {
+    fn new(takes_derivatives: bool, args: &[Arg]) -> Ctx {
+        let s = symbols();
+        let mut dag = Dag::new();
+        let mut bound = Vec::new();
+        for a in args {
+            let id = dag.input(a.name);
+            let sym = match a.name {
+                "p0" => s.p0,
+                "delta_e" => s.delta_e,
+                "delta_r" => s.delta_r,
+                "alpha" => s.alpha0,
+                "beta" => s.beta0,
+                "p" => s.p0,
+                "q" => s.q0,
+                "r" => s.r0,
+                other => unreachable!("argument {other}"),
+            };
+            bound.push((sym, id));
+        }
+        if takes_derivatives {
+            for p in Param::ALL {
+                let id = dag.input(&format!("k.{}", p.key().to_lowercase()));
+                bound.push((s.param(p), id));
+            }
+        }
+        Ctx { dag, bound }
+    }
+
+    fn poly(&mut self, p: &Poly) -> Id {
+        let bound = self.bound.clone();
+        let leaf = move |x: Sym| -> Id {
+            bound
+                .iter()
+                .find(|(s, _)| *s == x)
+                .map(|(_, id)| *id)
+                .unwrap_or_else(|| panic!("symbol {x} is not bound in this function"))
+        };
+        self.dag.poly(p, &leaf)
+    }
+
+    fn bind(&mut self, s: Sym, id: Id) {
+        self.bound.push((s, id));
+    }
+
+    /// Nodes of a matrix's entries.
+    fn matrix(&mut self, m: &Matrix) -> Vec<Vec<Id>> {
+        (0..m.rows())
+            .map(|i| (0..m.cols()).map(|j| self.poly(m.get(i, j))).collect())
+            .collect()
+    }
+
+    /// Determinant of the submatrix on the row and column masks, by Laplace expansion along
+    /// its first row, memoised so that cofactors shared by det A and Cramer's rule are built
+    /// once (the DAG shares them anyway; the memo saves the work).
+    fn minor(
+        &mut self,
+        m: &[Vec<Id>],
+        rows: u32,
+        cols: u32,
+        memo: &mut Vec<((u32, u32), Id)>,
+    ) -> Id {
+        if rows == 0 {
+            return self.dag.constant(Q::ONE);
+        }
+        if let Some((_, id)) = memo.iter().find(|(k, _)| *k == (rows, cols)) {
+            return *id;
+        }
+        let r = rows.trailing_zeros() as usize;
+        let mut acc = self.dag.constant(Q::ZERO);
+        let mut positive = true;
+        for (c, entry) in m[r].iter().enumerate() {
+            if cols & (1 << c) == 0 {
+                continue;
+            }
+            let sub = self.minor(m, rows & !(1 << r), cols & !(1 << c), memo);
+            let t = self.dag.mul(*entry, sub);
+            acc = if positive {
+                self.dag.add(acc, t)
+            } else {
+                self.dag.sub(acc, t)
+            };
+            positive = !positive;
+        }
+        memo.push(((rows, cols), acc));
+        acc
+    }
+
+    /// Solves `A x + c = 0` by Cramer's rule in the DAG: `x_i = -sum_r C_ri c_r / det A`
+    /// with cofactors `C_ri`, one reciprocal of det A.
+    fn cramer(&mut self, a: &Matrix, c: &[Poly]) -> Vec<Id> {
+        let (nums, det) = self.cramer_numerators(a, c);
+        let one = self.dag.constant(Q::ONE);
+        let inv = self.dag.div(one, det);
+        nums.iter().map(|n| self.dag.mul(*n, inv)).collect()
+    }
+
+    /// Cramer's numerators `-sum_r C_ri c_r` and the denominator det A, without dividing.
+    fn cramer_numerators(&mut self, a: &Matrix, c: &[Poly]) -> (Vec<Id>, Id) {
+        let m = self.matrix(a);
+        let c: Vec<Id> = c.iter().map(|p| self.poly(p)).collect();
+        let n = m.len();
+        let all = (1u32 << n) - 1;
+        let mut memo = Vec::new();
+        let det = self.minor(&m, all, all, &mut memo);
+        let nums = (0..n)
+            .map(|i| {
+                let mut acc = self.dag.constant(Q::ZERO);
+                for (r, cr) in c.iter().enumerate() {
+                    let minor = self.minor(&m, all & !(1 << r), all & !(1 << i), &mut memo);
+                    let t = self.dag.mul(*cr, minor);
+                    // x_i = -sum_r (-1)^(r+i) M_ri c_r / det
+                    acc = if (r + i) % 2 == 0 {
+                        self.dag.sub(acc, t)
+                    } else {
+                        self.dag.add(acc, t)
+                    };
+                }
+                acc
+            })
+            .collect();
+        (nums, det)
+    }
+
+    /// `f * den^k` with the trim symbols `t` bound to `num / den`, built without division:
+    /// each term of degree j in `t` is multiplied by `den^(k - j)` (k = degree of f in t).
+    fn cleared(&mut self, f: &Poly, t: &[Sym], num: &[Id], den: Id, k: u32) -> Id {
+        let mut parts: Vec<(u32, Poly)> = Vec::new();
+        for (m, c) in f.terms() {
+            let j: u32 = t.iter().map(|s| m.exp(*s)).sum();
+            let term = Poly::term(*m, c.clone());
+            match parts.iter_mut().find(|(d, _)| *d == j) {
+                Some((_, p)) => *p = &*p + &term,
+                None => parts.push((j, term)),
+            }
+        }
+        parts.sort_by_key(|(j, _)| *j);
+        let saved = self.bound.clone();
+        for (s, n) in t.iter().zip(num) {
+            self.bind(*s, *n);
+        }
+        let mut acc = self.dag.constant(Q::ZERO);
+        for (j, p) in parts {
+            let v = self.poly(&p);
+            let pw = self.dag.power(den, k - j);
+            let t = self.dag.mul(v, pw);
+            acc = self.dag.add(acc, t);
+        }
+        self.bound = saved;
+        acc
+    }
+
+    /// det K with a single division (Eq. 27 by the matrix determinant lemma): with the trim
+    /// numerators N over det A, `det K = det K0 - (h^ . adj(K0) g^) / d^` where g^ = g det A,
+    /// h^ = h det A and d^ = d det(A)^2 are polynomials in N and det A.
+    fn det_k_one_division(&mut self, d: &Derivation, a: &Matrix, rhs: &[Poly], t: &[Sym]) -> Id {
+        let (num, det) = self.cramer_numerators(a, rhs);
+        let g = [
+            self.cleared(&d.g[0], t, &num, det, 1),
+            self.cleared(&d.g[1], t, &num, det, 1),
+        ];
+        let h = [
+            self.cleared(&d.h[0], t, &num, det, 1),
+            self.cleared(&d.h[1], t, &num, det, 1),
+        ];
+        let dd = self.cleared(&d.d, t, &num, det, 2);
+        let k0: Vec<Vec<Id>> = (0..2)
+            .map(|i| (0..2).map(|j| self.poly(&d.k0[i][j])).collect())
+            .collect();
+        let det_k0 = self.det2([[k0[0][0], k0[0][1]], [k0[1][0], k0[1][1]]]);
+        // adj(K0) g^ = [K0_11 g0 - K0_01 g1, K0_00 g1 - K0_10 g0]
+        let a0 = {
+            let x = self.dag.mul(k0[1][1], g[0]);
+            let y = self.dag.mul(k0[0][1], g[1]);
+            self.dag.sub(x, y)
+        };
+        let a1 = {
+            let x = self.dag.mul(k0[0][0], g[1]);
+            let y = self.dag.mul(k0[1][0], g[0]);
+            self.dag.sub(x, y)
+        };
+        let quad = {
+            let x = self.dag.mul(h[0], a0);
+            let y = self.dag.mul(h[1], a1);
+            self.dag.add(x, y)
+        };
+        let frac = self.dag.div(quad, dd);
+        self.dag.sub(det_k0, frac)
+    }
+
+    /// Binds alpha0, beta0, Q0, R0 of the unconstrained trim (Eqs 3-4).
+    fn trim(&mut self, d: &Derivation) -> [Id; 4] {
+        let s = symbols();
+        let x = self.cramer(&d.a, &d.a_rhs);
+        let syms = [s.alpha0, s.beta0, s.q0, s.r0];
+        for (sym, id) in syms.iter().zip(&x) {
+            self.bind(*sym, *id);
+        }
+        [x[0], x[1], x[2], x[3]]
+    }
+
+    /// Binds alpha0, Q0, R0 of the zero-sideslip trim (Eq. 35) and beta0 = 0.
+    fn zs_trim(&mut self, d: &Derivation) -> [Id; 3] {
+        let s = symbols();
+        let x = self.cramer(&d.zs_a, &d.zs_rhs);
+        for (sym, id) in [s.alpha0, s.q0, s.r0].iter().zip(&x) {
+            self.bind(*sym, *id);
+        }
+        let zero = self.dag.constant(Q::ZERO);
+        self.bind(s.beta0, zero);
+        [x[0], x[1], x[2]]
+    }
+
+    /// Coefficients of a polynomial in P0 as nodes (ascending powers).
+    fn in_p0(&mut self, p: &Poly) -> Vec<Id> {
+        let s = symbols();
+        p.coeffs(s.p0).iter().map(|c| self.poly(c)).collect()
+    }
+
+    /// Product of two polynomials in P0 given by coefficient nodes.
+    fn conv(&mut self, a: &[Id], b: &[Id]) -> Vec<Id> {
+        let zero = self.dag.constant(Q::ZERO);
+        let mut out = vec![zero; a.len() + b.len() - 1];
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                let t = self.dag.mul(*x, *y);
+                out[i + j] = self.dag.add(out[i + j], t);
+            }
+        }
+        out
+    }
+
+    /// `f(t = num / den) * den^k` as coefficient nodes in P0, where f has degree k in the
+    /// trim symbols `t` (step 8 of the derivation, by univariate convolutions).
+    fn homogenize(&mut self, f: &Poly, t: &[Sym], num: &[Poly], den: &Poly) -> Vec<Id> {
+        let k = f.degree_in(t) as usize;
+        let num: Vec<Vec<Id>> = num.iter().map(|n| self.in_p0(n)).collect();
+        let den = self.in_p0(den);
+        let one = vec![self.dag.constant(Q::ONE)];
+        let mut den_pows = vec![one.clone()];
+        for i in 0..k {
+            let next = self.conv(&den_pows[i], &den);
+            den_pows.push(next);
+        }
+        // Group f by its monomial in t: f = sum_m c_m t^m.
+        let mut groups: Vec<(Vec<u32>, Poly)> = Vec::new();
+        for (m, c) in f.terms() {
+            let e: Vec<u32> = t.iter().map(|s| m.exp(*s)).collect();
+            let mut rest = *m;
+            for s in t {
+                rest.set(*s, 0);
+            }
+            let term = Poly::term(rest, c.clone());
+            match groups.iter_mut().find(|(g, _)| *g == e) {
+                Some((_, p)) => *p = &*p + &term,
+                None => groups.push((e, term)),
+            }
+        }
+        groups.sort_by(|a, b| a.0.cmp(&b.0));
+        let zero = self.dag.constant(Q::ZERO);
+        let mut acc: Vec<Id> = Vec::new();
+        for (e, c) in groups {
+            let mut prod = one.clone();
+            for (i, ei) in e.iter().enumerate() {
+                for _ in 0..*ei {
+                    prod = self.conv(&prod, &num[i]);
+                }
+            }
+            let deg: usize = e.iter().map(|x| *x as usize).sum();
+            prod = self.conv(&prod, &den_pows[k - deg]);
+            let c = self.in_p0(&c);
+            let term = self.conv(&c, &prod);
+            if acc.len() < term.len() {
+                acc.resize(term.len(), zero);
+            }
+            for (i, x) in term.iter().enumerate() {
+                acc[i] = self.dag.add(acc[i], *x);
+            }
+        }
+        acc
+    }
+
+    /// det K from the bound trim: K = K0 - g h^T / d (Eqs 16, 27-31), then the 2x2 determinant.
+    fn stiffness(&mut self, d: &Derivation) -> [[Id; 2]; 2] {
+        let dd = self.poly(&d.d);
+        let one = self.dag.constant(Q::ONE);
+        let inv_d = self.dag.div(one, dd);
+        let g = [self.poly(&d.g[0]), self.poly(&d.g[1])];
+        let h = [self.poly(&d.h[0]), self.poly(&d.h[1])];
+        let mut k = [[inv_d; 2]; 2];
+        for i in 0..2 {
+            let gi = self.dag.mul(g[i], inv_d);
+            for j in 0..2 {
+                let k0 = self.poly(&d.k0[i][j]);
+                let f = self.dag.mul(gi, h[j]);
+                k[i][j] = self.dag.sub(k0, f);
+            }
+        }
+        k
+    }
+
+    fn det2(&mut self, k: [[Id; 2]; 2]) -> Id {
+        let a = self.dag.mul(k[0][0], k[1][1]);
+        let b = self.dag.mul(k[0][1], k[1][0]);
+        self.dag.sub(a, b)
+    }
+
+    fn finish(
+        self,
+        name: &'static str,
+        doc: Vec<String>,
+        takes: bool,
+        args: Vec<Arg>,
+        outputs: Vec<(String, Id)>,
+        ret: Ret,
+    ) -> Function {
+        Function {
+            name,
+            doc,
+            takes_derivatives: takes,
+            args,
+            dag: self.dag,
+            outputs,
+            ret,
+        }
+    }
+}
+
+fn lines(v: &[&str]) -> Vec<String> {
+    v.iter().map(|s| s.to_string()).collect()
+}
+
+/// All generated functions for a derivation (parametric when `takes_derivatives`).
+pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
+    let s = symbols();
+    let t = takes_derivatives;
+    let mut out = Vec::new();
+    let trim_args = vec![P0, DE, DR];
+
+    // trim
+    {
+        let mut c = Ctx::new(t, &trim_args);
+        let [a, b, q, r] = c.trim(d);
+        let num = c.poly(&d.delta_a.num);
+        let den = c.poly(&d.delta_a.den);
+        let da = c.dag.div(num, den);
+        let outputs = vec![
+            ("alpha".into(), a),
+            ("beta".into(), b),
+            ("q".into(), q),
+            ("r".into(), r),
+            ("delta_a".into(), da),
+        ];
+        out.push(c.finish(
+            "trim",
+            lines(&[
+                "Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`",
+                "for x = [alpha, beta, q, r], then the aileron from the roll equation",
+                "`delta_a = -(l_p P0 + l_beta beta0 + l_r R0 - E Q0 R0) / l_delta_a` (n_delta_a = 0).",
+                "Angles in rad, rates in rad/s. Non-finite where det A = 0 (the divergence roll rates).",
+            ]),
+            t,
+            trim_args.clone(),
+            outputs,
+            Ret::Struct("Trim"),
+        ));
+    }
+    // zero-sideslip trim
+    {
+        let args = vec![P0, DE];
+        let mut c = Ctx::new(t, &args);
+        let [a, q, r] = c.zs_trim(d);
+        let num = c.poly(&d.zs_delta_a.num);
+        let den = c.poly(&d.zs_delta_a.den);
+        let da = c.dag.div(num, den);
+        c.bind(s.delta_a, da);
+        // n_delta_r * delta_r = -(yaw equation without the rudder term): the numerator of the
+        // schedule, whose denominator is n_delta_r itself.
+        let ndr = c.poly(&d.zs_delta_r.num);
+        let outputs = vec![
+            ("alpha".into(), a),
+            ("q".into(), q),
+            ("r".into(), r),
+            ("delta_a".into(), da),
+            ("n_delta_r_delta_r".into(), ndr),
+        ];
+        out.push(c.finish(
+            "zero_sideslip_trim",
+            lines(&[
+                "Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the",
+                "rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron from",
+                "the roll equation and `n_delta_r * delta_r` from the yaw equation (the rudder schedule",
+                "of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.",
+            ]),
+            t,
+            args,
+            outputs,
+            Ret::Struct("ZeroSideslipTrim"),
+        ));
+    }
+    // jacobian5
+    {
+        let args = vec![
+            Arg {
+                name: "alpha",
+                doc: "angle of attack, rad",
+            },
+            Arg {
+                name: "beta",
+                doc: "sideslip, rad",
+            },
+            Arg {
+                name: "p",
+                doc: "roll rate, rad/s",
+            },
+            Arg {
+                name: "q",
+                doc: "pitch rate, rad/s",
+            },
+            Arg {
+                name: "r",
+                doc: "yaw rate, rad/s",
+            },
+        ];
+        let mut c = Ctx::new(t, &args);
+        let mut outputs = Vec::new();
+        for i in 0..5 {
+            for j in 0..5 {
+                let id = c.poly(d.jacobian.get(i, j));
+                outputs.push((String::new(), id));
+            }
+        }
+        out.push(c.finish(
+            "jacobian5",
+            lines(&[
+                "The 5x5 Jacobian of the PSS model (Appendix A.2) at the state",
+                "x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s.",
+            ]),
+            t,
+            args,
+            outputs,
+            Ret::Matrix(5, 5),
+        ));
+    }
+    // residual denominator d
+    {
+        let mut c = Ctx::new(t, &trim_args);
+        c.trim(d);
+        let dd = c.poly(&d.d);
+        out.push(c.finish(
+            "residual_denominator",
+            lines(&[
+                "The static-residual denominator (Eq. 22) at the trim of `p0`:",
+                "`d = l_p + l_r alpha0 - E Q0 alpha0 - E R0 beta0`, 1/s. det K has poles where d = 0 (Fig. 8).",
+            ]),
+            t,
+            trim_args.clone(),
+            vec![(String::new(), dd)],
+            Ret::Scalar,
+        ));
+    }
+    // stiffness
+    {
+        let mut c = Ctx::new(t, &trim_args);
+        c.trim(d);
+        let k = c.stiffness(d);
+        let outputs = k.iter().flatten().map(|id| (String::new(), *id)).collect();
+        out.push(c.finish(
+            "stiffness",
+            lines(&[
+                "The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of `p0`:",
+                "`K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in Eqs 13-14,",
+                "g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual (Eqs 22-25). 1/s^2.",
+            ]),
+            t,
+            trim_args.clone(),
+            outputs,
+            Ret::Matrix(2, 2),
+        ));
+    }
+    // det K
+    {
+        let mut c = Ctx::new(t, &trim_args);
+        let trims = [s.alpha0, s.beta0, s.q0, s.r0];
+        let det = c.det_k_one_division(d, &d.a, &d.a_rhs, &trims);
+        out.push(c.finish(
+            "det_k",
+            lines(&[
+                "The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the",
+                "saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.",
+                "Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared",
+                "from g, h and d, so that it costs a single division.",
+            ]),
+            t,
+            trim_args.clone(),
+            vec![(String::new(), det)],
+            Ret::Scalar,
+        ));
+    }
+    // det J5
+    {
+        let mut c = Ctx::new(t, &trim_args);
+        c.trim(d);
+        let det = c.poly(&d.det_j5);
+        out.push(c.finish(
+            "det_j5",
+            lines(&[
+                "The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;",
+                "equal to `residual_denominator * det_k` identically (step 7 of the derivation).",
+            ]),
+            t,
+            trim_args.clone(),
+            vec![(String::new(), det)],
+            Ret::Scalar,
+        ));
+    }
+    // zero-sideslip det K
+    {
+        let args = vec![P0, DE];
+        let mut c = Ctx::new(t, &args);
+        let zero = c.dag.constant(Q::ZERO);
+        c.bind(s.beta0, zero);
+        let det = c.det_k_one_division(d, &d.zs_a, &d.zs_rhs, &[s.alpha0, s.q0, s.r0]);
+        out.push(c.finish(
+            "zero_sideslip_det_k",
+            lines(&[
+                "det K (Eq. 27) at the zero-sideslip trim of `p0` (section V.D, Fig. 11), 1/s^4: its",
+                "zeros mark the departure (transcritical point) of the zero-sideslip roll.",
+            ]),
+            t,
+            args,
+            vec![(String::new(), det)],
+            Ret::Scalar,
+        ));
+    }
+    // divergence biquadratic and its roots
+    {
+        let mut c = Ctx::new(t, &[]);
+        let outs: Vec<(String, Id)> = d
+            .biquadratic
+            .iter()
+            .map(|p| (String::new(), c.poly(p)))
+            .collect();
+        out.push(c.finish(
+            "divergence_biquadratic",
+            lines(&[
+                "Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive",
+                "roots are the pitch-yaw divergence roll rates of Table 1.",
+            ]),
+            t,
+            vec![],
+            outs,
+            Ret::Array(3),
+        ));
+    }
+    {
+        let mut c = Ctx::new(t, &[]);
+        let [c0, c2, c4] = [0, 1, 2].map(|i| c.poly(&d.biquadratic[i]));
+        let dag = &mut c.dag;
+        let four = dag.constant(Q::int(4));
+        let two = dag.constant(Q::int(2));
+        let c2sq = dag.mul(c2, c2);
+        let c4c0 = dag.mul(c4, c0);
+        let f = dag.mul(four, c4c0);
+        let disc = dag.sub(c2sq, f);
+        let sq = dag.sqrt(disc);
+        let nc2 = dag.neg(c2);
+        let den = dag.mul(two, c4);
+        let lo = dag.sub(nc2, sq);
+        let hi = dag.add(nc2, sq);
+        let x1 = dag.div(lo, den);
+        let x2 = dag.div(hi, den);
+        let p1 = dag.sqrt(x1);
+        let p2 = dag.sqrt(x2);
+        out.push(c.finish(
+            "divergence_roll_rates",
+            lines(&[
+                "The divergence roll rates P1, P2 of Eq. 5 (Table 1), rad/s:",
+                "`P = sqrt((-c2 -+ sqrt(c2^2 - 4 c4 c0)) / (2 c4))`, ascending when c4 = C D > 0.",
+                "NaN for a root that does not exist (negative discriminant or P0^2 < 0), without a branch.",
+            ]),
+            t,
+            vec![],
+            vec![(String::new(), p1), (String::new(), p2)],
+            Ret::Array(2),
+        ));
+    }
+    // jump polynomials: det J5 with the trim substituted, by convolutions in P0 (step 8)
+    {
+        let args = trim_args[1..].to_vec();
+        let mut c = Ctx::new(t, &args);
+        let coeffs = c.homogenize(
+            &d.det_j5,
+            &[s.alpha0, s.beta0, s.q0, s.r0],
+            &d.trim,
+            &d.det_a,
+        );
+        let outs: Vec<(String, Id)> = coeffs.iter().map(|id| (String::new(), *id)).collect();
+        let n = outs.len();
+        out.push(c.finish(
+            "jump_polynomial",
+            lines(&[
+                "Coefficients of P0^0 ..= P0^12 of the jump polynomial `det J5 * det(A)^2` (step 8).",
+                "Its positive real roots that are not roots of det A or d are the jump roll rates.",
+            ]),
+            t,
+            args,
+            outs,
+            Ret::Array(n),
+        ));
+    }
+    {
+        let args = vec![DE];
+        let mut c = Ctx::new(t, &args);
+        let det = d.det_j5.subs(s.beta0, &Poly::zero());
+        let coeffs = c.homogenize(&det, &[s.alpha0, s.q0, s.r0], &d.zs_trim, &d.zs_det);
+        let outs: Vec<(String, Id)> = coeffs.iter().map(|id| (String::new(), *id)).collect();
+        let n = outs.len();
+        out.push(c.finish(
+            "zero_sideslip_jump_polynomial",
+            lines(&[
+                "Coefficients of P0^0 ..= P0^8 of `det J5 * det(A1)^2` at the zero-sideslip trim",
+                "(Eqs 32-35); its positive roots (not roots of det A1 or d) are the departure roll rates.",
+            ]),
+            t,
+            args,
+            outs,
+            Ret::Array(n),
+        ));
+    }
+    out
+}

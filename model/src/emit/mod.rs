@@ -1,0 +1,327 @@
+//! The emitter: derived formulas to closed-form, branch-free Rust and to LaTeX.
+//!
+//! One emitter serves both front ends: `cargo run -p model -- emit` writes the generated crate
+//! (`generated/`) and `docs/formulas.tex`; the `roll_criterion!` proc-macro (`derive/`) calls
+//! [`macro_items`] and returns the same functions as tokens. Output is deterministic: the DAG
+//! is built in a fixed order, nothing iterates a hash map into output, and prettyplease (pinned)
+//! formats it.
+
+pub mod expr;
+pub mod functions;
+pub mod latex;
+pub mod rust;
+
+use crate::aircraft::{Aircraft, Param};
+use crate::algebra::{Sym, Q};
+use crate::derivation::Derivation;
+use crate::equations::symbols;
+use expr::OpCount;
+use functions::{functions, structs, Function};
+use proc_macro2::{Ident, Span, TokenStream};
+use quote::quote;
+use std::path::{Path, PathBuf};
+
+/// One file the emitter produces, relative to the workspace root.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Output {
+    /// Path relative to the workspace root.
+    pub path: PathBuf,
+    /// Full contents.
+    pub contents: String,
+}
+
+/// Errors of the emitter.
+#[derive(Debug, thiserror::Error)]
+pub enum EmitError {
+    /// Generated tokens did not parse (a bug in the emitter).
+    #[error("generated code does not parse: {0}")]
+    Parse(#[from] syn::Error),
+    /// Writing an output failed.
+    #[error("cannot write {path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+}
+
+/// The command that regenerates the outputs, quoted in headers and in `--check` messages.
+pub const COMMAND: &str = "cargo run -p model -- emit";
+
+/// The parameter values of an aircraft as exact symbol values (controls stay symbolic).
+pub fn aircraft_values(ac: &Aircraft) -> Vec<(Sym, Q)> {
+    let s = symbols();
+    Param::ALL
+        .iter()
+        .map(|p| (s.param(*p), Q::from_big(ac.exact(*p).clone())))
+        .collect()
+}
+
+/// The functions with every parameter an argument (`k: &Derivatives`).
+pub fn parametric_functions() -> Vec<Function> {
+    functions(&Derivation::parametric(), true)
+}
+
+/// The functions with an aircraft's data folded in exactly, then rounded once to f64.
+pub fn specialised_functions(ac: &Aircraft) -> Vec<Function> {
+    functions(&Derivation::derive(&aircraft_values(ac)), false)
+}
+
+/// Operation counts per function, as the header lines of a generated file.
+pub fn op_count_lines(fs: &[Function]) -> Vec<String> {
+    let mut lines = vec![format!(
+        "{:<32} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7}",
+        "function", "add/sub", "mul", "div", "neg", "libm", "total"
+    )];
+    for f in fs {
+        let c = op_count(f);
+        lines.push(format!(
+            "{:<32} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7}",
+            f.name,
+            c.add,
+            c.mul,
+            c.div,
+            c.neg,
+            c.libm,
+            c.total()
+        ));
+    }
+    lines
+}
+
+/// Operation count of one function after CSE.
+pub fn op_count(f: &Function) -> OpCount {
+    let ids: Vec<expr::Id> = f.outputs.iter().map(|(_, id)| *id).collect();
+    f.dag.op_count(&ids)
+}
+
+fn struct_items(with_derivatives: bool) -> TokenStream {
+    let mut out = TokenStream::new();
+    if with_derivatives {
+        let fields = Param::ALL.iter().map(|p| {
+            let name = Ident::new(&p.key().to_lowercase(), Span::call_site());
+            let doc = format!(" `{}`, {} (Table A.1).", p.key(), p.unit());
+            quote!(#[doc = #doc] pub #name: f64,)
+        });
+        out.extend(quote! {
+            /// The inertia coefficients and dimensional derivatives of an aircraft (Table A.1),
+            /// angles in rad: C = (Iz - Ix)/Iy, D = (Iy - Ix)/Iz, E = (Iz - Iy)/Ix.
+            #[derive(Clone, Copy, Debug, PartialEq)]
+            pub struct Derivatives { #(#fields)* }
+        });
+    }
+    for (name, doc, fields) in structs() {
+        let name = Ident::new(name, Span::call_site());
+        let doc = format!(" {doc}");
+        let fs = fields.iter().map(|(f, d)| {
+            let f = Ident::new(f, Span::call_site());
+            let d = format!(" {d}");
+            quote!(#[doc = #d] pub #f: f64,)
+        });
+        out.extend(quote! {
+            #[doc = #doc]
+            #[derive(Clone, Copy, Debug, PartialEq)]
+            pub struct #name { #(#fs)* }
+        });
+    }
+    out
+}
+
+fn fn_items(fs: &[Function], attrs: &TokenStream) -> TokenStream {
+    let mut out = TokenStream::new();
+    for f in fs {
+        let c = op_count(f);
+        let ops = vec![
+            String::new(),
+            format!(
+                "Cost after CSE: {} add/sub, {} mul, {} div, {} neg, {} libm ({} operations); straight-line, no branches.",
+                c.add, c.mul, c.div, c.neg, c.libm, c.total()
+            ),
+        ];
+        let item = rust::function(f, &ops);
+        out.extend(quote!(#attrs #item));
+    }
+    out
+}
+
+/// The items the proc-macro expands to: the structs and the functions, parametric (`None`)
+/// or specialised to an aircraft.
+pub fn macro_items(aircraft: Option<&Aircraft>) -> TokenStream {
+    let fs = match aircraft {
+        None => parametric_functions(),
+        Some(ac) => specialised_functions(ac),
+    };
+    let mut out = struct_items(aircraft.is_none());
+    out.extend(fn_items(&fs, &TokenStream::new()));
+    out
+}
+
+fn derivatives_const(ac: &Aircraft) -> TokenStream {
+    let fields = Param::ALL.iter().map(|p| {
+        let name = Ident::new(&p.key().to_lowercase(), Span::call_site());
+        let v = rust::float_literal(&Q::from_big(ac.exact(*p).clone()));
+        quote!(#name: #v,)
+    });
+    let doc = format!(
+        " The data of {} (Table A.1), for the parametric functions.",
+        ac.name
+    );
+    quote! {
+        #[doc = #doc]
+        pub const DERIVATIVES: super::Derivatives = super::Derivatives { #(#fields)* };
+    }
+}
+
+fn header(title: &str, fs: &[Function], inputs: &str) -> String {
+    let mut h = format!(
+        "// @generated by `{COMMAND}`. Do not edit.\n// {title}\n// Derived from model/src/equations.rs (Appendix A.2 of AIAA 2006-6267) by model/src/derivation.rs;\n// inputs: {inputs}; model {}.\n// Operation counts after common-subexpression elimination:\n",
+        env!("CARGO_PKG_VERSION")
+    );
+    for l in op_count_lines(fs) {
+        h.push_str("//   ");
+        h.push_str(&l);
+        h.push('\n');
+    }
+    h.push('\n');
+    h
+}
+
+/// Everything `emit` writes: the generated crate and the LaTeX dump.
+pub fn generate() -> Result<Vec<Output>, EmitError> {
+    let param = parametric_functions();
+    let aircraft = [("aircraft_a", Aircraft::a()), ("aircraft_b", Aircraft::b())];
+    let attrs = quote!(#[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]);
+    let mut outputs = Vec::new();
+
+    let mods = aircraft
+        .iter()
+        .map(|(m, _)| Ident::new(m, Span::call_site()));
+    let structs = struct_items(true);
+    let fns = fn_items(&param, &attrs);
+    let lib = quote! {
+        //! Closed-form roll-coupling jump criterion (Mahale & Ananthkrishnan, AIAA 2006-6267),
+        //! generated from the model equations by exact symbolic derivation.
+        //!
+        //! Every function is straight-line, branch-free f64 arithmetic (square roots through
+        //! `libm`): no allocation, no panics, no `unsafe`. The parametric functions take the
+        //! aircraft's [`Derivatives`]; the modules [`aircraft_a`] and [`aircraft_b`] hold the
+        //! same functions with the data of Table A.1 folded in exactly and rounded once.
+        #![no_std]
+        #![forbid(unsafe_code)]
+        #![warn(missing_docs)]
+        #(pub mod #mods;)*
+        #structs
+        #fns
+    };
+    let mut text = header("Parametric functions.", &param, "symbolic parameters");
+    text.push_str(&rust::pretty(lib)?);
+    outputs.push(Output {
+        path: "generated/src/lib.rs".into(),
+        contents: text,
+    });
+
+    for (m, ac) in &aircraft {
+        let fs = specialised_functions(ac);
+        let konst = derivatives_const(ac);
+        let fns = fn_items(&fs, &attrs);
+        let doc = format!(
+            " The criterion for {} of Table A.1: every constant folded exactly, then rounded once to f64.",
+            ac.name
+        );
+        let tokens = quote! {
+            #![doc = #doc]
+            use super::{Trim, ZeroSideslipTrim};
+            #konst
+            #fns
+        };
+        let mut text = header(
+            &format!("{}, data folded in.", ac.name),
+            &fs,
+            &format!("{} (model::aircraft)", ac.name),
+        );
+        text.push_str(&rust::pretty(tokens)?);
+        outputs.push(Output {
+            path: format!("generated/src/{m}.rs").into(),
+            contents: text,
+        });
+    }
+    outputs.push(Output {
+        path: "generated/Cargo.toml".into(),
+        contents: cargo_toml(),
+    });
+    outputs.push(Output {
+        path: "generated/rustfmt.toml".into(),
+        contents: format!(
+            "# @generated by `{COMMAND}`. Do not edit.\n# The generated sources are formatted by prettyplease (pinned), their golden format;\n# `cargo fmt --all` must leave them alone or `emit --check` would see them as stale.\ndisable_all_formatting = true\n"
+        ),
+    });
+    outputs.push(Output {
+        path: "generated/tests/values.rs".into(),
+        contents: tests::values()?,
+    });
+    outputs.push(Output {
+        path: "docs/formulas.tex".into(),
+        contents: latex::document(),
+    });
+    Ok(outputs)
+}
+
+mod tests;
+
+fn cargo_toml() -> String {
+    format!(
+        r#"# @generated by `{COMMAND}`. Do not edit.
+[package]
+name = "roll-criterion"
+description = "Closed-form roll-coupling jump criterion (AIAA 2006-6267), generated; no_std, no allocation, no panics"
+version = "{}"
+edition = "2021"
+license = "MIT OR Apache-2.0"
+publish = false
+
+[dependencies]
+libm = "0.2"
+# Only for the workspace's link-time proof that no function can panic (`--features no-panic-check`
+# in release); never enabled by flight software.
+no-panic = {{ version = "0.1", optional = true }}
+
+[features]
+no-panic-check = ["dep:no-panic"]
+"#,
+        env!("CARGO_PKG_VERSION")
+    )
+}
+
+/// Files whose contents differ from `outputs` under `root` (missing files count as stale).
+pub fn stale(root: &Path, outputs: &[Output]) -> Vec<PathBuf> {
+    outputs
+        .iter()
+        .filter(|o| {
+            std::fs::read_to_string(root.join(&o.path))
+                .map(|s| s.replace("\r\n", "\n") != o.contents)
+                .unwrap_or(true)
+        })
+        .map(|o| o.path.clone())
+        .collect()
+}
+
+/// Writes every output atomically (temp file in the same directory, then rename); unchanged
+/// files are not touched. Returns the files written.
+pub fn write(root: &Path, outputs: &[Output]) -> Result<Vec<PathBuf>, EmitError> {
+    let mut written = Vec::new();
+    for o in outputs {
+        let path = root.join(&o.path);
+        if std::fs::read_to_string(&path).is_ok_and(|s| s == o.contents) {
+            continue;
+        }
+        crate::files::write_atomic(&path, o.contents.as_bytes()).map_err(|source| {
+            EmitError::Io {
+                path: path.clone(),
+                source,
+            }
+        })?;
+        written.push(o.path.clone());
+    }
+    Ok(written)
+}

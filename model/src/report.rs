@@ -1,0 +1,504 @@
+//! `model report`: every result of the paper for one aircraft, as a folder that reads as a
+//! report — the numbers of `analyze`, the special points of the continuation, the simulated
+//! jumps, and Figs 1-11 (SVG and PNG) embedded in `summary.md` (also `summary.json`).
+//!
+//! Data flow: [`crate::analysis`] and [`crate::continuation`] give the numbers and the
+//! branches of Figs 1-4 and 9; the closed-form det K curves give Figs 7, 8 and 11;
+//! [`crate::simulation`] gives the time histories of Figs 5, 6 and 10 and the simulated
+//! jump; [`crate::plot`] draws.
+
+use crate::aircraft::Aircraft;
+use crate::analysis::{analyze, Analysis, AnalysisError};
+use crate::continuation::{self, continue_equilibria, ContinuationError, Diagram};
+use crate::plot::{
+    self, closed_form, BifurcationData, Branch, BranchPoint, PlotError, PlotStyle, SpecialKind,
+    SpecialPoint, TimeHistoryData, Variable, ZeroSideslipData,
+};
+use crate::simulation::{
+    jump_sweep, Model, Rudder, SimError, SimSettings, Simulator, SweepSettings, TimeHistory,
+};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+
+/// Why a report could not be produced.
+#[derive(Debug, thiserror::Error)]
+pub enum ReportError {
+    /// The closed-form analysis failed.
+    #[error(transparent)]
+    Analysis(#[from] AnalysisError),
+    /// The continuation failed.
+    #[error(transparent)]
+    Continuation(#[from] ContinuationError),
+    /// A simulation failed.
+    #[error(transparent)]
+    Simulation(#[from] SimError),
+    /// A figure failed.
+    #[error(transparent)]
+    Plot(#[from] PlotError),
+    /// Writing the summary failed.
+    #[error("cannot write {}: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+}
+
+/// One figure of the report.
+#[derive(Clone, Debug, Serialize)]
+pub struct FigureEntry {
+    /// The paper's figure numbers it reproduces.
+    pub paper: &'static str,
+    /// Caption.
+    pub caption: String,
+    /// Files written (relative to the report folder).
+    pub files: Vec<String>,
+}
+
+/// The simulated jump of an aileron-step sweep against the criterion's fold.
+#[derive(Clone, Debug, Serialize)]
+pub struct SimulatedJump {
+    /// `pss` or `seventh-order`.
+    pub model: &'static str,
+    /// Aileron step at which the steady roll rate jumps, deg (None: no jump in the sweep).
+    pub delta_a_deg: Option<f64>,
+    /// The criterion's first fold, deg.
+    pub criterion_deg: f64,
+}
+
+/// A special point of a continuation, in report units.
+#[derive(Clone, Debug, Serialize)]
+pub struct SpecialRow {
+    /// fold, hopf or branch.
+    pub kind: &'static str,
+    /// Aileron deflection, deg.
+    pub delta_a_deg: f64,
+    /// Roll rate, rad/s.
+    pub p: f64,
+    /// Hopf frequency, rad/s.
+    pub frequency: Option<f64>,
+}
+
+/// Everything in `summary.json`.
+#[derive(Clone, Debug, Serialize)]
+pub struct Summary {
+    /// The numbers of `model analyze`.
+    pub analysis: Analysis,
+    /// Special points of the unconstrained continuation (Figs 1-2), p >= 0.
+    pub special_points: Vec<SpecialRow>,
+    /// Special points of the zero-sideslip continuation (Fig. 9), p >= 0.
+    pub zero_sideslip_special_points: Vec<SpecialRow>,
+    /// Simulated jumps (Figs 5-6).
+    pub simulated_jumps: Vec<SimulatedJump>,
+    /// The figures.
+    pub figures: Vec<FigureEntry>,
+}
+
+/// What to draw.
+#[derive(Clone, Copy, Debug)]
+pub struct ReportSettings {
+    /// Elevator deflection, rad.
+    pub delta_e: f64,
+    /// Figure size and formats.
+    pub style: PlotStyle,
+    /// Write `summary.md` and `summary.json` (false: figures only, `model plot`).
+    pub summary: bool,
+}
+
+fn to_plot(d: &Diagram, title: String, divergence: &[f64]) -> BifurcationData {
+    let point = |p: &continuation::Point| BranchPoint {
+        param: p.param,
+        alpha: p.alpha,
+        beta: p.beta,
+        p: p.p,
+        q: p.q,
+        r: p.r,
+        stable: p.stable,
+    };
+    BifurcationData {
+        title,
+        branches: d
+            .branches
+            .iter()
+            .map(|b| Branch {
+                points: b.points.iter().map(point).collect(),
+            })
+            .collect(),
+        special: d
+            .special_points
+            .iter()
+            .map(|s| SpecialPoint {
+                kind: match s.kind {
+                    continuation::SpecialKind::Fold => SpecialKind::Fold,
+                    continuation::SpecialKind::Hopf => SpecialKind::Hopf,
+                    continuation::SpecialKind::Branch => SpecialKind::Transcritical,
+                },
+                point: BranchPoint {
+                    param: s.param,
+                    alpha: s.alpha,
+                    beta: s.beta,
+                    p: s.p,
+                    q: s.q,
+                    r: s.r,
+                    stable: false,
+                },
+                label: None,
+            })
+            .collect(),
+        divergence_p: divergence.iter().flat_map(|p| [*p, -*p]).collect(),
+        delta_a_range_deg: Some((-0.8f64.to_degrees(), 0.8f64.to_degrees())),
+    }
+}
+
+fn rows(d: &Diagram) -> Vec<SpecialRow> {
+    d.special_points
+        .iter()
+        .filter(|s| s.p >= 0.0)
+        .map(|s| SpecialRow {
+            kind: s.kind.name(),
+            delta_a_deg: s.param.to_degrees(),
+            p: s.p,
+            frequency: s.frequency,
+        })
+        .collect()
+}
+
+/// Aileron steps (rad) bracketing a critical deflection `critical` (rad): a family like the
+/// paper's (A: -1 to -8 deg around the fold at -3.85 deg).
+fn family(critical: Option<f64>) -> Vec<f64> {
+    let c = critical.unwrap_or(-8f64.to_radians());
+    [0.25, 0.5, 0.75, 0.9, 1.1, 1.25, 1.5, 2.0]
+        .iter()
+        .map(|k| k * c)
+        .collect()
+}
+
+fn rel(out: &Path, files: &[PathBuf]) -> Vec<String> {
+    files
+        .iter()
+        .map(|f| {
+            f.strip_prefix(out)
+                .unwrap_or(f)
+                .to_string_lossy()
+                .into_owned()
+        })
+        .collect()
+}
+
+/// Produces the report for `aircraft` in `out`; `progress(fraction)` is called as it goes.
+pub fn report(
+    aircraft: &Aircraft,
+    out: &Path,
+    settings: &ReportSettings,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Summary, ReportError> {
+    let de = settings.delta_e;
+    let style = &settings.style;
+    std::fs::create_dir_all(out).map_err(|source| ReportError::Io {
+        path: out.to_path_buf(),
+        source,
+    })?;
+    let analysis = analyze(aircraft, de)?;
+    let name = &aircraft.name;
+    let mut figures = Vec::new();
+    progress(0.05);
+
+    // Figs 1-4: continuation of every branch.
+    let cont = continuation::Settings {
+        delta_e: de,
+        ..continuation::Settings::default()
+    };
+    let diagram = continue_equilibria(aircraft, &cont, &mut |_| {})?;
+    let data = to_plot(
+        &diagram,
+        format!(
+            "{name}: PSS equilibria, \u{3b4}e = {:.1} deg, \u{3b4}r = 0",
+            de.to_degrees()
+        ),
+        &analysis.divergence_roll_rates,
+    );
+    let r = plot::bifurcation(&out.join("fig01_bifurcation"), &data, style)?;
+    figures.push(FigureEntry {
+        paper: "Figs 1, 2",
+        caption: "Roll rate of the PSS equilibria vs aileron (solid stable, dashed unstable; saddle-nodes and Hopf points marked).".into(),
+        files: rel(out, &r.files),
+    });
+    let r = plot::trim_states(&out.join("fig03_trim_states"), &data, style)?;
+    figures.push(FigureEntry {
+        paper: "Figs 3, 4",
+        caption: "Trim angle of attack, sideslip, pitch and yaw rate vs aileron.".into(),
+        files: rel(out, &r.files),
+    });
+    progress(0.3);
+
+    // Figs 7, 8, 11: det K from the closed form.
+    let r = plot::det_k(
+        &out.join("fig07_det_k"),
+        &closed_form::det_k_curve(aircraft, de)?,
+        style,
+    )?;
+    figures.push(FigureEntry {
+        paper: "Figs 7, 8",
+        caption: "det K vs trim roll rate P0, roots (jump points) and poles (d = 0) marked.".into(),
+        files: rel(out, &r.files),
+    });
+    let r = plot::det_k(
+        &out.join("fig11_zero_sideslip_det_k"),
+        &closed_form::zero_sideslip_det_k_curve(aircraft, de)?,
+        style,
+    )?;
+    figures.push(FigureEntry {
+        paper: "Fig. 11",
+        caption: "det K at the zero-sideslip trims vs P0: departure points.".into(),
+        files: rel(out, &r.files),
+    });
+    progress(0.4);
+
+    // Fig. 9: extended bifurcation analysis of the zero-sideslip roll.
+    let zs_settings = continuation::Settings {
+        zero_sideslip: true,
+        ..cont
+    };
+    let zs = continue_equilibria(aircraft, &zs_settings, &mut |_| {})?;
+    // Show 1.5 times the first departure's aileron (at least 5 deg), as the paper's Fig. 9
+    // does: beyond it the schedule asks for rudder deflections no aircraft has.
+    let zs_range = analysis
+        .zero_sideslip
+        .departure
+        .first()
+        .map_or(5f64.to_radians(), |d| {
+            (1.5 * d.delta_a_rad.abs()).max(5f64.to_radians())
+        });
+    let mut zs_plot = to_plot(
+        &zs,
+        format!("{name}: zero-sideslip roll with the rudder schedule (EBA)"),
+        &[],
+    );
+    zs_plot.delta_a_range_deg = Some((-zs_range.to_degrees(), zs_range.to_degrees()));
+    let zs_data = ZeroSideslipData {
+        schedule: zs
+            .rudder_schedule
+            .iter()
+            .filter(|s| s.delta_a.abs() <= zs_range)
+            .map(|s| (s.delta_a, s.delta_r))
+            .collect(),
+        diagram: zs_plot,
+    };
+    let r = plot::zero_sideslip(&out.join("fig09_zero_sideslip"), &zs_data, style)?;
+    figures.push(FigureEntry {
+        paper: "Fig. 9",
+        caption: "Rudder schedule for zero sideslip (aileron-rudder interconnect) and the PSS equilibria with it; the branch point marks the departure.".into(),
+        files: rel(out, &r.files),
+    });
+    progress(0.5);
+
+    // Figs 5, 6: aileron steps from the trim, 7th-order model solid, PSS dashed.
+    let sim = Simulator::new(aircraft, de)?;
+    let fold = analysis.jump.first().map(|j| j.delta_a_rad);
+    let steps = family(fold);
+    let run = |model: Model, rudder: Rudder, da: &[f64]| -> Result<Vec<TimeHistory>, SimError> {
+        let settings: Vec<SimSettings> = da
+            .iter()
+            .map(|d| SimSettings {
+                rudder,
+                ..SimSettings::step(model, de, *d)
+            })
+            .collect();
+        sim.run_all(&settings)
+    };
+    let seventh = run(Model::SeventhOrder, Rudder::Fixed(0.0), &steps)?;
+    let pss = run(Model::Pss, Rudder::Fixed(0.0), &steps)?;
+    let r = plot::time_histories(
+        &out.join("fig05_roll_response"),
+        &TimeHistoryData {
+            title: format!("{name}: response to aileron steps (7th-order solid, PSS dashed)"),
+            runs: &seventh,
+            overlay: &pss,
+            variables: vec![Variable::P, Variable::Beta],
+        },
+        style,
+    )?;
+    figures.push(FigureEntry {
+        paper: "Figs 5, 6",
+        caption: format!(
+            "Roll rate and sideslip after aileron steps of {} deg.",
+            steps
+                .iter()
+                .map(|d| format!("{:.2}", d.to_degrees()))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        files: rel(out, &r.files),
+    });
+    progress(0.7);
+
+    // Fig. 10: zero-sideslip scheduling; steps up to past the departure point, where the
+    // schedule exists.
+    let departure = analysis
+        .zero_sideslip
+        .departure
+        .first()
+        .map(|d| d.delta_a_rad);
+    let zs_steps: Vec<f64> = family(departure)
+        .into_iter()
+        .filter(|d| sim.rudder_at(Rudder::ZeroSideslip, *d).is_ok())
+        .collect();
+    if !zs_steps.is_empty() {
+        let zs_runs = run(Model::SeventhOrder, Rudder::ZeroSideslip, &zs_steps)?;
+        let r = plot::time_histories(
+            &out.join("fig10_zero_sideslip_response"),
+            &TimeHistoryData {
+                title: format!("{name}: aileron steps with the zero-sideslip rudder schedule"),
+                runs: &zs_runs,
+                overlay: &[],
+                variables: vec![Variable::Beta, Variable::P],
+            },
+            style,
+        )?;
+        figures.push(FigureEntry {
+            paper: "Fig. 10",
+            caption: format!(
+                "Sideslip and roll rate after aileron steps of {} deg with the rudder on the zero-sideslip schedule (7th-order model).",
+                zs_steps.iter().map(|d| format!("{:.2}", d.to_degrees())).collect::<Vec<_>>().join(", ")
+            ),
+            files: rel(out, &r.files),
+        });
+    }
+    progress(0.85);
+
+    // Simulated jump points (section III).
+    let mut simulated_jumps = Vec::new();
+    if let Some(f) = fold {
+        for (model, label) in [(Model::Pss, "pss"), (Model::SeventhOrder, "seventh-order")] {
+            let sweep = jump_sweep(
+                &sim,
+                &SweepSettings::new(model, 2.0 * f, 0.25f64.to_radians()),
+            )?;
+            simulated_jumps.push(SimulatedJump {
+                model: label,
+                delta_a_deg: sweep.jump.map(|j| j.delta_a.to_degrees()),
+                criterion_deg: f.to_degrees(),
+            });
+        }
+    }
+    let summary = Summary {
+        special_points: rows(&diagram),
+        zero_sideslip_special_points: rows(&zs),
+        analysis,
+        simulated_jumps,
+        figures,
+    };
+    if settings.summary {
+        let write = |file: &str, text: String| {
+            let path = out.join(file);
+            crate::files::write_atomic(&path, text.as_bytes())
+                .map_err(|source| ReportError::Io { path, source })
+        };
+        let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
+        write("summary.json", json + "\n")?;
+        write("summary.md", markdown(&summary, de))?;
+    }
+    progress(1.0);
+    Ok(summary)
+}
+
+fn list(v: &[f64], digits: usize) -> String {
+    if v.is_empty() {
+        "none".into()
+    } else {
+        v.iter()
+            .map(|x| format!("{x:.digits$}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
+fn markdown(s: &Summary, de: f64) -> String {
+    let a = &s.analysis;
+    let mut m = format!(
+        "# {}: roll-coupling report\n\nElevator {:.2} deg, rudder 0 (unconstrained roll). Criterion of Mahale & Ananthkrishnan (AIAA 2006-6267), derived exactly; see `docs/formulas.tex`.\n\n",
+        a.aircraft,
+        de.to_degrees()
+    );
+    m += "## Critical roll rates\n\n";
+    m += &format!(
+        "- Pitch-yaw divergence, Eq. 5 (Table 1): {} rad/s\n",
+        list(&a.divergence_roll_rates, 6)
+    );
+    m += &format!(
+        "- Poles of det K (d = 0): {} rad/s\n\n",
+        list(&a.det_k_poles, 6)
+    );
+    m += "### Jump points (det K = 0, saddle-nodes)\n\n| P0 rad/s | delta_a deg | alpha deg | beta deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|---:|\n";
+    for j in &a.jump {
+        m += &format!(
+            "| {:.6} | {:.4} | {:.4} | {:.4} | {:.5} | {:.5} |\n",
+            j.p0,
+            j.delta_a_deg,
+            j.alpha.to_degrees(),
+            j.beta.to_degrees(),
+            j.q,
+            j.r
+        );
+    }
+    if a.jump.is_empty() {
+        m += "| none | | | | | |\n";
+    }
+    m += "\n### Zero-sideslip departure (det K = 0 at beta = 0)\n\n| P0 rad/s | delta_a deg | alpha deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|\n";
+    for d in &a.zero_sideslip.departure {
+        m += &format!(
+            "| {:.6} | {:.4} | {:.4} | {:.5} | {:.5} |\n",
+            d.p0,
+            d.delta_a_deg,
+            d.alpha.to_degrees(),
+            d.q,
+            d.r
+        );
+    }
+    for (title, rows) in [
+        (
+            "Special points of the continuation (p >= 0)",
+            &s.special_points,
+        ),
+        (
+            "Special points of the zero-sideslip continuation (p >= 0)",
+            &s.zero_sideslip_special_points,
+        ),
+    ] {
+        m += &format!("\n## {title}\n\n| kind | delta_a deg | p rad/s | frequency rad/s |\n|---|---:|---:|---:|\n");
+        for r in rows.iter() {
+            m += &format!(
+                "| {} | {:.4} | {:.6} | {} |\n",
+                r.kind,
+                r.delta_a_deg,
+                r.p,
+                r.frequency.map_or(String::new(), |f| format!("{f:.5}"))
+            );
+        }
+    }
+    if !s.simulated_jumps.is_empty() {
+        m += "\n## Simulated jump (aileron steps from the trim, 0.25 deg apart, refined)\n\n| model | jump at delta_a deg | criterion fold deg |\n|---|---:|---:|\n";
+        for j in &s.simulated_jumps {
+            m += &format!(
+                "| {} | {} | {:.4} |\n",
+                j.model,
+                j.delta_a_deg.map_or("none".into(), |d| format!("{d:.3}")),
+                j.criterion_deg
+            );
+        }
+    }
+    m += "\n## Figures\n";
+    for f in &s.figures {
+        let png = f
+            .files
+            .iter()
+            .find(|p| p.ends_with(".png"))
+            .or(f.files.first());
+        m += &format!("\n### {}\n\n{}\n\n", f.paper, f.caption);
+        if let Some(p) = png {
+            m += &format!("![{}]({})\n", f.paper, p);
+        }
+    }
+    m
+}

@@ -1,0 +1,166 @@
+//! Issue 3's speed targets, measured in one run: the generated parametric det K (trim
+//! included) against numeric routes in Rust with nalgebra (LU trim + Schur-complement K,
+//! LU trim + 5x5 determinant, LU trim + eigenvalues of J5), all for aircraft B at a P0 that
+//! varies so that nothing is constant-folded.
+//!
+//! Run with `cargo bench -p paper-tests --bench det_k`.
+
+use nalgebra::{Matrix2, Matrix3, Matrix4, Matrix5, Vector4};
+use roll_criterion as gen;
+
+fn main() {
+    divan::main();
+}
+
+const DE: f64 = 0.03490658503988659;
+const N: usize = 1000;
+
+fn p0s() -> Vec<f64> {
+    (0..N).map(|i| 0.2 + 4.5 * i as f64 / N as f64).collect()
+}
+
+/// The trim by LU and the Jacobian at it, numerically (aircraft B's data).
+fn numeric_jacobian(k: &gen::Derivatives, p0: f64) -> Matrix5<f64> {
+    let a = Matrix4::new(
+        k.z_alpha,
+        -p0,
+        1.0,
+        0.0, //
+        p0,
+        k.y_beta,
+        0.0,
+        -1.0, //
+        k.m_alpha,
+        0.0,
+        k.m_q,
+        k.c * p0, //
+        0.0,
+        k.n_beta,
+        -k.d * p0,
+        k.n_r,
+    );
+    let rhs = Vector4::new(0.0, 0.0, -k.m_delta_e * DE, -k.n_p * p0);
+    let y = a.lu().solve(&rhs).unwrap_or_else(Vector4::zeros);
+    let (al, be, q, r) = (y[0], y[1], y[2], y[3]);
+    Matrix5::new(
+        k.z_alpha,
+        -p0,
+        -be,
+        1.0,
+        0.0, //
+        p0,
+        k.y_beta,
+        al,
+        0.0,
+        -1.0, //
+        0.0,
+        k.l_beta,
+        k.l_p,
+        -k.e * r,
+        k.l_r - k.e * q, //
+        k.m_alpha,
+        0.0,
+        k.c * r,
+        k.m_q,
+        k.c * p0, //
+        0.0,
+        k.n_beta,
+        k.n_p - k.d * q,
+        -k.d * p0,
+        k.n_r,
+    )
+}
+
+#[divan::bench]
+fn generated_det_k(b: divan::Bencher) {
+    let k = gen::aircraft_b::DERIVATIVES;
+    let ps = p0s();
+    b.counter(divan::counter::ItemsCount::new(N))
+        .bench_local(|| {
+            let mut s = 0.0;
+            for p in &ps {
+                s += gen::det_k(divan::black_box(&k), divan::black_box(*p), DE, 0.0);
+            }
+            s
+        });
+}
+
+#[divan::bench]
+fn numeric_lu_trim_and_schur_k(b: divan::Bencher) {
+    let k = gen::aircraft_b::DERIVATIVES;
+    let ps = p0s();
+    b.counter(divan::counter::ItemsCount::new(N))
+        .bench_local(|| {
+            let mut s = 0.0;
+            for p in &ps {
+                let j = numeric_jacobian(divan::black_box(&k), divan::black_box(*p));
+                // K is, up to row signs, the Schur complement onto [alpha, beta] of the static
+                // system: rows (q_dot, r_dot) against columns (alpha, beta), eliminating [p, q, r]
+                // with rows (alpha_dot, beta_dot, p_dot).
+                let e1y = Matrix2::new(j[(3, 0)], j[(3, 1)], j[(4, 0)], j[(4, 1)]);
+                let e1z = nalgebra::Matrix2x3::new(
+                    j[(3, 2)],
+                    j[(3, 3)],
+                    j[(3, 4)],
+                    j[(4, 2)],
+                    j[(4, 3)],
+                    j[(4, 4)],
+                );
+                let e2y = nalgebra::Matrix3x2::new(
+                    j[(0, 0)],
+                    j[(0, 1)],
+                    j[(1, 0)],
+                    j[(1, 1)],
+                    j[(2, 0)],
+                    j[(2, 1)],
+                );
+                let e2z = Matrix3::new(
+                    j[(0, 2)],
+                    j[(0, 3)],
+                    j[(0, 4)],
+                    j[(1, 2)],
+                    j[(1, 3)],
+                    j[(1, 4)],
+                    j[(2, 2)],
+                    j[(2, 3)],
+                    j[(2, 4)],
+                );
+                let z = e2z
+                    .lu()
+                    .solve(&e2y)
+                    .unwrap_or_else(nalgebra::Matrix3x2::zeros);
+                s += (e1y - e1z * z).determinant();
+            }
+            s
+        });
+}
+
+#[divan::bench]
+fn numeric_lu_trim_and_det_j5(b: divan::Bencher) {
+    let k = gen::aircraft_b::DERIVATIVES;
+    let ps = p0s();
+    b.counter(divan::counter::ItemsCount::new(N))
+        .bench_local(|| {
+            let mut s = 0.0;
+            for p in &ps {
+                s += numeric_jacobian(divan::black_box(&k), divan::black_box(*p)).determinant();
+            }
+            s
+        });
+}
+
+#[divan::bench]
+fn numeric_lu_trim_and_eigenvalues_of_j5(b: divan::Bencher) {
+    let k = gen::aircraft_b::DERIVATIVES;
+    let ps = p0s();
+    b.counter(divan::counter::ItemsCount::new(N))
+        .bench_local(|| {
+            let mut s = 0.0;
+            for p in &ps {
+                let ev = numeric_jacobian(divan::black_box(&k), divan::black_box(*p))
+                    .complex_eigenvalues();
+                s += ev[0].re;
+            }
+            s
+        });
+}

@@ -106,16 +106,6 @@ fn io_err(path: &Path, e: std::io::Error) -> PlotError {
     }
 }
 
-/// Writes `bytes` to `target` atomically.
-fn write_atomic(target: &Path, bytes: &[u8]) -> Result<(), PlotError> {
-    let tmp = temp_path(target, "tmp");
-    let result = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, target));
-    result.map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        io_err(target, e)
-    })
-}
-
 /// Renders `fig` to `<stem>.svg` and/or `<stem>.png`; returns the files written.
 pub(crate) fn render(
     stem: &Path,
@@ -148,11 +138,12 @@ pub(crate) fn render(
             root.present().map_err(draw_err)?;
         }
         let svg = finish_svg(&svg, style.embed_font);
-        write_atomic(&target, svg.as_bytes())?;
+        crate::files::write_atomic(&target, svg.as_bytes()).map_err(|e| io_err(&target, e))?;
         files.push(target);
     }
     if style.png {
         let target = with_ext(stem, "png");
+        // plotters' bitmap backend writes to a path itself: draw to a temporary name, rename.
         let tmp = temp_path(&target, "png");
         let result = (|| {
             let root = BitMapBackend::new(&tmp, (w, h)).into_drawing_area();

@@ -71,96 +71,72 @@ fn numeric_jacobian(k: &gen::Derivatives, p0: f64) -> Matrix5<f64> {
     )
 }
 
-#[divan::bench]
-fn generated_det_k(b: divan::Bencher) {
+/// Runs `route` over the 1000 roll rates of [`p0s`] with aircraft B's data, one divan item each.
+fn run(b: divan::Bencher, route: impl Fn(&gen::Derivatives, f64) -> f64) {
     let k = gen::aircraft_b::DERIVATIVES;
     let ps = p0s();
     b.counter(divan::counter::ItemsCount::new(N))
         .bench_local(|| {
-            let mut s = 0.0;
-            for p in &ps {
-                s += gen::det_k(divan::black_box(&k), divan::black_box(*p), DE, 0.0);
-            }
-            s
+            ps.iter()
+                .map(|p| route(divan::black_box(&k), divan::black_box(*p)))
+                .sum::<f64>()
         });
+}
+
+#[divan::bench]
+fn generated_det_k(b: divan::Bencher) {
+    run(b, |k, p| gen::det_k(k, p, DE, 0.0));
 }
 
 #[divan::bench]
 fn numeric_lu_trim_and_schur_k(b: divan::Bencher) {
-    let k = gen::aircraft_b::DERIVATIVES;
-    let ps = p0s();
-    b.counter(divan::counter::ItemsCount::new(N))
-        .bench_local(|| {
-            let mut s = 0.0;
-            for p in &ps {
-                let j = numeric_jacobian(divan::black_box(&k), divan::black_box(*p));
-                // K is, up to row signs, the Schur complement onto [alpha, beta] of the static
-                // system: rows (q_dot, r_dot) against columns (alpha, beta), eliminating [p, q, r]
-                // with rows (alpha_dot, beta_dot, p_dot).
-                let e1y = Matrix2::new(j[(3, 0)], j[(3, 1)], j[(4, 0)], j[(4, 1)]);
-                let e1z = nalgebra::Matrix2x3::new(
-                    j[(3, 2)],
-                    j[(3, 3)],
-                    j[(3, 4)],
-                    j[(4, 2)],
-                    j[(4, 3)],
-                    j[(4, 4)],
-                );
-                let e2y = nalgebra::Matrix3x2::new(
-                    j[(0, 0)],
-                    j[(0, 1)],
-                    j[(1, 0)],
-                    j[(1, 1)],
-                    j[(2, 0)],
-                    j[(2, 1)],
-                );
-                let e2z = Matrix3::new(
-                    j[(0, 2)],
-                    j[(0, 3)],
-                    j[(0, 4)],
-                    j[(1, 2)],
-                    j[(1, 3)],
-                    j[(1, 4)],
-                    j[(2, 2)],
-                    j[(2, 3)],
-                    j[(2, 4)],
-                );
-                let z = e2z
-                    .lu()
-                    .solve(&e2y)
-                    .unwrap_or_else(nalgebra::Matrix3x2::zeros);
-                s += (e1y - e1z * z).determinant();
-            }
-            s
-        });
+    run(b, |k, p| {
+        let j = numeric_jacobian(k, p);
+        // K is, up to row signs, the Schur complement onto [alpha, beta] of the static
+        // system: rows (q_dot, r_dot) against columns (alpha, beta), eliminating [p, q, r]
+        // with rows (alpha_dot, beta_dot, p_dot).
+        let e1y = Matrix2::new(j[(3, 0)], j[(3, 1)], j[(4, 0)], j[(4, 1)]);
+        let e1z = nalgebra::Matrix2x3::new(
+            j[(3, 2)],
+            j[(3, 3)],
+            j[(3, 4)],
+            j[(4, 2)],
+            j[(4, 3)],
+            j[(4, 4)],
+        );
+        let e2y = nalgebra::Matrix3x2::new(
+            j[(0, 0)],
+            j[(0, 1)],
+            j[(1, 0)],
+            j[(1, 1)],
+            j[(2, 0)],
+            j[(2, 1)],
+        );
+        let e2z = Matrix3::new(
+            j[(0, 2)],
+            j[(0, 3)],
+            j[(0, 4)],
+            j[(1, 2)],
+            j[(1, 3)],
+            j[(1, 4)],
+            j[(2, 2)],
+            j[(2, 3)],
+            j[(2, 4)],
+        );
+        let z = e2z
+            .lu()
+            .solve(&e2y)
+            .unwrap_or_else(nalgebra::Matrix3x2::zeros);
+        (e1y - e1z * z).determinant()
+    });
 }
 
 #[divan::bench]
 fn numeric_lu_trim_and_det_j5(b: divan::Bencher) {
-    let k = gen::aircraft_b::DERIVATIVES;
-    let ps = p0s();
-    b.counter(divan::counter::ItemsCount::new(N))
-        .bench_local(|| {
-            let mut s = 0.0;
-            for p in &ps {
-                s += numeric_jacobian(divan::black_box(&k), divan::black_box(*p)).determinant();
-            }
-            s
-        });
+    run(b, |k, p| numeric_jacobian(k, p).determinant());
 }
 
 #[divan::bench]
 fn numeric_lu_trim_and_eigenvalues_of_j5(b: divan::Bencher) {
-    let k = gen::aircraft_b::DERIVATIVES;
-    let ps = p0s();
-    b.counter(divan::counter::ItemsCount::new(N))
-        .bench_local(|| {
-            let mut s = 0.0;
-            for p in &ps {
-                let ev = numeric_jacobian(divan::black_box(&k), divan::black_box(*p))
-                    .complex_eigenvalues();
-                s += ev[0].re;
-            }
-            s
-        });
+    run(b, |k, p| numeric_jacobian(k, p).complex_eigenvalues()[0].re);
 }

@@ -11,7 +11,7 @@
 
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::{Poly, Sym, Q};
-use crate::derivation::{Derivation, Ratio};
+use crate::derivation::{Derivation, Ratio, TRIM_DEGREE};
 use crate::equations::symbols;
 use crate::roots::{positive_roots, UPoly};
 use num_rational::BigRational;
@@ -81,8 +81,15 @@ pub struct Analysis {
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum AnalysisError {
     /// The elevator deflection is not a finite number.
-    #[error("delta_e = {0} is not a finite angle")]
+    #[error("delta_e = {0:e} rad: expected a finite elevator deflection of at most 90 deg")]
     DeltaE(f64),
+    /// det J5 or det A vanishes identically along the trim curve: every trim is singular and
+    /// det K is not defined (e.g. an aircraft with no roll damping, roll stiffness nor E).
+    #[error(
+        "{0} vanishes identically along the trim curve for this aircraft: the criterion is \
+         undefined (check the roll derivatives and the inertias)"
+    )]
+    Degenerate(&'static str),
     /// n_delta_a != 0 couples the aileron into the yaw equation.
     #[error(
         "n_delta_a = {0}: the closed-form criterion needs n_delta_a = 0 (with aileron yaw the \
@@ -111,7 +118,7 @@ pub fn exact_f64(x: f64) -> Q {
 
 /// Runs the analysis for one aircraft at elevator deflection `delta_e_rad`.
 pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, AnalysisError> {
-    if !delta_e_rad.is_finite() {
+    if !delta_e_rad.is_finite() || delta_e_rad.abs() > std::f64::consts::FRAC_PI_2 {
         return Err(AnalysisError::DeltaE(delta_e_rad));
     }
     let nda = aircraft.value(Param::NDeltaA);
@@ -123,6 +130,12 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
     let u = |p: &Poly| univariate(p, s.p0);
 
     let det_a = u(&d.det_a);
+    if det_a.is_zero() {
+        return Err(AnalysisError::Degenerate("det A"));
+    }
+    if d.jump.is_zero() {
+        return Err(AnalysisError::Degenerate("det J5"));
+    }
     let divergence_roll_rates = positive_roots(&det_a).iter().map(|r| r.value).collect();
 
     let (poles_num, _) = cancel(&u(&d.d_det_a), &det_a);
@@ -293,12 +306,16 @@ impl CriterionPolys {
 }
 
 /// Step 8 for a specialised derivation: `f(t = num / den) den^k` as a polynomial in P0, where
-/// `f` is a polynomial in the trim symbols `t` (degree k) and P0. Same result as
+/// `f` is a polynomial in the trim symbols `t` and P0 and k = [`TRIM_DEGREE`]. Same result as
 /// [`homogenize`], computed on dense univariate polynomials: f is grouped by its monomial in
 /// `t` and each product of numerators is formed once.
 fn clear_denominators(f: &Poly, t: &[Sym], num: &[Poly], den: &Poly) -> Poly {
     let s = symbols();
-    let k = f.degree_in(t) as usize;
+    let k = TRIM_DEGREE as usize;
+    assert!(
+        f.degree_in(t) as usize <= k,
+        "degree in the trim states above {k}"
+    );
     let num: Vec<UPoly> = num.iter().map(|n| univariate(n, s.p0)).collect();
     let den = univariate(den, s.p0);
     let mut den_pows = vec![UPoly::new(vec![BigRational::from_integer(1.into())])];
@@ -347,6 +364,9 @@ pub fn univariate(p: &Poly, x: Sym) -> UPoly {
 /// Cancels every common factor of `num / den` exactly; returns the reduced pair.
 pub fn cancel(num: &UPoly, den: &UPoly) -> (UPoly, UPoly) {
     let (mut n, mut d) = (num.clone(), den.clone());
+    if n.is_zero() || d.is_zero() {
+        return (n, d);
+    }
     loop {
         let g = n.gcd(&d);
         if g.degree().unwrap_or(0) == 0 {
@@ -360,6 +380,9 @@ pub fn cancel(num: &UPoly, den: &UPoly) -> (UPoly, UPoly) {
 /// Removes from `p` every root it shares with `q` (all multiplicities).
 fn strip(p: &UPoly, q: &UPoly) -> UPoly {
     let mut p = p.clone();
+    if p.is_zero() || q.is_zero() {
+        return p;
+    }
     loop {
         let g = p.gcd(q);
         if g.degree().unwrap_or(0) == 0 {

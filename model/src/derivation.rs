@@ -150,12 +150,15 @@ impl Derivation {
         let (a, a_rhs) = linear_system(&at_p0, &unknowns);
         let (trim, det_a) = solve(&a, &a_rhs);
         let biquadratic = {
+            // The P0^4 coefficient is C D, which a user's aircraft may make zero (Ix = Iy or
+            // Ix = Iz): missing coefficients are zero, odd ones vanish identically.
             let c = det_a.coeffs(s.p0);
+            let at = |k: usize| c.get(k).cloned().unwrap_or_default();
             assert!(
-                c.len() == 5 && c[1].is_zero() && c[3].is_zero(),
+                c.len() <= 5 && at(1).is_zero() && at(3).is_zero(),
                 "Eq. 5: det A must be a biquadratic in P0"
             );
-            [c[0].clone(), c[2].clone(), c[4].clone()]
+            [at(0), at(2), at(4)]
         };
         let delta_a = solve_for(&at_trim(&unc[2]), s.delta_a);
 
@@ -283,19 +286,21 @@ impl Derivation {
             let trims3 = [s.alpha0, s.q0, s.r0];
             let zero = Poly::zero();
             Step8 {
-                jump: homogenize(&self.det_j5, &trims4, &self.trim, &self.det_a),
-                d_det_a: homogenize(&self.d, &trims4, &self.trim, &self.det_a),
+                jump: homogenize(&self.det_j5, &trims4, &self.trim, &self.det_a, TRIM_DEGREE),
+                d_det_a: homogenize(&self.d, &trims4, &self.trim, &self.det_a, TRIM_DEGREE),
                 zs_jump: homogenize(
                     &self.det_j5.subs(s.beta0, &zero),
                     &trims3,
                     &self.zs_trim,
                     &self.zs_det,
+                    TRIM_DEGREE,
                 ),
                 zs_d_det: homogenize(
                     &self.d.subs(s.beta0, &zero),
                     &trims3,
                     &self.zs_trim,
                     &self.zs_det,
+                    TRIM_DEGREE,
                 ),
             }
         })
@@ -364,8 +369,10 @@ fn solve(a: &Matrix, c: &[Poly]) -> (Vec<Poly>, Poly) {
 }
 
 /// Solves `f = 0` for `x`, where `f` is linear in `x`: `x = -f|_{x=0} / (df/dx)`.
+/// The denominator is zero when `x` does not occur (e.g. `n_delta_r = 0` for the rudder of
+/// Eq. 35): callers that divide by it check for that.
 fn solve_for(f: &Poly, x: Sym) -> Ratio {
-    assert!(f.degree(x) == 1, "equation must be linear in {x}");
+    assert!(f.degree(x) <= 1, "equation must be linear in {x}");
     Ratio {
         num: -f.coeff(x, 0),
         den: f.coeff(x, 1),
@@ -406,10 +413,18 @@ fn time_derivative(s: &Symbols, f: &Poly) -> Poly {
     })
 }
 
-/// Substitutes `t_i = num_i / den` into `f` (of degree k in the `t_i`) and multiplies by
-/// `den^k` (step 8), giving a polynomial: each term of degree j in the `t_i` gets `den^(k-j)`.
-pub fn homogenize(f: &Poly, t: &[Sym], num: &[Poly], den: &Poly) -> Poly {
-    let k = f.degree_in(t);
+/// The power of the trim's denominator that step 8 clears from det J5 and from d.
+///
+/// Both are at most quadratic in the trim states (the entries of J5 are linear in them; d has
+/// the `E Q0 alpha0` term). Clearing both with the same power keeps `det K = jump / d_det_a`
+/// for every aircraft, also when E = 0 lowers the degree of d.
+pub const TRIM_DEGREE: u32 = 2;
+
+/// Substitutes `t_i = num_i / den` into `f` (of degree at most k in the `t_i`) and multiplies
+/// by `den^k` (step 8), giving a polynomial: each term of degree j in the `t_i` gets
+/// `den^(k-j)`.
+pub fn homogenize(f: &Poly, t: &[Sym], num: &[Poly], den: &Poly, k: u32) -> Poly {
+    assert!(f.degree_in(t) <= k, "degree in the trim states above {k}");
     let mut den_pows = vec![Poly::int(1)];
     for _ in 0..k {
         let next = den_pows.last().map(|p| p * den).unwrap_or_default();

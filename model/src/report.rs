@@ -93,6 +93,8 @@ pub struct Summary {
     pub simulated_jumps: Vec<SimulatedJump>,
     /// The figures.
     pub figures: Vec<FigureEntry>,
+    /// Sections that could not be computed for this aircraft, with the reason.
+    pub skipped: Vec<String>,
 }
 
 /// What to draw.
@@ -174,6 +176,20 @@ fn family(critical: Option<f64>) -> Vec<f64> {
         .collect()
 }
 
+/// The value of `r`, or `None` with `what: reason` recorded in `skipped`.
+fn keep<T>(skipped: &mut Vec<String>, what: &str, r: Result<T, ReportError>) -> Option<T> {
+    r.map_err(|e| skipped.push(format!("{what}: {e}"))).ok()
+}
+
+/// Aileron steps as a list of degrees.
+fn degrees(steps: &[f64]) -> String {
+    steps
+        .iter()
+        .map(|d| format!("{:.2}", d.to_degrees()))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 fn rel(out: &Path, files: &[PathBuf]) -> Vec<String> {
     files
         .iter()
@@ -203,56 +219,68 @@ pub fn report(
     let name = &aircraft.name;
     let mut figures = Vec::new();
     progress(0.05);
+    // Each section that cannot be computed for this aircraft (no rudder authority, a run that
+    // does not settle, ...) is skipped with its reason; the rest of the report still appears.
+    let mut skipped: Vec<String> = Vec::new();
+    let fig = |paper: &'static str, caption: String, files: &[PathBuf]| FigureEntry {
+        paper,
+        caption,
+        files: rel(out, files),
+    };
 
     // Figs 1-4: continuation of every branch.
     let cont = continuation::Settings {
         delta_e: de,
         ..continuation::Settings::default()
     };
-    let diagram = continue_equilibria(aircraft, &cont, &mut |_| {})?;
-    let data = to_plot(
-        &diagram,
-        format!(
-            "{name}: PSS equilibria, \u{3b4}e = {:.1} deg, \u{3b4}r = 0",
-            de.to_degrees()
-        ),
-        &analysis.divergence_roll_rates,
+    let diagram = keep(
+        &mut skipped,
+        "Figs 1-4 (continuation)",
+        continue_equilibria(aircraft, &cont, &mut |_| {}).map_err(ReportError::from),
     );
-    let r = plot::bifurcation(&out.join("fig01_bifurcation"), &data, style)?;
-    figures.push(FigureEntry {
-        paper: "Figs 1, 2",
-        caption: "Roll rate of the PSS equilibria vs aileron (solid stable, dashed unstable; saddle-nodes and Hopf points marked).".into(),
-        files: rel(out, &r.files),
-    });
-    let r = plot::trim_states(&out.join("fig03_trim_states"), &data, style)?;
-    figures.push(FigureEntry {
-        paper: "Figs 3, 4",
-        caption: "Trim angle of attack, sideslip, pitch and yaw rate vs aileron.".into(),
-        files: rel(out, &r.files),
-    });
+    if let Some(diagram) = &diagram {
+        let data = to_plot(
+            diagram,
+            format!(
+                "{name}: PSS equilibria, \u{3b4}e = {:.1} deg, \u{3b4}r = 0",
+                de.to_degrees()
+            ),
+            &analysis.divergence_roll_rates,
+        );
+        let r = plot::bifurcation(&out.join("fig01_bifurcation"), &data, style);
+        if let Some(r) = keep(&mut skipped, "Figs 1, 2", r.map_err(ReportError::from)) {
+            figures.push(fig("Figs 1, 2", "Roll rate of the PSS equilibria vs aileron (solid stable, dashed unstable; saddle-nodes and Hopf points marked).".into(), &r.files));
+        }
+        let r = plot::trim_states(&out.join("fig03_trim_states"), &data, style);
+        if let Some(r) = keep(&mut skipped, "Figs 3, 4", r.map_err(ReportError::from)) {
+            figures.push(fig(
+                "Figs 3, 4",
+                "Trim angle of attack, sideslip, pitch and yaw rate vs aileron.".into(),
+                &r.files,
+            ));
+        }
+    }
     progress(0.3);
 
     // Figs 7, 8, 11: det K from the closed form.
-    let r = plot::det_k(
-        &out.join("fig07_det_k"),
-        &closed_form::det_k_curve(aircraft, de)?,
-        style,
-    )?;
-    figures.push(FigureEntry {
-        paper: "Figs 7, 8",
-        caption: "det K vs trim roll rate P0, roots (jump points) and poles (d = 0) marked.".into(),
-        files: rel(out, &r.files),
-    });
-    let r = plot::det_k(
-        &out.join("fig11_zero_sideslip_det_k"),
-        &closed_form::zero_sideslip_det_k_curve(aircraft, de)?,
-        style,
-    )?;
-    figures.push(FigureEntry {
-        paper: "Fig. 11",
-        caption: "det K at the zero-sideslip trims vs P0: departure points.".into(),
-        files: rel(out, &r.files),
-    });
+    let r = closed_form::det_k_curve(aircraft, de)
+        .and_then(|c| plot::det_k(&out.join("fig07_det_k"), &c, style));
+    if let Some(r) = keep(&mut skipped, "Figs 7, 8", r.map_err(ReportError::from)) {
+        figures.push(fig(
+            "Figs 7, 8",
+            "det K vs trim roll rate P0, roots (jump points) and poles (d = 0) marked.".into(),
+            &r.files,
+        ));
+    }
+    let r = closed_form::zero_sideslip_det_k_curve(aircraft, de)
+        .and_then(|c| plot::det_k(&out.join("fig11_zero_sideslip_det_k"), &c, style));
+    if let Some(r) = keep(&mut skipped, "Fig. 11", r.map_err(ReportError::from)) {
+        figures.push(fig(
+            "Fig. 11",
+            "det K at the zero-sideslip trims vs P0: departure points.".into(),
+            &r.files,
+        ));
+    }
     progress(0.4);
 
     // Fig. 9: extended bifurcation analysis of the zero-sideslip roll.
@@ -260,134 +288,166 @@ pub fn report(
         zero_sideslip: true,
         ..cont
     };
-    let zs = continue_equilibria(aircraft, &zs_settings, &mut |_| {})?;
-    // Show 1.5 times the first departure's aileron (at least 5 deg), as the paper's Fig. 9
-    // does: beyond it the schedule asks for rudder deflections no aircraft has.
-    let zs_range = analysis
-        .zero_sideslip
-        .departure
-        .first()
-        .map_or(5f64.to_radians(), |d| {
-            (1.5 * d.delta_a_rad.abs()).max(5f64.to_radians())
-        });
-    let mut zs_plot = to_plot(
-        &zs,
-        format!("{name}: zero-sideslip roll with the rudder schedule (EBA)"),
-        &[],
+    let zs = keep(
+        &mut skipped,
+        "Fig. 9 (zero-sideslip continuation)",
+        continue_equilibria(aircraft, &zs_settings, &mut |_| {}).map_err(ReportError::from),
     );
-    zs_plot.delta_a_range_deg = Some((-zs_range.to_degrees(), zs_range.to_degrees()));
-    let zs_data = ZeroSideslipData {
-        schedule: zs
-            .rudder_schedule
-            .iter()
-            .filter(|s| s.delta_a.abs() <= zs_range)
-            .map(|s| (s.delta_a, s.delta_r))
-            .collect(),
-        diagram: zs_plot,
-    };
-    let r = plot::zero_sideslip(&out.join("fig09_zero_sideslip"), &zs_data, style)?;
-    figures.push(FigureEntry {
-        paper: "Fig. 9",
-        caption: "Rudder schedule for zero sideslip (aileron-rudder interconnect) and the PSS equilibria with it; the branch point marks the departure.".into(),
-        files: rel(out, &r.files),
-    });
+    if let Some(zs) = &zs {
+        // Show 1.5 times the first departure's aileron (at least 5 deg), as the paper's Fig. 9
+        // does: beyond it the schedule asks for rudder deflections no aircraft has.
+        let zs_range = analysis
+            .zero_sideslip
+            .departure
+            .first()
+            .map_or(5f64.to_radians(), |d| {
+                (1.5 * d.delta_a_rad.abs()).max(5f64.to_radians())
+            });
+        let mut zs_plot = to_plot(
+            zs,
+            format!("{name}: zero-sideslip roll with the rudder schedule (EBA)"),
+            &[],
+        );
+        zs_plot.delta_a_range_deg = Some((-zs_range.to_degrees(), zs_range.to_degrees()));
+        let zs_data = ZeroSideslipData {
+            schedule: zs
+                .rudder_schedule
+                .iter()
+                .filter(|s| s.delta_a.abs() <= zs_range)
+                .map(|s| (s.delta_a, s.delta_r))
+                .collect(),
+            diagram: zs_plot,
+        };
+        let r = plot::zero_sideslip(&out.join("fig09_zero_sideslip"), &zs_data, style);
+        if let Some(r) = keep(&mut skipped, "Fig. 9", r.map_err(ReportError::from)) {
+            figures.push(fig("Fig. 9", "Rudder schedule for zero sideslip (aileron-rudder interconnect) and the PSS equilibria with it; the branch point marks the departure.".into(), &r.files));
+        }
+    }
     progress(0.5);
 
-    // Figs 5, 6: aileron steps from the trim, 7th-order model solid, PSS dashed.
-    let sim = Simulator::new(aircraft, de)?;
+    // Figs 5, 6 and 10: time histories; the simulated jump (section III).
+    let sim = keep(
+        &mut skipped,
+        "Figs 5, 6, 10 (simulation)",
+        Simulator::new(aircraft, de).map_err(ReportError::from),
+    );
     let fold = analysis.jump.first().map(|j| j.delta_a_rad);
-    let steps = family(fold);
-    let run = |model: Model, rudder: Rudder, da: &[f64]| -> Result<Vec<TimeHistory>, SimError> {
-        let settings: Vec<SimSettings> = da
-            .iter()
-            .map(|d| SimSettings {
-                rudder,
-                ..SimSettings::step(model, de, *d)
-            })
-            .collect();
-        sim.run_all(&settings)
-    };
-    let seventh = run(Model::SeventhOrder, Rudder::Fixed(0.0), &steps)?;
-    let pss = run(Model::Pss, Rudder::Fixed(0.0), &steps)?;
-    let r = plot::time_histories(
-        &out.join("fig05_roll_response"),
-        &TimeHistoryData {
-            title: format!("{name}: response to aileron steps (7th-order solid, PSS dashed)"),
-            runs: &seventh,
-            overlay: &pss,
-            variables: vec![Variable::P, Variable::Beta],
-        },
-        style,
-    )?;
-    figures.push(FigureEntry {
-        paper: "Figs 5, 6",
-        caption: format!(
-            "Roll rate and sideslip after aileron steps of {} deg.",
-            steps
-                .iter()
-                .map(|d| format!("{:.2}", d.to_degrees()))
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
-        files: rel(out, &r.files),
-    });
-    progress(0.7);
-
-    // Fig. 10: zero-sideslip scheduling; steps up to past the departure point, where the
-    // schedule exists.
-    let departure = analysis
-        .zero_sideslip
-        .departure
-        .first()
-        .map(|d| d.delta_a_rad);
-    let zs_steps: Vec<f64> = family(departure)
-        .into_iter()
-        .filter(|d| sim.rudder_at(Rudder::ZeroSideslip, *d).is_ok())
-        .collect();
-    if !zs_steps.is_empty() {
-        let zs_runs = run(Model::SeventhOrder, Rudder::ZeroSideslip, &zs_steps)?;
-        let r = plot::time_histories(
-            &out.join("fig10_zero_sideslip_response"),
-            &TimeHistoryData {
-                title: format!("{name}: aileron steps with the zero-sideslip rudder schedule"),
-                runs: &zs_runs,
-                overlay: &[],
-                variables: vec![Variable::Beta, Variable::P],
-            },
-            style,
-        )?;
-        figures.push(FigureEntry {
-            paper: "Fig. 10",
-            caption: format!(
-                "Sideslip and roll rate after aileron steps of {} deg with the rudder on the zero-sideslip schedule (7th-order model).",
-                zs_steps.iter().map(|d| format!("{:.2}", d.to_degrees())).collect::<Vec<_>>().join(", ")
-            ),
-            files: rel(out, &r.files),
-        });
-    }
-    progress(0.85);
-
-    // Simulated jump points (section III).
     let mut simulated_jumps = Vec::new();
-    if let Some(f) = fold {
-        for (model, label) in [(Model::Pss, "pss"), (Model::SeventhOrder, "seventh-order")] {
-            let sweep = jump_sweep(
-                &sim,
-                &SweepSettings::new(model, 2.0 * f, 0.25f64.to_radians()),
-            )?;
-            simulated_jumps.push(SimulatedJump {
-                model: label,
-                delta_a_deg: sweep.jump.map(|j| j.delta_a.to_degrees()),
-                criterion_deg: f.to_degrees(),
+    if let Some(sim) = &sim {
+        let run =
+            |model: Model, rudder: Rudder, da: &[f64]| -> Result<Vec<TimeHistory>, SimError> {
+                let settings: Vec<SimSettings> = da
+                    .iter()
+                    .map(|d| SimSettings {
+                        rudder,
+                        ..SimSettings::step(model, de, *d)
+                    })
+                    .collect();
+                sim.run_all(&settings)
+            };
+        // Figs 5, 6: aileron steps from the trim, 7th-order model solid, PSS dashed.
+        let steps = family(fold);
+        let r = run(Model::SeventhOrder, Rudder::Fixed(0.0), &steps)
+            .and_then(|seventh| Ok((seventh, run(Model::Pss, Rudder::Fixed(0.0), &steps)?)))
+            .map_err(ReportError::from)
+            .and_then(|(seventh, pss)| {
+                plot::time_histories(
+                    &out.join("fig05_roll_response"),
+                    &TimeHistoryData {
+                        title: format!(
+                            "{name}: response to aileron steps (7th-order solid, PSS dashed)"
+                        ),
+                        runs: &seventh,
+                        overlay: &pss,
+                        variables: vec![Variable::P, Variable::Beta],
+                    },
+                    style,
+                )
+                .map_err(ReportError::from)
             });
+        if let Some(r) = keep(&mut skipped, "Figs 5, 6", r) {
+            figures.push(fig(
+                "Figs 5, 6",
+                format!(
+                    "Roll rate and sideslip after aileron steps of {} deg.",
+                    degrees(&steps)
+                ),
+                &r.files,
+            ));
+        }
+        progress(0.7);
+
+        // Fig. 10: zero-sideslip scheduling; steps up to past the departure point, where the
+        // schedule exists.
+        let departure = analysis
+            .zero_sideslip
+            .departure
+            .first()
+            .map(|d| d.delta_a_rad);
+        let zs_steps: Vec<f64> = family(departure)
+            .into_iter()
+            .filter(|d| sim.rudder_at(Rudder::ZeroSideslip, *d).is_ok())
+            .collect();
+        if zs_steps.is_empty() {
+            skipped.push("Fig. 10: no aileron step has a zero-sideslip rudder setting".into());
+        } else {
+            let r = run(Model::SeventhOrder, Rudder::ZeroSideslip, &zs_steps)
+                .map_err(ReportError::from)
+                .and_then(|zs_runs| {
+                    plot::time_histories(
+                        &out.join("fig10_zero_sideslip_response"),
+                        &TimeHistoryData {
+                            title: format!(
+                                "{name}: aileron steps with the zero-sideslip rudder schedule"
+                            ),
+                            runs: &zs_runs,
+                            overlay: &[],
+                            variables: vec![Variable::Beta, Variable::P],
+                        },
+                        style,
+                    )
+                    .map_err(ReportError::from)
+                });
+            if let Some(r) = keep(&mut skipped, "Fig. 10", r) {
+                figures.push(fig(
+                    "Fig. 10",
+                    format!(
+                        "Sideslip and roll rate after aileron steps of {} deg with the rudder on the zero-sideslip schedule (7th-order model).",
+                        degrees(&zs_steps)
+                    ),
+                    &r.files,
+                ));
+            }
+        }
+        progress(0.85);
+
+        if let Some(f) = fold {
+            for (model, label) in [(Model::Pss, "pss"), (Model::SeventhOrder, "seventh-order")] {
+                let sweep = jump_sweep(
+                    sim,
+                    &SweepSettings::new(model, 2.0 * f, 0.25f64.to_radians()),
+                );
+                if let Some(sweep) = keep(
+                    &mut skipped,
+                    "simulated jump",
+                    sweep.map_err(ReportError::from),
+                ) {
+                    simulated_jumps.push(SimulatedJump {
+                        model: label,
+                        delta_a_deg: sweep.jump.map(|j| j.delta_a.to_degrees()),
+                        criterion_deg: f.to_degrees(),
+                    });
+                }
+            }
         }
     }
     let summary = Summary {
-        special_points: rows(&diagram),
-        zero_sideslip_special_points: rows(&zs),
+        special_points: diagram.as_ref().map(rows).unwrap_or_default(),
+        zero_sideslip_special_points: zs.as_ref().map(rows).unwrap_or_default(),
         analysis,
         simulated_jumps,
         figures,
+        skipped,
     };
     if settings.summary {
         let write = |file: &str, text: String| {
@@ -486,6 +546,12 @@ fn markdown(s: &Summary, de: f64) -> String {
                 j.delta_a_deg.map_or("none".into(), |d| format!("{d:.3}")),
                 j.criterion_deg
             );
+        }
+    }
+    if !s.skipped.is_empty() {
+        m += "\n## Not computed for this aircraft\n\n";
+        for k in &s.skipped {
+            m += &format!("- {k}\n");
         }
     }
     m += "\n## Figures\n";

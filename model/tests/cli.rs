@@ -222,3 +222,89 @@ fn simulate_writes_a_time_history() {
     assert_eq!(bad.status.code(), Some(2));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Aircraft A's file with some values replaced, written to a temporary folder.
+fn variant(tag: &str, replace: &[(&str, &str)]) -> (PathBuf, PathBuf) {
+    let dir = std::env::temp_dir().join(format!("model-cli-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut text = std::fs::read_to_string(repo("aircraft/a.toml")).unwrap();
+    for (from, to) in replace {
+        assert!(text.contains(from), "{from}");
+        text = text.replace(from, to);
+    }
+    let path = dir.join(format!("{tag}.toml"));
+    std::fs::write(&path, text).unwrap();
+    (dir, path)
+}
+
+#[test]
+fn degenerate_aircraft_give_errors_or_partial_reports_never_panics() {
+    // C D = 0 (the P0^4 coefficient of det A): det A is only quadratic in P0.
+    let (dir, cd0) = variant("cd0", &[("D = 0.786", "D = 0.0")]);
+    let out = model(&["analyze", cd0.to_str().unwrap(), "--json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rep = model(&[
+        "report",
+        cd0.to_str().unwrap(),
+        "--out",
+        dir.join("r").to_str().unwrap(),
+    ]);
+    assert!(
+        rep.status.success(),
+        "{}",
+        String::from_utf8_lossy(&rep.stderr)
+    );
+
+    // No rudder authority: no zero-sideslip schedule; the rest of the report still appears.
+    let (dir2, ndr0) = variant("ndr0", &[("n_delta_r = -1.0", "n_delta_r = 0.0")]);
+    let sim = model(&[
+        "simulate",
+        ndr0.to_str().unwrap(),
+        "--delta-a-deg",
+        "-5",
+        "--zero-sideslip",
+    ]);
+    assert_eq!(sim.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&sim.stderr).contains("n_delta_r"));
+    let rep = model(&[
+        "report",
+        ndr0.to_str().unwrap(),
+        "--out",
+        dir2.join("r").to_str().unwrap(),
+    ]);
+    assert!(
+        rep.status.success(),
+        "{}",
+        String::from_utf8_lossy(&rep.stderr)
+    );
+    let md = std::fs::read_to_string(dir2.join("r/summary.md")).unwrap();
+    assert!(
+        md.contains("Not computed for this aircraft") && md.contains("Fig. 9"),
+        "{md}"
+    );
+    assert!(md.contains("fig01_bifurcation.png"));
+
+    // No roll damping, stiffness or coupling: det J5 vanishes along the whole trim curve.
+    let (dir3, flat) = variant(
+        "flat",
+        &[
+            ("E = 0.705", "E = 0.0"),
+            ("l_p = -21.7529", "l_p = 0.0"),
+            ("l_r = 1.5207", "l_r = 0.0"),
+            ("l_beta = -110.45", "l_beta = 0.0"),
+        ],
+    );
+    let out = model(&["analyze", flat.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("vanishes identically"));
+
+    let out = model(&["analyze", "A", "--delta-e-deg", "1e308"]);
+    assert_eq!(out.status.code(), Some(2));
+    for d in [dir, dir2, dir3] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
+}

@@ -285,8 +285,26 @@ fn analysis_polynomials_are_proportional_to_the_specialised_derivation() {
             .collect();
         aircraft.push(Aircraft::new(format!("random {i}"), values, 150.0));
     }
+    // Degenerate inertias: E = 0 makes d linear in the trim states (step 8 must still clear
+    // d and det J5 with the same power of det A), D = 0 makes det A quadratic in P0.
+    for (label, param) in [("E = 0", Param::E), ("D = 0", Param::D)] {
+        let a = Aircraft::a();
+        let values = Param::ALL
+            .iter()
+            .map(|p| {
+                if *p == param {
+                    Default::default()
+                } else {
+                    a.exact(*p).clone()
+                }
+            })
+            .collect();
+        aircraft.push(Aircraft::new(format!("A with {label}"), values, 150.0));
+    }
     for ac in aircraft {
         let de = 2f64.to_radians();
+        // Emitting the specialised functions must not panic either (proc-macro input).
+        assert!(!model::emit::specialised_functions(&ac).is_empty());
         let fast = model::analysis::CriterionPolys::new(parametric(), &ac, de);
         let full = Derivation::derive(&model::analysis::specialisation(&ac, de));
         assert!(proportional(&fast.det_a, &full.det_a), "{}: det A", ac.name);
@@ -304,6 +322,26 @@ fn analysis_polynomials_are_proportional_to_the_specialised_derivation() {
         assert!(
             proportional(&fast.zs_d_det, full.zs_d_det()),
             "{}: zs d",
+            ac.name
+        );
+        // det K = det J5 / d = jump / d_det_a exactly, at a rational roll rate (this fails if
+        // the two are cleared with different powers of det A, e.g. when E = 0).
+        let s = symbols();
+        let p0 = Q::ratio(7, 5);
+        let at_p0 = |p: &Poly| p.subs_values(&[(s.p0, p0.clone())]).as_constant().unwrap();
+        let den = at_p0(&full.det_a);
+        let mut trims: Vec<(model::algebra::Sym, Q)> = [s.alpha0, s.beta0, s.q0, s.r0]
+            .iter()
+            .zip(&full.trim)
+            .map(|(sym, n)| (*sym, at_p0(n).div(&den)))
+            .collect();
+        trims.push((s.p0, p0.clone()));
+        let exact = |p: &Poly| p.subs_values(&trims).as_constant().unwrap();
+        let det_k = exact(&full.det_j5).div(&exact(&full.d));
+        assert_eq!(
+            det_k,
+            at_p0(full.jump()).div(&at_p0(full.d_det_a())),
+            "{}",
             ac.name
         );
         // The trims are the same ratios.

@@ -5,6 +5,10 @@
 //! prints `let tN = ...;`. Polynomials enter through a greedy multivariate Horner scheme
 //! ([`Dag::poly`]), which writes powers as products (never a `powi` call) and keeps the
 //! operation count low. Constants are exact rationals, rounded to f64 once at emission.
+//!
+//! The folding rules (sign hoisting, `x + (-c) = x - c`, `0 * x = 0`, `1 * x = x`) are exact
+//! for finite values up to the sign of a zero result; `0 * x = 0` also drops the NaN that
+//! IEEE arithmetic would give for an infinite or NaN `x`.
 
 use crate::algebra::{Poly, Sym, Q};
 use rustc_hash::FxHashMap;
@@ -220,7 +224,8 @@ impl Dag {
         self.add_node(Node::Div(a, b))
     }
 
-    /// -a. Sign rewrites are exact in IEEE arithmetic, so they never change a result.
+    /// -a. Sign rewrites are exact in IEEE arithmetic for finite values (up to the sign of a
+    /// zero result), so they never change a finite result.
     pub fn neg(&mut self, a: Id) -> Id {
         if let Some(x) = self.as_const(a).cloned() {
             if x.is_negative() || x.is_zero() {

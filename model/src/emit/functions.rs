@@ -7,7 +7,7 @@
 use super::expr::{Dag, Id};
 use crate::aircraft::Param;
 use crate::algebra::{Matrix, Poly, Sym, Q};
-use crate::derivation::Derivation;
+use crate::derivation::{Derivation, TRIM_DEGREE};
 use crate::equations::symbols;
 
 /// How a generated function returns its outputs.
@@ -341,10 +341,14 @@ impl Ctx {
         out
     }
 
-    /// `f(t = num / den) * den^k` as coefficient nodes in P0, where f has degree k in the
-    /// trim symbols `t` (step 8 of the derivation, by univariate convolutions).
+    /// `f(t = num / den) * den^k` as coefficient nodes in P0, with k = [`TRIM_DEGREE`] (step 8
+    /// of the derivation, by univariate convolutions).
     fn homogenize(&mut self, f: &Poly, t: &[Sym], num: &[Poly], den: &Poly) -> Vec<Id> {
-        let k = f.degree_in(t) as usize;
+        let k = TRIM_DEGREE as usize;
+        assert!(
+            f.degree_in(t) as usize <= k,
+            "degree in the trim states above {k}"
+        );
         let num: Vec<Vec<Id>> = num.iter().map(|n| self.in_p0(n)).collect();
         let den = self.in_p0(den);
         let one = vec![self.dag.constant(Q::ONE)];

@@ -20,9 +20,22 @@ enum Prec {
     Sum,
 }
 
-/// An f64 literal for an exact constant (rounded once). Non-negative by construction here.
+/// An f64 literal for an exact constant, rounded once to the nearest f64. A constant beyond
+/// the range of f64 (an aircraft file with absurd magnitudes) rounds to +-infinity, as IEEE
+/// rounding does, and is written `f64::INFINITY`: the generated code then returns infinities
+/// or NaN for that aircraft instead of the emitter panicking.
 pub fn float_literal(q: &Q) -> TokenStream {
     let x = q.to_f64();
+    if x.is_nan() {
+        return quote!(f64::NAN);
+    }
+    if x.is_infinite() {
+        return if x > 0.0 {
+            quote!(f64::INFINITY)
+        } else {
+            quote!(-f64::INFINITY)
+        };
+    }
     let lit = Literal::f64_unsuffixed(x.abs());
     if x.is_sign_negative() && x != 0.0 {
         quote!(-#lit)

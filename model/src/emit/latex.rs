@@ -258,14 +258,15 @@ fn lookup(s: &Symbols, name: &str) -> Sym {
 fn display_order(s: &Symbols) -> Vec<Sym> {
     let mut v: Vec<Sym> = s.params.to_vec();
     v.extend([
-        s.delta_a,
-        s.delta_e,
-        s.delta_r,
-        s.p0,
-        s.alpha0,
-        s.beta0,
-        s.q0,
-        s.r0,
+        s.delta_a, s.delta_e, s.delta_r, s.p0, s.alpha0, s.beta0, s.q0, s.r0,
+    ]);
+    v.extend(perturbation_order(s));
+    v
+}
+
+/// The perturbations with their derivatives, in display order (highest derivative first).
+fn perturbation_order(s: &Symbols) -> [Sym; 10] {
+    [
         s.alpha_ddot,
         s.alpha_dot,
         s.alpha,
@@ -276,8 +277,7 @@ fn display_order(s: &Symbols) -> Vec<Sym> {
         s.p,
         s.q,
         s.r,
-    ]);
-    v
+    ]
 }
 
 /// One summand of a typeset sum: a signed atom, or a signed group `prefix (inner) suffix`.
@@ -698,19 +698,7 @@ impl<'a> Writer<'a> {
     }
 
     fn states_syms(&self) -> Vec<Sym> {
-        let s = self.s;
-        vec![
-            s.alpha_ddot,
-            s.alpha_dot,
-            s.alpha,
-            s.beta_ddot,
-            s.beta_dot,
-            s.beta,
-            s.p_dot,
-            s.p,
-            s.q,
-            s.r,
-        ]
+        perturbation_order(self.s).to_vec()
     }
 
     fn inertia(&self) -> [Sym; 3] {

@@ -4,7 +4,7 @@
 // inputs: Aircraft A (model::aircraft); model 0.1.0.
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  25      41       2       0       0      68
+//   trim                                  25      42       2       1       0      70
 //   zero_sideslip_trim                     5      14       2       4       0      25
 //   jacobian5                              1       6       0       5       0      12
 //   residual_denominator                  25      41       1       0       0      67
@@ -38,19 +38,23 @@ pub const DERIVATIVES: super::Derivatives = super::Derivatives {
     n_beta: 3.716,
     n_delta_a: 0.0,
     n_delta_r: -1.0,
+    l_delta_r: 0.0,
 };
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
-/// for x = [alpha, beta, q, r], then the aileron from the roll equation
-/// `delta_a = -(l_p P0 + l_beta beta0 + l_r R0 - E Q0 R0) / l_delta_a` (n_delta_a = 0).
-/// Angles in rad, rates in rad/s. Non-finite where det A = 0 (the divergence roll rates).
+/// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
+/// equation), and the aileron from the roll equation, a quadratic in delta_a
+/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). This is the trim
+/// branch that continues the trim without aileron yaw (the root that tends to `-g0/g1`);
+/// NaN where the two trims of `p0` are complex. Angles in rad, rates in rad/s.
+/// Non-finite where det A = 0 (the divergence roll rates).
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 41 mul, 2 div, 0 neg, 0 libm (68 operations); straight-line, no branches.
+/// Cost after CSE: 25 add/sub, 42 mul, 2 div, 1 neg, 0 libm (70 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn trim(p0: f64, delta_e: f64, delta_r: f64) -> Trim {
@@ -76,8 +80,8 @@ pub fn trim(p0: f64, delta_e: f64, delta_r: f64) -> Trim {
         beta: t10,
         q: t11,
         r: t12,
-        delta_a: (t12 * (t11 * 0.705 - 1.5207) + (t10 * 110.45 + p0 * 21.7529))
-            / (-327.28),
+        delta_a: -((t12 * (1.5207 - t11 * 0.705) - (t10 * 110.45 + p0 * 21.7529)) * 2.0
+            / (-654.56)),
     }
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
@@ -102,8 +106,8 @@ pub fn zero_sideslip_trim(p0: f64, delta_e: f64) -> ZeroSideslipTrim {
         alpha: -(t0 * t1),
         q: -t2,
         r: -t3,
-        delta_a: (p0 * 21.7529 - t3 * (-1.5207 - t2 * 0.705)) / (-327.28),
-        n_delta_r_delta_r: -(t3 * 0.2608 + p0 * t2 * 0.786),
+        delta_a: -((t3 * (1.5207 + t2 * 0.705) + p0 * 21.7529) / 327.28),
+        n_delta_r_delta_r: t3 * 85.354624 + p0 * t2 * 257.24208,
     }
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
@@ -212,7 +216,7 @@ pub fn stiffness(p0: f64, delta_e: f64, delta_r: f64) -> [[f64; 2]; 2] {
 /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the
 /// saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.
 /// Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared
-/// from g, h and d, so that it costs a single division.
+/// from g, h and d, on the trim branch of [`trim`].
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -247,11 +251,11 @@ pub fn det_k(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t19 = p0 * 2.6247736;
     let t20 = 3.73055264 - 0.786 * t16;
     t17 * t20 + t18 * t19
-        - ((t4 * (p0 * 1.5207) - (t13 * 2.120358 + p0 * t12 * 0.705))
+        - ((t4 * (p0 * 1.5207) - (t13 * 2.120358 + 0.705 * (p0 * t12)))
             * (t14 * t20 + t15 * t18)
             + (t12 * 0.039339 - 0.705 * (p0 * t13) - t4 * 110.53485506)
                 * (t14 * t19 - t15 * t17))
-            / (t4 * (t8 * 1.5207) - t4 * t4 * 21.7529
+            / (t4 * (t8 * 1.5207) - 21.7529 * (t4 * t4)
                 - (0.705 * (t11 * t13) + 0.705 * (t8 * t12)))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
@@ -359,6 +363,8 @@ pub fn divergence_roll_rates() -> [f64; 2] {
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Coefficients of P0^0 ..= P0^12 of the jump polynomial `det J5 * det(A)^2` (step 8).
 /// Its positive real roots that are not roots of det A or d are the jump roll rates.
+/// A polynomial in P0 alone exists only without aileron yaw: every coefficient is NaN
+/// when `n_delta_a != 0` (then `model analyze` eliminates delta_a by a resultant).
 ///
 /// Arguments:
 /// - `delta_e`: elevator deflection, rad

@@ -53,11 +53,13 @@ pub enum Param {
     NDeltaA,
     /// n_delta_r, 1/s^2.
     NDeltaR,
+    /// l_delta_r, 1/s^2 (roll due to rudder; optional, default 0).
+    LDeltaR,
 }
 
 impl Param {
     /// All parameters in their fixed order.
-    pub const ALL: [Param; 17] = [
+    pub const ALL: [Param; 18] = [
         Param::C,
         Param::D,
         Param::E,
@@ -75,6 +77,7 @@ impl Param {
         Param::NBeta,
         Param::NDeltaA,
         Param::NDeltaR,
+        Param::LDeltaR,
     ];
 
     /// Snake-case name: the TOML key (`[derivatives]` or `[inertia]`) and the Rust field name.
@@ -97,6 +100,7 @@ impl Param {
             Param::NBeta => "n_beta",
             Param::NDeltaA => "n_delta_a",
             Param::NDeltaR => "n_delta_r",
+            Param::LDeltaR => "l_delta_r",
         }
     }
 
@@ -120,6 +124,7 @@ impl Param {
             Param::NBeta => "n_\\beta",
             Param::NDeltaA => "n_{\\delta a}",
             Param::NDeltaR => "n_{\\delta r}",
+            Param::LDeltaR => "l_{\\delta r}",
         }
     }
 
@@ -146,7 +151,36 @@ impl Param {
 /// terms (g/V = 0.065 1/s), not the PSS model or the criterion.
 pub const DEFAULT_SPEED_M_S: f64 = 150.0;
 
-/// One aircraft: a name, the 17 exact parameters, and the speed for the 7th-order model.
+/// Control-surface deflection limits from the optional `[limits]` table, degrees (None: no limit).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Limits {
+    /// |delta_a| limit, deg.
+    pub aileron_deg: Option<f64>,
+    /// |delta_e| limit, deg.
+    pub elevator_deg: Option<f64>,
+    /// |delta_r| limit, deg.
+    pub rudder_deg: Option<f64>,
+}
+
+/// Range in which the linear aerodynamics are trusted, from the optional `[validity]` table, degrees.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Validity {
+    /// |alpha| limit, deg (default 30).
+    pub alpha_max_deg: f64,
+    /// |beta| limit, deg (default 30).
+    pub beta_max_deg: f64,
+}
+
+impl Default for Validity {
+    fn default() -> Self {
+        Validity {
+            alpha_max_deg: 30.0,
+            beta_max_deg: 30.0,
+        }
+    }
+}
+
+/// One aircraft: a name, the 18 exact parameters, and the speed for the 7th-order model.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Aircraft {
     /// Display name, e.g. "Aircraft A".
@@ -154,6 +188,10 @@ pub struct Aircraft {
     values: Vec<BigRational>,
     /// Flight speed in m/s (only used by the g/V terms of the 7th-order model, Appendix A.1).
     pub speed: f64,
+    /// Control limits (`[limits]`), none by default.
+    pub limits: Limits,
+    /// Validity range of the linear aerodynamics (`[validity]`), 30 deg by default.
+    pub validity: Validity,
 }
 
 impl Aircraft {
@@ -164,11 +202,13 @@ impl Aircraft {
             name: name.into(),
             values,
             speed,
+            limits: Limits::default(),
+            validity: Validity::default(),
         }
     }
 
     /// Builds an aircraft from decimal literals in [`Param::ALL`] order (for built-ins and tests).
-    pub fn from_decimals(name: &str, decimals: [&str; 17], speed: f64) -> Self {
+    pub fn from_decimals(name: &str, decimals: [&str; 18], speed: f64) -> Self {
         let values = decimals
             .iter()
             .map(|s| decimal_to_rational(s).expect("built-in decimal literal"))
@@ -187,8 +227,8 @@ impl Aircraft {
     }
 
     /// All values rounded to f64, in [`Param::ALL`] order.
-    pub fn values_f64(&self) -> [f64; 17] {
-        let mut out = [0.0; 17];
+    pub fn values_f64(&self) -> [f64; 18] {
+        let mut out = [0.0; 18];
         for p in Param::ALL {
             out[p.index()] = self.value(p);
         }
@@ -217,6 +257,7 @@ impl Aircraft {
                 "3.716",
                 "0",
                 "-1",
+                "0",
             ],
             DEFAULT_SPEED_M_S,
         )
@@ -228,7 +269,7 @@ impl Aircraft {
             "Aircraft B",
             [
                 "0.949", "0.716", "0.727", "-1.329", "-0.196", "-3.933", "0.126", "-9.99",
-                "-45.83", "-0.814", "-23.18", "-28.37", "0", "-0.235", "5.67", "0", "-1",
+                "-45.83", "-0.814", "-23.18", "-28.37", "0", "-0.235", "5.67", "0", "-1", "0",
             ],
             DEFAULT_SPEED_M_S,
         )

@@ -1,6 +1,11 @@
-//! What `model analyze` computes: divergence roll rates (Eq. 5, Table 1), jump roll rates
-//! (roots of det K, Figs 7-8), the poles of det K, and the zero-sideslip departure points
-//! (Fig. 11), each with its trim and aileron deflection.
+//! What `model analyze` computes: the first jump on the primary branch (the critical point),
+//! divergence roll rates (Eq. 5, Table 1), jump roll rates (roots of det K, Figs 7-8), the poles
+//! of det K, and the zero-sideslip departure points (Fig. 11), each with its trim, control
+//! deflections and whether it lies within the aircraft's limits and validity range.
+//!
+//! With aileron yaw (`n_delta_a != 0`) a roll rate has up to two trims (the trim condition is
+//! quadratic in delta_a); jump points are then the roots of the resultant that eliminates delta_a
+//! between the trim condition and det J5, each reported with the aileron of its trim.
 //!
 //! The derivation is specialised to the aircraft's exact data and the elevator setting, so the
 //! criterion polynomials are univariate in P0 with exact rational coefficients. det K is the
@@ -11,13 +16,19 @@
 
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::{Poly, Sym, Q};
-use crate::derivation::{Derivation, Ratio, TRIM_DEGREE};
+use crate::derivation::{eliminate_aileron, homogenize, Derivation, Ratio, TRIM_DEGREE};
 use crate::equations::symbols;
 use crate::roots::{positive_roots, UPoly};
 use num_rational::BigRational;
+use num_traits::Zero;
 use serde::Serialize;
+use std::sync::OnceLock;
 
-/// A jump point: a positive root of det K on the unconstrained roll (delta_r = 0).
+mod primary;
+pub use primary::{quadratic_roots, InAileron, Outcome};
+
+/// A trim on the unconstrained roll (delta_r = 0) at which something happens: a jump point (a
+/// positive root of det K, i.e. of det J5 on the equilibrium curve) or a pole of det K (d = 0).
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct JumpPoint {
     /// Trim roll rate, rad/s.
@@ -34,6 +45,11 @@ pub struct JumpPoint {
     pub q: f64,
     /// Trim yaw rate, rad/s.
     pub r: f64,
+    /// Whether the aileron (and elevator) deflections are within the aircraft's `[limits]`;
+    /// `None` when the file gives no limit for them.
+    pub within_limits: Option<bool>,
+    /// Whether |alpha| and |beta| are within the `[validity]` range of the linear aerodynamics.
+    pub valid: bool,
 }
 
 /// A departure point of the zero-sideslip roll: a positive root of det K at the beta = 0 trim.
@@ -51,6 +67,14 @@ pub struct DeparturePoint {
     pub q: f64,
     /// Trim yaw rate, rad/s.
     pub r: f64,
+    /// Rudder deflection the zero-sideslip schedule needs here, rad.
+    pub delta_r_rad: f64,
+    /// The same in degrees.
+    pub delta_r_deg: f64,
+    /// Whether aileron, rudder (and elevator) are within `[limits]`; `None` without limits.
+    pub within_limits: Option<bool>,
+    /// Whether |alpha| is within the `[validity]` range (beta = 0 here).
+    pub valid: bool,
 }
 
 /// The zero-sideslip part of the analysis (section V).
@@ -67,12 +91,19 @@ pub struct Analysis {
     pub aircraft: String,
     /// Elevator deflection, rad.
     pub delta_e_rad: f64,
+    /// The first jump on the primary branch (from P0 = 0, delta_a = 0): the answer a user comes
+    /// for, or `None` when the branch diverges or runs off to |delta_a| = 90 deg without a fold
+    /// (see `critical_note`). Its aileron is negative for `l_delta_a < 0`; by the symmetry of
+    /// the model the same magnitude of the opposite sign gives the mirror jump at -P0.
+    pub critical: Option<JumpPoint>,
+    /// Why there is no critical jump, or `None` when there is one.
+    pub critical_note: Option<String>,
     /// Eq. 5: positive roots of det A (pitch-yaw divergence), Table 1.
     pub divergence_roll_rates: Vec<f64>,
     /// Positive roots of det K (saddle-node jump points), Figs 7-8.
     pub jump: Vec<JumpPoint>,
-    /// Positive roots of the static-residual denominator d (poles of det K), Fig. 8.
-    pub det_k_poles: Vec<f64>,
+    /// Trims where the static-residual denominator d vanishes (poles of det K), Fig. 8.
+    pub det_k_poles: Vec<JumpPoint>,
     /// Section V: zero-sideslip roll.
     pub zero_sideslip: ZeroSideslip,
 }
@@ -90,12 +121,6 @@ pub enum AnalysisError {
          undefined (check the roll derivatives and the inertias)"
     )]
     Degenerate(&'static str),
-    /// n_delta_a != 0 couples the aileron into the yaw equation.
-    #[error(
-        "n_delta_a = {0}: the closed-form criterion needs n_delta_a = 0 (with aileron yaw the \
-         trim for a given P0 is no longer linear in alpha, beta, q, r); set n_delta_a = 0"
-    )]
-    AileronYaw(f64),
 }
 
 /// The symbol values that specialise the derivation to an aircraft and elevator setting
@@ -116,17 +141,22 @@ pub fn exact_f64(x: f64) -> Q {
     Q::from_big(BigRational::from_float(x).unwrap_or_default())
 }
 
+/// The parametric derivation, derived once per process (every analysis specialises it).
+pub fn parametric() -> &'static Derivation {
+    static P: OnceLock<Derivation> = OnceLock::new();
+    P.get_or_init(Derivation::parametric)
+}
+
+/// How far the primary branch is followed when the aircraft gives no aileron limit, rad.
+pub const DEFAULT_AILERON_RANGE: f64 = std::f64::consts::FRAC_PI_2;
+
 /// Runs the analysis for one aircraft at elevator deflection `delta_e_rad`.
 pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, AnalysisError> {
     if !delta_e_rad.is_finite() || delta_e_rad.abs() > std::f64::consts::FRAC_PI_2 {
         return Err(AnalysisError::DeltaE(delta_e_rad));
     }
-    let nda = aircraft.value(Param::NDeltaA);
-    if nda != 0.0 {
-        return Err(AnalysisError::AileronYaw(nda));
-    }
     let s = symbols();
-    let d = CriterionPolys::new(&Derivation::parametric(), aircraft, delta_e_rad);
+    let d = CriterionPolys::new(parametric(), aircraft, delta_e_rad);
     let u = |p: &Poly| univariate(p, s.p0);
 
     let det_a = u(&d.det_a);
@@ -137,76 +167,108 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         return Err(AnalysisError::Degenerate("det J5"));
     }
     let divergence_roll_rates = positive_roots(&det_a).iter().map(|r| r.value).collect();
+    let marks = Marks::new(aircraft, delta_e_rad);
+    let g = in_aileron(&d.trim_condition);
+    // The trim numerators share det A's scale, so that their ratios are the trim.
+    let trims = in_aileron_all(&[&d.det_a, &d.trim[0], &d.trim[1], &d.trim[2], &d.trim[3]]);
+    let jump_at = in_aileron(&d.jump_at);
+    let d_at = in_aileron(&d.d_at);
+    let point = |p0: f64, f: &InAileron| -> JumpPoint {
+        let da = aileron_of_root(&g, f, p0);
+        let dv = trims[0].eval(p0, 0.0);
+        let [alpha, beta, q, r] = std::array::from_fn(|i| trims[i + 1].eval(p0, da) / dv);
+        JumpPoint {
+            p0,
+            delta_a_rad: da,
+            delta_a_deg: da.to_degrees(),
+            alpha,
+            beta,
+            q,
+            r,
+            within_limits: marks.within(da, None),
+            valid: marks.valid(alpha, beta),
+        }
+    };
 
-    let (poles_num, _) = cancel(&u(&d.d_det_a), &det_a);
-    let det_k_poles = positive_roots(&poles_num).iter().map(|r| r.value).collect();
+    let (poles_num, _) = cancel(&d.poles, &det_a);
+    let det_k_poles = positive_roots(&poles_num)
+        .iter()
+        .map(|root| point(root.value, &d_at))
+        .collect();
 
     // A root shared with det A after cancellation has no finite trim: not a jump point.
-    let jump_num = strip(&cancel(&u(&d.jump), &u(&d.d_det_a)).0, &det_a);
-    let trim_u: Vec<UPoly> = d.trim.iter().map(u).collect();
-    let jump = positive_roots(&jump_num)
+    let jump_num = strip(&cancel(&d.jump, &d.poles).0, &det_a);
+    let jump: Vec<JumpPoint> = positive_roots(&jump_num)
         .iter()
-        .map(|root| {
-            let p0 = root.value;
-            let [alpha, beta, q, r] = trim_at(&trim_u, &det_a, p0)[..] else {
-                unreachable!("four trim states")
-            };
-            let da = eval_trim(
-                &d.delta_a,
-                &[
-                    (s.alpha0, alpha),
-                    (s.beta0, beta),
-                    (s.p0, p0),
-                    (s.q0, q),
-                    (s.r0, r),
-                ],
-            );
-            JumpPoint {
-                p0,
-                delta_a_rad: da,
-                delta_a_deg: da.to_degrees(),
-                alpha,
-                beta,
-                q,
-                r,
-            }
-        })
+        .map(|root| point(root.value, &jump_at))
+        .filter(|j| j.delta_a_rad.is_finite())
         .collect();
+
+    let bound = aircraft
+        .limits
+        .aileron_deg
+        .map_or(DEFAULT_AILERON_RANGE, |l| {
+            l.to_radians().max(DEFAULT_AILERON_RANGE)
+        });
+    let roots: Vec<(f64, f64)> = jump.iter().map(|j| (j.p0, j.delta_a_rad)).collect();
+    let (critical, critical_note) = match primary::follow(&g, &det_a, &roots, bound) {
+        Outcome::Jump(i) => (Some(jump[i].clone()), None),
+        Outcome::Divergence(p) => (
+            None,
+            Some(format!(
+                "the primary branch diverges (det A = 0, Eq. 5) near P0 = {p:.4} rad/s before any jump"
+            )),
+        ),
+        Outcome::Unbounded => (
+            None,
+            Some(format!(
+                "the primary branch reaches |delta_a| = {:.1} deg without a jump",
+                bound.to_degrees()
+            )),
+        ),
+        Outcome::Lost(why) => (None, Some(format!("the primary branch is not defined: {why}"))),
+    };
 
     let zs_det = u(&d.zs_det);
     let zs_num = strip(&cancel(&u(&d.zs_jump), &u(&d.zs_d_det)).0, &zs_det);
     let zs_trim_u: Vec<UPoly> = d.zs_trim.iter().map(u).collect();
     let departure = positive_roots(&zs_num)
         .iter()
-        .map(|root| {
+        .filter_map(|root| {
             let p0 = root.value;
-            let [alpha, q, r] = trim_at(&zs_trim_u, &zs_det, p0)[..] else {
-                unreachable!("three trim states")
-            };
-            let da = eval_trim(
-                &d.zs_delta_a,
-                &[
-                    (s.alpha0, alpha),
-                    (s.beta0, 0.0),
-                    (s.p0, p0),
-                    (s.q0, q),
-                    (s.r0, r),
-                ],
-            );
-            DeparturePoint {
+            let dv = zs_det.eval_f64(p0);
+            let [alpha, q, r] = std::array::from_fn(|i| zs_trim_u[i].eval_f64(p0) / dv);
+            let at = [
+                (s.alpha0, alpha),
+                (s.beta0, 0.0),
+                (s.p0, p0),
+                (s.q0, q),
+                (s.r0, r),
+            ];
+            let da = eval_trim(&d.zs_delta_a, &at);
+            let dr = eval_trim(&d.zs_delta_r, &at);
+            // Without rudder authority (l_delta_a n_delta_r = l_delta_r n_delta_a) no
+            // zero-sideslip trim exists: nothing to report.
+            (da.is_finite() && dr.is_finite()).then(|| DeparturePoint {
                 p0,
                 delta_a_rad: da,
                 delta_a_deg: da.to_degrees(),
                 alpha,
                 q,
                 r,
-            }
+                delta_r_rad: dr,
+                delta_r_deg: dr.to_degrees(),
+                within_limits: marks.within(da, Some(dr)),
+                valid: marks.valid(alpha, 0.0),
+            })
         })
         .collect();
 
     Ok(Analysis {
         aircraft: aircraft.name.clone(),
         delta_e_rad,
+        critical,
+        critical_note,
         divergence_roll_rates,
         jump,
         det_k_poles,
@@ -214,34 +276,136 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
     })
 }
 
-/// The criterion polynomials of one aircraft and elevator setting, univariate in P0, each
-/// exact up to a positive or negative constant factor (which moves no root and cancels in
-/// every ratio used: the trim `trim_i / det_a`, det K `jump / d_det_a`).
+/// The aircraft's limits and validity range, applied to reported points.
+struct Marks {
+    limits: crate::aircraft::Limits,
+    validity: crate::aircraft::Validity,
+    delta_e_deg: f64,
+}
+
+impl Marks {
+    fn new(aircraft: &Aircraft, delta_e_rad: f64) -> Marks {
+        Marks {
+            limits: aircraft.limits,
+            validity: aircraft.validity,
+            delta_e_deg: delta_e_rad.to_degrees(),
+        }
+    }
+
+    /// Within the aileron, elevator and (when given) rudder limits; `None` when no limit applies.
+    fn within(&self, delta_a: f64, delta_r: Option<f64>) -> Option<bool> {
+        let checks = [
+            self.limits
+                .aileron_deg
+                .map(|l| delta_a.to_degrees().abs() <= l),
+            self.limits
+                .elevator_deg
+                .map(|l| self.delta_e_deg.abs() <= l),
+            delta_r.and_then(|dr| self.limits.rudder_deg.map(|l| dr.to_degrees().abs() <= l)),
+        ];
+        checks.iter().flatten().copied().reduce(|a, b| a && b)
+    }
+
+    fn valid(&self, alpha: f64, beta: f64) -> bool {
+        alpha.to_degrees().abs() <= self.validity.alpha_max_deg
+            && beta.to_degrees().abs() <= self.validity.beta_max_deg
+    }
+}
+
+/// The aileron of the trim at a root `p0` of the resultant of `g` and `f` in delta_a: the root
+/// of the trim condition at which `f` is smallest (relative to its size), i.e. the common root.
+fn aileron_of_root(g: &InAileron, f: &InAileron, p0: f64) -> f64 {
+    let roots = g.aileron_roots(p0);
+    let size = |da: f64| {
+        let c = f.at(p0);
+        let scale: f64 = c
+            .iter()
+            .enumerate()
+            .map(|(i, ci)| (ci * da.powi(i as i32)).abs())
+            .sum();
+        f.eval(p0, da).abs() / scale.max(f64::MIN_POSITIVE)
+    };
+    roots
+        .into_iter()
+        .min_by(|a, b| size(*a).total_cmp(&size(*b)))
+        .unwrap_or(f64::NAN)
+}
+
+/// A polynomial in P0 and delta_a (specialised: no other symbol) as [`InAileron`], scaled by a
+/// power of two (see [`in_aileron_all`]).
+pub fn in_aileron(p: &Poly) -> InAileron {
+    in_aileron_all(&[p]).remove(0)
+}
+
+/// Polynomials in P0 and delta_a as [`InAileron`]s, all scaled by the same power of two, which
+/// brings their largest coefficient near 1 so that f64 evaluation neither overflows nor
+/// underflows for any aircraft (cleared criterion polynomials carry integer scales of hundreds
+/// of digits) and ratios of them are unchanged.
+pub fn in_aileron_all(ps: &[&Poly]) -> Vec<InAileron> {
+    let s = symbols();
+    let cs: Vec<Vec<UPoly>> = ps
+        .iter()
+        .map(|p| {
+            p.coeffs(s.delta_a)
+                .iter()
+                .map(|c| univariate(c, s.p0))
+                .collect()
+        })
+        .collect();
+    let log2 = |q: &BigRational| q.numer().bits() as i64 - q.denom().bits() as i64;
+    let e = cs
+        .iter()
+        .flatten()
+        .flat_map(|c| c.coeffs().iter().filter(|q| !q.is_zero()).map(log2))
+        .max()
+        .unwrap_or(0);
+    let two = BigRational::from_integer(2.into());
+    let scale = if e >= 0 {
+        num_traits::pow(two.recip(), e as usize)
+    } else {
+        num_traits::pow(two, (-e) as usize)
+    };
+    cs.into_iter()
+        .map(|c| InAileron(c.iter().map(|u| u.scale(&scale)).collect()))
+        .collect()
+}
+
+/// The criterion polynomials of one aircraft and elevator setting, each exact up to a positive
+/// or negative constant factor (which moves no root and cancels in every ratio used: the trim
+/// `trim_i / det_a`, det K `jump_at / d_at`).
 ///
 /// Built from the parametric derivation by substituting the data into the small trim-level
-/// results (det A, the trim numerators, det J5 and d in the trim symbols) with every
-/// denominator cleared by one integer scale per group, and only then clearing the trim's
-/// denominator (step 8) on dense univariate polynomials.
+/// results (det A, the trim numerators, det J5, d and the roll equation in the trim symbols) with
+/// every denominator cleared by one integer scale per group, and only then clearing the trim's
+/// denominator (step 8, [`homogenize`]) and eliminating the aileron ([`eliminate_aileron`]).
 /// `tests/tests/derivation.rs` checks that they are proportional to the fully specialised
 /// derivation's.
 #[derive(Clone, Debug)]
 pub struct CriterionPolys {
     /// det A (Eq. 4), up to a constant.
     pub det_a: Poly,
-    /// Numerators of [alpha0, beta0, Q0, R0] over `det_a`.
+    /// Numerators of [alpha0, beta0, Q0, R0] over `det_a`, in P0 and delta_a.
     pub trim: [Poly; 4],
     /// The aileron of a trim, in trim symbols (from the parametric derivation, data substituted).
     pub delta_a: Ratio,
-    /// `det J5 det(A)^2` in P0, up to a constant.
-    pub jump: Poly,
-    /// `d det(A)^2` in P0, up to the same constant as `jump` times a constant.
-    pub d_det_a: Poly,
+    /// The trim condition `det(A)^2 p_dot` in P0 and delta_a.
+    pub trim_condition: Poly,
+    /// `det J5 det(A)^2` in P0 and delta_a, up to a constant.
+    pub jump_at: Poly,
+    /// `d det(A)^2` in P0 and delta_a, up to a constant.
+    pub d_at: Poly,
+    /// The jump polynomial in P0 (delta_a eliminated).
+    pub jump: UPoly,
+    /// The pole polynomial in P0 (delta_a eliminated).
+    pub poles: UPoly,
     /// det A1 of the zero-sideslip trim, up to a constant.
     pub zs_det: Poly,
     /// Numerators of [alpha0, Q0, R0] of the zero-sideslip trim over `zs_det`.
     pub zs_trim: [Poly; 3],
     /// The aileron of a zero-sideslip trim, in trim symbols.
     pub zs_delta_a: Ratio,
+    /// The rudder of a zero-sideslip trim, in trim symbols.
+    pub zs_delta_r: Ratio,
     /// `det J5 det(A1)^2` at the zero-sideslip trim, up to a constant.
     pub zs_jump: Poly,
     /// `d det(A1)^2` at the zero-sideslip trim, up to a constant.
@@ -276,8 +440,13 @@ impl CriterionPolys {
         let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
         let det_j5 = cleared(&[&par.det_j5])[0].clone();
         let d = cleared(&[&par.d])[0].clone();
-        let jump = clear_denominators(&det_j5, &t4, &trim, &det_a);
-        let d_det_a = clear_denominators(&d, &t4, &trim, &det_a);
+        let roll = cleared(&[&par.roll_at_trim])[0].clone();
+        let step8 = |f: &Poly| homogenize(f, &t4, &trim, &det_a, TRIM_DEGREE);
+        let trim_condition = step8(&roll);
+        let jump_at = step8(&det_j5);
+        let d_at = step8(&d);
+        let jump = univariate(&eliminate_aileron(&trim_condition, &jump_at), s.p0);
+        let poles = univariate(&eliminate_aileron(&trim_condition, &d_at), s.p0);
 
         let z = cleared(&[
             &par.zs_det,
@@ -288,68 +457,34 @@ impl CriterionPolys {
         let (zs_det, zs_trim) = (z[0].clone(), [z[1].clone(), z[2].clone(), z[3].clone()]);
         let t3 = [s.alpha0, s.q0, s.r0];
         let beta0_zero = [(s.beta0, Q::ZERO)];
-        let zs_jump = clear_denominators(&det_j5.subs_values(&beta0_zero), &t3, &zs_trim, &zs_det);
-        let zs_d_det = clear_denominators(&d.subs_values(&beta0_zero), &t3, &zs_trim, &zs_det);
+        let zs_step8 = |f: &Poly| {
+            homogenize(
+                &f.subs_values(&beta0_zero),
+                &t3,
+                &zs_trim,
+                &zs_det,
+                TRIM_DEGREE,
+            )
+        };
+        let zs_jump = zs_step8(&det_j5);
+        let zs_d_det = zs_step8(&d);
         CriterionPolys {
             det_a,
             trim,
             delta_a: ratio(&par.delta_a),
+            trim_condition,
+            jump_at,
+            d_at,
             jump,
-            d_det_a,
+            poles,
             zs_det,
             zs_trim,
             zs_delta_a: ratio(&par.zs_delta_a),
+            zs_delta_r: ratio(&par.zs_delta_r),
             zs_jump,
             zs_d_det,
         }
     }
-}
-
-/// Step 8 for a specialised derivation: `f(t = num / den) den^k` as a polynomial in P0, where
-/// `f` is a polynomial in the trim symbols `t` and P0 and k = [`TRIM_DEGREE`]. Same result as
-/// [`homogenize`], computed on dense univariate polynomials: f is grouped by its monomial in
-/// `t` and each product of numerators is formed once.
-fn clear_denominators(f: &Poly, t: &[Sym], num: &[Poly], den: &Poly) -> Poly {
-    let s = symbols();
-    let k = TRIM_DEGREE as usize;
-    assert!(
-        f.degree_in(t) as usize <= k,
-        "degree in the trim states above {k}"
-    );
-    let num: Vec<UPoly> = num.iter().map(|n| univariate(n, s.p0)).collect();
-    let den = univariate(den, s.p0);
-    let mut den_pows = vec![UPoly::new(vec![BigRational::from_integer(1.into())])];
-    for i in 0..k {
-        let next = den_pows[i].mul(&den);
-        den_pows.push(next);
-    }
-    let mut groups: Vec<(Vec<u32>, Poly)> = Vec::new();
-    for (m, c) in f.terms() {
-        let e: Vec<u32> = t.iter().map(|x| m.exp(*x)).collect();
-        let mut rest = *m;
-        for x in t {
-            rest.set(*x, 0);
-        }
-        let term = Poly::term(rest, c.clone());
-        match groups.iter_mut().find(|(g, _)| *g == e) {
-            Some((_, p)) => *p = &*p + &term,
-            None => groups.push((e, term)),
-        }
-    }
-    let mut acc = UPoly::new(vec![]);
-    for (e, c) in groups {
-        let mut prod = den_pows[k - e.iter().sum::<u32>() as usize].clone();
-        for (i, ei) in e.iter().enumerate() {
-            for _ in 0..*ei {
-                prod = prod.mul(&num[i]);
-            }
-        }
-        acc = acc.add(&univariate(&c, s.p0).mul(&prod));
-    }
-    let p0 = Poly::var(s.p0);
-    acc.coeffs().iter().rev().fold(Poly::zero(), |a, c| {
-        &(&a * &p0) + &Poly::constant(Q::from_big(c.clone()))
-    })
 }
 
 /// A polynomial in `x` alone as a dense univariate polynomial. Panics if another symbol occurs
@@ -390,14 +525,6 @@ fn strip(p: &UPoly, q: &UPoly) -> UPoly {
         }
         p = p.div_rem(&g).0;
     }
-}
-
-/// Trim states `num_i(P0) / den(P0)` at `p0`, evaluated in f64 (Horner on the correctly
-/// rounded coefficients). Jump points are never at roots of det A (those are stripped), so
-/// the quotient is well conditioned; `tests/tests/paper.rs` checks the PSS residuals.
-fn trim_at(nums: &[UPoly], den: &UPoly, p0: f64) -> Vec<f64> {
-    let dv = den.eval_f64(p0);
-    nums.iter().map(|n| n.eval_f64(p0) / dv).collect()
 }
 
 fn eval_trim(r: &Ratio, values: &[(Sym, f64)]) -> f64 {

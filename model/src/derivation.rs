@@ -32,21 +32,26 @@ pub struct Ratio {
 pub struct Derivation {
     /// The PSS model (Appendix A.2) with the fixed values substituted, `d/dt [alpha, beta, p, q, r]`.
     pub model: [Poly; 5],
-    /// The PSS model used for unconstrained rolls: as `model` with n_delta_a = 0 (and delta_r
-    /// substituted when a value was given). See [`Derivation::derive`].
+    /// The PSS model used for unconstrained rolls: as `model` with delta_r substituted when a
+    /// value was given. See [`Derivation::derive`].
     pub unconstrained_model: [Poly; 5],
     /// Eq. 2: the 4x4 matrix A of the trim system in x = [alpha, beta, q, r] at p = P0.
     pub a: Matrix,
-    /// Eq. 1-2: the constant part `b u + b1 P0` of the trim system `A x + b u + b1 P0 = 0`.
+    /// Eq. 1-2: the constant part `b u + b1 P0` of the trim system `A x + b u + b1 P0 = 0`; with
+    /// aileron yaw `u` includes delta_a (the `n_delta_a delta_a` term of the yaw equation), so the
+    /// trim is affine in delta_a for a given P0.
     pub a_rhs: Vec<Poly>,
     /// Eq. 4: det A, the common denominator of the trim states.
     pub det_a: Poly,
-    /// Eq. 3-4: numerators of [alpha0, beta0, Q0, R0] over `det_a`: `-adj(A) (b u + b1 P0)`.
+    /// Eq. 3-4: numerators of [alpha0, beta0, Q0, R0] over `det_a`: `-adj(A) (b u + b1 P0)`,
+    /// affine in delta_a (which enters through `n_delta_a` only).
     pub trim: [Poly; 4],
     /// Eq. 5: coefficients of P0^0, P0^2, P0^4 of det A (odd powers vanish identically).
     pub biquadratic: [Poly; 3],
     /// The aileron deflection that holds a trim, from the roll equation, in trim symbols.
     pub delta_a: Ratio,
+    /// The roll equation (Appendix A.2) in the trim symbols, with delta_a: `p_dot` at a trim.
+    pub roll_at_trim: Poly,
     /// The 5x5 Jacobian of the PSS model at the trim (alpha0, beta0, P0, Q0, R0).
     pub jacobian: Matrix,
     /// Eqs. 6-10: the linearized equations, right-hand sides in the perturbations.
@@ -77,8 +82,10 @@ pub struct Derivation {
     pub det_j5: Poly,
     /// Step 7: `det J5 - d det K`; identically zero.
     pub identity_residual: Poly,
-    /// Step 8, computed on first use (see [`Derivation::jump`]).
+    /// Step 8, computed on first use (see [`Derivation::jump_at`]).
     step8: OnceLock<Step8>,
+    /// The aileron elimination after step 8, computed on first use (see [`Derivation::jump`]).
+    elimination: OnceLock<Elimination>,
     /// Eqs. 32-34: the zero-sideslip trim system in [alpha, q, r] (beta = 0, delta_r freed).
     pub zs_a: Matrix,
     /// Eqs. 32-33: the constant part of the zero-sideslip trim system `zs_a x + zs_rhs = 0`.
@@ -87,19 +94,29 @@ pub struct Derivation {
     pub zs_det: Poly,
     /// Eq. 35: numerators of [alpha0, Q0, R0] of the zero-sideslip trim.
     pub zs_trim: [Poly; 3],
-    /// Eq. 35: the rudder deflection holding beta = 0, in trim symbols and delta_a.
+    /// Eq. 35: the rudder deflection holding beta = 0, in trim symbols: with the roll equation it
+    /// solves the 2x2 system in (delta_a, delta_r) of the roll and yaw equations, whose
+    /// determinant `l_delta_a n_delta_r - l_delta_r n_delta_a` is the denominator.
     pub zs_delta_r: Ratio,
-    /// The aileron deflection of the zero-sideslip trim, in trim symbols.
+    /// The aileron deflection of the zero-sideslip trim, in trim symbols (same denominator).
     pub zs_delta_a: Ratio,
 }
 
 /// Step 8 results, cleared of the trim's denominators.
 #[derive(Clone, Debug)]
 struct Step8 {
-    jump: Poly,
-    d_det_a: Poly,
+    trim_condition: Poly,
+    jump_at: Poly,
+    d_at: Poly,
     zs_jump: Poly,
     zs_d_det: Poly,
+}
+
+/// The aileron eliminated along the equilibrium curve: the jump and pole polynomials in P0.
+#[derive(Clone, Debug)]
+struct Elimination {
+    jump: Poly,
+    poles: Poly,
 }
 
 impl Derivation {
@@ -120,15 +137,15 @@ impl Derivation {
             .cloned()
             .collect();
         let model = pss().map(|f| f.subs_values(&base_values));
-        // With n_delta_a != 0 the aileron enters the yaw equation and, for given P0, the trim
-        // is no longer linear in (alpha, beta, q, r): the aileron then solves a quadratic. The
-        // paper's aircraft have n_delta_a = 0 and so does the P0-parametrised criterion.
-        let mut unc_values: Vec<(Sym, Q)> = values
+        // The unconstrained roll holds the rudder at the given value. With n_delta_a != 0 the
+        // aileron also enters the yaw equation: for a given P0 the four trim equations stay linear
+        // in (alpha, beta, q, r), with a constant part affine in delta_a, and the roll equation
+        // becomes quadratic in delta_a (the trim condition below).
+        let unc_values: Vec<(Sym, Q)> = values
             .iter()
             .filter(|(v, _)| *v == s.delta_r)
             .cloned()
             .collect();
-        unc_values.push((s.param(Param::NDeltaA), Q::ZERO));
         let unc = model.clone().map(|f| f.subs_values(&unc_values));
 
         let at_trim = |f: &Poly| -> Poly {
@@ -160,7 +177,8 @@ impl Derivation {
             );
             [at(0), at(2), at(4)]
         };
-        let delta_a = solve_for(&at_trim(&unc[2]), s.delta_a);
+        let roll_at_trim = at_trim(&unc[2]);
+        let delta_a = solve_for(&roll_at_trim, s.delta_a);
 
         // Step 2, Eqs 6-10: linearize by symbolic differentiation at the trim.
         let jacobian = Matrix::from_rows(
@@ -234,8 +252,20 @@ impl Derivation {
             zs_trim_v[2].clone(),
         ];
         let zs_at_trim = |f: &Poly| at_trim(f).subs(s.beta0, &Poly::zero());
-        let zs_delta_r = solve_for(&zs_at_trim(&model[4]), s.delta_r);
-        let zs_delta_a = solve_for(&zs_at_trim(&model[2]), s.delta_a);
+        // The roll and yaw equations hold the trim with the two lateral controls together.
+        let (zs_controls, zs_controls_det) = {
+            let eqs = [zs_at_trim(&model[2]), zs_at_trim(&model[4])];
+            let (m, c) = linear_system(&eqs, &[s.delta_a, s.delta_r]);
+            solve(&m, &c)
+        };
+        let zs_delta_a = Ratio {
+            num: zs_controls[0].clone(),
+            den: zs_controls_det.clone(),
+        };
+        let zs_delta_r = Ratio {
+            num: zs_controls[1].clone(),
+            den: zs_controls_det,
+        };
 
         Derivation {
             model,
@@ -251,6 +281,7 @@ impl Derivation {
             ],
             biquadratic,
             delta_a,
+            roll_at_trim,
             jacobian,
             linearized,
             q_elim,
@@ -267,6 +298,7 @@ impl Derivation {
             det_j5,
             identity_residual,
             step8: OnceLock::new(),
+            elimination: OnceLock::new(),
             zs_a,
             zs_rhs,
             zs_det,
@@ -280,14 +312,25 @@ impl Derivation {
 impl Derivation {
     fn step8(&self) -> &Step8 {
         self.step8.get_or_init(|| {
-            // Step 8: substitute the trim and clear denominators.
+            // Step 8: substitute the trim and clear denominators; then eliminate the aileron
+            // along the equilibrium curve (trim condition = 0).
             let s = symbols();
             let trims4 = [s.alpha0, s.beta0, s.q0, s.r0];
             let trims3 = [s.alpha0, s.q0, s.r0];
             let zero = Poly::zero();
+            let jump_at = homogenize(&self.det_j5, &trims4, &self.trim, &self.det_a, TRIM_DEGREE);
+            let d_at = homogenize(&self.d, &trims4, &self.trim, &self.det_a, TRIM_DEGREE);
+            let trim_condition = homogenize(
+                &self.roll_at_trim,
+                &trims4,
+                &self.trim,
+                &self.det_a,
+                TRIM_DEGREE,
+            );
             Step8 {
-                jump: homogenize(&self.det_j5, &trims4, &self.trim, &self.det_a, TRIM_DEGREE),
-                d_det_a: homogenize(&self.d, &trims4, &self.trim, &self.det_a, TRIM_DEGREE),
+                trim_condition,
+                jump_at,
+                d_at,
                 zs_jump: homogenize(
                     &self.det_j5.subs(s.beta0, &zero),
                     &trims3,
@@ -306,16 +349,48 @@ impl Derivation {
         })
     }
 
-    /// Step 8: the jump polynomial `det J5 * det(A)^2` in P0 (trims substituted). Computed on
-    /// first use: `model analyze` works from the trim-level results and never needs it.
-    pub fn jump(&self) -> &Poly {
-        &self.step8().jump
+    /// The trim condition: the roll equation at the trim of Eqs 3-4, cleared of det A,
+    /// `G(P0, delta_a) = det(A)^2 p_dot(x0(P0, delta_a), P0, delta_a)` (step 8). Quadratic in
+    /// delta_a through `-E Q0 R0` when `n_delta_a != 0` (so a roll rate has 0, 1 or 2 trims),
+    /// linear with slope `l_delta_a det(A)^2` when `n_delta_a = 0`. Its zero set is the
+    /// equilibrium curve.
+    pub fn trim_condition(&self) -> &Poly {
+        &self.step8().trim_condition
     }
 
-    /// `d * det(A)^2` in P0 (d is quadratic in the trim states through `E Q0 alpha0`), so that
-    /// `det K = jump / d_det_a`; its roots not shared with det A are the poles of det K.
-    pub fn d_det_a(&self) -> &Poly {
-        &self.step8().d_det_a
+    /// `det J5 * det(A)^2` at the trim of Eqs 3-4, a polynomial in P0 and delta_a (step 8).
+    /// With `n_delta_a = 0` it does not contain delta_a and is the paper's jump polynomial.
+    pub fn jump_at(&self) -> &Poly {
+        &self.step8().jump_at
+    }
+
+    /// `d * det(A)^2` at the trim of Eqs 3-4, in P0 and delta_a: `det K = jump_at / d_at`.
+    pub fn d_at(&self) -> &Poly {
+        &self.step8().d_at
+    }
+
+    /// The jump polynomial in P0: `det J5 = 0` on the equilibrium curve, the aileron eliminated
+    /// by the resultant of [`Derivation::jump_at`] and the trim condition in delta_a (see
+    /// [`eliminate_aileron`]). With `n_delta_a = 0` it is `jump_at` itself. Computed on first
+    /// use.
+    pub fn jump(&self) -> &Poly {
+        &self.elimination().jump
+    }
+
+    fn elimination(&self) -> &Elimination {
+        self.elimination.get_or_init(|| {
+            let g = self.trim_condition();
+            Elimination {
+                jump: eliminate_aileron(g, self.jump_at()),
+                poles: eliminate_aileron(g, self.d_at()),
+            }
+        })
+    }
+
+    /// The pole polynomial in P0: `d = 0` on the equilibrium curve (delta_a eliminated as for
+    /// [`Derivation::jump`]); its roots not shared with det A are the poles of det K.
+    pub fn poles(&self) -> &Poly {
+        &self.elimination().poles
     }
 
     /// det J5 at the zero-sideslip trim times `zs_det^2`, in P0.
@@ -326,6 +401,30 @@ impl Derivation {
     /// `d * zs_det^2` at the zero-sideslip trim, in P0: `det K = zs_jump / zs_d_det` there.
     pub fn zs_d_det(&self) -> &Poly {
         &self.step8().zs_d_det
+    }
+}
+
+/// Eliminates the aileron between the trim condition `g` and a trim quantity `f` (both
+/// polynomials in P0 and delta_a, cleared of det A): the resultant in delta_a, which vanishes at
+/// the P0 where some trim on the equilibrium curve has `f = 0`.
+///
+/// With a symbolic `n_delta_a` both are quadratic in delta_a, but their delta_a^2 coefficients
+/// carry `n_delta_a^2` (and f's delta_a coefficient `n_delta_a`), so the Sylvester resultant
+/// carries `n_delta_a^2`, which is divided out: the result is continuous in `n_delta_a`, and at
+/// `n_delta_a = 0` it equals `g1^2 e f0`, where `g1 = l_delta_a det(A)^2` marks the trim poles,
+/// `f0` is the `n_delta_a = 0` polynomial and `e = lim f2 / n_delta_a^2` the trim of the second
+/// branch, which escapes to infinite aileron as `n_delta_a -> 0` (a trim at infinity, never
+/// reported: its aileron is not finite). With numeric data the Sylvester matrix is built on the
+/// actual degrees, so an aircraft with `n_delta_a = 0` gets `f` itself (no spurious factor).
+pub fn eliminate_aileron(g: &Poly, f: &Poly) -> Poly {
+    let s = symbols();
+    let res = g.resultant(f, s.delta_a);
+    let nda = s.param(Param::NDeltaA);
+    if g.degree(s.delta_a) == 2 && g.coeff(s.delta_a, 2).contains(nda) {
+        res.div_var_pow(nda, 2)
+            .expect("the resultant carries n_delta_a^2 (the delta_a^2 terms carry it)")
+    } else {
+        res
     }
 }
 

@@ -10,6 +10,10 @@
 //! equation with `+ n_{\delta a}\delta a`; Euler's equations in principal axes give the signs
 //! used here: `I_x \dot p = L + (I_y - I_z) q r` so the roll coupling term is `-E q r` with
 //! `E = (I_z - I_y)/I_x`, `+C p r` in pitch and `-D p q` in yaw.
+//!
+//! Beyond Appendix A.2, the roll equation carries the roll-due-to-rudder derivative
+//! `l_{\delta r} \delta r` (zero for the paper's aircraft): real data have it, and the rotation of
+//! body-axis data into principal axes produces it even when the body-axis `Cl_delta_r` is zero.
 
 use crate::aircraft::Param;
 use crate::algebra::{Poly, Sym};
@@ -18,8 +22,8 @@ use std::sync::OnceLock;
 /// Every symbol of the model, created once in a fixed order (which fixes every output order).
 #[derive(Debug)]
 pub struct Symbols {
-    /// The 17 parameters in [`Param::ALL`] order.
-    pub params: [Sym; 17],
+    /// The 18 parameters in [`Param::ALL`] order.
+    pub params: [Sym; 18],
     /// Aileron deflection, rad.
     pub delta_a: Sym,
     /// Elevator deflection, rad.
@@ -151,13 +155,14 @@ pub fn pss() -> [Poly; 5] {
         &(&q - &(&p * &beta)) + &(&k(ZAlpha) * &alpha),
         // beta_dot = p alpha - r + y_beta beta
         &(&(&p * &alpha) - &r) + &(&k(YBeta) * &beta),
-        // p_dot = l_p p + l_beta beta + l_r r - E q r + l_da da
+        // p_dot = l_p p + l_beta beta + l_r r - E q r + l_da da + l_dr dr
         sum(&[
             &k(Lp) * &p,
             &k(LBeta) * &beta,
             &k(Lr) * &r,
             -(&(&k(E) * &q) * &r),
             &k(LDeltaA) * &da,
+            &k(LDeltaR) * &dr,
         ]),
         // q_dot = m_q q + m_alpha alpha + C p r + m_de de
         sum(&[

@@ -378,6 +378,18 @@ fn load_aircraft(arg: &str) -> Result<Aircraft, String> {
     aircraft::load(Path::new(arg)).map_err(|e| e.to_string())
 }
 
+/// The marks of a reported point: beyond the control limits, outside the validity range.
+fn marks(within_limits: Option<bool>, valid: bool) -> String {
+    let mut m = String::new();
+    if within_limits == Some(false) {
+        m += "  [beyond limits]";
+    }
+    if !valid {
+        m += "  [outside validity range]";
+    }
+    m
+}
+
 fn table(a: &Analysis) -> String {
     let mut s = String::new();
     let list = |v: &[f64]| {
@@ -395,13 +407,30 @@ fn table(a: &Analysis) -> String {
         a.aircraft,
         a.delta_e_rad.to_degrees()
     );
+    match (&a.critical, &a.critical_note) {
+        (Some(c), _) => {
+            s += &format!(
+                "Critical jump (first fold of the primary branch): P0 = {:.6} rad/s at delta_a = {:.4} deg (and the mirror point -P0 at {:+.4} deg){}\n\n",
+                c.p0,
+                c.delta_a_deg,
+                -c.delta_a_deg,
+                match c.within_limits {
+                    Some(true) => ", within the aileron limit",
+                    Some(false) => ", OUTSIDE the aileron limit",
+                    None => "",
+                }
+            );
+        }
+        (None, Some(note)) => s += &format!("No critical jump: {note}.\n\n"),
+        (None, None) => {}
+    }
     s += &format!(
         "Divergence roll rates, Eq. 5 (rad/s):   {}\n",
         list(&a.divergence_roll_rates)
     );
     s += &format!(
         "Poles of det K, d = 0 (rad/s):          {}\n\n",
-        list(&a.det_k_poles)
+        list(&a.det_k_poles.iter().map(|j| j.p0).collect::<Vec<_>>())
     );
     s += "Jump points, det K = 0 (saddle-nodes of the PSS equilibria):\n";
     if a.jump.is_empty() {
@@ -410,13 +439,14 @@ fn table(a: &Analysis) -> String {
         s += "     P0 rad/s   delta_a deg   alpha deg    beta deg     q rad/s     r rad/s\n";
         for j in &a.jump {
             s += &format!(
-                "  {:>11.6} {:>13.4} {:>11.4} {:>11.4} {:>11.5} {:>11.5}\n",
+                "  {:>11.6} {:>13.4} {:>11.4} {:>11.4} {:>11.5} {:>11.5}{}\n",
                 j.p0,
                 j.delta_a_deg,
                 j.alpha.to_degrees(),
                 j.beta.to_degrees(),
                 j.q,
-                j.r
+                j.r,
+                marks(j.within_limits, j.valid)
             );
         }
     }
@@ -424,15 +454,17 @@ fn table(a: &Analysis) -> String {
     if a.zero_sideslip.departure.is_empty() {
         s += "  none\n";
     } else {
-        s += "     P0 rad/s   delta_a deg   alpha deg     q rad/s     r rad/s\n";
+        s += "     P0 rad/s   delta_a deg   delta_r deg   alpha deg     q rad/s     r rad/s\n";
         for j in &a.zero_sideslip.departure {
             s += &format!(
-                "  {:>11.6} {:>13.4} {:>11.4} {:>11.5} {:>11.5}\n",
+                "  {:>11.6} {:>13.4} {:>13.4} {:>11.4} {:>11.5} {:>11.5}{}\n",
                 j.p0,
                 j.delta_a_deg,
+                j.delta_r_deg,
                 j.alpha.to_degrees(),
                 j.q,
-                j.r
+                j.r,
+                marks(j.within_limits, j.valid)
             );
         }
     }

@@ -331,7 +331,8 @@ pub fn report(
         "Figs 5, 6, 10 (simulation)",
         Simulator::new(aircraft, de).map_err(ReportError::from),
     );
-    let fold = analysis.jump.first().map(|j| j.delta_a_rad);
+    // The first jump a pilot meets: the critical point of the primary branch.
+    let fold = analysis.critical.as_ref().map(|c| c.delta_a_rad);
     let mut simulated_jumps = Vec::new();
     if let Some(sim) = &sim {
         let run =
@@ -488,7 +489,7 @@ fn markdown(s: &Summary, de: f64) -> String {
     );
     m += &format!(
         "- Poles of det K (d = 0): {} rad/s\n\n",
-        list(&a.det_k_poles, 6)
+        list(&a.det_k_poles.iter().map(|j| j.p0).collect::<Vec<_>>(), 6)
     );
     m += "### Jump points (det K = 0, saddle-nodes)\n\n| P0 rad/s | delta_a deg | alpha deg | beta deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|---:|\n";
     for j in &a.jump {

@@ -7,8 +7,9 @@
 use nalgebra::{Matrix4, Matrix5, Vector4};
 
 /// Parameter values in the order C, D, E, z_alpha, y_beta, l_p, l_r, l_beta, l_delta_a, m_q,
-/// m_alpha, m_delta_e, n_p, n_r, n_beta, n_delta_a, n_delta_r (the order of `model::aircraft::Param::ALL`).
-pub type Params = [f64; 17];
+/// m_alpha, m_delta_e, n_p, n_r, n_beta, n_delta_a, n_delta_r, l_delta_r (the order of
+/// `model::aircraft::Param::ALL`).
+pub type Params = [f64; 18];
 
 /// Named access to [`Params`].
 #[allow(missing_docs)]
@@ -30,6 +31,7 @@ pub mod ix {
     pub const NB: usize = 14;
     pub const NDA: usize = 15;
     pub const NDR: usize = 16;
+    pub const LDR: usize = 17;
 }
 
 /// Appendix A.2 by hand: d/dt [alpha, beta, p, q, r] for controls u = [delta_a, delta_e, delta_r].
@@ -40,10 +42,34 @@ pub fn pss_rhs(k: &Params, x: &[f64; 5], u: &[f64; 3]) -> [f64; 5] {
     [
         q - p * b + k[ZA] * a,
         p * a - r + k[YB] * b,
-        k[LP] * p + k[LB] * b + k[LR] * r - k[E] * q * r + k[LDA] * da,
+        k[LP] * p + k[LB] * b + k[LR] * r - k[E] * q * r + k[LDA] * da + k[LDR] * dr,
         k[MQ] * q + k[MA] * a + k[C] * p * r + k[MDE] * de,
         k[NR] * r + k[NB] * b + k[NP] * p - k[D] * p * q + k[NDR] * dr + k[NDA] * da,
     ]
+}
+
+/// The same parameters as the generated crate's [`roll_criterion::Derivatives`].
+pub fn generated_derivatives(k: &Params) -> roll_criterion::Derivatives {
+    roll_criterion::Derivatives {
+        c: k[ix::C],
+        d: k[ix::D],
+        e: k[ix::E],
+        z_alpha: k[ix::ZA],
+        y_beta: k[ix::YB],
+        l_p: k[ix::LP],
+        l_r: k[ix::LR],
+        l_beta: k[ix::LB],
+        l_delta_a: k[ix::LDA],
+        m_q: k[ix::MQ],
+        m_alpha: k[ix::MA],
+        m_delta_e: k[ix::MDE],
+        n_p: k[ix::NP],
+        n_r: k[ix::NR],
+        n_beta: k[ix::NB],
+        n_delta_a: k[ix::NDA],
+        n_delta_r: k[ix::NDR],
+        l_delta_r: k[ix::LDR],
+    }
 }
 
 /// Central-difference Jacobian of [`pss_rhs`] with respect to the states.
@@ -62,13 +88,12 @@ pub fn fd_jacobian(k: &Params, x: &[f64; 5], u: &[f64; 3]) -> Matrix5<f64> {
     j
 }
 
-/// The pseudo-steady trim at roll rate `p0` (n_delta_a = 0): [alpha, beta, q, r] from the
-/// four non-roll equations by LU, then delta_a from the roll equation. `None` if singular.
-pub fn trim(k: &Params, p0: f64, de: f64, dr: f64) -> Option<([f64; 5], f64)> {
-    use ix::*;
-    // Linear in y = [alpha, beta, q, r] at p = p0: columns from unit responses of the model.
+/// [alpha, beta, q, r] from the four non-roll equations at roll rate `p0` and the given
+/// controls, by LU (they are linear in these states at p = p0; columns from unit responses of
+/// the model). `None` if singular.
+fn non_roll_trim(k: &Params, p0: f64, u: &[f64; 3]) -> Option<Vector4<f64>> {
     let f = |y: [f64; 4]| {
-        let v = pss_rhs(k, &[y[0], y[1], p0, y[2], y[3]], &[0.0, de, dr]);
+        let v = pss_rhs(k, &[y[0], y[1], p0, y[2], y[3]], u);
         Vector4::new(v[0], v[1], v[3], v[4])
     };
     let c0 = f([0.0; 4]);
@@ -78,16 +103,55 @@ pub fn trim(k: &Params, p0: f64, de: f64, dr: f64) -> Option<([f64; 5], f64)> {
         e[i] = 1.0;
         a.set_column(i, &(f(e) - c0));
     }
-    let y = a.lu().solve(&(-c0))?;
+    a.lu().solve(&(-c0))
+}
+
+/// The pseudo-steady trim at roll rate `p0` (n_delta_a = 0): [alpha, beta, q, r] from the
+/// four non-roll equations by LU, then delta_a from the roll equation. `None` if singular.
+pub fn trim(k: &Params, p0: f64, de: f64, dr: f64) -> Option<([f64; 5], f64)> {
+    let y = non_roll_trim(k, p0, &[0.0, de, dr])?;
     let x = [y[0], y[1], p0, y[2], y[3]];
     let roll = pss_rhs(k, &x, &[0.0, de, dr])[2];
-    Some((x, -roll / k[LDA]))
+    Some((x, -roll / k[ix::LDA]))
+}
+
+/// Every pseudo-steady trim at roll rate `p0` (aileron yaw allowed): the four non-roll
+/// equations are linear in [alpha, beta, q, r] for a given aileron, so the trim is
+/// `y(delta_a) = y0 + delta_a y1` (two LU solves); the roll equation along it is a quadratic in
+/// delta_a, whose coefficients follow from its values at delta_a = -1, 0, 1. Returns each real
+/// root with its state, ascending in delta_a.
+pub fn trim_branches(k: &Params, p0: f64, de: f64, dr: f64) -> Vec<([f64; 5], f64)> {
+    let solve = |da: f64| non_roll_trim(k, p0, &[da, de, dr]);
+    let (Some(y0), Some(y1)) = (solve(0.0), solve(1.0)) else {
+        return vec![];
+    };
+    let dy = y1 - y0;
+    let state = |da: f64| {
+        let y = y0 + dy * da;
+        [y[0], y[1], p0, y[2], y[3]]
+    };
+    let roll = |da: f64| pss_rhs(k, &state(da), &[da, de, dr])[2];
+    let (fm, f0, fp) = (roll(-1.0), roll(0.0), roll(1.0));
+    let (a, b, c) = (0.5 * (fp + fm) - f0, 0.5 * (fp - fm), f0);
+    let roots = if a.abs() <= 1e-13 * (b.abs() + c.abs()) {
+        vec![-c / b]
+    } else {
+        let disc = b * b - 4.0 * a * c;
+        if disc < 0.0 {
+            vec![]
+        } else {
+            let q = -0.5 * (b + b.signum() * disc.sqrt());
+            vec![q / a, c / q]
+        }
+    };
+    let mut out: Vec<([f64; 5], f64)> = roots.into_iter().map(|da| (state(da), da)).collect();
+    out.sort_by(|x, y| x.1.total_cmp(&y.1));
+    out
 }
 
 /// Zero-sideslip trim at `p0`: [alpha, 0, p0, q, r], delta_a and delta_r, by LU on the
 /// alpha, beta, q equations with beta = 0, then the roll and yaw equations.
 pub fn zero_sideslip_trim(k: &Params, p0: f64, de: f64) -> Option<([f64; 5], f64, f64)> {
-    use ix::*;
     let f = |y: [f64; 3]| {
         let v = pss_rhs(k, &[y[0], 0.0, p0, y[1], y[2]], &[0.0, de, 0.0]);
         nalgebra::Vector3::new(v[0], v[1], v[3])
@@ -101,8 +165,18 @@ pub fn zero_sideslip_trim(k: &Params, p0: f64, de: f64) -> Option<([f64; 5], f64
     }
     let y = a.lu().solve(&(-c0))?;
     let x = [y[0], 0.0, p0, y[1], y[2]];
-    let da = -pss_rhs(k, &x, &[0.0, de, 0.0])[2] / k[LDA];
-    let dr = -pss_rhs(k, &x, &[da, de, 0.0])[4] / k[NDR];
+    // The roll and yaw equations are linear in (delta_a, delta_r): unit responses, then Cramer.
+    let f = |da: f64, dr: f64| {
+        let v = pss_rhs(k, &x, &[da, de, dr]);
+        (v[2], v[4])
+    };
+    let (r0, y0) = f(0.0, 0.0);
+    let (ra, ya) = f(1.0, 0.0);
+    let (rr, yr) = f(0.0, 1.0);
+    let (m11, m12, m21, m22) = (ra - r0, rr - r0, ya - y0, yr - y0);
+    let det = m11 * m22 - m12 * m21;
+    let da = (-r0 * m22 + m12 * y0) / det;
+    let dr = (-m11 * y0 + m21 * r0) / det;
     Some((x, da, dr))
 }
 
@@ -130,7 +204,7 @@ pub fn real_eigenvalues(j: &Matrix5<f64>) -> Vec<f64> {
 /// it so that nothing is tuned to the paper's aircraft A and B.
 pub fn random_params(rng: &mut Lcg) -> Params {
     use ix::*;
-    let mut k = [0.0; 17];
+    let mut k = [0.0; 18];
     let (ix_, iy, iz) = (1.0, rng.range(2.0, 8.0), rng.range(2.0, 9.0));
     k[C] = (iz - ix_) / iy;
     k[D] = (iy - ix_) / iz;

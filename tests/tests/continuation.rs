@@ -545,25 +545,49 @@ fn symmetric_branch_in_delta_e_is_found_once_with_its_pitchfork() {
         .all(|f| (f.param - bp.param).abs() > 1e-4 || f.p.abs() > 1e-3));
 }
 
-#[test]
-fn aileron_yaw_aircraft_continues_although_the_criterion_refuses() {
-    // n_delta_a != 0: analyze refuses (no closed-form criterion), the continuation does not.
+/// An aircraft A with aileron yaw `n_delta_a` (1/s^2).
+fn a_with_aileron_yaw(n_delta_a: f64) -> Aircraft {
     let mut values: Vec<_> = Param::ALL
         .iter()
         .map(|p| Aircraft::a().exact(*p).clone())
         .collect();
-    values[Param::NDeltaA.index()] = f64_to_rational(-3.0).unwrap();
-    let ac = Aircraft::new("A with aileron yaw", values, 150.0);
-    assert!(analyze(&ac, de()).is_err());
+    values[Param::NDeltaA.index()] = f64_to_rational(n_delta_a).unwrap();
+    Aircraft::new(format!("A with n_delta_a = {n_delta_a}"), values, 150.0)
+}
+
+#[test]
+fn folds_of_aileron_yaw_aircraft_are_the_closed_form_jump_roots_to_1e_8() {
+    // Issue 8: with n_delta_a != 0 the closed form eliminates delta_a by a resultant; the
+    // continuation knows nothing of it and must find the same folds, state and aileron.
     let s = Settings::default();
-    let d = diagram(&ac, &s);
-    let k = ac.values_f64();
-    assert!(!folds(&d).is_empty());
-    for f in folds(&d) {
-        let eig = fd_jacobian(&k, &state(f), &[f.param, de(), 0.0]).complex_eigenvalues();
-        assert!(eig.iter().any(|z| z.norm() < 1e-5), "{f:?}: {eig:?}");
+    let mut checked = 0;
+    for nda in [8.0, -8.0, -3.0] {
+        let ac = a_with_aileron_yaw(nda);
+        let a = analyze(&ac, de()).unwrap();
+        let d = diagram(&ac, &s);
+        let k = ac.values_f64();
+        assert!(!folds(&d).is_empty(), "{}", ac.name);
+        for f in folds(&d) {
+            let eig = fd_jacobian(&k, &state(f), &[f.param, de(), 0.0]).complex_eigenvalues();
+            assert!(eig.iter().any(|z| z.norm() < 1e-5), "{f:?}: {eig:?}");
+            let sign = f.p.signum();
+            let j = a
+                .jump
+                .iter()
+                .find(|j| (f.p.abs() - j.p0).abs() < 1e-8)
+                .unwrap_or_else(|| panic!("{}: fold {f:?} is no jump root {:?}", ac.name, a.jump));
+            assert!(
+                (sign * j.delta_a_rad - f.param).abs() < 1e-8,
+                "{f:?} vs {j:?}"
+            );
+            for (x, y) in [(sign * j.beta, f.beta), (j.alpha, f.alpha), (j.q, f.q)] {
+                assert!((x - y).abs() < 1e-8 * (1.0 + x.abs()), "{f:?} vs {j:?}");
+            }
+            checked += 1;
+        }
+        assert_points_are_equilibria_with_right_stability(&k, &d, &s);
     }
-    assert_points_are_equilibria_with_right_stability(&k, &d, &s);
+    assert!(checked >= 8, "{checked} folds compared");
 }
 
 #[test]

@@ -12,31 +12,13 @@
 
 use model::aircraft::Aircraft;
 use model::analysis::analyze;
-use paper_tests::{fd_jacobian, ix, random_params, real_eigenvalues, trim, Lcg, Params};
+use paper_tests::{fd_jacobian, random_params, real_eigenvalues, trim, Lcg, Params};
 use roll_criterion as gen;
 use std::path::Path;
 use syn::visit::Visit;
 
 fn derivatives(k: &Params) -> gen::Derivatives {
-    gen::Derivatives {
-        c: k[ix::C],
-        d: k[ix::D],
-        e: k[ix::E],
-        z_alpha: k[ix::ZA],
-        y_beta: k[ix::YB],
-        l_p: k[ix::LP],
-        l_r: k[ix::LR],
-        l_beta: k[ix::LB],
-        l_delta_a: k[ix::LDA],
-        m_q: k[ix::MQ],
-        m_alpha: k[ix::MA],
-        m_delta_e: k[ix::MDE],
-        n_p: k[ix::NP],
-        n_r: k[ix::NR],
-        n_beta: k[ix::NB],
-        n_delta_a: k[ix::NDA],
-        n_delta_r: k[ix::NDR],
-    }
+    paper_tests::generated_derivatives(k)
 }
 
 #[test]

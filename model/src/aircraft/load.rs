@@ -617,13 +617,13 @@ impl Cx<'_> {
         }
     }
 
-    /// The 14 derivatives in [`Param::ALL`] order.
+    /// The 15 derivatives in [`Param::ALL`] order.
     fn derivatives(&self, table: &Table<'_>) -> Result<Vec<BigRational>, AircraftError> {
         let mut read = Vec::new();
         for (key, value) in table.entries {
             read.push((key, value, self.number(table.name, key, value)?));
         }
-        let mut out = Vec::with_capacity(14);
+        let mut out = Vec::with_capacity(15);
         for p in Param::ALL.iter().skip(3) {
             let found = read.iter().find(|(k, _, _)| k.name == p.key());
             match found {
@@ -640,6 +640,7 @@ impl Cx<'_> {
                 None if *p == OPTIONAL_DERIVATIVE => {
                     out.push(BigRational::from_integer(BigInt::from(DEFAULT_N_DELTA_R)));
                 }
+                None if *p == Param::LDeltaR => out.push(BigRational::zero()),
                 None => {
                     return Err(AircraftError::MissingKey {
                         at: self.at(table.span.as_ref()),

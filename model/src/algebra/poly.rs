@@ -250,6 +250,51 @@ impl Poly {
         (0..=self.degree(s)).map(|k| self.coeff(s, k)).collect()
     }
 
+    /// `self / s^k`, when every term carries `s` to at least the power `k` (exact division by a
+    /// power of a symbol); `None` otherwise.
+    pub fn div_var_pow(&self, s: Sym, k: u32) -> Option<Poly> {
+        let mut terms = Vec::with_capacity(self.terms.len());
+        for (m, c) in &self.terms {
+            let e = m.exp(s);
+            if e < k {
+                return None;
+            }
+            let mut m2 = *m;
+            m2.set(s, e - k);
+            terms.push((m2, c.clone()));
+        }
+        Some(Poly::from_terms(terms))
+    }
+
+    /// The resultant of `self` and `other` with respect to `x`, as the determinant of their
+    /// Sylvester matrix built on their actual degrees in `x` (so a vanishing leading coefficient
+    /// lowers the degree instead of zeroing the resultant). It vanishes exactly where the two
+    /// polynomials, read as polynomials in `x` with the other symbols fixed, share a root.
+    /// Both must contain `x` or be non-zero; `Res(f, c) = c^deg f` for a constant `c` in `x`.
+    pub fn resultant(&self, other: &Poly, x: Sym) -> Poly {
+        let (f, g) = (self.coeffs(x), other.coeffs(x));
+        let (m, n) = (f.len() - 1, g.len() - 1);
+        if self.is_zero() || other.is_zero() {
+            return Poly::zero();
+        }
+        if m == 0 && n == 0 {
+            return Poly::int(1);
+        }
+        let size = m + n;
+        let mut rows = Vec::with_capacity(size);
+        // n rows of f's coefficients (highest first), then m rows of g's, each shifted by one.
+        for (coeffs, shifts) in [(&f, n), (&g, m)] {
+            for shift in 0..shifts {
+                let mut row = vec![Poly::zero(); size];
+                for (i, c) in coeffs.iter().rev().enumerate() {
+                    row[shift + i] = c.clone();
+                }
+                rows.push(row);
+            }
+        }
+        super::Matrix::from_rows(rows).det()
+    }
+
     /// Substitutes the polynomial `value` for the symbol `s`.
     pub fn subs(&self, s: Sym, value: &Poly) -> Poly {
         if !self.contains(s) {

@@ -212,6 +212,10 @@ impl Dag {
             if y.is_one() {
                 return a;
             }
+            // Exact quotient of constants (never by zero: that stays an IEEE division).
+            if let Some(x) = self.as_const(a).cloned().filter(|_| !y.is_zero()) {
+                return self.constant(x.div(&y));
+            }
         }
         if let Node::Neg(inner) = *self.node(b) {
             let d = self.div(a, inner);
@@ -242,6 +246,10 @@ impl Dag {
 
     /// sqrt(a).
     pub fn sqrt(&mut self, a: Id) -> Id {
+        // sqrt(0) = 0 and sqrt(1) = 1 exactly (folded data without aileron yaw reach them).
+        if self.as_const(a).is_some_and(|x| x.is_zero() || x.is_one()) {
+            return a;
+        }
         self.add_node(Node::Sqrt(a))
     }
 

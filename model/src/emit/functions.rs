@@ -141,8 +141,11 @@ impl Ctx {
     fn poly(&mut self, p: &Poly) -> Id {
         let bound = self.bound.clone();
         let leaf = move |x: Sym| -> Id {
+            // The innermost (latest) binding wins: `cleared` rebinds the trim symbols to
+            // numerators on top of the trim itself.
             bound
                 .iter()
+                .rev()
                 .find(|(s, _)| *s == x)
                 .map(|(_, id)| *id)
                 .unwrap_or_else(|| panic!("symbol {x} is not bound in this function"))
@@ -299,15 +302,73 @@ impl Ctx {
         self.dag.sub(det_k0, frac)
     }
 
-    /// Binds alpha0, beta0, Q0, R0 of the unconstrained trim (Eqs 3-4).
-    fn trim(&mut self, d: &Derivation) -> [Id; 4] {
+    /// Binds alpha0, beta0, Q0, R0 and delta_a of the unconstrained trim at P0 (Eqs 3-4 and the
+    /// roll equation), on the trim branch that continues the trim without aileron yaw.
+    ///
+    /// The four trim equations give `x0 = a + delta_a b` (Cramer, one reciprocal of det A; `b` is
+    /// the response to the `n_delta_a delta_a` term of the yaw equation), and the roll equation
+    /// `f(x0, delta_a) = 0` is then the quadratic `g2 delta_a^2 + g1 delta_a + g0 = 0` with
+    /// `g0 = f(a)`, `g1 = grad f(a) . b + l_delta_a`, `g2 = b^T H b / 2` (f is quadratic in the
+    /// trim through `-E Q0 R0`). Its root `delta_a = -2 g0 / (g1 (1 + sqrt(1 - 4 g0 g2 / g1^2)))`
+    /// is the cancellation-free form of the quadratic formula for the root that tends to
+    /// `-g0 / g1` as `g2 -> 0`: exact for `n_delta_a = 0`, NaN where the two trims of P0 are
+    /// complex, without a branch. Returns `[alpha0, beta0, Q0, R0, delta_a]`.
+    fn trim(&mut self, d: &Derivation) -> [Id; 5] {
         let s = symbols();
-        let x = self.cramer(&d.a, &d.a_rhs);
+        let rhs0: Vec<Poly> = d.a_rhs.iter().map(|p| p.coeff(s.delta_a, 0)).collect();
+        let rhs1: Vec<Poly> = d.a_rhs.iter().map(|p| p.coeff(s.delta_a, 1)).collect();
+        let a = self.cramer(&d.a, &rhs0);
+        let b = self.cramer(&d.a, &rhs1);
         let syms = [s.alpha0, s.beta0, s.q0, s.r0];
+        for (sym, id) in syms.iter().zip(&a) {
+            self.bind(*sym, *id);
+        }
+        let f0 = d.roll_at_trim.coeff(s.delta_a, 0);
+        let g0 = self.poly(&f0);
+        let mut g1 = self.poly(&d.roll_at_trim.coeff(s.delta_a, 1));
+        let mut g2 = self.dag.constant(Q::ZERO);
+        for (i, ti) in syms.iter().enumerate() {
+            let grad = f0.diff(*ti);
+            let gi = self.poly(&grad);
+            let t = self.dag.mul(gi, b[i]);
+            g1 = self.dag.add(g1, t);
+            for (j, tj) in syms.iter().enumerate() {
+                let h = grad.diff(*tj).scale(&Q::ratio(1, 2));
+                if h.is_zero() {
+                    continue;
+                }
+                let hij = self.poly(&h);
+                let bb = self.dag.mul(b[i], b[j]);
+                let t = self.dag.mul(hij, bb);
+                g2 = self.dag.add(g2, t);
+            }
+        }
+        let dag = &mut self.dag;
+        let g0g2 = dag.mul(g0, g2);
+        let g1sq = dag.mul(g1, g1);
+        let w = dag.div(g0g2, g1sq);
+        let four = dag.constant(Q::int(4));
+        let one = dag.constant(Q::ONE);
+        let w4 = dag.mul(four, w);
+        let disc = dag.sub(one, w4);
+        let root = dag.sqrt(disc);
+        let onep = dag.add(one, root);
+        let den = dag.mul(g1, onep);
+        let two = dag.constant(Q::int(2));
+        let num = dag.mul(two, g0);
+        let q = dag.div(num, den);
+        let da = dag.neg(q);
+        let mut x = [da; 4];
+        for i in 0..4 {
+            let t = self.dag.mul(da, b[i]);
+            x[i] = self.dag.add(a[i], t);
+        }
+        self.bound.retain(|(sym, _)| !syms.contains(sym));
         for (sym, id) in syms.iter().zip(&x) {
             self.bind(*sym, *id);
         }
-        [x[0], x[1], x[2], x[3]]
+        self.bind(s.delta_a, da);
+        [x[0], x[1], x[2], x[3], da]
     }
 
     /// Binds alpha0, Q0, R0 of the zero-sideslip trim (Eq. 35) and beta0 = 0.
@@ -455,10 +516,7 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
     // trim
     {
         let mut c = Ctx::new(t, &trim_args);
-        let [a, b, q, r] = c.trim(d);
-        let num = c.poly(&d.delta_a.num);
-        let den = c.poly(&d.delta_a.den);
-        let da = c.dag.div(num, den);
+        let [a, b, q, r, da] = c.trim(d);
         let outputs = vec![
             ("alpha".into(), a),
             ("beta".into(), b),
@@ -470,9 +528,12 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
             "trim",
             lines(&[
                 "Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`",
-                "for x = [alpha, beta, q, r], then the aileron from the roll equation",
-                "`delta_a = -(l_p P0 + l_beta beta0 + l_r R0 - E Q0 R0) / l_delta_a` (n_delta_a = 0).",
-                "Angles in rad, rates in rad/s. Non-finite where det A = 0 (the divergence roll rates).",
+                "for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw",
+                "equation), and the aileron from the roll equation, a quadratic in delta_a",
+                "`g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). This is the trim",
+                "branch that continues the trim without aileron yaw (the root that tends to `-g0/g1`);",
+                "NaN where the two trims of `p0` are complex. Angles in rad, rates in rad/s.",
+                "Non-finite where det A = 0 (the divergence roll rates).",
             ]),
             t,
             trim_args.clone(),
@@ -597,6 +658,8 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
     {
         let mut c = Ctx::new(t, &trim_args);
         let trims = [s.alpha0, s.beta0, s.q0, s.r0];
+        // The trim's aileron first (it enters the trim through n_delta_a), then the cleared form.
+        c.trim(d);
         let det = c.det_k_one_division(d, &d.a, &d.a_rhs, &trims);
         out.push(c.finish(
             "det_k",
@@ -604,7 +667,7 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
                 "The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the",
                 "saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.",
                 "Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared",
-                "from g, h and d, so that it costs a single division.",
+                "from g, h and d, on the trim branch of [`trim`].",
             ]),
             t,
             trim_args.clone(),
@@ -704,19 +767,37 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
     {
         let args = trim_args[1..].to_vec();
         let mut c = Ctx::new(t, &args);
+        let nda = s.param(Param::NDeltaA);
+        let no_yaw = |p: &Poly| p.subs(nda, &Poly::zero());
+        let trim0: Vec<Poly> = d.trim.iter().map(no_yaw).collect();
         let coeffs = c.homogenize(
             &d.det_j5,
             &[s.alpha0, s.beta0, s.q0, s.r0],
-            &d.trim,
+            &trim0,
             &d.det_a,
         );
-        let outs: Vec<(String, Id)> = coeffs.iter().map(|id| (String::new(), *id)).collect();
+        // `1 + sqrt(-n_delta_a^2)` is 1 without aileron yaw and NaN with it, without a branch.
+        let guard = {
+            // n_delta_a as the model has it: a symbol, or the aircraft's folded value.
+            let nda = c.poly(&d.model[4].coeff(s.delta_a, 1));
+            let sq = c.dag.mul(nda, nda);
+            let neg = c.dag.neg(sq);
+            let root = c.dag.sqrt(neg);
+            let one = c.dag.constant(Q::ONE);
+            c.dag.add(one, root)
+        };
+        let outs: Vec<(String, Id)> = coeffs
+            .iter()
+            .map(|id| (String::new(), c.dag.mul(*id, guard)))
+            .collect();
         let n = outs.len();
         out.push(c.finish(
             "jump_polynomial",
             lines(&[
                 "Coefficients of P0^0 ..= P0^12 of the jump polynomial `det J5 * det(A)^2` (step 8).",
                 "Its positive real roots that are not roots of det A or d are the jump roll rates.",
+                "A polynomial in P0 alone exists only without aileron yaw: every coefficient is NaN",
+                "when `n_delta_a != 0` (then `model analyze` eliminates delta_a by a resultant).",
             ]),
             t,
             args,

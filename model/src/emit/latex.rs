@@ -1199,13 +1199,18 @@ impl<'a> Writer<'a> {
         );
         out.push_str(&self.rows("J(P_0)", &sum_terms, None));
         out.push_str("\n\\end{align*}\n");
-        let coeffs = d.jump().coeffs(s.p0);
+        // The paper's aircraft have no aileron yaw: the jump polynomial in P0 alone is det J5
+        // det(A)^2 at n_delta_a = 0 (Section 9 gives the elimination of delta_a otherwise).
+        let nda = s.param(crate::aircraft::Param::NDeltaA);
+        let jump = d.jump_at().subs(nda, &Poly::zero());
+        let d_det_a = d.d_at().subs(nda, &Poly::zero());
+        let coeffs = jump.coeffs(s.p0);
         let _ = write!(
             out,
             "Expanded, $J(P_0) = \\sum_{{k=0}}^{{{}}} J_k P_0^k$ has {} terms. Its coefficients, \
              grouped by the controls and the inertia coefficients:\n\\begin{{align*}}\n",
             coeffs.len().saturating_sub(1),
-            d.jump().len()
+            jump.len()
         );
         out.push_str(&self.coefficient_rows("J", &coeffs, &[ctrl, inertia]));
         out.push_str("\n\\end{align*}\n");
@@ -1226,18 +1231,18 @@ impl<'a> Writer<'a> {
             d_sub(s.q0),
             d_sub(s.beta0),
             d_sub(s.r0),
-            d.d_det_a().len()
+            d_det_a.len()
         );
-        out.push_str(&self.coefficient_rows("D", &d.d_det_a().coeffs(s.p0), &[ctrl, inertia]));
+        out.push_str(&self.coefficient_rows("D", &d_det_a.coeffs(s.p0), &[ctrl, inertia]));
         out.push_str("\n\\end{align*}\n");
         let check_d = {
-            let n: Vec<Poly> = d.trim.to_vec();
+            let n: Vec<Poly> = d.trim.iter().map(|t| t.subs(nda, &Poly::zero())).collect();
             let da = &d.det_a;
             let recon = &(&(&Poly::var(s.param(crate::aircraft::Param::Lp)) * &(da * da))
                 + &(&(&Poly::var(s.param(crate::aircraft::Param::Lr)) * &n[0]) * da))
                 - &(&Poly::var(s.param(crate::aircraft::Param::E))
                     * &(&(&n[0] * &n[2]) + &(&n[1] * &n[3])));
-            recon == *d.d_det_a()
+            recon == d_det_a
         };
         let _ = writeln!(
             out,

@@ -55,9 +55,9 @@ pub fn values() -> Result<String, syn::Error> {
         values.push((s.delta_r, Q::ZERO));
         let d = Derivation::derive(&values);
         let (jump, det_a, dda) = (
-            univariate(d.jump(), s.p0),
+            univariate(d.jump_at(), s.p0),
             univariate(&d.det_a, s.p0),
-            univariate(d.d_det_a(), s.p0),
+            univariate(d.d_at(), s.p0),
         );
         // det K = det J5 / d = (jump / det(A)^2) / (d_det_a / det(A)^2).
         let mut checks = TokenStream::new();
@@ -100,7 +100,7 @@ pub fn values() -> Result<String, syn::Error> {
         // Jump polynomial coefficients at this delta_e, exactly.
         let sym_only = Derivation::derive(&aircraft_values(&ac));
         let coeffs: Vec<TokenStream> = sym_only
-            .jump()
+            .jump_at()
             .coeffs(s.p0)
             .iter()
             .map(|c| {

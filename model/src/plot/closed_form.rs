@@ -21,7 +21,7 @@ use super::data::{
 };
 use super::PlotError;
 use crate::aircraft::{rational_to_f64, Aircraft};
-use crate::analysis::{analyze, cancel, specialisation, univariate};
+use crate::analysis::{analyze, cancel, in_aileron, specialisation, univariate, InAileron};
 use crate::derivation::Derivation;
 use crate::equations::symbols;
 use crate::numeric::PssModel;
@@ -98,7 +98,7 @@ pub fn unconstrained_diagram(
         .iter()
         .map(|j| j.p0)
         .chain(analysis.divergence_roll_rates.iter().copied())
-        .chain(analysis.det_k_poles.iter().copied())
+        .chain(analysis.det_k_poles.iter().map(|j| j.p0))
         .fold(2.0, f64::max);
     let p_max = round_up(1.6 * specials, 0.5).min(50.0);
     let at = |p0: f64| trims.unconstrained(p0, 0.0);
@@ -224,63 +224,71 @@ fn horner(c: &[f64], x: f64) -> f64 {
 }
 
 /// det K as the reduced rational function `num / den` sampled on `[0, p_max]`.
+/// The P0 samples of the det K figures.
+fn sample_grid(p_max: f64) -> Vec<f64> {
+    const N: usize = 2001;
+    (0..N).map(|k| p_max * k as f64 / (N - 1) as f64).collect()
+}
+
 fn sample_ratio(num: &UPoly, den: &UPoly, p_max: f64) -> (Vec<f64>, Vec<f64>) {
     let (n, d) = (coeffs(num), coeffs(den));
-    const N: usize = 2001;
-    let p0: Vec<f64> = (0..N).map(|k| p_max * k as f64 / (N - 1) as f64).collect();
+    let p0 = sample_grid(p_max);
     let v = p0.iter().map(|x| horner(&n, *x) / horner(&d, *x)).collect();
     (p0, v)
 }
 
-/// det K = det J5 / d as an exact rational function of P0, reduced.
-///
-/// The derivation homogenises `det J5` and `d` separately: each is multiplied by the trim
-/// denominator to the power of its degree in the trim symbols (`jump = det J5 den^kj`,
-/// `d_den = d den^kd`), so `det K = jump den^(kd - kj) / d_den`. (For the paper's aircraft
-/// kj = kd = 2 and det K = jump / d_det_a.)
-pub fn det_k_ratio(jump: &UPoly, d_den: &UPoly, den: &UPoly, kj: u32, kd: u32) -> (UPoly, UPoly) {
-    let pow = |k: u32| (0..k).fold(UPoly::from_i64s(&[1]), |acc, _| acc.mul(den));
-    let num = jump.mul(&pow(kd.saturating_sub(kj)));
-    let d = d_den.mul(&pow(kj.saturating_sub(kd)));
-    cancel(&num, &d)
+/// det K = det J5 / d along a trim curve as an exact rational function of P0, reduced: both
+/// were cleared with the same power of the trim's denominator (step 8, `TRIM_DEGREE`), so
+/// `det K = jump / d_den`.
+pub fn det_k_ratio(jump: &UPoly, d_den: &UPoly) -> (UPoly, UPoly) {
+    cancel(jump, d_den)
 }
 
-/// The reduced det K of the unconstrained roll (delta_r = 0) and of the zero-sideslip trims.
-fn det_k_ratios(d: &Derivation) -> ((UPoly, UPoly), (UPoly, UPoly)) {
+/// det K of the unconstrained roll (delta_r = 0) at `p0` on the trim of smallest |delta_a| (the
+/// branch that continues the trim without aileron yaw), in f64; NaN where there is no trim.
+fn det_k_on_trim(g: &InAileron, jump_at: &InAileron, d_at: &InAileron, p0: f64) -> f64 {
+    g.aileron_roots(p0)
+        .into_iter()
+        .min_by(|a, b| a.abs().total_cmp(&b.abs()))
+        .map_or(f64::NAN, |da| jump_at.eval(p0, da) / d_at.eval(p0, da))
+}
+
+/// The reduced det K of the zero-sideslip trims.
+fn zs_det_k_ratio(d: &Derivation) -> (UPoly, UPoly) {
     let s = symbols();
     let u = |p| univariate(p, s.p0);
-    let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
-    let t3 = [s.alpha0, s.q0, s.r0];
-    let zero = crate::algebra::Poly::zero();
-    let unc = det_k_ratio(
-        &u(d.jump()),
-        &u(d.d_det_a()),
-        &u(&d.det_a),
-        d.det_j5.degree_in(&t4),
-        d.d.degree_in(&t4),
-    );
-    let zs = det_k_ratio(
-        &u(d.zs_jump()),
-        &u(d.zs_d_det()),
-        &u(&d.zs_det),
-        d.det_j5.subs(s.beta0, &zero).degree_in(&t3),
-        d.d.subs(s.beta0, &zero).degree_in(&t3),
-    );
-    (unc, zs)
+    det_k_ratio(&u(d.zs_jump()), &u(d.zs_d_det()))
 }
 
 /// Figs 7, 8: det K versus P0 for delta_r = 0, with its roots (the jump points) and poles.
 pub fn det_k_curve(aircraft: &Aircraft, delta_e: f64) -> Result<DetKData, PlotError> {
     let analysis = analyze(aircraft, delta_e).map_err(PlotError::Analysis)?;
     let d = Derivation::derive(&specialisation(aircraft, delta_e));
-    let ((num, den), _) = det_k_ratios(&d);
     let roots: Vec<f64> = analysis.jump.iter().map(|j| j.p0).collect();
+    let poles: Vec<f64> = analysis.det_k_poles.iter().map(|j| j.p0).collect();
     let top = roots
         .iter()
-        .chain(analysis.det_k_poles.iter())
+        .chain(poles.iter())
         .chain(analysis.divergence_roll_rates.iter())
         .fold(2.0f64, |m, v| m.max(*v));
-    let (p0, det_k) = sample_ratio(&num, &den, round_up(1.2 * top, 0.5));
+    let p_max = round_up(1.2 * top, 0.5);
+    let s = symbols();
+    let (p0, det_k) = if d.jump_at().contains(s.delta_a) {
+        // With aileron yaw det K is two-valued in P0; the curve follows the trim of smallest
+        // |delta_a|.
+        let (g, j, dd) = (
+            in_aileron(d.trim_condition()),
+            in_aileron(d.jump_at()),
+            in_aileron(d.d_at()),
+        );
+        let p0 = sample_grid(p_max);
+        let v = p0.iter().map(|x| det_k_on_trim(&g, &j, &dd, *x)).collect();
+        (p0, v)
+    } else {
+        let u = |p| univariate(p, s.p0);
+        let (num, den) = det_k_ratio(&u(d.jump_at()), &u(d.d_at()));
+        sample_ratio(&num, &den, p_max)
+    };
     Ok(DetKData {
         title: format!(
             "{}: det K versus trim roll rate, \u{3b4}e = {} deg, \u{3b4}r = 0 (cf. Figs 7, 8)",
@@ -290,7 +298,7 @@ pub fn det_k_curve(aircraft: &Aircraft, delta_e: f64) -> Result<DetKData, PlotEr
         p0,
         det_k,
         roots,
-        poles: analysis.det_k_poles.clone(),
+        poles,
         divergence: analysis.divergence_roll_rates.clone(),
     })
 }
@@ -300,7 +308,7 @@ pub fn det_k_curve(aircraft: &Aircraft, delta_e: f64) -> Result<DetKData, PlotEr
 pub fn zero_sideslip_det_k_curve(aircraft: &Aircraft, delta_e: f64) -> Result<DetKData, PlotError> {
     let analysis = analyze(aircraft, delta_e).map_err(PlotError::Analysis)?;
     let d = Derivation::derive(&specialisation(aircraft, delta_e));
-    let (_, (num, den)) = det_k_ratios(&d);
+    let (num, den) = zs_det_k_ratio(&d);
     let roots: Vec<f64> = analysis
         .zero_sideslip
         .departure
@@ -611,7 +619,9 @@ mod tests {
             let de = 2f64.to_radians();
             let d = Derivation::derive(&specialisation(&ac, de));
             let t = Trims::new(&ac, de).unwrap();
-            let ((n, m), (zn, zm)) = det_k_ratios(&d);
+            let u = |p| univariate(p, s.p0);
+            let (n, m) = det_k_ratio(&u(d.jump_at()), &u(d.d_at()));
+            let (zn, zm) = zs_det_k_ratio(&d);
             for p0 in [0.0, 0.7, 1.9, 2.5] {
                 for (e, (n, m)) in [
                     (t.unconstrained(p0, 0.0).unwrap(), (&n, &m)),

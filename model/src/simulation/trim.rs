@@ -47,21 +47,28 @@ pub struct Equilibrium {
 
 /// The closed-form trims of one aircraft at one elevator setting, in f64.
 ///
-/// Unconstrained roll (section II.A): for a given P0 and rudder deflection the trim is
-/// `[alpha0, beta0, Q0, R0] = num(P0, delta_r) / det A(P0)`, linear in delta_r. Zero-sideslip
-/// roll (section V.A): `[alpha0, Q0, R0] = zs_num(P0) / zs_det(P0)` with beta0 = 0.
+/// Unconstrained roll (section II.A): for a given P0, rudder and aileron deflection the trim is
+/// `[alpha0, beta0, Q0, R0] = num(P0, delta_a, delta_r) / det A(P0)`, affine in both controls
+/// (the aileron enters through the aileron yaw `n_delta_a`); the roll equation then fixes the
+/// aileron, a quadratic in delta_a with aileron yaw. Zero-sideslip roll (section V.A):
+/// `[alpha0, Q0, R0] = zs_num(P0) / zs_det(P0)` with beta0 = 0, the aileron and rudder from the
+/// roll and yaw equations together.
 #[derive(Clone, Debug)]
 pub struct Trims {
     model: PssModel,
     delta_e: f64,
     det_a: Horner,
-    /// Numerators of [alpha0, beta0, Q0, R0] at delta_r = 0.
+    /// Numerators of [alpha0, beta0, Q0, R0] at delta_a = delta_r = 0.
     num0: [Horner; 4],
-    /// Numerators at delta_r = 1 (the trim is affine in delta_r).
-    num1: [Horner; 4],
+    /// Their delta_a coefficients (zero without aileron yaw).
+    num_a: [Horner; 4],
+    /// Their delta_r coefficients.
+    num_r: [Horner; 4],
     zs_det: Horner,
     zs_num: [Horner; 3],
-    l_delta_a: f64,
+    /// `[[l_delta_a, l_delta_r], [n_delta_a, n_delta_r]]`: the lateral controls in the roll and
+    /// yaw equations (exact, from the compiled model's control Jacobian).
+    lateral: [[f64; 2]; 2],
     n_delta_r: f64,
 }
 
@@ -95,15 +102,19 @@ impl Trims {
             }
         }
         let d1 = Derivation::derive(&values);
+        let no_aileron = |p: &Poly| p.coeff(s.delta_a, 0);
         Ok(Trims {
             model,
             delta_e,
             det_a: Horner::new(&d0.det_a),
-            num0: std::array::from_fn(|i| Horner::new(&d0.trim[i])),
-            num1: std::array::from_fn(|i| Horner::new(&d1.trim[i])),
+            num0: std::array::from_fn(|i| Horner::new(&no_aileron(&d0.trim[i]))),
+            num_a: std::array::from_fn(|i| Horner::new(&d0.trim[i].coeff(s.delta_a, 1))),
+            num_r: std::array::from_fn(|i| {
+                Horner::new(&(&no_aileron(&d1.trim[i]) - &no_aileron(&d0.trim[i])))
+            }),
             zs_det: Horner::new(&d0.zs_det),
             zs_num: std::array::from_fn(|i| Horner::new(&d0.zs_trim[i])),
-            l_delta_a,
+            lateral: [[dc[2][0], dc[2][2]], [dc[4][0], dc[4][2]]],
             n_delta_r,
         })
     }
@@ -123,10 +134,9 @@ impl Trims {
         self.det_a.eval(p0)
     }
 
-    /// The unconstrained trim at roll rate `p0` with rudder `delta_r` (rad), and the aileron that
-    /// holds it (roll equation). `None` where det A vanishes (the trim blows up) or the result
-    /// is not finite.
-    pub fn unconstrained(&self, p0: f64, delta_r: f64) -> Option<Equilibrium> {
+    /// The unconstrained trim state at roll rate `p0` for given aileron and rudder (rad): the
+    /// four non-roll equations hold, the roll equation need not. `None` where det A vanishes.
+    fn state(&self, p0: f64, delta_a: f64, delta_r: f64) -> Option<[f64; 5]> {
         let den = self.det_a.eval(p0);
         let scale = self
             .det_a
@@ -138,22 +148,68 @@ impl Trims {
             return None;
         }
         let v: [f64; 4] = std::array::from_fn(|i| {
-            let n0 = self.num0[i].eval(p0);
-            (n0 + delta_r * (self.num1[i].eval(p0) - n0)) / den
+            (self.num0[i].eval(p0)
+                + delta_a * self.num_a[i].eval(p0)
+                + delta_r * self.num_r[i].eval(p0))
+                / den
         });
-        let x = [v[0], v[1], p0, v[2], v[3]];
-        let mut controls = Controls {
-            delta_a: 0.0,
+        Some([v[0], v[1], p0, v[2], v[3]])
+    }
+
+    /// Every unconstrained trim at roll rate `p0` with rudder `delta_r` (rad), ascending in the
+    /// aileron that holds it: one without aileron yaw, up to two with it (the roll equation along
+    /// the trim is quadratic in delta_a; its coefficients follow from the compiled model at
+    /// delta_a = -1, 0, 1, exactly up to rounding).
+    pub fn unconstrained_all(&self, p0: f64, delta_r: f64) -> Vec<Equilibrium> {
+        let controls = |delta_a: f64| Controls {
+            delta_a,
             delta_e: self.delta_e,
             delta_r,
         };
-        controls.delta_a = self.holding_aileron(&x, &controls);
-        finite(Equilibrium { x, controls })
+        let roll = |da: f64| {
+            self.state(p0, da, delta_r)
+                .map(|x| self.model.rhs(&x, &controls(da))[2])
+        };
+        let (Some(fm), Some(f0), Some(fp)) = (roll(-1.0), roll(0.0), roll(1.0)) else {
+            return vec![];
+        };
+        // Without aileron yaw the roll equation is exactly linear with slope l_delta_a.
+        let (a, b) = if self.num_a.iter().all(|h| h.0.iter().all(|c| *c == 0.0)) {
+            (0.0, self.lateral[0][0])
+        } else {
+            (0.5 * (fp + fm) - f0, 0.5 * (fp - fm))
+        };
+        crate::analysis::quadratic_roots(a, b, f0)
+            .into_iter()
+            .filter_map(|da| {
+                let x = self.state(p0, da, delta_r)?;
+                finite(Equilibrium {
+                    x,
+                    controls: controls(da),
+                })
+            })
+            .collect()
+    }
+
+    /// The unconstrained trim at roll rate `p0` with rudder `delta_r` (rad), and the aileron that
+    /// holds it, on the trim branch that continues the trim without aileron yaw (the trim of
+    /// smallest |delta_a|). `None` where det A vanishes (the trim blows up), the roll rate has
+    /// no trim, or the result is not finite.
+    pub fn unconstrained(&self, p0: f64, delta_r: f64) -> Option<Equilibrium> {
+        self.unconstrained_all(p0, delta_r)
+            .into_iter()
+            .min_by(|a, b| {
+                a.controls
+                    .delta_a
+                    .abs()
+                    .total_cmp(&b.controls.delta_a.abs())
+            })
     }
 
     /// The zero-sideslip trim at roll rate `p0` (Eq. 35) with the aileron and the rudder that
-    /// hold it. `None` where the zero-sideslip determinant vanishes or there is no rudder
-    /// authority (`n_delta_r = 0`).
+    /// hold it (the roll and yaw equations, linear in both, solved together). `None` where the
+    /// zero-sideslip determinant vanishes or the lateral controls cannot hold the trim
+    /// (`l_delta_a n_delta_r = l_delta_r n_delta_a`).
     pub fn zero_sideslip(&self, p0: f64) -> Option<Equilibrium> {
         if self.n_delta_r == 0.0 {
             return None;
@@ -170,25 +226,27 @@ impl Trims {
         }
         let v: [f64; 3] = std::array::from_fn(|i| self.zs_num[i].eval(p0) / den);
         let x = [v[0], 0.0, p0, v[1], v[2]];
-        let mut controls = Controls {
-            delta_a: 0.0,
+        let f = |delta_a: f64, delta_r: f64| {
+            let r = self.model.rhs(
+                &x,
+                &Controls {
+                    delta_a,
+                    delta_e: self.delta_e,
+                    delta_r,
+                },
+            );
+            (r[2], r[4])
+        };
+        // The roll and yaw equations are linear in (delta_a, delta_r) with the matrix `lateral`.
+        let (r0, y0) = f(0.0, 0.0);
+        let [[m11, m12], [m21, m22]] = self.lateral;
+        let det = m11 * m22 - m12 * m21;
+        let controls = Controls {
+            delta_a: (m12 * y0 - r0 * m22) / det,
             delta_e: self.delta_e,
-            delta_r: 0.0,
+            delta_r: (m21 * r0 - m11 * y0) / det,
         };
-        controls.delta_a = self.holding_aileron(&x, &controls);
-        // The yaw equation is linear in the rudder: delta_r = -r_dot(delta_r = 0) / n_delta_r.
-        controls.delta_r = -self.model.rhs(&x, &controls)[4] / self.n_delta_r;
         finite(Equilibrium { x, controls })
-    }
-
-    /// The aileron deflection that zeroes the roll equation at `x` with the other controls of
-    /// `controls` (the roll equation is linear in delta_a).
-    fn holding_aileron(&self, x: &[f64; 5], controls: &Controls) -> f64 {
-        let free = Controls {
-            delta_a: 0.0,
-            ..*controls
-        };
-        -self.model.rhs(x, &free)[2] / self.l_delta_a
     }
 
     /// The trim with delta_a = 0 nearest to P0 = 0 for rudder `delta_r` (the start of every

@@ -1,0 +1,164 @@
+//! The primary branch: which jump a pilot meets first.
+//!
+//! The primary branch is the equilibrium curve `G(P0, delta_a) = 0` (the trim condition of
+//! [`crate::derivation::Derivation::trim_condition`]) through `P0 = 0, delta_a = 0`, the trim of a
+//! wings-level aircraft with the ailerons centred. With `delta_r = 0` the PSS model is symmetric
+//! under `(P0, beta, r, delta_a) -> -(P0, beta, r, delta_a)`, so following the branch towards
+//! `P0 > 0` (negative aileron for `l_delta_a < 0`) also answers the other aileron direction.
+//!
+//! The curve is followed in f64 only to decide *which* of the exactly isolated jump roots lie on
+//! it and in what order: the reported point is always the exact root. Along the curve, P0 is the
+//! parameter until the curve turns in P0 (the discriminant of the quadratic in delta_a vanishes:
+//! the two trims of a roll rate merge), where it continues on the other root with P0 running
+//! back. Without aileron yaw the curve is a graph over P0 and never turns.
+
+use crate::roots::UPoly;
+
+/// A polynomial in P0 and delta_a: `coeffs[i]` (a polynomial in P0) multiplies `delta_a^i`.
+#[derive(Clone, Debug)]
+pub struct InAileron(pub Vec<UPoly>);
+
+impl InAileron {
+    /// The coefficients of the polynomial in delta_a at `p0`, in f64.
+    pub fn at(&self, p0: f64) -> Vec<f64> {
+        self.0.iter().map(|c| c.eval_f64(p0)).collect()
+    }
+
+    /// Value at `(p0, delta_a)` in f64.
+    pub fn eval(&self, p0: f64, delta_a: f64) -> f64 {
+        self.at(p0)
+            .iter()
+            .rev()
+            .fold(0.0, |acc, c| acc * delta_a + c)
+    }
+
+    /// The real roots in delta_a at `p0` (at most two: the trim condition is at most quadratic),
+    /// by the cancellation-free form of the quadratic formula.
+    pub fn aileron_roots(&self, p0: f64) -> Vec<f64> {
+        let c = self.at(p0);
+        let get = |i: usize| c.get(i).copied().unwrap_or(0.0);
+        quadratic_roots(get(2), get(1), get(0))
+    }
+}
+
+/// Real roots of `a x^2 + b x + c` (linear when `a = 0`), without cancellation.
+pub fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
+    if a == 0.0 {
+        return if b == 0.0 { vec![] } else { vec![-c / b] };
+    }
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 {
+        return vec![];
+    }
+    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    let mut r = if q == 0.0 {
+        vec![0.0]
+    } else {
+        vec![q / a, c / q]
+    };
+    r.sort_by(f64::total_cmp);
+    r
+}
+
+/// How the primary branch ends.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Outcome {
+    /// It reaches the jump root with this index (into the `jumps` slice given to `follow`).
+    Jump(usize),
+    /// The trims blow up (det A = 0, Eq. 5) at about this roll rate before any jump.
+    Divergence(f64),
+    /// |delta_a| grows past the bound without a jump.
+    Unbounded,
+    /// The curve ends (no trim) or cannot be followed; the reason.
+    Lost(&'static str),
+}
+
+/// Follows the primary branch from `(0, 0)` and returns how it ends.
+///
+/// `g` is the trim condition, `det_a` the trim's denominator, `jumps` the exact jump roots as
+/// `(p0, delta_a)` (in any order), `max_abs_delta_a` the aileron bound in rad.
+pub fn follow(g: &InAileron, det_a: &UPoly, jumps: &[(f64, f64)], max_abs_delta_a: f64) -> Outcome {
+    const MAX_STEP: f64 = 1e-3;
+    const MAX_STEPS: usize = 2_000_000;
+    let nearest = |roots: &[f64], target: f64| -> Option<f64> {
+        roots
+            .iter()
+            .copied()
+            .min_by(|a, b| (a - target).abs().total_cmp(&(b - target).abs()))
+    };
+    let Some(mut da) = nearest(&g.aileron_roots(0.0), 0.0) else {
+        return Outcome::Lost("no trim at P0 = 0");
+    };
+    if da.abs() > 1e-9 {
+        return Outcome::Lost(
+            "the trim at P0 = 0 needs aileron (n_p or delta_r break the symmetry)",
+        );
+    }
+    let (mut p, mut dir, mut slope) = (0.0f64, 1.0f64, 0.0f64);
+    let sign_det_a = det_a.eval_f64(0.0).signum();
+    for _ in 0..MAX_STEPS {
+        let h = MAX_STEP.min(MAX_STEP / slope.abs().max(1e-300)).max(1e-10);
+        let p_new = p + dir * h;
+        let roots = g.aileron_roots(p_new);
+        let Some(da_new) = nearest(&roots, da + slope * dir * h) else {
+            // The two trims of this roll rate merged and vanished: the curve turns in P0 and
+            // continues on the other root, P0 running back.
+            dir = -dir;
+            let back = g.aileron_roots(p);
+            match back
+                .iter()
+                .copied()
+                .filter(|r| (r - da).abs() > 0.0)
+                .min_by(|a, b| (a - da).abs().total_cmp(&(b - da).abs()))
+            {
+                Some(other) => {
+                    slope = 0.0;
+                    da = other;
+                    continue;
+                }
+                None => return Outcome::Lost("the equilibrium curve ends"),
+            }
+        };
+        if det_a.eval_f64(p_new).signum() != sign_det_a {
+            return Outcome::Divergence(p_new);
+        }
+        // A jump root between p and p_new whose aileron is this branch's.
+        let (lo, hi) = if p < p_new { (p, p_new) } else { (p_new, p) };
+        let hit = jumps
+            .iter()
+            .enumerate()
+            .filter(|(_, (jp, _))| *jp > lo && *jp <= hi)
+            .filter(|(_, (jp, jda))| {
+                let here = da + (da_new - da) * (jp - p) / (p_new - p);
+                let tol = 1e-3 * (1.0 + here.abs()) + (da_new - da).abs();
+                (jda - here).abs() <= tol
+            })
+            .min_by(|a, b| ((a.1 .0 - p).abs()).total_cmp(&(b.1 .0 - p).abs()));
+        if let Some((i, _)) = hit {
+            return Outcome::Jump(i);
+        }
+        if da_new.abs() > max_abs_delta_a {
+            return Outcome::Unbounded;
+        }
+        slope = (da_new - da) / (dir * h);
+        da = da_new;
+        p = p_new;
+    }
+    Outcome::Lost("the primary branch was followed for 2e6 steps without an end")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quadratic_roots_are_accurate_without_cancellation() {
+        // x^2 - 1e8 x + 1 = 0: roots 1e8 and 1e-8; the textbook formula loses the small one.
+        let r = quadratic_roots(1.0, -1e8, 1.0);
+        assert_eq!(r.len(), 2);
+        assert!((r[0] - 1e-8).abs() < 1e-22, "{r:?}");
+        assert!((r[1] - 1e8).abs() < 1e-6);
+        assert_eq!(quadratic_roots(0.0, 2.0, -1.0), vec![0.5]);
+        assert!(quadratic_roots(1.0, 0.0, 1.0).is_empty());
+    }
+}

@@ -1,0 +1,230 @@
+//! Aileron yaw (`n_delta_a != 0`) and roll due to rudder (`l_delta_r`) in the closed form
+//! (issue 8, part 1), checked against an independent numeric computation written here: trim
+//! branches from nalgebra LU solves ([`paper_tests::trim_branches`]), det J5 from
+//! finite-difference Jacobians, sign changes refined by bisection. Nothing here calls the
+//! symbolic layer except the code under test.
+
+use model::aircraft::{f64_to_rational, Aircraft, Param};
+use model::algebra::{Poly, Q};
+use model::analysis::{analyze, specialisation, univariate};
+use model::derivation::Derivation;
+use model::equations::symbols;
+use paper_tests::{fd_jacobian, ix, pss_rhs, random_params, trim_branches, Lcg, Params};
+
+fn de() -> f64 {
+    2f64.to_radians()
+}
+
+fn aircraft(k: &Params, name: &str) -> Aircraft {
+    let values = k.iter().map(|v| f64_to_rational(*v).unwrap()).collect();
+    Aircraft::new(name, values, 150.0)
+}
+
+/// A random aircraft with aileron yaw of either sign (1-6 % of l_delta_a) and roll due to
+/// rudder.
+fn random_yawing(rng: &mut Lcg) -> Params {
+    let mut k = random_params(rng);
+    let sign = if rng.next_f64() < 0.5 { -1.0 } else { 1.0 };
+    k[ix::NDA] = sign * rng.range(0.01, 0.06) * k[ix::LDA].abs();
+    k[ix::LDR] = rng.range(-3.0, 3.0);
+    k
+}
+
+fn det_j5(k: &Params, x: &[f64; 5], da: f64) -> f64 {
+    fd_jacobian(k, x, &[da, de(), 0.0]).determinant()
+}
+
+/// The jump points by brute force: every trim branch on a fine P0 grid, det J5 sign changes
+/// along each branch (branches paired in ascending delta_a between grid points with the same
+/// number of trims), refined by bisection in P0. Only trims with |delta_a| <= 1 rad and
+/// moderate states are kept (elsewhere finite differences lose their digits).
+fn numeric_jumps(k: &Params, p_max: f64) -> Vec<(f64, f64)> {
+    let branches = |p: f64| trim_branches(k, p, de(), 0.0);
+    let det_on = |p: f64, i: usize, n: usize| -> Option<(f64, f64)> {
+        let b = branches(p);
+        (b.len() == n).then(|| (det_j5(k, &b[i].0, b[i].1), b[i].1))
+    };
+    let mut out = Vec::new();
+    let n_grid = 6000;
+    let mut prev = branches(1e-6);
+    for s in 1..=n_grid {
+        let p = p_max * s as f64 / n_grid as f64;
+        let cur = branches(p);
+        if cur.len() == prev.len() {
+            for i in 0..cur.len() {
+                let (x0, x1) = (&prev[i], &cur[i]);
+                let big = |x: &[f64; 5]| x.iter().any(|v| v.abs() > 5.0);
+                if x0.1.abs() > 1.0 || x1.1.abs() > 1.0 || big(&x0.0) || big(&x1.0) {
+                    continue;
+                }
+                let (d0, d1) = (det_j5(k, &x0.0, x0.1), det_j5(k, &x1.0, x1.1));
+                if d0 * d1 >= 0.0 {
+                    continue;
+                }
+                let n = cur.len();
+                let (mut lo, mut hi, mut dlo) = (p - p_max / n_grid as f64, p, d0);
+                let mut da = x1.1;
+                for _ in 0..60 {
+                    let mid = 0.5 * (lo + hi);
+                    let Some((dm, dam)) = det_on(mid, i, n) else {
+                        break;
+                    };
+                    da = dam;
+                    if dm * dlo > 0.0 {
+                        lo = mid;
+                        dlo = dm;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                out.push((0.5 * (lo + hi), da));
+            }
+        }
+        prev = cur;
+    }
+    out
+}
+
+#[test]
+fn jump_points_with_aileron_yaw_equal_an_independent_numeric_scan() {
+    let mut rng = Lcg(808);
+    let mut compared = 0;
+    let mut signs = [0, 0];
+    for i in 0..6 {
+        let k = random_yawing(&mut rng);
+        signs[usize::from(k[ix::NDA] > 0.0)] += 1;
+        let ac = aircraft(&k, &format!("random yawing {i}"));
+        let a = analyze(&ac, de()).unwrap();
+        let p_max = 6.0;
+        let numeric = numeric_jumps(&k, p_max);
+        // Every numeric fold is a reported jump point, with its aileron.
+        for (p, da) in &numeric {
+            let j = a
+                .jump
+                .iter()
+                .find(|j| (j.p0 - p).abs() < 1e-6)
+                .unwrap_or_else(|| {
+                    panic!(
+                        "{}: numeric fold at P0 = {p} missing: {:?}",
+                        ac.name, a.jump
+                    )
+                });
+            assert!(
+                (j.delta_a_rad - da).abs() < 1e-6 * (1.0 + da.abs()),
+                "{j:?} vs {da}"
+            );
+            compared += 1;
+        }
+        // Every reported jump point inside the scanned region is a numeric fold: a trim with
+        // all five PSS equations satisfied and det J5 = 0 (nothing spurious).
+        for j in &a.jump {
+            let x = [j.alpha, j.beta, j.p0, j.q, j.r];
+            if j.p0 >= p_max - 1e-3 || j.delta_a_rad.abs() > 1.0 || x.iter().any(|v| v.abs() > 5.0)
+            {
+                continue;
+            }
+            let res = pss_rhs(&k, &x, &[j.delta_a_rad, de(), 0.0]);
+            let scale = x.iter().fold(1.0f64, |m, v| m.max(v.abs()));
+            assert!(
+                res.iter().all(|r| r.abs() < 1e-8 * scale * 100.0),
+                "{j:?}: {res:?}"
+            );
+            assert!(
+                numeric.iter().any(|(p, _)| (p - j.p0).abs() < 1e-6),
+                "{}: reported jump {j:?} is no numeric fold ({numeric:?})",
+                ac.name
+            );
+        }
+    }
+    assert!(
+        signs[0] > 0 && signs[1] > 0,
+        "both signs of n_delta_a: {signs:?}"
+    );
+    assert!(compared >= 6, "{compared} folds compared");
+}
+
+#[test]
+fn without_aileron_yaw_the_eliminated_jump_polynomial_is_the_papers() {
+    // With n_delta_a = 0 the trim condition is linear in delta_a and the resultant on the
+    // actual degrees is det J5 det(A)^2 itself, exactly.
+    for ac in [Aircraft::a(), Aircraft::b()] {
+        let d = Derivation::derive(&specialisation(&ac, de()));
+        assert_eq!(d.jump(), d.jump_at(), "{}", ac.name);
+        assert_eq!(d.poles(), d.d_at(), "{}", ac.name);
+    }
+}
+
+#[test]
+fn eliminated_jump_polynomial_is_continuous_in_n_delta_a_with_only_pole_factors_at_zero() {
+    // Aircraft A's data with n_delta_a left symbolic: the resultant divided by n_delta_a^2 is
+    // continuous in n_delta_a; at n_delta_a = 0 it is g1^2 e J, where J is the paper's jump
+    // polynomial, g1 = l_delta_a det(A)^2 marks the trim poles and e the trim branch that leaves
+    // to infinite aileron. So it has exactly the paper's jump roots once those are removed.
+    let s = symbols();
+    let nda = s.param(Param::NDeltaA);
+    let values: Vec<_> = specialisation(&Aircraft::a(), de())
+        .into_iter()
+        .filter(|(x, _)| *x != nda)
+        .collect();
+    let d = Derivation::derive(&values);
+    let zero = Poly::zero();
+    let at0 = |p: &Poly| p.subs(nda, &zero);
+    let g1 = at0(&d.trim_condition().coeff(s.delta_a, 1));
+    let e = d.jump_at().coeff(s.delta_a, 2).div_var_pow(nda, 2).unwrap();
+    let paper = at0(d.jump_at());
+    assert!(!paper.contains(s.delta_a));
+    let lhs = at0(d.jump());
+    let rhs = &(&(&g1 * &g1) * &at0(&e)) * &paper;
+    assert_eq!(lhs, rhs);
+    // g1 = l_delta_a det(A)^2 exactly.
+    let det_a = at0(&d.det_a);
+    let l_da = Poly::constant(Q::from_big(Aircraft::a().exact(Param::LDeltaA).clone()));
+    assert_eq!(g1, &l_da * &(&det_a * &det_a));
+    // The roots of the paper's polynomial are roots of the eliminated one, and e adds no
+    // positive root that has a finite trim: analyze reports exactly the paper's jump points.
+    let u = |p: &Poly| univariate(p, s.p0);
+    let (j, jp) = (u(&lhs), u(&paper));
+    assert!(j.div_rem(&jp).1.is_zero());
+    let a = analyze(&Aircraft::a(), de()).unwrap();
+    assert_eq!(a.jump.len(), 2);
+}
+
+#[test]
+fn generated_trim_with_aileron_yaw_satisfies_all_five_pss_equations() {
+    let mut rng = Lcg(77);
+    let mut checked = 0;
+    for _ in 0..20 {
+        let k = random_yawing(&mut rng);
+        let g = paper_tests::generated_derivatives(&k);
+        for p0 in [0.3, 1.1, 2.0, 3.3] {
+            let dr = 0.01;
+            let t = roll_criterion::trim(&g, p0, de(), dr);
+            if !t.delta_a.is_finite() {
+                continue;
+            }
+            let x = [t.alpha, t.beta, p0, t.q, t.r];
+            let res = pss_rhs(&k, &x, &[t.delta_a, de(), dr]);
+            let scale = x
+                .iter()
+                .chain([&t.delta_a])
+                .fold(1.0f64, |m, v| m.max(v.abs()));
+            assert!(
+                res.iter().all(|r| r.abs() < 1e-9 * scale * 300.0),
+                "{res:?}"
+            );
+            // It is the branch that continues the trim without aileron yaw: the trim of
+            // smallest |delta_a| among the oracle's.
+            let b = trim_branches(&k, p0, de(), dr);
+            let near = b
+                .iter()
+                .min_by(|x, y| x.1.abs().total_cmp(&y.1.abs()))
+                .unwrap();
+            assert!(
+                (near.1 - t.delta_a).abs() < 1e-9 * (1.0 + near.1.abs()),
+                "{near:?} vs {t:?}"
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 40, "{checked}");
+}

@@ -38,6 +38,7 @@ pub const DERIVATIVES: super::Derivatives = super::Derivatives {
     n_beta: 5.67,
     n_delta_a: 0.0,
     n_delta_r: -1.0,
+    l_delta_r: 0.0,
 };
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`

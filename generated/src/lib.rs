@@ -67,6 +67,8 @@ pub struct Derivatives {
     pub n_delta_a: f64,
     /// `n_delta_r`, 1/s^2 (Table A.1).
     pub n_delta_r: f64,
+    /// `l_delta_r`, 1/s^2 (Table A.1).
+    pub l_delta_r: f64,
 }
 /// Pseudo-steady trim of the unconstrained roll at roll rate P0 (Eqs 3-4 and the roll equation).
 #[derive(Clone, Copy, Debug, PartialEq)]

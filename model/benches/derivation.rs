@@ -34,7 +34,7 @@ fn analyze_aircraft(name: &str) -> usize {
 #[divan::bench]
 fn baseline_numeric_trim_and_eigenvalues_one_p0() -> f64 {
     let k = Aircraft::a().values_f64();
-    let [c, d, e, za, yb, lp, lr, lb, _lda, mq, ma, mde, np, nr, nb, _nda, _ndr] = k;
+    let [c, d, e, za, yb, lp, lr, lb, _lda, mq, ma, mde, np, nr, nb, _nda, _ndr, _ldr] = k;
     let (p0, de) = (divan::black_box(1.7), 2f64.to_radians());
     let a = Matrix4::new(
         za,

@@ -18,8 +18,8 @@ use std::sync::OnceLock;
 /// Every symbol of the model, created once in a fixed order (which fixes every output order).
 #[derive(Debug)]
 pub struct Symbols {
-    /// The 17 parameters in [`Param::ALL`] order.
-    pub params: [Sym; 17],
+    /// The 18 parameters in [`Param::ALL`] order.
+    pub params: [Sym; 18],
     /// Aileron deflection, rad.
     pub delta_a: Sym,
     /// Elevator deflection, rad.

@@ -7,8 +7,9 @@
 use nalgebra::{Matrix4, Matrix5, Vector4};
 
 /// Parameter values in the order C, D, E, z_alpha, y_beta, l_p, l_r, l_beta, l_delta_a, m_q,
-/// m_alpha, m_delta_e, n_p, n_r, n_beta, n_delta_a, n_delta_r (the order of `model::aircraft::Param::ALL`).
-pub type Params = [f64; 17];
+/// m_alpha, m_delta_e, n_p, n_r, n_beta, n_delta_a, n_delta_r, l_delta_r (the order of
+/// `model::aircraft::Param::ALL`).
+pub type Params = [f64; 18];
 
 /// Named access to [`Params`].
 #[allow(missing_docs)]
@@ -30,6 +31,7 @@ pub mod ix {
     pub const NB: usize = 14;
     pub const NDA: usize = 15;
     pub const NDR: usize = 16;
+    pub const LDR: usize = 17;
 }
 
 /// Appendix A.2 by hand: d/dt [alpha, beta, p, q, r] for controls u = [delta_a, delta_e, delta_r].
@@ -130,7 +132,7 @@ pub fn real_eigenvalues(j: &Matrix5<f64>) -> Vec<f64> {
 /// it so that nothing is tuned to the paper's aircraft A and B.
 pub fn random_params(rng: &mut Lcg) -> Params {
     use ix::*;
-    let mut k = [0.0; 17];
+    let mut k = [0.0; 18];
     let (ix_, iy, iz) = (1.0, rng.range(2.0, 8.0), rng.range(2.0, 9.0));
     k[C] = (iz - ix_) / iy;
     k[D] = (iy - ix_) / iz;

@@ -36,6 +36,7 @@ fn derivatives(k: &Params) -> gen::Derivatives {
         n_beta: k[ix::NB],
         n_delta_a: k[ix::NDA],
         n_delta_r: k[ix::NDR],
+        l_delta_r: k[ix::LDR],
     }
 }
 

@@ -29,7 +29,9 @@
 //! names the file, the line and column, the key with its table, and what was expected.
 
 use super::convert::{self, BodyAxisInput, Coefficient, Density};
-use super::{decimal_to_rational, rational_to_f64, Aircraft, Limits, Param, Validity};
+use super::{
+    decimal_to_rational, f64_to_rational, rational_to_f64, Aircraft, Limits, Param, Validity,
+};
 use super::{DEFAULT_SPEED_M_S, VALIDITY_DEFAULT_DEG};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -361,7 +363,10 @@ fn read_document(text: &str, file: &str) -> Result<Parsed, AircraftError> {
                     })
                 }
             },
-            table => match tables_of_format().iter().find(|(t, _)| *t == table) {
+            table => match tables_of_format()
+                .iter()
+                .find(|(t, _)| !t.is_empty() && *t == table)
+            {
                 Some((_, keys)) => tables.push((key, cx.table(key, value, keys)?)),
                 None => return Err(cx.unknown("", key)),
             },
@@ -800,9 +805,13 @@ impl Cx<'_> {
                     value: written,
                 })
             }
-            // The literal as written, never the f64 the parser made of it.
-            Kind::Float(_) => decimal_to_rational(&written.replace('_', ""))
-                .ok_or_else(|| out_of_range(F64_RANGE))?,
+            // The literal as written (in full: `written` is shortened for messages), never the
+            // f64 the parser made of it.
+            Kind::Float(x) => match value.span.as_ref().and_then(|s| self.text.get(s.clone())) {
+                Some(literal) => decimal_to_rational(&literal.trim().replace('_', ""))
+                    .ok_or_else(|| out_of_range(F64_RANGE))?,
+                None => f64_to_rational(*x).ok_or_else(|| out_of_range(F64_RANGE))?,
+            },
             Kind::String(s) if s.contains('/') => fraction_to_rational(s).ok_or_else(|| {
                 out_of_range(
                     "a number, or an exact fraction as a string `\"p/q\"` with decimal \
@@ -1889,6 +1898,13 @@ speed = 150.0
         let q = |s: &str| decimal_to_rational(s).unwrap();
         assert_eq!(*a.exact(Param::Lp), q("-0.1000000000000000000001"));
         assert_ne!(*a.exact(Param::Lp), q("-0.1"));
+        // longer than any message shows: every digit counts
+        let long = format!("-21.7529{}1", "0".repeat(100));
+        let a = parse(&replace("l_p = -21.7529", &format!("l_p = {long}")), FILE).unwrap();
+        assert_eq!(*a.exact(Param::Lp), q(&long));
+        assert_ne!(*a.exact(Param::Lp), q("-21.7529"));
+        // an empty quoted key is unknown, not a table
+        err(&format!("\"\" = 1\n{GOOD}"), 1, &["unknown key ``"]);
         // underscores, a plus sign and an exponent
         let a = parse(&replace("l_r = 1.5207", "l_r = +1_5.207e-1"), FILE).unwrap();
         assert_eq!(*a.exact(Param::Lr), q("1.5207"));

@@ -425,7 +425,15 @@ pub fn convert(input: &BodyAxisInput) -> Converted {
     }
     let mut principal = [ix_p, input.iy.clone(), iz_p];
     if rounded {
-        let round = |x: &BigRational| q(f(x));
+        // A value beyond f64 stays exact here, for the loader to refuse with its name.
+        let round = |x: &BigRational| {
+            let v = f(x);
+            if v.is_finite() {
+                q(v)
+            } else {
+                x.clone()
+            }
+        };
         derivatives = derivatives.iter().map(round).collect();
         principal = principal.map(|x| round(&x));
     }
@@ -837,6 +845,25 @@ Cn_delta_r = -0.05
             24,
             &["unknown key `coefficients.cm_q`", "did you mean `Cm_q`?"],
         );
+    }
+
+    #[test]
+    fn conversions_beyond_f64_are_refused_and_nothing_panics() {
+        err(
+            &body("mass = 10000", "mass = 1e-310"), // z_alpha = -6000 / m = -6e313
+            15,
+            &["derivatives.z_alpha (converted)", "range of f64"],
+        );
+        // principal axes at 45 deg (ix = iz), and every prefix of two files: no panic
+        let _ = parse(
+            &body("iz = 50000", "iz = 10000").replacen("ixz = 0", "ixz = 5", 1),
+            FILE,
+        );
+        for text in [BODY, fighter_text()] {
+            for (i, _) in text.char_indices() {
+                let _ = parse(&text[..i], FILE);
+            }
+        }
     }
 
     #[test]

@@ -880,6 +880,27 @@ impl Cx<'_> {
         self.positive(table, entry, what)
     }
 
+    /// C, D, E computed from moments of inertia, refused when one does not fit in f64 (moments
+    /// of wildly different sizes, such as ix = 1e-308).
+    fn finite_coefficients(
+        &self,
+        table: &Table<'_>,
+        coeffs: [BigRational; 3],
+    ) -> Result<Vec<BigRational>, AircraftError> {
+        for (name, c) in ["C", "D", "E"].iter().zip(&coeffs) {
+            let x = rational_to_f64(c);
+            if !x.is_finite() {
+                return Err(AircraftError::InvalidValue {
+                    at: self.at(table.span.as_ref()),
+                    key: format!("inertia.{name} (computed from the moments)"),
+                    expected: format!("{F64_RANGE}: moments of inertia of comparable size"),
+                    value: format!("{x:e}"),
+                });
+            }
+        }
+        Ok(coeffs.to_vec())
+    }
+
     fn mixed(&self, key: &Key, problem: String) -> AircraftError {
         AircraftError::MixedFormats {
             at: self.at_key(key),
@@ -969,7 +990,7 @@ impl Cx<'_> {
         }
         match out.as_slice() {
             [c, d, e] if moments.is_empty() => Ok(vec![c.clone(), d.clone(), e.clone()]),
-            [ix, iy, iz] => Ok(inertia_coefficients(ix, iy, iz).to_vec()),
+            [ix, iy, iz] => self.finite_coefficients(table, inertia_coefficients(ix, iy, iz)),
             _ => Err(AircraftError::InertiaSet {
                 at: self.at(table.span.as_ref()),
                 problem: "incomplete set".to_string(),
@@ -1222,7 +1243,20 @@ impl Cx<'_> {
                 value: "0 (l_delta_a in principal axes)".to_string(),
             });
         }
-        let mut values = inertia_coefficients(ix, iy, iz).to_vec();
+        for (p, v) in Param::ALL.iter().skip(3).zip(&converted.derivatives) {
+            let x = rational_to_f64(v);
+            if !x.is_finite() {
+                return Err(AircraftError::InvalidValue {
+                    at: self.at(coefficients.span.as_ref()),
+                    key: format!("derivatives.{} (converted)", p.key()),
+                    expected: format!(
+                        "{F64_RANGE}: check the units of `[flight]`, `[geometry]` and `[inertia]`"
+                    ),
+                    value: format!("{x:e}"),
+                });
+            }
+        }
+        let mut values = self.finite_coefficients(inertia, inertia_coefficients(ix, iy, iz))?;
         values.extend(converted.derivatives.iter().cloned());
         Ok(Aircraft::new(name, values, converted.speed_f64()))
     }
@@ -1773,6 +1807,19 @@ speed = 150.0
             );
             assert!(matches!(e, AircraftError::NonPositiveInertia { .. }));
         }
+    }
+
+    #[test]
+    fn inertia_ratios_beyond_f64_are_refused() {
+        let text = replace(
+            "C = 0.959\nD = 0.786\nE = 0.705\n",
+            "ix = 1e-309\niy = 5.5\niz = 6.1\n", // E = 0.6 / ix = 6e308
+        );
+        err(
+            &text,
+            2,
+            &["inertia.E (computed from the moments)", "range of f64"],
+        );
     }
 
     #[test]

@@ -194,6 +194,11 @@ impl Converted {
     /// the output gives exactly the aircraft the body-axis file gives.
     pub fn to_toml(&self, aircraft: &Aircraft, file: &str) -> String {
         let mut out = String::new();
+        // The path goes into a comment: no control character may end it.
+        let file: String = file
+            .chars()
+            .map(|c| if c.is_control() { '?' } else { c })
+            .collect();
         let precision = if self.rounded {
             "each value went through f64 (the ISA density and/or the cosine and sine of the\n\
              # tilt) and was rounded once to the nearest f64, so it is within about 1e-16\n\

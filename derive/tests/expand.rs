@@ -38,8 +38,8 @@ const B: parametric::Derivatives = parametric::Derivatives {
     n_r: -0.235,
     n_beta: 5.67,
     n_delta_a: 0.0,
-    l_delta_r: 0.0,
     n_delta_r: -1.0,
+    l_delta_r: 0.0,
 };
 
 fn assert_close(got: f64, want: f64, rel: f64, what: &str) {

@@ -3,17 +3,21 @@
 //! Every value is held as the exact rational its decimal literal denotes (`-13.52504` is
 //! `-338126/25000`), so that the symbolic derivation specialised to an aircraft is exact and the
 //! only rounding happens once, when a result is printed or emitted. Built-in aircraft A and B are
-//! Table A.1 of the paper; users bring their own as TOML (see [`crate::aircraft::load`]).
+//! Table A.1 of the paper, read from `aircraft/a.toml` and `aircraft/b.toml` (compiled in, so the
+//! table exists once); users bring their own as TOML, either dimensional or as nondimensional
+//! body-axis coefficients (see [`load`] and [`convert`]).
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{ToPrimitive, Zero};
 use std::str::FromStr;
+use std::sync::OnceLock;
 
+pub mod convert;
 mod load;
-pub use load::{load, parse, AircraftError, Location};
+pub use load::{convert_file, load, parse, AircraftError, Location};
 
-/// The seventeen parameters of the PSS model (Appendix A.2), in the paper's notation.
+/// The eighteen parameters of the PSS model (Appendix A.2), in the paper's notation.
 ///
 /// The order is the order of the fields of the generated `Derivatives` struct and of the
 /// TOML keys in error messages; it never changes silently.
@@ -151,6 +155,10 @@ impl Param {
 /// terms (g/V = 0.065 1/s), not the PSS model or the criterion.
 pub const DEFAULT_SPEED_M_S: f64 = 150.0;
 
+/// Default of both `[validity]` limits, deg: beyond about 30 deg of alpha or beta linear
+/// aerodynamics of a fighter-like aircraft are no longer trusted (stall, vortex breakdown).
+pub const VALIDITY_DEFAULT_DEG: f64 = 30.0;
+
 /// Control-surface deflection limits from the optional `[limits]` table, degrees (None: no limit).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Limits {
@@ -174,13 +182,14 @@ pub struct Validity {
 impl Default for Validity {
     fn default() -> Self {
         Validity {
-            alpha_max_deg: 30.0,
-            beta_max_deg: 30.0,
+            alpha_max_deg: VALIDITY_DEFAULT_DEG,
+            beta_max_deg: VALIDITY_DEFAULT_DEG,
         }
     }
 }
 
-/// One aircraft: a name, the 18 exact parameters, and the speed for the 7th-order model.
+/// One aircraft: a name, the 18 exact parameters, the speed for the 7th-order model, and the
+/// control limits and validity range the reports are checked against.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Aircraft {
     /// Display name, e.g. "Aircraft A".
@@ -188,14 +197,15 @@ pub struct Aircraft {
     values: Vec<BigRational>,
     /// Flight speed in m/s (only used by the g/V terms of the 7th-order model, Appendix A.1).
     pub speed: f64,
-    /// Control limits (`[limits]`), none by default.
+    /// Control deflection limits (`[limits]`; none by default).
     pub limits: Limits,
-    /// Validity range of the linear aerodynamics (`[validity]`), 30 deg by default.
+    /// Range of alpha and beta in which the model is trusted (`[validity]`; 30 deg by default).
     pub validity: Validity,
 }
 
 impl Aircraft {
-    /// Builds an aircraft from exact values in [`Param::ALL`] order.
+    /// Builds an aircraft from exact values in [`Param::ALL`] order, without limits and with the
+    /// default validity range.
     pub fn new(name: impl Into<String>, values: Vec<BigRational>, speed: f64) -> Self {
         assert_eq!(values.len(), Param::ALL.len(), "one value per parameter");
         Aircraft {
@@ -235,44 +245,18 @@ impl Aircraft {
         out
     }
 
-    /// Aircraft A of Table A.1 (after ref. 9 of the paper).
+    /// Aircraft A of Table A.1 (after ref. 9 of the paper), from `aircraft/a.toml`.
     pub fn a() -> Self {
-        Aircraft::from_decimals(
-            "Aircraft A",
-            [
-                "0.959",
-                "0.786",
-                "0.705",
-                "-3.0076",
-                "-0.0558",
-                "-21.7529",
-                "1.5207",
-                "-110.45",
-                "-327.28",
-                "-1.815",
-                "-13.52504",
-                "-33.268",
-                "0",
-                "-0.2608",
-                "3.716",
-                "0",
-                "-1",
-                "0",
-            ],
-            DEFAULT_SPEED_M_S,
-        )
+        static A: OnceLock<Aircraft> = OnceLock::new();
+        A.get_or_init(|| builtin_file(include_str!("../../aircraft/a.toml"), "aircraft/a.toml"))
+            .clone()
     }
 
-    /// Aircraft B of Table A.1 (after ref. 2 of the paper).
+    /// Aircraft B of Table A.1 (after ref. 2 of the paper), from `aircraft/b.toml`.
     pub fn b() -> Self {
-        Aircraft::from_decimals(
-            "Aircraft B",
-            [
-                "0.949", "0.716", "0.727", "-1.329", "-0.196", "-3.933", "0.126", "-9.99",
-                "-45.83", "-0.814", "-23.18", "-28.37", "0", "-0.235", "5.67", "0", "-1", "0",
-            ],
-            DEFAULT_SPEED_M_S,
-        )
+        static B: OnceLock<Aircraft> = OnceLock::new();
+        B.get_or_init(|| builtin_file(include_str!("../../aircraft/b.toml"), "aircraft/b.toml"))
+            .clone()
     }
 
     /// A built-in aircraft by its short name (`A` or `B`, case-insensitive).
@@ -282,6 +266,14 @@ impl Aircraft {
             "B" => Some(Aircraft::b()),
             _ => None,
         }
+    }
+}
+
+/// A compiled-in aircraft file; `builtin_aircraft_are_table_a1` tests that both parse.
+fn builtin_file(text: &str, file: &str) -> Aircraft {
+    match parse(text, file) {
+        Ok(a) => a,
+        Err(e) => panic!("built-in aircraft file does not load: {e}"),
     }
 }
 
@@ -330,8 +322,10 @@ pub fn decimal_to_rational(s: &str) -> Option<BigRational> {
 
 /// The exact rational denoted by the shortest decimal that round-trips to `x`.
 ///
-/// TOML numbers arrive as f64; Rust prints the shortest round-trip decimal, which is the literal
-/// the user wrote whenever it had at most 17 significant digits. Returns `None` for NaN or inf.
+/// For values computed in f64 (the ISA density, the principal-axis rotation, random test
+/// aircraft): Rust prints the shortest decimal that round-trips, so this is the simplest exact
+/// rational that rounds to `x`. (TOML numbers do not go through it: the loader reads the literal
+/// the user wrote.) Returns `None` for NaN or inf.
 pub fn f64_to_rational(x: f64) -> Option<BigRational> {
     if !x.is_finite() {
         return None;
@@ -369,8 +363,45 @@ mod tests {
 
     #[test]
     fn builtin_aircraft_are_table_a1() {
-        let a = Aircraft::a();
-        assert_eq!(a.value(Param::MAlpha), -13.52504);
-        assert_eq!(Aircraft::b().value(Param::LDeltaA), -45.83);
+        // Table A.1 of the paper, written out here independently of aircraft/a.toml and b.toml
+        // (n_delta_r = -1 and the speed are the files' own choices; l_delta_r = 0).
+        let a = Aircraft::from_decimals(
+            "Aircraft A",
+            [
+                "0.959",
+                "0.786",
+                "0.705",
+                "-3.0076",
+                "-0.0558",
+                "-21.7529",
+                "1.5207",
+                "-110.45",
+                "-327.28",
+                "-1.815",
+                "-13.52504",
+                "-33.268",
+                "0",
+                "-0.2608",
+                "3.716",
+                "0",
+                "-1",
+                "0",
+            ],
+            150.0,
+        );
+        let b = Aircraft::from_decimals(
+            "Aircraft B",
+            [
+                "0.949", "0.716", "0.727", "-1.329", "-0.196", "-3.933", "0.126", "-9.99",
+                "-45.83", "-0.814", "-23.18", "-28.37", "0", "-0.235", "5.67", "0", "-1", "0",
+            ],
+            150.0,
+        );
+        assert_eq!(Aircraft::a(), a);
+        assert_eq!(Aircraft::b(), b);
+        assert_eq!(Aircraft::builtin("a"), Some(a));
+        assert_eq!(Aircraft::builtin("B"), Some(b));
+        assert_eq!(Aircraft::builtin("C"), None);
+        assert_eq!(Aircraft::a().value(Param::MAlpha), -13.52504);
     }
 }

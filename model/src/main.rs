@@ -104,6 +104,11 @@ enum Command {
         #[arg(long)]
         csv: Option<std::path::PathBuf>,
     },
+    /// Print the dimensional principal-axis TOML equivalent to a nondimensional body-axis file.
+    Convert {
+        /// Path of a nondimensional body-axis aircraft TOML file.
+        file: std::path::PathBuf,
+    },
     /// Write the generated criterion crate (generated/) and docs/formulas.tex.
     Emit {
         /// Write nothing; exit 1 naming every stale file.
@@ -273,6 +278,13 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                 st.p_max,
                 st.beta_mean.to_degrees(),
                 st.beta_peak_abs.to_degrees()
+            );
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Convert { file } => {
+            print!(
+                "{}",
+                aircraft::convert_file(&file).map_err(|e| e.to_string())?
             );
             Ok(ExitCode::SUCCESS)
         }

@@ -1,6 +1,6 @@
 //! Loading an aircraft from a hand-written TOML file, exactly, with errors that point at the line.
 //!
-//! The format is
+//! Two formats are accepted. The dimensional principal-axis format of Table A.1:
 //!
 //! ```toml
 //! name = "Aircraft A"   # optional, default: the file stem
@@ -8,33 +8,38 @@
 //! C = 0.959
 //! D = 0.786
 //! E = 0.705
-//! # ... or ix, iy, iz (any one unit), from which C, D, E are computed exactly
+//! # ... or ix, iy, iz (principal axes, any one unit), from which C, D, E are computed exactly
 //! [derivatives]         # dimensional, 1/s or 1/s^2, angles in rad
 //! z_alpha = -3.0076
-//! # ... every key of Param::ALL after C, D, E; n_delta_r is optional (default -1)
+//! # ... every key of Param::ALL after C, D, E; n_delta_r (default -1) and l_delta_r (default 0)
+//! # are optional
 //! [flight]              # optional
 //! speed = 150.0         # m/s, optional, default DEFAULT_SPEED_M_S
 //! ```
 //!
-//! Every number enters as the exact rational of the decimal the user wrote (through
-//! [`f64_to_rational`]); `C = (iz - ix)/iy`, `D = (iy - ix)/iz` and `E = (iz - iy)/ix` are computed
-//! in exact rational arithmetic. Every error names the file, the line and column, the key with its
-//! table, and what was expected.
+//! and the nondimensional body-axis format (`[flight]` speed with density or altitude,
+//! `[geometry]`, `[inertia]` ix, iy, iz, ixz, `[coefficients]`), which
+//! [`crate::aircraft::convert`] turns into the first. Both take the optional `[limits]` and
+//! `[validity]` tables. The tables of one format may not be mixed with those of the other.
 //!
-//! Line numbers come from the spans of the `toml` crate. Tables created implicitly (by dotted keys
-//! such as `derivatives.l_p = 1`) carry no span of their own in `toml` 0.8, which makes
-//! `toml::Spanned<T>` fail on them; this module therefore reads the document into its own `Node`
-//! tree, which speaks the `Spanned` protocol of `serde_spanned` 0.6 and accepts values without a
-//! span as well.
+//! Every number enters as the exact rational of the decimal literal the user wrote (the literal
+//! text comes from `toml_edit`'s spans, never from an f64); a string `"p/q"` is the exact fraction
+//! p/q (what `convert` writes where a value is not a terminating decimal). `C = (iz - ix)/iy`,
+//! `D = (iy - ix)/iz` and `E = (iz - iy)/ix` are computed in exact rational arithmetic. Every error
+//! names the file, the line and column, the key with its table, and what was expected.
 
-use super::{f64_to_rational, Aircraft, Param, DEFAULT_SPEED_M_S};
+use super::convert::{self, BodyAxisInput, Coefficient, Density};
+use super::{
+    decimal_to_rational, f64_to_rational, rational_to_f64, Aircraft, Limits, Param, Validity,
+};
+use super::{DEFAULT_SPEED_M_S, VALIDITY_DEFAULT_DEG};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
-use serde::de::{self, Deserialize, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
 use std::fmt;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
+use std::str::FromStr;
 
 /// Where in an aircraft file an error was found (1-based line and column, in characters).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -53,6 +58,11 @@ impl fmt::Display for Location {
     }
 }
 
+/// What the two formats consist of, for messages about mixing them.
+const FORMATS: &str = "either the dimensional principal-axis format (`[inertia]` C, D, E or ix, \
+     iy, iz, and `[derivatives]`) or the nondimensional body-axis format (`[flight]` speed and \
+     density or altitude, `[geometry]`, `[inertia]` ix, iy, iz, ixz, and `[coefficients]`)";
+
 /// Why an aircraft file could not be loaded. Every message names the file, the line and column,
 /// the key (with its table, e.g. `derivatives.l_p`) and what was expected.
 #[derive(Debug, thiserror::Error)]
@@ -68,12 +78,25 @@ pub enum AircraftError {
     /// The text is not valid TOML.
     #[error("{at}: TOML syntax error: {message}")]
     Syntax {
-        /// Where the `toml` crate located the error.
+        /// Where the parser located the error.
         at: Location,
-        /// The `toml` crate's message, on one line.
+        /// The parser's message, on one line.
         message: String,
     },
-    /// A required table (`[inertia]` or `[derivatives]`) is absent.
+    /// A control character (NUL, ...) that TOML allows nowhere.
+    #[error(
+        "{at}: {place}: expected printable text (TOML allows no control character but tab in \
+         keys, strings and comments), found {found}"
+    )]
+    ControlCharacter {
+        /// Where the character is.
+        at: Location,
+        /// The key whose line or value holds it (`key `name``), or `line N`.
+        place: String,
+        /// The character, e.g. `U+0000 (NUL)`.
+        found: String,
+    },
+    /// A required table (`[inertia]`, `[derivatives]`, ...) is absent.
     #[error("{at}: missing table `[{table}]`: expected {expected}")]
     MissingTable {
         /// Line 1 of the file.
@@ -83,7 +106,7 @@ pub enum AircraftError {
         /// What the table must contain.
         expected: String,
     },
-    /// A key that must hold a table (`inertia`, `derivatives`, `flight`) holds something else.
+    /// A key that must hold a table (`inertia`, `derivatives`, `flight`, ...) holds something else.
     #[error("{at}: key `{key}`: expected a table `[{key}]` with keys {expected}, found {found}")]
     NotATable {
         /// Where the value is.
@@ -141,6 +164,19 @@ pub enum AircraftError {
         /// The value as written.
         value: String,
     },
+    /// A number outside the range this key accepts (out of range of f64 or i64, not positive,
+    /// an altitude outside the ISA troposphere, ...).
+    #[error("{at}: key `{key}`: expected {expected}, found `{value}`")]
+    InvalidValue {
+        /// Where the value is.
+        at: Location,
+        /// The key, with its table.
+        key: String,
+        /// What the key accepts.
+        expected: String,
+        /// The value as written (shortened when long).
+        value: String,
+    },
     /// `l_delta_a = 0`: the aileron has no roll authority.
     #[error(
         "{at}: key `{key}`: expected a nonzero aileron derivative, found `{value}` (with no roll \
@@ -149,7 +185,7 @@ pub enum AircraftError {
     ZeroAileronAuthority {
         /// Where the value is.
         at: Location,
-        /// `derivatives.l_delta_a`.
+        /// `derivatives.l_delta_a` (or `coefficients.Cl_delta_a`).
         key: String,
         /// The value as written.
         value: String,
@@ -175,6 +211,17 @@ pub enum AircraftError {
         /// The value as written.
         value: String,
     },
+    /// Body-axis inertias whose principal moments are not those of a rigid body.
+    #[error(
+        "{at}: table `[inertia]`: {problem}; expected principal moments > 0 that satisfy the \
+         triangle inequalities ix' + iy >= iz', ix' + iz' >= iy, iy + iz' >= ix'"
+    )]
+    UnphysicalInertia {
+        /// The `[inertia]` header.
+        at: Location,
+        /// Which condition fails, with the principal moments.
+        problem: String,
+    },
     /// A flight speed that is zero or negative.
     #[error("{at}: key `{key}`: expected a speed in m/s > 0, found `{value}`")]
     InvalidSpeed {
@@ -185,6 +232,24 @@ pub enum AircraftError {
         /// The value as written.
         value: String,
     },
+    /// Tables or keys of the two formats in one file.
+    #[error("{at}: {problem}; expected {FORMATS}, not a mix")]
+    MixedFormats {
+        /// The key that mixes the formats.
+        at: Location,
+        /// What is mixed, naming the keys.
+        problem: String,
+    },
+    /// `convert` was given a file that is already dimensional.
+    #[error(
+        "{at}: expected a nondimensional body-axis file (with `[geometry]` and \
+         `[coefficients]`) to convert; this file is already in the dimensional principal-axis \
+         format"
+    )]
+    AlreadyDimensional {
+        /// Line 1 of the file.
+        at: Location,
+    },
 }
 
 impl AircraftError {
@@ -193,16 +258,21 @@ impl AircraftError {
         match self {
             AircraftError::Io { .. } => None,
             AircraftError::Syntax { at, .. }
+            | AircraftError::ControlCharacter { at, .. }
             | AircraftError::MissingTable { at, .. }
             | AircraftError::NotATable { at, .. }
             | AircraftError::MissingKey { at, .. }
             | AircraftError::UnknownKey { at, .. }
             | AircraftError::WrongType { at, .. }
             | AircraftError::NotFinite { at, .. }
+            | AircraftError::InvalidValue { at, .. }
             | AircraftError::ZeroAileronAuthority { at, .. }
             | AircraftError::InertiaSet { at, .. }
             | AircraftError::NonPositiveInertia { at, .. }
-            | AircraftError::InvalidSpeed { at, .. } => Some(at),
+            | AircraftError::UnphysicalInertia { at, .. }
+            | AircraftError::InvalidSpeed { at, .. }
+            | AircraftError::MixedFormats { at, .. }
+            | AircraftError::AlreadyDimensional { at } => Some(at),
         }
     }
 }
@@ -216,33 +286,63 @@ fn hint_suffix(hint: &Option<String>) -> String {
 
 /// Reads an aircraft file and parses it with [`parse`]; messages name the file by its path.
 pub fn load(path: &Path) -> Result<Aircraft, AircraftError> {
-    let text = std::fs::read_to_string(path).map_err(|source| AircraftError::Io {
-        path: path.to_path_buf(),
-        source,
-    })?;
-    parse(&text, &path.display().to_string())
+    parse(&read(path)?, &path.display().to_string())
 }
 
 /// Parses the TOML text of an aircraft; `file` is the name used in error messages and, without a
 /// `name` key, its stem is the aircraft's name.
 pub fn parse(text: &str, file: &str) -> Result<Aircraft, AircraftError> {
+    match read_document(text, file)? {
+        Parsed::Dimensional(a) => Ok(a),
+        Parsed::BodyAxis(c) => Ok(c.aircraft),
+    }
+}
+
+/// Reads a nondimensional body-axis file and writes the equivalent dimensional principal-axis
+/// TOML (see [`convert::Converted::to_toml`]); a dimensional file is refused.
+pub fn convert_file(path: &Path) -> Result<String, AircraftError> {
+    let file = path.display().to_string();
+    match read_document(&read(path)?, &file)? {
+        Parsed::BodyAxis(c) => Ok(c.converted.to_toml(&c.aircraft, &file)),
+        Parsed::Dimensional(_) => Err(AircraftError::AlreadyDimensional {
+            at: Location {
+                file,
+                line: 1,
+                column: 1,
+            },
+        }),
+    }
+}
+
+fn read(path: &Path) -> Result<String, AircraftError> {
+    std::fs::read_to_string(path).map_err(|source| AircraftError::Io {
+        path: path.to_path_buf(),
+        source,
+    })
+}
+
+/// A body-axis file: the aircraft and the conversion it came from (for `convert`).
+struct BodyAxis {
+    aircraft: Aircraft,
+    converted: convert::Converted,
+}
+
+enum Parsed {
+    Dimensional(Aircraft),
+    BodyAxis(Box<BodyAxis>),
+}
+
+fn read_document(text: &str, file: &str) -> Result<Parsed, AircraftError> {
     let cx = Cx { text, file };
-    let root: Node = toml::from_str(text).map_err(|e| AircraftError::Syntax {
-        at: cx.at(e.span().as_ref()),
-        message: one_line(e.message()),
-    })?;
-    let Kind::Table(entries) = &root.kind else {
-        return Err(AircraftError::Syntax {
-            at: cx.at(None),
-            message: "the document is not a table".to_string(),
-        });
-    };
+    if let Some(e) = cx.control_character() {
+        return Err(e);
+    }
+    let doc = toml_edit::ImDocument::parse(text).map_err(|e| cx.syntax_error(&e))?;
+    let entries = entries_of(doc.as_table());
 
     let mut name = None;
-    let mut inertia = None;
-    let mut derivatives = None;
-    let mut flight = None;
-    for (key, value) in entries {
+    let mut tables: Vec<(&Key, Table<'_>)> = Vec::new();
+    for (key, value) in &entries {
         match key.name.as_str() {
             "name" => match &value.kind {
                 Kind::String(s) if !s.trim().is_empty() => name = Some(s.clone()),
@@ -263,54 +363,144 @@ pub fn parse(text: &str, file: &str) -> Result<Aircraft, AircraftError> {
                     })
                 }
             },
-            "inertia" => inertia = Some(cx.table(key, value, &INERTIA_KEYS)?),
-            "derivatives" => derivatives = Some(cx.table(key, value, &derivative_keys())?),
-            "flight" => flight = Some(cx.table(key, value, &FLIGHT_KEYS)?),
-            _ => return Err(cx.unknown("", key)),
+            table => match tables_of_format()
+                .iter()
+                .find(|(t, _)| !t.is_empty() && *t == table)
+            {
+                Some((_, keys)) => tables.push((key, cx.table(key, value, keys)?)),
+                None => return Err(cx.unknown("", key)),
+            },
         }
     }
-
-    let inertia = inertia.ok_or_else(|| AircraftError::MissingTable {
+    let find = |t: &str| tables.iter().find(|(k, _)| k.name == t);
+    let body_axis = ["geometry", "coefficients"]
+        .iter()
+        .find_map(|t| find(t).map(|(k, _)| *k));
+    if let (Some(b), Some((d, _))) = (body_axis, find("derivatives").map(|(k, t)| (*k, t))) {
+        let (first, second) = if b.start() <= d.start() {
+            (b, d)
+        } else {
+            (d, b)
+        };
+        return Err(AircraftError::MixedFormats {
+            at: cx.at_key(second),
+            problem: format!(
+                "table `[{}]` given together with `[{}]`",
+                second.name, first.name
+            ),
+        });
+    }
+    let name = name.unwrap_or_else(|| default_name(file));
+    let limits = match find("limits") {
+        Some((_, t)) => cx.limits(t)?,
+        None => Limits::default(),
+    };
+    let validity = match find("validity") {
+        Some((_, t)) => cx.validity(t)?,
+        None => Validity::default(),
+    };
+    let missing = |table: &str, expected: String| AircraftError::MissingTable {
         at: cx.at(None),
-        table: "inertia".to_string(),
-        expected: "`[inertia]` with either `C`, `D`, `E` or `ix`, `iy`, `iz`".to_string(),
-    })?;
-    let derivatives = derivatives.ok_or_else(|| AircraftError::MissingTable {
-        at: cx.at(None),
-        table: "derivatives".to_string(),
-        expected: format!("`[derivatives]` with keys {}", list(&derivative_keys())),
-    })?;
+        table: table.to_string(),
+        expected,
+    };
 
-    let mut values: Vec<BigRational> = cx.inertia(&inertia)?;
-    values.extend(cx.derivatives(&derivatives)?);
-    let speed = match flight {
-        Some(flight) => cx.flight(&flight)?,
+    if body_axis.is_some() {
+        let table = |t: &'static str| {
+            find(t)
+                .map(|(_, t)| t)
+                .ok_or_else(|| missing(t, format!("`[{t}]` with keys {}", list(&keys_of(t)))))
+        };
+        let flight = table("flight")?;
+        let geometry = table("geometry")?;
+        let inertia = table("inertia")?;
+        let coefficients = table("coefficients")?;
+        let input = cx.body_axis(flight, geometry, inertia, coefficients)?;
+        let converted = convert::convert(&input);
+        let aircraft = cx.body_axis_aircraft(name, &converted, inertia, coefficients)?;
+        let aircraft = Aircraft {
+            limits,
+            validity,
+            ..aircraft
+        };
+        return Ok(Parsed::BodyAxis(Box::new(BodyAxis {
+            aircraft,
+            converted,
+        })));
+    }
+
+    let inertia = find("inertia").map(|(_, t)| t).ok_or_else(|| {
+        missing(
+            "inertia",
+            "`[inertia]` with either `C`, `D`, `E` or `ix`, `iy`, `iz`".to_string(),
+        )
+    })?;
+    let derivatives = find("derivatives").map(|(_, t)| t).ok_or_else(|| {
+        missing(
+            "derivatives",
+            format!("`[derivatives]` with keys {}", list(&derivative_keys())),
+        )
+    })?;
+    let mut values: Vec<BigRational> = cx.inertia(inertia)?;
+    values.extend(cx.derivatives(derivatives)?);
+    let speed = match find("flight") {
+        Some((_, flight)) => cx.flight(flight)?,
         None => DEFAULT_SPEED_M_S,
     };
-    let name = name.unwrap_or_else(|| default_name(file));
-    Ok(Aircraft::new(name, values, speed))
+    let mut aircraft = Aircraft::new(name, values, speed);
+    aircraft.limits = limits;
+    aircraft.validity = validity;
+    Ok(Parsed::Dimensional(aircraft))
 }
 
 // ---------------------------------------------------------------------------------------------
 // Validation
 
-const TOP_KEYS: [&str; 4] = ["name", "inertia", "derivatives", "flight"];
-const INERTIA_KEYS: [&str; 6] = ["C", "D", "E", "ix", "iy", "iz"];
-const FLIGHT_KEYS: [&str; 1] = ["speed"];
-const OPTIONAL_DERIVATIVE: Param = Param::NDeltaR;
+const TOP_KEYS: [&str; 8] = [
+    "name",
+    "inertia",
+    "derivatives",
+    "flight",
+    "geometry",
+    "coefficients",
+    "limits",
+    "validity",
+];
+const INERTIA_KEYS: [&str; 7] = ["C", "D", "E", "ix", "iy", "iz", "ixz"];
+const FLIGHT_KEYS: [&str; 3] = ["speed", "density", "altitude"];
+const GEOMETRY_KEYS: [&str; 4] = ["mass", "wing_area", "span", "chord"];
+const LIMIT_KEYS: [&str; 3] = ["aileron", "elevator", "rudder"];
+const VALIDITY_KEYS: [&str; 2] = ["alpha_max", "beta_max"];
 const DEFAULT_N_DELTA_R: i64 = -1;
+/// ISA troposphere, m: the altitudes for which `flight.altitude` gives a density.
+const ALTITUDE_RANGE_M: (f64, f64) = (0.0, 11_000.0);
 
 fn derivative_keys() -> Vec<&'static str> {
     Param::ALL.iter().skip(3).map(|p| p.key()).collect()
 }
 
+fn keys_of(table: &str) -> Vec<&'static str> {
+    tables_of_format()
+        .into_iter()
+        .find(|(t, _)| *t == table)
+        .map(|(_, k)| k)
+        .unwrap_or_default()
+}
+
 /// The valid keys of each table, `""` being the top level.
-fn tables() -> [(&'static str, Vec<&'static str>); 4] {
+fn tables_of_format() -> [(&'static str, Vec<&'static str>); 8] {
     [
         ("", TOP_KEYS.to_vec()),
         ("inertia", INERTIA_KEYS.to_vec()),
         ("derivatives", derivative_keys()),
         ("flight", FLIGHT_KEYS.to_vec()),
+        ("geometry", GEOMETRY_KEYS.to_vec()),
+        (
+            "coefficients",
+            Coefficient::ALL.iter().map(|c| c.key()).collect(),
+        ),
+        ("limits", LIMIT_KEYS.to_vec()),
+        ("validity", VALIDITY_KEYS.to_vec()),
     ]
 }
 
@@ -346,6 +536,16 @@ fn one_line(message: &str) -> String {
         .join("; ")
 }
 
+/// At most 40 characters of a value as written, for messages (a 400-digit number stays legible).
+fn shorten(s: &str) -> String {
+    let s = s.trim().replace('\n', " ");
+    if s.chars().count() <= 40 {
+        return s;
+    }
+    let head: String = s.chars().take(24).collect();
+    format!("{head}... ({} characters)", s.chars().count())
+}
+
 /// Levenshtein distance over characters.
 fn edit_distance(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();
@@ -369,7 +569,7 @@ fn edit_distance(a: &str, b: &str) -> usize {
 /// or the closest valid key within edit distance 2.
 fn suggestion(table: &str, key: &str) -> Option<String> {
     let lower = key.to_lowercase();
-    let all = tables();
+    let all = tables_of_format();
     let own: &[&str] = all
         .iter()
         .find(|(t, _)| *t == table)
@@ -417,14 +617,39 @@ struct Number {
     written: String,
 }
 
+/// A string `"p/q"` (optional sign, decimal integers, q != 0) as the exact fraction it denotes.
+fn fraction_to_rational(s: &str) -> Option<BigRational> {
+    let (p, q) = s.trim().split_once('/')?;
+    let digits = |t: &str| !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit());
+    let unsigned = p.strip_prefix(['-', '+']).unwrap_or(p);
+    if !digits(unsigned) || !digits(q) || q.len() > 1000 || p.len() > 1000 {
+        return None;
+    }
+    let q = BigInt::from_str(q).ok()?;
+    if q.is_zero() {
+        return None;
+    }
+    Some(BigRational::new(BigInt::from_str(p).ok()?, q))
+}
+
 struct Cx<'a> {
     text: &'a str,
     file: &'a str,
 }
 
+/// What a number key accepts when the literal cannot be read as a finite f64-range number.
+const F64_RANGE: &str =
+    "a finite number within the range of f64 (magnitude at most 1.7976931348623157e308)";
+const I64_RANGE: &str = "an integer within the 64-bit range (magnitude at most \
+     9223372036854775807; write larger values as decimals, e.g. `1.5e20`)";
+
 impl Cx<'_> {
     fn at(&self, span: Option<&Range<usize>>) -> Location {
-        let (line, column) = span.map_or((1, 1), |s| line_col(self.text, s.start));
+        self.at_offset(span.map(|s| s.start))
+    }
+
+    fn at_offset(&self, offset: Option<usize>) -> Location {
+        let (line, column) = offset.map_or((1, 1), |o| line_col(self.text, o));
         Location {
             file: self.file.to_string(),
             line,
@@ -438,6 +663,69 @@ impl Cx<'_> {
 
     fn at_value(&self, key: &Key, value: &Node) -> Location {
         self.at(value.span.as_ref().or(key.span.as_ref()))
+    }
+
+    /// The first control character TOML forbids (all of U+0000-U+001F but tab, LF and CR, and
+    /// U+007F), reported with the key on its line; the parser itself says only "invalid basic
+    /// string" or, through `toml`, nothing at all.
+    fn control_character(&self) -> Option<AircraftError> {
+        let (offset, c) = self
+            .text
+            .char_indices()
+            .find(|&(_, c)| (c < ' ' && !matches!(c, '\t' | '\n' | '\r')) || c == '\u{7f}')?;
+        let mut patched = self.text.to_string();
+        patched.replace_range(offset..offset + c.len_utf8(), " ");
+        let place = match key_at(&patched, offset) {
+            Some(key) => format!("key `{key}`"),
+            None => format!("line {}", line_col(self.text, offset).0),
+        };
+        let name = match c {
+            '\0' => " (NUL)",
+            '\u{7f}' => " (DEL)",
+            '\u{1b}' => " (ESC)",
+            _ => "",
+        };
+        Some(AircraftError::ControlCharacter {
+            at: self.at_offset(Some(offset)),
+            place,
+            found: format!("U+{:04X}{name}", u32::from(c)),
+        })
+    }
+
+    /// A TOML syntax error; for a number the parser cannot hold (an integer past i64, `1e309`, a
+    /// 400-digit literal) the error names the key and the range instead: the literal is replaced
+    /// by `0` of the same length, the text parsed again, and the key found by its position.
+    fn syntax_error(&self, e: &toml_edit::TomlError) -> AircraftError {
+        let message = one_line(e.message());
+        let span = e.span();
+        let number_message = ["number too large", "invalid floating-point number"]
+            .iter()
+            .any(|m| message.contains(m));
+        if let (true, Some(span)) = (number_message, span.as_ref()) {
+            let start = span.start.min(self.text.len());
+            let rest = self.text.get(start..).unwrap_or("");
+            let len = rest
+                .find(|c: char| c.is_whitespace() || matches!(c, ',' | ']' | '}' | '#'))
+                .unwrap_or(rest.len());
+            if len > 0 {
+                let literal = &rest[..len];
+                let mut patched = self.text.to_string();
+                patched.replace_range(start..start + len, &format!("0{}", " ".repeat(len - 1)));
+                if let Some(key) = key_at(&patched, start) {
+                    let integer = !literal.contains(['.', 'e', 'E']);
+                    return AircraftError::InvalidValue {
+                        at: self.at_offset(Some(start)),
+                        key,
+                        expected: if integer { I64_RANGE } else { F64_RANGE }.to_string(),
+                        value: shorten(literal),
+                    };
+                }
+            }
+        }
+        AircraftError::Syntax {
+            at: self.at(span.as_ref()),
+            message,
+        }
     }
 
     fn written(&self, value: &Node) -> String {
@@ -459,16 +747,11 @@ impl Cx<'_> {
     }
 
     fn unknown(&self, table: &str, key: &Key) -> AircraftError {
-        let expected = tables()
-            .iter()
-            .find(|(t, _)| *t == table)
-            .map(|(_, keys)| list(keys))
-            .unwrap_or_default();
         AircraftError::UnknownKey {
             at: self.at_key(key),
             key: qualified(table, &key.name),
             hint: suggestion(table, &key.name),
-            expected,
+            expected: list(&keys_of(table)),
         }
     }
 
@@ -507,35 +790,134 @@ impl Cx<'_> {
 
     fn number(&self, table: &str, key: &Key, value: &Node) -> Result<Number, AircraftError> {
         let written = self.written(value);
-        match &value.kind {
-            Kind::Integer(i) => Ok(Number {
-                exact: BigRational::from_integer(BigInt::from(*i)),
-                float: *i as f64,
-                written,
-            }),
-            Kind::Float(x) => match f64_to_rational(*x) {
-                Some(exact) => Ok(Number {
-                    exact,
-                    float: *x,
-                    written,
-                }),
-                None => Err(AircraftError::NotFinite {
+        let out_of_range = |expected: &str| AircraftError::InvalidValue {
+            at: self.at_value(key, value),
+            key: qualified(table, &key.name),
+            expected: expected.to_string(),
+            value: shorten(&written),
+        };
+        let exact = match &value.kind {
+            Kind::Integer(i) => BigRational::from_integer(BigInt::from(*i)),
+            Kind::Float(x) if !x.is_finite() => {
+                return Err(AircraftError::NotFinite {
                     at: self.at_value(key, value),
                     key: qualified(table, &key.name),
                     value: written,
-                }),
+                })
+            }
+            // The literal as written (in full: `written` is shortened for messages), never the
+            // f64 the parser made of it.
+            Kind::Float(x) => match value.span.as_ref().and_then(|s| self.text.get(s.clone())) {
+                Some(literal) => decimal_to_rational(&literal.trim().replace('_', ""))
+                    .ok_or_else(|| out_of_range(F64_RANGE))?,
+                None => f64_to_rational(*x).ok_or_else(|| out_of_range(F64_RANGE))?,
             },
-            other => Err(AircraftError::WrongType {
+            Kind::String(s) if s.contains('/') => fraction_to_rational(s).ok_or_else(|| {
+                out_of_range(
+                    "a number, or an exact fraction as a string `\"p/q\"` with decimal \
+                     integers p and q, q != 0",
+                )
+            })?,
+            other => {
+                return Err(AircraftError::WrongType {
+                    at: self.at_value(key, value),
+                    key: qualified(table, &key.name),
+                    expected: "a number",
+                    found: other.describe(),
+                })
+            }
+        };
+        let float = rational_to_f64(&exact);
+        if !float.is_finite() {
+            return Err(out_of_range(F64_RANGE));
+        }
+        Ok(Number {
+            exact,
+            float,
+            written,
+        })
+    }
+
+    /// A number that must be > 0 (and, through [`Cx::number`], finite).
+    fn positive(
+        &self,
+        table: &Table<'_>,
+        entry: &(Key, Node),
+        expected: &str,
+    ) -> Result<Number, AircraftError> {
+        let (key, value) = entry;
+        let n = self.number(table.name, key, value)?;
+        if !n.exact.is_positive() {
+            return Err(AircraftError::InvalidValue {
                 at: self.at_value(key, value),
-                key: qualified(table, &key.name),
-                expected: "a number",
-                found: other.describe(),
-            }),
+                key: qualified(table.name, &key.name),
+                expected: expected.to_string(),
+                value: shorten(&n.written),
+            });
+        }
+        Ok(n)
+    }
+
+    fn missing_key(&self, table: &Table<'_>, key: &str, expected: String) -> AircraftError {
+        AircraftError::MissingKey {
+            at: self.at(table.span.as_ref()),
+            table: table.name.to_string(),
+            key: qualified(table.name, key),
+            expected,
+        }
+    }
+
+    /// A required key that must be > 0.
+    fn required_positive(
+        &self,
+        table: &Table<'_>,
+        key: &str,
+        what: &str,
+    ) -> Result<Number, AircraftError> {
+        let entry = table
+            .get(key)
+            .ok_or_else(|| self.missing_key(table, key, format!("`{key} = <number>`, {what}")))?;
+        self.positive(table, entry, what)
+    }
+
+    /// C, D, E computed from moments of inertia, refused when one does not fit in f64 (moments
+    /// of wildly different sizes, such as ix = 1e-308).
+    fn finite_coefficients(
+        &self,
+        table: &Table<'_>,
+        coeffs: [BigRational; 3],
+    ) -> Result<Vec<BigRational>, AircraftError> {
+        for (name, c) in ["C", "D", "E"].iter().zip(&coeffs) {
+            let x = rational_to_f64(c);
+            if !x.is_finite() {
+                return Err(AircraftError::InvalidValue {
+                    at: self.at(table.span.as_ref()),
+                    key: format!("inertia.{name} (computed from the moments)"),
+                    expected: format!("{F64_RANGE}: moments of inertia of comparable size"),
+                    value: format!("{x:e}"),
+                });
+            }
+        }
+        Ok(coeffs.to_vec())
+    }
+
+    fn mixed(&self, key: &Key, problem: String) -> AircraftError {
+        AircraftError::MixedFormats {
+            at: self.at_key(key),
+            problem,
         }
     }
 
     /// C, D, E, given or computed from ix, iy, iz.
     fn inertia(&self, table: &Table<'_>) -> Result<Vec<BigRational>, AircraftError> {
+        if let Some((key, _)) = table.get("ixz") {
+            return Err(self.mixed(
+                key,
+                "`inertia.ixz` (a body-axis product of inertia) in a file with `[derivatives]` \
+                 (principal axes)"
+                    .to_string(),
+            ));
+        }
         let mut coeffs = Vec::new();
         let mut moments = Vec::new();
         for (key, value) in table.entries {
@@ -547,12 +929,11 @@ impl Cx<'_> {
             }
         }
         if let (Some((c, _, _)), Some((m, _, _))) = (coeffs.first(), moments.first()) {
-            let (first, second) =
-                if c.span.as_ref().map(|s| s.start) <= m.span.as_ref().map(|s| s.start) {
-                    (c, m)
-                } else {
-                    (m, c)
-                };
+            let (first, second) = if c.start() <= m.start() {
+                (c, m)
+            } else {
+                (m, c)
+            };
             return Err(AircraftError::InertiaSet {
                 at: self.at_key(second),
                 problem: format!(
@@ -609,7 +990,7 @@ impl Cx<'_> {
         }
         match out.as_slice() {
             [c, d, e] if moments.is_empty() => Ok(vec![c.clone(), d.clone(), e.clone()]),
-            [ix, iy, iz] => Ok(vec![(iz - ix) / iy, (iy - ix) / iz, (iz - iy) / ix]),
+            [ix, iy, iz] => self.finite_coefficients(table, inertia_coefficients(ix, iy, iz)),
             _ => Err(AircraftError::InertiaSet {
                 at: self.at(table.span.as_ref()),
                 problem: "incomplete set".to_string(),
@@ -637,30 +1018,40 @@ impl Cx<'_> {
                     }
                     out.push(n.exact.clone());
                 }
-                None if *p == OPTIONAL_DERIVATIVE => {
+                None if *p == Param::NDeltaR => {
                     out.push(BigRational::from_integer(BigInt::from(DEFAULT_N_DELTA_R)));
                 }
                 None if *p == Param::LDeltaR => out.push(BigRational::zero()),
                 None => {
-                    return Err(AircraftError::MissingKey {
-                        at: self.at(table.span.as_ref()),
-                        table: table.name.to_string(),
-                        key: qualified(table.name, p.key()),
-                        expected: format!("`{} = <number>` in {}", p.key(), p.unit()),
-                    })
+                    return Err(self.missing_key(
+                        table,
+                        p.key(),
+                        format!("`{} = <number>` in {}", p.key(), p.unit()),
+                    ))
                 }
             }
         }
         Ok(out)
     }
 
-    /// The flight speed, m/s.
+    /// The flight speed of a dimensional file, m/s.
     fn flight(&self, table: &Table<'_>) -> Result<f64, AircraftError> {
+        for k in ["density", "altitude"] {
+            if let Some((key, _)) = table.get(k) {
+                return Err(self.mixed(
+                    key,
+                    format!(
+                        "`flight.{k}` (used only to convert nondimensional coefficients) in a \
+                         file with `[derivatives]`"
+                    ),
+                ));
+            }
+        }
         let Some((key, value)) = table.get("speed") else {
             return Ok(DEFAULT_SPEED_M_S);
         };
         let n = self.number(table.name, key, value)?;
-        if !(n.float > 0.0 && n.float.is_finite()) {
+        if !n.exact.is_positive() {
             return Err(AircraftError::InvalidSpeed {
                 at: self.at_value(key, value),
                 key: qualified(table.name, &key.name),
@@ -669,6 +1060,249 @@ impl Cx<'_> {
         }
         Ok(n.float)
     }
+
+    /// `[limits]`: deflection limits in degrees, each optional and > 0.
+    fn limits(&self, table: &Table<'_>) -> Result<Limits, AircraftError> {
+        let limit = |k: &str| -> Result<Option<f64>, AircraftError> {
+            table
+                .get(k)
+                .map(|entry| {
+                    self.positive(table, entry, "a deflection limit in degrees > 0")
+                        .map(|n| n.float)
+                })
+                .transpose()
+        };
+        Ok(Limits {
+            aileron_deg: limit("aileron")?,
+            elevator_deg: limit("elevator")?,
+            rudder_deg: limit("rudder")?,
+        })
+    }
+
+    /// `[validity]`: |alpha| and |beta| limits in degrees, each optional (default 30) and > 0.
+    fn validity(&self, table: &Table<'_>) -> Result<Validity, AircraftError> {
+        let angle = |k: &str| -> Result<f64, AircraftError> {
+            match table.get(k) {
+                Some(entry) => self
+                    .positive(table, entry, "an angle in degrees > 0")
+                    .map(|n| n.float),
+                None => Ok(VALIDITY_DEFAULT_DEG),
+            }
+        };
+        Ok(Validity {
+            alpha_max_deg: angle("alpha_max")?,
+            beta_max_deg: angle("beta_max")?,
+        })
+    }
+
+    /// The inputs of a nondimensional body-axis file, each checked where it is written.
+    fn body_axis(
+        &self,
+        flight: &Table<'_>,
+        geometry: &Table<'_>,
+        inertia: &Table<'_>,
+        coefficients: &Table<'_>,
+    ) -> Result<BodyAxisInput, AircraftError> {
+        for k in ["C", "D", "E"] {
+            if let Some((key, _)) = inertia.get(k) {
+                return Err(self.mixed(
+                    key,
+                    format!(
+                        "`inertia.{k}` (an inertia coefficient of the dimensional format) in a \
+                         file with `[geometry]` and `[coefficients]`"
+                    ),
+                ));
+            }
+        }
+        let speed = self.required_positive(flight, "speed", "a speed in m/s > 0")?;
+        let density = match (flight.get("density"), flight.get("altitude")) {
+            (Some(_), Some((key, value))) => {
+                return Err(AircraftError::InvalidValue {
+                    at: self.at_key(key),
+                    key: "flight.altitude".to_string(),
+                    expected: "either `flight.density` or `flight.altitude`, not both".to_string(),
+                    value: shorten(&self.written(value)),
+                })
+            }
+            (Some(entry), None) => Density::Given(
+                self.positive(flight, entry, "a density in kg/m^3 > 0")?
+                    .exact,
+            ),
+            (None, Some((key, value))) => {
+                let n = self.number(flight.name, key, value)?;
+                let (low, high) = ALTITUDE_RANGE_M;
+                if !(n.float >= low && n.float <= high) {
+                    return Err(AircraftError::InvalidValue {
+                        at: self.at_value(key, value),
+                        key: qualified(flight.name, &key.name),
+                        expected: format!(
+                            "an altitude in m within the ISA troposphere, {low} to {high}"
+                        ),
+                        value: shorten(&n.written),
+                    });
+                }
+                Density::Altitude(n.float)
+            }
+            (None, None) => {
+                return Err(self.missing_key(
+                    flight,
+                    "density",
+                    "`density = <number>` in kg/m^3, or `altitude = <number>` in m (ISA \
+                     troposphere, 0 to 11000)"
+                        .to_string(),
+                ))
+            }
+        };
+        let length = |k: &str, what: &str| self.required_positive(geometry, k, what);
+        let moment = |k: &str| {
+            self.required_positive(inertia, k, "a body-axis moment of inertia in kg m^2 > 0")
+                .map(|n| n.exact)
+        };
+        let ixz = match inertia.get("ixz") {
+            Some((key, value)) => self.number(inertia.name, key, value)?.exact,
+            None => {
+                return Err(self.missing_key(
+                    inertia,
+                    "ixz",
+                    "`ixz = <number>`, the body-axis product of inertia in kg m^2 (0 when the \
+                     body axes are principal)"
+                        .to_string(),
+                ))
+            }
+        };
+        let mut coeffs = Vec::with_capacity(Coefficient::ALL.len());
+        for c in Coefficient::ALL {
+            let (key, value) = coefficients.get(c.key()).ok_or_else(|| {
+                self.missing_key(
+                    coefficients,
+                    c.key(),
+                    format!("`{} = <number>`, per rad", c.key()),
+                )
+            })?;
+            coeffs.push(self.number(coefficients.name, key, value)?.exact);
+        }
+        Ok(BodyAxisInput {
+            speed: speed.exact,
+            density,
+            mass: length("mass", "a mass in kg > 0")?.exact,
+            wing_area: length("wing_area", "a wing area in m^2 > 0")?.exact,
+            span: length("span", "a wing span in m > 0")?.exact,
+            chord: length("chord", "a mean aerodynamic chord in m > 0")?.exact,
+            ix: moment("ix")?,
+            iy: moment("iy")?,
+            iz: moment("iz")?,
+            ixz,
+            coefficients: coeffs,
+        })
+    }
+
+    /// The aircraft of a converted body-axis file, refused when the principal moments are not
+    /// those of a rigid body or the aileron has no roll authority in principal axes.
+    fn body_axis_aircraft(
+        &self,
+        name: String,
+        converted: &convert::Converted,
+        inertia: &Table<'_>,
+        coefficients: &Table<'_>,
+    ) -> Result<Aircraft, AircraftError> {
+        let [ix, iy, iz] = &converted.principal;
+        let f = rational_to_f64;
+        let moments = format!(
+            "ix' = {:e}, iy = {:e}, iz' = {:e} kg m^2",
+            f(ix),
+            f(iy),
+            f(iz)
+        );
+        let unphysical = |problem: String| AircraftError::UnphysicalInertia {
+            at: self.at(inertia.span.as_ref()),
+            problem: format!("{problem} (principal moments {moments})"),
+        };
+        for (name, m) in [("ix'", ix), ("iz'", iz)] {
+            if !m.is_positive() {
+                return Err(unphysical(format!("principal moment {name} <= 0")));
+            }
+        }
+        for (a, b, c, text) in [
+            (ix, iy, iz, "ix' + iy < iz'"),
+            (ix, iz, iy, "ix' + iz' < iy"),
+            (iy, iz, ix, "iy + iz' < ix'"),
+        ] {
+            if a + b < *c {
+                return Err(unphysical(text.to_string()));
+            }
+        }
+        let l_delta_a = &converted.derivatives[Param::LDeltaA.index() - 3];
+        if l_delta_a.is_zero() {
+            let at = coefficients.get(Coefficient::ClDeltaA.key()).map_or_else(
+                || self.at(coefficients.span.as_ref()),
+                |(k, v)| self.at_value(k, v),
+            );
+            return Err(AircraftError::ZeroAileronAuthority {
+                at,
+                key: qualified(coefficients.name, Coefficient::ClDeltaA.key()),
+                value: "0 (l_delta_a in principal axes)".to_string(),
+            });
+        }
+        for (p, v) in Param::ALL.iter().skip(3).zip(&converted.derivatives) {
+            let x = rational_to_f64(v);
+            if !x.is_finite() {
+                return Err(AircraftError::InvalidValue {
+                    at: self.at(coefficients.span.as_ref()),
+                    key: format!("derivatives.{} (converted)", p.key()),
+                    expected: format!(
+                        "{F64_RANGE}: check the units of `[flight]`, `[geometry]` and `[inertia]`"
+                    ),
+                    value: format!("{x:e}"),
+                });
+            }
+        }
+        let mut values = self.finite_coefficients(inertia, inertia_coefficients(ix, iy, iz))?;
+        values.extend(converted.derivatives.iter().cloned());
+        Ok(Aircraft::new(name, values, converted.speed_f64()))
+    }
+}
+
+/// C = (iz - ix)/iy, D = (iy - ix)/iz, E = (iz - iy)/ix, exactly (principal moments).
+pub(super) fn inertia_coefficients(
+    ix: &BigRational,
+    iy: &BigRational,
+    iz: &BigRational,
+) -> [BigRational; 3] {
+    [(iz - ix) / iy, (iy - ix) / iz, (iz - iy) / ix]
+}
+
+/// The qualified key (`derivatives.l_p`) of the entry at byte `offset` of a TOML text that
+/// parses: the last key that starts at or before `offset` on the same line, or whose value
+/// spans it. `None` when the text does not parse or nothing is there.
+fn key_at(text: &str, offset: usize) -> Option<String> {
+    let doc = toml_edit::ImDocument::parse(text).ok()?;
+    let line = |o: usize| line_col(text, o).0;
+    let mut best: Option<(usize, String)> = None;
+    let mut stack = vec![(String::new(), entries_of(doc.as_table()))];
+    while let Some((prefix, entries)) = stack.pop() {
+        for (key, node) in entries {
+            let path = if prefix.is_empty() {
+                key.name.clone()
+            } else {
+                format!("{prefix}.{}", key.name)
+            };
+            let start = key.start();
+            // a standard table spans its whole body; only values (and inline tables) count
+            let covers = !matches!(node.kind, Kind::Table(_) if node.span.as_ref().is_some_and(|s| text.get(s.start..s.start + 1) == Some("[")))
+                && node
+                    .span
+                    .as_ref()
+                    .is_some_and(|s| s.start <= offset && offset < s.end.max(s.start + 1));
+            let same_line = start <= offset && line(start) == line(offset);
+            if (covers || same_line) && best.as_ref().is_none_or(|(b, _)| start >= *b) {
+                best = Some((start, path.clone()));
+            }
+            if let Kind::Table(inner) = node.kind {
+                stack.push((path, inner));
+            }
+        }
+    }
+    best.map(|(_, k)| k)
 }
 
 /// 1-based line and column (in characters) of a byte offset; never panics.
@@ -685,23 +1319,20 @@ fn line_col(text: &str, offset: usize) -> (usize, usize) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// A TOML tree with spans
-
-// The private protocol by which `toml` 0.8 (through `serde_spanned` 0.6 and `toml_datetime` 0.6)
-// hands out spans and date-times. If it ever changes, values merely lose their spans (errors then
-// point at line 1) and the tests on line numbers fail.
-const SPANNED_NAME: &str = "$__serde_spanned_private_Spanned";
-const SPANNED_START: &str = "$__serde_spanned_private_start";
-const SPANNED_END: &str = "$__serde_spanned_private_end";
-const SPANNED_VALUE: &str = "$__serde_spanned_private_value";
-const SPANNED_FIELDS: &[&str] = &[SPANNED_START, SPANNED_END, SPANNED_VALUE];
-const DATETIME_FIELD: &str = "$__toml_private_datetime";
+// The document as a small tree with spans, read through toml_edit's public API
 
 /// A key of a TOML table, with its span when the parser has one.
 #[derive(Debug)]
 struct Key {
     name: String,
     span: Option<Range<usize>>,
+}
+
+impl Key {
+    /// Byte offset of the key (0 without a span), for ordering keys by position.
+    fn start(&self) -> usize {
+        self.span.as_ref().map_or(0, |s| s.start)
+    }
 }
 
 /// A TOML value, with its span when the parser has one.
@@ -742,150 +1373,66 @@ impl Kind {
     }
 }
 
-impl<'de> Deserialize<'de> for Key {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        deserializer.deserialize_struct(SPANNED_NAME, SPANNED_FIELDS, KeyVisitor)
-    }
-}
-
-struct KeyVisitor;
-
-impl<'de> Visitor<'de> for KeyVisitor {
-    type Value = Key;
-
-    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("a key")
-    }
-
-    fn visit_str<E: de::Error>(self, v: &str) -> Result<Key, E> {
-        Ok(Key {
-            name: v.to_string(),
-            span: None,
+/// The entries of a table (standard, implicit or dotted), in document order.
+fn entries_of(table: &toml_edit::Table) -> Vec<(Key, Node)> {
+    table
+        .iter()
+        .filter_map(|(name, item)| {
+            let node = item_node(item)?;
+            let key = Key {
+                name: name.to_string(),
+                span: table.key(name).and_then(toml_edit::Key::span),
+            };
+            Some((key, node))
         })
-    }
+        .collect()
+}
 
-    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Key, A::Error> {
-        let (mut start, mut end, mut name) = (None, None, None);
-        while let Some(field) = map.next_key::<Key>()? {
-            match field.name.as_str() {
-                SPANNED_START => start = Some(map.next_value::<usize>()?),
-                SPANNED_END => end = Some(map.next_value::<usize>()?),
-                SPANNED_VALUE => name = Some(map.next_value::<String>()?),
-                _ => {
-                    map.next_value::<IgnoredAny>()?;
-                }
-            }
-        }
-        let name = name.ok_or_else(|| de::Error::custom("a key without a name"))?;
-        let span = match (start, end) {
-            (Some(s), Some(e)) => Some(s..e.max(s)),
-            (Some(s), None) => Some(s..s),
-            _ => None,
-        };
-        Ok(Key { name, span })
+fn item_node(item: &toml_edit::Item) -> Option<Node> {
+    use toml_edit::Item;
+    match item {
+        Item::None => None,
+        Item::Value(v) => Some(value_node(v)),
+        Item::Table(t) => Some(Node {
+            span: t.span(),
+            kind: Kind::Table(entries_of(t)),
+        }),
+        Item::ArrayOfTables(a) => Some(Node {
+            span: a.span(),
+            kind: Kind::Array,
+        }),
     }
 }
 
-impl<'de> Deserialize<'de> for Node {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        deserializer.deserialize_struct(SPANNED_NAME, SPANNED_FIELDS, NodeVisitor)
+fn value_node(value: &toml_edit::Value) -> Node {
+    use toml_edit::Value;
+    let kind = match value {
+        Value::String(s) => Kind::String(s.value().clone()),
+        Value::Integer(i) => Kind::Integer(*i.value()),
+        Value::Float(x) => Kind::Float(*x.value()),
+        Value::Boolean(b) => Kind::Boolean(*b.value()),
+        Value::Datetime(_) => Kind::Datetime,
+        Value::Array(_) => Kind::Array,
+        Value::InlineTable(t) => Kind::Table(
+            t.iter()
+                .map(|(name, v)| {
+                    let key = Key {
+                        name: name.to_string(),
+                        span: t.key(name).and_then(toml_edit::Key::span),
+                    };
+                    (key, value_node(v))
+                })
+                .collect(),
+        ),
+    };
+    Node {
+        span: value.span(),
+        kind,
     }
 }
-
-/// A value read without asking for its span (the inside of a spanned value).
-struct Bare(Node);
-
-impl<'de> Deserialize<'de> for Bare {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        deserializer.deserialize_any(NodeVisitor).map(Bare)
-    }
-}
-
-struct NodeVisitor;
-
-fn bare(kind: Kind) -> Node {
-    Node { span: None, kind }
-}
-
-impl<'de> Visitor<'de> for NodeVisitor {
-    type Value = Node;
-
-    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("a TOML value")
-    }
-
-    fn visit_bool<E: de::Error>(self, v: bool) -> Result<Node, E> {
-        Ok(bare(Kind::Boolean(v)))
-    }
-
-    fn visit_i64<E: de::Error>(self, v: i64) -> Result<Node, E> {
-        Ok(bare(Kind::Integer(v)))
-    }
-
-    fn visit_u64<E: de::Error>(self, v: u64) -> Result<Node, E> {
-        match i64::try_from(v) {
-            Ok(i) => Ok(bare(Kind::Integer(i))),
-            Err(_) => Ok(bare(Kind::Float(v as f64))),
-        }
-    }
-
-    fn visit_f64<E: de::Error>(self, v: f64) -> Result<Node, E> {
-        Ok(bare(Kind::Float(v)))
-    }
-
-    fn visit_str<E: de::Error>(self, v: &str) -> Result<Node, E> {
-        Ok(bare(Kind::String(v.to_string())))
-    }
-
-    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Node, A::Error> {
-        while seq.next_element::<IgnoredAny>()?.is_some() {}
-        Ok(bare(Kind::Array))
-    }
-
-    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Node, A::Error> {
-        let Some(first) = map.next_key::<Key>()? else {
-            return Ok(bare(Kind::Table(Vec::new())));
-        };
-        match first.name.as_str() {
-            SPANNED_START => {
-                let start = map.next_value::<usize>()?;
-                let mut end = start;
-                let mut value = None;
-                while let Some(field) = map.next_key::<Key>()? {
-                    match field.name.as_str() {
-                        SPANNED_END => end = map.next_value::<usize>()?,
-                        SPANNED_VALUE => value = Some(map.next_value::<Bare>()?.0),
-                        _ => {
-                            map.next_value::<IgnoredAny>()?;
-                        }
-                    }
-                }
-                let mut node = value.ok_or_else(|| de::Error::custom("a value without a value"))?;
-                node.span = Some(start..end.max(start));
-                Ok(node)
-            }
-            DATETIME_FIELD => {
-                map.next_value::<IgnoredAny>()?;
-                while map.next_key::<IgnoredAny>()?.is_some() {
-                    map.next_value::<IgnoredAny>()?;
-                }
-                Ok(bare(Kind::Datetime))
-            }
-            _ => {
-                let mut entries = vec![(first, map.next_value::<Node>()?)];
-                while let Some(key) = map.next_key::<Key>()? {
-                    entries.push((key, map.next_value::<Node>()?));
-                }
-                Ok(bare(Kind::Table(entries)))
-            }
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::aircraft::decimal_to_rational;
 
     const GOOD: &str = r#"name = "T"
 [inertia]
@@ -1263,6 +1810,19 @@ speed = 150.0
     }
 
     #[test]
+    fn inertia_ratios_beyond_f64_are_refused() {
+        let text = replace(
+            "C = 0.959\nD = 0.786\nE = 0.705\n",
+            "ix = 1e-309\niy = 5.5\niz = 6.1\n", // E = 0.6 / ix = 6e308
+        );
+        err(
+            &text,
+            2,
+            &["inertia.E (computed from the moments)", "range of f64"],
+        );
+    }
+
+    #[test]
     fn speed_must_be_positive() {
         let e = err(
             &replace("speed = 150.0", "speed = 0"),
@@ -1372,6 +1932,212 @@ speed = 150.0
         for (i, _) in GOOD.char_indices() {
             let _ = parse(GOOD.get(..i).unwrap_or(""), "g.toml");
         }
+    }
+
+    #[test]
+    fn numbers_enter_as_the_literal_written_not_as_an_f64() {
+        // 22 significant digits: an f64 cannot hold them, the literal text can.
+        let a = parse(
+            &replace("l_p = -21.7529", "l_p = -0.1000000000000000000001"),
+            FILE,
+        )
+        .unwrap();
+        let q = |s: &str| decimal_to_rational(s).unwrap();
+        assert_eq!(*a.exact(Param::Lp), q("-0.1000000000000000000001"));
+        assert_ne!(*a.exact(Param::Lp), q("-0.1"));
+        // longer than any message shows: every digit counts
+        let long = format!("-21.7529{}1", "0".repeat(100));
+        let a = parse(&replace("l_p = -21.7529", &format!("l_p = {long}")), FILE).unwrap();
+        assert_eq!(*a.exact(Param::Lp), q(&long));
+        assert_ne!(*a.exact(Param::Lp), q("-21.7529"));
+        // an empty quoted key is unknown, not a table
+        err(&format!("\"\" = 1\n{GOOD}"), 1, &["unknown key ``"]);
+        // underscores, a plus sign and an exponent
+        let a = parse(&replace("l_r = 1.5207", "l_r = +1_5.207e-1"), FILE).unwrap();
+        assert_eq!(*a.exact(Param::Lr), q("1.5207"));
+        // an exact fraction as a string
+        let a = parse(&replace("l_r = 1.5207", "l_r = \"-1/3\""), FILE).unwrap();
+        assert_eq!(*a.exact(Param::Lr), BigRational::new((-1).into(), 3.into()));
+        for bad in ["\"1/0\"", "\"1.5/2\"", "\"/3\""] {
+            err(
+                &replace("l_r = 1.5207", &format!("l_r = {bad}")),
+                10,
+                &["derivatives.l_r", "exact fraction"],
+            );
+        }
+    }
+
+    #[test]
+    fn numbers_the_parser_cannot_hold_name_their_key_issue_9() {
+        let e = err(
+            &replace("l_p = -21.7529", "l_p = 99999999999999999999"),
+            9,
+            &[
+                "key `derivatives.l_p`",
+                "expected an integer within the 64-bit range",
+            ],
+        );
+        assert!(matches!(e, AircraftError::InvalidValue { .. }));
+        assert_eq!(e.location().map(|l| l.column), Some(7));
+        err(
+            &replace("m_q = -1.815", "m_q = 1e309"),
+            13,
+            &["key `derivatives.m_q`", "range of f64", "`1e309`"],
+        );
+        let digits = "7".repeat(400);
+        let e = err(
+            &replace("m_q = -1.815", &format!("m_q = {digits}")),
+            13,
+            &["key `derivatives.m_q`", "64-bit range", "(400 characters)"],
+        );
+        assert!(e.to_string().len() < 400, "{e}");
+        err(
+            &replace("m_q = -1.815", &format!("m_q = {digits}.5")),
+            13,
+            &["key `derivatives.m_q`", "range of f64"],
+        );
+        err(
+            &replace("speed = 150.0", "speed = -1e400"),
+            21,
+            &["flight.speed", "finite"],
+        );
+        // accepted by the parser as 0.0, but the literal is beyond exact reading
+        err(
+            &replace("m_q = -1.815", "m_q = 1e-100000"),
+            13,
+            &["derivatives.m_q", "range of f64"],
+        );
+        // inside an inline table the key is still found
+        let text = replace("C = 0.959\nD = 0.786\nE = 0.705\n", "").replacen(
+            "[inertia]\n",
+            "inertia = { ix = 1, iy = 1e999, iz = 3 }\n",
+            1,
+        );
+        err(&text, 2, &["key `inertia.iy`", "range of f64"]);
+    }
+
+    #[test]
+    fn control_characters_name_their_key_issue_9() {
+        let e = err(
+            &replace("name = \"T\"", "name = \"T\0\""),
+            1,
+            &["key `name`", "U+0000 (NUL)", "expected printable text"],
+        );
+        assert!(matches!(e, AircraftError::ControlCharacter { .. }));
+        assert_eq!(e.location().map(|l| l.column), Some(10));
+        err(
+            &replace("l_p = -21.7529", "l_p = -21.7529 # \0"),
+            9,
+            &["key `derivatives.l_p`", "U+0000"],
+        );
+        err(
+            &replace("[derivatives]\n", "[derivatives]\n# \u{1b}[31m\n"),
+            7,
+            &["line 7", "U+001B (ESC)"],
+        );
+    }
+
+    #[test]
+    fn roll_due_to_rudder_is_optional() {
+        assert!(parse(GOOD, FILE).unwrap().exact(Param::LDeltaR).is_zero());
+        let a = parse(
+            &replace("n_delta_a = 0.0\n", "n_delta_a = 0.0\nl_delta_r = 2.25\n"),
+            FILE,
+        )
+        .unwrap();
+        assert_eq!(a.value(Param::LDeltaR), 2.25);
+        err(
+            &replace("n_delta_a = 0.0\n", "n_delta_a = 0.0\nl_delta_r = \"x\"\n"),
+            20,
+            &["derivatives.l_delta_r", "expected a number"],
+        );
+    }
+
+    #[test]
+    fn limits_and_validity_tables() {
+        let a = parse(GOOD, FILE).unwrap();
+        assert_eq!(a.limits, Limits::default());
+        assert_eq!(a.validity, Validity::default());
+        assert_eq!(a.validity.alpha_max_deg, 30.0);
+        let text =
+            format!("{GOOD}[limits]\naileron = 21.5\nrudder = 30\n[validity]\nbeta_max = 12.5\n");
+        let a = parse(&text, FILE).unwrap();
+        assert_eq!(
+            a.limits,
+            Limits {
+                aileron_deg: Some(21.5),
+                elevator_deg: None,
+                rudder_deg: Some(30.0),
+            }
+        );
+        assert_eq!(a.validity.alpha_max_deg, 30.0);
+        assert_eq!(a.validity.beta_max_deg, 12.5);
+        for (bad, needle) in [
+            ("0", "> 0"),
+            ("-3", "> 0"),
+            ("nan", "finite"),
+            ("\"x\"", "number"),
+        ] {
+            err(
+                &text.replacen("aileron = 21.5", &format!("aileron = {bad}"), 1),
+                23,
+                &["limits.aileron", needle],
+            );
+        }
+        err(
+            &text.replacen("rudder = 30", "rudder = 0.0", 1),
+            24,
+            &["limits.rudder", "a deflection limit in degrees > 0"],
+        );
+        err(
+            &text.replacen("beta_max = 12.5", "beta_max = -1", 1),
+            26,
+            &["validity.beta_max", "an angle in degrees > 0"],
+        );
+        err(
+            &text.replacen("rudder = 30", "flap = 30", 1),
+            24,
+            &[
+                "unknown key `limits.flap`",
+                "`aileron`, `elevator`, `rudder`",
+            ],
+        );
+        err(
+            &text.replacen("beta_max", "alpha_mx", 1),
+            26,
+            &[
+                "unknown key `validity.alpha_mx`",
+                "did you mean `alpha_max`?",
+            ],
+        );
+        err(
+            &format!("limits = 3\n{GOOD}"),
+            1,
+            &["key `limits`", "expected a table"],
+        );
+    }
+
+    #[test]
+    fn dimensional_files_refuse_body_axis_keys() {
+        let e = err(
+            &replace("E = 0.705\n", "E = 0.705\nixz = 3\n"),
+            6,
+            &["`inertia.ixz`", "expected either the dimensional"],
+        );
+        assert!(matches!(e, AircraftError::MixedFormats { .. }));
+        err(
+            &replace("speed = 150.0", "speed = 150.0\naltitude = 3000"),
+            22,
+            &["`flight.altitude`", "not a mix"],
+        );
+        err(
+            &format!("{GOOD}[geometry]\nmass = 1\n"),
+            22,
+            &[
+                "table `[geometry]` given together with `[derivatives]`",
+                "not a mix",
+            ],
+        );
     }
 
     #[test]

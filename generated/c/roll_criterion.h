@@ -260,8 +260,8 @@ ROLL_CRITERION_API struct rc_matrix5x5 rc_jacobian5(const struct rc_derivatives 
 ///
 /// Cost after CSE: 27 add/sub, 54 mul, 1 div, 0 neg, 0 libm (82 operations); straight-line, no branches.
 /// Rust: `roll_criterion::residual_denominator`, bit-identical.
-ROLL_CRITERION_API double rc_residual_denominator(const struct rc_derivatives *k, double p0, double
-    delta_e, double delta_r)
+ROLL_CRITERION_API double rc_residual_denominator(const struct rc_derivatives *k, double p0,
+    double delta_e, double delta_r)
 {
     const double t0 = p0 * k->c;
     const double t1 = p0 * k->d;
@@ -344,8 +344,8 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_stiffness(const struct rc_derivatives 
 ///
 /// Cost after CSE: 49 add/sub, 85 mul, 1 div, 0 neg, 0 libm (135 operations); straight-line, no branches.
 /// Rust: `roll_criterion::det_k`, bit-identical.
-ROLL_CRITERION_API double rc_det_k(const struct rc_derivatives *k, double p0, double delta_e, double
-    delta_r)
+ROLL_CRITERION_API double rc_det_k(const struct rc_derivatives *k, double p0, double delta_e,
+    double delta_r)
 {
     const double t0 = p0 * k->c;
     const double t1 = p0 * k->d;
@@ -450,8 +450,8 @@ ROLL_CRITERION_API double rc_det_j5(const struct rc_derivatives *k, double p0, d
 ///
 /// Cost after CSE: 23 add/sub, 42 mul, 1 div, 0 neg, 0 libm (66 operations); straight-line, no branches.
 /// Rust: `roll_criterion::zero_sideslip_det_k`, bit-identical.
-ROLL_CRITERION_API double rc_zero_sideslip_det_k(const struct rc_derivatives *k, double p0, double
-    delta_e)
+ROLL_CRITERION_API double rc_zero_sideslip_det_k(const struct rc_derivatives *k, double p0,
+    double delta_e)
 {
     const double t0 = delta_e * k->m_delta_e;
     const double t1 = k->z_alpha * k->m_q;
@@ -515,8 +515,8 @@ ROLL_CRITERION_API struct rc_array2 rc_divergence_roll_rates(const struct rc_der
 ///
 /// Cost after CSE: 290 add/sub, 420 mul, 0 div, 0 neg, 0 libm (710 operations); straight-line, no branches.
 /// Rust: `roll_criterion::jump_polynomial`, bit-identical.
-ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivatives *k, double
-    delta_e, double delta_r)
+ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivatives *k,
+    double delta_e, double delta_r)
 {
     const double t0 = k->n_beta + k->y_beta * k->n_r;
     const double t1 = k->m_delta_e * (delta_e * t0);
@@ -887,8 +887,8 @@ ROLL_CRITERION_API struct rc_Trim rc_aircraft_a_trim(double p0, double delta_e, 
 ///
 /// Cost after CSE: 5 add/sub, 14 mul, 2 div, 4 neg, 0 libm (25 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::zero_sideslip_trim`, bit-identical.
-ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_a_zero_sideslip_trim(double p0, double
-    delta_e)
+ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_a_zero_sideslip_trim(double p0,
+    double delta_e)
 {
     const double t0 = delta_e * 33.268;
     const double t1 = 1.0 / (5.458794 - (p0 * (p0 * 0.959) - 13.52504));
@@ -957,8 +957,8 @@ ROLL_CRITERION_API struct rc_matrix5x5 rc_aircraft_a_jacobian5(double alpha, dou
 ///
 /// Cost after CSE: 25 add/sub, 41 mul, 1 div, 0 neg, 0 libm (67 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::residual_denominator`, bit-identical.
-ROLL_CRITERION_API double rc_aircraft_a_residual_denominator(double p0, double delta_e, double
-    delta_r)
+ROLL_CRITERION_API double rc_aircraft_a_residual_denominator(double p0, double delta_e,
+    double delta_r)
 {
     const double t0 = p0 * 0.959;
     const double t1 = p0 * 0.786;
@@ -988,8 +988,8 @@ ROLL_CRITERION_API double rc_aircraft_a_residual_denominator(double p0, double d
 ///
 /// Cost after CSE: 38 add/sub, 65 mul, 2 div, 0 neg, 0 libm (105 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::stiffness`, bit-identical.
-ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_a_stiffness(double p0, double delta_e, double
-    delta_r)
+ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_a_stiffness(double p0, double delta_e,
+    double delta_r)
 {
     const double t0 = p0 * 0.959;
     const double t1 = p0 * 0.786;
@@ -1439,8 +1439,8 @@ ROLL_CRITERION_API struct rc_Trim rc_aircraft_b_trim(double p0, double delta_e, 
 ///
 /// Cost after CSE: 5 add/sub, 14 mul, 2 div, 4 neg, 0 libm (25 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::zero_sideslip_trim`, bit-identical.
-ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_b_zero_sideslip_trim(double p0, double
-    delta_e)
+ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_b_zero_sideslip_trim(double p0,
+    double delta_e)
 {
     const double t0 = delta_e * 28.37;
     const double t1 = 1.0 / (1.081806 - (p0 * (p0 * 0.949) - 23.18));
@@ -1509,8 +1509,8 @@ ROLL_CRITERION_API struct rc_matrix5x5 rc_aircraft_b_jacobian5(double alpha, dou
 ///
 /// Cost after CSE: 25 add/sub, 41 mul, 1 div, 0 neg, 0 libm (67 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::residual_denominator`, bit-identical.
-ROLL_CRITERION_API double rc_aircraft_b_residual_denominator(double p0, double delta_e, double
-    delta_r)
+ROLL_CRITERION_API double rc_aircraft_b_residual_denominator(double p0, double delta_e,
+    double delta_r)
 {
     const double t0 = p0 * 0.949;
     const double t1 = p0 * 0.716;
@@ -1540,8 +1540,8 @@ ROLL_CRITERION_API double rc_aircraft_b_residual_denominator(double p0, double d
 ///
 /// Cost after CSE: 38 add/sub, 65 mul, 2 div, 0 neg, 0 libm (105 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::stiffness`, bit-identical.
-ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_b_stiffness(double p0, double delta_e, double
-    delta_r)
+ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_b_stiffness(double p0, double delta_e,
+    double delta_r)
 {
     const double t0 = p0 * 0.949;
     const double t1 = p0 * 0.716;

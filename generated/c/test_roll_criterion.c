@@ -5,9 +5,10 @@
 // rounding-error bound; passes on any IEEE double target. Build and run:
 //   cc -std=c99 -O2 test_roll_criterion.c -lm && ./a.out
 // It prints the number of checks and exits 1 on any failure.
-// `./a.out --bits FILE` reads records "<aircraft index> <hex bits of each column>" with
-// the columns alpha, beta, delta_e, delta_r, p, p0, q, r and writes every result's double in host byte order
-// (140 per record): the C half of the workspace's bit-identity check.
+// `./a.out --bits FILE` reads records "<aircraft index> <hex bits of each column>",
+// columns alpha, beta, delta_e, delta_r, p, p0, q, r,
+// and writes the 140 results of each record as doubles in host byte order: the C half
+// of the workspace's bit-identity check (tests/tests/c_header.rs).
 
 #include "roll_criterion.h"
 #include <inttypes.h>

@@ -157,22 +157,15 @@ fn header_compiles_warning_free_as_c99_and_cpp_and_its_self_test_passes() {
     }
 }
 
-#[test]
-fn header_honours_include_guards_and_the_linkage_macro() {
-    if !required("gcc") {
-        return;
-    }
-    // Included twice, with external linkage chosen through ROLL_CRITERION_API.
+/// Compiles `source` (in the temporary directory, with the header on the include path) to an
+/// object file and returns what `nm` lists in it.
+fn object_symbols(build: &Build, name: &str, source: &str) -> String {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR"));
-    let src = dir.join(format!("linkage_{}.c", std::process::id()));
+    let src = dir.join(format!("{name}_{}.c", std::process::id()));
     let obj = src.with_extension("o");
-    std::fs::write(
-        &src,
-        "#define ROLL_CRITERION_API\n#include \"roll_criterion.h\"\n#include \"roll_criterion.h\"\n",
-    )
-    .unwrap();
-    let out = Command::new("gcc")
-        .arg("-std=c99")
+    std::fs::write(&src, source).unwrap();
+    let out = Command::new(build.compiler)
+        .args(build.language)
         .args(FLAGS)
         .arg("-I")
         .arg(c_dir())
@@ -181,21 +174,83 @@ fn header_honours_include_guards_and_the_linkage_macro() {
         .arg("-o")
         .arg(&obj)
         .output()
-        .expect("run gcc");
+        .expect("run the compiler");
     assert!(
         out.status.success() && out.stderr.is_empty(),
-        "{}",
+        "{} on {name}:\n{}",
+        build.compiler,
         String::from_utf8_lossy(&out.stderr)
     );
     let nm = Command::new("nm").arg(&obj).output().expect("run nm");
-    let symbols = String::from_utf8_lossy(&nm.stdout);
-    for f in calls::LABELS[0] {
-        let name = f.split('(').next().unwrap();
-        assert!(
-            symbols.contains(&format!(" T {name}\n")),
-            "{name} is not an external definition with ROLL_CRITERION_API empty:\n{symbols}"
-        );
+    String::from_utf8_lossy(&nm.stdout).into_owned()
+}
+
+#[test]
+fn header_honours_include_guards_the_linkage_macro_and_extern_c() {
+    // Included twice, with external linkage chosen through ROLL_CRITERION_API: as C, and as
+    // C++, where the extern "C" guard must keep the names unmangled.
+    let source = "#define ROLL_CRITERION_API\n#include \"roll_criterion.h\"\n#include \"roll_criterion.h\"\n";
+    for build in [GCC, GXX] {
+        if !required(build.compiler) {
+            continue;
+        }
+        let symbols = object_symbols(&build, "linkage", source);
+        for f in calls::LABELS[0] {
+            let name = f.split('(').next().unwrap();
+            assert!(
+                symbols.contains(&format!(" T {name}\n")),
+                "{}: {name} is not an unmangled external definition with ROLL_CRITERION_API empty:\n{symbols}",
+                build.compiler
+            );
+        }
     }
+}
+
+#[test]
+fn the_self_test_fails_when_a_constant_of_the_header_is_perturbed() {
+    if !required("gcc") {
+        return;
+    }
+    // Aircraft A's l_p moved by one part in 10^9 in a copy of the header.
+    let header = std::fs::read_to_string(c_dir().join("roll_criterion.h")).unwrap();
+    let line = header
+        .lines()
+        .find(|l| l.ends_with(", // l_p"))
+        .expect("the l_p line of the data");
+    let value: f64 = line.trim().split(',').next().unwrap().parse().unwrap();
+    let perturbed = header.replacen(line, &format!("    {:?}, // l_p", value * (1.0 + 1e-9)), 1);
+    let dir =
+        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("perturbed_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("roll_criterion.h"), perturbed).unwrap();
+    std::fs::copy(
+        c_dir().join("test_roll_criterion.c"),
+        dir.join("test_roll_criterion.c"),
+    )
+    .unwrap();
+    let exe = dir.join("test_roll_criterion");
+    let out = Command::new("gcc")
+        .arg("-std=c99")
+        .args(FLAGS)
+        .arg("-o")
+        .arg(&exe)
+        .arg(dir.join("test_roll_criterion.c"))
+        .arg("-lm")
+        .output()
+        .expect("run gcc");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let run = Command::new(&exe).output().expect("run the self-test");
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        !run.status.success()
+            && stdout.contains("FAIL rc_")
+            && stdout.contains("(&rc_aircraft_a_derivatives"),
+        "the self-test did not notice the perturbed l_p:\n{stdout}"
+    );
 }
 
 /// The names the header defines functions for, in order.
@@ -413,4 +468,19 @@ fn the_cross_check_detects_a_one_ulp_difference_and_names_the_input() {
     // NaN equals NaN whatever the payload; signed zeros differ.
     assert!(same(f64::NAN, f64::from_bits(f64::NAN.to_bits() ^ 1)));
     assert!(!same(0.0, -0.0));
+}
+
+#[test]
+fn readme_c_example_compiles_warning_free() {
+    if !required("gcc") {
+        return;
+    }
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let section = &readme[readme
+        .find("### The same criterion in C")
+        .expect("the C section")..];
+    let start = section.find("```c\n").expect("a C example") + 5;
+    let example = &section[start..start + section[start..].find("```").unwrap()];
+    let symbols = object_symbols(&GCC, "readme", example);
+    assert!(symbols.contains(" T criterion\n"), "{symbols}");
 }

@@ -87,9 +87,15 @@ fn expr(e: &Expr, out: &mut String) {
 /// where possible; continuation lines are indented four more. Spaces only ever separate tokens
 /// in the printed C, so a break never changes its meaning.
 fn wrap(line: &str, indent: &str) -> String {
+    let words: Vec<&str> = line.trim_start().split(' ').collect();
+    wrap_chunks(&words, indent)
+}
+
+/// `chunks` joined by spaces, broken between chunks as [`wrap`] does.
+fn wrap_chunks(chunks: &[&str], indent: &str) -> String {
     let mut out = String::new();
     let mut current = String::new();
-    for word in line.trim_start().split(' ') {
+    for word in chunks {
         if !current.is_empty() && indent.len() + current.len() + 1 + word.len() > WIDTH {
             writeln!(out, "{indent}{current}").expect("write to String");
             current = format!("    {word}");
@@ -153,10 +159,16 @@ pub fn function(f: &Function, module: Option<&str>) -> String {
         params.push("void".into());
     }
     let ret = c_type(&f.ret);
-    out.push_str(&wrap(
-        &format!("{API} {ret} {}({})", c_name(module, f), params.join(", ")),
-        "",
-    ));
+    // The signature breaks only between parameters.
+    let last = params.len() - 1;
+    let mut chunks: Vec<String> = params
+        .iter()
+        .enumerate()
+        .map(|(i, p)| format!("{p}{}", if i == last { ")" } else { "," }))
+        .collect();
+    chunks[0] = format!("{API} {ret} {}({}", c_name(module, f), chunks[0]);
+    let chunks: Vec<&str> = chunks.iter().map(String::as_str).collect();
+    out.push_str(&wrap_chunks(&chunks, ""));
     out.push_str("{\n");
     for u in unused {
         writeln!(out, "    (void){u};").expect("write to String");
@@ -291,4 +303,99 @@ pub fn header(param: &[Function], builtins: &[Builtin]) -> String {
     }
     out.push_str("\n#ifdef __cplusplus\n}\n#endif\n\n#endif // ROLL_CRITERION_H\n");
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::exact_f64;
+    use crate::emit::expr::Dag;
+    use crate::emit::functions::{Arg, Ret};
+
+    #[test]
+    fn double_literals_are_doubles_that_round_trip_exactly() {
+        let mut values: Vec<Q> = [
+            0.959,
+            -13.52504,
+            0.1,
+            1e-300,
+            5e-324,
+            1e16,
+            123456789.0,
+            -2.5,
+            f64::MAX,
+        ]
+        .iter()
+        .map(|x| exact_f64(*x))
+        .collect();
+        values.extend([Q::ratio(1, 3), Q::ratio(-22, 7), Q::int(4), Q::ZERO]);
+        for q in &values {
+            let lit = double_literal(q);
+            assert!(
+                lit.contains('.') || lit.contains('e'),
+                "{lit} is not a double"
+            );
+            // Rust's parser rounds correctly, as C compilers do for decimal constants.
+            let back: f64 = lit.parse().unwrap();
+            assert_eq!(back.to_bits(), q.to_f64().to_bits(), "{lit}");
+        }
+        let huge = Q::from_big(exact_f64(f64::MAX).to_big() * exact_f64(4.0).to_big());
+        assert_eq!(double_literal(&huge), "HUGE_VAL");
+        assert_eq!(double_literal(&-huge), "-HUGE_VAL");
+    }
+
+    /// A function of a shape and with an argument no generated function has today prints
+    /// without any change here: a new return struct, a new argument, an unused argument.
+    #[test]
+    fn prints_any_array_shape_and_argument_name() {
+        let mut dag = Dag::new();
+        let x = dag.input("new_arg");
+        dag.input("ignored");
+        let k = dag.input("k.l_p");
+        let minus_half = dag.constant(Q::ratio(-1, 2));
+        let s = dag.sub(x, minus_half); // x - (-1/2) folds to x + 0.5
+        let m = dag.mul(s, k);
+        let n = dag.neg(m);
+        let r = dag.sqrt(n);
+        let f = Function {
+            name: "future",
+            doc: vec!["A function of the future.".into()],
+            takes_derivatives: true,
+            args: vec![
+                Arg {
+                    name: "new_arg",
+                    doc: "a new argument",
+                },
+                Arg {
+                    name: "ignored",
+                    doc: "not read",
+                },
+            ],
+            dag,
+            outputs: vec![
+                (String::new(), r),
+                (String::new(), s),
+                (String::new(), n),
+                (String::new(), m),
+            ],
+            ret: Ret::Array(4),
+        };
+        let text = function(&f, Some("aircraft_z"));
+        for want in [
+            "ROLL_CRITERION_API struct rc_array4 rc_aircraft_z_future(const struct rc_derivatives *k,\n",
+            "    double new_arg, double ignored)\n{\n    (void)ignored;\n",
+            // A negative constant stays a separate token: `- -0.5`, never `--0.5`.
+            "    const double t0 = new_arg - -0.5;\n",
+            "    const double t1 = k->l_p * t0;\n",
+            "    result.v[0] = sqrt(t2);\n",
+        ] {
+            assert!(text.contains(want), "{want:?} not in\n{text}");
+        }
+        assert_eq!(text.matches("return").count(), 1);
+        let def = super::super::shape::c_struct(&f.ret).unwrap();
+        assert!(
+            def.contains("struct rc_array4 {\n    double v[4];\n};"),
+            "{def}"
+        );
+    }
 }

@@ -206,9 +206,10 @@ pub fn self_test(param: &[Function], builtins: &[Builtin]) -> String {
          // rounding-error bound; passes on any IEEE double target. Build and run:\n\
          //   cc -std=c99 -O2 test_roll_criterion.c -lm && ./a.out\n\
          // It prints the number of checks and exits 1 on any failure.\n\
-         // `./a.out --bits FILE` reads records \"<aircraft index> <hex bits of each column>\" with\n\
-         // the columns {} and writes every result's double in host byte order\n\
-         // ({n_out} per record): the C half of the workspace's bit-identity check.\n\n\
+         // `./a.out --bits FILE` reads records \"<aircraft index> <hex bits of each column>\",\n\
+         // columns {},\n\
+         // and writes the {n_out} results of each record as doubles in host byte order: the C half\n\
+         // of the workspace's bit-identity check (tests/tests/c_header.rs).\n\n\
          #include \"{HEADER}\"\n",
         columns.join(", ")
     );

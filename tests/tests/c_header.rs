@@ -96,12 +96,17 @@ fn compile(build: &Build) -> PathBuf {
         build.compiler.replace('+', "x"),
         std::process::id()
     ));
+    compile_self_test(build, &c_dir(), &exe)
+}
+
+/// Compiles `dir/test_roll_criterion.c` (with the header next to it) into `exe`.
+fn compile_self_test(build: &Build, dir: &Path, exe: &Path) -> PathBuf {
     let out = Command::new(build.compiler)
         .args(build.language)
         .args(FLAGS)
         .arg("-o")
-        .arg(&exe)
-        .arg(c_dir().join("test_roll_criterion.c"))
+        .arg(exe)
+        .arg(dir.join("test_roll_criterion.c"))
         .arg("-lm")
         .output()
         .unwrap_or_else(|e| panic!("run {}: {e}", build.compiler));
@@ -112,7 +117,7 @@ fn compile(build: &Build) -> PathBuf {
         build.language,
         String::from_utf8_lossy(&out.stderr)
     );
-    exe
+    exe.to_path_buf()
 }
 
 /// The gcc and g++ builds, compiled once for all tests of this file.
@@ -228,21 +233,7 @@ fn the_self_test_fails_when_a_constant_of_the_header_is_perturbed() {
         dir.join("test_roll_criterion.c"),
     )
     .unwrap();
-    let exe = dir.join("test_roll_criterion");
-    let out = Command::new("gcc")
-        .arg("-std=c99")
-        .args(FLAGS)
-        .arg("-o")
-        .arg(&exe)
-        .arg(dir.join("test_roll_criterion.c"))
-        .arg("-lm")
-        .output()
-        .expect("run gcc");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let exe = compile_self_test(&GCC, &dir, &dir.join("test_roll_criterion"));
     let run = Command::new(&exe).output().expect("run the self-test");
     let stdout = String::from_utf8_lossy(&run.stdout);
     assert!(

@@ -24,7 +24,8 @@
 // return, nothing from the C library but sqrt. Results are bit-identical to the Rust crate
 // when FLT_EVAL_METHOD == 0 and floating-point contraction is off (gcc/clang:
 // -ffp-contract=off); otherwise they differ by rounding only.
-// Define ROLL_CRITERION_API before the include to choose the linkage (default: static inline).
+// Define ROLL_CRITERION_API before the include to choose the linkage of the functions
+// (default: static inline); the built-in aircraft data are static const objects.
 
 #ifndef ROLL_CRITERION_H
 #define ROLL_CRITERION_H

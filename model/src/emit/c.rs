@@ -268,7 +268,8 @@ pub fn header(param: &[Function], builtins: &[Builtin]) -> String {
          // return, nothing from the C library but sqrt. Results are bit-identical to the Rust crate\n\
          // when FLT_EVAL_METHOD == 0 and floating-point contraction is off (gcc/clang:\n\
          // -ffp-contract=off); otherwise they differ by rounding only.\n\
-         // Define ROLL_CRITERION_API before the include to choose the linkage (default: static inline).\n\n",
+         // Define ROLL_CRITERION_API before the include to choose the linkage of the functions\n\
+         // (default: static inline); the built-in aircraft data are static const objects.\n\n",
     );
     out.push_str("#ifndef ROLL_CRITERION_H\n#define ROLL_CRITERION_H\n\n#include <math.h>\n\n");
     writeln!(out, "#ifndef {API}\n#define {API} static inline\n#endif\n").expect("write to String");

@@ -367,6 +367,7 @@ fn c_outputs(exe: &Path, records: &[Record]) -> Vec<f64> {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
+    std::fs::remove_file(&path).unwrap();
     let n = calls::LABELS[0].len();
     assert_eq!(
         out.stdout.len(),

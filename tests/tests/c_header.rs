@@ -92,11 +92,14 @@ const CLANG: Build = Build {
 /// directory; panics with the compiler's output on any warning.
 fn compile(build: &Build) -> PathBuf {
     let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
-        "test_roll_criterion_{}_{}",
-        build.compiler.replace('+', "x"),
-        std::process::id()
+        "test_roll_criterion_{}",
+        build.compiler.replace('+', "x")
     ));
-    compile_self_test(build, &c_dir(), &exe)
+    // Built under a name of this process, then renamed: a concurrent run never sees half a file.
+    let tmp = exe.with_extension(format!("tmp{}", std::process::id()));
+    compile_self_test(build, &c_dir(), &tmp);
+    std::fs::rename(&tmp, &exe).unwrap();
+    exe
 }
 
 /// Compiles `dir/test_roll_criterion.c` (with the header next to it) into `exe`.
@@ -187,6 +190,7 @@ fn object_symbols(build: &Build, name: &str, source: &str) -> String {
         String::from_utf8_lossy(&out.stderr)
     );
     let nm = Command::new("nm").arg(&obj).output().expect("run nm");
+    let _ = (std::fs::remove_file(&src), std::fs::remove_file(&obj));
     String::from_utf8_lossy(&nm.stdout).into_owned()
 }
 
@@ -235,6 +239,7 @@ fn the_self_test_fails_when_a_constant_of_the_header_is_perturbed() {
     .unwrap();
     let exe = compile_self_test(&GCC, &dir, &dir.join("test_roll_criterion"));
     let run = Command::new(&exe).output().expect("run the self-test");
+    let _ = std::fs::remove_dir_all(&dir);
     let stdout = String::from_utf8_lossy(&run.stdout);
     assert!(
         !run.status.success()
@@ -347,7 +352,7 @@ fn records(n: usize) -> Vec<Record> {
 
 /// Runs `exe --bits` on `records`; the C results, one array per record.
 fn c_outputs(exe: &Path, records: &[Record]) -> Vec<f64> {
-    let path = exe.with_extension(format!("records{}", records.len()));
+    let path = exe.with_extension(format!("records{}_{}", records.len(), std::process::id()));
     let mut text = String::with_capacity(records.len() * 160);
     for (aircraft, x) in records {
         text.push_str(&aircraft.to_string());

@@ -1,8 +1,9 @@
 //! Rust code for the generated functions, through quote/proc-macro2 and prettyplease.
 //!
 //! The statements, temporaries and parentheses come from [`super::program`], shared with the C
-//! printer so both evaluate the same operations in the same order. Constants are exact rationals rounded
-//! once to the nearest f64 and printed as the shortest literal that round-trips.
+//! printer so that both evaluate the same operations in the same order. Constants are exact
+//! rationals rounded once to the nearest f64 and printed as the shortest literal that
+//! round-trips.
 
 use super::expr::{Dag, Id};
 use super::functions::{Function, Ret};
@@ -49,6 +50,7 @@ fn input_tokens(name: &str) -> TokenStream {
     }
 }
 
+/// The tokens of an expression; its grouping is already explicit in [`Expr::Paren`].
 fn tokens(e: &Expr) -> TokenStream {
     match e {
         Expr::Const(q) => float_literal(q),

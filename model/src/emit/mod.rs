@@ -6,10 +6,16 @@
 //! is built in a fixed order, nothing iterates a hash map into output, and prettyplease (pinned)
 //! formats it.
 
+pub mod c;
+pub mod c_test;
+pub mod cross;
 pub mod expr;
 pub mod functions;
 pub mod latex;
+pub mod program;
+pub mod reference;
 pub mod rust;
+pub mod shape;
 
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::{Sym, Q};
@@ -128,18 +134,37 @@ fn struct_items(with_derivatives: bool) -> TokenStream {
     out
 }
 
+/// The doc comment of a generated function, in every language: what it computes (formula,
+/// equation numbers, units), its arguments, then `tail`.
+pub fn doc_lines(f: &Function, tail: &[String]) -> Vec<String> {
+    let mut doc: Vec<String> = f.doc.clone();
+    if !f.args.is_empty() {
+        doc.push(String::new());
+        doc.push("Arguments:".into());
+        for a in &f.args {
+            doc.push(format!("- `{}`: {}", a.name, a.doc));
+        }
+    }
+    doc.extend_from_slice(tail);
+    doc
+}
+
+/// The cost paragraph of a function's doc comment (its operation count after CSE).
+pub fn cost_doc(f: &Function) -> Vec<String> {
+    let c = op_count(f);
+    vec![
+        String::new(),
+        format!(
+            "Cost after CSE: {} add/sub, {} mul, {} div, {} neg, {} libm ({} operations); straight-line, no branches.",
+            c.add, c.mul, c.div, c.neg, c.libm, c.total()
+        ),
+    ]
+}
+
 fn fn_items(fs: &[Function], attrs: &TokenStream) -> TokenStream {
     let mut out = TokenStream::new();
     for f in fs {
-        let c = op_count(f);
-        let ops = vec![
-            String::new(),
-            format!(
-                "Cost after CSE: {} add/sub, {} mul, {} div, {} neg, {} libm ({} operations); straight-line, no branches.",
-                c.add, c.mul, c.div, c.neg, c.libm, c.total()
-            ),
-        ];
-        let item = rust::function(f, &ops);
+        let item = rust::function(f, &cost_doc(f));
         out.extend(quote!(#attrs #item));
     }
     out
@@ -187,16 +212,39 @@ fn header(title: &str, fs: &[Function], inputs: &str) -> String {
     h
 }
 
-/// Everything `emit` writes: the generated crate and the LaTeX dump.
+/// A built-in aircraft as the generated code has it: a module of functions with its data
+/// folded in.
+pub struct Builtin {
+    /// Module name (`aircraft_a`); C names are prefixed with it.
+    pub module: &'static str,
+    /// The aircraft.
+    pub aircraft: Aircraft,
+    /// Its functions, data folded in.
+    pub functions: Vec<Function>,
+}
+
+/// The built-in aircraft of Table A.1 with their functions.
+pub fn builtins() -> Vec<Builtin> {
+    [("aircraft_a", Aircraft::a()), ("aircraft_b", Aircraft::b())]
+        .into_iter()
+        .map(|(module, aircraft)| Builtin {
+            module,
+            functions: specialised_functions(&aircraft),
+            aircraft,
+        })
+        .collect()
+}
+
+/// Everything `emit` writes: the generated crate, its C twin and the LaTeX dump.
 pub fn generate() -> Result<Vec<Output>, EmitError> {
     let param = parametric_functions();
-    let aircraft = [("aircraft_a", Aircraft::a()), ("aircraft_b", Aircraft::b())];
+    let builtins = builtins();
     let attrs = quote!(#[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]);
     let mut outputs = Vec::new();
 
-    let mods = aircraft
+    let mods = builtins
         .iter()
-        .map(|(m, _)| Ident::new(m, Span::call_site()));
+        .map(|b| Ident::new(b.module, Span::call_site()));
     let structs = struct_items(true);
     let fns = fn_items(&param, &attrs);
     let lib = quote! {
@@ -221,10 +269,14 @@ pub fn generate() -> Result<Vec<Output>, EmitError> {
         contents: text,
     });
 
-    for (m, ac) in &aircraft {
-        let fs = specialised_functions(ac);
+    for Builtin {
+        module: m,
+        aircraft: ac,
+        functions: fs,
+    } in &builtins
+    {
         let konst = derivatives_const(ac);
-        let fns = fn_items(&fs, &attrs);
+        let fns = fn_items(fs, &attrs);
         let doc = format!(
             " The criterion for {} of Table A.1: every constant folded exactly, then rounded once to f64.",
             ac.name
@@ -237,7 +289,7 @@ pub fn generate() -> Result<Vec<Output>, EmitError> {
         };
         let mut text = header(
             &format!("{}, data folded in.", ac.name),
-            &fs,
+            fs,
             &format!("{} (model::aircraft)", ac.name),
         );
         text.push_str(&rust::pretty(tokens)?);
@@ -259,6 +311,18 @@ pub fn generate() -> Result<Vec<Output>, EmitError> {
     outputs.push(Output {
         path: "generated/tests/values.rs".into(),
         contents: tests::values()?,
+    });
+    outputs.push(Output {
+        path: format!("generated/c/{}", c::HEADER).into(),
+        contents: c::header(&param, &builtins),
+    });
+    outputs.push(Output {
+        path: "generated/c/test_roll_criterion.c".into(),
+        contents: c_test::self_test(&param, &builtins),
+    });
+    outputs.push(Output {
+        path: "tests/tests/c_header/calls.rs".into(),
+        contents: cross::rust_calls(&param, &builtins)?,
     });
     outputs.push(Output {
         path: "docs/formulas.tex".into(),

@@ -1,24 +1,16 @@
 //! Rust code for the generated functions, through quote/proc-macro2 and prettyplease.
 //!
-//! Nodes used once are inlined into their parent, others get a `let tN`; parentheses follow
-//! the DAG exactly (a right operand that is itself a sum is parenthesized, so floating-point
-//! evaluation order is the DAG's, not a re-association). Constants are exact rationals rounded
-//! once to the nearest f64 and printed as the shortest literal that round-trips.
+//! The statements, temporaries and parentheses come from [`super::program`], shared with the C
+//! printer so that both evaluate the same operations in the same order. Constants are exact
+//! rationals rounded once to the nearest f64 and printed as the shortest literal that
+//! round-trips.
 
-use super::expr::{Dag, Id, Node};
+use super::expr::{Dag, Id};
 use super::functions::{Function, Ret};
+use super::program::{program, Expr, Op};
 use crate::algebra::Q;
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};
-
-/// Precedence of an emitted expression: atoms bind tightest.
-#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-enum Prec {
-    Atom,
-    Unary,
-    Product,
-    Sum,
-}
 
 /// An f64 literal for an exact constant, rounded once to the nearest f64. A constant beyond
 /// the range of f64 (an aircraft file with absurd magnitudes) rounds to +-infinity, as IEEE
@@ -58,106 +50,53 @@ fn input_tokens(name: &str) -> TokenStream {
     }
 }
 
+/// The tokens of an expression; its grouping is already explicit in [`Expr::Paren`].
+fn tokens(e: &Expr) -> TokenStream {
+    match e {
+        Expr::Const(q) => float_literal(q),
+        Expr::Input(name) => input_tokens(name),
+        Expr::Temp(n) => {
+            let t = format_ident!("t{}", n);
+            quote!(#t)
+        }
+        Expr::Binary(op, a, b) => {
+            let (x, y) = (tokens(a), tokens(b));
+            match op {
+                Op::Add => quote!(#x + #y),
+                Op::Sub => quote!(#x - #y),
+                Op::Mul => quote!(#x * #y),
+                Op::Div => quote!(#x / #y),
+            }
+        }
+        Expr::Neg(a) => {
+            let x = tokens(a);
+            quote!(-#x)
+        }
+        Expr::Sqrt(a) => {
+            let x = tokens(a);
+            quote!(libm::sqrt(#x))
+        }
+        Expr::Paren(a) => {
+            let x = tokens(a);
+            quote!((#x))
+        }
+    }
+}
+
 /// The body statements and the tokens of each output, for a function's DAG.
 pub fn body(dag: &Dag, outputs: &[Id]) -> (Vec<TokenStream>, Vec<TokenStream>) {
-    let live = dag.live(outputs);
-    let n = dag.nodes().len();
-    let mut uses = vec![0usize; n];
-    for (i, l) in live.iter().enumerate() {
-        if *l {
-            for c in dag.children(Id(i as u32)) {
-                uses[c.0 as usize] += 1;
-            }
-        }
-    }
-    for o in outputs {
-        uses[o.0 as usize] += 1;
-    }
-    let mut expr: Vec<Option<(TokenStream, Prec)>> = vec![None; n];
-    let mut stmts = Vec::new();
-    let mut next = 0usize;
-    for (i, node) in dag.nodes().iter().enumerate() {
-        if !live[i] {
-            continue;
-        }
-        let get = |id: &Id, expr: &Vec<Option<(TokenStream, Prec)>>| {
-            expr[id.0 as usize]
-                .clone()
-                .expect("children are emitted before parents")
-        };
-        let wrap = |t: (TokenStream, Prec), max: Prec| {
-            if t.1 > max {
-                let inner = t.0;
-                quote!((#inner))
-            } else {
-                t.0
-            }
-        };
-        let (tokens, prec) = match node {
-            Node::Const(q) => {
-                let t = float_literal(q);
-                (
-                    t,
-                    if q.is_negative() {
-                        Prec::Unary
-                    } else {
-                        Prec::Atom
-                    },
-                )
-            }
-            Node::Input(k) => (input_tokens(&dag.inputs()[*k as usize]), Prec::Atom),
-            Node::Add(a, b) => {
-                let (x, y) = (
-                    wrap(get(a, &expr), Prec::Sum),
-                    wrap(get(b, &expr), Prec::Product),
-                );
-                (quote!(#x + #y), Prec::Sum)
-            }
-            Node::Sub(a, b) => {
-                let (x, y) = (
-                    wrap(get(a, &expr), Prec::Sum),
-                    wrap(get(b, &expr), Prec::Product),
-                );
-                (quote!(#x - #y), Prec::Sum)
-            }
-            Node::Mul(a, b) => {
-                let (x, y) = (
-                    wrap(get(a, &expr), Prec::Product),
-                    wrap(get(b, &expr), Prec::Atom),
-                );
-                (quote!(#x * #y), Prec::Product)
-            }
-            Node::Div(a, b) => {
-                let (x, y) = (
-                    wrap(get(a, &expr), Prec::Product),
-                    wrap(get(b, &expr), Prec::Atom),
-                );
-                (quote!(#x / #y), Prec::Product)
-            }
-            Node::Neg(a) => {
-                let x = wrap(get(a, &expr), Prec::Atom);
-                (quote!(-#x), Prec::Unary)
-            }
-            Node::Sqrt(a) => {
-                let x = get(a, &expr).0;
-                (quote!(libm::sqrt(#x)), Prec::Atom)
-            }
-        };
-        let is_leaf = matches!(node, Node::Const(_) | Node::Input(_));
-        if is_leaf || uses[i] <= 1 {
-            expr[i] = Some((tokens, prec));
-        } else {
-            let name = format_ident!("t{}", next);
-            next += 1;
-            stmts.push(quote!(let #name = #tokens;));
-            expr[i] = Some((quote!(#name), Prec::Atom));
-        }
-    }
-    let outs = outputs
+    let p = program(dag, outputs);
+    let stmts = p
+        .temps
         .iter()
-        .map(|o| expr[o.0 as usize].clone().expect("output emitted").0)
+        .enumerate()
+        .map(|(n, e)| {
+            let name = format_ident!("t{}", n);
+            let e = tokens(e);
+            quote!(let #name = #e;)
+        })
         .collect();
-    (stmts, outs)
+    (stmts, p.outputs.iter().map(tokens).collect())
 }
 
 /// The tokens of one function, with `extra_attrs` (e.g. `#[no_panic]`) before it.
@@ -194,15 +133,7 @@ pub fn function(f: &Function, header_doc: &[String]) -> TokenStream {
             (quote!(#s), quote!(#s { #(#fields: #outs),* }))
         }
     };
-    let mut doc: Vec<String> = f.doc.clone();
-    if !f.args.is_empty() {
-        doc.push(String::new());
-        doc.push("Arguments:".into());
-        for a in &f.args {
-            doc.push(format!("- `{}`: {}", a.name, a.doc));
-        }
-    }
-    doc.extend_from_slice(header_doc);
+    let doc = super::doc_lines(f, header_doc);
     let doc = doc.iter().map(|l| format!(" {l}"));
     quote! {
         #(#[doc = #doc])*

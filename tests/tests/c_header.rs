@@ -1,0 +1,483 @@
+//! The C twin of the generated crate (`generated/c/roll_criterion.h`), checked as a C project
+//! would use it: it compiles warning-free as C99 and as C++ under strict flags, its self-test
+//! passes, its function bodies are straight-line code, and on 10^5 random inputs every C result
+//! has the same bits as the Rust crate's (both are printed from the same DAG in the same order).
+//!
+//! gcc and g++ are required when `CI` is set; without them elsewhere, and without clang
+//! anywhere, the affected checks print a notice on stderr (not captured by the test harness).
+
+/// Written by `emit` from the same function list as the header (model/src/emit/cross.rs).
+#[rustfmt::skip]
+#[path = "c_header/calls.rs"]
+mod calls;
+
+use paper_tests::Lcg;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::OnceLock;
+
+/// The flags of the issue, for every compiler (`-ffp-contract=off`: no fused multiply-add,
+/// which would round differently from the Rust code).
+const FLAGS: &[&str] = &[
+    "-Wall",
+    "-Wextra",
+    "-Werror",
+    "-pedantic",
+    "-Wconversion",
+    "-Wdouble-promotion",
+    "-Wshadow",
+    "-ffp-contract=off",
+    "-O2",
+];
+
+/// Number of random records of the cross-check.
+const RECORDS: usize = 100_000;
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+fn c_dir() -> PathBuf {
+    root().join("generated/c")
+}
+
+/// A notice the test harness does not capture, so that a skipped check is seen.
+fn notice(msg: &str) {
+    let _ = writeln!(std::io::stderr(), "NOTICE c_header: {msg}");
+}
+
+fn available(compiler: &str) -> bool {
+    Command::new(compiler)
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success())
+}
+
+/// A compiler the checks require: missing is a failure under CI, a notice elsewhere.
+fn required(compiler: &str) -> bool {
+    if available(compiler) {
+        return true;
+    }
+    assert!(
+        std::env::var_os("CI").is_none(),
+        "{compiler} is not on PATH but CI is set: install gcc and g++ (apt-get install gcc g++)"
+    );
+    notice(&format!(
+        "SKIPPED the {compiler} checks: {compiler} is not on PATH; set CI=1 to make this a failure"
+    ));
+    false
+}
+
+/// One way to build the self-test: compiler and language flags.
+struct Build {
+    compiler: &'static str,
+    language: &'static [&'static str],
+}
+
+const GCC: Build = Build {
+    compiler: "gcc",
+    language: &["-std=c99"],
+};
+const GXX: Build = Build {
+    compiler: "g++",
+    language: &["-x", "c++", "-std=c++11"],
+};
+const CLANG: Build = Build {
+    compiler: "clang",
+    language: &["-std=c99"],
+};
+
+/// Compiles `generated/c/test_roll_criterion.c` with `build` into the test's temporary
+/// directory; panics with the compiler's output on any warning.
+fn compile(build: &Build) -> PathBuf {
+    let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
+        "test_roll_criterion_{}",
+        build.compiler.replace('+', "x")
+    ));
+    // Built under a name of this process, then renamed: a concurrent run never sees half a file.
+    let tmp = exe.with_extension(format!("tmp{}", std::process::id()));
+    compile_self_test(build, &c_dir(), &tmp);
+    std::fs::rename(&tmp, &exe).unwrap();
+    exe
+}
+
+/// Compiles `dir/test_roll_criterion.c` (with the header next to it) into `exe`.
+fn compile_self_test(build: &Build, dir: &Path, exe: &Path) -> PathBuf {
+    let out = Command::new(build.compiler)
+        .args(build.language)
+        .args(FLAGS)
+        .arg("-o")
+        .arg(exe)
+        .arg(dir.join("test_roll_criterion.c"))
+        .arg("-lm")
+        .output()
+        .unwrap_or_else(|e| panic!("run {}: {e}", build.compiler));
+    assert!(
+        out.status.success() && out.stderr.is_empty(),
+        "{} {:?} {FLAGS:?} failed or warned:\n{}",
+        build.compiler,
+        build.language,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    exe.to_path_buf()
+}
+
+/// The gcc and g++ builds, compiled once for all tests of this file.
+fn builds() -> &'static [(&'static str, PathBuf)] {
+    static BUILDS: OnceLock<Vec<(&'static str, PathBuf)>> = OnceLock::new();
+    BUILDS.get_or_init(|| {
+        [GCC, GXX]
+            .iter()
+            .filter(|b| required(b.compiler))
+            .map(|b| (b.compiler, compile(b)))
+            .collect()
+    })
+}
+
+fn run_self_test(compiler: &str, exe: &Path) {
+    let out = Command::new(exe).output().expect("run the self-test");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success() && stdout.contains(" 0 failed"),
+        "{compiler} self-test failed:\n{stdout}"
+    );
+    let checks: usize = stdout
+        .split_whitespace()
+        .nth(1)
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0);
+    assert!(
+        checks > 100,
+        "{compiler} self-test checked too little: {stdout}"
+    );
+}
+
+#[test]
+fn header_compiles_warning_free_as_c99_and_cpp_and_its_self_test_passes() {
+    for (compiler, exe) in builds() {
+        run_self_test(compiler, exe);
+    }
+    if available(CLANG.compiler) {
+        run_self_test("clang", &compile(&CLANG));
+    } else {
+        notice("SKIPPED the clang build: clang is not on PATH");
+    }
+}
+
+/// Compiles `source` (in the temporary directory, with the header on the include path) to an
+/// object file and returns what `nm` lists in it.
+fn object_symbols(build: &Build, name: &str, source: &str) -> String {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"));
+    let src = dir.join(format!("{name}_{}.c", std::process::id()));
+    let obj = src.with_extension("o");
+    std::fs::write(&src, source).unwrap();
+    let out = Command::new(build.compiler)
+        .args(build.language)
+        .args(FLAGS)
+        .arg("-I")
+        .arg(c_dir())
+        .arg("-c")
+        .arg(&src)
+        .arg("-o")
+        .arg(&obj)
+        .output()
+        .expect("run the compiler");
+    assert!(
+        out.status.success() && out.stderr.is_empty(),
+        "{} on {name}:\n{}",
+        build.compiler,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let nm = Command::new("nm").arg(&obj).output().expect("run nm");
+    let _ = (std::fs::remove_file(&src), std::fs::remove_file(&obj));
+    String::from_utf8_lossy(&nm.stdout).into_owned()
+}
+
+#[test]
+fn header_honours_include_guards_the_linkage_macro_and_extern_c() {
+    // Included twice, with external linkage chosen through ROLL_CRITERION_API: as C, and as
+    // C++, where the extern "C" guard must keep the names unmangled.
+    let source = "#define ROLL_CRITERION_API\n#include \"roll_criterion.h\"\n#include \"roll_criterion.h\"\n";
+    for build in [GCC, GXX] {
+        if !required(build.compiler) {
+            continue;
+        }
+        let symbols = object_symbols(&build, "linkage", source);
+        for f in calls::LABELS[0] {
+            let name = f.split('(').next().unwrap();
+            assert!(
+                symbols.contains(&format!(" T {name}\n")),
+                "{}: {name} is not an unmangled external definition with ROLL_CRITERION_API empty:\n{symbols}",
+                build.compiler
+            );
+        }
+    }
+}
+
+#[test]
+fn the_self_test_fails_when_a_constant_of_the_header_is_perturbed() {
+    if !required("gcc") {
+        return;
+    }
+    // Aircraft A's l_p moved by one part in 10^9 in a copy of the header.
+    let header = std::fs::read_to_string(c_dir().join("roll_criterion.h")).unwrap();
+    let line = header
+        .lines()
+        .find(|l| l.ends_with(", // l_p"))
+        .expect("the l_p line of the data");
+    let value: f64 = line.trim().split(',').next().unwrap().parse().unwrap();
+    let perturbed = header.replacen(line, &format!("    {:?}, // l_p", value * (1.0 + 1e-9)), 1);
+    let dir =
+        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("perturbed_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("roll_criterion.h"), perturbed).unwrap();
+    std::fs::copy(
+        c_dir().join("test_roll_criterion.c"),
+        dir.join("test_roll_criterion.c"),
+    )
+    .unwrap();
+    let exe = compile_self_test(&GCC, &dir, &dir.join("test_roll_criterion"));
+    let run = Command::new(&exe).output().expect("run the self-test");
+    let _ = std::fs::remove_dir_all(&dir);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        !run.status.success()
+            && stdout.contains("FAIL rc_")
+            && stdout.contains("(&rc_aircraft_a_derivatives"),
+        "the self-test did not notice the perturbed l_p:\n{stdout}"
+    );
+}
+
+/// The names the header defines functions for, in order.
+fn header_functions(text: &str) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    let mut rest = text;
+    while let Some(i) = rest.find("\nROLL_CRITERION_API ") {
+        rest = &rest[i + 1..];
+        let open = rest.find('(').unwrap();
+        let name = rest[..open].split_whitespace().last().unwrap().to_string();
+        let body_start = rest.find("\n{\n").unwrap();
+        let body_end = rest.find("\n}\n").unwrap();
+        out.push((name, rest[body_start + 3..body_end].to_string()));
+        rest = &rest[body_end..];
+    }
+    out
+}
+
+#[test]
+fn header_functions_are_straight_line_with_one_return_and_only_sqrt() {
+    let text = std::fs::read_to_string(c_dir().join("roll_criterion.h")).unwrap();
+    for guard in [
+        "#ifndef ROLL_CRITERION_H",
+        "#ifdef __cplusplus\nextern \"C\" {",
+        "#define ROLL_CRITERION_API static inline",
+        "static const struct rc_derivatives rc_aircraft_a_derivatives",
+        "static const struct rc_derivatives rc_aircraft_b_derivatives",
+        "// @generated by `cargo run -p model -- emit`",
+    ] {
+        assert!(text.contains(guard), "header lacks {guard:?}");
+    }
+    let fns = header_functions(&text);
+    // Every output label of the cross-check names a header function, and vice versa.
+    let mut called: Vec<String> = calls::LABELS
+        .iter()
+        .flatten()
+        .map(|l| l.split('(').next().unwrap().to_string())
+        .collect();
+    called.sort();
+    called.dedup();
+    let mut defined: Vec<String> = fns.iter().map(|(n, _)| n.clone()).collect();
+    defined.sort();
+    assert_eq!(called, defined);
+    for (name, body) in &fns {
+        assert_eq!(body.matches("return").count(), 1, "{name}: one return");
+        for word in body.split(|c: char| !(c.is_alphanumeric() || c == '_')) {
+            assert!(
+                !matches!(
+                    word,
+                    "if" | "else" | "for" | "while" | "do" | "switch" | "goto" | "malloc"
+                ),
+                "{name} uses `{word}`"
+            );
+        }
+        assert!(!body.contains('?'), "{name} has a conditional expression");
+        for (i, _) in body.match_indices('(') {
+            let before = body[..i].trim_end();
+            let callee = before
+                .rsplit(|c: char| !(c.is_alphanumeric() || c == '_'))
+                .next()
+                .unwrap();
+            assert!(
+                matches!(callee, "" | "sqrt" | "void" | "return"),
+                "{name} calls {callee}"
+            );
+        }
+    }
+}
+
+/// The random value of an argument, by name (the issue's ranges for P0 and delta_e).
+fn sample(name: &str, rng: &mut Lcg) -> f64 {
+    let deg10 = 10f64.to_radians();
+    match name {
+        "p0" | "p" => rng.range(0.0, 6.0),
+        "delta_e" | "delta_r" => rng.range(-deg10, deg10),
+        "alpha" | "beta" => rng.range(-0.5, 0.5),
+        _ => rng.range(-1.0, 1.0),
+    }
+}
+
+type Record = (usize, [f64; calls::COLUMNS.len()]);
+
+/// Non-finite and extreme records for each aircraft, then `n` random ones (seeded).
+fn records(n: usize) -> Vec<Record> {
+    let mut out = Vec::new();
+    for aircraft in 0..calls::AIRCRAFT.len() {
+        for x in [0.0, -0.0, f64::NAN, f64::INFINITY, -1e300, 5e-324] {
+            out.push((aircraft, [x; calls::COLUMNS.len()]));
+        }
+    }
+    let mut rng = Lcg(0x05ee_dc99);
+    for _ in 0..n {
+        let aircraft = ((rng.next_f64() * calls::AIRCRAFT.len() as f64) as usize)
+            .min(calls::AIRCRAFT.len() - 1);
+        let mut x = [0.0; calls::COLUMNS.len()];
+        for (v, name) in x.iter_mut().zip(calls::COLUMNS) {
+            *v = sample(name, &mut rng);
+        }
+        out.push((aircraft, x));
+    }
+    out
+}
+
+/// Runs `exe --bits` on `records`; the C results, one array per record.
+fn c_outputs(exe: &Path, records: &[Record]) -> Vec<f64> {
+    let path = exe.with_extension(format!("records{}_{}", records.len(), std::process::id()));
+    let mut text = String::with_capacity(records.len() * 160);
+    for (aircraft, x) in records {
+        text.push_str(&aircraft.to_string());
+        for v in x {
+            text.push_str(&format!(" {:x}", v.to_bits()));
+        }
+        text.push('\n');
+    }
+    std::fs::write(&path, text).unwrap();
+    let out = Command::new(exe)
+        .arg("--bits")
+        .arg(&path)
+        .output()
+        .expect("run --bits");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    std::fs::remove_file(&path).unwrap();
+    let n = calls::LABELS[0].len();
+    assert_eq!(
+        out.stdout.len(),
+        records.len() * n * 8,
+        "one double per output"
+    );
+    out.stdout
+        .chunks_exact(8)
+        .map(|b| f64::from_ne_bytes(b.try_into().unwrap()))
+        .collect()
+}
+
+/// Same bits, or both NaN (payloads of NaN may differ between compilers).
+fn same(a: f64, b: f64) -> bool {
+    a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan())
+}
+
+/// The first record and output where C and Rust differ, as a message naming the input.
+fn first_difference(
+    records: &[Record],
+    c: &[f64],
+    rust: impl Fn(usize, &[f64; calls::COLUMNS.len()]) -> [f64; calls::LABELS[0].len()],
+) -> Option<String> {
+    let n = calls::LABELS[0].len();
+    for (i, (aircraft, x)) in records.iter().enumerate() {
+        let r = rust(*aircraft, x);
+        let got = &c[i * n..(i + 1) * n];
+        if let Some(j) = (0..n).find(|j| !same(got[*j], r[*j])) {
+            let inputs: Vec<String> = calls::COLUMNS
+                .iter()
+                .zip(x)
+                .map(|(name, v)| format!("{name} = {v:e}"))
+                .collect();
+            return Some(format!(
+                "record {i} ({}, {}): {} is {:e} ({:#018x}) in C but {:e} ({:#018x}) in Rust",
+                calls::AIRCRAFT[*aircraft],
+                inputs.join(", "),
+                calls::LABELS[*aircraft][j],
+                got[j],
+                got[j].to_bits(),
+                r[j],
+                r[j].to_bits()
+            ));
+        }
+    }
+    None
+}
+
+#[test]
+fn c_and_rust_results_are_bit_identical_on_100000_random_inputs() {
+    let records = records(RECORDS);
+    for (compiler, exe) in builds() {
+        let c = c_outputs(exe, &records);
+        if let Some(msg) = first_difference(&records, &c, calls::outputs) {
+            panic!("{compiler}: C and Rust differ at the first differing input, {msg}");
+        }
+    }
+}
+
+#[test]
+fn the_cross_check_detects_a_one_ulp_difference_and_names_the_input() {
+    let Some((_, exe)) = builds().first() else {
+        return;
+    };
+    let records = records(50);
+    let c = c_outputs(exe, &records);
+    assert_eq!(first_difference(&records, &c, calls::outputs), None);
+    // One output of record 20 moved by one ulp on the Rust side.
+    let perturbed = |aircraft, x: &[f64; calls::COLUMNS.len()]| {
+        let mut r = calls::outputs(aircraft, x);
+        if *x == records[20].1 {
+            r[3] = f64::from_bits(r[3].to_bits() + 1);
+        }
+        r
+    };
+    let msg = first_difference(&records, &c, perturbed).expect("a difference");
+    assert!(
+        msg.starts_with("record 20 (") && msg.contains(calls::LABELS[records[20].0][3]),
+        "{msg}"
+    );
+    // An input one ulp away gives different bits somewhere, and that is found too.
+    let shifted = |aircraft, x: &[f64; calls::COLUMNS.len()]| {
+        calls::outputs(aircraft, &x.map(|v| f64::from_bits(v.to_bits() + 1)))
+    };
+    let msg = first_difference(&records, &c, shifted).expect("a difference");
+    assert!(
+        msg.starts_with("record 0 (") || msg.contains("record "),
+        "{msg}"
+    );
+    // NaN equals NaN whatever the payload; signed zeros differ.
+    assert!(same(f64::NAN, f64::from_bits(f64::NAN.to_bits() ^ 1)));
+    assert!(!same(0.0, -0.0));
+}
+
+#[test]
+fn readme_c_example_compiles_warning_free() {
+    if !required("gcc") {
+        return;
+    }
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let section = &readme[readme
+        .find("### The same criterion in C")
+        .expect("the C section")..];
+    let start = section.find("```c\n").expect("a C example") + 5;
+    let example = &section[start..start + section[start..].find("```").unwrap()];
+    let symbols = object_symbols(&GCC, "readme", example);
+    assert!(symbols.contains(" T criterion\n"), "{symbols}");
+}

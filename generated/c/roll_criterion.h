@@ -6,17 +6,17 @@
 // Operation counts after common-subexpression elimination (parametric; the functions of
 // each built-in aircraft are counted in its section):
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  27      54       2       2       0      85
-//   zero_sideslip_trim                     7      16       2       2       0      27
+//   trim                                  38      79       3       1       1     122
+//   zero_sideslip_trim                     9      21       2       1       0      33
 //   jacobian5                              2       6       0       4       0      12
-//   residual_denominator                  27      54       1       0       0      82
-//   stiffness                             46      81       2       1       0     130
-//   det_k                                 49      85       1       0       0     135
-//   det_j5                                78     134       1       0       0     213
+//   residual_denominator                  41      83       3       0       1     128
+//   stiffness                             61     110       4       0       1     176
+//   det_k                                 64     115       4       0       1     184
+//   det_j5                                90     163       3       0       1     257
 //   zero_sideslip_det_k                   23      42       1       0       0      66
 //   divergence_biquadratic                 5      10       0       0       0      15
 //   divergence_roll_rates                  8      14       2       1       3      28
-//   jump_polynomial                      290     420       0       0       0     710
+//   jump_polynomial                      291     433       0       1       1     726
 //   zero_sideslip_jump_polynomial         57     116       0       0       0     173
 //
 // Use: `#include "roll_criterion.h"` and link with -lm (for sqrt). Every function is
@@ -77,6 +77,8 @@ struct rc_derivatives {
     double n_delta_a;
     /// `n_delta_r`, 1/s^2 (Table A.1).
     double n_delta_r;
+    /// `l_delta_r`, 1/s^2 (Table A.1).
+    double l_delta_r;
 };
 
 /// Pseudo-steady trim of the unconstrained roll at roll rate P0 (Eqs 3-4 and the roll equation).
@@ -138,16 +140,19 @@ struct rc_matrix5x5 {
 };
 
 /// Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
-/// for x = [alpha, beta, q, r], then the aileron from the roll equation
-/// `delta_a = -(l_p P0 + l_beta beta0 + l_r R0 - E Q0 R0) / l_delta_a` (n_delta_a = 0).
-/// Angles in rad, rates in rad/s. Non-finite where det A = 0 (the divergence roll rates).
+/// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
+/// equation), and the aileron from the roll equation, a quadratic in delta_a
+/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). This is the trim
+/// branch that continues the trim without aileron yaw (the root that tends to `-g0/g1`);
+/// NaN where the two trims of `p0` are complex. Angles in rad, rates in rad/s.
+/// Non-finite where det A = 0 (the divergence roll rates).
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 27 add/sub, 54 mul, 2 div, 2 neg, 0 libm (85 operations); straight-line, no branches.
+/// Cost after CSE: 38 add/sub, 79 mul, 3 div, 1 neg, 1 libm (122 operations); straight-line, no branches.
 /// Rust: `roll_criterion::trim`, bit-identical.
 ROLL_CRITERION_API struct rc_Trim rc_trim(const struct rc_derivatives *k, double p0, double delta_e,
     double delta_r)
@@ -161,21 +166,34 @@ ROLL_CRITERION_API struct rc_Trim rc_trim(const struct rc_derivatives *k, double
     const double t6 = k->n_beta + k->y_beta * k->n_r;
     const double t7 = p0 * k->m_q;
     const double t8 = k->y_beta * t0;
-    const double t9 = p0 * k->n_r;
-    const double t10 = k->m_alpha + p0 * t0;
-    const double t11 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
+    const double t9 = t7 + t8;
+    const double t10 = p0 * k->n_r;
+    const double t11 = k->m_alpha + p0 * t0;
+    const double t12 = k->z_alpha * k->m_q - t11;
+    const double t13 = k->z_alpha * t8 + p0 * t11;
+    const double t14 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t7 - k->y_beta * k->m_alpha;
+    const double t15 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
         k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
         k->n_beta));
-    const double t12 = (t2 * (k->z_alpha * t1 + t9) + t3 * (k->z_alpha * k->m_q - t10)) * t11;
-    const double t13 = (t3 * (k->z_alpha * t8 + p0 * t10) - t2 * (k->z_alpha * t6 + p0 * t9)) * t11;
-    const double t14 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
-        (k->z_alpha * (k->y_beta * k->m_q) + p0 * t7 - k->y_beta * k->m_alpha)) * t11;
+    const double t16 = (t2 * (k->z_alpha * t1 + t10) + t3 * t12) * t15;
+    const double t17 = (t3 * t13 - t2 * (k->z_alpha * t6 + p0 * t10)) * t15;
+    const double t18 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
+        t14) * t15;
+    const double t19 = t15 * (k->n_delta_a * t12);
+    const double t20 = t15 * (k->n_delta_a * t13);
+    const double t21 = t15 * (k->n_delta_a * t14);
+    const double t22 = k->l_r - k->e * t17;
+    const double t23 = t18 * t22 + (delta_r * k->l_delta_r - k->l_beta * t16 + p0 * k->l_p);
+    const double t24 = k->e * 0.5 * (t20 * t21);
+    const double t25 = k->l_delta_a - k->l_beta * t19 - t20 * (k->e * t18) - t21 * t22;
+    const double t26 = t23 * 2.0 / (t25 * (1.0 + sqrt(1.0 - t23 * (t24 + t24) / (t25 * t25) *
+        4.0)));
     struct rc_Trim result;
-    result.alpha = -((t2 * (t5 - t6) + t3 * (t7 + t8)) * t11);
-    result.beta = -t12;
-    result.q = t13;
-    result.r = t14;
-    result.delta_a = (t14 * (k->e * t13 - k->l_r) + (k->l_beta * t12 - p0 * k->l_p)) / k->l_delta_a;
+    result.alpha = t15 * (k->n_delta_a * t9) * t26 - (t2 * (t5 - t6) + t3 * t9) * t15;
+    result.beta = t19 * t26 - t16;
+    result.q = t17 - t20 * t26;
+    result.r = t18 + t21 * t26;
+    result.delta_a = -t26;
     return result;
 }
 
@@ -188,7 +206,7 @@ ROLL_CRITERION_API struct rc_Trim rc_trim(const struct rc_derivatives *k, double
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 7 add/sub, 16 mul, 2 div, 2 neg, 0 libm (27 operations); straight-line, no branches.
+/// Cost after CSE: 9 add/sub, 21 mul, 2 div, 1 neg, 0 libm (33 operations); straight-line, no branches.
 /// Rust: `roll_criterion::zero_sideslip_trim`, bit-identical.
 ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_zero_sideslip_trim(const struct rc_derivatives *k,
     double p0, double delta_e)
@@ -197,13 +215,15 @@ ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_zero_sideslip_trim(const struct
     const double t1 = 1.0 / (k->z_alpha * k->m_q - (k->m_alpha + p0 * (p0 * k->c)));
     const double t2 = k->z_alpha * t0 * t1;
     const double t3 = p0 * t0 * t1;
-    const double t4 = (t3 * (k->l_r + k->e * t2) + p0 * k->l_p) / k->l_delta_a;
+    const double t4 = t3 * (k->l_r + k->e * t2) + p0 * k->l_p;
+    const double t5 = p0 * (k->n_p + k->d * t2) + k->n_r * t3;
     struct rc_ZeroSideslipTrim result;
     result.alpha = t0 * t1;
     result.q = -t2;
     result.r = t3;
-    result.delta_a = -t4;
-    result.n_delta_r_delta_r = k->n_delta_a * t4 - k->n_r * t3 - p0 * (k->n_p + k->d * t2);
+    result.delta_a = (k->l_delta_r * t5 - k->n_delta_r * t4) / (k->l_delta_a * k->n_delta_r -
+        k->n_delta_a * k->l_delta_r);
+    result.n_delta_r_delta_r = k->n_delta_a * t4 - k->l_delta_a * t5;
     return result;
 }
 
@@ -259,7 +279,7 @@ ROLL_CRITERION_API struct rc_matrix5x5 rc_jacobian5(const struct rc_derivatives 
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 27 add/sub, 54 mul, 1 div, 0 neg, 0 libm (82 operations); straight-line, no branches.
+/// Cost after CSE: 41 add/sub, 83 mul, 3 div, 0 neg, 1 libm (128 operations); straight-line, no branches.
 /// Rust: `roll_criterion::residual_denominator`, bit-identical.
 ROLL_CRITERION_API double rc_residual_denominator(const struct rc_derivatives *k, double p0,
     double delta_e, double delta_r)
@@ -273,16 +293,31 @@ ROLL_CRITERION_API double rc_residual_denominator(const struct rc_derivatives *k
     const double t6 = k->n_beta + k->y_beta * k->n_r;
     const double t7 = p0 * k->m_q;
     const double t8 = k->y_beta * t0;
-    const double t9 = p0 * k->n_r;
-    const double t10 = k->m_alpha + p0 * t0;
-    const double t11 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
+    const double t9 = t7 + t8;
+    const double t10 = p0 * k->n_r;
+    const double t11 = k->m_alpha + p0 * t0;
+    const double t12 = k->z_alpha * k->m_q - t11;
+    const double t13 = k->z_alpha * t8 + p0 * t11;
+    const double t14 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t7 - k->y_beta * k->m_alpha;
+    const double t15 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
         k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
         k->n_beta));
-    const double t12 = (t2 * (t5 - t6) + t3 * (t7 + t8)) * t11;
-    return k->e * ((t2 * (k->z_alpha * t1 + t9) + t3 * (k->z_alpha * k->m_q - t10)) * t11 * ((t2 *
-        (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 * (k->z_alpha * (k->y_beta
-        * k->m_q) + p0 * t7 - k->y_beta * k->m_alpha)) * t11) + t12 * ((t3 * (k->z_alpha * t8 + p0 *
-        t10) - t2 * (k->z_alpha * t6 + p0 * t9)) * t11)) + (k->l_p - k->l_r * t12);
+    const double t16 = (t2 * (k->z_alpha * t1 + t10) + t3 * t12) * t15;
+    const double t17 = (t3 * t13 - t2 * (k->z_alpha * t6 + p0 * t10)) * t15;
+    const double t18 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
+        t14) * t15;
+    const double t19 = t15 * (k->n_delta_a * t12);
+    const double t20 = t15 * (k->n_delta_a * t13);
+    const double t21 = t15 * (k->n_delta_a * t14);
+    const double t22 = k->l_r - k->e * t17;
+    const double t23 = t18 * t22 + (delta_r * k->l_delta_r - k->l_beta * t16 + p0 * k->l_p);
+    const double t24 = k->e * 0.5 * (t20 * t21);
+    const double t25 = k->l_delta_a - k->l_beta * t19 - t20 * (k->e * t18) - t21 * t22;
+    const double t26 = t23 * 2.0 / (t25 * (1.0 + sqrt(1.0 - t23 * (t24 + t24) / (t25 * t25) *
+        4.0)));
+    const double t27 = t15 * (k->n_delta_a * t9) * t26 - (t2 * (t5 - t6) + t3 * t9) * t15;
+    return k->l_p + k->l_r * t27 - k->e * ((t19 * t26 - t16) * (t18 + t21 * t26) + t27 * (t17 - t20
+        * t26));
 }
 
 /// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of `p0`:
@@ -294,7 +329,7 @@ ROLL_CRITERION_API double rc_residual_denominator(const struct rc_derivatives *k
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 46 add/sub, 81 mul, 2 div, 1 neg, 0 libm (130 operations); straight-line, no branches.
+/// Cost after CSE: 61 add/sub, 110 mul, 4 div, 0 neg, 1 libm (176 operations); straight-line, no branches.
 /// Rust: `roll_criterion::stiffness`, bit-identical.
 ROLL_CRITERION_API struct rc_matrix2x2 rc_stiffness(const struct rc_derivatives *k, double p0,
     double delta_e, double delta_r)
@@ -308,42 +343,59 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_stiffness(const struct rc_derivatives 
     const double t6 = k->n_beta + k->y_beta * k->n_r;
     const double t7 = p0 * k->m_q;
     const double t8 = k->y_beta * t0;
-    const double t9 = p0 * k->n_r;
-    const double t10 = k->z_alpha * k->m_q;
-    const double t11 = k->m_alpha + p0 * t0;
-    const double t12 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
+    const double t9 = t7 + t8;
+    const double t10 = p0 * k->n_r;
+    const double t11 = k->z_alpha * k->m_q;
+    const double t12 = k->m_alpha + p0 * t0;
+    const double t13 = t11 - t12;
+    const double t14 = k->z_alpha * t8 + p0 * t12;
+    const double t15 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t7 - k->y_beta * k->m_alpha;
+    const double t16 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
         k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
         k->n_beta));
-    const double t13 = (t2 * (t5 - t6) + t3 * (t7 + t8)) * t12;
-    const double t14 = (t2 * (k->z_alpha * t1 + t9) + t3 * (t10 - t11)) * t12;
-    const double t15 = (t3 * (k->z_alpha * t8 + p0 * t11) - t2 * (k->z_alpha * t6 + p0 * t9)) * t12;
-    const double t16 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
-        (k->z_alpha * (k->y_beta * k->m_q) + p0 * t7 - k->y_beta * k->m_alpha)) * t12;
-    const double t17 = 1.0 / (k->e * (t14 * t16 + t13 * t15) + (k->l_p - k->l_r * t13));
-    const double t18 = k->e * (k->z_alpha * t16 - p0 * t15) + p0 * k->l_r;
-    const double t19 = k->l_beta + k->y_beta * k->l_r - k->e * (p0 * t16 + k->y_beta * t15);
-    const double t20 = t17 * (k->c * (p0 * t13 - t16) + k->m_q * t14);
-    const double t21 = p0 * p0;
-    const double t22 = t17 * (k->d * (p0 * t14 - t15) + (k->n_p - k->n_r * t13));
+    const double t17 = (t2 * (k->z_alpha * t1 + t10) + t3 * t13) * t16;
+    const double t18 = (t3 * t14 - t2 * (k->z_alpha * t6 + p0 * t10)) * t16;
+    const double t19 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
+        t15) * t16;
+    const double t20 = t16 * (k->n_delta_a * t13);
+    const double t21 = t16 * (k->n_delta_a * t14);
+    const double t22 = t16 * (k->n_delta_a * t15);
+    const double t23 = k->l_r - k->e * t18;
+    const double t24 = t19 * t23 + (delta_r * k->l_delta_r - k->l_beta * t17 + p0 * k->l_p);
+    const double t25 = k->e * 0.5 * (t21 * t22);
+    const double t26 = k->l_delta_a - k->l_beta * t20 - t21 * (k->e * t19) - t22 * t23;
+    const double t27 = t24 * 2.0 / (t26 * (1.0 + sqrt(1.0 - t24 * (t25 + t25) / (t26 * t26) *
+        4.0)));
+    const double t28 = t16 * (k->n_delta_a * t9) * t27 - (t2 * (t5 - t6) + t3 * t9) * t16;
+    const double t29 = t20 * t27 - t17;
+    const double t30 = t21 * t27;
+    const double t31 = t18 - t30;
+    const double t32 = t19 + t22 * t27;
+    const double t33 = 1.0 / (k->l_p + k->l_r * t28 - k->e * (t29 * t32 + t28 * t31));
+    const double t34 = k->e * (k->z_alpha * t32 - p0 * t31) + p0 * k->l_r;
+    const double t35 = k->l_beta + k->y_beta * k->l_r - k->e * (p0 * t32 + k->y_beta * t31);
+    const double t36 = t33 * (k->c * (t32 + p0 * t28) + k->m_q * t29);
+    const double t37 = p0 * p0;
+    const double t38 = t33 * (k->d * (t30 - t18 - p0 * t29) + (k->n_p + k->n_r * t28));
     struct rc_matrix2x2 result;
-    result.m[0][0] = t10 - k->m_alpha - k->c * t21 - t18 * t20;
-    result.m[0][1] = -(p0 * (k->m_q + k->c * k->y_beta) + t19 * t20);
-    result.m[1][0] = p0 * (k->n_r + k->d * k->z_alpha) - t18 * t22;
-    result.m[1][1] = t6 - k->d * t21 - t19 * t22;
+    result.m[0][0] = t11 - k->m_alpha - k->c * t37 + t34 * t36;
+    result.m[0][1] = t35 * t36 - p0 * (k->m_q + k->c * k->y_beta);
+    result.m[1][0] = p0 * (k->n_r + k->d * k->z_alpha) - t34 * t38;
+    result.m[1][1] = t6 - k->d * t37 - t35 * t38;
     return result;
 }
 
 /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the
 /// saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.
 /// Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared
-/// from g, h and d, so that it costs a single division.
+/// from g, h and d, on the trim branch of [`trim`].
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 49 add/sub, 85 mul, 1 div, 0 neg, 0 libm (135 operations); straight-line, no branches.
+/// Cost after CSE: 64 add/sub, 115 mul, 4 div, 0 neg, 1 libm (184 operations); straight-line, no branches.
 /// Rust: `roll_criterion::det_k`, bit-identical.
 ROLL_CRITERION_API double rc_det_k(const struct rc_derivatives *k, double p0, double delta_e,
     double delta_r)
@@ -351,37 +403,55 @@ ROLL_CRITERION_API double rc_det_k(const struct rc_derivatives *k, double p0, do
     const double t0 = p0 * k->c;
     const double t1 = p0 * k->d;
     const double t2 = delta_e * k->m_delta_e;
-    const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
-    const double t4 = k->m_q * k->n_r + t0 * t1;
-    const double t5 = k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
+    const double t3 = delta_r * k->n_delta_r;
+    const double t4 = p0 * k->n_p;
+    const double t5 = t3 + t4;
+    const double t6 = k->m_q * k->n_r + t0 * t1;
+    const double t7 = k->z_alpha * (k->y_beta * t6 + k->m_q * k->n_beta) + p0 * (p0 * t6 +
         k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
         k->n_beta);
-    const double t6 = p0 * t1;
-    const double t7 = k->n_beta + k->y_beta * k->n_r;
-    const double t8 = p0 * k->m_q;
-    const double t9 = k->y_beta * t0;
-    const double t10 = t2 * (t6 - t7) + t3 * (t8 + t9);
-    const double t11 = p0 * k->n_r;
-    const double t12 = k->z_alpha * k->m_q;
-    const double t13 = k->m_alpha + p0 * t0;
-    const double t14 = t2 * (k->z_alpha * t1 + t11) + t3 * (t12 - t13);
-    const double t15 = t2 * (k->z_alpha * t7 + p0 * t11);
-    const double t16 = t3 * (k->z_alpha * t9 + p0 * t13);
-    const double t17 = t16 - t15;
-    const double t18 = t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t6));
-    const double t19 = t3 * (k->z_alpha * (k->y_beta * k->m_q) + p0 * t8 - k->y_beta * k->m_alpha);
-    const double t20 = t18 - t19;
-    const double t21 = k->c * (t19 - t18 + p0 * t10) + k->m_q * t14;
-    const double t22 = k->n_p * t5 + (k->d * (t15 - t16 + p0 * t14) - k->n_r * t10);
-    const double t23 = p0 * p0;
-    const double t24 = t12 - k->m_alpha - k->c * t23;
-    const double t25 = p0 * (k->m_q + k->c * k->y_beta);
-    const double t26 = p0 * (k->n_r + k->d * k->z_alpha);
-    const double t27 = t7 - k->d * t23;
-    return t24 * t27 + t25 * t26 - ((t5 * (p0 * k->l_r) + k->e * (k->z_alpha * t20 - p0 * t17)) *
-        (t21 * t27 + t22 * t25) + (t5 * (k->l_beta + k->y_beta * k->l_r) - k->e * (p0 * t20 +
-        k->y_beta * t17)) * (t22 * t24 - t21 * t26)) / (k->l_p * (t5 * t5) - t5 * (k->l_r * t10) +
-        k->e * (t14 * t20 + t10 * t17));
+    const double t8 = p0 * t1;
+    const double t9 = k->n_beta + k->y_beta * k->n_r;
+    const double t10 = p0 * k->m_q;
+    const double t11 = k->y_beta * t0;
+    const double t12 = p0 * k->n_r;
+    const double t13 = t2 * (k->z_alpha * t1 + t12);
+    const double t14 = k->z_alpha * k->m_q;
+    const double t15 = k->m_alpha + p0 * t0;
+    const double t16 = t14 - t15;
+    const double t17 = t2 * (k->z_alpha * t9 + p0 * t12);
+    const double t18 = k->z_alpha * t11 + p0 * t15;
+    const double t19 = t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t8));
+    const double t20 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t10 - k->y_beta * k->m_alpha;
+    const double t21 = 1.0 / t7;
+    const double t22 = (t19 - t5 * t20) * t21;
+    const double t23 = t21 * (k->n_delta_a * t18);
+    const double t24 = t21 * (k->n_delta_a * t20);
+    const double t25 = k->l_r - k->e * ((t5 * t18 - t17) * t21);
+    const double t26 = t22 * t25 + (delta_r * k->l_delta_r - k->l_beta * ((t13 + t5 * t16) * t21) +
+        p0 * k->l_p);
+    const double t27 = k->e * 0.5 * (t23 * t24);
+    const double t28 = k->l_delta_a - k->l_beta * (t21 * (k->n_delta_a * t16)) - t23 * (k->e * t22)
+        - t24 * t25;
+    const double t29 = t4 + (t3 - k->n_delta_a * (t26 * 2.0 / (t28 * (1.0 + sqrt(1.0 - t26 * (t27 +
+        t27) / (t28 * t28) * 4.0)))));
+    const double t30 = t2 * (t8 - t9) + (t10 + t11) * t29;
+    const double t31 = t13 + t16 * t29;
+    const double t32 = t18 * t29;
+    const double t33 = t32 - t17;
+    const double t34 = t20 * t29;
+    const double t35 = t19 - t34;
+    const double t36 = k->c * (t34 - t19 + p0 * t30) + k->m_q * t31;
+    const double t37 = k->n_p * t7 + (k->d * (t17 - t32 + p0 * t31) - k->n_r * t30);
+    const double t38 = p0 * p0;
+    const double t39 = t14 - k->m_alpha - k->c * t38;
+    const double t40 = p0 * (k->m_q + k->c * k->y_beta);
+    const double t41 = p0 * (k->n_r + k->d * k->z_alpha);
+    const double t42 = t9 - k->d * t38;
+    return t39 * t42 + t40 * t41 - ((t7 * (p0 * k->l_r) + k->e * (k->z_alpha * t35 - p0 * t33)) *
+        (t36 * t42 + t37 * t40) + (t7 * (k->l_beta + k->y_beta * k->l_r) - k->e * (p0 * t35 +
+        k->y_beta * t33)) * (t37 * t39 - t36 * t41)) / (k->l_p * (t7 * t7) - t7 * (k->l_r * t30) +
+        k->e * (t31 * t35 + t30 * t33));
 }
 
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -392,7 +462,7 @@ ROLL_CRITERION_API double rc_det_k(const struct rc_derivatives *k, double p0, do
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 78 add/sub, 134 mul, 1 div, 0 neg, 0 libm (213 operations); straight-line, no branches.
+/// Cost after CSE: 90 add/sub, 163 mul, 3 div, 0 neg, 1 libm (257 operations); straight-line, no branches.
 /// Rust: `roll_criterion::det_j5`, bit-identical.
 ROLL_CRITERION_API double rc_det_j5(const struct rc_derivatives *k, double p0, double delta_e,
     double delta_r)
@@ -406,40 +476,56 @@ ROLL_CRITERION_API double rc_det_j5(const struct rc_derivatives *k, double p0, d
     const double t6 = k->n_beta + k->y_beta * k->n_r;
     const double t7 = p0 * k->m_q;
     const double t8 = k->y_beta * t0;
-    const double t9 = p0 * k->n_r;
-    const double t10 = k->m_alpha + p0 * t0;
-    const double t11 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
+    const double t9 = t7 + t8;
+    const double t10 = p0 * k->n_r;
+    const double t11 = k->m_alpha + p0 * t0;
+    const double t12 = k->z_alpha * k->m_q - t11;
+    const double t13 = k->z_alpha * t8 + p0 * t11;
+    const double t14 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t7 - k->y_beta * k->m_alpha;
+    const double t15 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
         k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
         k->n_beta));
-    const double t12 = (t2 * (t5 - t6) + t3 * (t7 + t8)) * t11;
-    const double t13 = (t2 * (k->z_alpha * t1 + t9) + t3 * (k->z_alpha * k->m_q - t10)) * t11;
-    const double t14 = (t3 * (k->z_alpha * t8 + p0 * t10) - t2 * (k->z_alpha * t6 + p0 * t9)) * t11;
-    const double t15 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
-        (k->z_alpha * (k->y_beta * k->m_q) + p0 * t7 - k->y_beta * k->m_alpha)) * t11;
-    const double t16 = k->e * t14;
-    const double t17 = t16 * 2.0 - k->l_r;
-    const double t18 = k->e * k->n_p;
-    const double t19 = k->l_r * t12;
-    const double t20 = t16 - k->l_r;
-    const double t21 = k->l_p * k->n_r;
-    const double t22 = k->l_r - t16;
-    const double t23 = k->n_beta * t22 - k->l_beta * k->n_r;
-    const double t24 = k->n_r * t12;
-    const double t25 = k->d * t14;
-    const double t26 = t24 - k->n_p + t25;
-    return p0 * (p0 * (p0 * (p0 * (k->l_p * (k->c * k->d)) + k->c * (k->d * (t15 * t17 + k->l_beta *
-        t13) - t15 * t18)) + (k->d * (t14 * (k->l_r * k->m_q + t12 * (k->e * k->m_alpha) - k->c *
-        k->l_beta - t14 * (k->e * k->m_q)) + (k->c * (k->z_alpha * (k->l_beta * t12 + k->y_beta *
-        k->l_p)) + k->m_alpha * (k->l_p - t19))) + (k->c * (k->e * (t15 * (k->n_r * t15 - k->n_beta
-        * t13)) + (k->l_beta * k->n_p - k->l_p * k->n_beta)) + k->m_q * (k->n_p * t20 + t21)))) +
-        (t15 * (k->c * (k->z_alpha * (k->d * (k->y_beta * t17 - k->l_beta) - k->e * (k->n_beta * t12
-        + k->y_beta * k->n_p)) + t23) + k->e * (k->m_alpha * t26)) - t13 * (k->d * (k->m_alpha *
-        (k->y_beta * t20 - k->l_beta)) + k->m_q * t23))) + (k->z_alpha * (k->m_q * (k->y_beta * (t14
-        * (t18 + k->d * k->l_r - t14 * (k->d * k->e)) + (t21 - k->l_r * k->n_p)) + (k->l_beta * t26
-        + k->n_beta * (k->l_p - t12 * t22))) + k->c * (k->e * (t6 * (t15 * t15)))) + k->m_alpha *
-        (k->y_beta * (k->e * (t14 * (t25 - k->n_p) - t15 * (k->n_r * t13)) + (k->l_r * (k->n_p -
-        t25) - t21)) + (k->n_beta * (t19 - k->l_p - k->e * (t13 * t15 + t12 * t14)) + k->l_beta *
-        (k->n_p - t24 - t25))));
+    const double t16 = (t2 * (k->z_alpha * t1 + t10) + t3 * t12) * t15;
+    const double t17 = (t3 * t13 - t2 * (k->z_alpha * t6 + p0 * t10)) * t15;
+    const double t18 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
+        t14) * t15;
+    const double t19 = t15 * (k->n_delta_a * t12);
+    const double t20 = t15 * (k->n_delta_a * t13);
+    const double t21 = t15 * (k->n_delta_a * t14);
+    const double t22 = k->l_r - k->e * t17;
+    const double t23 = t18 * t22 + (delta_r * k->l_delta_r - k->l_beta * t16 + p0 * k->l_p);
+    const double t24 = k->e * 0.5 * (t20 * t21);
+    const double t25 = k->l_delta_a - k->l_beta * t19 - t20 * (k->e * t18) - t21 * t22;
+    const double t26 = t23 * 2.0 / (t25 * (1.0 + sqrt(1.0 - t23 * (t24 + t24) / (t25 * t25) *
+        4.0)));
+    const double t27 = t15 * (k->n_delta_a * t9) * t26 - (t2 * (t5 - t6) + t3 * t9) * t15;
+    const double t28 = t19 * t26 - t16;
+    const double t29 = t17 - t20 * t26;
+    const double t30 = t18 + t21 * t26;
+    const double t31 = k->e * t29;
+    const double t32 = 2.0 * t31 - k->l_r;
+    const double t33 = k->e * k->n_p;
+    const double t34 = k->l_p + k->l_r * t27;
+    const double t35 = t31 - k->l_r;
+    const double t36 = k->l_p * k->n_r;
+    const double t37 = k->l_r - t31;
+    const double t38 = k->n_beta * t37 - k->l_beta * k->n_r;
+    const double t39 = k->n_p + k->n_r * t27;
+    const double t40 = k->d * t29;
+    const double t41 = t40 - t39;
+    return p0 * (p0 * (p0 * (p0 * (k->l_p * (k->c * k->d)) + k->c * (k->d * (t30 * t32 - k->l_beta *
+        t28) - t30 * t33)) + (k->d * (t29 * (k->l_r * k->m_q - t27 * (k->e * k->m_alpha) - k->c *
+        k->l_beta - t29 * (k->e * k->m_q)) + (k->c * (k->z_alpha * (k->y_beta * k->l_p - k->l_beta *
+        t27)) + k->m_alpha * t34)) + (k->c * (k->e * (t30 * (k->n_r * t30 + k->n_beta * t28)) +
+        (k->l_beta * k->n_p - k->l_p * k->n_beta)) + k->m_q * (k->n_p * t35 + t36)))) + (t30 * (k->c
+        * (k->z_alpha * (k->d * (k->y_beta * t32 - k->l_beta) + k->e * (k->n_beta * t27 - k->y_beta
+        * k->n_p)) + t38) + k->e * (k->m_alpha * t41)) + t28 * (k->d * (k->m_alpha * (k->y_beta *
+        t35 - k->l_beta)) + k->m_q * t38))) + (k->z_alpha * (k->m_q * (k->y_beta * (t29 * (t33 +
+        k->d * k->l_r - t29 * (k->d * k->e)) + (t36 - k->l_r * k->n_p)) + (k->l_beta * t41 +
+        k->n_beta * (k->l_p + t27 * t37))) + k->c * (k->e * (t6 * (t30 * t30)))) + k->m_alpha *
+        (k->y_beta * (k->e * (t29 * (t40 - k->n_p) + t30 * (k->n_r * t28)) + (k->l_r * (k->n_p -
+        t40) - t36)) + (k->n_beta * (k->e * (t28 * t30 + t27 * t29) - t34) + k->l_beta * (t39 -
+        t40))));
 }
 
 /// det K (Eq. 27) at the zero-sideslip trim of `p0` (section V.D, Fig. 11), 1/s^4: its
@@ -509,12 +595,14 @@ ROLL_CRITERION_API struct rc_array2 rc_divergence_roll_rates(const struct rc_der
 
 /// Coefficients of P0^0 ..= P0^12 of the jump polynomial `det J5 * det(A)^2` (step 8).
 /// Its positive real roots that are not roots of det A or d are the jump roll rates.
+/// A polynomial in P0 alone exists only without aileron yaw: every coefficient is NaN
+/// when `n_delta_a != 0` (then `model analyze` eliminates delta_a by a resultant).
 ///
 /// Arguments:
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 290 add/sub, 420 mul, 0 div, 0 neg, 0 libm (710 operations); straight-line, no branches.
+/// Cost after CSE: 291 add/sub, 433 mul, 0 div, 1 neg, 1 libm (726 operations); straight-line, no branches.
 /// Rust: `roll_criterion::jump_polynomial`, bit-identical.
 ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivatives *k,
     double delta_e, double delta_r)
@@ -689,43 +777,44 @@ ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivati
     const double t164 = t5 * t15;
     const double t165 = k->e * (k->n_beta * t7);
     const double t166 = k->m_alpha * t129;
+    const double t167 = 1.0 + sqrt(-(k->n_delta_a * k->n_delta_a));
     struct rc_array13 result;
-    result.v[0] = t30 * t42 + t61 * t74 - t77 * t91 + t108 * t128 + t140 * t145 + t148 * t155 - t158
-        * t165;
-    result.v[1] = t47 * t59 + t65 * t74 + t78 * t91 - t93 * t106 - t113 * t128 + t131 * t138 + t141
-        * t145 - t8 * t16 * t147 - t149 * t155 + t1 * t21 * t157 + t159 * t165;
-    result.v[2] = t33 * t42 + t30 * t45 + t48 * t59 + (t68 * t74 + t61 * t76) + (t79 * t91 - t77 *
+    result.v[0] = (t30 * t42 + t61 * t74 - t77 * t91 + t108 * t128 + t140 * t145 + t148 * t155 -
+        t158 * t165) * t167;
+    result.v[1] = (t47 * t59 + t65 * t74 + t78 * t91 - t93 * t106 - t113 * t128 + t131 * t138 + t141
+        * t145 - t8 * t16 * t147 - t149 * t155 + t1 * t21 * t157 + t159 * t165) * t167;
+    result.v[2] = (t33 * t42 + t30 * t45 + t48 * t59 + (t68 * t74 + t61 * t76) + (t79 * t91 - t77 *
         t92) + t94 * t106 + (t117 * t128 - t108 * t130) + t132 * t138 + (t142 * t145 + t140 * t146)
         + (t8 * t19 - t13 * t16) * t147 + (t152 * t155 + t148 * t156) + (t1 * t22 - t3 * t21) * t157
-        + (t160 * t165 + t158 * t166);
-    result.v[3] = t49 * t59 - t47 * t60 + (t65 * t76 - t70 * t74) + (t81 * t91 + t78 * t92) + (t95 *
-        t106 - t93 * t107) + (t120 * t128 + t113 * t130) + (t133 * t138 - t131 * t139) + (t143 *
+        + (t160 * t165 + t158 * t166)) * t167;
+    result.v[3] = (t49 * t59 - t47 * t60 + (t65 * t76 - t70 * t74) + (t81 * t91 + t78 * t92) + (t95
+        * t106 - t93 * t107) + (t120 * t128 + t113 * t130) + (t133 * t138 - t131 * t139) + (t143 *
         t145 + t141 * t146) + (t8 * t20 + t13 * t19 - t111) * t147 - (t150 * t155 + t149 * t156) -
-        (t1 * t23 + t3 * t22 + t5 * t21) * t157 + (t161 * t165 - t159 * t166);
-    result.v[4] = t35 * t42 + t33 * t45 + t30 * t46 + (t52 * t59 - t48 * t60) + (t71 * t74 + t68 *
+        (t1 * t23 + t3 * t22 + t5 * t21) * t157 + (t161 * t165 - t159 * t166)) * t167;
+    result.v[4] = (t35 * t42 + t33 * t45 + t30 * t46 + (t52 * t59 - t48 * t60) + (t71 * t74 + t68 *
         t76) + (t86 * t91 + t79 * t92) + (t97 * t106 + t94 * t107) + (t123 * t128 - t117 * t130) +
         (t135 * t138 - t132 * t139) + (t144 * t145 + t142 * t146) + (t115 + (t8 * t14 + t13 * t20) -
         t112) * t147 + (t153 * t155 + t152 * t156) + (t3 * t23 - t1 * t9 - t5 * t22) * t157 + (t162
-        * t165 - t160 * t166);
-    result.v[5] = t50 * t59 - t49 * t60 + (t72 * t74 - t70 * t76) + (t83 * t91 + t81 * t92) + (t101
+        * t165 - t160 * t166)) * t167;
+    result.v[5] = (t50 * t59 - t49 * t60 + (t72 * t74 - t70 * t76) + (t83 * t91 + t81 * t92) + (t101
         * t106 + t95 * t107) + (t124 * t128 - t120 * t130) + (t134 * t138 - t133 * t139) + (t143 *
         t146 - t104 * t145) + (t116 + (t118 + (t8 * t15 + t13 * t14))) * t147 - (t151 * t155 + t150
-        * t156) + (t3 * t9 + t5 * t23) * t157 - (t163 * t165 + t161 * t166);
-    result.v[6] = t36 * t42 + t35 * t45 + t33 * t46 + (t53 * t59 - t52 * t60) + (t73 * t74 + t71 *
+        * t156) + (t3 * t9 + t5 * t23) * t157 - (t163 * t165 + t161 * t166)) * t167;
+    result.v[6] = (t36 * t42 + t35 * t45 + t33 * t46 + (t53 * t59 - t52 * t60) + (t73 * t74 + t71 *
         t76) + (t88 * t91 + t86 * t92) + (t103 * t106 + t97 * t107) + (t125 * t128 - t123 * t130) +
         (t136 * t138 - t135 * t139) + (t144 * t146 - t105 * t145) + (t119 + (t121 + t13 * t15)) *
-        t147 + (t153 * t156 - t154 * t155) + t5 * t9 * t157 - (t164 * t165 + t162 * t166);
-    result.v[7] = t72 * t76 - (t51 * t59 + t50 * t60) + (t84 * t91 + t83 * t92) + (t101 * t107 -
+        t147 + (t153 * t156 - t154 * t155) + t5 * t9 * t157 - (t164 * t165 + t162 * t166)) * t167;
+    result.v[7] = (t72 * t76 - (t51 * t59 + t50 * t60) + (t84 * t91 + t83 * t92) + (t101 * t107 -
         t104 * t106) + (t126 * t128 - t124 * t130) + (t84 * t138 - t134 * t139) - t104 * t146 + t126
-        * t147 - t151 * t156 + t163 * t166;
-    result.v[8] = t37 * t42 + t36 * t45 + t35 * t46 - (t54 * t59 + t53 * t60) + t73 * t76 + (t89 *
+        * t147 - t151 * t156 + t163 * t166) * t167;
+    result.v[8] = (t37 * t42 + t36 * t45 + t35 * t46 - (t54 * t59 + t53 * t60) + t73 * t76 + (t89 *
         t91 + t88 * t92) + (t103 * t107 - t105 * t106) + (t127 * t128 - t125 * t130) + (t89 * t138 -
-        t136 * t139) - t105 * t146 + t127 * t147 - t154 * t156 + t164 * t166;
-    result.v[9] = t51 * t60 + t84 * t92 - t104 * t107 - t126 * t130 - t84 * t139;
-    result.v[10] = t37 * t45 + t36 * t46 + t54 * t60 + t89 * t92 - t105 * t107 - t127 * t130 - t89 *
-        t139;
+        t136 * t139) - t105 * t146 + t127 * t147 - t154 * t156 + t164 * t166) * t167;
+    result.v[9] = (t51 * t60 + t84 * t92 - t104 * t107 - t126 * t130 - t84 * t139) * t167;
+    result.v[10] = (t37 * t45 + t36 * t46 + t54 * t60 + t89 * t92 - t105 * t107 - t127 * t130 - t89
+        * t139) * t167;
     result.v[11] = 0.0;
-    result.v[12] = t37 * t46;
+    result.v[12] = t37 * t46 * t167;
     return result;
 }
 
@@ -805,7 +894,7 @@ ROLL_CRITERION_API struct rc_array9 rc_zero_sideslip_jump_polynomial(const struc
 // Aircraft A: every constant folded exactly, then rounded once to double.
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  25      41       2       0       0      68
+//   trim                                  25      42       2       1       0      70
 //   zero_sideslip_trim                     5      14       2       4       0      25
 //   jacobian5                              1       6       0       5       0      12
 //   residual_denominator                  25      41       1       0       0      67
@@ -837,19 +926,23 @@ static const struct rc_derivatives rc_aircraft_a_derivatives = {
     3.716, // n_beta
     0.0, // n_delta_a
     -1.0, // n_delta_r
+    0.0, // l_delta_r
 };
 
 /// Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
-/// for x = [alpha, beta, q, r], then the aileron from the roll equation
-/// `delta_a = -(l_p P0 + l_beta beta0 + l_r R0 - E Q0 R0) / l_delta_a` (n_delta_a = 0).
-/// Angles in rad, rates in rad/s. Non-finite where det A = 0 (the divergence roll rates).
+/// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
+/// equation), and the aileron from the roll equation, a quadratic in delta_a
+/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). This is the trim
+/// branch that continues the trim without aileron yaw (the root that tends to `-g0/g1`);
+/// NaN where the two trims of `p0` are complex. Angles in rad, rates in rad/s.
+/// Non-finite where det A = 0 (the divergence roll rates).
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 41 mul, 2 div, 0 neg, 0 libm (68 operations); straight-line, no branches.
+/// Cost after CSE: 25 add/sub, 42 mul, 2 div, 1 neg, 0 libm (70 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::trim`, bit-identical.
 ROLL_CRITERION_API struct rc_Trim rc_aircraft_a_trim(double p0, double delta_e, double delta_r)
 {
@@ -873,7 +966,8 @@ ROLL_CRITERION_API struct rc_Trim rc_aircraft_a_trim(double p0, double delta_e, 
     result.beta = t10;
     result.q = t11;
     result.r = t12;
-    result.delta_a = (t12 * (t11 * 0.705 - 1.5207) + (t10 * 110.45 + p0 * 21.7529)) / (-327.28);
+    result.delta_a = -((t12 * (1.5207 - t11 * 0.705) - (t10 * 110.45 + p0 * 21.7529)) * 2.0 /
+        (-654.56));
     return result;
 }
 
@@ -899,8 +993,8 @@ ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_a_zero_sideslip_trim(d
     result.alpha = -(t0 * t1);
     result.q = -t2;
     result.r = -t3;
-    result.delta_a = (p0 * 21.7529 - t3 * (-1.5207 - t2 * 0.705)) / (-327.28);
-    result.n_delta_r_delta_r = -(t3 * 0.2608 + p0 * t2 * 0.786);
+    result.delta_a = -((t3 * (1.5207 + t2 * 0.705) + p0 * 21.7529) / 327.28);
+    result.n_delta_r_delta_r = t3 * 85.354624 + p0 * t2 * 257.24208;
     return result;
 }
 
@@ -1026,7 +1120,7 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_a_stiffness(double p0, double
 /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the
 /// saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.
 /// Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared
-/// from g, h and d, so that it costs a single division.
+/// from g, h and d, on the trim branch of [`trim`].
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -1060,10 +1154,10 @@ ROLL_CRITERION_API double rc_aircraft_a_det_k(double p0, double delta_e, double 
     const double t18 = p0 * 1.8685122;
     const double t19 = p0 * 2.6247736;
     const double t20 = 3.73055264 - 0.786 * t16;
-    return t17 * t20 + t18 * t19 - ((t4 * (p0 * 1.5207) - (t13 * 2.120358 + p0 * t12 * 0.705)) *
+    return t17 * t20 + t18 * t19 - ((t4 * (p0 * 1.5207) - (t13 * 2.120358 + 0.705 * (p0 * t12))) *
         (t14 * t20 + t15 * t18) + (t12 * 0.039339 - 0.705 * (p0 * t13) - t4 * 110.53485506) * (t14 *
-        t19 - t15 * t17)) / (t4 * (t8 * 1.5207) - t4 * t4 * 21.7529 - (0.705 * (t11 * t13) + 0.705 *
-        (t8 * t12)));
+        t19 - t15 * t17)) / (t4 * (t8 * 1.5207) - 21.7529 * (t4 * t4) - (0.705 * (t11 * t13) + 0.705
+        * (t8 * t12)));
 }
 
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -1162,6 +1256,8 @@ ROLL_CRITERION_API struct rc_array2 rc_aircraft_a_divergence_roll_rates(void)
 
 /// Coefficients of P0^0 ..= P0^12 of the jump polynomial `det J5 * det(A)^2` (step 8).
 /// Its positive real roots that are not roots of det A or d are the jump roll rates.
+/// A polynomial in P0 alone exists only without aileron yaw: every coefficient is NaN
+/// when `n_delta_a != 0` (then `model analyze` eliminates delta_a by a resultant).
 ///
 /// Arguments:
 /// - `delta_e`: elevator deflection, rad
@@ -1357,7 +1453,7 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_a_zero_sideslip_jump_polynomial(
 // Aircraft B: every constant folded exactly, then rounded once to double.
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  25      41       2       0       0      68
+//   trim                                  25      42       2       1       0      70
 //   zero_sideslip_trim                     5      14       2       4       0      25
 //   jacobian5                              1       6       0       5       0      12
 //   residual_denominator                  25      41       1       0       0      67
@@ -1389,19 +1485,23 @@ static const struct rc_derivatives rc_aircraft_b_derivatives = {
     5.67, // n_beta
     0.0, // n_delta_a
     -1.0, // n_delta_r
+    0.0, // l_delta_r
 };
 
 /// Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
-/// for x = [alpha, beta, q, r], then the aileron from the roll equation
-/// `delta_a = -(l_p P0 + l_beta beta0 + l_r R0 - E Q0 R0) / l_delta_a` (n_delta_a = 0).
-/// Angles in rad, rates in rad/s. Non-finite where det A = 0 (the divergence roll rates).
+/// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
+/// equation), and the aileron from the roll equation, a quadratic in delta_a
+/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). This is the trim
+/// branch that continues the trim without aileron yaw (the root that tends to `-g0/g1`);
+/// NaN where the two trims of `p0` are complex. Angles in rad, rates in rad/s.
+/// Non-finite where det A = 0 (the divergence roll rates).
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 41 mul, 2 div, 0 neg, 0 libm (68 operations); straight-line, no branches.
+/// Cost after CSE: 25 add/sub, 42 mul, 2 div, 1 neg, 0 libm (70 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::trim`, bit-identical.
 ROLL_CRITERION_API struct rc_Trim rc_aircraft_b_trim(double p0, double delta_e, double delta_r)
 {
@@ -1425,7 +1525,7 @@ ROLL_CRITERION_API struct rc_Trim rc_aircraft_b_trim(double p0, double delta_e, 
     result.beta = t10;
     result.q = t11;
     result.r = t12;
-    result.delta_a = (t12 * (t11 * 0.727 - 0.126) + (t10 * 9.99 + p0 * 3.933)) / (-45.83);
+    result.delta_a = -((t12 * (0.126 - t11 * 0.727) - (t10 * 9.99 + p0 * 3.933)) * 2.0 / (-91.66));
     return result;
 }
 
@@ -1451,8 +1551,8 @@ ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_b_zero_sideslip_trim(d
     result.alpha = -(t0 * t1);
     result.q = -t2;
     result.r = -t3;
-    result.delta_a = (p0 * 3.933 - t3 * (-0.126 - t2 * 0.727)) / (-45.83);
-    result.n_delta_r_delta_r = -(t3 * 0.235 + p0 * t2 * 0.716);
+    result.delta_a = -((t3 * (0.126 + t2 * 0.727) + p0 * 3.933) / 45.83);
+    result.n_delta_r_delta_r = t3 * 10.77005 + p0 * t2 * 32.81428;
     return result;
 }
 
@@ -1578,7 +1678,7 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_b_stiffness(double p0, double
 /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the
 /// saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.
 /// Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared
-/// from g, h and d, so that it costs a single division.
+/// from g, h and d, on the trim branch of [`trim`].
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -1612,10 +1712,10 @@ ROLL_CRITERION_API double rc_aircraft_b_det_k(double p0, double delta_e, double 
     const double t18 = p0 * 1.000004;
     const double t19 = p0 * 1.186564;
     const double t20 = 5.71606 - 0.716 * t16;
-    return t17 * t20 + t18 * t19 - ((t4 * (p0 * 0.126) - (t13 * 0.966183 + p0 * t12 * 0.727)) * (t14
-        * t20 + t15 * t18) + (t12 * 0.142492 - 0.727 * (p0 * t13) - t4 * 10.014696) * (t14 * t19 -
-        t15 * t17)) / (t4 * (t8 * 0.126) - t4 * t4 * 3.933 - (0.727 * (t11 * t13) + 0.727 * (t8 *
-        t12)));
+    return t17 * t20 + t18 * t19 - ((t4 * (p0 * 0.126) - (t13 * 0.966183 + 0.727 * (p0 * t12))) *
+        (t14 * t20 + t15 * t18) + (t12 * 0.142492 - 0.727 * (p0 * t13) - t4 * 10.014696) * (t14 *
+        t19 - t15 * t17)) / (t4 * (t8 * 0.126) - 3.933 * (t4 * t4) - (0.727 * (t11 * t13) + 0.727 *
+        (t8 * t12)));
 }
 
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -1714,6 +1814,8 @@ ROLL_CRITERION_API struct rc_array2 rc_aircraft_b_divergence_roll_rates(void)
 
 /// Coefficients of P0^0 ..= P0^12 of the jump polynomial `det J5 * det(A)^2` (step 8).
 /// Its positive real roots that are not roots of det A or d are the jump roll rates.
+/// A polynomial in P0 alone exists only without aileron yaw: every coefficient is NaN
+/// when `n_delta_a != 0` (then `model analyze` eliminates delta_a by a resultant).
 ///
 /// Arguments:
 /// - `delta_e`: elevator deflection, rad

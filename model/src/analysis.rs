@@ -96,6 +96,26 @@ pub enum AnalysisError {
          trim for a given P0 is no longer linear in alpha, beta, q, r); set n_delta_a = 0"
     )]
     AileronYaw(f64),
+    /// A reported value is not a finite f64 (the data's magnitudes overflow or underflow the
+    /// f64 evaluation of the trim): refused rather than printed.
+    #[error(
+        "{0}: not a finite number in f64 for this data (its magnitudes overflow or underflow \
+         double precision); no answer is given rather than a wrong one"
+    )]
+    NotFinite(String),
+    /// Two distinct exact roots round to the same f64.
+    #[error(
+        "{what}: distinct exact roots that both round to P0 = {p0:e} rad/s, so they cannot be \
+         told apart in f64 (they differ by less than one f64 step, {ulp:e} rad/s)"
+    )]
+    Indistinct {
+        /// Which roots (e.g. a jump root and a pole of det K).
+        what: String,
+        /// Their common f64 value, rad/s.
+        p0: f64,
+        /// The f64 spacing at `p0`, rad/s: a bound on their separation.
+        ulp: f64,
+    },
 }
 
 /// The symbol values that specialise the derivation to an aircraft and elevator setting
@@ -204,14 +224,77 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         })
         .collect();
 
-    Ok(Analysis {
+    let analysis = Analysis {
         aircraft: aircraft.name.clone(),
         delta_e_rad,
         divergence_roll_rates,
         jump,
         det_k_poles,
         zero_sideslip: ZeroSideslip { departure },
-    })
+    };
+    check(&analysis)?;
+    Ok(analysis)
+}
+
+/// The checks every answer passes before it is reported: every number finite, and no two
+/// distinct exact roots (of one list, or a jump root and a pole) that look the same in f64.
+fn check(a: &Analysis) -> Result<(), AnalysisError> {
+    let finite = |what: String, v: &[f64]| {
+        if v.iter().all(|x| x.is_finite()) {
+            Ok(())
+        } else {
+            Err(AnalysisError::NotFinite(what))
+        }
+    };
+    let jumps: Vec<f64> = a.jump.iter().map(|j| j.p0).collect();
+    let departures: Vec<f64> = a.zero_sideslip.departure.iter().map(|d| d.p0).collect();
+    let same = |what: &str, x: f64| AnalysisError::Indistinct {
+        what: what.to_string(),
+        p0: x,
+        ulp: f64::from_bits(x.to_bits() + 1) - x,
+    };
+    for (what, v) in [
+        ("two divergence roll rates", &a.divergence_roll_rates),
+        ("two poles of det K", &a.det_k_poles),
+        ("two jump roots", &jumps),
+        ("two zero-sideslip departure roots", &departures),
+    ] {
+        if let Some(w) = v.windows(2).find(|w| w[0] == w[1]) {
+            return Err(same(what, w[0]));
+        }
+    }
+    if let Some(x) = jumps.iter().find(|x| a.det_k_poles.contains(x)) {
+        return Err(same("a jump root and a pole of det K", *x));
+    }
+    finite("a divergence roll rate".into(), &a.divergence_roll_rates)?;
+    finite("a pole of det K".into(), &a.det_k_poles)?;
+    for (i, j) in a.jump.iter().enumerate() {
+        let v = [
+            j.p0,
+            j.delta_a_rad,
+            j.delta_a_deg,
+            j.alpha,
+            j.beta,
+            j.q,
+            j.r,
+        ];
+        finite(
+            format!("the trim of jump point {} (P0 = {:e} rad/s)", i + 1, j.p0),
+            &v,
+        )?;
+    }
+    for (i, d) in a.zero_sideslip.departure.iter().enumerate() {
+        let v = [d.p0, d.delta_a_rad, d.delta_a_deg, d.alpha, d.q, d.r];
+        finite(
+            format!(
+                "the trim of zero-sideslip departure {} (P0 = {:e} rad/s)",
+                i + 1,
+                d.p0
+            ),
+            &v,
+        )?;
+    }
+    Ok(())
 }
 
 /// The criterion polynomials of one aircraft and elevator setting, univariate in P0, each

@@ -741,7 +741,16 @@ where
         };
         let st = solver
             .integrate_with_continuous_output_model(&mut dense)
-            .map_err(|e| fail(a, e.to_string()))?;
+            .map_err(|e| {
+                // The time the integrator stopped at, not the start of the segment.
+                use ode_solvers::dop_shared::IntegrationError as E;
+                let at = match e {
+                    E::MaxNumStepReached { x, .. }
+                    | E::StepSizeUnderflow { x }
+                    | E::StiffnessDetected { x } => x,
+                };
+                fail(at, e.to_string())
+            })?;
         stats.evaluations += st.num_eval;
         stats.accepted += st.accepted_steps;
         stats.rejected += st.rejected_steps;

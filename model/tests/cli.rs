@@ -132,7 +132,7 @@ fn continue_reports_the_folds_of_fig_1_as_json_and_csv() {
     assert!(folds.iter().any(|p| (p - 1.706288).abs() < 1e-6));
     let text = std::fs::read_to_string(&csv).unwrap();
     assert!(
-        text.starts_with("branch,delta_a,alpha,beta,p,q,r,stable"),
+        text.starts_with("branch,delta_a_rad,alpha_rad,beta_rad,p_rad_s,q_rad_s,r_rad_s,stable"),
         "{}",
         &text[..60]
     );

@@ -30,7 +30,7 @@ enum Command {
         /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
         aircraft: String,
         /// Elevator deflection in degrees.
-        #[arg(long, default_value_t = 2.0, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
         delta_e_deg: f64,
         /// Print JSON instead of a table.
         #[arg(long)]
@@ -44,13 +44,13 @@ enum Command {
         #[arg(long, default_value = "delta_a")]
         param: String,
         /// Lower end of the parameter range, deg (default -0.8 rad).
-        #[arg(long, default_value_t = -45.8366, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = -45.8366, allow_hyphen_values = true)]
         min_deg: f64,
         /// Upper end of the parameter range, deg (default 0.8 rad).
-        #[arg(long, default_value_t = 45.8366, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 45.8366, allow_hyphen_values = true)]
         max_deg: f64,
         /// Elevator deflection in degrees (when it is not the parameter).
-        #[arg(long, default_value_t = 2.0, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
         delta_e_deg: f64,
         /// Zero-sideslip manoeuvre by extended bifurcation analysis (section V.B, Fig. 9).
         #[arg(long)]
@@ -71,7 +71,7 @@ enum Command {
         #[arg(long, value_name = "DIR")]
         out: std::path::PathBuf,
         /// Elevator deflection in degrees.
-        #[arg(long, default_value_t = 2.0, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
         delta_e_deg: f64,
     },
     /// Figs 1-11 only (SVG, PNG and the plotted data as CSV) in DIR, without the summary.
@@ -82,7 +82,7 @@ enum Command {
         #[arg(long, value_name = "DIR")]
         out: std::path::PathBuf,
         /// Elevator deflection in degrees.
-        #[arg(long, default_value_t = 2.0, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
         delta_e_deg: f64,
     },
     /// Time history of an aileron step from the trim (7th-order model unless --pss).
@@ -90,13 +90,13 @@ enum Command {
         /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
         aircraft: String,
         /// Aileron step, degrees.
-        #[arg(long, allow_negative_numbers = true)]
+        #[arg(long, allow_hyphen_values = true)]
         delta_a_deg: f64,
         /// Elevator deflection in degrees.
-        #[arg(long, default_value_t = 2.0, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
         delta_e_deg: f64,
         /// Length of the run, s.
-        #[arg(long, default_value_t = 20.0, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 20.0, allow_hyphen_values = true)]
         t_end: f64,
         /// Rudder on the zero-sideslip schedule (aileron-rudder interconnect, Fig. 10).
         #[arg(long)]

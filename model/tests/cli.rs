@@ -610,3 +610,102 @@ fn no_colour_codes_when_not_on_a_terminal_even_in_ci() {
         "{text}"
     );
 }
+
+/// Every file under `dir`, relative, with its contents.
+fn tree(dir: &std::path::Path) -> std::collections::BTreeMap<PathBuf, Vec<u8>> {
+    let mut files = std::collections::BTreeMap::new();
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        for e in std::fs::read_dir(&d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                todo.push(p);
+            } else {
+                let rel = p.strip_prefix(dir).unwrap().to_path_buf();
+                files.insert(rel, std::fs::read(&p).unwrap());
+            }
+        }
+    }
+    files
+}
+
+#[test]
+fn emit_killed_at_random_points_leaves_all_old_or_all_new_and_the_next_run_cleans_up() {
+    let root = scratch("emit-kill");
+    let emit = |check: bool| {
+        let mut c = Command::new(env!("CARGO_BIN_EXE_model"));
+        c.args(["emit", "--root", root.to_str().unwrap()]);
+        if check {
+            c.arg("--check");
+        }
+        c
+    };
+    let start = std::time::Instant::now();
+    assert!(emit(false).output().unwrap().status.success());
+    let full_run = start.elapsed();
+    let new = tree(&root);
+    assert!(new.len() >= 5, "{:?}", new.keys());
+    let old: std::collections::BTreeMap<PathBuf, Vec<u8>> = new
+        .iter()
+        .map(|(p, c)| (p.clone(), [c.as_slice(), b"\n// old\n"].concat()))
+        .collect();
+    // Pseudo-random delays (xorshift, seed printed): half over the whole run, half over its
+    // last fifth, where the files are written.
+    let mut seed = u64::from(std::process::id()).wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+    println!("seed {seed}, full run {full_run:?}");
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % 10_000) as f64 / 10_000.0
+    };
+    let (mut all_old, mut all_new) = (0, 0);
+    let runs = 24;
+    for i in 0..runs {
+        for (p, c) in &old {
+            std::fs::write(root.join(p), c).unwrap();
+        }
+        let u = next();
+        let frac = if i % 2 == 0 { 1.2 * u } else { 0.8 + 0.3 * u };
+        let mut child = emit(false)
+            .stdout(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(full_run.mul_f64(frac));
+        let _ = child.kill();
+        let _ = child.wait();
+        // Right after the kill: old, new, or committed (journal present, finished next run).
+        let now = tree(&root);
+        let visible: std::collections::BTreeMap<_, _> = now
+            .iter()
+            .filter(|(p, _)| {
+                !p.to_string_lossy().contains(".tmp-") && !p.ends_with(".emit-journal")
+            })
+            .map(|(p, c)| (p.clone(), c.clone()))
+            .collect();
+        let committed = now.keys().any(|p| p.ends_with(".emit-journal"));
+        assert!(
+            visible == old || visible == new || committed,
+            "run {i}: a mix of old and new files without a journal"
+        );
+        // The next run (`emit --check`) finishes or discards what the killed one left.
+        let _ = emit(true).output().unwrap();
+        let after = tree(&root);
+        assert!(
+            after
+                .keys()
+                .all(|p| !p.to_string_lossy().contains(".tmp-") && !p.ends_with(".emit-journal")),
+            "run {i}: leftovers {:?}",
+            after.keys().collect::<Vec<_>>()
+        );
+        if after == old {
+            all_old += 1;
+        } else if after == new {
+            all_new += 1;
+        } else {
+            panic!("run {i} (killed at {frac:.2} of a run): neither all old nor all new");
+        }
+    }
+    println!("{runs} killed runs: {all_old} left every old file, {all_new} every new file");
+    std::fs::remove_dir_all(&root).unwrap();
+}

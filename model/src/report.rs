@@ -706,3 +706,34 @@ fn markdown(s: &Summary, de: f64) -> String {
     }
     m
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_never_print_as_negative_zero_and_empty_lists_carry_no_unit() {
+        assert_eq!(fixed(-0.00001, 4), "0.0000");
+        assert_eq!(fixed(-0.0, 2), "0.00");
+        assert_eq!(fixed(-0.00006, 4), "-0.0001");
+        assert_eq!(fixed(2.5, 1), "2.5");
+        assert_eq!(list(&[], 6, "rad/s"), "none");
+        assert_eq!(list(&[1.0, -0.0], 2, "rad/s"), "1.00, 0.00 rad/s");
+    }
+
+    #[test]
+    fn steps_beyond_the_aileron_range_are_named_and_replaced_by_the_default_family() {
+        let mut notes = Notes::default();
+        let max = 30f64.to_radians();
+        // A fold at -3.85 deg: the family (up to twice it) is inside the range.
+        let steps = within(&mut notes, "Figs 5, 6", family(Some(-0.0671)), max);
+        assert_eq!(steps.len(), 8);
+        assert!(notes.skipped.is_empty());
+        // A fold at -110905 deg (n_beta = 0): nothing inside; the default family instead.
+        let steps = within(&mut notes, "Figs 5, 6", family(Some(-1935.6)), max);
+        assert_eq!(steps, family(None));
+        assert!(steps.iter().all(|d| d.abs() <= max));
+        assert_eq!(notes.skipped.len(), 1);
+        assert!(notes.skipped[0].contains("beyond the aileron range of +-30.0 deg"));
+    }
+}

@@ -709,3 +709,30 @@ fn emit_killed_at_random_points_leaves_all_old_or_all_new_and_the_next_run_clean
     println!("{runs} killed runs: {all_old} left every old file, {all_new} every new file");
     std::fs::remove_dir_all(&root).unwrap();
 }
+
+/// The fenced block of `lang` that follows `after` in the README.
+fn readme_block(after: &str, lang: &str) -> String {
+    let readme = std::fs::read_to_string(repo("README.md")).unwrap();
+    let rest = &readme[readme.find(after).unwrap_or_else(|| panic!("{after}")) + after.len()..];
+    let fence = format!("```{lang}\n");
+    let start = rest.find(&fence).unwrap() + fence.len();
+    let end = start + rest[start..].find("```").unwrap();
+    rest[start..end].to_string()
+}
+
+#[test]
+fn readme_shows_the_real_output_of_the_main_job() {
+    let text = model(&["analyze", "A"]);
+    assert_eq!(
+        readme_block(
+            "cargo run --release -p model -- analyze A\n```\n\nprints",
+            "text"
+        ),
+        String::from_utf8_lossy(&text.stdout)
+    );
+    let json = model(&["analyze", "A", "--json"]);
+    assert_eq!(
+        readme_block("`analyze A --json` prints", "json"),
+        String::from_utf8_lossy(&json.stdout)
+    );
+}

@@ -5,7 +5,7 @@ use model::aircraft::{self, Aircraft};
 use model::analysis::{analyze, Analysis};
 use model::continuation::{continue_equilibria, ContinuationParam, Diagram, Settings};
 use model::report::{fixed, list, report, ReportError, ReportSettings};
-use model::simulation::{simulate, Model, Rudder, SimSettings};
+use model::simulation::{simulate, Model, Rudder, SimError, SimSettings};
 use std::io::Write;
 use std::path::Path;
 use std::process::ExitCode;
@@ -359,7 +359,19 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
                     finite_angle("delta_a", delta_a_deg)?,
                 )
             };
-            let h = simulate(&ac, &settings).map_err(|e| named(&ac, e))?;
+            let h = simulate(&ac, &settings).map_err(|e| match e {
+                // In the unit typed.
+                SimError::ScheduleRange { lo, hi, .. } => named(
+                    &ac,
+                    format!(
+                        "--delta-a-deg = {delta_a_deg} is outside the zero-sideslip rudder \
+                         schedule, which covers {} to {} deg",
+                        lo.to_degrees(),
+                        hi.to_degrees()
+                    ),
+                ),
+                e => named(&ac, e),
+            })?;
             if let Some(path) = csv {
                 write_file(&path, h.to_csv().as_bytes())?;
             }
@@ -476,12 +488,13 @@ fn progress_bar(what: &str) -> Option<indicatif::ProgressBar> {
 
 fn diagram_summary(d: &Diagram) -> String {
     let points: usize = d.branches.iter().map(|b| b.points.len()).sum();
-    let plural = |n: usize, what: &str| format!("{n} {what}{}", if n == 1 { "" } else { "s" });
+    let count =
+        |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
     let mut s = format!(
         "{}: {}, {}, continuation in {}\n\n",
         shown(&d.aircraft),
-        plural(d.branches.len(), "branch").replace("branchs", "branches"),
-        plural(points, "point"),
+        count(d.branches.len(), "branch", "branches"),
+        count(points, "point", "points"),
         d.parameter
     );
     if d.special_points.is_empty() {

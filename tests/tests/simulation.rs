@@ -643,3 +643,20 @@ fn plotted_series_are_the_library_numbers() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_sweep_past_its_run_limit_is_refused_before_any_run() {
+    // n_beta = 0 once asked for 887k runs; the limit refuses such a grid at once.
+    let sim = Simulator::new(&model::aircraft::Aircraft::a(), 2f64.to_radians()).unwrap();
+    let s = SweepSettings::new(
+        Model::Pss,
+        -1e4f64.to_radians() * 10.0,
+        0.01f64.to_radians(),
+    );
+    let start = std::time::Instant::now();
+    assert!(matches!(
+        jump_sweep(&sim, &s),
+        Err(SimError::TooManyRuns(_))
+    ));
+    assert!(start.elapsed().as_secs() < 5);
+}

@@ -306,7 +306,7 @@ pub fn stale(root: &Path, outputs: &[Output]) -> Vec<PathBuf> {
         .collect()
 }
 
-/// The journal of an interrupted [`write`] under the workspace root (see
+/// The journal of an interrupted [`write()`] under the workspace root (see
 /// [`crate::files::replace_all`]).
 pub const JOURNAL: &str = ".emit-journal";
 
@@ -329,7 +329,7 @@ pub fn write(root: &Path, outputs: &[Output]) -> Result<Vec<PathBuf>, EmitError>
 }
 
 /// Finishes an emit that was killed after staging every file and removes the temporary files
-/// of killed runs (run first by [`write`] and by `emit --check`).
+/// of killed runs (run first by [`write()`] and by `emit --check`).
 pub fn tidy(root: &Path, outputs: &[Output]) -> std::io::Result<()> {
     crate::files::recover(root, JOURNAL, outputs.iter().map(|o| o.path.as_path()))
 }

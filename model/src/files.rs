@@ -113,20 +113,33 @@ fn alive(pid: u32) -> bool {
 /// Removes the temporary files `.NAME.tmp-PID...` of `target` = `NAME` whose process PID no
 /// longer exists (left by a killed run); returns how many were removed.
 pub fn remove_stale_temporaries(target: &Path) -> usize {
-    let prefix = format!(".{}.tmp-", file_name(target));
     let dir = parent(target).unwrap_or(Path::new("."));
+    remove_stale(dir, &format!(".{}.tmp-", file_name(target)))
+}
+
+/// Removes every temporary file `.NAME.tmp-PID...` in `dir` whose process PID no longer exists
+/// (for a folder of outputs, some of which the next run may not write again); returns how
+/// many were removed.
+pub fn remove_stale_temporaries_in(dir: &Path) -> usize {
+    remove_stale(dir, ".")
+}
+
+fn remove_stale(dir: &Path, prefix: &str) -> usize {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return 0;
     };
     let mut removed = 0;
     for e in entries.flatten() {
         let name = e.file_name().to_string_lossy().into_owned();
-        let Some(rest) = name.strip_prefix(&prefix) else {
+        if !name.starts_with(prefix) {
+            continue;
+        }
+        let Some((_, rest)) = name.rsplit_once(".tmp-") else {
             continue;
         };
         let pid: String = rest.chars().take_while(char::is_ascii_digit).collect();
         if let Ok(pid) = pid.parse::<u32>() {
-            if !alive(pid) && std::fs::remove_file(e.path()).is_ok() {
+            if !alive(pid) && e.path().is_file() && std::fs::remove_file(e.path()).is_ok() {
                 removed += 1;
             }
         }
@@ -253,9 +266,16 @@ mod tests {
         std::fs::write(dir.join(&live), b"in progress").unwrap();
         std::fs::write(dir.join(".other.csv.tmp-4194305"), b"x").unwrap();
         write_atomic(&path, b"data").unwrap();
-        let mut expected = vec![".other.csv.tmp-4194305".to_string(), live, "out.csv".into()];
+        let mut expected = vec![
+            ".other.csv.tmp-4194305".to_string(),
+            live.clone(),
+            "out.csv".into(),
+        ];
         expected.sort();
         assert_eq!(names(&dir), expected);
+        // A folder sweep removes the dead ones of every file, and keeps the live one.
+        assert_eq!(remove_stale_temporaries_in(&dir), 1);
+        assert_eq!(names(&dir), [live, "out.csv".to_string()]);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

@@ -431,8 +431,14 @@ fn named(ac: &Aircraft, e: impl std::fmt::Display) -> Failure {
 
 /// Writes a requested output file (`--csv`): see [`model::files::write_output`].
 fn write_file(path: &Path, contents: &[u8]) -> Result<(), Failure> {
-    model::files::write_output(path, contents)
-        .map_err(|e| Failure::Output(format!("cannot write {}: {e}", path.display())))
+    model::files::write_output(path, contents).map_err(|e| {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            // `--csv /dev/stdout | head`: as for stdout itself.
+            Failure::Closed
+        } else {
+            Failure::Output(format!("cannot write {}: {e}", path.display()))
+        }
+    })
 }
 
 /// `name` with control characters escaped (`\u{1b}`, `\n`, ...), safe to print on a terminal.

@@ -315,6 +315,8 @@ pub fn report(
         path: out.to_path_buf(),
         source,
     })?;
+    // Temporaries of a killed run, also of files this run may not write again.
+    crate::files::remove_stale_temporaries_in(out);
     let analysis = analyze(aircraft, de)?;
     let name = &aircraft.name;
     let mut figures = Vec::new();

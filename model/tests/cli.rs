@@ -411,12 +411,18 @@ fn plot_writes_what_it_can_names_each_failed_file_and_removes_stale_temporaries(
     std::fs::create_dir_all(dir.join("fig07_det_k.png")).unwrap();
     let stale = dir.join(".fig01_bifurcation.svg.tmp-4194305-0");
     std::fs::write(&stale, "half a figure").unwrap();
+    // ... and of a file `plot` does not write (a killed `report`'s summary).
+    let stale_summary = dir.join(".summary.md.tmp-4194305-1");
+    std::fs::write(&stale_summary, "half a summary").unwrap();
     let out = model(&["plot", "B", "--out", dir.to_str().unwrap()]);
     let err = stderr(&out);
     assert_eq!(out.status.code(), Some(1), "{err}");
     assert!(err.contains("fig07_det_k.png"), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
-    assert!(!stale.exists(), "stale temporary removed");
+    assert!(
+        !stale.exists() && !stale_summary.exists(),
+        "stale temporaries removed"
+    );
     for f in [
         "fig01_bifurcation.svg",
         "fig07_det_k.svg",

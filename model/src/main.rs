@@ -614,3 +614,115 @@ fn table(a: &Analysis) -> String {
     }
     s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+
+    /// Random argument lists from the commands' own words and numbers of every kind: parsing
+    /// never panics, and every number that reaches a command is finite or refused naming its
+    /// option.
+    #[test]
+    fn random_argument_lists_parse_or_fail_without_panics() {
+        let command = prop::sample::select(vec![
+            "analyze", "continue", "report", "plot", "simulate", "emit",
+        ]);
+        let aircraft = prop::sample::select(vec!["A", "b", "C", "aircraft/c.toml", "-x", ""]);
+        let option = prop::sample::select(vec![
+            "--delta-e-deg",
+            "--delta-a-deg",
+            "--min-deg",
+            "--max-deg",
+            "--t-end",
+            "--out",
+            "--csv",
+            "--param",
+            "--root",
+        ]);
+        let number = prop_oneof![
+            prop::sample::select(vec![
+                "-1", "-1e-300", "1e9", "nan", "NaN", "-inf", "inf", "0", "-0", "1e308", "1e309",
+                "--json", "x", "",
+            ])
+            .prop_map(str::to_string),
+            any::<f64>().prop_map(|v| v.to_string()),
+        ];
+        let flag = prop::sample::select(vec!["--json", "--pss", "--zero-sideslip", "--check"]);
+        let args = (
+            command,
+            aircraft,
+            prop::collection::vec((option, number), 0..5),
+            prop::collection::vec(flag, 0..2),
+        )
+            .prop_map(|(c, a, opts, flags)| {
+                let mut v = vec![c.to_string(), a.to_string()];
+                for (o, n) in opts {
+                    v.push(o.to_string());
+                    v.push(n);
+                }
+                v.extend(flags.iter().map(|f| f.to_string()));
+                v
+            });
+        let cases = 3000;
+        let config = Config {
+            cases,
+            failure_persistence: None,
+            ..Config::default()
+        };
+        let mut runner =
+            TestRunner::new_with_rng(config, TestRng::deterministic_rng(RngAlgorithm::ChaCha));
+        let parsed = std::cell::Cell::new(0);
+        runner
+            .run(&args, |args| {
+                let argv = std::iter::once("model").chain(args.iter().map(String::as_str));
+                let Ok(cli) = Cli::try_parse_from(argv) else {
+                    return Ok(());
+                };
+                parsed.set(parsed.get() + 1);
+                let checks: Vec<Result<f64, Failure>> = match cli.command {
+                    Command::Analyze { delta_e_deg, .. }
+                    | Command::Report { delta_e_deg, .. }
+                    | Command::Plot { delta_e_deg, .. } => vec![elevator(delta_e_deg)],
+                    Command::Continue {
+                        min_deg,
+                        max_deg,
+                        delta_e_deg,
+                        ..
+                    } => vec![
+                        elevator(delta_e_deg),
+                        finite_angle("min", min_deg),
+                        finite_angle("max", max_deg),
+                    ],
+                    Command::Simulate {
+                        delta_a_deg,
+                        delta_e_deg,
+                        ..
+                    } => vec![elevator(delta_e_deg), finite_angle("delta_a", delta_a_deg)],
+                    Command::Emit { .. } => vec![],
+                };
+                for c in checks {
+                    match c {
+                        Ok(v) => prop_assert!(v.is_finite()),
+                        Err(Failure::Input(m)) => prop_assert!(m.starts_with("--"), "{m}"),
+                        Err(_) => prop_assert!(false, "not an input error"),
+                    }
+                }
+                Ok(())
+            })
+            .unwrap();
+        println!(
+            "command line: {cases} random argument lists, {} parsed",
+            parsed.get()
+        );
+        assert!(parsed.get() > 50, "{}", parsed.get());
+    }
+
+    #[test]
+    fn names_are_escaped_and_numbers_never_print_as_negative_zero() {
+        assert_eq!(shown("A\u{1b}[2J\n"), "A\\u{1b}[2J\\n");
+        assert_eq!(shown("Aircraft A"), "Aircraft A");
+        assert_eq!(fixed(-0.00001, 4), "0.0000");
+    }
+}

@@ -186,7 +186,7 @@ fn main() -> ExitCode {
         out.flush().map_err(stdout_error)?;
         Ok(code)
     });
-    let code = match result {
+    let (msg, code) = match result {
         Ok(code) => return code,
         Err(Failure::Closed) => return ExitCode::SUCCESS,
         Err(Failure::Input(msg)) => (msg, BAD_INPUT),
@@ -194,8 +194,8 @@ fn main() -> ExitCode {
     };
     // What was printed before the failure still goes out (ignoring a second failure).
     let _ = out.flush();
-    let _ = writeln!(std::io::stderr(), "error: {}", code.0);
-    ExitCode::from(code.1)
+    let _ = writeln!(std::io::stderr(), "error: {msg}");
+    ExitCode::from(code)
 }
 
 fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {

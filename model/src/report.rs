@@ -116,6 +116,8 @@ pub struct FailedFile {
 struct Notes {
     skipped: Vec<String>,
     failed: Vec<FailedFile>,
+    /// Figures of which some files were written and some not: (paper figures, files written).
+    partial: Vec<(&'static str, Vec<PathBuf>)>,
 }
 
 /// What to draw.
@@ -252,10 +254,13 @@ fn family(critical: Option<f64>) -> Vec<f64> {
 
 /// The value of `r`, or `None` with the files that could not be written recorded in
 /// `notes.failed` and any other reason as `what: reason` in `notes.skipped`.
-fn keep<T>(notes: &mut Notes, what: &str, r: Result<T, ReportError>) -> Option<T> {
+fn keep<T>(notes: &mut Notes, what: &'static str, r: Result<T, ReportError>) -> Option<T> {
     match r {
         Ok(v) => Some(v),
-        Err(ReportError::Plot(PlotError::Files { failed, .. })) => {
+        Err(ReportError::Plot(PlotError::Files { written, failed })) => {
+            if !written.is_empty() {
+                notes.partial.push((what, written));
+            }
             notes.failed.extend(
                 failed
                     .into_iter()
@@ -563,6 +568,13 @@ pub fn report(
             None => {}
         }
     }
+    figures.extend(notes.partial.iter().map(|(paper, files)| {
+        fig(
+            paper,
+            "Incomplete: some files of this figure could not be written (listed under Files that could not be written).".into(),
+            files,
+        )
+    }));
     let mut summary = Summary {
         special_points: diagram.as_ref().map(rows).unwrap_or_default(),
         zero_sideslip_special_points: zs.as_ref().map(rows).unwrap_or_default(),

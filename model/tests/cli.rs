@@ -423,6 +423,13 @@ fn plot_writes_what_it_can_names_each_failed_file_and_removes_stale_temporaries(
         !stale.exists() && !stale_summary.exists(),
         "stale temporaries removed"
     );
+    // The written files of the incomplete figure are announced like the others.
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("fig07_det_k.svg") && text.contains("fig07_det_k.csv"),
+        "{text}"
+    );
+    assert!(!text.contains("fig07_det_k.png"), "{text}");
     for f in [
         "fig01_bifurcation.svg",
         "fig07_det_k.svg",

@@ -121,6 +121,26 @@ pub enum AnalysisError {
          undefined (check the roll derivatives and the inertias)"
     )]
     Degenerate(&'static str),
+    /// A reported value is not a finite f64 (the data's magnitudes overflow or underflow the
+    /// f64 evaluation of the trim): refused rather than printed.
+    #[error(
+        "{0}: not a finite number in f64 for this data (its magnitudes overflow or underflow \
+         double precision); no answer is given rather than a wrong one"
+    )]
+    NotFinite(String),
+    /// Two distinct exact roots round to the same f64.
+    #[error(
+        "{what}: distinct exact roots that both round to P0 = {p0:e} rad/s, so they cannot be \
+         told apart in f64 (they differ by less than one f64 step, {ulp:e} rad/s)"
+    )]
+    Indistinct {
+        /// Which roots (e.g. a jump root and a pole of det K).
+        what: String,
+        /// Their common f64 value, rad/s.
+        p0: f64,
+        /// The f64 spacing at `p0`, rad/s: a bound on their separation.
+        ulp: f64,
+    },
 }
 
 /// The symbol values that specialise the derivation to an aircraft and elevator setting
@@ -190,10 +210,13 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         }
     };
 
-    let (poles_num, _) = cancel(&d.poles, &det_a);
+    // Every root shared with det A is a trim at infinity (divergence), not a pole on the curve.
+    let poles_num = strip(&d.poles, &det_a);
     let det_k_poles = positive_roots(&poles_num)
         .iter()
         .map(|root| point(root.value, &d_at))
+        // As for jump points below: a root without a real trim is no pole on the curve.
+        .filter(|j| j.delta_a_rad.is_finite())
         .collect();
 
     // A root shared with det A after cancellation has no finite trim: not a jump point.
@@ -201,6 +224,8 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
     let jump: Vec<JumpPoint> = positive_roots(&jump_num)
         .iter()
         .map(|root| point(root.value, &jump_at))
+        // A root where the common aileron of the trim condition and det J5 is complex (a
+        // conjugate pair shared by both) has no real trim.
         .filter(|j| j.delta_a_rad.is_finite())
         .collect();
 
@@ -211,7 +236,7 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
             l.to_radians().max(DEFAULT_AILERON_RANGE)
         });
     let roots: Vec<(f64, f64)> = jump.iter().map(|j| (j.p0, j.delta_a_rad)).collect();
-    let (critical, critical_note) = match primary::follow(&g, &det_a, &roots, bound) {
+    let (critical, critical_note) = match primary::follow(&g, &trims[0], &roots, bound) {
         Outcome::Jump(i) => (Some(jump[i].clone()), None),
         Outcome::Divergence(p) => (
             None,
@@ -231,13 +256,22 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
 
     let zs_det = u(&d.zs_det);
     let zs_num = strip(&cancel(&u(&d.zs_jump), &u(&d.zs_d_det)).0, &zs_det);
-    let zs_trim_u: Vec<UPoly> = d.zs_trim.iter().map(u).collect();
-    let departure = positive_roots(&zs_num)
+    // Numerators share the determinant's scale (see `in_aileron_all`).
+    let zs_trims = in_aileron_all(&[&d.zs_det, &d.zs_trim[0], &d.zs_trim[1], &d.zs_trim[2]]);
+    // Without lateral control authority (l_delta_a n_delta_r = l_delta_r n_delta_a) no
+    // zero-sideslip trim exists: there is nothing to report.
+    let lateral_authority = !d.zs_delta_a.den.is_zero();
+    let zs_roots = if lateral_authority {
+        positive_roots(&zs_num)
+    } else {
+        Vec::new()
+    };
+    let departure = zs_roots
         .iter()
-        .filter_map(|root| {
+        .map(|root| {
             let p0 = root.value;
-            let dv = zs_det.eval_f64(p0);
-            let [alpha, q, r] = std::array::from_fn(|i| zs_trim_u[i].eval_f64(p0) / dv);
+            let dv = zs_trims[0].eval(p0, 0.0);
+            let [alpha, q, r] = std::array::from_fn(|i| zs_trims[i + 1].eval(p0, 0.0) / dv);
             let at = [
                 (s.alpha0, alpha),
                 (s.beta0, 0.0),
@@ -247,9 +281,7 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
             ];
             let da = eval_trim(&d.zs_delta_a, &at);
             let dr = eval_trim(&d.zs_delta_r, &at);
-            // Without rudder authority (l_delta_a n_delta_r = l_delta_r n_delta_a) no
-            // zero-sideslip trim exists: nothing to report.
-            (da.is_finite() && dr.is_finite()).then(|| DeparturePoint {
+            DeparturePoint {
                 p0,
                 delta_a_rad: da,
                 delta_a_deg: da.to_degrees(),
@@ -260,11 +292,11 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
                 delta_r_deg: dr.to_degrees(),
                 within_limits: marks.within(da, Some(dr)),
                 valid: marks.valid(alpha, 0.0),
-            })
+            }
         })
         .collect();
 
-    Ok(Analysis {
+    let analysis = Analysis {
         aircraft: aircraft.name.clone(),
         delta_e_rad,
         critical,
@@ -273,7 +305,79 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         jump,
         det_k_poles,
         zero_sideslip: ZeroSideslip { departure },
-    })
+    };
+    check(&analysis)?;
+    Ok(analysis)
+}
+
+/// The checks every answer passes before it is reported: every number finite, and no two
+/// distinct exact roots (of one list, or a jump root and a pole) that look the same in f64.
+fn check(a: &Analysis) -> Result<(), AnalysisError> {
+    let finite = |what: String, v: &[f64]| {
+        if v.iter().all(|x| x.is_finite()) {
+            Ok(())
+        } else {
+            Err(AnalysisError::NotFinite(what))
+        }
+    };
+    let jumps: Vec<f64> = a.jump.iter().map(|j| j.p0).collect();
+    let poles: Vec<f64> = a.det_k_poles.iter().map(|j| j.p0).collect();
+    let departures: Vec<f64> = a.zero_sideslip.departure.iter().map(|d| d.p0).collect();
+    let same = |what: &str, x: f64| AnalysisError::Indistinct {
+        what: what.to_string(),
+        p0: x,
+        ulp: f64::from_bits(x.to_bits() + 1) - x,
+    };
+    for (what, v) in [
+        ("two divergence roll rates", &a.divergence_roll_rates),
+        ("two poles of det K", &poles),
+        ("two jump roots", &jumps),
+        ("two zero-sideslip departure roots", &departures),
+    ] {
+        if let Some(w) = v.windows(2).find(|w| w[0] == w[1]) {
+            return Err(same(what, w[0]));
+        }
+    }
+    if let Some(x) = jumps.iter().find(|x| poles.contains(x)) {
+        return Err(same("a jump root and a pole of det K", *x));
+    }
+    finite("a divergence roll rate".into(), &a.divergence_roll_rates)?;
+    for (i, j) in a.jump.iter().chain(&a.det_k_poles).enumerate() {
+        let v = [
+            j.p0,
+            j.delta_a_rad,
+            j.delta_a_deg,
+            j.alpha,
+            j.beta,
+            j.q,
+            j.r,
+        ];
+        finite(
+            format!("the trim at P0 = {:e} rad/s (point {})", j.p0, i + 1),
+            &v,
+        )?;
+    }
+    for (i, d) in a.zero_sideslip.departure.iter().enumerate() {
+        let v = [
+            d.p0,
+            d.delta_a_rad,
+            d.delta_a_deg,
+            d.alpha,
+            d.q,
+            d.r,
+            d.delta_r_rad,
+            d.delta_r_deg,
+        ];
+        finite(
+            format!(
+                "the trim of zero-sideslip departure {} (P0 = {:e} rad/s)",
+                i + 1,
+                d.p0
+            ),
+            &v,
+        )?;
+    }
+    Ok(())
 }
 
 /// The aircraft's limits and validity range, applied to reported points.
@@ -314,20 +418,30 @@ impl Marks {
 
 /// The aileron of the trim at a root `p0` of the resultant of `g` and `f` in delta_a: the root
 /// of the trim condition at which `f` is smallest (relative to its size), i.e. the common root.
+/// Where the two trims of `p0` merge (a double root of the trim condition, whose discriminant
+/// rounding may push below zero) the vertex of the quadratic is the candidate. NaN when the
+/// common root is not real: a conjugate pair shared by both, with no real trim.
 fn aileron_of_root(g: &InAileron, f: &InAileron, p0: f64) -> f64 {
-    let roots = g.aileron_roots(p0);
-    let size = |da: f64| {
-        let c = f.at(p0);
+    let relative = |h: &InAileron, da: f64| {
+        let c = h.at(p0);
         let scale: f64 = c
             .iter()
             .enumerate()
             .map(|(i, ci)| (ci * da.powi(i as i32)).abs())
             .sum();
-        f.eval(p0, da).abs() / scale.max(f64::MIN_POSITIVE)
+        h.eval(p0, da).abs() / scale.max(f64::MIN_POSITIVE)
     };
-    roots
+    let mut candidates = g.aileron_roots(p0);
+    if candidates.is_empty() {
+        let c = g.at(p0);
+        if let (Some(c1), Some(c2)) = (c.get(1), c.get(2)) {
+            candidates.push(-c1 / (2.0 * c2));
+        }
+    }
+    candidates
         .into_iter()
-        .min_by(|a, b| size(*a).total_cmp(&size(*b)))
+        .filter(|da| relative(g, *da) < 1e-6)
+        .min_by(|a, b| relative(f, *a).total_cmp(&relative(f, *b)))
         .unwrap_or(f64::NAN)
 }
 

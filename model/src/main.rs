@@ -1,11 +1,12 @@
 //! `model`: the command-line front end. Argument parsing and printing only.
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use model::aircraft::{self, Aircraft};
 use model::analysis::{analyze, Analysis};
 use model::continuation::{continue_equilibria, ContinuationParam, Diagram, Settings};
-use model::report::{report, ReportSettings};
-use model::simulation::{simulate, Model, Rudder, SimSettings};
+use model::report::{fixed, list, report, ReportError, ReportSettings};
+use model::simulation::{simulate, Model, Rudder, SimError, SimSettings};
+use std::io::Write;
 use std::path::Path;
 use std::process::ExitCode;
 
@@ -13,7 +14,9 @@ use std::process::ExitCode;
 #[command(
     name = "model",
     version,
-    about = "Roll-coupling jump criterion (Mahale & Ananthkrishnan, AIAA 2006-6267)"
+    about = "Roll-coupling jump criterion (Mahale & Ananthkrishnan, AIAA 2006-6267)",
+    after_help = "AIRCRAFT is `A` or `B` (the paper's aircraft, any case) or else the path of an \
+                  aircraft TOML file (e.g. aircraft/c.toml); write ./A to read a file named A."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -24,10 +27,10 @@ struct Cli {
 enum Command {
     /// Divergence and jump roll rates, det K poles and zero-sideslip departure of an aircraft.
     Analyze {
-        /// `A`, `B` (the paper's aircraft) or the path of an aircraft TOML file.
+        /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
         aircraft: String,
         /// Elevator deflection in degrees.
-        #[arg(long, default_value_t = 2.0, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
         delta_e_deg: f64,
         /// Print JSON instead of a table.
         #[arg(long)]
@@ -35,19 +38,19 @@ enum Command {
     },
     /// Continuation of the PSS equilibria: every branch, folds, Hopf and branch points (Figs 1-4, 9).
     Continue {
-        /// `A`, `B` or the path of an aircraft TOML file.
+        /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
         aircraft: String,
         /// The continuation parameter: delta_a, delta_e or delta_r.
         #[arg(long, default_value = "delta_a")]
         param: String,
-        /// Lower end of the parameter range, rad.
-        #[arg(long, default_value_t = -0.8, allow_negative_numbers = true)]
-        min: f64,
-        /// Upper end of the parameter range, rad.
-        #[arg(long, default_value_t = 0.8, allow_negative_numbers = true)]
-        max: f64,
+        /// Lower end of the parameter range, deg (default -0.8 rad).
+        #[arg(long, default_value_t = -45.8366, allow_hyphen_values = true)]
+        min_deg: f64,
+        /// Upper end of the parameter range, deg (default 0.8 rad).
+        #[arg(long, default_value_t = 45.8366, allow_hyphen_values = true)]
+        max_deg: f64,
         /// Elevator deflection in degrees (when it is not the parameter).
-        #[arg(long, default_value_t = 2.0, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
         delta_e_deg: f64,
         /// Zero-sideslip manoeuvre by extended bifurcation analysis (section V.B, Fig. 9).
         #[arg(long)]
@@ -55,44 +58,45 @@ enum Command {
         /// Print JSON instead of a summary.
         #[arg(long)]
         json: bool,
-        /// Also write every point as CSV to this file.
-        #[arg(long)]
+        /// Also write every point as CSV to this file (units in the header).
+        #[arg(long, value_name = "FILE")]
         csv: Option<std::path::PathBuf>,
     },
-    /// Every result of the paper for an aircraft: numbers, Figs 1-11 and summary.md in DIR.
+    /// Every result of the paper for an aircraft in DIR: Figs 1-11 (SVG, PNG and the plotted
+    /// data as CSV), summary.md and summary.json.
     Report {
-        /// `A`, `B` or the path of an aircraft TOML file.
+        /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
         aircraft: String,
-        /// Output folder (created if needed).
-        #[arg(long)]
+        /// Output folder DIR (created if needed).
+        #[arg(long, value_name = "DIR")]
         out: std::path::PathBuf,
         /// Elevator deflection in degrees.
-        #[arg(long, default_value_t = 2.0, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
         delta_e_deg: f64,
     },
-    /// Figs 1-11 only (SVG and PNG) in DIR, without the summary.
+    /// Figs 1-11 only (SVG, PNG and the plotted data as CSV) in DIR, without the summary.
     Plot {
-        /// `A`, `B` or the path of an aircraft TOML file.
+        /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
         aircraft: String,
-        /// Output folder (created if needed).
-        #[arg(long)]
+        /// Output folder DIR (created if needed).
+        #[arg(long, value_name = "DIR")]
         out: std::path::PathBuf,
         /// Elevator deflection in degrees.
-        #[arg(long, default_value_t = 2.0, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
         delta_e_deg: f64,
     },
     /// Time history of an aileron step from the trim (7th-order model unless --pss).
     Simulate {
-        /// `A`, `B` or the path of an aircraft TOML file.
+        /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
         aircraft: String,
         /// Aileron step, degrees.
-        #[arg(long, allow_negative_numbers = true)]
+        #[arg(long, allow_hyphen_values = true)]
         delta_a_deg: f64,
         /// Elevator deflection in degrees.
-        #[arg(long, default_value_t = 2.0, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
         delta_e_deg: f64,
         /// Length of the run, s.
-        #[arg(long, default_value_t = 20.0)]
+        #[arg(long, default_value_t = 20.0, allow_hyphen_values = true)]
         t_end: f64,
         /// Rudder on the zero-sideslip schedule (aileron-rudder interconnect, Fig. 10).
         #[arg(long)]
@@ -100,8 +104,8 @@ enum Command {
         /// Integrate the PSS model instead of the 7th-order model.
         #[arg(long)]
         pss: bool,
-        /// Write the time history as CSV to this file.
-        #[arg(long)]
+        /// Write the time history as CSV to this file (units in the header).
+        #[arg(long, value_name = "FILE")]
         csv: Option<std::path::PathBuf>,
     },
     /// Print the dimensional principal-axis TOML equivalent to a nondimensional body-axis file.
@@ -111,11 +115,12 @@ enum Command {
     },
     /// Write the generated criterion crate (generated/) and docs/formulas.tex.
     Emit {
-        /// Write nothing; exit 1 naming every stale file.
+        /// Write nothing; exit 1 naming every stale file (first finishes an emit that was killed
+        /// after staging every file, and removes temporaries of killed runs).
         #[arg(long)]
         check: bool,
         /// Workspace root (default: the workspace this binary was built from).
-        #[arg(long)]
+        #[arg(long, value_name = "DIR")]
         root: Option<std::path::PathBuf>,
     },
 }
@@ -123,21 +128,82 @@ enum Command {
 /// Exit code for bad input (file, key or value), as for clap's usage errors.
 const BAD_INPUT: u8 = 2;
 
-/// Exit code of `emit --check` when outputs are stale.
-const STALE: u8 = 1;
+/// Exit code of `emit --check` when outputs are stale, and of a requested output that could not
+/// be written.
+const FAILED: u8 = 1;
 
-fn main() -> ExitCode {
-    let cli = Cli::parse();
-    match run(cli) {
-        Ok(code) => code,
-        Err(msg) => {
-            eprintln!("error: {msg}");
-            ExitCode::from(BAD_INPUT)
-        }
+/// Why a command did not finish.
+enum Failure {
+    /// Bad input: file, key or value (exit 2).
+    Input(String),
+    /// An output could not be written (exit 1).
+    Output(String),
+    /// stdout was closed by its reader (`| head`): end quietly, like other Unix tools.
+    Closed,
+}
+
+impl From<String> for Failure {
+    fn from(msg: String) -> Failure {
+        Failure::Input(msg)
     }
 }
 
-fn run(cli: Cli) -> Result<ExitCode, String> {
+/// A write to stdout failed.
+fn stdout_error(e: std::io::Error) -> Failure {
+    if e.kind() == std::io::ErrorKind::BrokenPipe {
+        Failure::Closed
+    } else {
+        Failure::Output(format!("cannot write to stdout: {e}"))
+    }
+}
+
+/// Prints to `out` (stdout), turning a write error into a [`Failure`].
+macro_rules! say {
+    ($out:expr, $($arg:tt)*) => {
+        writeln!($out, $($arg)*).map_err(stdout_error)?
+    };
+}
+
+fn main() -> ExitCode {
+    use std::io::IsTerminal;
+    // Colour only on a terminal (clap would also colour in CI logs, where CI is set).
+    let tty = std::io::stdout().is_terminal() && std::io::stderr().is_terminal();
+    let color = if tty {
+        clap::ColorChoice::Auto
+    } else {
+        clap::ColorChoice::Never
+    };
+    let cli = Cli::command()
+        .color(color)
+        .try_get_matches()
+        .and_then(|m| Cli::from_arg_matches(&m));
+    let cli = match cli {
+        Ok(cli) => cli,
+        Err(e) => {
+            let code = e.exit_code();
+            // Help and version go to stdout; a closed pipe there is not an error.
+            let _ = e.print();
+            return ExitCode::from(u8::try_from(code).unwrap_or(BAD_INPUT));
+        }
+    };
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    let result = run(cli, &mut out).and_then(|code| {
+        out.flush().map_err(stdout_error)?;
+        Ok(code)
+    });
+    let (msg, code) = match result {
+        Ok(code) => return code,
+        Err(Failure::Closed) => return ExitCode::SUCCESS,
+        Err(Failure::Input(msg)) => (msg, BAD_INPUT),
+        Err(Failure::Output(msg)) => (msg, FAILED),
+    };
+    // What was printed before the failure still goes out (ignoring a second failure).
+    let _ = out.flush();
+    let _ = writeln!(std::io::stderr(), "error: {msg}");
+    ExitCode::from(code)
+}
+
+fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
     let summary = matches!(cli.command, Command::Report { .. });
     match cli.command {
         Command::Analyze {
@@ -146,34 +212,40 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             json,
         } => {
             let ac = load_aircraft(&aircraft)?;
-            let result =
-                analyze(&ac, delta_e_deg.to_radians()).map_err(|e| format!("{}: {e}", ac.name))?;
+            let result = analyze(&ac, elevator(delta_e_deg)?).map_err(|e| named(&ac, e))?;
             if json {
                 let text = serde_json::to_string_pretty(&result).map_err(|e| e.to_string())?;
-                println!("{text}");
+                say!(out, "{text}");
             } else {
-                print!("{}", table(&result));
+                write!(out, "{}", table(&result)).map_err(stdout_error)?;
             }
             Ok(ExitCode::SUCCESS)
         }
         Command::Continue {
             aircraft,
             param,
-            min,
-            max,
+            min_deg,
+            max_deg,
             delta_e_deg,
             zero_sideslip,
             json,
             csv,
         } => {
             let ac = load_aircraft(&aircraft)?;
+            let (min, max) = (finite_angle("min", min_deg)?, finite_angle("max", max_deg)?);
+            if min_deg >= max_deg {
+                return Err(Failure::Input(format!(
+                    "--min-deg = {min_deg} and --max-deg = {max_deg}: expected the lower end of \
+                     the parameter range below the upper end, in deg"
+                )));
+            }
             let settings = Settings {
                 param: param
                     .parse::<ContinuationParam>()
                     .map_err(|e| e.to_string())?,
                 min,
                 max,
-                delta_e: delta_e_deg.to_radians(),
+                delta_e: elevator(delta_e_deg)?,
                 zero_sideslip,
                 ..Settings::default()
             };
@@ -183,60 +255,84 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                     b.set_position((f * 1000.0) as u64);
                 }
             })
-            .map_err(|e| format!("{}: {e}", ac.name))?;
+            .map_err(|e| named(&ac, e))?;
             if let Some(b) = bar {
                 b.finish_and_clear();
             }
             if let Some(path) = csv {
-                model::files::write_atomic(&path, diagram.to_csv().as_bytes())
-                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                write_file(&path, diagram.to_csv().as_bytes())?;
             }
             if json {
-                println!(
-                    "{}",
-                    serde_json::to_string_pretty(&diagram).map_err(|e| e.to_string())?
-                );
+                let text = serde_json::to_string_pretty(&diagram).map_err(|e| e.to_string())?;
+                say!(out, "{text}");
             } else {
-                print!("{}", diagram_summary(&diagram));
+                write!(out, "{}", diagram_summary(&diagram)).map_err(stdout_error)?;
             }
             Ok(ExitCode::SUCCESS)
         }
         Command::Report {
             aircraft,
-            out,
+            out: dir,
             delta_e_deg,
         }
         | Command::Plot {
             aircraft,
-            out,
+            out: dir,
             delta_e_deg,
         } => {
             let ac = load_aircraft(&aircraft)?;
             let settings = ReportSettings {
-                delta_e: finite_angle("delta_e", delta_e_deg)?,
-                style: model::plot::PlotStyle::default(),
                 summary,
+                ..ReportSettings::new(elevator(delta_e_deg)?)
             };
             let bar = progress_bar(if summary { "report" } else { "plot" });
-            let result = report(&ac, &out, &settings, &mut |f| {
+            let result = report(&ac, &dir, &settings, &mut |f| {
                 if let Some(b) = &bar {
                     b.set_position((f * 1000.0) as u64);
                 }
-            })
-            .map_err(|e| format!("{}: {e}", ac.name))?;
+            });
             if let Some(b) = bar {
                 b.finish_and_clear();
             }
+            let result = result.map_err(|e| match e {
+                ReportError::Io { .. } => Failure::Output(e.to_string()),
+                e => named(&ac, e),
+            })?;
+            let failed: Vec<&Path> = result
+                .failed_files
+                .iter()
+                .map(|f| f.path.as_path())
+                .collect();
             for f in &result.figures {
                 for file in &f.files {
-                    println!("wrote {}", out.join(file).display());
+                    say!(out, "wrote {}", dir.join(file).display());
                 }
             }
             if summary {
-                println!("wrote {}", out.join("summary.md").display());
-                println!("wrote {}", out.join("summary.json").display());
+                for file in ["summary.md", "summary.json"] {
+                    let path = dir.join(file);
+                    if !failed.contains(&path.as_path()) {
+                        say!(out, "wrote {}", path.display());
+                    }
+                }
             }
-            Ok(ExitCode::SUCCESS)
+            for k in &result.skipped {
+                say!(out, "skipped: {}", shown(k));
+            }
+            if result.failed_files.is_empty() {
+                return Ok(ExitCode::SUCCESS);
+            }
+            out.flush().map_err(stdout_error)?;
+            let mut err = std::io::stderr();
+            for f in &result.failed_files {
+                let _ = writeln!(
+                    err,
+                    "error: cannot write {}: {}",
+                    f.path.display(),
+                    f.reason
+                );
+            }
+            Ok(ExitCode::from(FAILED))
         }
         Command::Simulate {
             aircraft,
@@ -248,6 +344,12 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
             csv,
         } => {
             let ac = load_aircraft(&aircraft)?;
+            if !(t_end.is_finite() && t_end > 0.0) {
+                return Err(Failure::Input(format!(
+                    "--t-end = {t_end}: expected the length of the run, a positive finite number \
+                     of seconds"
+                )));
+            }
             let model = if pss { Model::Pss } else { Model::SeventhOrder };
             let settings = SimSettings {
                 rudder: if zero_sideslip {
@@ -258,74 +360,131 @@ fn run(cli: Cli) -> Result<ExitCode, String> {
                 t_end,
                 ..SimSettings::step(
                     model,
-                    finite_angle("delta_e", delta_e_deg)?,
+                    elevator(delta_e_deg)?,
                     finite_angle("delta_a", delta_a_deg)?,
                 )
             };
-            let h = simulate(&ac, &settings).map_err(|e| format!("{}: {e}", ac.name))?;
+            let h = simulate(&ac, &settings).map_err(|e| match e {
+                // In the unit typed.
+                SimError::ScheduleRange { lo, hi, .. } => named(
+                    &ac,
+                    format!(
+                        "--delta-a-deg = {delta_a_deg} is outside the zero-sideslip rudder \
+                         schedule, which covers {} to {} deg",
+                        lo.to_degrees(),
+                        hi.to_degrees()
+                    ),
+                ),
+                e => named(&ac, e),
+            })?;
             if let Some(path) = csv {
-                model::files::write_atomic(&path, h.to_csv().as_bytes())
-                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                write_file(&path, h.to_csv().as_bytes())?;
             }
             let st = h.steady(5.0_f64.min(t_end / 2.0));
-            println!(
-                "{} ({}), aileron step {delta_a_deg} deg, {} s: steady roll rate {:.4} rad/s (range {:.4} to {:.4}), mean sideslip {:.3} deg, peak |sideslip| {:.3} deg",
-                ac.name,
+            say!(
+                out,
+                "{} ({}), aileron step {delta_a_deg} deg, {} s: steady roll rate {} rad/s (range {} to {}), mean sideslip {} deg, peak |sideslip| {} deg",
+                shown(&ac.name),
                 model.name(),
                 t_end,
-                st.p_mean,
-                st.p_min,
-                st.p_max,
-                st.beta_mean.to_degrees(),
-                st.beta_peak_abs.to_degrees()
+                fixed(st.p_mean, 4),
+                fixed(st.p_min, 4),
+                fixed(st.p_max, 4),
+                fixed(st.beta_mean.to_degrees(), 3),
+                fixed(st.beta_peak_abs.to_degrees(), 3)
             );
             Ok(ExitCode::SUCCESS)
         }
         Command::Convert { file } => {
-            print!(
-                "{}",
-                aircraft::convert_file(&file).map_err(|e| e.to_string())?
-            );
+            let text = aircraft::convert_file(&file).map_err(|e| e.to_string())?;
+            write!(out, "{text}").map_err(stdout_error)?;
             Ok(ExitCode::SUCCESS)
         }
         Command::Emit { check, root } => {
             let root = root.unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join(".."));
             let outputs = model::emit::generate().map_err(|e| e.to_string())?;
             if check {
+                model::emit::tidy(&root, &outputs)
+                    .map_err(|e| Failure::Output(format!("cannot tidy {}: {e}", root.display())))?;
                 let stale = model::emit::stale(&root, &outputs);
                 if stale.is_empty() {
-                    println!("{} generated files are up to date", outputs.len());
+                    say!(out, "{} generated files are up to date", outputs.len());
                     return Ok(ExitCode::SUCCESS);
                 }
+                out.flush().map_err(stdout_error)?;
+                let mut err = std::io::stderr();
                 for p in &stale {
-                    eprintln!("stale: {}", p.display());
+                    let _ = writeln!(err, "stale: {}", p.display());
                 }
-                eprintln!("run `{}` to regenerate", model::emit::COMMAND);
-                return Ok(ExitCode::from(STALE));
+                let _ = writeln!(err, "run `{}` to regenerate", model::emit::COMMAND);
+                return Ok(ExitCode::from(FAILED));
             }
-            let written = model::emit::write(&root, &outputs).map_err(|e| e.to_string())?;
+            let written =
+                model::emit::write(&root, &outputs).map_err(|e| Failure::Output(e.to_string()))?;
             for o in &outputs {
                 let state = if written.contains(&o.path) {
                     "wrote"
                 } else {
                     "unchanged"
                 };
-                println!("{state:>9} {}", o.path.display());
+                say!(out, "{state:>9} {}", o.path.display());
             }
             Ok(ExitCode::SUCCESS)
         }
     }
 }
 
+/// An error of a computation for `ac`, prefixed with its (escaped) name.
+fn named(ac: &Aircraft, e: impl std::fmt::Display) -> Failure {
+    Failure::Input(format!("{}: {e}", shown(&ac.name)))
+}
+
+/// Writes a requested output file (`--csv`): see [`model::files::write_output`].
+fn write_file(path: &Path, contents: &[u8]) -> Result<(), Failure> {
+    model::files::write_output(path, contents).map_err(|e| {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            // `--csv /dev/stdout | head`: as for stdout itself.
+            Failure::Closed
+        } else {
+            Failure::Output(format!("cannot write {}: {e}", path.display()))
+        }
+    })
+}
+
+/// `name` with control characters escaped (`\u{1b}`, `\n`, ...), safe to print on a terminal.
+fn shown(name: &str) -> String {
+    name.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
+}
+
+/// An elevator deflection in degrees converted to rad, or an error in degrees.
+fn elevator(deg: f64) -> Result<f64, Failure> {
+    if deg.is_finite() && deg.abs() <= 90.0 {
+        Ok(deg.to_radians())
+    } else {
+        Err(Failure::Input(format!(
+            "--delta-e-deg = {deg}: expected a finite elevator deflection of at most 90 deg \
+             (delta_e)"
+        )))
+    }
+}
+
 /// An angle in degrees converted to rad, or an error naming the option.
-fn finite_angle(name: &str, deg: f64) -> Result<f64, String> {
+fn finite_angle(name: &str, deg: f64) -> Result<f64, Failure> {
     if deg.is_finite() {
         Ok(deg.to_radians())
     } else {
-        Err(format!(
+        Err(Failure::Input(format!(
             "--{}-deg = {deg}: expected a finite angle in degrees",
             name.replace('_', "-")
-        ))
+        )))
     }
 }
 
@@ -345,11 +504,13 @@ fn progress_bar(what: &str) -> Option<indicatif::ProgressBar> {
 
 fn diagram_summary(d: &Diagram) -> String {
     let points: usize = d.branches.iter().map(|b| b.points.len()).sum();
+    let count =
+        |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
     let mut s = format!(
-        "{}: {} branches, {} points, continuation in {}\n\n",
-        d.aircraft,
-        d.branches.len(),
-        points,
+        "{}: {}, {}, continuation in {}\n\n",
+        shown(&d.aircraft),
+        count(d.branches.len(), "branch", "branches"),
+        count(points, "point", "points"),
         d.parameter
     );
     if d.special_points.is_empty() {
@@ -368,26 +529,48 @@ fn diagram_summary(d: &Diagram) -> String {
     );
     for p in &d.special_points {
         s += &format!(
-            "  {:<7} {:>12.4} {:>10.6} {:>10.4} {:>10.4} {:>10.5} {:>10.5} {:>12}\n",
+            "  {:<7} {:>12} {:>10} {:>10} {:>10} {:>10} {:>10} {:>12}\n",
             p.kind.name(),
-            p.param.to_degrees(),
-            p.p,
-            p.alpha.to_degrees(),
-            p.beta.to_degrees(),
-            p.q,
-            p.r,
-            p.frequency.map_or(String::new(), |f| format!("{f:.5}"))
+            fixed(p.param.to_degrees(), 4),
+            fixed(p.p, 6),
+            fixed(p.alpha.to_degrees(), 4),
+            fixed(p.beta.to_degrees(), 4),
+            fixed(p.q, 5),
+            fixed(p.r, 5),
+            p.frequency.map_or(String::new(), |f| fixed(f, 5))
         );
     }
     s
 }
 
-/// `A`/`B` name the built-in aircraft; anything else is a TOML file.
+/// `A`/`B` (any case) name the built-in aircraft; anything else is a TOML file. A name that is
+/// neither a built-in nor a file gets the list of built-ins and the shipped file it may mean.
 fn load_aircraft(arg: &str) -> Result<Aircraft, String> {
     if let Some(ac) = Aircraft::builtin(arg) {
         return Ok(ac);
     }
-    aircraft::load(Path::new(arg)).map_err(|e| e.to_string())
+    let path = Path::new(arg);
+    aircraft::load(path).map_err(|e| {
+        let looks_like_name =
+            !path.exists() && path.components().count() == 1 && path.extension().is_none();
+        if !looks_like_name {
+            return e.to_string();
+        }
+        let mut msg = format!(
+            "{arg:?} is neither a built-in aircraft nor a file; the built-in aircraft are A and B \
+             (the paper's), and any other argument is read as the path of an aircraft TOML file"
+        );
+        let shipped = Path::new("aircraft").join(format!("{}.toml", arg.to_ascii_lowercase()));
+        let in_repo = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("..")
+            .join(&shipped);
+        if shipped.is_file() {
+            msg += &format!(" (did you mean {}?)", shipped.display());
+        } else if in_repo.is_file() {
+            msg += &format!(" (did you mean {}?)", in_repo.display());
+        }
+        msg
+    })
 }
 
 /// The marks of a reported point: beyond the control limits, outside the validity range.
@@ -404,20 +587,11 @@ fn marks(within_limits: Option<bool>, valid: bool) -> String {
 
 fn table(a: &Analysis) -> String {
     let mut s = String::new();
-    let list = |v: &[f64]| {
-        if v.is_empty() {
-            "none".to_string()
-        } else {
-            v.iter()
-                .map(|x| format!("{x:.6}"))
-                .collect::<Vec<_>>()
-                .join(", ")
-        }
-    };
+    let list = |v: &[f64]| list(v, 6, "rad/s");
     s += &format!(
-        "{}  (delta_e = {:.4} deg, delta_r = 0)\n\n",
-        a.aircraft,
-        a.delta_e_rad.to_degrees()
+        "{}  (delta_e = {} deg, delta_r = 0)\n\n",
+        shown(&a.aircraft),
+        fixed(a.delta_e_rad.to_degrees(), 4)
     );
     match (&a.critical, &a.critical_note) {
         (Some(c), _) => {
@@ -437,11 +611,11 @@ fn table(a: &Analysis) -> String {
         (None, None) => {}
     }
     s += &format!(
-        "Divergence roll rates, Eq. 5 (rad/s):   {}\n",
+        "Divergence roll rates, Eq. 5:   {}\n",
         list(&a.divergence_roll_rates)
     );
     s += &format!(
-        "Poles of det K, d = 0 (rad/s):          {}\n\n",
+        "Poles of det K, d = 0:          {}\n\n",
         list(&a.det_k_poles.iter().map(|j| j.p0).collect::<Vec<_>>())
     );
     s += "Jump points, det K = 0 (saddle-nodes of the PSS equilibria):\n";
@@ -451,13 +625,13 @@ fn table(a: &Analysis) -> String {
         s += "     P0 rad/s   delta_a deg   alpha deg    beta deg     q rad/s     r rad/s\n";
         for j in &a.jump {
             s += &format!(
-                "  {:>11.6} {:>13.4} {:>11.4} {:>11.4} {:>11.5} {:>11.5}{}\n",
-                j.p0,
-                j.delta_a_deg,
-                j.alpha.to_degrees(),
-                j.beta.to_degrees(),
-                j.q,
-                j.r,
+                "  {:>11} {:>13} {:>11} {:>11} {:>11} {:>11}{}\n",
+                fixed(j.p0, 6),
+                fixed(j.delta_a_deg, 4),
+                fixed(j.alpha.to_degrees(), 4),
+                fixed(j.beta.to_degrees(), 4),
+                fixed(j.q, 5),
+                fixed(j.r, 5),
                 marks(j.within_limits, j.valid)
             );
         }
@@ -469,16 +643,128 @@ fn table(a: &Analysis) -> String {
         s += "     P0 rad/s   delta_a deg   delta_r deg   alpha deg     q rad/s     r rad/s\n";
         for j in &a.zero_sideslip.departure {
             s += &format!(
-                "  {:>11.6} {:>13.4} {:>13.4} {:>11.4} {:>11.5} {:>11.5}{}\n",
-                j.p0,
-                j.delta_a_deg,
-                j.delta_r_deg,
-                j.alpha.to_degrees(),
-                j.q,
-                j.r,
+                "  {:>11} {:>13} {:>13} {:>11} {:>11} {:>11}{}\n",
+                fixed(j.p0, 6),
+                fixed(j.delta_a_deg, 4),
+                fixed(j.delta_r_deg, 4),
+                fixed(j.alpha.to_degrees(), 4),
+                fixed(j.q, 5),
+                fixed(j.r, 5),
                 marks(j.within_limits, j.valid)
             );
         }
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+
+    /// Random argument lists from the commands' own words and numbers of every kind: parsing
+    /// never panics, and every number that reaches a command is finite or refused naming its
+    /// option.
+    #[test]
+    fn random_argument_lists_parse_or_fail_without_panics() {
+        let command = prop::sample::select(vec![
+            "analyze", "continue", "report", "plot", "simulate", "emit",
+        ]);
+        let aircraft = prop::sample::select(vec!["A", "b", "C", "aircraft/c.toml", "-x", ""]);
+        let option = prop::sample::select(vec![
+            "--delta-e-deg",
+            "--delta-a-deg",
+            "--min-deg",
+            "--max-deg",
+            "--t-end",
+            "--out",
+            "--csv",
+            "--param",
+            "--root",
+        ]);
+        let number = prop_oneof![
+            prop::sample::select(vec![
+                "-1", "-1e-300", "1e9", "nan", "NaN", "-inf", "inf", "0", "-0", "1e308", "1e309",
+                "--json", "x", "",
+            ])
+            .prop_map(str::to_string),
+            any::<f64>().prop_map(|v| v.to_string()),
+        ];
+        let flag = prop::sample::select(vec!["--json", "--pss", "--zero-sideslip", "--check"]);
+        let args = (
+            command,
+            aircraft,
+            prop::collection::vec((option, number), 0..5),
+            prop::collection::vec(flag, 0..2),
+        )
+            .prop_map(|(c, a, opts, flags)| {
+                let mut v = vec![c.to_string(), a.to_string()];
+                for (o, n) in opts {
+                    v.push(o.to_string());
+                    v.push(n);
+                }
+                v.extend(flags.iter().map(|f| f.to_string()));
+                v
+            });
+        let cases = 3000;
+        let config = Config {
+            cases,
+            failure_persistence: None,
+            ..Config::default()
+        };
+        let mut runner =
+            TestRunner::new_with_rng(config, TestRng::deterministic_rng(RngAlgorithm::ChaCha));
+        let parsed = std::cell::Cell::new(0);
+        runner
+            .run(&args, |args| {
+                let argv = std::iter::once("model").chain(args.iter().map(String::as_str));
+                let Ok(cli) = Cli::try_parse_from(argv) else {
+                    return Ok(());
+                };
+                parsed.set(parsed.get() + 1);
+                let checks: Vec<Result<f64, Failure>> = match cli.command {
+                    Command::Analyze { delta_e_deg, .. }
+                    | Command::Report { delta_e_deg, .. }
+                    | Command::Plot { delta_e_deg, .. } => vec![elevator(delta_e_deg)],
+                    Command::Continue {
+                        min_deg,
+                        max_deg,
+                        delta_e_deg,
+                        ..
+                    } => vec![
+                        elevator(delta_e_deg),
+                        finite_angle("min", min_deg),
+                        finite_angle("max", max_deg),
+                    ],
+                    Command::Simulate {
+                        delta_a_deg,
+                        delta_e_deg,
+                        ..
+                    } => vec![elevator(delta_e_deg), finite_angle("delta_a", delta_a_deg)],
+                    Command::Emit { .. } | Command::Convert { .. } => vec![],
+                };
+                for c in checks {
+                    match c {
+                        Ok(v) => prop_assert!(v.is_finite()),
+                        Err(Failure::Input(m)) => prop_assert!(m.starts_with("--"), "{m}"),
+                        Err(_) => prop_assert!(false, "not an input error"),
+                    }
+                }
+                Ok(())
+            })
+            .unwrap();
+        println!(
+            "command line: {cases} random argument lists, {} parsed",
+            parsed.get()
+        );
+        assert!(parsed.get() > 50, "{}", parsed.get());
+    }
+
+    #[test]
+    fn names_are_escaped_and_numbers_never_print_as_negative_zero() {
+        assert_eq!(shown("A\u{1b}[2J\n"), "A\\u{1b}[2J\\n");
+        assert_eq!(shown("Aircraft A"), "Aircraft A");
+        assert_eq!(fixed(-0.00001, 4), "0.0000");
+    }
 }

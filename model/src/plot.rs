@@ -12,7 +12,8 @@
 //!
 //! Each function turns plain data ([`data`]) into a [`Figure`] (panels, clipped polylines and
 //! markers in plot units: angles in deg, rates in rad/s) and renders it to `<stem>.svg` and
-//! `<stem>.png`, written atomically; the returned [`Rendered`] holds the files and the figure, so
+//! `<stem>.png`, with the series drawn in `<stem>.csv` for replotting elsewhere, written
+//! atomically; the returned [`Rendered`] holds the files and the figure, so
 //! callers and tests see exactly the series that were drawn. [`closed_form`] computes the data
 //! of Figs 1-4, 7-9 and 11 from the closed-form trims; a continuation can supply the same
 //! [`BifurcationData`].
@@ -105,6 +106,14 @@ pub enum PlotError {
     /// The closed-form trims or the rudder schedule failed.
     #[error(transparent)]
     Simulation(SimError),
+    /// Some of a figure's files could not be written (the others were).
+    #[error("{}", failed.iter().map(|(p, m)| format!("cannot write {}: {m}", p.display())).collect::<Vec<_>>().join("; "))]
+    Files {
+        /// The files written.
+        written: Vec<PathBuf>,
+        /// Each file that could not be written, and why.
+        failed: Vec<(PathBuf, String)>,
+    },
 }
 
 /// A rendered figure: the files written and the figure as drawn.
@@ -116,9 +125,10 @@ pub struct Rendered {
     pub figure: Figure,
 }
 
-/// Renders any [`Figure`] to `<stem>.svg` and `<stem>.png` (as selected by `style`); returns the
-/// files written. Each file is written to a temporary name in the same directory and renamed,
-/// so a reader never sees a half-written file.
+/// Renders any [`Figure`] to `<stem>.svg` and `<stem>.png` (as selected by `style`) and its
+/// plotted series to `<stem>.csv`; returns the files written. Each file is written to a
+/// temporary name in the same directory and renamed, so a reader never sees a half-written
+/// file; every file that can be written is, and [`PlotError::Files`] names those that could not.
 pub fn render(stem: &Path, figure: &Figure, style: &PlotStyle) -> Result<Vec<PathBuf>, PlotError> {
     render::render(stem, figure, style)
 }

@@ -35,6 +35,9 @@ pub enum ReportError {
     /// A figure failed.
     #[error(transparent)]
     Plot(#[from] PlotError),
+    /// The aileron range of the simulations is not a positive number.
+    #[error("max_abs_delta_a = {0} rad: expected a positive finite aileron range")]
+    AileronRange(f64),
     /// Writing the summary failed.
     #[error("cannot write {}: {source}", path.display())]
     Io {
@@ -95,6 +98,26 @@ pub struct Summary {
     pub figures: Vec<FigureEntry>,
     /// Sections that could not be computed for this aircraft, with the reason.
     pub skipped: Vec<String>,
+    /// Files that could not be written, with the reason (the command then fails).
+    pub failed_files: Vec<FailedFile>,
+}
+
+/// A file of the report that could not be written.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct FailedFile {
+    /// The file.
+    pub path: PathBuf,
+    /// Why (the system's message).
+    pub reason: String,
+}
+
+/// What could not be done: sections not computed for this aircraft, files not written.
+#[derive(Default)]
+struct Notes {
+    skipped: Vec<String>,
+    failed: Vec<FailedFile>,
+    /// Figures of which some files were written and some not: (paper figures, files written).
+    partial: Vec<(&'static str, Vec<PathBuf>)>,
 }
 
 /// What to draw.
@@ -106,6 +129,59 @@ pub struct ReportSettings {
     pub style: PlotStyle,
     /// Write `summary.md` and `summary.json` (false: figures only, `model plot`).
     pub summary: bool,
+    /// Largest aileron deflection simulated, |delta_a| in rad (steps of Figs 5, 6 and 10 and
+    /// the jump sweep stay within it); `None`: [`ReportSettings::DEFAULT_MAX_ABS_DELTA_A`].
+    /// What lies beyond is named in [`Summary::skipped`].
+    pub max_abs_delta_a: Option<f64>,
+}
+
+impl ReportSettings {
+    /// Default aileron range of the simulations, 30 deg (in rad): beyond the travel of the
+    /// ailerons of any aircraft of this class, and wide enough for the paper's A (fold at
+    /// -3.85 deg) and B.
+    pub const DEFAULT_MAX_ABS_DELTA_A: f64 = 30.0 * std::f64::consts::PI / 180.0;
+
+    /// `delta_e` (rad), default style, with the summary, default aileron range.
+    pub fn new(delta_e: f64) -> ReportSettings {
+        ReportSettings {
+            delta_e,
+            style: PlotStyle::default(),
+            summary: true,
+            max_abs_delta_a: None,
+        }
+    }
+
+    /// The aileron range of the simulations, rad.
+    pub fn max_abs_delta_a(&self) -> f64 {
+        self.max_abs_delta_a
+            .unwrap_or(Self::DEFAULT_MAX_ABS_DELTA_A)
+    }
+}
+
+/// The steps of `steps` within `max` (rad); those beyond are named in `notes.skipped`. When
+/// none is within, the default family ([`family`] of `None`, within `max`) instead.
+fn within(notes: &mut Notes, what: &str, steps: Vec<f64>, max: f64) -> Vec<f64> {
+    let (inside, beyond): (Vec<f64>, Vec<f64>) = steps.into_iter().partition(|d| d.abs() <= max);
+    if beyond.is_empty() {
+        return inside;
+    }
+    let (inside, instead) = if inside.is_empty() {
+        let default: Vec<f64> = family(None)
+            .into_iter()
+            .filter(|d| d.abs() <= max)
+            .collect();
+        let text = format!("; steps of {} deg instead", degrees(&default));
+        (default, text)
+    } else {
+        (inside, String::new())
+    };
+    notes.skipped.push(format!(
+        "{what}: aileron steps of {} deg not simulated (beyond the aileron range of +-{:.1} \
+         deg){instead}",
+        degrees(&beyond),
+        max.to_degrees()
+    ));
+    inside
 }
 
 fn to_plot(d: &Diagram, title: String, divergence: &[f64]) -> BifurcationData {
@@ -176,9 +252,34 @@ fn family(critical: Option<f64>) -> Vec<f64> {
         .collect()
 }
 
-/// The value of `r`, or `None` with `what: reason` recorded in `skipped`.
-fn keep<T>(skipped: &mut Vec<String>, what: &str, r: Result<T, ReportError>) -> Option<T> {
-    r.map_err(|e| skipped.push(format!("{what}: {e}"))).ok()
+/// The value of `r`, or `None` with the files that could not be written recorded in
+/// `notes.failed` and any other reason as `what: reason` in `notes.skipped`.
+fn keep<T>(notes: &mut Notes, what: &'static str, r: Result<T, ReportError>) -> Option<T> {
+    match r {
+        Ok(v) => Some(v),
+        Err(ReportError::Plot(PlotError::Files { written, failed })) => {
+            if !written.is_empty() {
+                notes.partial.push((what, written));
+            }
+            notes.failed.extend(
+                failed
+                    .into_iter()
+                    .map(|(path, reason)| FailedFile { path, reason }),
+            );
+            None
+        }
+        Err(ReportError::Plot(PlotError::Io { path, message })) => {
+            notes.failed.push(FailedFile {
+                path,
+                reason: message,
+            });
+            None
+        }
+        Err(e) => {
+            notes.skipped.push(format!("{what}: {e}"));
+            None
+        }
+    }
 }
 
 /// Aileron steps as a list of degrees.
@@ -211,17 +312,27 @@ pub fn report(
 ) -> Result<Summary, ReportError> {
     let de = settings.delta_e;
     let style = &settings.style;
+    // The simulations stay within the aircraft's aileron limit when its file gives one.
+    let max_da = match (settings.max_abs_delta_a, aircraft.limits.aileron_deg) {
+        (None, Some(limit)) => limit.to_radians(),
+        _ => settings.max_abs_delta_a(),
+    };
+    if !(max_da.is_finite() && max_da > 0.0) {
+        return Err(ReportError::AileronRange(max_da));
+    }
     std::fs::create_dir_all(out).map_err(|source| ReportError::Io {
         path: out.to_path_buf(),
         source,
     })?;
+    // Temporaries of a killed run, also of files this run may not write again.
+    crate::files::remove_stale_temporaries_in(out);
     let analysis = analyze(aircraft, de)?;
     let name = &aircraft.name;
     let mut figures = Vec::new();
     progress(0.05);
     // Each section that cannot be computed for this aircraft (no rudder authority, a run that
     // does not settle, ...) is skipped with its reason; the rest of the report still appears.
-    let mut skipped: Vec<String> = Vec::new();
+    let mut notes = Notes::default();
     let fig = |paper: &'static str, caption: String, files: &[PathBuf]| FigureEntry {
         paper,
         caption,
@@ -234,7 +345,7 @@ pub fn report(
         ..continuation::Settings::default()
     };
     let diagram = keep(
-        &mut skipped,
+        &mut notes,
         "Figs 1-4 (continuation)",
         continue_equilibria(aircraft, &cont, &mut |_| {}).map_err(ReportError::from),
     );
@@ -248,11 +359,11 @@ pub fn report(
             &analysis.divergence_roll_rates,
         );
         let r = plot::bifurcation(&out.join("fig01_bifurcation"), &data, style);
-        if let Some(r) = keep(&mut skipped, "Figs 1, 2", r.map_err(ReportError::from)) {
+        if let Some(r) = keep(&mut notes, "Figs 1, 2", r.map_err(ReportError::from)) {
             figures.push(fig("Figs 1, 2", "Roll rate of the PSS equilibria vs aileron (solid stable, dashed unstable; saddle-nodes and Hopf points marked).".into(), &r.files));
         }
         let r = plot::trim_states(&out.join("fig03_trim_states"), &data, style);
-        if let Some(r) = keep(&mut skipped, "Figs 3, 4", r.map_err(ReportError::from)) {
+        if let Some(r) = keep(&mut notes, "Figs 3, 4", r.map_err(ReportError::from)) {
             figures.push(fig(
                 "Figs 3, 4",
                 "Trim angle of attack, sideslip, pitch and yaw rate vs aileron.".into(),
@@ -265,7 +376,7 @@ pub fn report(
     // Figs 7, 8, 11: det K from the closed form.
     let r = closed_form::det_k_curve(aircraft, de)
         .and_then(|c| plot::det_k(&out.join("fig07_det_k"), &c, style));
-    if let Some(r) = keep(&mut skipped, "Figs 7, 8", r.map_err(ReportError::from)) {
+    if let Some(r) = keep(&mut notes, "Figs 7, 8", r.map_err(ReportError::from)) {
         figures.push(fig(
             "Figs 7, 8",
             "det K vs trim roll rate P0, roots (jump points) and poles (d = 0) marked.".into(),
@@ -274,7 +385,7 @@ pub fn report(
     }
     let r = closed_form::zero_sideslip_det_k_curve(aircraft, de)
         .and_then(|c| plot::det_k(&out.join("fig11_zero_sideslip_det_k"), &c, style));
-    if let Some(r) = keep(&mut skipped, "Fig. 11", r.map_err(ReportError::from)) {
+    if let Some(r) = keep(&mut notes, "Fig. 11", r.map_err(ReportError::from)) {
         figures.push(fig(
             "Fig. 11",
             "det K at the zero-sideslip trims vs P0: departure points.".into(),
@@ -289,7 +400,7 @@ pub fn report(
         ..cont
     };
     let zs = keep(
-        &mut skipped,
+        &mut notes,
         "Fig. 9 (zero-sideslip continuation)",
         continue_equilibria(aircraft, &zs_settings, &mut |_| {}).map_err(ReportError::from),
     );
@@ -319,7 +430,7 @@ pub fn report(
             diagram: zs_plot,
         };
         let r = plot::zero_sideslip(&out.join("fig09_zero_sideslip"), &zs_data, style);
-        if let Some(r) = keep(&mut skipped, "Fig. 9", r.map_err(ReportError::from)) {
+        if let Some(r) = keep(&mut notes, "Fig. 9", r.map_err(ReportError::from)) {
             figures.push(fig("Fig. 9", "Rudder schedule for zero sideslip (aileron-rudder interconnect) and the PSS equilibria with it; the branch point marks the departure.".into(), &r.files));
         }
     }
@@ -327,7 +438,7 @@ pub fn report(
 
     // Figs 5, 6 and 10: time histories; the simulated jump (section III).
     let sim = keep(
-        &mut skipped,
+        &mut notes,
         "Figs 5, 6, 10 (simulation)",
         Simulator::new(aircraft, de).map_err(ReportError::from),
     );
@@ -347,7 +458,7 @@ pub fn report(
                 sim.run_all(&settings)
             };
         // Figs 5, 6: aileron steps from the trim, 7th-order model solid, PSS dashed.
-        let steps = family(fold);
+        let steps = within(&mut notes, "Figs 5, 6", family(fold), max_da);
         let r = run(Model::SeventhOrder, Rudder::Fixed(0.0), &steps)
             .and_then(|seventh| Ok((seventh, run(Model::Pss, Rudder::Fixed(0.0), &steps)?)))
             .map_err(ReportError::from)
@@ -366,7 +477,7 @@ pub fn report(
                 )
                 .map_err(ReportError::from)
             });
-        if let Some(r) = keep(&mut skipped, "Figs 5, 6", r) {
+        if let Some(r) = keep(&mut notes, "Figs 5, 6", r) {
             figures.push(fig(
                 "Figs 5, 6",
                 format!(
@@ -385,12 +496,14 @@ pub fn report(
             .departure
             .first()
             .map(|d| d.delta_a_rad);
-        let zs_steps: Vec<f64> = family(departure)
+        let zs_steps: Vec<f64> = within(&mut notes, "Fig. 10", family(departure), max_da)
             .into_iter()
             .filter(|d| sim.rudder_at(Rudder::ZeroSideslip, *d).is_ok())
             .collect();
         if zs_steps.is_empty() {
-            skipped.push("Fig. 10: no aileron step has a zero-sideslip rudder setting".into());
+            notes
+                .skipped
+                .push("Fig. 10: no aileron step has a zero-sideslip rudder setting".into());
         } else {
             let r = run(Model::SeventhOrder, Rudder::ZeroSideslip, &zs_steps)
                 .map_err(ReportError::from)
@@ -409,7 +522,7 @@ pub fn report(
                     )
                     .map_err(ReportError::from)
                 });
-            if let Some(r) = keep(&mut skipped, "Fig. 10", r) {
+            if let Some(r) = keep(&mut notes, "Fig. 10", r) {
                 figures.push(fig(
                     "Fig. 10",
                     format!(
@@ -422,56 +535,100 @@ pub fn report(
         }
         progress(0.85);
 
-        if let Some(f) = fold {
-            for (model, label) in [(Model::Pss, "pss"), (Model::SeventhOrder, "seventh-order")] {
-                let sweep = jump_sweep(
-                    sim,
-                    &SweepSettings::new(model, 2.0 * f, 0.25f64.to_radians()),
-                );
-                if let Some(sweep) = keep(
-                    &mut skipped,
-                    "simulated jump",
-                    sweep.map_err(ReportError::from),
-                ) {
-                    simulated_jumps.push(SimulatedJump {
-                        model: label,
-                        delta_a_deg: sweep.jump.map(|j| j.delta_a.to_degrees()),
-                        criterion_deg: f.to_degrees(),
-                    });
+        match fold {
+            Some(f) if f.abs() > max_da => notes.skipped.push(format!(
+                "simulated jump: the criterion's fold at {:.3} deg lies beyond the aileron range \
+                 of +-{:.1} deg; no sweep",
+                f.to_degrees(),
+                max_da.to_degrees()
+            )),
+            Some(f) => {
+                // Out to twice the fold, within the aileron range.
+                let to = (2.0 * f).clamp(-max_da, max_da);
+                if to.abs() < 2.0 * f.abs() {
+                    notes.skipped.push(format!(
+                        "simulated jump: swept to {:.1} deg only (aileron range), not to twice \
+                         the fold ({:.1} deg)",
+                        to.to_degrees(),
+                        2.0 * f.to_degrees()
+                    ));
+                }
+                for (model, label) in [(Model::Pss, "pss"), (Model::SeventhOrder, "seventh-order")]
+                {
+                    let sweep =
+                        jump_sweep(sim, &SweepSettings::new(model, to, 0.25f64.to_radians()));
+                    if let Some(sweep) = keep(
+                        &mut notes,
+                        "simulated jump",
+                        sweep.map_err(ReportError::from),
+                    ) {
+                        simulated_jumps.push(SimulatedJump {
+                            model: label,
+                            delta_a_deg: sweep.jump.map(|j| j.delta_a.to_degrees()),
+                            criterion_deg: f.to_degrees(),
+                        });
+                    }
                 }
             }
+            None => notes.skipped.push(format!(
+                "simulated jump: no sweep, the criterion finds no jump within the aileron range \
+                 it follows: {}",
+                analysis
+                    .critical_note
+                    .as_deref()
+                    .unwrap_or("the primary branch has no fold")
+            )),
         }
     }
-    let summary = Summary {
+    figures.extend(notes.partial.iter().map(|(paper, files)| {
+        fig(
+            paper,
+            "Incomplete: some files of this figure could not be written (listed under Files that could not be written).".into(),
+            files,
+        )
+    }));
+    let mut summary = Summary {
         special_points: diagram.as_ref().map(rows).unwrap_or_default(),
         zero_sideslip_special_points: zs.as_ref().map(rows).unwrap_or_default(),
         analysis,
         simulated_jumps,
         figures,
-        skipped,
+        skipped: notes.skipped,
+        failed_files: notes.failed,
     };
     if settings.summary {
-        let write = |file: &str, text: String| {
+        let json = serde_json::to_string_pretty(&summary).unwrap_or_default() + "\n";
+        let md = markdown(&summary, de);
+        for (file, text) in [("summary.json", json), ("summary.md", md)] {
             let path = out.join(file);
-            crate::files::write_atomic(&path, text.as_bytes())
-                .map_err(|source| ReportError::Io { path, source })
-        };
-        let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
-        write("summary.json", json + "\n")?;
-        write("summary.md", markdown(&summary, de))?;
+            if let Err(e) = crate::files::write_atomic(&path, text.as_bytes()) {
+                summary.failed_files.push(FailedFile {
+                    path,
+                    reason: e.to_string(),
+                });
+            }
+        }
     }
     progress(1.0);
     Ok(summary)
 }
 
-fn list(v: &[f64], digits: usize) -> String {
+/// `x` with `digits` decimals, never `-0.0000` (a value that rounds to zero prints as zero).
+pub fn fixed(x: f64, digits: usize) -> String {
+    let s = format!("{x:.digits$}");
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => s,
+    }
+}
+
+/// `v` with `digits` decimals, comma-separated and followed by `unit`, or `none`.
+pub fn list(v: &[f64], digits: usize, unit: &str) -> String {
     if v.is_empty() {
         "none".into()
     } else {
-        v.iter()
-            .map(|x| format!("{x:.digits$}"))
-            .collect::<Vec<_>>()
-            .join(", ")
+        let v: Vec<String> = v.iter().map(|x| fixed(*x, digits)).collect();
+        format!("{} {unit}", v.join(", "))
     }
 }
 
@@ -484,23 +641,27 @@ fn markdown(s: &Summary, de: f64) -> String {
     );
     m += "## Critical roll rates\n\n";
     m += &format!(
-        "- Pitch-yaw divergence, Eq. 5 (Table 1): {} rad/s\n",
-        list(&a.divergence_roll_rates, 6)
+        "- Pitch-yaw divergence, Eq. 5 (Table 1): {}\n",
+        list(&a.divergence_roll_rates, 6, "rad/s")
     );
     m += &format!(
-        "- Poles of det K (d = 0): {} rad/s\n\n",
-        list(&a.det_k_poles.iter().map(|j| j.p0).collect::<Vec<_>>(), 6)
+        "- Poles of det K (d = 0): {}\n\n",
+        list(
+            &a.det_k_poles.iter().map(|j| j.p0).collect::<Vec<_>>(),
+            6,
+            "rad/s"
+        )
     );
     m += "### Jump points (det K = 0, saddle-nodes)\n\n| P0 rad/s | delta_a deg | alpha deg | beta deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|---:|\n";
     for j in &a.jump {
         m += &format!(
-            "| {:.6} | {:.4} | {:.4} | {:.4} | {:.5} | {:.5} |\n",
-            j.p0,
-            j.delta_a_deg,
-            j.alpha.to_degrees(),
-            j.beta.to_degrees(),
-            j.q,
-            j.r
+            "| {} | {} | {} | {} | {} | {} |\n",
+            fixed(j.p0, 6),
+            fixed(j.delta_a_deg, 4),
+            fixed(j.alpha.to_degrees(), 4),
+            fixed(j.beta.to_degrees(), 4),
+            fixed(j.q, 5),
+            fixed(j.r, 5)
         );
     }
     if a.jump.is_empty() {
@@ -509,12 +670,12 @@ fn markdown(s: &Summary, de: f64) -> String {
     m += "\n### Zero-sideslip departure (det K = 0 at beta = 0)\n\n| P0 rad/s | delta_a deg | alpha deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|\n";
     for d in &a.zero_sideslip.departure {
         m += &format!(
-            "| {:.6} | {:.4} | {:.4} | {:.5} | {:.5} |\n",
-            d.p0,
-            d.delta_a_deg,
-            d.alpha.to_degrees(),
-            d.q,
-            d.r
+            "| {} | {} | {} | {} | {} |\n",
+            fixed(d.p0, 6),
+            fixed(d.delta_a_deg, 4),
+            fixed(d.alpha.to_degrees(), 4),
+            fixed(d.q, 5),
+            fixed(d.r, 5)
         );
     }
     for (title, rows) in [
@@ -530,11 +691,11 @@ fn markdown(s: &Summary, de: f64) -> String {
         m += &format!("\n## {title}\n\n| kind | delta_a deg | p rad/s | frequency rad/s |\n|---|---:|---:|---:|\n");
         for r in rows.iter() {
             m += &format!(
-                "| {} | {:.4} | {:.6} | {} |\n",
+                "| {} | {} | {} | {} |\n",
                 r.kind,
-                r.delta_a_deg,
-                r.p,
-                r.frequency.map_or(String::new(), |f| format!("{f:.5}"))
+                fixed(r.delta_a_deg, 4),
+                fixed(r.p, 6),
+                r.frequency.map_or(String::new(), |f| fixed(f, 5))
             );
         }
     }
@@ -547,6 +708,12 @@ fn markdown(s: &Summary, de: f64) -> String {
                 j.delta_a_deg.map_or("none".into(), |d| format!("{d:.3}")),
                 j.criterion_deg
             );
+        }
+    }
+    if !s.failed_files.is_empty() {
+        m += "\n## Files that could not be written\n\n";
+        for f in &s.failed_files {
+            m += &format!("- `{}`: {}\n", f.path.display(), f.reason);
         }
     }
     if !s.skipped.is_empty() {
@@ -568,4 +735,35 @@ fn markdown(s: &Summary, de: f64) -> String {
         }
     }
     m
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_never_print_as_negative_zero_and_empty_lists_carry_no_unit() {
+        assert_eq!(fixed(-0.00001, 4), "0.0000");
+        assert_eq!(fixed(-0.0, 2), "0.00");
+        assert_eq!(fixed(-0.00006, 4), "-0.0001");
+        assert_eq!(fixed(2.5, 1), "2.5");
+        assert_eq!(list(&[], 6, "rad/s"), "none");
+        assert_eq!(list(&[1.0, -0.0], 2, "rad/s"), "1.00, 0.00 rad/s");
+    }
+
+    #[test]
+    fn steps_beyond_the_aileron_range_are_named_and_replaced_by_the_default_family() {
+        let mut notes = Notes::default();
+        let max = 30f64.to_radians();
+        // A fold at -3.85 deg: the family (up to twice it) is inside the range.
+        let steps = within(&mut notes, "Figs 5, 6", family(Some(-0.0671)), max);
+        assert_eq!(steps.len(), 8);
+        assert!(notes.skipped.is_empty());
+        // A fold at -110905 deg (n_beta = 0): nothing inside; the default family instead.
+        let steps = within(&mut notes, "Figs 5, 6", family(Some(-1935.6)), max);
+        assert_eq!(steps, family(None));
+        assert!(steps.iter().all(|d| d.abs() <= max));
+        assert_eq!(notes.skipped.len(), 1);
+        assert!(notes.skipped[0].contains("beyond the aileron range of +-30.0 deg"));
+    }
 }

@@ -182,6 +182,9 @@ pub enum SimError {
         /// Further explanation (may be empty).
         extra: &'static str,
     },
+    /// A sweep would make more runs than [`MAX_SWEEP_RUNS`].
+    #[error("a sweep of {0} aileron steps; at most {MAX_SWEEP_RUNS} are allowed")]
+    TooManyRuns(usize),
     /// The run would produce more output samples than [`MAX_SAMPLES`].
     #[error("t_end / dt = {0} output samples; at most {MAX_SAMPLES} are allowed")]
     TooManySamples(f64),
@@ -233,6 +236,10 @@ pub enum SimError {
         message: String,
     },
 }
+
+/// Most aileron steps of one sweep (each a run of 20 s by default): a sweep asked to go further
+/// is refused rather than left running for hours.
+pub const MAX_SWEEP_RUNS: usize = 10_000;
 
 /// Largest number of output samples of one run.
 pub const MAX_SAMPLES: usize = 10_000_000;
@@ -741,7 +748,16 @@ where
         };
         let st = solver
             .integrate_with_continuous_output_model(&mut dense)
-            .map_err(|e| fail(a, e.to_string()))?;
+            .map_err(|e| {
+                // The time the integrator stopped at, not the start of the segment.
+                use ode_solvers::dop_shared::IntegrationError as E;
+                let at = match e {
+                    E::MaxNumStepReached { x, .. }
+                    | E::StepSizeUnderflow { x }
+                    | E::StiffnessDetected { x } => x,
+                };
+                fail(at, e.to_string())
+            })?;
         stats.evaluations += st.num_eval;
         stats.accepted += st.accepted_steps;
         stats.rejected += st.rejected_steps;

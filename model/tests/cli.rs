@@ -103,10 +103,8 @@ fn bad_input_exits_2_with_a_message_naming_the_file_and_key() {
 }
 
 /// A file with `text` in a temporary folder.
-fn scratch(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("model-convert-cli-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
+fn scratch_file(name: &str, text: &str) -> PathBuf {
+    let path = scratch(&format!("convert-{name}")).join(name);
     std::fs::write(&path, text).unwrap();
     path
 }
@@ -126,7 +124,7 @@ fn convert_prints_a_dimensional_file_that_loads_as_the_same_aircraft() {
         text.contains("[derivatives]") && text.contains("[limits]"),
         "{text}"
     );
-    let converted = scratch("fighter-dimensional.toml", &text);
+    let converted = scratch_file("fighter-dimensional.toml", &text);
     let a = model::aircraft::load(std::path::Path::new(&src)).unwrap();
     let b = model::aircraft::load(&converted).unwrap();
     assert_eq!(a, b);
@@ -143,7 +141,7 @@ fn convert_refuses_dimensional_and_bad_files_with_exit_2() {
     );
 
     let text = std::fs::read_to_string(repo("aircraft/fighter.toml")).unwrap();
-    let bad = scratch(
+    let bad = scratch_file(
         "bad-mass.toml",
         &text.replacen("mass = 9300.0", "mass = -9300.0", 1),
     );
@@ -188,7 +186,7 @@ fn continue_reports_the_folds_of_fig_1_as_json_and_csv() {
     assert!(folds.iter().any(|p| (p - 1.706288).abs() < 1e-6));
     let text = std::fs::read_to_string(&csv).unwrap();
     assert!(
-        text.starts_with("branch,delta_a,alpha,beta,p,q,r,stable"),
+        text.starts_with("branch,delta_a_rad,alpha_rad,beta_rad,p_rad_s,q_rad_s,r_rad_s,stable"),
         "{}",
         &text[..60]
     );
@@ -363,4 +361,445 @@ fn degenerate_aircraft_give_errors_or_partial_reports_never_panics() {
     for d in [dir, dir2, dir3] {
         std::fs::remove_dir_all(d).unwrap();
     }
+}
+
+/// A fresh temporary folder for one test.
+fn scratch(tag: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("model-cli-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+#[cfg(unix)]
+#[test]
+fn stdout_write_errors_end_quietly_on_a_closed_pipe_and_loudly_otherwise() {
+    use std::process::Stdio;
+    // /dev/full: one line naming stdout and the OS error, exit 1, no panic.
+    let full = std::fs::File::create("/dev/full").unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_model"))
+        .args(["analyze", "A"])
+        .stdout(full)
+        .output()
+        .unwrap();
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("stdout") && err.contains("os error 28"),
+        "{err}"
+    );
+    assert!(!err.contains("panicked"), "{err}");
+    // A reader that has gone (`| head -1` after its line): quiet, exit 0.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_model"))
+        .args(["continue", "B", "--json"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert_eq!(stderr(&out), "");
+}
+
+#[cfg(unix)]
+#[test]
+fn csv_goes_into_devices_and_through_symlinks_and_failures_are_reported() {
+    let dir = scratch("csv-targets");
+    let sim = |csv: &str| {
+        model(&[
+            "simulate",
+            "A",
+            "--delta-a-deg",
+            "-5",
+            "--t-end",
+            "2",
+            "--csv",
+            csv,
+        ])
+    };
+    let out = sim("/dev/full");
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(stderr(&out).contains("/dev/full"), "{}", stderr(&out));
+    assert!(
+        !std::fs::metadata("/dev/full").unwrap().is_file(),
+        "device kept"
+    );
+    // /dev/stdout: the rows arrive on stdout, and /dev/stdout stays what it was.
+    let out = sim("/dev/stdout");
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(String::from_utf8_lossy(&out.stdout).starts_with("t_s,alpha_rad"));
+    assert!(std::fs::symlink_metadata("/dev/stdout")
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    // A symlink: its target gets the rows, the link stays a link.
+    let target = dir.join("target.csv");
+    let link = dir.join("link.csv");
+    std::os::unix::fs::symlink(&target, &link).unwrap();
+    let out = sim(link.to_str().unwrap());
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(std::fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert!(std::fs::read_to_string(&target)
+        .unwrap()
+        .starts_with("t_s,"));
+    // A directory in the way: named, exit 1.
+    let out = sim(dir.to_str().unwrap());
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("cannot write"), "{}", stderr(&out));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn plot_writes_what_it_can_names_each_failed_file_and_removes_stale_temporaries() {
+    let dir = scratch("plot-fail");
+    // A directory where a figure should go, and the temporary of a killed run (no such PID).
+    std::fs::create_dir_all(dir.join("fig07_det_k.png")).unwrap();
+    let stale = dir.join(".fig01_bifurcation.svg.tmp-4194305-0");
+    std::fs::write(&stale, "half a figure").unwrap();
+    // ... and of a file `plot` does not write (a killed `report`'s summary).
+    let stale_summary = dir.join(".summary.md.tmp-4194305-1");
+    std::fs::write(&stale_summary, "half a summary").unwrap();
+    let out = model(&["plot", "B", "--out", dir.to_str().unwrap()]);
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(err.contains("fig07_det_k.png"), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        !stale.exists() && !stale_summary.exists(),
+        "stale temporaries removed"
+    );
+    // The written files of the incomplete figure are announced like the others.
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("fig07_det_k.svg") && text.contains("fig07_det_k.csv"),
+        "{text}"
+    );
+    assert!(!text.contains("fig07_det_k.png"), "{text}");
+    for f in [
+        "fig01_bifurcation.svg",
+        "fig07_det_k.svg",
+        "fig07_det_k.csv",
+        "fig11_zero_sideslip_det_k.png",
+    ] {
+        assert!(dir.join(f).is_file(), "{f}");
+    }
+    let leftovers: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.contains(".tmp"))
+        .collect();
+    assert!(leftovers.is_empty(), "{leftovers:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn report_with_no_yaw_stiffness_is_bounded_by_the_aileron_range_and_says_what_it_skipped() {
+    // n_beta = 0 puts A's fold at delta_a = -110905 deg: the old report swept out to it.
+    let (dir, path) = variant("nbeta0", &[("n_beta = 3.716", "n_beta = 0.0")]);
+    let start = std::time::Instant::now();
+    let out = model(&[
+        "report",
+        path.to_str().unwrap(),
+        "--out",
+        dir.join("r").to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(start.elapsed().as_secs() < 120, "{:?}", start.elapsed());
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("skipped: simulated jump") && text.contains("aileron range"),
+        "{text}"
+    );
+    let md = std::fs::read_to_string(dir.join("r/summary.md")).unwrap();
+    assert!(
+        md.contains("beyond the aileron range of +-30.0 deg"),
+        "{md}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn answers_that_are_not_finite_or_cannot_be_told_apart_are_refused() {
+    let out = model(&["analyze", "A", "--delta-e-deg", "1e-300", "--json"]);
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    // Its two departure roots near P0 = 4.449 round to one f64 and its trims underflow.
+    let err = stderr(&out);
+    assert!(
+        err.contains("not a finite number") || err.contains("cannot be told apart in f64"),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty());
+    let dir = scratch("tiny-ix");
+    let c = std::fs::read_to_string(repo("aircraft/c.toml")).unwrap();
+    let ix = dir.join("ix.toml");
+    std::fs::write(&ix, c.replace("ix = 1.0", "ix = 1e-308")).unwrap();
+    let out = model(&["analyze", ix.to_str().unwrap()]);
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    assert!(!String::from_utf8_lossy(&out.stdout).contains("NaN"));
+    // m_alpha = -1e308: distinct exact poles (and jump roots) that round to one f64.
+    let (dir2, big) = variant("malpha", &[("m_alpha = -13.52504", "m_alpha = -1e308")]);
+    let out = model(&["analyze", big.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("cannot be told apart in f64"),
+        "{}",
+        stderr(&out)
+    );
+    for d in [dir, dir2] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
+}
+
+#[test]
+fn negative_values_are_accepted_and_judged_in_the_unit_typed() {
+    let out = model(&["simulate", "A", "--delta-a-deg", "-5", "--t-end", "-1"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    assert!(
+        err.contains("--t-end = -1") && err.contains("positive"),
+        "{err}"
+    );
+    let out = model(&["analyze", "A", "--delta-e-deg", "-inf"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("--delta-e-deg = -inf"),
+        "{}",
+        stderr(&out)
+    );
+    let out = model(&["analyze", "A", "--delta-e-deg", "1e9"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    assert!(
+        err.contains("1000000000") && err.contains("90 deg") && !err.contains("rad"),
+        "{err}"
+    );
+    // continue's range is in degrees, negative numbers welcome.
+    let v = json(&model(&[
+        "continue",
+        "A",
+        "--min-deg",
+        "-1e-300",
+        "--max-deg",
+        "10",
+        "--json",
+    ]));
+    let max = v["branches"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|b| b["points"].as_array().unwrap())
+        .map(|p| p["delta_a"].as_f64().unwrap())
+        .fold(f64::MIN, f64::max);
+    assert!(max <= 10f64.to_radians() + 1e-12, "{max}");
+    let out = model(&["continue", "A", "--min-deg", "5", "--max-deg", "-5"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(stderr(&out).contains("--min-deg = 5"), "{}", stderr(&out));
+}
+
+#[test]
+fn a_failed_integration_reports_the_time_it_failed() {
+    let out = model(&["simulate", "A", "--delta-a-deg", "-5", "--t-end", "1e5"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    let t: f64 = err
+        .split("failed at t = ")
+        .nth(1)
+        .and_then(|r| r.split(' ').next())
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("{err}"));
+    assert!(t > 20.0, "{err}");
+}
+
+#[test]
+fn names_are_escaped_and_unknown_names_get_the_built_ins() {
+    let (dir, path) = variant(
+        "ctrl",
+        &[(
+            "name = \"Aircraft A\"",
+            "name = \"Evil\\u001b[31m red\\u0007\"",
+        )],
+    );
+    let out = model(&["analyze", path.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(!out.stdout.contains(&0x1b) && !out.stdout.contains(&0x07));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("Evil\\u{1b}[31m red\\u{7}"));
+    let out = model(&["analyze", "C"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    assert!(
+        err.contains("A and B") && err.contains("aircraft/c.toml"),
+        "{err}"
+    );
+    let help = model(&["analyze", "--help"]);
+    assert!(
+        String::from_utf8_lossy(&help.stdout).contains("else the path of an aircraft TOML file")
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn no_colour_codes_when_not_on_a_terminal_even_in_ci() {
+    let out = Command::new(env!("CARGO_BIN_EXE_model"))
+        .args(["analyze", "A", "--no-such-option"])
+        .env("CI", "true")
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(!out.stderr.contains(&0x1b), "{}", stderr(&out));
+    let help = Command::new(env!("CARGO_BIN_EXE_model"))
+        .args(["report", "--help"])
+        .env("CI", "true")
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&help.stdout);
+    assert!(!help.stdout.contains(&0x1b));
+    assert!(
+        text.contains("summary.json") && text.contains("--out <DIR>"),
+        "{text}"
+    );
+}
+
+/// Every file under `dir`, relative, with its contents.
+fn tree(dir: &std::path::Path) -> std::collections::BTreeMap<PathBuf, Vec<u8>> {
+    let mut files = std::collections::BTreeMap::new();
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        for e in std::fs::read_dir(&d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                todo.push(p);
+            } else {
+                let rel = p.strip_prefix(dir).unwrap().to_path_buf();
+                files.insert(rel, std::fs::read(&p).unwrap());
+            }
+        }
+    }
+    files
+}
+
+#[test]
+fn emit_killed_at_random_points_leaves_all_old_or_all_new_and_the_next_run_cleans_up() {
+    let root = scratch("emit-kill");
+    let emit = |check: bool| {
+        let mut c = Command::new(env!("CARGO_BIN_EXE_model"));
+        c.args(["emit", "--root", root.to_str().unwrap()]);
+        if check {
+            c.arg("--check");
+        }
+        c
+    };
+    let start = std::time::Instant::now();
+    assert!(emit(false).output().unwrap().status.success());
+    let full_run = start.elapsed();
+    let new = tree(&root);
+    assert!(new.len() >= 5, "{:?}", new.keys());
+    let old: std::collections::BTreeMap<PathBuf, Vec<u8>> = new
+        .iter()
+        .map(|(p, c)| (p.clone(), [c.as_slice(), b"\n// old\n"].concat()))
+        .collect();
+    // Pseudo-random delays (xorshift, seed printed): half over the whole run, half over its
+    // last fifth, where the files are written.
+    let mut seed = u64::from(std::process::id()).wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+    println!("seed {seed}, full run {full_run:?}");
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % 10_000) as f64 / 10_000.0
+    };
+    let (mut all_old, mut all_new) = (0, 0);
+    let runs = 24;
+    for i in 0..runs {
+        for (p, c) in &old {
+            std::fs::write(root.join(p), c).unwrap();
+        }
+        let u = next();
+        let frac = if i % 2 == 0 { 1.2 * u } else { 0.8 + 0.3 * u };
+        let mut child = emit(false)
+            .stdout(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(full_run.mul_f64(frac));
+        let _ = child.kill();
+        let _ = child.wait();
+        // Right after the kill: old, new, or committed (journal present, finished next run).
+        let now = tree(&root);
+        let visible: std::collections::BTreeMap<_, _> = now
+            .iter()
+            .filter(|(p, _)| {
+                !p.to_string_lossy().contains(".tmp-") && !p.ends_with(".emit-journal")
+            })
+            .map(|(p, c)| (p.clone(), c.clone()))
+            .collect();
+        let committed = now.keys().any(|p| p.ends_with(".emit-journal"));
+        assert!(
+            visible == old || visible == new || committed,
+            "run {i}: a mix of old and new files without a journal"
+        );
+        // The next run (`emit --check`) finishes or discards what the killed one left.
+        let _ = emit(true).output().unwrap();
+        let after = tree(&root);
+        assert!(
+            after
+                .keys()
+                .all(|p| !p.to_string_lossy().contains(".tmp-") && !p.ends_with(".emit-journal")),
+            "run {i}: leftovers {:?}",
+            after.keys().collect::<Vec<_>>()
+        );
+        if after == old {
+            all_old += 1;
+        } else if after == new {
+            all_new += 1;
+        } else {
+            panic!("run {i} (killed at {frac:.2} of a run): neither all old nor all new");
+        }
+    }
+    println!("{runs} killed runs: {all_old} left every old file, {all_new} every new file");
+    std::fs::remove_dir_all(&root).unwrap();
+}
+
+/// The fenced block of `lang` that follows `after` in the README.
+fn readme_block(after: &str, lang: &str) -> String {
+    let readme = std::fs::read_to_string(repo("README.md")).unwrap();
+    let rest = &readme[readme.find(after).unwrap_or_else(|| panic!("{after}")) + after.len()..];
+    let fence = format!("```{lang}\n");
+    let start = rest.find(&fence).unwrap() + fence.len();
+    let end = start + rest[start..].find("```").unwrap();
+    rest[start..end].to_string()
+}
+
+#[test]
+fn readme_shows_the_real_output_of_the_main_job() {
+    let text = model(&["analyze", "A"]);
+    assert_eq!(
+        readme_block(
+            "cargo run --release -p model -- analyze A\n```\n\nprints",
+            "text"
+        ),
+        String::from_utf8_lossy(&text.stdout)
+    );
+    let json = model(&["analyze", "A", "--json"]);
+    assert_eq!(
+        readme_block("`analyze A --json` prints", "json"),
+        String::from_utf8_lossy(&json.stdout)
+    );
 }

@@ -614,7 +614,7 @@ fn json_has_the_parameter_as_key_and_csv_one_row_per_point() {
     assert_eq!(csv.lines().count(), n + 1);
     assert_eq!(
         csv.lines().next().unwrap(),
-        "branch,delta_a,alpha,beta,p,q,r,stable"
+        "branch,delta_a_rad,alpha_rad,beta_rad,p_rad_s,q_rad_s,r_rad_s,stable"
     );
     // delta_e diagrams use their own key.
     let s = Settings {

@@ -4,7 +4,7 @@
 //! The compile test typesets `model::emit::latex::document()` in a temporary directory (never
 //! the committed file, which `emit` writes) with `pdflatex`. Without `pdflatex` on PATH it
 //! fails when the environment variable `CI` is set (CI installs texlive-latex-base) and is
-//! skipped with a notice otherwise.
+//! skipped otherwise, with a notice that the test runner prints even without --nocapture.
 
 use model::emit::latex::{document, parse, printed, TAGS};
 use std::path::PathBuf;
@@ -153,7 +153,12 @@ fn document_compiles_with_pdflatex() {
             std::env::var_os("CI").is_none(),
             "pdflatex is not on PATH but CI is set: install texlive-latex-base"
         );
-        eprintln!(
+        // Through the stderr handle, not `eprintln!`: the test harness captures the macros
+        // (shown only on failure or with --nocapture) but not the handle, so the runner's
+        // output carries this line.
+        use std::io::Write;
+        let _ = writeln!(
+            std::io::stderr(),
             "SKIPPED document_compiles_with_pdflatex: pdflatex not on PATH \
              (apt-get install texlive-latex-base); set CI=1 to make this a failure"
         );

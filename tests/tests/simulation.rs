@@ -377,7 +377,12 @@ fn check_xml(text: &str) -> String {
 }
 
 fn check_files(files: &[PathBuf], style: &PlotStyle) {
-    assert_eq!(files.len(), 2, "{files:?}");
+    assert_eq!(files.len(), 3, "{files:?}");
+    // The plotted data beside the figure (model/src/plot/render.rs checks it point by point).
+    assert!(files[2].extension().unwrap() == "csv");
+    let csv = std::fs::read_to_string(&files[2]).unwrap();
+    assert!(csv.starts_with("panel,panel_title,series,kind,label,x_axis,y_axis,x,y\n"));
+    assert!(csv.lines().count() > 10);
     let svg = std::fs::read_to_string(&files[0]).unwrap();
     assert!(files[0].extension().unwrap() == "svg");
     let root = check_xml(&svg);
@@ -476,7 +481,7 @@ fn every_figure_is_written_as_valid_svg_and_png_and_is_deterministic() {
         embed_font: true,
     };
     let r = plot::det_k(&dir.join("small"), &det_k, &small).unwrap();
-    assert_eq!(r.files.len(), 1);
+    assert_eq!(r.files.len(), 2, "the SVG and the CSV of its data");
     let svg = std::fs::read_to_string(&r.files[0]).unwrap();
     assert!(check_xml(&svg).contains("width=\"640\""));
     assert!(svg.contains(
@@ -642,4 +647,21 @@ fn plotted_series_are_the_library_numbers() {
         Some("\u{3b4}a = \u{2212}5 deg")
     );
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_sweep_past_its_run_limit_is_refused_before_any_run() {
+    // n_beta = 0 once asked for 887k runs; the limit refuses such a grid at once.
+    let sim = Simulator::new(&model::aircraft::Aircraft::a(), 2f64.to_radians()).unwrap();
+    let s = SweepSettings::new(
+        Model::Pss,
+        -1e4f64.to_radians() * 10.0,
+        0.01f64.to_radians(),
+    );
+    let start = std::time::Instant::now();
+    assert!(matches!(
+        jump_sweep(&sim, &s),
+        Err(SimError::TooManyRuns(_))
+    ));
+    assert!(start.elapsed().as_secs() < 5);
 }

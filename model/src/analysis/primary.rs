@@ -75,9 +75,14 @@ pub enum Outcome {
 
 /// Follows the primary branch from `(0, 0)` and returns how it ends.
 ///
-/// `g` is the trim condition, `det_a` the trim's denominator, `jumps` the exact jump roots as
+/// `g` is the trim condition, `det_a` the trim's denominator (scaled for f64 evaluation), `jumps` the exact jump roots as
 /// `(p0, delta_a)` (in any order), `max_abs_delta_a` the aileron bound in rad.
-pub fn follow(g: &InAileron, det_a: &UPoly, jumps: &[(f64, f64)], max_abs_delta_a: f64) -> Outcome {
+pub fn follow(
+    g: &InAileron,
+    det_a: &InAileron,
+    jumps: &[(f64, f64)],
+    max_abs_delta_a: f64,
+) -> Outcome {
     const MAX_STEP: f64 = 1e-3;
     const MAX_STEPS: usize = 2_000_000;
     let nearest = |roots: &[f64], target: f64| -> Option<f64> {
@@ -95,7 +100,7 @@ pub fn follow(g: &InAileron, det_a: &UPoly, jumps: &[(f64, f64)], max_abs_delta_
         );
     }
     let (mut p, mut dir, mut slope) = (0.0f64, 1.0f64, 0.0f64);
-    let sign_det_a = det_a.eval_f64(0.0).signum();
+    let sign_det_a = det_a.eval(0.0, 0.0).signum();
     for _ in 0..MAX_STEPS {
         let h = MAX_STEP.min(MAX_STEP / slope.abs().max(1e-300)).max(1e-10);
         let p_new = p + dir * h;
@@ -119,7 +124,7 @@ pub fn follow(g: &InAileron, det_a: &UPoly, jumps: &[(f64, f64)], max_abs_delta_
                 None => return Outcome::Lost("the equilibrium curve ends"),
             }
         };
-        if det_a.eval_f64(p_new).signum() != sign_det_a {
+        if det_a.eval(p_new, 0.0).signum() != sign_det_a {
             return Outcome::Divergence(p_new);
         }
         // A jump root between p and p_new whose aileron is this branch's.

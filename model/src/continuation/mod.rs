@@ -782,10 +782,14 @@ impl Serialize for Diagram {
 }
 
 impl Diagram {
-    /// One row per point: `branch,<parameter>,alpha,beta,p,q,r,stable` (a header first; values
-    /// in rad and rad/s, shortest round-trip decimals, `stable` as 1 or 0).
+    /// One row per point under the header
+    /// `branch,<parameter>_rad,alpha_rad,beta_rad,p_rad_s,q_rad_s,r_rad_s,stable` (units in
+    /// the names; shortest round-trip decimals, `stable` as 1 or 0).
     pub fn to_csv(&self) -> String {
-        let mut s = format!("branch,{},alpha,beta,p,q,r,stable\n", self.parameter);
+        let mut s = format!(
+            "branch,{}_rad,alpha_rad,beta_rad,p_rad_s,q_rad_s,r_rad_s,stable\n",
+            self.parameter
+        );
         for (i, b) in self.branches.iter().enumerate() {
             for p in &b.points {
                 s += &format!(

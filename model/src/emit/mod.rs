@@ -370,22 +370,30 @@ pub fn stale(root: &Path, outputs: &[Output]) -> Vec<PathBuf> {
         .collect()
 }
 
-/// Writes every output atomically (temp file in the same directory, then rename); unchanged
-/// files are not touched. Returns the files written.
+/// The journal of an interrupted [`write()`] under the workspace root (see
+/// [`crate::files::replace_all`]).
+pub const JOURNAL: &str = ".emit-journal";
+
+/// Writes every changed output, all at once or not at all ([`crate::files::replace_all`]:
+/// each file staged to a temporary name, then renamed); unchanged files are not touched.
+/// Returns the files written.
 pub fn write(root: &Path, outputs: &[Output]) -> Result<Vec<PathBuf>, EmitError> {
-    let mut written = Vec::new();
-    for o in outputs {
-        let path = root.join(&o.path);
-        if std::fs::read_to_string(&path).is_ok_and(|s| s == o.contents) {
-            continue;
-        }
-        crate::files::write_atomic(&path, o.contents.as_bytes()).map_err(|source| {
-            EmitError::Io {
-                path: path.clone(),
-                source,
-            }
-        })?;
-        written.push(o.path.clone());
-    }
-    Ok(written)
+    let io = |source| EmitError::Io {
+        path: root.to_path_buf(),
+        source,
+    };
+    tidy(root, outputs).map_err(io)?;
+    let changed: Vec<(PathBuf, &[u8])> = outputs
+        .iter()
+        .filter(|o| std::fs::read_to_string(root.join(&o.path)).map_or(true, |s| s != o.contents))
+        .map(|o| (o.path.clone(), o.contents.as_bytes()))
+        .collect();
+    crate::files::replace_all(root, JOURNAL, &changed).map_err(io)?;
+    Ok(changed.into_iter().map(|(p, _)| p).collect())
+}
+
+/// Finishes an emit that was killed after staging every file and removes the temporary files
+/// of killed runs (run first by [`write()`] and by `emit --check`).
+pub fn tidy(root: &Path, outputs: &[Output]) -> std::io::Result<()> {
+    crate::files::recover(root, JOURNAL, outputs.iter().map(|o| o.path.as_path()))
 }

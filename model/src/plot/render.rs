@@ -1,5 +1,5 @@
 //! Draws a [`Figure`] (any of Figs 1-11) with plotters to SVG and PNG, written atomically
-//! (temporary file in the target directory, then rename).
+//! (temporary file in the target directory, then rename), with its plotted series as CSV.
 //!
 //! Text: the PNG rasteriser (ab_glyph) uses DejaVu Sans embedded from `model/assets/`, so no
 //! system font is needed and the output is the same bytes on every machine. The SVG names the
@@ -85,20 +85,6 @@ pub(crate) fn with_ext(stem: &Path, ext: &str) -> PathBuf {
     PathBuf::from(s)
 }
 
-/// A temporary path next to `target`, ending in `.<ext>` (the PNG encoder picks the format
-/// from the extension).
-fn temp_path(target: &Path, ext: &str) -> PathBuf {
-    use std::sync::atomic::{AtomicU64, Ordering};
-    static COUNTER: AtomicU64 = AtomicU64::new(0);
-    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-    let name = target
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = format!(".{name}.{}-{n}.tmp.{ext}", std::process::id());
-    target.with_file_name(tmp)
-}
-
 fn io_err(path: &Path, e: std::io::Error) -> PlotError {
     PlotError::Io {
         path: path.to_path_buf(),
@@ -106,7 +92,9 @@ fn io_err(path: &Path, e: std::io::Error) -> PlotError {
     }
 }
 
-/// Renders `fig` to `<stem>.svg` and/or `<stem>.png`; returns the files written.
+/// Renders `fig` to `<stem>.svg` and/or `<stem>.png`, with the plotted series in `<stem>.csv`
+/// ([`Figure::to_csv`]); returns the files written. Every file that can be written is; if any
+/// cannot, the error is [`PlotError::Files`], naming each failed file and why.
 pub(crate) fn render(
     stem: &Path,
     fig: &Figure,
@@ -128,37 +116,52 @@ pub(crate) fn render(
             });
         }
     }
-    let mut files = Vec::new();
+    let mut written = Vec::new();
+    let mut failed = Vec::new();
+    let mut outcome = |target: PathBuf, r: Result<(), PlotError>| match r {
+        Ok(()) => written.push(target),
+        Err(e) => failed.push((target, e.to_string())),
+    };
     if style.svg {
         let target = with_ext(stem, "svg");
-        let mut svg = String::new();
-        {
-            let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
-            draw(&root, fig)?;
-            root.present().map_err(draw_err)?;
-        }
-        let svg = finish_svg(&svg, style.embed_font);
-        crate::files::write_atomic(&target, svg.as_bytes()).map_err(|e| io_err(&target, e))?;
-        files.push(target);
+        let r = (|| {
+            let mut svg = String::new();
+            {
+                let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
+                draw(&root, fig)?;
+                root.present().map_err(draw_err)?;
+            }
+            let svg = finish_svg(&svg, style.embed_font);
+            crate::files::write_atomic(&target, svg.as_bytes()).map_err(|e| io_err(&target, e))
+        })();
+        outcome(target, r);
     }
     if style.png {
         let target = with_ext(stem, "png");
         // plotters' bitmap backend writes to a path itself: draw to a temporary name, rename.
-        let tmp = temp_path(&target, "png");
-        let result = (|| {
+        crate::files::remove_stale_temporaries(&target);
+        let tmp = crate::files::temp_path(&target, ".png");
+        let r = (|| {
             let root = BitMapBackend::new(&tmp, (w, h)).into_drawing_area();
             draw(&root, fig)?;
             root.present().map_err(draw_err)?;
             drop(root);
             std::fs::rename(&tmp, &target).map_err(|e| io_err(&target, e))
         })();
-        if let Err(e) = result {
+        if r.is_err() {
             let _ = std::fs::remove_file(&tmp);
-            return Err(e);
         }
-        files.push(target);
+        outcome(target, r);
     }
-    Ok(files)
+    let target = with_ext(stem, "csv");
+    let r = crate::files::write_atomic(&target, fig.to_csv().as_bytes())
+        .map_err(|e| io_err(&target, e));
+    outcome(target, r);
+    if failed.is_empty() {
+        Ok(written)
+    } else {
+        Err(PlotError::Files { written, failed })
+    }
 }
 
 /// Names the font family in the SVG text elements and, if asked, embeds the font.
@@ -535,5 +538,90 @@ mod tests {
             finish_svg(svg, false),
             "<svg width=\"10\" height=\"10\"><text font-family=\"DejaVu Sans, sans-serif\">x</text></svg>"
         );
+    }
+
+    fn det_k_of_a(dir: &Path) -> (PathBuf, super::super::Rendered) {
+        let _ = std::fs::remove_dir_all(dir);
+        std::fs::create_dir_all(dir).unwrap();
+        let data = crate::plot::closed_form::det_k_curve(
+            &crate::aircraft::Aircraft::a(),
+            2f64.to_radians(),
+        )
+        .unwrap();
+        let stem = dir.join("fig07_det_k");
+        let r = crate::plot::det_k(&stem, &data, &PlotStyle::default()).unwrap();
+        (stem, r)
+    }
+
+    #[test]
+    fn the_csv_beside_a_figure_holds_exactly_the_series_drawn() {
+        let dir = std::env::temp_dir().join(format!("render-csv-{}", std::process::id()));
+        let (stem, r) = det_k_of_a(&dir);
+        assert_eq!(r.files.len(), 3, "{:?}", r.files);
+        let text = std::fs::read_to_string(with_ext(&stem, "csv")).unwrap();
+        let mut rows = text.lines();
+        assert_eq!(
+            rows.next(),
+            Some("panel,panel_title,series,kind,label,x_axis,y_axis,x,y")
+        );
+        // The drawn series, point by point, from the figure the SVG and PNG were drawn from.
+        let mut drawn: Vec<(usize, &str, usize, f64, f64)> = Vec::new();
+        for (i, p) in r.figure.panels.iter().enumerate() {
+            for (k, l) in p.lines.iter().enumerate() {
+                drawn.extend(l.points.iter().map(|(x, y)| (i + 1, "line", k + 1, *x, *y)));
+            }
+            for (k, m) in p.markers.iter().enumerate() {
+                drawn.push((i + 1, "marker", k + 1, m.x, m.y));
+            }
+        }
+        let parsed: Vec<(usize, String, usize, f64, f64)> = rows
+            .map(|row| {
+                // The last two fields are numbers; the first and third too; labels may be quoted.
+                let f: Vec<&str> = row.rsplitn(3, ',').collect();
+                let head: Vec<&str> = f[2].splitn(4, ',').collect();
+                (
+                    head[0].parse().unwrap(),
+                    head[3].split(',').next().unwrap().to_string(),
+                    head[2].parse().unwrap(),
+                    f[1].parse().unwrap(),
+                    f[0].parse().unwrap(),
+                )
+            })
+            .collect();
+        assert!(drawn.len() > 100, "{}", drawn.len());
+        assert_eq!(parsed.len(), drawn.len());
+        for (a, b) in parsed.iter().zip(&drawn) {
+            assert_eq!((a.0, a.1.as_str(), a.2), (b.0, b.1, b.2));
+            assert_eq!(
+                (a.3.to_bits(), a.4.to_bits()),
+                (b.3.to_bits(), b.4.to_bits())
+            );
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_file_that_cannot_be_written_is_named_and_the_others_are_written() {
+        let dir = std::env::temp_dir().join(format!("render-fail-{}", std::process::id()));
+        let (stem, _) = det_k_of_a(&dir);
+        let png = with_ext(&stem, "png");
+        std::fs::remove_file(&png).unwrap();
+        std::fs::create_dir(&png).unwrap();
+        let data = crate::plot::closed_form::det_k_curve(
+            &crate::aircraft::Aircraft::a(),
+            2f64.to_radians(),
+        )
+        .unwrap();
+        match crate::plot::det_k(&stem, &data, &PlotStyle::default()) {
+            Err(PlotError::Files { written, failed }) => {
+                assert_eq!(written, [with_ext(&stem, "svg"), with_ext(&stem, "csv")]);
+                assert_eq!(failed.len(), 1);
+                assert_eq!(failed[0].0, png);
+            }
+            other => panic!("{other:?}"),
+        }
+        let left: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+        assert_eq!(left.len(), 3, "no temporary left behind");
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

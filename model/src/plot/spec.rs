@@ -235,6 +235,51 @@ pub struct Figure {
     pub note: String,
 }
 
+impl Figure {
+    /// The plotted data as CSV, one row per point in drawing order, for replotting in other
+    /// tools: `panel` (number, from 1) and `panel_title`, `series` (line or marker number
+    /// within the panel, from 1), `kind` (`line` or `marker`), `label` (legend entry or marker
+    /// text, may be empty), `x_axis` and `y_axis` (the axis labels, with their units), `x`,
+    /// `y` (plot units, after clipping: exactly what was drawn).
+    pub fn to_csv(&self) -> String {
+        use std::fmt::Write;
+        let mut s = String::from("panel,panel_title,series,kind,label,x_axis,y_axis,x,y\n");
+        for (i, p) in self.panels.iter().enumerate() {
+            let head = |k: usize, kind: &str, label: &str| {
+                format!(
+                    "{},{},{},{kind},{},{},{}",
+                    i + 1,
+                    csv_field(&p.title),
+                    k + 1,
+                    csv_field(label),
+                    csv_field(&p.x.label),
+                    csv_field(&p.y.label)
+                )
+            };
+            for (k, l) in p.lines.iter().enumerate() {
+                let h = head(k, "line", l.label.as_deref().unwrap_or(""));
+                for (x, y) in &l.points {
+                    let _ = writeln!(s, "{h},{x},{y}");
+                }
+            }
+            for (k, m) in p.markers.iter().enumerate() {
+                let label = m.text.as_deref().or(m.label.as_deref()).unwrap_or("");
+                let _ = writeln!(s, "{},{},{}", head(k, "marker", label), m.x, m.y);
+            }
+        }
+        s
+    }
+}
+
+/// A CSV field, quoted when it holds a comma, quote or line break (RFC 4180).
+fn csv_field(v: &str) -> String {
+    if v.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", v.replace('"', "\"\""))
+    } else {
+        v.to_string()
+    }
+}
+
 impl Panel {
     /// Every point of every line, in drawing order.
     pub fn points(&self) -> impl Iterator<Item = &(f64, f64)> {

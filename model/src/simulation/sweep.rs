@@ -116,6 +116,9 @@ pub fn jump_sweep_with_progress(
             });
         }
     }
+    if s.delta_a.len() > super::MAX_SWEEP_RUNS {
+        return Err(SimError::TooManyRuns(s.delta_a.len()));
+    }
     if !(s.refine_tol.is_finite() && s.refine_tol >= 0.0) {
         return Err(SimError::NotPositive {
             name: "refine_tol",

@@ -6,7 +6,7 @@
 // Operation counts after common-subexpression elimination (parametric; the functions of
 // each built-in aircraft are counted in its section):
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  38      79       3       1       1     122
+//   trim                                  42      84       4       2       1     133
 //   zero_sideslip_trim                     9      21       2       1       0      33
 //   jacobian5                              2       6       0       4       0      12
 //   residual_denominator                  41      83       3       0       1     128
@@ -81,7 +81,7 @@ struct rc_derivatives {
     double l_delta_r;
 };
 
-/// Pseudo-steady trim of the unconstrained roll at roll rate P0 (Eqs 3-4 and the roll equation).
+/// A pseudo-steady trim of the unconstrained roll at roll rate P0 (Eqs 3-4 and the roll equation); `trim` returns one per trim branch.
 struct rc_Trim {
     /// Angle of attack alpha_0, rad.
     double alpha;
@@ -93,6 +93,11 @@ struct rc_Trim {
     double r;
     /// Aileron deflection holding the trim, rad.
     double delta_a;
+};
+
+/// `[Trim; 2]` of the Rust crate: C cannot return an array.
+struct rc_Trim_array2 {
+    struct rc_Trim v[2];
 };
 
 /// Trim of the zero-sideslip roll at roll rate P0 (Eqs 32-35): beta = 0, rudder freed.
@@ -139,23 +144,25 @@ struct rc_matrix5x5 {
     double m[5][5];
 };
 
-/// Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
+/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
 /// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
 /// equation), and the aileron from the roll equation, a quadratic in delta_a
-/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). This is the trim
-/// branch that continues the trim without aileron yaw (the root that tends to `-g0/g1`);
-/// NaN where the two trims of `p0` are complex. Angles in rad, rates in rad/s.
-/// Non-finite where det A = 0 (the divergence roll rates).
+/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the
+/// trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),
+/// element 1 the other root; both by the cancellation-free quadratic formula. NaN where
+/// the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw
+/// (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the
+/// divergence roll rates). The other functions of `p0` use element 0.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 38 add/sub, 79 mul, 3 div, 1 neg, 1 libm (122 operations); straight-line, no branches.
+/// Cost after CSE: 42 add/sub, 84 mul, 4 div, 2 neg, 1 libm (133 operations); straight-line, no branches.
 /// Rust: `roll_criterion::trim`, bit-identical.
-ROLL_CRITERION_API struct rc_Trim rc_trim(const struct rc_derivatives *k, double p0, double delta_e,
-    double delta_r)
+ROLL_CRITERION_API struct rc_Trim_array2 rc_trim(const struct rc_derivatives *k, double p0,
+    double delta_e, double delta_r)
 {
     const double t0 = p0 * k->c;
     const double t1 = p0 * k->d;
@@ -175,25 +182,34 @@ ROLL_CRITERION_API struct rc_Trim rc_trim(const struct rc_derivatives *k, double
     const double t15 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
         k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
         k->n_beta));
-    const double t16 = (t2 * (k->z_alpha * t1 + t10) + t3 * t12) * t15;
-    const double t17 = (t3 * t13 - t2 * (k->z_alpha * t6 + p0 * t10)) * t15;
-    const double t18 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
+    const double t16 = (t2 * (t5 - t6) + t3 * t9) * t15;
+    const double t17 = (t2 * (k->z_alpha * t1 + t10) + t3 * t12) * t15;
+    const double t18 = (t3 * t13 - t2 * (k->z_alpha * t6 + p0 * t10)) * t15;
+    const double t19 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
         t14) * t15;
-    const double t19 = t15 * (k->n_delta_a * t12);
-    const double t20 = t15 * (k->n_delta_a * t13);
-    const double t21 = t15 * (k->n_delta_a * t14);
-    const double t22 = k->l_r - k->e * t17;
-    const double t23 = t18 * t22 + (delta_r * k->l_delta_r - k->l_beta * t16 + p0 * k->l_p);
-    const double t24 = k->e * 0.5 * (t20 * t21);
-    const double t25 = k->l_delta_a - k->l_beta * t19 - t20 * (k->e * t18) - t21 * t22;
-    const double t26 = t23 * 2.0 / (t25 * (1.0 + sqrt(1.0 - t23 * (t24 + t24) / (t25 * t25) *
-        4.0)));
-    struct rc_Trim result;
-    result.alpha = t15 * (k->n_delta_a * t9) * t26 - (t2 * (t5 - t6) + t3 * t9) * t15;
-    result.beta = t19 * t26 - t16;
-    result.q = t17 - t20 * t26;
-    result.r = t18 + t21 * t26;
-    result.delta_a = -t26;
+    const double t20 = t15 * (k->n_delta_a * t9);
+    const double t21 = t15 * (k->n_delta_a * t12);
+    const double t22 = t15 * (k->n_delta_a * t13);
+    const double t23 = t15 * (k->n_delta_a * t14);
+    const double t24 = k->l_r - k->e * t18;
+    const double t25 = t19 * t24 + (delta_r * k->l_delta_r - k->l_beta * t17 + p0 * k->l_p);
+    const double t26 = k->e * 0.5 * (t22 * t23);
+    const double t27 = k->l_delta_a - k->l_beta * t21 - t22 * (k->e * t19) - t23 * t24;
+    const double t28 = t26 + t26;
+    const double t29 = t27 * (1.0 + sqrt(1.0 - t25 * t28 / (t27 * t27) * 4.0));
+    const double t30 = t25 * 2.0 / t29;
+    const double t31 = t29 / (t28 * 2.0);
+    struct rc_Trim_array2 result;
+    result.v[0].alpha = t20 * t30 - t16;
+    result.v[0].beta = t21 * t30 - t17;
+    result.v[0].q = t18 - t22 * t30;
+    result.v[0].r = t19 + t23 * t30;
+    result.v[0].delta_a = -t30;
+    result.v[1].alpha = t20 * t31 - t16;
+    result.v[1].beta = t21 * t31 - t17;
+    result.v[1].q = t18 - t22 * t31;
+    result.v[1].r = t19 + t23 * t31;
+    result.v[1].delta_a = -t31;
     return result;
 }
 
@@ -894,7 +910,7 @@ ROLL_CRITERION_API struct rc_array9 rc_zero_sideslip_jump_polynomial(const struc
 // Aircraft A: every constant folded exactly, then rounded once to double.
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  25      42       2       1       0      70
+//   trim                                  25      42       3       2       0      72
 //   zero_sideslip_trim                     5      14       2       4       0      25
 //   jacobian5                              1       6       0       5       0      12
 //   residual_denominator                  25      41       1       0       0      67
@@ -929,22 +945,25 @@ static const struct rc_derivatives rc_aircraft_a_derivatives = {
     0.0, // l_delta_r
 };
 
-/// Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
+/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
 /// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
 /// equation), and the aileron from the roll equation, a quadratic in delta_a
-/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). This is the trim
-/// branch that continues the trim without aileron yaw (the root that tends to `-g0/g1`);
-/// NaN where the two trims of `p0` are complex. Angles in rad, rates in rad/s.
-/// Non-finite where det A = 0 (the divergence roll rates).
+/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the
+/// trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),
+/// element 1 the other root; both by the cancellation-free quadratic formula. NaN where
+/// the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw
+/// (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the
+/// divergence roll rates). The other functions of `p0` use element 0.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 42 mul, 2 div, 1 neg, 0 libm (70 operations); straight-line, no branches.
+/// Cost after CSE: 25 add/sub, 42 mul, 3 div, 2 neg, 0 libm (72 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::trim`, bit-identical.
-ROLL_CRITERION_API struct rc_Trim rc_aircraft_a_trim(double p0, double delta_e, double delta_r)
+ROLL_CRITERION_API struct rc_Trim_array2 rc_aircraft_a_trim(double p0, double delta_e,
+    double delta_r)
 {
     const double t0 = p0 * 0.959;
     const double t1 = p0 * 0.786;
@@ -957,17 +976,23 @@ ROLL_CRITERION_API struct rc_Trim rc_aircraft_a_trim(double p0, double delta_e, 
     const double t8 = p0 * t0 - 13.52504;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
         (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
-    const double t10 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
-    const double t11 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9;
-    const double t12 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232) - t2 * (p0 * 3.716 -
+    const double t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
+    const double t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
+    const double t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9;
+    const double t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232) - t2 * (p0 * 3.716 -
         (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
-    struct rc_Trim result;
-    result.alpha = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
-    result.beta = t10;
-    result.q = t11;
-    result.r = t12;
-    result.delta_a = -((t12 * (1.5207 - t11 * 0.705) - (t10 * 110.45 + p0 * 21.7529)) * 2.0 /
+    struct rc_Trim_array2 result;
+    result.v[0].alpha = t10;
+    result.v[0].beta = t11;
+    result.v[0].q = t12;
+    result.v[0].r = t13;
+    result.v[0].delta_a = -((t13 * (1.5207 - t12 * 0.705) - (t11 * 110.45 + p0 * 21.7529)) * 2.0 /
         (-654.56));
+    result.v[1].alpha = t10;
+    result.v[1].beta = t11;
+    result.v[1].q = t12;
+    result.v[1].r = t13;
+    result.v[1].delta_a = -(-654.56 / 0.0);
     return result;
 }
 
@@ -1453,7 +1478,7 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_a_zero_sideslip_jump_polynomial(
 // Aircraft B: every constant folded exactly, then rounded once to double.
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  25      42       2       1       0      70
+//   trim                                  25      42       3       2       0      72
 //   zero_sideslip_trim                     5      14       2       4       0      25
 //   jacobian5                              1       6       0       5       0      12
 //   residual_denominator                  25      41       1       0       0      67
@@ -1488,22 +1513,25 @@ static const struct rc_derivatives rc_aircraft_b_derivatives = {
     0.0, // l_delta_r
 };
 
-/// Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
+/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
 /// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
 /// equation), and the aileron from the roll equation, a quadratic in delta_a
-/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). This is the trim
-/// branch that continues the trim without aileron yaw (the root that tends to `-g0/g1`);
-/// NaN where the two trims of `p0` are complex. Angles in rad, rates in rad/s.
-/// Non-finite where det A = 0 (the divergence roll rates).
+/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the
+/// trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),
+/// element 1 the other root; both by the cancellation-free quadratic formula. NaN where
+/// the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw
+/// (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the
+/// divergence roll rates). The other functions of `p0` use element 0.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 42 mul, 2 div, 1 neg, 0 libm (70 operations); straight-line, no branches.
+/// Cost after CSE: 25 add/sub, 42 mul, 3 div, 2 neg, 0 libm (72 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::trim`, bit-identical.
-ROLL_CRITERION_API struct rc_Trim rc_aircraft_b_trim(double p0, double delta_e, double delta_r)
+ROLL_CRITERION_API struct rc_Trim_array2 rc_aircraft_b_trim(double p0, double delta_e,
+    double delta_r)
 {
     const double t0 = p0 * 0.949;
     const double t1 = p0 * 0.716;
@@ -1516,16 +1544,23 @@ ROLL_CRITERION_API struct rc_Trim rc_aircraft_b_trim(double p0, double delta_e, 
     const double t8 = p0 * t0 - 23.18;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 +
         (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
-    const double t10 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
-    const double t11 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    const double t12 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328) - t2 * (p0 * 5.67 - (1.329 *
+    const double t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
+    const double t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
+    const double t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
+    const double t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328) - t2 * (p0 * 5.67 - (1.329 *
         (t1 * 0.196) + p0 * t4))) * t9;
-    struct rc_Trim result;
-    result.alpha = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
-    result.beta = t10;
-    result.q = t11;
-    result.r = t12;
-    result.delta_a = -((t12 * (0.126 - t11 * 0.727) - (t10 * 9.99 + p0 * 3.933)) * 2.0 / (-91.66));
+    struct rc_Trim_array2 result;
+    result.v[0].alpha = t10;
+    result.v[0].beta = t11;
+    result.v[0].q = t12;
+    result.v[0].r = t13;
+    result.v[0].delta_a = -((t13 * (0.126 - t12 * 0.727) - (t11 * 9.99 + p0 * 3.933)) * 2.0 /
+        (-91.66));
+    result.v[1].alpha = t10;
+    result.v[1].beta = t11;
+    result.v[1].q = t12;
+    result.v[1].r = t13;
+    result.v[1].delta_a = -(-91.66 / 0.0);
     return result;
 }
 

@@ -7,7 +7,7 @@
 // It prints the number of checks and exits 1 on any failure.
 // `./a.out --bits FILE` reads records "<aircraft index> <hex bits of each column>",
 // columns alpha, beta, delta_e, delta_r, p, p0, q, r,
-// and writes the 140 results of each record as doubles in host byte order: the C half
+// and writes the 150 results of each record as doubles in host byte order: the C half
 // of the workspace's bit-identity check (tests/tests/c_header.rs).
 
 #include "roll_criterion.h"
@@ -44,11 +44,11 @@ static void check(const char *call, const double *got, const double *want, const
 static void self_test_aircraft_a(void)
 {
     {
-        static const double want[5] = {-0.06082818036915503, -0.02258882623335746, -0.19424124839494938, -0.02915363368075617, -0.02575727320397208};
-        static const double tol[5] = {1.761815061420508e-16, 6.90858714915448e-17, 5.985219356898572e-16, 8.647135528875793e-17, 1.0721286381571113e-16};
-        const struct rc_Trim r = rc_trim(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
-        const double got[5] = {r.alpha, r.beta, r.q, r.r, r.delta_a};
-        check("rc_trim(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 5);
+        static const double want[10] = {-0.06082818036915503, -0.02258882623335746, -0.19424124839494938, -0.02915363368075617, -0.02575727320397208, 0.0, 0.0, 0.0, 0.0, 0.0};
+        static const double tol[10] = {1.761815061420508e-16, 6.90858714915448e-17, 5.985219356898572e-16, 8.647135528875793e-17, 1.0721286381571113e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
+        const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
+        const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
+        check("rc_trim(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 10);
     }
     {
         static const double want[5] = {-0.06195406887351482, -0.18633305754398316, -0.03097703443675741, -0.033389226559441, 26.610384774671438};
@@ -128,11 +128,11 @@ static void self_test_aircraft_a(void)
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, 0.03490658503988659)", got, want, tol, 9);
     }
     {
-        static const double want[5] = {-0.06082818036915503, -0.02258882623335746, -0.19424124839494938, -0.02915363368075617, -0.025757273203972076};
-        static const double tol[5] = {1.8239508564094464e-16, 8.066816961603556e-17, 5.733439695025788e-16, 9.734878504783477e-17, 8.028046919782094e-17};
-        const struct rc_Trim r = rc_aircraft_a_trim(0.5, 0.03490658503988659, 0.0);
-        const double got[5] = {r.alpha, r.beta, r.q, r.r, r.delta_a};
-        check("rc_aircraft_a_trim(0.5, 0.03490658503988659, 0.0)", got, want, tol, 5);
+        static const double want[10] = {-0.06082818036915503, -0.02258882623335746, -0.19424124839494938, -0.02915363368075617, -0.025757273203972076, -0.06082818036915503, -0.02258882623335746, -0.19424124839494938, -0.02915363368075617, 0.0};
+        static const double tol[10] = {1.8239508564094464e-16, 8.066816961603556e-17, 5.733439695025788e-16, 9.734878504783477e-17, 8.028046919782094e-17, 1.8239508564094464e-16, 8.066816961603556e-17, 5.733439695025788e-16, 9.734878504783477e-17, -2.0};
+        const struct rc_Trim_array2 r = rc_aircraft_a_trim(0.5, 0.03490658503988659, 0.0);
+        const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
+        check("rc_aircraft_a_trim(0.5, 0.03490658503988659, 0.0)", got, want, tol, 10);
     }
     {
         static const double want[5] = {-0.06195406887351482, -0.18633305754398316, -0.03097703443675741, -0.033389226559441, 26.61038477467144};
@@ -212,11 +212,11 @@ static void self_test_aircraft_a(void)
         check("rc_aircraft_a_zero_sideslip_jump_polynomial(0.03490658503988659)", got, want, tol, 9);
     }
     {
-        static const double want[5] = {0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, -0.1255202853445439};
-        static const double tol[5] = {3.008800164957782e-16, 4.218172074699505e-16, 1.418849230758128e-15, 4.01314452057566e-16, 5.346172061855975e-16};
-        const struct rc_Trim r = rc_trim(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
-        const double got[5] = {r.alpha, r.beta, r.q, r.r, r.delta_a};
-        check("rc_trim(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 5);
+        static const double want[10] = {0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, -0.1255202853445439, 0.0, 0.0, 0.0, 0.0, 0.0};
+        static const double tol[10] = {3.008800164957782e-16, 4.218172074699505e-16, 1.418849230758128e-15, 4.01314452057566e-16, 5.346172061855975e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
+        const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
+        const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
+        check("rc_trim(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 10);
     }
     {
         static const double want[5] = {0.09580073263313676, 0.28813028346742214, 0.12454095242307779, -0.08590405404454085, -106.98514962586775};
@@ -296,11 +296,11 @@ static void self_test_aircraft_a(void)
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, -0.05)", got, want, tol, 9);
     }
     {
-        static const double want[5] = {0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, -0.1255202853445439};
-        static const double tol[5] = {3.3647602538508114e-16, 5.062140387643495e-16, 1.4651925655055977e-15, 4.85023363546011e-16, 3.9650023656935233e-16};
-        const struct rc_Trim r = rc_aircraft_a_trim(1.3, -0.05, 0.01);
-        const double got[5] = {r.alpha, r.beta, r.q, r.r, r.delta_a};
-        check("rc_aircraft_a_trim(1.3, -0.05, 0.01)", got, want, tol, 5);
+        static const double want[10] = {0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, -0.1255202853445439, 0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, 0.0};
+        static const double tol[10] = {3.3647602538508114e-16, 5.062140387643495e-16, 1.4651925655055977e-15, 4.85023363546011e-16, 3.9650023656935233e-16, 3.3647602538508114e-16, 5.062140387643495e-16, 1.4651925655055977e-15, 4.85023363546011e-16, -2.0};
+        const struct rc_Trim_array2 r = rc_aircraft_a_trim(1.3, -0.05, 0.01);
+        const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
+        check("rc_aircraft_a_trim(1.3, -0.05, 0.01)", got, want, tol, 10);
     }
     {
         static const double want[5] = {0.09580073263313676, 0.28813028346742214, 0.12454095242307779, -0.08590405404454084, -106.98514962586776};
@@ -380,11 +380,11 @@ static void self_test_aircraft_a(void)
         check("rc_aircraft_a_zero_sideslip_jump_polynomial(-0.05)", got, want, tol, 9);
     }
     {
-        static const double want[5] = {0.005590298225498764, -0.01615283065336472, -0.022761054157733485, 0.014597558602929725, -0.15732122985399027};
-        static const double tol[5] = {5.794405382238442e-17, 1.7044486235463446e-16, 2.490128557212413e-16, 1.5728580980853888e-16, 5.497869807764547e-16};
-        const struct rc_Trim r = rc_trim(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
-        const double got[5] = {r.alpha, r.beta, r.q, r.r, r.delta_a};
-        check("rc_trim(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 5);
+        static const double want[10] = {0.005590298225498764, -0.01615283065336472, -0.022761054157733485, 0.014597558602929725, -0.15732122985399027, 0.0, 0.0, 0.0, 0.0, 0.0};
+        static const double tol[10] = {5.794405382238442e-17, 1.7044486235463446e-16, 2.490128557212413e-16, 1.5728580980853888e-16, 5.497869807764547e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
+        const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
+        const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
+        check("rc_trim(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 10);
     }
     {
         static const double want[5] = {0.0, 0.0, 0.0, -0.16284100769982893, 0.0};
@@ -464,11 +464,11 @@ static void self_test_aircraft_a(void)
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, 0.0)", got, want, tol, 9);
     }
     {
-        static const double want[5] = {0.005590298225498764, -0.01615283065336472, -0.022761054157733482, 0.014597558602929725, -0.15732122985399027};
-        static const double tol[5] = {7.42935114772493e-17, 2.1922447544029468e-16, 3.235112727675879e-16, 1.9951536450857543e-16, 3.5932235909586705e-16};
-        const struct rc_Trim r = rc_aircraft_a_trim(2.45, 0.0, -0.02);
-        const double got[5] = {r.alpha, r.beta, r.q, r.r, r.delta_a};
-        check("rc_aircraft_a_trim(2.45, 0.0, -0.02)", got, want, tol, 5);
+        static const double want[10] = {0.005590298225498764, -0.01615283065336472, -0.022761054157733482, 0.014597558602929725, -0.15732122985399027, 0.005590298225498764, -0.01615283065336472, -0.022761054157733482, 0.014597558602929725, 0.0};
+        static const double tol[10] = {7.42935114772493e-17, 2.1922447544029468e-16, 3.235112727675879e-16, 1.9951536450857543e-16, 3.5932235909586705e-16, 7.42935114772493e-17, 2.1922447544029468e-16, 3.235112727675879e-16, 1.9951536450857543e-16, -2.0};
+        const struct rc_Trim_array2 r = rc_aircraft_a_trim(2.45, 0.0, -0.02);
+        const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
+        check("rc_aircraft_a_trim(2.45, 0.0, -0.02)", got, want, tol, 10);
     }
     {
         static const double want[5] = {0.0, 0.0, 0.0, -0.1628410076998289, 0.0};
@@ -554,216 +554,226 @@ static void outputs_aircraft_a(const double *x, double *o)
 {
     const struct rc_derivatives *k = &rc_aircraft_a_derivatives;
     {
-        const struct rc_Trim r = rc_trim(k, x[5], x[2], x[3]);
-        o[0] = r.alpha;
-        o[1] = r.beta;
-        o[2] = r.q;
-        o[3] = r.r;
-        o[4] = r.delta_a;
+        const struct rc_Trim_array2 r = rc_trim(k, x[5], x[2], x[3]);
+        o[0] = r.v[0].alpha;
+        o[1] = r.v[0].beta;
+        o[2] = r.v[0].q;
+        o[3] = r.v[0].r;
+        o[4] = r.v[0].delta_a;
+        o[5] = r.v[1].alpha;
+        o[6] = r.v[1].beta;
+        o[7] = r.v[1].q;
+        o[8] = r.v[1].r;
+        o[9] = r.v[1].delta_a;
     }
     {
         const struct rc_ZeroSideslipTrim r = rc_zero_sideslip_trim(k, x[5], x[2]);
-        o[5] = r.alpha;
-        o[6] = r.q;
-        o[7] = r.r;
-        o[8] = r.delta_a;
-        o[9] = r.n_delta_r_delta_r;
+        o[10] = r.alpha;
+        o[11] = r.q;
+        o[12] = r.r;
+        o[13] = r.delta_a;
+        o[14] = r.n_delta_r_delta_r;
     }
     {
         const struct rc_matrix5x5 r = rc_jacobian5(k, x[0], x[1], x[4], x[6], x[7]);
-        o[10] = r.m[0][0];
-        o[11] = r.m[0][1];
-        o[12] = r.m[0][2];
-        o[13] = r.m[0][3];
-        o[14] = r.m[0][4];
-        o[15] = r.m[1][0];
-        o[16] = r.m[1][1];
-        o[17] = r.m[1][2];
-        o[18] = r.m[1][3];
-        o[19] = r.m[1][4];
-        o[20] = r.m[2][0];
-        o[21] = r.m[2][1];
-        o[22] = r.m[2][2];
-        o[23] = r.m[2][3];
-        o[24] = r.m[2][4];
-        o[25] = r.m[3][0];
-        o[26] = r.m[3][1];
-        o[27] = r.m[3][2];
-        o[28] = r.m[3][3];
-        o[29] = r.m[3][4];
-        o[30] = r.m[4][0];
-        o[31] = r.m[4][1];
-        o[32] = r.m[4][2];
-        o[33] = r.m[4][3];
-        o[34] = r.m[4][4];
+        o[15] = r.m[0][0];
+        o[16] = r.m[0][1];
+        o[17] = r.m[0][2];
+        o[18] = r.m[0][3];
+        o[19] = r.m[0][4];
+        o[20] = r.m[1][0];
+        o[21] = r.m[1][1];
+        o[22] = r.m[1][2];
+        o[23] = r.m[1][3];
+        o[24] = r.m[1][4];
+        o[25] = r.m[2][0];
+        o[26] = r.m[2][1];
+        o[27] = r.m[2][2];
+        o[28] = r.m[2][3];
+        o[29] = r.m[2][4];
+        o[30] = r.m[3][0];
+        o[31] = r.m[3][1];
+        o[32] = r.m[3][2];
+        o[33] = r.m[3][3];
+        o[34] = r.m[3][4];
+        o[35] = r.m[4][0];
+        o[36] = r.m[4][1];
+        o[37] = r.m[4][2];
+        o[38] = r.m[4][3];
+        o[39] = r.m[4][4];
     }
     {
         const double r = rc_residual_denominator(k, x[5], x[2], x[3]);
-        o[35] = r;
-    }
-    {
-        const struct rc_matrix2x2 r = rc_stiffness(k, x[5], x[2], x[3]);
-        o[36] = r.m[0][0];
-        o[37] = r.m[0][1];
-        o[38] = r.m[1][0];
-        o[39] = r.m[1][1];
-    }
-    {
-        const double r = rc_det_k(k, x[5], x[2], x[3]);
         o[40] = r;
     }
     {
+        const struct rc_matrix2x2 r = rc_stiffness(k, x[5], x[2], x[3]);
+        o[41] = r.m[0][0];
+        o[42] = r.m[0][1];
+        o[43] = r.m[1][0];
+        o[44] = r.m[1][1];
+    }
+    {
+        const double r = rc_det_k(k, x[5], x[2], x[3]);
+        o[45] = r;
+    }
+    {
         const double r = rc_det_j5(k, x[5], x[2], x[3]);
-        o[41] = r;
+        o[46] = r;
     }
     {
         const double r = rc_zero_sideslip_det_k(k, x[5], x[2]);
-        o[42] = r;
+        o[47] = r;
     }
     {
         const struct rc_array3 r = rc_divergence_biquadratic(k);
-        o[43] = r.v[0];
-        o[44] = r.v[1];
-        o[45] = r.v[2];
-    }
-    {
-        const struct rc_array2 r = rc_divergence_roll_rates(k);
-        o[46] = r.v[0];
-        o[47] = r.v[1];
-    }
-    {
-        const struct rc_array13 r = rc_jump_polynomial(k, x[2], x[3]);
         o[48] = r.v[0];
         o[49] = r.v[1];
         o[50] = r.v[2];
-        o[51] = r.v[3];
-        o[52] = r.v[4];
-        o[53] = r.v[5];
-        o[54] = r.v[6];
-        o[55] = r.v[7];
-        o[56] = r.v[8];
-        o[57] = r.v[9];
-        o[58] = r.v[10];
-        o[59] = r.v[11];
-        o[60] = r.v[12];
+    }
+    {
+        const struct rc_array2 r = rc_divergence_roll_rates(k);
+        o[51] = r.v[0];
+        o[52] = r.v[1];
+    }
+    {
+        const struct rc_array13 r = rc_jump_polynomial(k, x[2], x[3]);
+        o[53] = r.v[0];
+        o[54] = r.v[1];
+        o[55] = r.v[2];
+        o[56] = r.v[3];
+        o[57] = r.v[4];
+        o[58] = r.v[5];
+        o[59] = r.v[6];
+        o[60] = r.v[7];
+        o[61] = r.v[8];
+        o[62] = r.v[9];
+        o[63] = r.v[10];
+        o[64] = r.v[11];
+        o[65] = r.v[12];
     }
     {
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(k, x[2]);
-        o[61] = r.v[0];
-        o[62] = r.v[1];
-        o[63] = r.v[2];
-        o[64] = r.v[3];
-        o[65] = r.v[4];
-        o[66] = r.v[5];
-        o[67] = r.v[6];
-        o[68] = r.v[7];
-        o[69] = r.v[8];
+        o[66] = r.v[0];
+        o[67] = r.v[1];
+        o[68] = r.v[2];
+        o[69] = r.v[3];
+        o[70] = r.v[4];
+        o[71] = r.v[5];
+        o[72] = r.v[6];
+        o[73] = r.v[7];
+        o[74] = r.v[8];
     }
     {
-        const struct rc_Trim r = rc_aircraft_a_trim(x[5], x[2], x[3]);
-        o[70] = r.alpha;
-        o[71] = r.beta;
-        o[72] = r.q;
-        o[73] = r.r;
-        o[74] = r.delta_a;
+        const struct rc_Trim_array2 r = rc_aircraft_a_trim(x[5], x[2], x[3]);
+        o[75] = r.v[0].alpha;
+        o[76] = r.v[0].beta;
+        o[77] = r.v[0].q;
+        o[78] = r.v[0].r;
+        o[79] = r.v[0].delta_a;
+        o[80] = r.v[1].alpha;
+        o[81] = r.v[1].beta;
+        o[82] = r.v[1].q;
+        o[83] = r.v[1].r;
+        o[84] = r.v[1].delta_a;
     }
     {
         const struct rc_ZeroSideslipTrim r = rc_aircraft_a_zero_sideslip_trim(x[5], x[2]);
-        o[75] = r.alpha;
-        o[76] = r.q;
-        o[77] = r.r;
-        o[78] = r.delta_a;
-        o[79] = r.n_delta_r_delta_r;
+        o[85] = r.alpha;
+        o[86] = r.q;
+        o[87] = r.r;
+        o[88] = r.delta_a;
+        o[89] = r.n_delta_r_delta_r;
     }
     {
         const struct rc_matrix5x5 r = rc_aircraft_a_jacobian5(x[0], x[1], x[4], x[6], x[7]);
-        o[80] = r.m[0][0];
-        o[81] = r.m[0][1];
-        o[82] = r.m[0][2];
-        o[83] = r.m[0][3];
-        o[84] = r.m[0][4];
-        o[85] = r.m[1][0];
-        o[86] = r.m[1][1];
-        o[87] = r.m[1][2];
-        o[88] = r.m[1][3];
-        o[89] = r.m[1][4];
-        o[90] = r.m[2][0];
-        o[91] = r.m[2][1];
-        o[92] = r.m[2][2];
-        o[93] = r.m[2][3];
-        o[94] = r.m[2][4];
-        o[95] = r.m[3][0];
-        o[96] = r.m[3][1];
-        o[97] = r.m[3][2];
-        o[98] = r.m[3][3];
-        o[99] = r.m[3][4];
-        o[100] = r.m[4][0];
-        o[101] = r.m[4][1];
-        o[102] = r.m[4][2];
-        o[103] = r.m[4][3];
-        o[104] = r.m[4][4];
+        o[90] = r.m[0][0];
+        o[91] = r.m[0][1];
+        o[92] = r.m[0][2];
+        o[93] = r.m[0][3];
+        o[94] = r.m[0][4];
+        o[95] = r.m[1][0];
+        o[96] = r.m[1][1];
+        o[97] = r.m[1][2];
+        o[98] = r.m[1][3];
+        o[99] = r.m[1][4];
+        o[100] = r.m[2][0];
+        o[101] = r.m[2][1];
+        o[102] = r.m[2][2];
+        o[103] = r.m[2][3];
+        o[104] = r.m[2][4];
+        o[105] = r.m[3][0];
+        o[106] = r.m[3][1];
+        o[107] = r.m[3][2];
+        o[108] = r.m[3][3];
+        o[109] = r.m[3][4];
+        o[110] = r.m[4][0];
+        o[111] = r.m[4][1];
+        o[112] = r.m[4][2];
+        o[113] = r.m[4][3];
+        o[114] = r.m[4][4];
     }
     {
         const double r = rc_aircraft_a_residual_denominator(x[5], x[2], x[3]);
-        o[105] = r;
+        o[115] = r;
     }
     {
         const struct rc_matrix2x2 r = rc_aircraft_a_stiffness(x[5], x[2], x[3]);
-        o[106] = r.m[0][0];
-        o[107] = r.m[0][1];
-        o[108] = r.m[1][0];
-        o[109] = r.m[1][1];
+        o[116] = r.m[0][0];
+        o[117] = r.m[0][1];
+        o[118] = r.m[1][0];
+        o[119] = r.m[1][1];
     }
     {
         const double r = rc_aircraft_a_det_k(x[5], x[2], x[3]);
-        o[110] = r;
+        o[120] = r;
     }
     {
         const double r = rc_aircraft_a_det_j5(x[5], x[2], x[3]);
-        o[111] = r;
+        o[121] = r;
     }
     {
         const double r = rc_aircraft_a_zero_sideslip_det_k(x[5], x[2]);
-        o[112] = r;
+        o[122] = r;
     }
     {
         const struct rc_array3 r = rc_aircraft_a_divergence_biquadratic();
-        o[113] = r.v[0];
-        o[114] = r.v[1];
-        o[115] = r.v[2];
+        o[123] = r.v[0];
+        o[124] = r.v[1];
+        o[125] = r.v[2];
     }
     {
         const struct rc_array2 r = rc_aircraft_a_divergence_roll_rates();
-        o[116] = r.v[0];
-        o[117] = r.v[1];
+        o[126] = r.v[0];
+        o[127] = r.v[1];
     }
     {
         const struct rc_array13 r = rc_aircraft_a_jump_polynomial(x[2], x[3]);
-        o[118] = r.v[0];
-        o[119] = r.v[1];
-        o[120] = r.v[2];
-        o[121] = r.v[3];
-        o[122] = r.v[4];
-        o[123] = r.v[5];
-        o[124] = r.v[6];
-        o[125] = r.v[7];
-        o[126] = r.v[8];
-        o[127] = r.v[9];
-        o[128] = r.v[10];
-        o[129] = r.v[11];
-        o[130] = r.v[12];
+        o[128] = r.v[0];
+        o[129] = r.v[1];
+        o[130] = r.v[2];
+        o[131] = r.v[3];
+        o[132] = r.v[4];
+        o[133] = r.v[5];
+        o[134] = r.v[6];
+        o[135] = r.v[7];
+        o[136] = r.v[8];
+        o[137] = r.v[9];
+        o[138] = r.v[10];
+        o[139] = r.v[11];
+        o[140] = r.v[12];
     }
     {
         const struct rc_array9 r = rc_aircraft_a_zero_sideslip_jump_polynomial(x[2]);
-        o[131] = r.v[0];
-        o[132] = r.v[1];
-        o[133] = r.v[2];
-        o[134] = r.v[3];
-        o[135] = r.v[4];
-        o[136] = r.v[5];
-        o[137] = r.v[6];
-        o[138] = r.v[7];
-        o[139] = r.v[8];
+        o[141] = r.v[0];
+        o[142] = r.v[1];
+        o[143] = r.v[2];
+        o[144] = r.v[3];
+        o[145] = r.v[4];
+        o[146] = r.v[5];
+        o[147] = r.v[6];
+        o[148] = r.v[7];
+        o[149] = r.v[8];
     }
 }
 
@@ -771,11 +781,11 @@ static void outputs_aircraft_a(const double *x, double *o)
 static void self_test_aircraft_b(void)
 {
     {
-        static const double want[5] = {-0.04112860174591951, -0.004406825842779853, -0.05686332464171695, -0.019700563007774903, -0.04201991042752198};
-        static const double tol[5] = {1.133100434385868e-16, 1.2822563242076078e-17, 1.680570902131078e-16, 5.532187072589836e-17, 1.3408431311658804e-16};
-        const struct rc_Trim r = rc_trim(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
-        const double got[5] = {r.alpha, r.beta, r.q, r.r, r.delta_a};
-        check("rc_trim(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 5);
+        static const double want[10] = {-0.04112860174591951, -0.004406825842779853, -0.05686332464171695, -0.019700563007774903, -0.04201991042752198, 0.0, 0.0, 0.0, 0.0, 0.0};
+        static const double tol[10] = {1.133100434385868e-16, 1.2822563242076078e-17, 1.680570902131078e-16, 5.532187072589836e-17, 1.3408431311658804e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
+        const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
+        const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
+        check("rc_trim(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 10);
     }
     {
         static const double want[5] = {-0.041220317144740684, -0.05478180148536037, -0.020610158572370342, -0.04298314876226451, 1.1207851247548726};
@@ -855,11 +865,11 @@ static void self_test_aircraft_b(void)
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, 0.03490658503988659)", got, want, tol, 9);
     }
     {
-        static const double want[5] = {-0.04112860174591951, -0.004406825842779853, -0.05686332464171695, -0.019700563007774903, -0.04201991042752198};
-        static const double tol[5] = {1.1465382014899896e-16, 1.470628100293585e-17, 1.5707845624589236e-16, 6.114536290948603e-17, 7.897750012301334e-17};
-        const struct rc_Trim r = rc_aircraft_b_trim(0.5, 0.03490658503988659, 0.0);
-        const double got[5] = {r.alpha, r.beta, r.q, r.r, r.delta_a};
-        check("rc_aircraft_b_trim(0.5, 0.03490658503988659, 0.0)", got, want, tol, 5);
+        static const double want[10] = {-0.04112860174591951, -0.004406825842779853, -0.05686332464171695, -0.019700563007774903, -0.04201991042752198, -0.04112860174591951, -0.004406825842779853, -0.05686332464171695, -0.019700563007774903, 0.0};
+        static const double tol[10] = {1.1465382014899896e-16, 1.470628100293585e-17, 1.5707845624589236e-16, 6.114536290948603e-17, 7.897750012301334e-17, 1.1465382014899896e-16, 1.470628100293585e-17, 1.5707845624589236e-16, 6.114536290948603e-17, -2.0};
+        const struct rc_Trim_array2 r = rc_aircraft_b_trim(0.5, 0.03490658503988659, 0.0);
+        const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
+        check("rc_aircraft_b_trim(0.5, 0.03490658503988659, 0.0)", got, want, tol, 10);
     }
     {
         static const double want[5] = {-0.04122031714474068, -0.05478180148536036, -0.02061015857237034, -0.04298314876226451, 1.1207851247548726};
@@ -939,11 +949,11 @@ static void self_test_aircraft_b(void)
         check("rc_aircraft_b_zero_sideslip_jump_polynomial(0.03490658503988659)", got, want, tol, 9);
     }
     {
-        static const double want[5] = {0.06127401382437423, 0.02319501480715936, 0.11158668362190052, 0.07510999506948327, -0.11654478563509404};
-        static const double tol[5] = {2.063318542631225e-16, 7.809365511357641e-17, 3.8071069720786824e-16, 2.6768577653292643e-16, 3.8008150069470053e-16};
-        const struct rc_Trim r = rc_trim(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
-        const double got[5] = {r.alpha, r.beta, r.q, r.r, r.delta_a};
-        check("rc_trim(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 5);
+        static const double want[10] = {0.06127401382437423, 0.02319501480715936, 0.11158668362190052, 0.07510999506948327, -0.11654478563509404, 0.0, 0.0, 0.0, 0.0, 0.0};
+        static const double tol[10] = {2.063318542631225e-16, 7.809365511357641e-17, 3.8071069720786824e-16, 2.6768577653292643e-16, 3.8008150069470053e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
+        const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
+        const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
+        check("rc_trim(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 10);
     }
     {
         static const double want[5] = {0.06260483054194202, 0.08320181979024094, 0.08138627970452463, -0.11144595678592584, -4.425804456170175};
@@ -1023,11 +1033,11 @@ static void self_test_aircraft_b(void)
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, -0.05)", got, want, tol, 9);
     }
     {
-        static const double want[5] = {0.061274013824374224, 0.02319501480715936, 0.11158668362190051, 0.07510999506948327, -0.11654478563509404};
-        static const double tol[5] = {2.2090603624145868e-16, 8.976413110798022e-17, 3.777948014941962e-16, 3.1038329419458586e-16, 2.275324708897782e-16};
-        const struct rc_Trim r = rc_aircraft_b_trim(1.3, -0.05, 0.01);
-        const double got[5] = {r.alpha, r.beta, r.q, r.r, r.delta_a};
-        check("rc_aircraft_b_trim(1.3, -0.05, 0.01)", got, want, tol, 5);
+        static const double want[10] = {0.061274013824374224, 0.02319501480715936, 0.11158668362190051, 0.07510999506948327, -0.11654478563509404, 0.061274013824374224, 0.02319501480715936, 0.11158668362190051, 0.07510999506948327, 0.0};
+        static const double tol[10] = {2.2090603624145868e-16, 8.976413110798022e-17, 3.777948014941962e-16, 3.1038329419458586e-16, 2.275324708897782e-16, 2.2090603624145868e-16, 8.976413110798022e-17, 3.777948014941962e-16, 3.1038329419458586e-16, -2.0};
+        const struct rc_Trim_array2 r = rc_aircraft_b_trim(1.3, -0.05, 0.01);
+        const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
+        check("rc_aircraft_b_trim(1.3, -0.05, 0.01)", got, want, tol, 10);
     }
     {
         static const double want[5] = {0.06260483054194202, 0.08320181979024094, 0.08138627970452463, -0.11144595678592584, -4.425804456170176};
@@ -1107,11 +1117,11 @@ static void self_test_aircraft_b(void)
         check("rc_aircraft_b_zero_sideslip_jump_polynomial(-0.05)", got, want, tol, 9);
     }
     {
-        static const double want[5] = {0.001464739718743919, -0.011099354722233735, -0.025246779983261986, 0.005764085836480414, -0.2078144310521549};
-        static const double tol[5] = {1.2658444826030938e-17, 9.697583401661943e-17, 2.2685602052697726e-16, 5.092934536614279e-17, 6.684234646403062e-16};
-        const struct rc_Trim r = rc_trim(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
-        const double got[5] = {r.alpha, r.beta, r.q, r.r, r.delta_a};
-        check("rc_trim(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 5);
+        static const double want[10] = {0.001464739718743919, -0.011099354722233735, -0.025246779983261986, 0.005764085836480414, -0.2078144310521549, 0.0, 0.0, 0.0, 0.0, 0.0};
+        static const double tol[10] = {1.2658444826030938e-17, 9.697583401661943e-17, 2.2685602052697726e-16, 5.092934536614279e-17, 6.684234646403062e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
+        const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
+        const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
+        check("rc_trim(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 10);
     }
     {
         static const double want[5] = {0.0, 0.0, 0.0, -0.21025201832860574, 0.0};
@@ -1191,11 +1201,11 @@ static void self_test_aircraft_b(void)
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, 0.0)", got, want, tol, 9);
     }
     {
-        static const double want[5] = {0.001464739718743919, -0.011099354722233737, -0.025246779983261986, 0.005764085836480415, -0.2078144310521549};
-        static const double tol[5] = {1.5201158010961836e-17, 1.171541029696021e-16, 2.7366734706120234e-16, 6.003802783651317e-17, 3.9707749466287693e-16};
-        const struct rc_Trim r = rc_aircraft_b_trim(2.45, 0.0, -0.02);
-        const double got[5] = {r.alpha, r.beta, r.q, r.r, r.delta_a};
-        check("rc_aircraft_b_trim(2.45, 0.0, -0.02)", got, want, tol, 5);
+        static const double want[10] = {0.001464739718743919, -0.011099354722233737, -0.025246779983261986, 0.005764085836480415, -0.2078144310521549, 0.001464739718743919, -0.011099354722233737, -0.025246779983261986, 0.005764085836480415, 0.0};
+        static const double tol[10] = {1.5201158010961836e-17, 1.171541029696021e-16, 2.7366734706120234e-16, 6.003802783651317e-17, 3.9707749466287693e-16, 1.5201158010961836e-17, 1.171541029696021e-16, 2.7366734706120234e-16, 6.003802783651317e-17, -2.0};
+        const struct rc_Trim_array2 r = rc_aircraft_b_trim(2.45, 0.0, -0.02);
+        const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
+        check("rc_aircraft_b_trim(2.45, 0.0, -0.02)", got, want, tol, 10);
     }
     {
         static const double want[5] = {0.0, 0.0, 0.0, -0.21025201832860574, 0.0};
@@ -1281,226 +1291,236 @@ static void outputs_aircraft_b(const double *x, double *o)
 {
     const struct rc_derivatives *k = &rc_aircraft_b_derivatives;
     {
-        const struct rc_Trim r = rc_trim(k, x[5], x[2], x[3]);
-        o[0] = r.alpha;
-        o[1] = r.beta;
-        o[2] = r.q;
-        o[3] = r.r;
-        o[4] = r.delta_a;
+        const struct rc_Trim_array2 r = rc_trim(k, x[5], x[2], x[3]);
+        o[0] = r.v[0].alpha;
+        o[1] = r.v[0].beta;
+        o[2] = r.v[0].q;
+        o[3] = r.v[0].r;
+        o[4] = r.v[0].delta_a;
+        o[5] = r.v[1].alpha;
+        o[6] = r.v[1].beta;
+        o[7] = r.v[1].q;
+        o[8] = r.v[1].r;
+        o[9] = r.v[1].delta_a;
     }
     {
         const struct rc_ZeroSideslipTrim r = rc_zero_sideslip_trim(k, x[5], x[2]);
-        o[5] = r.alpha;
-        o[6] = r.q;
-        o[7] = r.r;
-        o[8] = r.delta_a;
-        o[9] = r.n_delta_r_delta_r;
+        o[10] = r.alpha;
+        o[11] = r.q;
+        o[12] = r.r;
+        o[13] = r.delta_a;
+        o[14] = r.n_delta_r_delta_r;
     }
     {
         const struct rc_matrix5x5 r = rc_jacobian5(k, x[0], x[1], x[4], x[6], x[7]);
-        o[10] = r.m[0][0];
-        o[11] = r.m[0][1];
-        o[12] = r.m[0][2];
-        o[13] = r.m[0][3];
-        o[14] = r.m[0][4];
-        o[15] = r.m[1][0];
-        o[16] = r.m[1][1];
-        o[17] = r.m[1][2];
-        o[18] = r.m[1][3];
-        o[19] = r.m[1][4];
-        o[20] = r.m[2][0];
-        o[21] = r.m[2][1];
-        o[22] = r.m[2][2];
-        o[23] = r.m[2][3];
-        o[24] = r.m[2][4];
-        o[25] = r.m[3][0];
-        o[26] = r.m[3][1];
-        o[27] = r.m[3][2];
-        o[28] = r.m[3][3];
-        o[29] = r.m[3][4];
-        o[30] = r.m[4][0];
-        o[31] = r.m[4][1];
-        o[32] = r.m[4][2];
-        o[33] = r.m[4][3];
-        o[34] = r.m[4][4];
+        o[15] = r.m[0][0];
+        o[16] = r.m[0][1];
+        o[17] = r.m[0][2];
+        o[18] = r.m[0][3];
+        o[19] = r.m[0][4];
+        o[20] = r.m[1][0];
+        o[21] = r.m[1][1];
+        o[22] = r.m[1][2];
+        o[23] = r.m[1][3];
+        o[24] = r.m[1][4];
+        o[25] = r.m[2][0];
+        o[26] = r.m[2][1];
+        o[27] = r.m[2][2];
+        o[28] = r.m[2][3];
+        o[29] = r.m[2][4];
+        o[30] = r.m[3][0];
+        o[31] = r.m[3][1];
+        o[32] = r.m[3][2];
+        o[33] = r.m[3][3];
+        o[34] = r.m[3][4];
+        o[35] = r.m[4][0];
+        o[36] = r.m[4][1];
+        o[37] = r.m[4][2];
+        o[38] = r.m[4][3];
+        o[39] = r.m[4][4];
     }
     {
         const double r = rc_residual_denominator(k, x[5], x[2], x[3]);
-        o[35] = r;
-    }
-    {
-        const struct rc_matrix2x2 r = rc_stiffness(k, x[5], x[2], x[3]);
-        o[36] = r.m[0][0];
-        o[37] = r.m[0][1];
-        o[38] = r.m[1][0];
-        o[39] = r.m[1][1];
-    }
-    {
-        const double r = rc_det_k(k, x[5], x[2], x[3]);
         o[40] = r;
     }
     {
+        const struct rc_matrix2x2 r = rc_stiffness(k, x[5], x[2], x[3]);
+        o[41] = r.m[0][0];
+        o[42] = r.m[0][1];
+        o[43] = r.m[1][0];
+        o[44] = r.m[1][1];
+    }
+    {
+        const double r = rc_det_k(k, x[5], x[2], x[3]);
+        o[45] = r;
+    }
+    {
         const double r = rc_det_j5(k, x[5], x[2], x[3]);
-        o[41] = r;
+        o[46] = r;
     }
     {
         const double r = rc_zero_sideslip_det_k(k, x[5], x[2]);
-        o[42] = r;
+        o[47] = r;
     }
     {
         const struct rc_array3 r = rc_divergence_biquadratic(k);
-        o[43] = r.v[0];
-        o[44] = r.v[1];
-        o[45] = r.v[2];
-    }
-    {
-        const struct rc_array2 r = rc_divergence_roll_rates(k);
-        o[46] = r.v[0];
-        o[47] = r.v[1];
-    }
-    {
-        const struct rc_array13 r = rc_jump_polynomial(k, x[2], x[3]);
         o[48] = r.v[0];
         o[49] = r.v[1];
         o[50] = r.v[2];
-        o[51] = r.v[3];
-        o[52] = r.v[4];
-        o[53] = r.v[5];
-        o[54] = r.v[6];
-        o[55] = r.v[7];
-        o[56] = r.v[8];
-        o[57] = r.v[9];
-        o[58] = r.v[10];
-        o[59] = r.v[11];
-        o[60] = r.v[12];
+    }
+    {
+        const struct rc_array2 r = rc_divergence_roll_rates(k);
+        o[51] = r.v[0];
+        o[52] = r.v[1];
+    }
+    {
+        const struct rc_array13 r = rc_jump_polynomial(k, x[2], x[3]);
+        o[53] = r.v[0];
+        o[54] = r.v[1];
+        o[55] = r.v[2];
+        o[56] = r.v[3];
+        o[57] = r.v[4];
+        o[58] = r.v[5];
+        o[59] = r.v[6];
+        o[60] = r.v[7];
+        o[61] = r.v[8];
+        o[62] = r.v[9];
+        o[63] = r.v[10];
+        o[64] = r.v[11];
+        o[65] = r.v[12];
     }
     {
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(k, x[2]);
-        o[61] = r.v[0];
-        o[62] = r.v[1];
-        o[63] = r.v[2];
-        o[64] = r.v[3];
-        o[65] = r.v[4];
-        o[66] = r.v[5];
-        o[67] = r.v[6];
-        o[68] = r.v[7];
-        o[69] = r.v[8];
+        o[66] = r.v[0];
+        o[67] = r.v[1];
+        o[68] = r.v[2];
+        o[69] = r.v[3];
+        o[70] = r.v[4];
+        o[71] = r.v[5];
+        o[72] = r.v[6];
+        o[73] = r.v[7];
+        o[74] = r.v[8];
     }
     {
-        const struct rc_Trim r = rc_aircraft_b_trim(x[5], x[2], x[3]);
-        o[70] = r.alpha;
-        o[71] = r.beta;
-        o[72] = r.q;
-        o[73] = r.r;
-        o[74] = r.delta_a;
+        const struct rc_Trim_array2 r = rc_aircraft_b_trim(x[5], x[2], x[3]);
+        o[75] = r.v[0].alpha;
+        o[76] = r.v[0].beta;
+        o[77] = r.v[0].q;
+        o[78] = r.v[0].r;
+        o[79] = r.v[0].delta_a;
+        o[80] = r.v[1].alpha;
+        o[81] = r.v[1].beta;
+        o[82] = r.v[1].q;
+        o[83] = r.v[1].r;
+        o[84] = r.v[1].delta_a;
     }
     {
         const struct rc_ZeroSideslipTrim r = rc_aircraft_b_zero_sideslip_trim(x[5], x[2]);
-        o[75] = r.alpha;
-        o[76] = r.q;
-        o[77] = r.r;
-        o[78] = r.delta_a;
-        o[79] = r.n_delta_r_delta_r;
+        o[85] = r.alpha;
+        o[86] = r.q;
+        o[87] = r.r;
+        o[88] = r.delta_a;
+        o[89] = r.n_delta_r_delta_r;
     }
     {
         const struct rc_matrix5x5 r = rc_aircraft_b_jacobian5(x[0], x[1], x[4], x[6], x[7]);
-        o[80] = r.m[0][0];
-        o[81] = r.m[0][1];
-        o[82] = r.m[0][2];
-        o[83] = r.m[0][3];
-        o[84] = r.m[0][4];
-        o[85] = r.m[1][0];
-        o[86] = r.m[1][1];
-        o[87] = r.m[1][2];
-        o[88] = r.m[1][3];
-        o[89] = r.m[1][4];
-        o[90] = r.m[2][0];
-        o[91] = r.m[2][1];
-        o[92] = r.m[2][2];
-        o[93] = r.m[2][3];
-        o[94] = r.m[2][4];
-        o[95] = r.m[3][0];
-        o[96] = r.m[3][1];
-        o[97] = r.m[3][2];
-        o[98] = r.m[3][3];
-        o[99] = r.m[3][4];
-        o[100] = r.m[4][0];
-        o[101] = r.m[4][1];
-        o[102] = r.m[4][2];
-        o[103] = r.m[4][3];
-        o[104] = r.m[4][4];
+        o[90] = r.m[0][0];
+        o[91] = r.m[0][1];
+        o[92] = r.m[0][2];
+        o[93] = r.m[0][3];
+        o[94] = r.m[0][4];
+        o[95] = r.m[1][0];
+        o[96] = r.m[1][1];
+        o[97] = r.m[1][2];
+        o[98] = r.m[1][3];
+        o[99] = r.m[1][4];
+        o[100] = r.m[2][0];
+        o[101] = r.m[2][1];
+        o[102] = r.m[2][2];
+        o[103] = r.m[2][3];
+        o[104] = r.m[2][4];
+        o[105] = r.m[3][0];
+        o[106] = r.m[3][1];
+        o[107] = r.m[3][2];
+        o[108] = r.m[3][3];
+        o[109] = r.m[3][4];
+        o[110] = r.m[4][0];
+        o[111] = r.m[4][1];
+        o[112] = r.m[4][2];
+        o[113] = r.m[4][3];
+        o[114] = r.m[4][4];
     }
     {
         const double r = rc_aircraft_b_residual_denominator(x[5], x[2], x[3]);
-        o[105] = r;
+        o[115] = r;
     }
     {
         const struct rc_matrix2x2 r = rc_aircraft_b_stiffness(x[5], x[2], x[3]);
-        o[106] = r.m[0][0];
-        o[107] = r.m[0][1];
-        o[108] = r.m[1][0];
-        o[109] = r.m[1][1];
+        o[116] = r.m[0][0];
+        o[117] = r.m[0][1];
+        o[118] = r.m[1][0];
+        o[119] = r.m[1][1];
     }
     {
         const double r = rc_aircraft_b_det_k(x[5], x[2], x[3]);
-        o[110] = r;
+        o[120] = r;
     }
     {
         const double r = rc_aircraft_b_det_j5(x[5], x[2], x[3]);
-        o[111] = r;
+        o[121] = r;
     }
     {
         const double r = rc_aircraft_b_zero_sideslip_det_k(x[5], x[2]);
-        o[112] = r;
+        o[122] = r;
     }
     {
         const struct rc_array3 r = rc_aircraft_b_divergence_biquadratic();
-        o[113] = r.v[0];
-        o[114] = r.v[1];
-        o[115] = r.v[2];
+        o[123] = r.v[0];
+        o[124] = r.v[1];
+        o[125] = r.v[2];
     }
     {
         const struct rc_array2 r = rc_aircraft_b_divergence_roll_rates();
-        o[116] = r.v[0];
-        o[117] = r.v[1];
+        o[126] = r.v[0];
+        o[127] = r.v[1];
     }
     {
         const struct rc_array13 r = rc_aircraft_b_jump_polynomial(x[2], x[3]);
-        o[118] = r.v[0];
-        o[119] = r.v[1];
-        o[120] = r.v[2];
-        o[121] = r.v[3];
-        o[122] = r.v[4];
-        o[123] = r.v[5];
-        o[124] = r.v[6];
-        o[125] = r.v[7];
-        o[126] = r.v[8];
-        o[127] = r.v[9];
-        o[128] = r.v[10];
-        o[129] = r.v[11];
-        o[130] = r.v[12];
+        o[128] = r.v[0];
+        o[129] = r.v[1];
+        o[130] = r.v[2];
+        o[131] = r.v[3];
+        o[132] = r.v[4];
+        o[133] = r.v[5];
+        o[134] = r.v[6];
+        o[135] = r.v[7];
+        o[136] = r.v[8];
+        o[137] = r.v[9];
+        o[138] = r.v[10];
+        o[139] = r.v[11];
+        o[140] = r.v[12];
     }
     {
         const struct rc_array9 r = rc_aircraft_b_zero_sideslip_jump_polynomial(x[2]);
-        o[131] = r.v[0];
-        o[132] = r.v[1];
-        o[133] = r.v[2];
-        o[134] = r.v[3];
-        o[135] = r.v[4];
-        o[136] = r.v[5];
-        o[137] = r.v[6];
-        o[138] = r.v[7];
-        o[139] = r.v[8];
+        o[141] = r.v[0];
+        o[142] = r.v[1];
+        o[143] = r.v[2];
+        o[144] = r.v[3];
+        o[145] = r.v[4];
+        o[146] = r.v[5];
+        o[147] = r.v[6];
+        o[148] = r.v[7];
+        o[149] = r.v[8];
     }
 }
 
-/* The --bits mode: one record per line, 8 columns, 140 outputs. */
+/* The --bits mode: one record per line, 8 columns, 150 outputs. */
 static int bits(const char *path)
 {
     FILE *in = fopen(path, "r");
     unsigned aircraft;
     double x[8];
-    double o[140];
+    double o[150];
     if (!in) {
         perror(path);
         return 2;

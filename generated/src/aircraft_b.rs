@@ -4,7 +4,7 @@
 // inputs: Aircraft B (model::aircraft); model 0.1.0.
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  25      42       2       1       0      70
+//   trim                                  25      42       3       2       0      72
 //   zero_sideslip_trim                     5      14       2       4       0      25
 //   jacobian5                              1       6       0       5       0      12
 //   residual_denominator                  25      41       1       0       0      67
@@ -41,23 +41,25 @@ pub const DERIVATIVES: super::Derivatives = super::Derivatives {
     l_delta_r: 0.0,
 };
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
+/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
 /// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
 /// equation), and the aileron from the roll equation, a quadratic in delta_a
-/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). This is the trim
-/// branch that continues the trim without aileron yaw (the root that tends to `-g0/g1`);
-/// NaN where the two trims of `p0` are complex. Angles in rad, rates in rad/s.
-/// Non-finite where det A = 0 (the divergence roll rates).
+/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the
+/// trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),
+/// element 1 the other root; both by the cancellation-free quadratic formula. NaN where
+/// the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw
+/// (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the
+/// divergence roll rates). The other functions of `p0` use element 0.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 42 mul, 2 div, 1 neg, 0 libm (70 operations); straight-line, no branches.
+/// Cost after CSE: 25 add/sub, 42 mul, 3 div, 2 neg, 0 libm (72 operations); straight-line, no branches.
 #[must_use]
 #[inline]
-pub fn trim(p0: f64, delta_e: f64, delta_r: f64) -> Trim {
+pub fn trim(p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
     let t0 = p0 * 0.949;
     let t1 = p0 * 0.716;
     let t2 = delta_e * 28.37;
@@ -70,18 +72,28 @@ pub fn trim(p0: f64, delta_e: f64, delta_r: f64) -> Trim {
     let t9 = 1.0
         / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329
             + (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
-    let t10 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
-    let t11 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    let t12 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328)
+    let t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
+    let t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
+    let t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
+    let t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328)
         - t2 * (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t4))) * t9;
-    Trim {
-        alpha: (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9,
-        beta: t10,
-        q: t11,
-        r: t12,
-        delta_a: -((t12 * (0.126 - t11 * 0.727) - (t10 * 9.99 + p0 * 3.933)) * 2.0
-            / (-91.66)),
-    }
+    [
+        Trim {
+            alpha: t10,
+            beta: t11,
+            q: t12,
+            r: t13,
+            delta_a: -((t13 * (0.126 - t12 * 0.727) - (t11 * 9.99 + p0 * 3.933)) * 2.0
+                / (-91.66)),
+        },
+        Trim {
+            alpha: t10,
+            beta: t11,
+            q: t12,
+            r: t13,
+            delta_a: -(-91.66 / 0.0),
+        },
+    ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the

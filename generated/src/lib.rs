@@ -4,7 +4,7 @@
 // inputs: symbolic parameters; model 0.1.0.
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  38      79       3       1       1     122
+//   trim                                  42      84       4       2       1     133
 //   zero_sideslip_trim                     9      21       2       1       0      33
 //   jacobian5                              2       6       0       4       0      12
 //   residual_denominator                  41      83       3       0       1     128
@@ -70,7 +70,7 @@ pub struct Derivatives {
     /// `l_delta_r`, 1/s^2 (Table A.1).
     pub l_delta_r: f64,
 }
-/// Pseudo-steady trim of the unconstrained roll at roll rate P0 (Eqs 3-4 and the roll equation).
+/// A pseudo-steady trim of the unconstrained roll at roll rate P0 (Eqs 3-4 and the roll equation); `trim` returns one per trim branch.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Trim {
     /// Angle of attack alpha_0, rad.
@@ -99,23 +99,25 @@ pub struct ZeroSideslipTrim {
     pub n_delta_r_delta_r: f64,
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
+/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
 /// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
 /// equation), and the aileron from the roll equation, a quadratic in delta_a
-/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). This is the trim
-/// branch that continues the trim without aileron yaw (the root that tends to `-g0/g1`);
-/// NaN where the two trims of `p0` are complex. Angles in rad, rates in rad/s.
-/// Non-finite where det A = 0 (the divergence roll rates).
+/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the
+/// trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),
+/// element 1 the other root; both by the cancellation-free quadratic formula. NaN where
+/// the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw
+/// (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the
+/// divergence roll rates). The other functions of `p0` use element 0.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 38 add/sub, 79 mul, 3 div, 1 neg, 1 libm (122 operations); straight-line, no branches.
+/// Cost after CSE: 42 add/sub, 84 mul, 4 div, 2 neg, 1 libm (133 operations); straight-line, no branches.
 #[must_use]
 #[inline]
-pub fn trim(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> Trim {
+pub fn trim(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
     let t0 = p0 * k.c;
     let t1 = p0 * k.d;
     let t2 = delta_e * k.m_delta_e;
@@ -136,26 +138,39 @@ pub fn trim(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> Trim {
             + p0 * (p0 * t4 + k.m_alpha * t1)
             - (p0 * (k.n_beta * t0) + k.y_beta * (k.m_alpha * k.n_r)
                 + k.m_alpha * k.n_beta));
-    let t16 = (t2 * (k.z_alpha * t1 + t10) + t3 * t12) * t15;
-    let t17 = (t3 * t13 - t2 * (k.z_alpha * t6 + p0 * t10)) * t15;
-    let t18 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t5)) - t3 * t14)
+    let t16 = (t2 * (t5 - t6) + t3 * t9) * t15;
+    let t17 = (t2 * (k.z_alpha * t1 + t10) + t3 * t12) * t15;
+    let t18 = (t3 * t13 - t2 * (k.z_alpha * t6 + p0 * t10)) * t15;
+    let t19 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t5)) - t3 * t14)
         * t15;
-    let t19 = t15 * (k.n_delta_a * t12);
-    let t20 = t15 * (k.n_delta_a * t13);
-    let t21 = t15 * (k.n_delta_a * t14);
-    let t22 = k.l_r - k.e * t17;
-    let t23 = t18 * t22 + (delta_r * k.l_delta_r - k.l_beta * t16 + p0 * k.l_p);
-    let t24 = k.e * 0.5 * (t20 * t21);
-    let t25 = k.l_delta_a - k.l_beta * t19 - t20 * (k.e * t18) - t21 * t22;
-    let t26 = t23 * 2.0
-        / (t25 * (1.0 + libm::sqrt(1.0 - t23 * (t24 + t24) / (t25 * t25) * 4.0)));
-    Trim {
-        alpha: t15 * (k.n_delta_a * t9) * t26 - (t2 * (t5 - t6) + t3 * t9) * t15,
-        beta: t19 * t26 - t16,
-        q: t17 - t20 * t26,
-        r: t18 + t21 * t26,
-        delta_a: -t26,
-    }
+    let t20 = t15 * (k.n_delta_a * t9);
+    let t21 = t15 * (k.n_delta_a * t12);
+    let t22 = t15 * (k.n_delta_a * t13);
+    let t23 = t15 * (k.n_delta_a * t14);
+    let t24 = k.l_r - k.e * t18;
+    let t25 = t19 * t24 + (delta_r * k.l_delta_r - k.l_beta * t17 + p0 * k.l_p);
+    let t26 = k.e * 0.5 * (t22 * t23);
+    let t27 = k.l_delta_a - k.l_beta * t21 - t22 * (k.e * t19) - t23 * t24;
+    let t28 = t26 + t26;
+    let t29 = t27 * (1.0 + libm::sqrt(1.0 - t25 * t28 / (t27 * t27) * 4.0));
+    let t30 = t25 * 2.0 / t29;
+    let t31 = t29 / (t28 * 2.0);
+    [
+        Trim {
+            alpha: t20 * t30 - t16,
+            beta: t21 * t30 - t17,
+            q: t18 - t22 * t30,
+            r: t19 + t23 * t30,
+            delta_a: -t30,
+        },
+        Trim {
+            alpha: t20 * t31 - t16,
+            beta: t21 * t31 - t17,
+            q: t18 - t22 * t31,
+            r: t19 + t23 * t31,
+            delta_a: -t31,
+        },
+    ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the

@@ -22,7 +22,7 @@ fn aircraft_a_matches_exact_values() {
         1e-9,
         "parametric det_k",
     );
-    let t = aircraft_a::trim(0.5, DE, 0.0);
+    let [t, _] = aircraft_a::trim(0.5, DE, 0.0);
     close(t.alpha, -0.06082818036915503, 1e-10, "alpha0");
     close(t.beta, -0.02258882623335746, 1e-10, "beta0");
     close(t.q, -0.19424124839494938, 1e-10, "Q0");
@@ -40,7 +40,7 @@ fn aircraft_a_matches_exact_values() {
         1e-9,
         "parametric det_k",
     );
-    let t = aircraft_a::trim(1.0, DE, 0.0);
+    let [t, _] = aircraft_a::trim(1.0, DE, 0.0);
     close(t.alpha, -0.058976494855848126, 1e-10, "alpha0");
     close(t.beta, -0.05257163503049685, 1e-10, "beta0");
     close(t.q, -0.22994934095894567, 1e-10, "Q0");
@@ -63,7 +63,7 @@ fn aircraft_a_matches_exact_values() {
         1e-9,
         "parametric det_k",
     );
-    let t = aircraft_a::trim(2.5, DE, 0.0);
+    let [t, _] = aircraft_a::trim(2.5, DE, 0.0);
     close(t.alpha, 0.08971561604925783, 1e-10, "alpha0");
     close(t.beta, -0.4980830544640928, 1e-10, "beta0");
     close(t.q, -0.9753789493304841, 1e-10, "Q0");
@@ -81,7 +81,7 @@ fn aircraft_a_matches_exact_values() {
         1e-9,
         "parametric det_k",
     );
-    let t = aircraft_a::trim(4.0, DE, 0.0);
+    let [t, _] = aircraft_a::trim(4.0, DE, 0.0);
     close(t.alpha, 0.22197775740738904, 1e-10, "alpha0");
     close(t.beta, -0.2634762646668983, 1e-10, "beta0");
     close(t.q, -0.3862847554891299, 1e-10, "Q0");
@@ -129,7 +129,7 @@ fn aircraft_b_matches_exact_values() {
         1e-9,
         "parametric det_k",
     );
-    let t = aircraft_b::trim(0.5, DE, 0.0);
+    let [t, _] = aircraft_b::trim(0.5, DE, 0.0);
     close(t.alpha, -0.04112860174591951, 1e-10, "alpha0");
     close(t.beta, -0.004406825842779853, 1e-10, "beta0");
     close(t.q, -0.05686332464171695, 1e-10, "Q0");
@@ -147,7 +147,7 @@ fn aircraft_b_matches_exact_values() {
         1e-9,
         "parametric det_k",
     );
-    let t = aircraft_b::trim(1.5, DE, 0.0);
+    let [t, _] = aircraft_b::trim(1.5, DE, 0.0);
     close(t.alpha, -0.043478216339880034, 1e-10, "alpha0");
     close(t.beta, -0.018851010567365673, 1e-10, "beta0");
     close(t.q, -0.08605906536674908, 1e-10, "Q0");
@@ -165,7 +165,7 @@ fn aircraft_b_matches_exact_values() {
         1e-9,
         "parametric det_k",
     );
-    let t = aircraft_b::trim(2.2, DE, 0.0);
+    let [t, _] = aircraft_b::trim(2.2, DE, 0.0);
     close(t.alpha, -0.04456717825064272, 1e-10, "alpha0");
     close(t.beta, -0.051692413844340854, 1e-10, "beta0");
     close(t.q, -0.17295309035265408, 1e-10, "Q0");
@@ -188,7 +188,7 @@ fn aircraft_b_matches_exact_values() {
         1e-9,
         "parametric det_k",
     );
-    let t = aircraft_b::trim(3.7, DE, 0.0);
+    let [t, _] = aircraft_b::trim(3.7, DE, 0.0);
     close(t.alpha, -0.1357612925698471, 1e-10, "alpha0");
     close(t.beta, 0.14587222911525205, 1e-10, "beta0");
     close(t.q, 0.35930048990110586, 1e-10, "Q0");
@@ -211,7 +211,7 @@ fn aircraft_b_matches_exact_values() {
         1e-9,
         "parametric det_k",
     );
-    let t = aircraft_b::trim(4.3, DE, 0.0);
+    let [t, _] = aircraft_b::trim(4.3, DE, 0.0);
     close(t.alpha, -0.2607172765475597, 1e-10, "alpha0");
     close(t.beta, 0.17682801550441835, 1e-10, "beta0");
     close(t.q, 0.41386720613729205, 1e-10, "Q0");

@@ -21,6 +21,9 @@ pub enum Ret {
     Matrix(usize, usize),
     /// A named struct with one f64 field per output.
     Struct(&'static str),
+    /// `[S; N]` of a named struct: N values of S, outputs in order (all fields of the first,
+    /// then of the second, ...); e.g. the trims of a roll rate, one per trim branch.
+    Structs(&'static str, usize),
 }
 
 /// A scalar argument of a generated function (besides `k: &Derivatives`).
@@ -63,7 +66,7 @@ pub fn structs() -> Vec<StructSpec> {
     vec![
         (
             "Trim",
-            "Pseudo-steady trim of the unconstrained roll at roll rate P0 (Eqs 3-4 and the roll equation).",
+            "A pseudo-steady trim of the unconstrained roll at roll rate P0 (Eqs 3-4 and the roll equation); `trim` returns one per trim branch.",
             vec![
                 ("alpha", "Angle of attack alpha_0, rad."),
                 ("beta", "Sideslip beta_0, rad."),
@@ -314,6 +317,16 @@ impl Ctx {
     /// `-g0 / g1` as `g2 -> 0`: exact for `n_delta_a = 0`, NaN where the two trims of P0 are
     /// complex, without a branch. Returns `[alpha0, beta0, Q0, R0, delta_a]`.
     fn trim(&mut self, d: &Derivation) -> [Id; 5] {
+        self.trim_branch(d, 0)
+    }
+
+    /// As [`Ctx::trim`] for trim branch `branch`: 0 is the branch that continues the trim
+    /// without aileron yaw (the root that tends to `-g0 / g1`), 1 the other root of the
+    /// quadratic, `delta_a = -g1 (1 + sqrt(1 - 4 g0 g2 / g1^2)) / (2 g2)` (the quadratic's other
+    /// root, also cancellation-free). Branch 1 is NaN where the two trims are complex and
+    /// infinite or NaN without aileron yaw (g2 = 0: a single trim). The shared nodes (the trim's
+    /// affine parts, g0, g1, g2, the square root) are built once: the DAG hash-conses them.
+    fn trim_branch(&mut self, d: &Derivation, branch: usize) -> [Id; 5] {
         let s = symbols();
         let rhs0: Vec<Poly> = d.a_rhs.iter().map(|p| p.coeff(s.delta_a, 0)).collect();
         let rhs1: Vec<Poly> = d.a_rhs.iter().map(|p| p.coeff(s.delta_a, 1)).collect();
@@ -353,11 +366,18 @@ impl Ctx {
         let disc = dag.sub(one, w4);
         let root = dag.sqrt(disc);
         let onep = dag.add(one, root);
-        let den = dag.mul(g1, onep);
         let two = dag.constant(Q::int(2));
-        let num = dag.mul(two, g0);
-        let q = dag.div(num, den);
-        let da = dag.neg(q);
+        let da = if branch == 0 {
+            let den = dag.mul(g1, onep);
+            let num = dag.mul(two, g0);
+            let q = dag.div(num, den);
+            dag.neg(q)
+        } else {
+            let num = dag.mul(g1, onep);
+            let den = dag.mul(two, g2);
+            let q = dag.div(num, den);
+            dag.neg(q)
+        };
         let mut x = [da; 4];
         for i in 0..4 {
             let t = self.dag.mul(da, b[i]);
@@ -513,32 +533,33 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
     let mut out = Vec::new();
     let trim_args = vec![P0, DE, DR];
 
-    // trim
+    // trim: both branches
     {
         let mut c = Ctx::new(t, &trim_args);
-        let [a, b, q, r, da] = c.trim(d);
-        let outputs = vec![
-            ("alpha".into(), a),
-            ("beta".into(), b),
-            ("q".into(), q),
-            ("r".into(), r),
-            ("delta_a".into(), da),
-        ];
+        let mut outputs = Vec::new();
+        for branch in 0..2 {
+            let [a, b, q, r, da] = c.trim_branch(d, branch);
+            for (name, id) in [("alpha", a), ("beta", b), ("q", q), ("r", r), ("delta_a", da)] {
+                outputs.push((name.to_string(), id));
+            }
+        }
         out.push(c.finish(
             "trim",
             lines(&[
-                "Pseudo-steady trim at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`",
+                "Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`",
                 "for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw",
                 "equation), and the aileron from the roll equation, a quadratic in delta_a",
-                "`g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). This is the trim",
-                "branch that continues the trim without aileron yaw (the root that tends to `-g0/g1`);",
-                "NaN where the two trims of `p0` are complex. Angles in rad, rates in rad/s.",
-                "Non-finite where det A = 0 (the divergence roll rates).",
+                "`g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the",
+                "trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),",
+                "element 1 the other root; both by the cancellation-free quadratic formula. NaN where",
+                "the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw",
+                "(a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the",
+                "divergence roll rates). The other functions of `p0` use element 0.",
             ]),
             t,
             trim_args.clone(),
             outputs,
-            Ret::Struct("Trim"),
+            Ret::Structs("Trim", 2),
         ));
     }
     // zero-sideslip trim

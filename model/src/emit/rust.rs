@@ -132,6 +132,21 @@ pub fn function(f: &Function, header_doc: &[String]) -> TokenStream {
                 .collect();
             (quote!(#s), quote!(#s { #(#fields: #outs),* }))
         }
+        Ret::Structs(s, n) => {
+            let per = f.outputs.len() / n;
+            let values: Vec<TokenStream> = f
+                .outputs
+                .chunks(per)
+                .zip(outs.chunks(per))
+                .map(|(fs, vs)| {
+                    let s = Ident::new(s, Span::call_site());
+                    let fields = fs.iter().map(|(n, _)| Ident::new(n, Span::call_site()));
+                    quote!(#s { #(#fields: #vs),* })
+                })
+                .collect();
+            let (s, n) = (Ident::new(s, Span::call_site()), Literal::usize_unsuffixed(*n));
+            (quote!([#s; #n]), quote!([#(#values),*]))
+        }
     };
     let doc = super::doc_lines(f, header_doc);
     let doc = doc.iter().map(|l| format!(" {l}"));

@@ -18,6 +18,7 @@ pub fn c_type(ret: &Ret) -> String {
         Ret::Array(n) => format!("struct {C_PREFIX}array{n}"),
         Ret::Matrix(r, c) => format!("struct {C_PREFIX}matrix{r}x{c}"),
         Ret::Struct(s) => format!("struct {C_PREFIX}{s}"),
+        Ret::Structs(s, n) => format!("struct {C_PREFIX}{s}_array{n}"),
     }
 }
 
@@ -34,6 +35,10 @@ pub fn c_struct(ret: &Ret) -> Option<String> {
                 "/// `[[f64; {c}]; {r}]` of the Rust crate (row-major): C cannot return an array."
             ),
             vec![(format!("double m[{r}][{c}];"), None)],
+        ),
+        Ret::Structs(s, n) => (
+            format!("/// `[{s}; {n}]` of the Rust crate: C cannot return an array."),
+            vec![(format!("{} v[{n}];", c_type(&Ret::Struct(s))), None)],
         ),
         Ret::Struct(s) => {
             let (_, doc, fields) = structs()
@@ -65,8 +70,15 @@ pub fn c_struct(ret: &Ret) -> Option<String> {
 pub fn shapes<'a>(fs: impl IntoIterator<Item = &'a Function>) -> Vec<Ret> {
     let mut all: Vec<Ret> = Vec::new();
     for f in fs {
-        if f.ret != Ret::Scalar && !all.contains(&f.ret) {
-            all.push(f.ret.clone());
+        // An array of structs needs its struct defined first.
+        let needs = match f.ret {
+            Ret::Structs(s, _) => vec![Ret::Struct(s), f.ret.clone()],
+            _ => vec![f.ret.clone()],
+        };
+        for r in needs {
+            if r != Ret::Scalar && !all.contains(&r) {
+                all.push(r);
+            }
         }
     }
     let names: Vec<&str> = structs().iter().map(|(n, _, _)| *n).collect();
@@ -75,6 +87,11 @@ pub fn shapes<'a>(fs: impl IntoIterator<Item = &'a Function>) -> Vec<Ret> {
             0,
             names.iter().position(|n| n == s).unwrap_or(usize::MAX),
             0,
+        ),
+        Ret::Structs(s, n) => (
+            0,
+            names.iter().position(|x| x == s).unwrap_or(usize::MAX),
+            *n,
         ),
         Ret::Array(n) => (1, *n, 0),
         Ret::Matrix(r, c) => (2, *r, *c),
@@ -94,6 +111,10 @@ pub fn access(f: &Function, c: bool) -> Vec<String> {
             Ret::Array(_) => format!("{v}[{i}]"),
             Ret::Matrix(_, cols) => format!("{m}[{}][{}]", i / cols, i % cols),
             Ret::Struct(_) => format!(".{}", f.outputs[i].0),
+            Ret::Structs(_, n) => {
+                let per = f.outputs.len() / n;
+                format!("{v}[{}].{}", i / per, f.outputs[i].0)
+            }
         })
         .collect()
 }

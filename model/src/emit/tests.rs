@@ -75,7 +75,7 @@ pub fn values() -> Result<String, syn::Error> {
             checks.extend(quote! {
                 close(#module::det_k(#pl, DE, 0.0), #dk, 1e-9, "specialised det_k");
                 close(det_k(&#module::DERIVATIVES, #pl, DE, 0.0), #dk, 1e-9, "parametric det_k");
-                let t = #module::trim(#pl, DE, 0.0);
+                let [t, _] = #module::trim(#pl, DE, 0.0);
                 close(t.alpha, #ta, 1e-10, "alpha0");
                 close(t.beta, #tb, 1e-10, "beta0");
                 close(t.q, #tq, 1e-10, "Q0");

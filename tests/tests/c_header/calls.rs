@@ -16,13 +16,18 @@ pub const COLUMNS: [&str; 8] = [
 /// The built-in aircraft, by their index in a record.
 pub const AIRCRAFT: [&str; 2] = ["aircraft_a", "aircraft_b"];
 /// What each output is, per aircraft (C names).
-pub const LABELS: [[&str; 140]; 2] = [
+pub const LABELS: [[&str; 150]; 2] = [
     [
-        "rc_trim(&rc_aircraft_a_derivatives).alpha",
-        "rc_trim(&rc_aircraft_a_derivatives).beta",
-        "rc_trim(&rc_aircraft_a_derivatives).q",
-        "rc_trim(&rc_aircraft_a_derivatives).r",
-        "rc_trim(&rc_aircraft_a_derivatives).delta_a",
+        "rc_trim(&rc_aircraft_a_derivatives).v[0].alpha",
+        "rc_trim(&rc_aircraft_a_derivatives).v[0].beta",
+        "rc_trim(&rc_aircraft_a_derivatives).v[0].q",
+        "rc_trim(&rc_aircraft_a_derivatives).v[0].r",
+        "rc_trim(&rc_aircraft_a_derivatives).v[0].delta_a",
+        "rc_trim(&rc_aircraft_a_derivatives).v[1].alpha",
+        "rc_trim(&rc_aircraft_a_derivatives).v[1].beta",
+        "rc_trim(&rc_aircraft_a_derivatives).v[1].q",
+        "rc_trim(&rc_aircraft_a_derivatives).v[1].r",
+        "rc_trim(&rc_aircraft_a_derivatives).v[1].delta_a",
         "rc_zero_sideslip_trim(&rc_aircraft_a_derivatives).alpha",
         "rc_zero_sideslip_trim(&rc_aircraft_a_derivatives).q",
         "rc_zero_sideslip_trim(&rc_aircraft_a_derivatives).r",
@@ -88,11 +93,16 @@ pub const LABELS: [[&str; 140]; 2] = [
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives).v[6]",
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives).v[7]",
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives).v[8]",
-        "rc_aircraft_a_trim().alpha",
-        "rc_aircraft_a_trim().beta",
-        "rc_aircraft_a_trim().q",
-        "rc_aircraft_a_trim().r",
-        "rc_aircraft_a_trim().delta_a",
+        "rc_aircraft_a_trim().v[0].alpha",
+        "rc_aircraft_a_trim().v[0].beta",
+        "rc_aircraft_a_trim().v[0].q",
+        "rc_aircraft_a_trim().v[0].r",
+        "rc_aircraft_a_trim().v[0].delta_a",
+        "rc_aircraft_a_trim().v[1].alpha",
+        "rc_aircraft_a_trim().v[1].beta",
+        "rc_aircraft_a_trim().v[1].q",
+        "rc_aircraft_a_trim().v[1].r",
+        "rc_aircraft_a_trim().v[1].delta_a",
         "rc_aircraft_a_zero_sideslip_trim().alpha",
         "rc_aircraft_a_zero_sideslip_trim().q",
         "rc_aircraft_a_zero_sideslip_trim().r",
@@ -160,11 +170,16 @@ pub const LABELS: [[&str; 140]; 2] = [
         "rc_aircraft_a_zero_sideslip_jump_polynomial().v[8]",
     ],
     [
-        "rc_trim(&rc_aircraft_b_derivatives).alpha",
-        "rc_trim(&rc_aircraft_b_derivatives).beta",
-        "rc_trim(&rc_aircraft_b_derivatives).q",
-        "rc_trim(&rc_aircraft_b_derivatives).r",
-        "rc_trim(&rc_aircraft_b_derivatives).delta_a",
+        "rc_trim(&rc_aircraft_b_derivatives).v[0].alpha",
+        "rc_trim(&rc_aircraft_b_derivatives).v[0].beta",
+        "rc_trim(&rc_aircraft_b_derivatives).v[0].q",
+        "rc_trim(&rc_aircraft_b_derivatives).v[0].r",
+        "rc_trim(&rc_aircraft_b_derivatives).v[0].delta_a",
+        "rc_trim(&rc_aircraft_b_derivatives).v[1].alpha",
+        "rc_trim(&rc_aircraft_b_derivatives).v[1].beta",
+        "rc_trim(&rc_aircraft_b_derivatives).v[1].q",
+        "rc_trim(&rc_aircraft_b_derivatives).v[1].r",
+        "rc_trim(&rc_aircraft_b_derivatives).v[1].delta_a",
         "rc_zero_sideslip_trim(&rc_aircraft_b_derivatives).alpha",
         "rc_zero_sideslip_trim(&rc_aircraft_b_derivatives).q",
         "rc_zero_sideslip_trim(&rc_aircraft_b_derivatives).r",
@@ -230,11 +245,16 @@ pub const LABELS: [[&str; 140]; 2] = [
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives).v[6]",
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives).v[7]",
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives).v[8]",
-        "rc_aircraft_b_trim().alpha",
-        "rc_aircraft_b_trim().beta",
-        "rc_aircraft_b_trim().q",
-        "rc_aircraft_b_trim().r",
-        "rc_aircraft_b_trim().delta_a",
+        "rc_aircraft_b_trim().v[0].alpha",
+        "rc_aircraft_b_trim().v[0].beta",
+        "rc_aircraft_b_trim().v[0].q",
+        "rc_aircraft_b_trim().v[0].r",
+        "rc_aircraft_b_trim().v[0].delta_a",
+        "rc_aircraft_b_trim().v[1].alpha",
+        "rc_aircraft_b_trim().v[1].beta",
+        "rc_aircraft_b_trim().v[1].q",
+        "rc_aircraft_b_trim().v[1].r",
+        "rc_aircraft_b_trim().v[1].delta_a",
         "rc_aircraft_b_zero_sideslip_trim().alpha",
         "rc_aircraft_b_zero_sideslip_trim().q",
         "rc_aircraft_b_zero_sideslip_trim().r",
@@ -303,7 +323,7 @@ pub const LABELS: [[&str; 140]; 2] = [
     ],
 ];
 /// Every output for the aircraft with index `aircraft`, in record order.
-pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 140] {
+pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 150] {
     match aircraft {
         0 => aircraft_a(x),
         1 => aircraft_b(x),
@@ -311,7 +331,7 @@ pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 140] {
     }
 }
 /// Every output for Aircraft A, in record order.
-fn aircraft_a(x: &[f64; 8]) -> [f64; 140] {
+fn aircraft_a(x: &[f64; 8]) -> [f64; 150] {
     let k = &rc::aircraft_a::DERIVATIVES;
     let r0 = rc::trim(k, x[5], x[2], x[3]);
     let r1 = rc::zero_sideslip_trim(k, x[5], x[2]);
@@ -338,11 +358,16 @@ fn aircraft_a(x: &[f64; 8]) -> [f64; 140] {
     let r22 = rc::aircraft_a::jump_polynomial(x[2], x[3]);
     let r23 = rc::aircraft_a::zero_sideslip_jump_polynomial(x[2]);
     [
-        r0.alpha,
-        r0.beta,
-        r0.q,
-        r0.r,
-        r0.delta_a,
+        r0[0].alpha,
+        r0[0].beta,
+        r0[0].q,
+        r0[0].r,
+        r0[0].delta_a,
+        r0[1].alpha,
+        r0[1].beta,
+        r0[1].q,
+        r0[1].r,
+        r0[1].delta_a,
         r1.alpha,
         r1.q,
         r1.r,
@@ -408,11 +433,16 @@ fn aircraft_a(x: &[f64; 8]) -> [f64; 140] {
         r11[6],
         r11[7],
         r11[8],
-        r12.alpha,
-        r12.beta,
-        r12.q,
-        r12.r,
-        r12.delta_a,
+        r12[0].alpha,
+        r12[0].beta,
+        r12[0].q,
+        r12[0].r,
+        r12[0].delta_a,
+        r12[1].alpha,
+        r12[1].beta,
+        r12[1].q,
+        r12[1].r,
+        r12[1].delta_a,
         r13.alpha,
         r13.q,
         r13.r,
@@ -481,7 +511,7 @@ fn aircraft_a(x: &[f64; 8]) -> [f64; 140] {
     ]
 }
 /// Every output for Aircraft B, in record order.
-fn aircraft_b(x: &[f64; 8]) -> [f64; 140] {
+fn aircraft_b(x: &[f64; 8]) -> [f64; 150] {
     let k = &rc::aircraft_b::DERIVATIVES;
     let r0 = rc::trim(k, x[5], x[2], x[3]);
     let r1 = rc::zero_sideslip_trim(k, x[5], x[2]);
@@ -508,11 +538,16 @@ fn aircraft_b(x: &[f64; 8]) -> [f64; 140] {
     let r22 = rc::aircraft_b::jump_polynomial(x[2], x[3]);
     let r23 = rc::aircraft_b::zero_sideslip_jump_polynomial(x[2]);
     [
-        r0.alpha,
-        r0.beta,
-        r0.q,
-        r0.r,
-        r0.delta_a,
+        r0[0].alpha,
+        r0[0].beta,
+        r0[0].q,
+        r0[0].r,
+        r0[0].delta_a,
+        r0[1].alpha,
+        r0[1].beta,
+        r0[1].q,
+        r0[1].r,
+        r0[1].delta_a,
         r1.alpha,
         r1.q,
         r1.r,
@@ -578,11 +613,16 @@ fn aircraft_b(x: &[f64; 8]) -> [f64; 140] {
         r11[6],
         r11[7],
         r11[8],
-        r12.alpha,
-        r12.beta,
-        r12.q,
-        r12.r,
-        r12.delta_a,
+        r12[0].alpha,
+        r12[0].beta,
+        r12[0].q,
+        r12[0].r,
+        r12[0].delta_a,
+        r12[1].alpha,
+        r12[1].beta,
+        r12[1].q,
+        r12[1].r,
+        r12[1].delta_a,
         r13.alpha,
         r13.q,
         r13.r,

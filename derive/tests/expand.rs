@@ -134,8 +134,8 @@ fn macro_equals_committed_generated_aircraft_a() {
         }
         let (m, c) = (a::zero_sideslip_trim(p0, de), g::zero_sideslip_trim(p0, de));
         assert_eq!(
-            bits(&[m.alpha, m.q, m.r, m.delta_a, m.n_delta_r_delta_r]),
-            bits(&[c.alpha, c.q, c.r, c.delta_a, c.n_delta_r_delta_r]),
+            bits(&[m.alpha, m.q, m.r, m.delta_a, m.delta_r]),
+            bits(&[c.alpha, c.q, c.r, c.delta_a, c.delta_r]),
             "zero_sideslip_trim {at}"
         );
         let scalars = [

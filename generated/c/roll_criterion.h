@@ -7,7 +7,7 @@
 // each built-in aircraft are counted in its section):
 //   function                         add/sub     mul     div     neg    libm   total
 //   trim                                  42      84       4       2       1     133
-//   zero_sideslip_trim                     9      21       2       1       0      33
+//   zero_sideslip_trim                     9      23       2       1       0      35
 //   jacobian5                              2       6       0       4       0      12
 //   residual_denominator                  41      83       3       0       1     128
 //   stiffness                             61     110       4       0       1     176
@@ -110,8 +110,8 @@ struct rc_ZeroSideslipTrim {
     double r;
     /// Aileron deflection holding the trim, rad.
     double delta_a;
-    /// Yawing acceleration the rudder must supply, n_delta_r * delta_r, 1/s^2 (divide by n_delta_r for the schedule).
-    double n_delta_r_delta_r;
+    /// Rudder deflection holding zero sideslip (the schedule), rad; non-finite without lateral control authority (l_delta_a n_delta_r = l_delta_r n_delta_a).
+    double delta_r;
 };
 
 /// `[f64; 2]` of the Rust crate: C cannot return an array.
@@ -214,15 +214,16 @@ ROLL_CRITERION_API struct rc_Trim_array2 rc_trim(const struct rc_derivatives *k,
 }
 
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the
-/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron from
-/// the roll equation and `n_delta_r * delta_r` from the yaw equation (the rudder schedule
-/// of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.
+/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the
+/// rudder from the roll and yaw equations together (with aileron yaw and roll due to
+/// rudder both controls enter both; the rudder is the schedule of the aileron-rudder
+/// interconnect, Fig. 9). Angles in rad, rates in rad/s.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 9 add/sub, 21 mul, 2 div, 1 neg, 0 libm (33 operations); straight-line, no branches.
+/// Cost after CSE: 9 add/sub, 23 mul, 2 div, 1 neg, 0 libm (35 operations); straight-line, no branches.
 /// Rust: `roll_criterion::zero_sideslip_trim`, bit-identical.
 ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_zero_sideslip_trim(const struct rc_derivatives *k,
     double p0, double delta_e)
@@ -231,15 +232,15 @@ ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_zero_sideslip_trim(const struct
     const double t1 = 1.0 / (k->z_alpha * k->m_q - (k->m_alpha + p0 * (p0 * k->c)));
     const double t2 = k->z_alpha * t0 * t1;
     const double t3 = p0 * t0 * t1;
-    const double t4 = t3 * (k->l_r + k->e * t2) + p0 * k->l_p;
-    const double t5 = p0 * (k->n_p + k->d * t2) + k->n_r * t3;
+    const double t4 = 1.0 / (k->l_delta_a * k->n_delta_r - k->n_delta_a * k->l_delta_r);
+    const double t5 = t3 * (k->l_r + k->e * t2) + p0 * k->l_p;
+    const double t6 = p0 * (k->n_p + k->d * t2) + k->n_r * t3;
     struct rc_ZeroSideslipTrim result;
     result.alpha = t0 * t1;
     result.q = -t2;
     result.r = t3;
-    result.delta_a = (k->l_delta_r * t5 - k->n_delta_r * t4) / (k->l_delta_a * k->n_delta_r -
-        k->n_delta_a * k->l_delta_r);
-    result.n_delta_r_delta_r = k->n_delta_a * t4 - k->l_delta_a * t5;
+    result.delta_a = t4 * (k->l_delta_r * t6 - k->n_delta_r * t5);
+    result.delta_r = t4 * (k->n_delta_a * t5 - k->l_delta_a * t6);
     return result;
 }
 
@@ -911,7 +912,7 @@ ROLL_CRITERION_API struct rc_array9 rc_zero_sideslip_jump_polynomial(const struc
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
 //   trim                                  25      42       3       2       0      72
-//   zero_sideslip_trim                     5      14       2       4       0      25
+//   zero_sideslip_trim                     5      16       1       4       0      26
 //   jacobian5                              1       6       0       5       0      12
 //   residual_denominator                  25      41       1       0       0      67
 //   stiffness                             38      65       2       0       0     105
@@ -997,15 +998,16 @@ ROLL_CRITERION_API struct rc_Trim_array2 rc_aircraft_a_trim(double p0, double de
 }
 
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the
-/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron from
-/// the roll equation and `n_delta_r * delta_r` from the yaw equation (the rudder schedule
-/// of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.
+/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the
+/// rudder from the roll and yaw equations together (with aileron yaw and roll due to
+/// rudder both controls enter both; the rudder is the schedule of the aileron-rudder
+/// interconnect, Fig. 9). Angles in rad, rates in rad/s.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 5 add/sub, 14 mul, 2 div, 4 neg, 0 libm (25 operations); straight-line, no branches.
+/// Cost after CSE: 5 add/sub, 16 mul, 1 div, 4 neg, 0 libm (26 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::zero_sideslip_trim`, bit-identical.
 ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_a_zero_sideslip_trim(double p0,
     double delta_e)
@@ -1018,8 +1020,8 @@ ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_a_zero_sideslip_trim(d
     result.alpha = -(t0 * t1);
     result.q = -t2;
     result.r = -t3;
-    result.delta_a = -((t3 * (1.5207 + t2 * 0.705) + p0 * 21.7529) / 327.28);
-    result.n_delta_r_delta_r = t3 * 85.354624 + p0 * t2 * 257.24208;
+    result.delta_a = -(0.0030554876558298704 * (t3 * (1.5207 + t2 * 0.705) + p0 * 21.7529));
+    result.delta_r = 0.0030554876558298704 * (t3 * 85.354624 + p0 * t2 * 257.24208);
     return result;
 }
 
@@ -1479,7 +1481,7 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_a_zero_sideslip_jump_polynomial(
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
 //   trim                                  25      42       3       2       0      72
-//   zero_sideslip_trim                     5      14       2       4       0      25
+//   zero_sideslip_trim                     5      16       1       4       0      26
 //   jacobian5                              1       6       0       5       0      12
 //   residual_denominator                  25      41       1       0       0      67
 //   stiffness                             38      65       2       0       0     105
@@ -1565,15 +1567,16 @@ ROLL_CRITERION_API struct rc_Trim_array2 rc_aircraft_b_trim(double p0, double de
 }
 
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the
-/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron from
-/// the roll equation and `n_delta_r * delta_r` from the yaw equation (the rudder schedule
-/// of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.
+/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the
+/// rudder from the roll and yaw equations together (with aileron yaw and roll due to
+/// rudder both controls enter both; the rudder is the schedule of the aileron-rudder
+/// interconnect, Fig. 9). Angles in rad, rates in rad/s.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 5 add/sub, 14 mul, 2 div, 4 neg, 0 libm (25 operations); straight-line, no branches.
+/// Cost after CSE: 5 add/sub, 16 mul, 1 div, 4 neg, 0 libm (26 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::zero_sideslip_trim`, bit-identical.
 ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_b_zero_sideslip_trim(double p0,
     double delta_e)
@@ -1586,8 +1589,8 @@ ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_b_zero_sideslip_trim(d
     result.alpha = -(t0 * t1);
     result.q = -t2;
     result.r = -t3;
-    result.delta_a = -((t3 * (0.126 + t2 * 0.727) + p0 * 3.933) / 45.83);
-    result.n_delta_r_delta_r = t3 * 10.77005 + p0 * t2 * 32.81428;
+    result.delta_a = -(0.02181976871045167 * (t3 * (0.126 + t2 * 0.727) + p0 * 3.933));
+    result.delta_r = 0.02181976871045167 * (t3 * 10.77005 + p0 * t2 * 32.81428);
     return result;
 }
 

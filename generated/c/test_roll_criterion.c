@@ -51,10 +51,10 @@ static void self_test_aircraft_a(void)
         check("rc_trim(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 10);
     }
     {
-        static const double want[5] = {-0.06195406887351482, -0.18633305754398316, -0.03097703443675741, -0.033389226559441, 26.610384774671438};
-        static const double tol[5] = {8.289131278140726e-17, 2.906781624681873e-16, 4.832393976396252e-17, 5.219809389876355e-17, 7.578996693368889e-14};
+        static const double want[5] = {-0.06195406887351482, -0.18633305754398316, -0.03097703443675741, -0.033389226559441, 0.08130770219589172};
+        static const double tol[5] = {8.289131278140726e-17, 2.906781624681873e-16, 4.832393976396252e-17, 6.702588913905042e-17, 3.21844991458885e-16};
         const struct rc_ZeroSideslipTrim r = rc_zero_sideslip_trim(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659);
-        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.n_delta_r_delta_r};
+        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_zero_sideslip_trim(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659)", got, want, tol, 5);
     }
     {
@@ -135,10 +135,10 @@ static void self_test_aircraft_a(void)
         check("rc_aircraft_a_trim(0.5, 0.03490658503988659, 0.0)", got, want, tol, 10);
     }
     {
-        static const double want[5] = {-0.06195406887351482, -0.18633305754398316, -0.03097703443675741, -0.033389226559441, 26.61038477467144};
-        static const double tol[5] = {1.06750067097443e-16, 4.0381000209592335e-16, 6.02533169219804e-17, 3.743806561283991e-17, 8.012903784829832e-14};
+        static const double want[5] = {-0.06195406887351482, -0.18633305754398316, -0.03097703443675741, -0.033389226559441, 0.08130770219589172};
+        static const double tol[5] = {1.06750067097443e-16, 4.0381000209592335e-16, 6.02533169219804e-17, 3.7438065612839895e-17, 2.809411592418978e-16};
         const struct rc_ZeroSideslipTrim r = rc_aircraft_a_zero_sideslip_trim(0.5, 0.03490658503988659);
-        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.n_delta_r_delta_r};
+        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_aircraft_a_zero_sideslip_trim(0.5, 0.03490658503988659)", got, want, tol, 5);
     }
     {
@@ -219,10 +219,10 @@ static void self_test_aircraft_a(void)
         check("rc_trim(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 10);
     }
     {
-        static const double want[5] = {0.09580073263313676, 0.28813028346742214, 0.12454095242307779, -0.08590405404454085, -106.98514962586775};
-        static const double tol[5] = {1.3160336684635744e-16, 4.597880610865656e-16, 1.9873802347803417e-16, 1.3479630340910549e-16, 3.0853521609684674e-13};
+        static const double want[5] = {0.09580073263313676, 0.28813028346742214, 0.12454095242307779, -0.08590405404454085, -0.32689180403895063};
+        static const double tol[5] = {1.3160336684635744e-16, 4.597880610865656e-16, 1.9873802347803417e-16, 1.7294536689266272e-16, 1.305648351578015e-15};
         const struct rc_ZeroSideslipTrim r = rc_zero_sideslip_trim(&rc_aircraft_a_derivatives, 1.3, -0.05);
-        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.n_delta_r_delta_r};
+        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_zero_sideslip_trim(&rc_aircraft_a_derivatives, 1.3, -0.05)", got, want, tol, 5);
     }
     {
@@ -303,10 +303,10 @@ static void self_test_aircraft_a(void)
         check("rc_aircraft_a_trim(1.3, -0.05, 0.01)", got, want, tol, 10);
     }
     {
-        static const double want[5] = {0.09580073263313676, 0.28813028346742214, 0.12454095242307779, -0.08590405404454084, -106.98514962586776};
-        static const double tol[5] = {1.7143087326111228e-16, 6.435510443390434e-16, 2.505137818172154e-16, 9.716196289301435e-17, 3.292569761755688e-13};
+        static const double want[5] = {0.09580073263313676, 0.28813028346742214, 0.12454095242307779, -0.08590405404454084, -0.32689180403895063};
+        static const double tol[5] = {1.7143087326111228e-16, 6.435510443390434e-16, 2.505137818172154e-16, 9.716196289301435e-17, 1.1512097492624396e-15};
         const struct rc_ZeroSideslipTrim r = rc_aircraft_a_zero_sideslip_trim(1.3, -0.05);
-        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.n_delta_r_delta_r};
+        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_aircraft_a_zero_sideslip_trim(1.3, -0.05)", got, want, tol, 5);
     }
     {
@@ -388,9 +388,9 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[5] = {0.0, 0.0, 0.0, -0.16284100769982893, 0.0};
-        static const double tol[5] = {0.0, 0.0, 0.0, 2.531057705421175e-16, 0.0};
+        static const double tol[5] = {0.0, 0.0, 0.0, 3.2542170498272253e-16, 0.0};
         const struct rc_ZeroSideslipTrim r = rc_zero_sideslip_trim(&rc_aircraft_a_derivatives, 2.45, 0.0);
-        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.n_delta_r_delta_r};
+        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_zero_sideslip_trim(&rc_aircraft_a_derivatives, 2.45, 0.0)", got, want, tol, 5);
     }
     {
@@ -472,9 +472,9 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[5] = {0.0, 0.0, 0.0, -0.1628410076998289, 0.0};
-        static const double tol[5] = {0.0, 0.0, 0.0, 1.807898361015125e-16, 0.0};
+        static const double tol[5] = {0.0, 0.0, 0.0, 1.8078983610151245e-16, 0.0};
         const struct rc_ZeroSideslipTrim r = rc_aircraft_a_zero_sideslip_trim(2.45, 0.0);
-        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.n_delta_r_delta_r};
+        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_aircraft_a_zero_sideslip_trim(2.45, 0.0)", got, want, tol, 5);
     }
     {
@@ -572,7 +572,7 @@ static void outputs_aircraft_a(const double *x, double *o)
         o[11] = r.q;
         o[12] = r.r;
         o[13] = r.delta_a;
-        o[14] = r.n_delta_r_delta_r;
+        o[14] = r.delta_r;
     }
     {
         const struct rc_matrix5x5 r = rc_jacobian5(k, x[0], x[1], x[4], x[6], x[7]);
@@ -683,7 +683,7 @@ static void outputs_aircraft_a(const double *x, double *o)
         o[86] = r.q;
         o[87] = r.r;
         o[88] = r.delta_a;
-        o[89] = r.n_delta_r_delta_r;
+        o[89] = r.delta_r;
     }
     {
         const struct rc_matrix5x5 r = rc_aircraft_a_jacobian5(x[0], x[1], x[4], x[6], x[7]);
@@ -788,10 +788,10 @@ static void self_test_aircraft_b(void)
         check("rc_trim(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 10);
     }
     {
-        static const double want[5] = {-0.041220317144740684, -0.05478180148536037, -0.020610158572370342, -0.04298314876226451, 1.1207851247548726};
-        static const double tol[5] = {5.509726672703725e-17, 8.538827094813086e-17, 3.2125007881162844e-17, 6.69739239348029e-17, 3.1415754335792107e-15};
+        static const double want[5] = {-0.041220317144740684, -0.05478180148536037, -0.020610158572370342, -0.04298314876226451, 0.024455272196266038};
+        static const double tol[5] = {5.509726672703725e-17, 8.538827094813086e-17, 3.2125007881162844e-17, 8.606227650550464e-17, 9.56992556129053e-17};
         const struct rc_ZeroSideslipTrim r = rc_zero_sideslip_trim(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659);
-        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.n_delta_r_delta_r};
+        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_zero_sideslip_trim(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659)", got, want, tol, 5);
     }
     {
@@ -872,10 +872,10 @@ static void self_test_aircraft_b(void)
         check("rc_aircraft_b_trim(0.5, 0.03490658503988659, 0.0)", got, want, tol, 10);
     }
     {
-        static const double want[5] = {-0.04122031714474068, -0.05478180148536036, -0.02061015857237034, -0.04298314876226451, 1.1207851247548726};
-        static const double tol[5] = {7.317139655065778e-17, 1.2157279295162086e-16, 4.1162072792973107e-17, 4.7930100221579187e-17, 3.3841487947866528e-15};
+        static const double want[5] = {-0.04122031714474068, -0.05478180148536036, -0.02061015857237034, -0.04298314876226451, 0.02445527219626604};
+        static const double tol[5] = {7.317139655065778e-17, 1.2157279295162086e-16, 4.1162072792973107e-17, 4.793010022157918e-17, 8.470166649030653e-17};
         const struct rc_ZeroSideslipTrim r = rc_aircraft_b_zero_sideslip_trim(0.5, 0.03490658503988659);
-        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.n_delta_r_delta_r};
+        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_aircraft_b_zero_sideslip_trim(0.5, 0.03490658503988659)", got, want, tol, 5);
     }
     {
@@ -956,10 +956,10 @@ static void self_test_aircraft_b(void)
         check("rc_trim(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 10);
     }
     {
-        static const double want[5] = {0.06260483054194202, 0.08320181979024094, 0.08138627970452463, -0.11144595678592584, -4.425804456170175};
-        static const double tol[5] = {8.537431846118585e-17, 1.3193698443928371e-16, 1.2905799832285089e-16, 1.7367798032255784e-16, 1.2525299975719193e-14};
+        static const double want[5] = {0.06260483054194202, 0.08320181979024094, 0.08138627970452463, -0.11144595678592584, -0.09657002959131955};
+        static const double tol[5] = {8.537431846118585e-17, 1.3193698443928371e-16, 1.2905799832285089e-16, 2.231699272126039e-16, 3.8051341884023447e-16};
         const struct rc_ZeroSideslipTrim r = rc_zero_sideslip_trim(&rc_aircraft_b_derivatives, 1.3, -0.05);
-        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.n_delta_r_delta_r};
+        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_zero_sideslip_trim(&rc_aircraft_b_derivatives, 1.3, -0.05)", got, want, tol, 5);
     }
     {
@@ -1040,10 +1040,10 @@ static void self_test_aircraft_b(void)
         check("rc_aircraft_b_trim(1.3, -0.05, 0.01)", got, want, tol, 10);
     }
     {
-        static const double want[5] = {0.06260483054194202, 0.08320181979024094, 0.08138627970452463, -0.11144595678592584, -4.425804456170176};
-        static const double tol[5] = {1.1448067113576891e-16, 1.890938423481723e-16, 1.6689625679980885e-16, 1.2441327991530736e-16, 1.3600227101413943e-14};
+        static const double want[5] = {0.06260483054194202, 0.08320181979024094, 0.08138627970452463, -0.11144595678592584, -0.09657002959131956};
+        static const double tol[5] = {1.1448067113576891e-16, 1.890938423481723e-16, 1.6689625679980885e-16, 1.2441327991530734e-16, 3.396395178988751e-16};
         const struct rc_ZeroSideslipTrim r = rc_aircraft_b_zero_sideslip_trim(1.3, -0.05);
-        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.n_delta_r_delta_r};
+        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_aircraft_b_zero_sideslip_trim(1.3, -0.05)", got, want, tol, 5);
     }
     {
@@ -1125,9 +1125,9 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[5] = {0.0, 0.0, 0.0, -0.21025201832860574, 0.0};
-        static const double tol[5] = {0.0, 0.0, 0.0, 3.2679728441126e-16, 0.0};
+        static const double tol[5] = {0.0, 0.0, 0.0, 4.2016793710019145e-16, 0.0};
         const struct rc_ZeroSideslipTrim r = rc_zero_sideslip_trim(&rc_aircraft_b_derivatives, 2.45, 0.0);
-        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.n_delta_r_delta_r};
+        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_zero_sideslip_trim(&rc_aircraft_b_derivatives, 2.45, 0.0)", got, want, tol, 5);
     }
     {
@@ -1211,7 +1211,7 @@ static void self_test_aircraft_b(void)
         static const double want[5] = {0.0, 0.0, 0.0, -0.21025201832860574, 0.0};
         static const double tol[5] = {0.0, 0.0, 0.0, 2.3342663172232854e-16, 0.0};
         const struct rc_ZeroSideslipTrim r = rc_aircraft_b_zero_sideslip_trim(2.45, 0.0);
-        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.n_delta_r_delta_r};
+        const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_aircraft_b_zero_sideslip_trim(2.45, 0.0)", got, want, tol, 5);
     }
     {
@@ -1309,7 +1309,7 @@ static void outputs_aircraft_b(const double *x, double *o)
         o[11] = r.q;
         o[12] = r.r;
         o[13] = r.delta_a;
-        o[14] = r.n_delta_r_delta_r;
+        o[14] = r.delta_r;
     }
     {
         const struct rc_matrix5x5 r = rc_jacobian5(k, x[0], x[1], x[4], x[6], x[7]);
@@ -1420,7 +1420,7 @@ static void outputs_aircraft_b(const double *x, double *o)
         o[86] = r.q;
         o[87] = r.r;
         o[88] = r.delta_a;
-        o[89] = r.n_delta_r_delta_r;
+        o[89] = r.delta_r;
     }
     {
         const struct rc_matrix5x5 r = rc_aircraft_b_jacobian5(x[0], x[1], x[4], x[6], x[7]);

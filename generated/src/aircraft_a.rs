@@ -5,7 +5,7 @@
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
 //   trim                                  25      42       3       2       0      72
-//   zero_sideslip_trim                     5      14       2       4       0      25
+//   zero_sideslip_trim                     5      16       1       4       0      26
 //   jacobian5                              1       6       0       5       0      12
 //   residual_denominator                  25      41       1       0       0      67
 //   stiffness                             38      65       2       0       0     105
@@ -98,15 +98,16 @@ pub fn trim(p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the
-/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron from
-/// the roll equation and `n_delta_r * delta_r` from the yaw equation (the rudder schedule
-/// of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.
+/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the
+/// rudder from the roll and yaw equations together (with aileron yaw and roll due to
+/// rudder both controls enter both; the rudder is the schedule of the aileron-rudder
+/// interconnect, Fig. 9). Angles in rad, rates in rad/s.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 5 add/sub, 14 mul, 2 div, 4 neg, 0 libm (25 operations); straight-line, no branches.
+/// Cost after CSE: 5 add/sub, 16 mul, 1 div, 4 neg, 0 libm (26 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn zero_sideslip_trim(p0: f64, delta_e: f64) -> ZeroSideslipTrim {
@@ -118,8 +119,8 @@ pub fn zero_sideslip_trim(p0: f64, delta_e: f64) -> ZeroSideslipTrim {
         alpha: -(t0 * t1),
         q: -t2,
         r: -t3,
-        delta_a: -((t3 * (1.5207 + t2 * 0.705) + p0 * 21.7529) / 327.28),
-        n_delta_r_delta_r: t3 * 85.354624 + p0 * t2 * 257.24208,
+        delta_a: -(0.0030554876558298704 * (t3 * (1.5207 + t2 * 0.705) + p0 * 21.7529)),
+        delta_r: 0.0030554876558298704 * (t3 * 85.354624 + p0 * t2 * 257.24208),
     }
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]

@@ -5,7 +5,7 @@
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
 //   trim                                  42      84       4       2       1     133
-//   zero_sideslip_trim                     9      21       2       1       0      33
+//   zero_sideslip_trim                     9      23       2       1       0      35
 //   jacobian5                              2       6       0       4       0      12
 //   residual_denominator                  41      83       3       0       1     128
 //   stiffness                             61     110       4       0       1     176
@@ -95,8 +95,8 @@ pub struct ZeroSideslipTrim {
     pub r: f64,
     /// Aileron deflection holding the trim, rad.
     pub delta_a: f64,
-    /// Yawing acceleration the rudder must supply, n_delta_r * delta_r, 1/s^2 (divide by n_delta_r for the schedule).
-    pub n_delta_r_delta_r: f64,
+    /// Rudder deflection holding zero sideslip (the schedule), rad; non-finite without lateral control authority (l_delta_a n_delta_r = l_delta_r n_delta_a).
+    pub delta_r: f64,
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
@@ -174,15 +174,16 @@ pub fn trim(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the
-/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron from
-/// the roll equation and `n_delta_r * delta_r` from the yaw equation (the rudder schedule
-/// of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.
+/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the
+/// rudder from the roll and yaw equations together (with aileron yaw and roll due to
+/// rudder both controls enter both; the rudder is the schedule of the aileron-rudder
+/// interconnect, Fig. 9). Angles in rad, rates in rad/s.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 9 add/sub, 21 mul, 2 div, 1 neg, 0 libm (33 operations); straight-line, no branches.
+/// Cost after CSE: 9 add/sub, 23 mul, 2 div, 1 neg, 0 libm (35 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn zero_sideslip_trim(k: &Derivatives, p0: f64, delta_e: f64) -> ZeroSideslipTrim {
@@ -190,15 +191,15 @@ pub fn zero_sideslip_trim(k: &Derivatives, p0: f64, delta_e: f64) -> ZeroSidesli
     let t1 = 1.0 / (k.z_alpha * k.m_q - (k.m_alpha + p0 * (p0 * k.c)));
     let t2 = k.z_alpha * t0 * t1;
     let t3 = p0 * t0 * t1;
-    let t4 = t3 * (k.l_r + k.e * t2) + p0 * k.l_p;
-    let t5 = p0 * (k.n_p + k.d * t2) + k.n_r * t3;
+    let t4 = 1.0 / (k.l_delta_a * k.n_delta_r - k.n_delta_a * k.l_delta_r);
+    let t5 = t3 * (k.l_r + k.e * t2) + p0 * k.l_p;
+    let t6 = p0 * (k.n_p + k.d * t2) + k.n_r * t3;
     ZeroSideslipTrim {
         alpha: t0 * t1,
         q: -t2,
         r: t3,
-        delta_a: (k.l_delta_r * t5 - k.n_delta_r * t4)
-            / (k.l_delta_a * k.n_delta_r - k.n_delta_a * k.l_delta_r),
-        n_delta_r_delta_r: k.n_delta_a * t4 - k.l_delta_a * t5,
+        delta_a: t4 * (k.l_delta_r * t6 - k.n_delta_r * t5),
+        delta_r: t4 * (k.n_delta_a * t5 - k.l_delta_a * t6),
     }
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]

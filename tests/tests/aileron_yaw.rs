@@ -206,8 +206,14 @@ fn generated_trim_returns_both_branches_and_each_satisfies_all_five_pss_equation
                     continue;
                 }
                 let res = pss_rhs(&k, &x, &[t.delta_a, de(), dr]);
-                let scale = x.iter().chain([&t.delta_a]).fold(1.0f64, |m, v| m.max(v.abs()));
-                assert!(res.iter().all(|r| r.abs() < 1e-9 * scale * scale * 300.0), "{res:?}");
+                let scale = x
+                    .iter()
+                    .chain([&t.delta_a])
+                    .fold(1.0f64, |m, v| m.max(v.abs()));
+                assert!(
+                    res.iter().all(|r| r.abs() < 1e-9 * scale * scale * 300.0),
+                    "{res:?}"
+                );
                 found.push(t.delta_a);
             }
             // The same trims as the oracle's (LU solves and the roll quadratic), no more, no
@@ -219,7 +225,9 @@ fn generated_trim_returns_both_branches_and_each_satisfies_all_five_pss_equation
                 .collect();
             for da in &oracle {
                 assert!(
-                    found.iter().any(|f| (f - da).abs() < 1e-8 * (1.0 + da.abs())),
+                    found
+                        .iter()
+                        .any(|f| (f - da).abs() < 1e-8 * (1.0 + da.abs())),
                     "oracle trim {da} missing from {branches:?}"
                 );
             }
@@ -227,9 +235,48 @@ fn generated_trim_returns_both_branches_and_each_satisfies_all_five_pss_equation
             checked += 1;
         }
     }
-    assert!(checked >= 60 && two >= 20, "{checked} roll rates, {two} with two trims");
+    assert!(
+        checked >= 60 && two >= 20,
+        "{checked} roll rates, {two} with two trims"
+    );
     // Without aileron yaw there is one trim: the second element is not a number.
     let k = paper_tests::random_params(&mut rng);
     let t = roll_criterion::trim(&paper_tests::generated_derivatives(&k), 1.0, de(), 0.0);
-    assert!(t[0].delta_a.is_finite() && !t[1].delta_a.is_finite(), "{t:?}");
+    assert!(
+        t[0].delta_a.is_finite() && !t[1].delta_a.is_finite(),
+        "{t:?}"
+    );
+}
+
+#[test]
+fn generated_zero_sideslip_trim_holds_with_aileron_yaw_and_roll_due_to_rudder() {
+    // Both lateral controls enter both lateral equations: the aileron and rudder of the
+    // generated zero-sideslip trim must be the oracle's 2x2 solve, and hold all five equations.
+    let mut rng = Lcg(99);
+    let mut checked = 0;
+    for _ in 0..20 {
+        let k = random_yawing(&mut rng);
+        let g = paper_tests::generated_derivatives(&k);
+        for p0 in [0.4, 1.3, 2.6] {
+            let t = roll_criterion::zero_sideslip_trim(&g, p0, de());
+            let (x, da, dr) = paper_tests::zero_sideslip_trim(&k, p0, de()).unwrap();
+            let close = |a: f64, b: f64| (a - b).abs() < 1e-9 * (1.0 + b.abs());
+            assert!(
+                close(t.delta_a, da) && close(t.delta_r, dr),
+                "{t:?} vs {da} {dr}"
+            );
+            assert!(
+                close(t.alpha, x[0]) && close(t.q, x[3]) && close(t.r, x[4]),
+                "{t:?}"
+            );
+            let res = pss_rhs(
+                &k,
+                &[t.alpha, 0.0, p0, t.q, t.r],
+                &[t.delta_a, de(), t.delta_r],
+            );
+            assert!(res.iter().all(|r| r.abs() < 1e-9), "{res:?}");
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 60);
 }

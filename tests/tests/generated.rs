@@ -234,7 +234,10 @@ fn det_k_sign_changes_where_a_real_eigenvalue_of_j5_crosses_zero() {
                 gen::residual_denominator(&g, p_lo, de, 0.0),
                 gen::residual_denominator(&g, p_hi, de, 0.0),
             );
-            let (ta, tb) = (gen::trim(&g, p_lo, de, 0.0)[0], gen::trim(&g, p_hi, de, 0.0)[0]);
+            let (ta, tb) = (
+                gen::trim(&g, p_lo, de, 0.0)[0],
+                gen::trim(&g, p_hi, de, 0.0)[0],
+            );
             let finite = [a, b, ta.alpha, tb.alpha]
                 .iter()
                 .all(|v| v.is_finite() && v.abs() < 1e6);

@@ -84,8 +84,8 @@ pub fn structs() -> Vec<StructSpec> {
                 ("r", "Yaw rate R_0, rad/s."),
                 ("delta_a", "Aileron deflection holding the trim, rad."),
                 (
-                    "n_delta_r_delta_r",
-                    "Yawing acceleration the rudder must supply, n_delta_r * delta_r, 1/s^2 (divide by n_delta_r for the schedule).",
+                    "delta_r",
+                    "Rudder deflection holding zero sideslip (the schedule), rad; non-finite without lateral control authority (l_delta_a n_delta_r = l_delta_r n_delta_a).",
                 ),
             ],
         ),
@@ -539,7 +539,13 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         let mut outputs = Vec::new();
         for branch in 0..2 {
             let [a, b, q, r, da] = c.trim_branch(d, branch);
-            for (name, id) in [("alpha", a), ("beta", b), ("q", q), ("r", r), ("delta_a", da)] {
+            for (name, id) in [
+                ("alpha", a),
+                ("beta", b),
+                ("q", q),
+                ("r", r),
+                ("delta_a", da),
+            ] {
                 outputs.push((name.to_string(), id));
             }
         }
@@ -567,27 +573,30 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         let args = vec![P0, DE];
         let mut c = Ctx::new(t, &args);
         let [a, q, r] = c.zs_trim(d);
-        let num = c.poly(&d.zs_delta_a.num);
+        // The roll and yaw equations hold the trim with both lateral controls (Cramer on the
+        // 2x2 system, one reciprocal of its determinant l_delta_a n_delta_r - l_delta_r n_delta_a).
         let den = c.poly(&d.zs_delta_a.den);
-        let da = c.dag.div(num, den);
-        c.bind(s.delta_a, da);
-        // n_delta_r * delta_r = -(yaw equation without the rudder term): the numerator of the
-        // schedule, whose denominator is n_delta_r itself.
-        let ndr = c.poly(&d.zs_delta_r.num);
+        let one = c.dag.constant(Q::ONE);
+        let inv = c.dag.div(one, den);
+        let num_a = c.poly(&d.zs_delta_a.num);
+        let da = c.dag.mul(num_a, inv);
+        let num_r = c.poly(&d.zs_delta_r.num);
+        let dr = c.dag.mul(num_r, inv);
         let outputs = vec![
             ("alpha".into(), a),
             ("q".into(), q),
             ("r".into(), r),
             ("delta_a".into(), da),
-            ("n_delta_r_delta_r".into(), ndr),
+            ("delta_r".into(), dr),
         ];
         out.push(c.finish(
             "zero_sideslip_trim",
             lines(&[
                 "Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the",
-                "rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron from",
-                "the roll equation and `n_delta_r * delta_r` from the yaw equation (the rudder schedule",
-                "of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.",
+                "rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the",
+                "rudder from the roll and yaw equations together (with aileron yaw and roll due to",
+                "rudder both controls enter both; the rudder is the schedule of the aileron-rudder",
+                "interconnect, Fig. 9). Angles in rad, rates in rad/s.",
             ]),
             t,
             args,

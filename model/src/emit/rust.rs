@@ -144,7 +144,10 @@ pub fn function(f: &Function, header_doc: &[String]) -> TokenStream {
                     quote!(#s { #(#fields: #vs),* })
                 })
                 .collect();
-            let (s, n) = (Ident::new(s, Span::call_site()), Literal::usize_unsuffixed(*n));
+            let (s, n) = (
+                Ident::new(s, Span::call_site()),
+                Literal::usize_unsuffixed(*n),
+            );
             (quote!([#s; #n]), quote!([#(#values),*]))
         }
     };

@@ -12,6 +12,12 @@ mod b {
     roll_criterion_derive::roll_criterion!(aircraft = "../aircraft/b.toml");
 }
 
+/// The fighter of `aircraft/fighter.toml`: nondimensional body-axis data with aileron yaw and
+/// a product of inertia (converted to principal axes when the macro loads it).
+mod fighter {
+    roll_criterion_derive::roll_criterion!(aircraft = "../aircraft/fighter.toml");
+}
+
 /// The parametric form.
 mod parametric {
     roll_criterion_derive::roll_criterion!(parametric);
@@ -184,4 +190,56 @@ fn macro_equals_committed_generated_aircraft_a() {
         bits(&a::divergence_roll_rates()),
         bits(&g::divergence_roll_rates())
     );
+}
+
+#[test]
+fn fighter_with_aileron_yaw_expands_and_its_trims_hold_the_roll_equation() {
+    // The expansion folds the converted data; the parametric form takes the same converted
+    // values from the loader. Both trims (when real) must zero the PSS equations, which are
+    // written out here from Appendix A.2 with the aileron-yaw term.
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../aircraft/fighter.toml");
+    let v = model::aircraft::load(&path).unwrap().values_f64();
+    let k = parametric::Derivatives {
+        c: v[0],
+        d: v[1],
+        e: v[2],
+        z_alpha: v[3],
+        y_beta: v[4],
+        l_p: v[5],
+        l_r: v[6],
+        l_beta: v[7],
+        l_delta_a: v[8],
+        m_q: v[9],
+        m_alpha: v[10],
+        m_delta_e: v[11],
+        n_p: v[12],
+        n_r: v[13],
+        n_beta: v[14],
+        n_delta_a: v[15],
+        n_delta_r: v[16],
+        l_delta_r: v[17],
+    };
+    assert!(k.n_delta_a != 0.0 && k.l_delta_r != 0.0, "{k:?}");
+    let mut real = 0;
+    for p0 in [0.5, 1.5, 2.5] {
+        let folded = fighter::trim(p0, DE, 0.0);
+        let param = parametric::trim(&k, p0, DE, 0.0);
+        for (t, u) in folded.iter().zip(&param) {
+            if !t.delta_a.is_finite() {
+                continue;
+            }
+            let (a, b, q, r, da) = (t.alpha, t.beta, t.q, t.r, t.delta_a);
+            let f = [
+                q - p0 * b + k.z_alpha * a,
+                p0 * a - r + k.y_beta * b,
+                k.l_p * p0 + k.l_beta * b + k.l_r * r - k.e * q * r + k.l_delta_a * da,
+                k.m_q * q + k.m_alpha * a + k.c * p0 * r + k.m_delta_e * DE,
+                k.n_r * r + k.n_beta * b + k.n_p * p0 - k.d * p0 * q + k.n_delta_a * da,
+            ];
+            assert!(f.iter().all(|v| v.abs() < 1e-9), "{p0}: {f:?}");
+            assert_close(u.delta_a, da, 1e-9, "parametric and folded trims");
+            real += 1;
+        }
+    }
+    assert!(real >= 3, "{real} real trims");
 }

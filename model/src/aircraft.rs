@@ -204,6 +204,26 @@ pub struct Aircraft {
 }
 
 impl Aircraft {
+    /// Whether control deflections (rad) are within the `[limits]`: the aileron and elevator
+    /// always, the rudder when given. `None` when the file sets none of the limits that apply.
+    pub fn within_limits(&self, delta_a: f64, delta_e: f64, delta_r: Option<f64>) -> Option<bool> {
+        let within = |limit: Option<f64>, x: f64| limit.map(|l| x.to_degrees().abs() <= l);
+        [
+            within(self.limits.aileron_deg, delta_a),
+            within(self.limits.elevator_deg, delta_e),
+            delta_r.and_then(|dr| within(self.limits.rudder_deg, dr)),
+        ]
+        .into_iter()
+        .flatten()
+        .reduce(|a, b| a && b)
+    }
+
+    /// Whether a state is within the `[validity]` range of the linear aerodynamics (rad).
+    pub fn valid(&self, alpha: f64, beta: f64) -> bool {
+        alpha.to_degrees().abs() <= self.validity.alpha_max_deg
+            && beta.to_degrees().abs() <= self.validity.beta_max_deg
+    }
+
     /// Builds an aircraft from exact values in [`Param::ALL`] order, without limits and with the
     /// default validity range.
     pub fn new(name: impl Into<String>, values: Vec<BigRational>, speed: f64) -> Self {

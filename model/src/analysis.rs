@@ -187,7 +187,6 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         return Err(AnalysisError::Degenerate("det J5"));
     }
     let divergence_roll_rates = positive_roots(&det_a).iter().map(|r| r.value).collect();
-    let marks = Marks::new(aircraft, delta_e_rad);
     let g = in_aileron(&d.trim_condition);
     // The trim numerators share det A's scale, so that their ratios are the trim.
     let trims = in_aileron_all(&[&d.det_a, &d.trim[0], &d.trim[1], &d.trim[2], &d.trim[3]]);
@@ -205,8 +204,8 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
             beta,
             q,
             r,
-            within_limits: marks.within(da, None),
-            valid: marks.valid(alpha, beta),
+            within_limits: aircraft.within_limits(da, delta_e_rad, None),
+            valid: aircraft.valid(alpha, beta),
         }
     };
 
@@ -290,8 +289,8 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
                 r,
                 delta_r_rad: dr,
                 delta_r_deg: dr.to_degrees(),
-                within_limits: marks.within(da, Some(dr)),
-                valid: marks.valid(alpha, 0.0),
+                within_limits: aircraft.within_limits(da, delta_e_rad, Some(dr)),
+                valid: aircraft.valid(alpha, 0.0),
             }
         })
         .collect();
@@ -378,42 +377,6 @@ fn check(a: &Analysis) -> Result<(), AnalysisError> {
         )?;
     }
     Ok(())
-}
-
-/// The aircraft's limits and validity range, applied to reported points.
-struct Marks {
-    limits: crate::aircraft::Limits,
-    validity: crate::aircraft::Validity,
-    delta_e_deg: f64,
-}
-
-impl Marks {
-    fn new(aircraft: &Aircraft, delta_e_rad: f64) -> Marks {
-        Marks {
-            limits: aircraft.limits,
-            validity: aircraft.validity,
-            delta_e_deg: delta_e_rad.to_degrees(),
-        }
-    }
-
-    /// Within the aileron, elevator and (when given) rudder limits; `None` when no limit applies.
-    fn within(&self, delta_a: f64, delta_r: Option<f64>) -> Option<bool> {
-        let checks = [
-            self.limits
-                .aileron_deg
-                .map(|l| delta_a.to_degrees().abs() <= l),
-            self.limits
-                .elevator_deg
-                .map(|l| self.delta_e_deg.abs() <= l),
-            delta_r.and_then(|dr| self.limits.rudder_deg.map(|l| dr.to_degrees().abs() <= l)),
-        ];
-        checks.iter().flatten().copied().reduce(|a, b| a && b)
-    }
-
-    fn valid(&self, alpha: f64, beta: f64) -> bool {
-        alpha.to_degrees().abs() <= self.validity.alpha_max_deg
-            && beta.to_degrees().abs() <= self.validity.beta_max_deg
-    }
 }
 
 /// The aileron of the trim at a root `p0` of the resultant of `g` and `f` in delta_a: the root

@@ -529,7 +529,7 @@ fn diagram_summary(d: &Diagram) -> String {
     );
     for p in &d.special_points {
         s += &format!(
-            "  {:<7} {:>12} {:>10} {:>10} {:>10} {:>10} {:>10} {:>12}\n",
+            "  {:<7} {:>12} {:>10} {:>10} {:>10} {:>10} {:>10} {:>12}{}\n",
             p.kind.name(),
             fixed(p.param.to_degrees(), 4),
             fixed(p.p, 6),
@@ -537,7 +537,8 @@ fn diagram_summary(d: &Diagram) -> String {
             fixed(p.beta.to_degrees(), 4),
             fixed(p.q, 5),
             fixed(p.r, 5),
-            p.frequency.map_or(String::new(), |f| fixed(f, 5))
+            p.frequency.map_or(String::new(), |f| fixed(f, 5)),
+            marks(p.within_limits, p.valid)
         );
     }
     s

@@ -489,6 +489,16 @@ pub fn report(
         }
         progress(0.7);
 
+        // The rudder limit: the schedule saturates there, and the sideslip builds up beyond.
+        for (side, at) in ["negative", "positive"].iter().zip(sim.rudder_saturation()) {
+            if let Some(da) = at {
+                notes.skipped.push(format!(
+                    "zero-sideslip schedule: the rudder saturates at its limit for {side} aileron \
+                     beyond delta_a = {:.2} deg; Fig. 10 steps past it hold the rudder at the limit",
+                    da.to_degrees()
+                ));
+            }
+        }
         // Fig. 10: zero-sideslip scheduling; steps up to past the departure point, where the
         // schedule exists.
         let departure = analysis

@@ -357,6 +357,8 @@ pub struct Simulator {
     trims: Trims,
     schedule: Result<RudderSchedule, SimError>,
     speed: f64,
+    /// |delta_r| limit of the aircraft's `[limits]`, rad: the schedule saturates there.
+    rudder_limit: Option<f64>,
 }
 
 impl Simulator {
@@ -375,6 +377,7 @@ impl Simulator {
             trims,
             schedule,
             speed: aircraft.speed,
+            rudder_limit: aircraft.limits.rudder_deg.map(f64::to_radians),
         })
     }
 
@@ -388,12 +391,52 @@ impl Simulator {
         self.schedule.as_ref().map_err(Clone::clone)
     }
 
-    /// The rudder deflection of `rudder` at aileron `delta_a` (rad).
+    /// The rudder deflection of `rudder` at aileron `delta_a` (rad). The zero-sideslip schedule
+    /// saturates at the aircraft's rudder limit: beyond it the rudder stays at the limit and
+    /// the sideslip is no longer held at zero.
     pub fn rudder_at(&self, rudder: Rudder, delta_a: f64) -> Result<f64, SimError> {
         match rudder {
             Rudder::Fixed(v) => Ok(v),
-            Rudder::ZeroSideslip => self.schedule()?.delta_r(delta_a),
+            Rudder::ZeroSideslip => {
+                let dr = self.schedule()?.delta_r(delta_a)?;
+                Ok(self.rudder_limit.map_or(dr, |l| dr.clamp(-l, l)))
+            }
         }
+    }
+
+    /// Where the zero-sideslip schedule reaches the rudder limit: for each aileron direction
+    /// (negative first), the aileron deflection (rad) nearest zero at which |delta_r| reaches
+    /// the limit, by bisection on the schedule; `None` for a direction where the schedule stays
+    /// inside the limit (or when there is no limit or no schedule).
+    pub fn rudder_saturation(&self) -> [Option<f64>; 2] {
+        let (Some(limit), Ok(schedule)) = (self.rudder_limit, self.schedule()) else {
+            return [None, None];
+        };
+        let over = |da: f64| schedule.delta_r(da).map_or(f64::NAN, |dr| dr.abs() - limit);
+        let (lo, hi) = schedule.range();
+        let side = |end: f64| -> Option<f64> {
+            // March from 0 to the end of the schedule; the first crossing, refined.
+            const STEPS: usize = 400;
+            let mut prev = 0.0;
+            for k in 1..=STEPS {
+                let da = end * k as f64 / STEPS as f64;
+                if over(da) >= 0.0 {
+                    let (mut a, mut b) = (prev, da);
+                    for _ in 0..60 {
+                        let m = 0.5 * (a + b);
+                        if over(m) >= 0.0 {
+                            b = m;
+                        } else {
+                            a = m;
+                        }
+                    }
+                    return Some(b);
+                }
+                prev = da;
+            }
+            None
+        };
+        [side(lo), side(hi)]
     }
 
     /// Runs one simulation.

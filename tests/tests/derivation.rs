@@ -314,6 +314,15 @@ fn analysis_polynomials_are_proportional_to_the_specialised_derivation() {
             .collect();
         aircraft.push(Aircraft::new(format!("A with {label}"), values, 150.0));
     }
+    // Aileron yaw and roll due to rudder: the trim gains delta_a, the trim condition turns
+    // quadratic.
+    let mut values: Vec<_> = Param::ALL
+        .iter()
+        .map(|p| Aircraft::a().exact(*p).clone())
+        .collect();
+    values[Param::NDeltaA.index()] = model::aircraft::f64_to_rational(8.0).unwrap();
+    values[Param::LDeltaR.index()] = model::aircraft::f64_to_rational(-2.5).unwrap();
+    aircraft.push(Aircraft::new("A with aileron yaw", values, 150.0));
     for ac in aircraft {
         let de = 2f64.to_radians();
         // Emitting the specialised functions must not panic either (proc-macro input).
@@ -353,7 +362,13 @@ fn analysis_polynomials_are_proportional_to_the_specialised_derivation() {
         // the two are cleared with different powers of det A, e.g. when E = 0).
         let s = symbols();
         let p0 = Q::ratio(7, 5);
-        let at_p0 = |p: &Poly| p.subs_values(&[(s.p0, p0.clone())]).as_constant().unwrap();
+        // At a rational aileron too: with aileron yaw the trim of P0 depends on it (the
+        // identity holds at every (P0, delta_a), on the equilibrium curve or off it).
+        let at_p0 = |p: &Poly| {
+            p.subs_values(&[(s.p0, p0.clone()), (s.delta_a, Q::ratio(1, 10))])
+                .as_constant()
+                .unwrap()
+        };
         let den = at_p0(&full.det_a);
         let mut trims: Vec<(model::algebra::Sym, Q)> = [s.alpha0, s.beta0, s.q0, s.r0]
             .iter()
@@ -361,6 +376,7 @@ fn analysis_polynomials_are_proportional_to_the_specialised_derivation() {
             .map(|(sym, n)| (*sym, at_p0(n).div(&den)))
             .collect();
         trims.push((s.p0, p0.clone()));
+        trims.push((s.delta_a, Q::ratio(1, 10)));
         let exact = |p: &Poly| p.subs_values(&trims).as_constant().unwrap();
         let det_k = exact(&full.det_j5).div(&exact(&full.d));
         assert_eq!(

@@ -665,3 +665,42 @@ fn a_sweep_past_its_run_limit_is_refused_before_any_run() {
     ));
     assert!(start.elapsed().as_secs() < 5);
 }
+
+#[test]
+fn zero_sideslip_schedule_saturates_at_the_rudder_limit() {
+    // Issue 8: with `[limits] rudder`, the scheduled rudder stops at the limit. Where it gets
+    // there is found independently here: the oracle's zero-sideslip trims along P0 (LU and the
+    // 2x2 lateral solve), bisected on |delta_r| = limit.
+    let mut ac = Aircraft::a();
+    ac.limits.rudder_deg = Some(10.0);
+    let de = 2f64.to_radians();
+    let sim = model::simulation::Simulator::new(&ac, de).unwrap();
+    let k = ac.values_f64();
+    let limit = 10f64.to_radians();
+    let over = |p0: f64| paper_tests::zero_sideslip_trim(&k, p0, de).unwrap().2.abs() - limit;
+    let (mut a, mut b) = (0.0, 0.01);
+    while over(b) < 0.0 {
+        a = b;
+        b += 0.01;
+    }
+    for _ in 0..60 {
+        let m = 0.5 * (a + b);
+        if over(m) < 0.0 {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    let da_oracle = paper_tests::zero_sideslip_trim(&k, b, de).unwrap().1;
+    let [neg, pos] = sim.rudder_saturation();
+    let (neg, pos) = (neg.unwrap(), pos.unwrap());
+    assert!((neg - da_oracle).abs() < 1e-6, "{neg} vs {da_oracle}");
+    assert!((pos + da_oracle).abs() < 1e-6, "mirror: {pos}");
+    // Beyond it the scheduled rudder is the limit, before it the schedule.
+    let r = |da: f64| {
+        sim.rudder_at(model::simulation::Rudder::ZeroSideslip, da)
+            .unwrap()
+    };
+    assert_eq!(r(neg * 1.5).abs(), limit);
+    assert!(r(neg * 0.5).abs() < limit);
+}

@@ -230,6 +230,10 @@ pub struct SpecialPoint {
     pub frequency: Option<f64>,
     /// Index into [`Diagram::branches`] of the branch it was found on.
     pub branch: usize,
+    /// Whether the controls there are within the aircraft's `[limits]` (None: no limit given).
+    pub within_limits: Option<bool>,
+    /// Whether alpha and beta are within the aircraft's `[validity]` range.
+    pub valid: bool,
 }
 
 /// A point of the zero-sideslip rudder schedule (EBA step 1).
@@ -357,11 +361,45 @@ pub fn continue_equilibria(
         Vec::new()
     };
     progress(1.0);
-    Ok(out.finish(
+    let mut diagram = out.finish(
         ac.name.clone(),
         settings.param.name().to_string(),
         rudder_schedule,
-    ))
+    );
+    mark(ac, settings, &mut diagram);
+    Ok(diagram)
+}
+
+/// Marks every special point with the aircraft's limits and validity range. The controls there
+/// are the settings' with the continuation parameter at the point's value; on a zero-sideslip
+/// diagram the rudder is the schedule's at the point's aileron (linear between its points).
+fn mark(ac: &Aircraft, settings: &Settings, d: &mut Diagram) {
+    let schedule = &d.rudder_schedule;
+    let rudder_at = |da: f64| -> Option<f64> {
+        let w = schedule
+            .windows(2)
+            .find(|w| (w[0].delta_a - da) * (w[1].delta_a - da) <= 0.0)?;
+        let (a, b) = (&w[0], &w[1]);
+        let t = if b.delta_a == a.delta_a {
+            0.0
+        } else {
+            (da - a.delta_a) / (b.delta_a - a.delta_a)
+        };
+        Some(a.delta_r + t * (b.delta_r - a.delta_r))
+    };
+    for sp in &mut d.special_points {
+        let (mut da, mut de, mut dr) = (settings.delta_a, settings.delta_e, Some(settings.delta_r));
+        match settings.param {
+            ContinuationParam::DeltaA => da = sp.param,
+            ContinuationParam::DeltaE => de = sp.param,
+            ContinuationParam::DeltaR => dr = Some(sp.param),
+        }
+        if settings.zero_sideslip {
+            dr = rudder_at(da);
+        }
+        sp.within_limits = ac.within_limits(da, de, dr);
+        sp.valid = ac.valid(sp.alpha, sp.beta);
+    }
 }
 
 /// Branches and special points as they are found.
@@ -440,6 +478,8 @@ impl Collect {
                 r: x[4],
                 frequency: f.frequency,
                 branch: id,
+                within_limits: None,
+                valid: true,
             });
             if kind == SpecialKind::Branch {
                 new_bps.push(f.node);

@@ -797,9 +797,9 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
     {
         let args = trim_args[1..].to_vec();
         let mut c = Ctx::new(t, &args);
-        let nda = s.param(Param::NDeltaA);
-        let no_yaw = |p: &Poly| p.subs(nda, &Poly::zero());
-        let trim0: Vec<Poly> = d.trim.iter().map(no_yaw).collect();
+        // The trim without aileron yaw: its delta_a part is n_delta_a times N^a, so it is the
+        // trim at delta_a = 0 whether n_delta_a is a symbol or an aircraft's folded value.
+        let trim0: Vec<Poly> = d.trim.iter().map(|p| p.coeff(s.delta_a, 0)).collect();
         let coeffs = c.homogenize(
             &d.det_j5,
             &[s.alpha0, s.beta0, s.q0, s.r0],

@@ -52,6 +52,7 @@ pub fn document_for(d: &Derivation) -> String {
     w.criterion_section(&mut out, d);
     w.identity_section(&mut out, d);
     w.jump_section(&mut out, d);
+    w.aileron_yaw_section(&mut out, d);
     w.zero_sideslip_section(&mut out, d);
     out.push_str("\\end{document}\n");
     out
@@ -754,7 +755,9 @@ impl<'a> Writer<'a> {
         out.push_str("\\section{Pseudo-steady states (Eqs.~1--5)}\n\n");
         out.push_str(
             "Leaving aside the roll equation, the PSS equations at $p = P_0$ are linear in \
-             $x = [\\alpha, \\beta, q, r]^T$, with $u = [\\delta_e, \\delta_r]^T$:\n\
+             $x = [\\alpha, \\beta, q, r]^T$, with $u = [\\delta_e, \\delta_r, \\delta_a]^T$ \
+             (the paper has $u = [\\delta_e, \\delta_r]^T$: its aircraft have no aileron yaw, \
+             $n_{\\delta a} = 0$, and the aileron then enters the roll equation only):\n\
              \\begin{align*}\n\\dot x &= A x + b u + b_1 P_0 \\tag{1}\n\\end{align*}\n",
         );
         let split = |v: &[Poly], x: Sym| -> Vec<Poly> { v.iter().map(|p| p.coeff(x, 1)).collect() };
@@ -762,7 +765,8 @@ impl<'a> Writer<'a> {
             split(&d.a_rhs, s.delta_e)
                 .into_iter()
                 .zip(split(&d.a_rhs, s.delta_r))
-                .map(|(e, r)| vec![e, r])
+                .zip(split(&d.a_rhs, s.delta_a))
+                .map(|((e, r), a)| vec![e, r, a])
                 .collect(),
         );
         let b1 = split(&d.a_rhs, s.p0);
@@ -780,13 +784,15 @@ impl<'a> Writer<'a> {
                 .collect(),
         );
         let a_ok = printed_a == d.a;
+        // The paper's print is the n_delta_a = 0 case.
+        let nda = s.param(crate::aircraft::Param::NDeltaA);
         let rhs_ok = printed::EQ2_RHS
             .iter()
             .zip(&d.a_rhs)
-            .all(|(p, q)| parse(p) == *q);
+            .all(|(p, q)| parse(p) == q.subs(nda, &Poly::zero()));
         let _ = writeln!(
             out,
-            "Eq.~2: $A$ {}; $b$ and $b_1$ (that is, $b u + b_1 P_0$) {}.\n",
+            "Eq.~2: $A$ {}; $b$ and $b_1$ (that is, $b u + b_1 P_0$) at $n_{{\\delta a}} = 0$ {}.\n",
             if a_ok {
                 "agrees with the paper's print"
             } else {
@@ -1252,6 +1258,139 @@ impl<'a> Writer<'a> {
             } else {
                 "does NOT match the expansion"
             }
+        );
+    }
+
+    fn aileron_yaw_section(&self, out: &mut String, d: &Derivation) {
+        let s = self.s;
+        let p0: &[Sym] = &[s.p0];
+        let trims = self.trims4();
+        out.push_str(
+            "\\section{Aileron yaw: the trim condition and the eliminated jump polynomial}\n\n",
+        );
+        out.push_str(
+            "With aileron yaw ($n_{\\delta a} \\ne 0$) the aileron enters the yaw equation, so \
+             the trim of Eq.~4 is affine in $\\delta_a$, $N = N^0 + \\delta_a N^a$, with\n\
+             \\begin{align*}\n",
+        );
+        let names = ["N^a_\\alpha", "N^a_\\beta", "N^a_Q", "N^a_R"];
+        let rows: Vec<String> = d
+            .trim
+            .iter()
+            .zip(names)
+            .map(|(n, l)| self.rows(l, &self.grouped(&n.coeff(s.delta_a, 1), &[p0]), None))
+            .collect();
+        out.push_str(&rows.join(" \\\\\n"));
+        out.push_str("\n\\end{align*}\n");
+        out.push_str(
+            "($N^0$ is $N$ of Section~2 at $\\delta_a = 0$). The roll equation at the trim, \
+             cleared of $\\det A$, is the \\emph{trim condition}, a quadratic in $\\delta_a$ \
+             (through $-E Q_0 R_0$) whose zero set is the equilibrium curve; a roll rate has \
+             0, 1 or 2 trims:\n\\begin{align*}\n\
+             G(P_0, \\delta_a) = (\\det A)^2\\, \\dot p\\big|_{x = x_0} = g_2 \\delta_a^2 + g_1 \\delta_a + g_0\n\
+             \\end{align*}\nwith, from the roll equation $\\dot p = ",
+        );
+        out.push_str(&self.inline(&self.grouped(&d.roll_at_trim, &[])));
+        out.push_str("$ in the trim symbols,\n\\begin{align*}\n");
+        // Each monomial c_m t^m of the roll equation (degree |m| <= 2 in the trim symbols)
+        // contributes c_m (N^0 + delta_a N^a)^m (det A)^(2 - |m|); collect by powers of delta_a.
+        let groups = self.split(&d.roll_at_trim, &trims);
+        let sym_name = |x: Sym| match x {
+            x if x == s.alpha0 => "\\alpha",
+            x if x == s.beta0 => "\\beta",
+            x if x == s.q0 => "Q",
+            _ => "R",
+        };
+        let mut by_power: [Vec<String>; 3] = Default::default();
+        for (m, c) in &groups {
+            let factors: Vec<Sym> = trims
+                .iter()
+                .flat_map(|x| std::iter::repeat_n(*x, m.exp(*x) as usize))
+                .collect();
+            let deg = factors.len();
+            let den = match 2 - deg {
+                0 => String::new(),
+                1 => " \\det A".into(),
+                k => format!(" (\\det A)^{{{k}}}"),
+            };
+            // delta_a explicit in c (l_delta_a delta_a) shifts the power by one.
+            for (k_c, c_k) in c.coeffs(s.delta_a).iter().enumerate() {
+                if c_k.is_zero() {
+                    continue;
+                }
+                let coef = format!("\\bigl({}\\bigr)", self.inline(&self.grouped(c_k, &[])));
+                // Choose for each factor N^0 or N^a: the count of N^a is the power of delta_a.
+                for pick in 0..(1usize << deg) {
+                    let k = k_c + pick.count_ones() as usize;
+                    if k > 2 {
+                        continue;
+                    }
+                    let ns: Vec<String> = factors
+                        .iter()
+                        .enumerate()
+                        .map(|(i, x)| {
+                            let sup = if pick >> i & 1 == 1 { "a" } else { "0" };
+                            format!(" N^{sup}_{}", sym_name(*x))
+                        })
+                        .collect();
+                    by_power[k].push(format!("{coef}{}{den}", ns.concat()));
+                }
+            }
+        }
+        let rows: Vec<String> = by_power
+            .iter()
+            .enumerate()
+            .map(|(k, terms)| {
+                let body = if terms.is_empty() {
+                    "0".to_string()
+                } else {
+                    terms.join(" + ")
+                };
+                format!("g_{k} &= {body}")
+            })
+            .collect();
+        out.push_str(&rows.join(" \\\\\n"));
+        out.push_str("\n\\end{align*}\n");
+        let nda = s.param(crate::aircraft::Param::NDeltaA);
+        let g2_ok = d
+            .trim_condition()
+            .coeff(s.delta_a, 2)
+            .div_var_pow(nda, 2)
+            .is_some();
+        let _ = writeln!(
+            out,
+            "so $g_2$ carries $n_{{\\delta a}}^2$ ({}) and without aileron yaw $G$ is linear \
+             with $g_1 = l_{{\\delta a}} (\\det A)^2$: the trim of Section~2.\n",
+            if g2_ok {
+                "checked on the expansion"
+            } else {
+                "NOT confirmed by the expansion"
+            }
+        );
+        out.push_str(
+            "Jump points are the trims on the curve where $\\det J_5$ vanishes; on $G = 0$, \
+             $\\det J_5 = (\\partial G / \\partial P_0) / \\det A$ (the Schur complement of \
+             $A$ in $J_5$), so they are where the curve turns in $\\delta_a$. With $F(P_0, \\delta_a) = (\\det A)^2 \\det J_5|_{x = x_0} = f_2 \
+             \\delta_a^2 + f_1 \\delta_a + f_0$ (the $J$ of Section~8 with $N = N^0 + \\delta_a \
+             N^a$), the aileron is eliminated by the resultant\n\\begin{align*}\n\
+             \\operatorname{Res}_{\\delta_a}(G, F) = (g_2 f_0 - g_0 f_2)^2 - (g_2 f_1 - g_1 f_2)\
+             (g_1 f_0 - g_0 f_1),\n\\end{align*}\n\
+             the determinant of the Sylvester matrix, which vanishes exactly where $G$ and $F$ \
+             share a root $\\delta_a$ for the given $P_0$. As $g_2$ and $f_2$ carry \
+             $n_{\\delta a}^2$ and $f_1$ carries $n_{\\delta a}$, the resultant carries \
+             $n_{\\delta a}^2$; the jump polynomial is $J_{ya}(P_0) = \
+             \\operatorname{Res}_{\\delta_a}(G, F) / n_{\\delta a}^2$, continuous in \
+             $n_{\\delta a}$, and at $n_{\\delta a} = 0$\n\\begin{align*}\n\
+             J_{ya}\\big|_{n_{\\delta a} = 0} = g_1^2\\, e\\, J(P_0), \\qquad \
+             g_1 = l_{\\delta a} (\\det A)^2, \\quad e = \\lim f_2 / n_{\\delta a}^2,\n\
+             \\end{align*}\n\
+             where $e$ belongs to the second trim branch, which leaves to infinite aileron as \
+             $n_{\\delta a} \\to 0$: so $J_{ya}$ has the paper's jump roots plus roots whose \
+             trims are at infinity, never reported (\\texttt{tests/tests/aileron\\_yaw.rs} checks \
+             this identity exactly). For an aircraft's data the Sylvester matrix is built on the \
+             actual degrees in $\\delta_a$, which gives $J$ itself when $n_{\\delta a} = 0$. At \
+             each root the common $\\delta_a$ gives the trim. The poles of $\\det K$ on the \
+             curve follow in the same way from $(\\det A)^2 d|_{x = x_0}$ in place of $F$.\n\n",
         );
     }
 

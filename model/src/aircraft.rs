@@ -297,6 +297,20 @@ fn builtin_file(text: &str, file: &str) -> Aircraft {
     }
 }
 
+/// `name` with control characters escaped (`\u{1b}`, `\n`, ...): an aircraft name as it may be
+/// printed on a terminal or written into a report (a file may hold any string).
+pub fn shown(name: &str) -> String {
+    name.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
+}
+
 /// Parses a decimal literal (`-13.52504`, `1e-3`, `2.5E+2`) into the exact rational it denotes.
 pub fn decimal_to_rational(s: &str) -> Option<BigRational> {
     let s = s.trim();

@@ -453,15 +453,7 @@ fn write_file(path: &Path, contents: &[u8]) -> Result<(), Failure> {
 
 /// `name` with control characters escaped (`\u{1b}`, `\n`, ...), safe to print on a terminal.
 fn shown(name: &str) -> String {
-    name.chars()
-        .map(|c| {
-            if c.is_control() {
-                c.escape_default().to_string()
-            } else {
-                c.to_string()
-            }
-        })
-        .collect()
+    aircraft::shown(name)
 }
 
 /// An elevator deflection in degrees converted to rad, or an error in degrees.

@@ -646,7 +646,7 @@ fn markdown(s: &Summary, de: f64) -> String {
     let a = &s.analysis;
     let mut m = format!(
         "# {}: roll-coupling report\n\nElevator {:.2} deg, rudder 0 (unconstrained roll). Criterion of Mahale & Ananthkrishnan (AIAA 2006-6267), derived exactly; see `docs/formulas.tex`.\n\n",
-        a.aircraft,
+        crate::aircraft::shown(&a.aircraft),
         de.to_degrees()
     );
     m += "## Critical roll rates\n\n";

@@ -722,9 +722,45 @@ impl Cx<'_> {
                 }
             }
         }
+        let message = if message.trim().is_empty() {
+            self.cut_off(span.as_ref().map_or(self.text.len(), |s| s.start))
+        } else {
+            message
+        };
         AircraftError::Syntax {
             at: self.at(span.as_ref()),
             message,
+        }
+    }
+
+    /// What to say where the parser stops without a message (a value cut off at the end of
+    /// the file): the key of that line, with its table, and what it expects.
+    fn cut_off(&self, offset: usize) -> String {
+        let offset = offset.min(self.text.len());
+        let line_start = self.text[..offset].rfind('\n').map_or(0, |i| i + 1);
+        let line = self.text[line_start..].lines().next().unwrap_or("");
+        let key = line
+            .split_once('=')
+            .map(|(k, _)| k.trim())
+            .filter(|k| !k.is_empty() && !k.starts_with('#'));
+        let table = self.text[..line_start]
+            .lines()
+            .rev()
+            .find_map(|l| {
+                let t = l.trim();
+                t.strip_prefix('[')
+                    .and_then(|t| t.strip_suffix(']'))
+                    .map(|t| t.trim().to_string())
+            })
+            .unwrap_or_default();
+        match key {
+            Some(k) => format!(
+                "key `{}`: the value is missing or cut off here: expected a number",
+                qualified(&table, k)
+            ),
+            None => "the text is cut off here: expected a complete `key = value` line or a \
+                     `[table]` header"
+                .to_string(),
         }
     }
 
@@ -1581,6 +1617,21 @@ speed = 150.0
         let msg = e.to_string();
         assert!(msg.contains("/nonexistent/dir/plane.toml"), "{msg}");
         assert!(msg.contains("expected a readable"), "{msg}");
+    }
+
+    #[test]
+    fn a_value_cut_off_at_the_end_of_the_file_names_its_key() {
+        // The parser stops there without a message of its own (issue 9).
+        let cut = "name = \"x\"\n[inertia]\nC = 0.9\nD = 0.7\nE = ";
+        let e = err(cut, 5, &["inertia.E", "expected a number"]);
+        assert!(matches!(e, AircraftError::Syntax { .. }));
+        // A cut-off header has the parser's own message.
+        let e = err(
+            "name = \"x\"\n[inertia]\nC = 0.9\nD = 0.7\n[deriv",
+            5,
+            &["table header"],
+        );
+        assert!(matches!(e, AircraftError::Syntax { .. }));
     }
 
     #[test]

@@ -492,6 +492,18 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
                     &dir.join("samples.csv"),
                     model::clearance::output::samples_csv(&runs).as_bytes(),
                 )?;
+                let style = model::plot::PlotStyle::default();
+                let mut figures = vec![(
+                    "clearance_histogram",
+                    model::clearance::output::histogram(&runs[0]),
+                )];
+                if runs.len() > 1 {
+                    figures.push(("clearance_map", model::clearance::output::map(&runs)));
+                }
+                for (stem, f) in figures {
+                    model::plot::render(&dir.join(stem), &f, &style)
+                        .map_err(|e| Failure::Output(e.to_string()))?;
+                }
             }
             if json {
                 say!(out, "{text}");

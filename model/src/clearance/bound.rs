@@ -220,7 +220,7 @@ impl BoxPolys {
         }
         let root = disc.sqrt().ok_or(Failure::Turn)?;
         let den = g1 + I::point(s) * root;
-        (I::point(-2.0) * g0).div(den).ok_or(Failure::Turn)
+        (I::point(-2.0) * g0).checked_div(den).ok_or(Failure::Turn)
     }
 
     /// A lower bound of |delta_a| on the primary branch at roll rate `p` over `theta`, given

@@ -136,7 +136,7 @@ impl I {
     }
 
     /// `self / o`; `None` when `o` contains 0.
-    pub fn div(self, o: I) -> Option<I> {
+    pub fn checked_div(self, o: I) -> Option<I> {
         if o.contains_zero() {
             return None;
         }
@@ -231,7 +231,7 @@ mod tests {
         assert!(BigRational::from_float(three.lo).unwrap() < exact);
         assert!(BigRational::from_float(three.hi).unwrap() > exact);
         assert!(I::new(-1.0, 2.0).sqr().lo == 0.0);
-        assert!(I::new(-1.0, 2.0).div(I::new(-1.0, 1.0)).is_none());
+        assert!(I::new(-1.0, 2.0).checked_div(I::new(-1.0, 1.0)).is_none());
         assert_eq!(next_up(1.0), 1.0 + f64::EPSILON);
         assert_eq!(next_down(0.0), -f64::from_bits(1));
     }

@@ -120,3 +120,170 @@ pub fn samples_csv(runs: &[Run]) -> String {
     }
     s
 }
+
+use crate::plot::{Axis, Dash, Figure, LegendPlace, Line, Panel, Rgb};
+
+fn line(label: &str, points: Vec<(f64, f64)>, color: Rgb, dash: Dash) -> Line {
+    Line {
+        label: Some(label.to_string()),
+        points,
+        color,
+        dash,
+        width: 2,
+    }
+}
+
+fn panel(title: &str, x: Axis, y: Axis, lines: Vec<Line>) -> Panel {
+    Panel {
+        title: title.to_string(),
+        area: [0.0, 0.0, 1.0, 1.0],
+        x,
+        y,
+        lines,
+        markers: Vec::new(),
+        legend: LegendPlace::UpperRight,
+    }
+}
+
+/// The histogram of the Monte Carlo critical roll rates with the certified bounds.
+pub fn histogram(r: &Run) -> Figure {
+    let v: Vec<f64> = r.monte_carlo.values.iter().filter_map(|s| s.p0).collect();
+    let c = &r.clearance;
+    let lo = c.critical_p0.lo;
+    let hi = c.critical_p0.hi.unwrap_or(lo);
+    let vmax = v.iter().copied().fold(hi, f64::max);
+    let (x0, x1) = (
+        lo - 0.05 * (vmax - lo).max(1e-3),
+        vmax + 0.05 * (vmax - lo).max(1e-3),
+    );
+    let bins = 40;
+    let w = (x1 - x0) / bins as f64;
+    let mut counts = vec![0usize; bins];
+    for x in &v {
+        counts[(((x - x0) / w) as usize).min(bins - 1)] += 1;
+    }
+    let top = counts.iter().copied().max().unwrap_or(1).max(1) as f64 * 1.15;
+    let mut steps = vec![(x0, 0.0)];
+    for (i, n) in counts.iter().enumerate() {
+        let a = x0 + i as f64 * w;
+        steps.push((a, *n as f64));
+        steps.push((a + w, *n as f64));
+    }
+    steps.push((x1, 0.0));
+    let blue = Rgb(31, 119, 180);
+    let red = Rgb(214, 39, 40);
+    let green = Rgb(44, 160, 44);
+    Figure {
+        title: format!(
+            "{}: critical jump roll rate over the uncertainty box (delta_e = {:.2} deg)",
+            c.aircraft,
+            c.delta_e_rad.to_degrees()
+        ),
+        panels: vec![panel(
+            "",
+            Axis::linear("critical jump P0 (rad/s)", x0, x1),
+            Axis::linear("Monte Carlo samples (count)", 0.0, top),
+            vec![
+                line(&format!("{} samples", v.len()), steps, blue, Dash::Solid),
+                line(
+                    "proven lower bound lo",
+                    vec![(lo, 0.0), (lo, top)],
+                    red,
+                    Dash::Dashed,
+                ),
+                line(
+                    "worst case found hi",
+                    vec![(hi, 0.0), (hi, top)],
+                    green,
+                    Dash::Dotted,
+                ),
+            ],
+        )],
+        legend_area: None,
+        note: String::new(),
+    }
+}
+
+/// The clearance map: certified band and Monte Carlo minimum of the critical aileron and roll
+/// rate versus delta_e.
+pub fn map(runs: &[Run]) -> Figure {
+    let de: Vec<f64> = runs
+        .iter()
+        .map(|r| r.clearance.delta_e_rad.to_degrees())
+        .collect();
+    let series = |f: &dyn Fn(&Run) -> Option<f64>| -> Vec<(f64, f64)> {
+        runs.iter()
+            .zip(&de)
+            .filter_map(|(r, d)| f(r).map(|v| (*d, v)))
+            .collect()
+    };
+    let range = |pts: &[&Vec<(f64, f64)>]| {
+        let ys: Vec<f64> = pts.iter().flat_map(|p| p.iter().map(|q| q.1)).collect();
+        let lo = ys.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = ys.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        if lo.is_finite() && hi.is_finite() {
+            let m = 0.05 * (hi - lo).max(1e-3);
+            (lo - m, hi + m)
+        } else {
+            (0.0, 1.0)
+        }
+    };
+    let (d0, d1) = (
+        de.first().copied().unwrap_or(0.0),
+        de.last()
+            .copied()
+            .unwrap_or(1.0)
+            .max(de.first().copied().unwrap_or(0.0) + 1e-3),
+    );
+    let red = Rgb(214, 39, 40);
+    let green = Rgb(44, 160, 44);
+    let blue = Rgb(31, 119, 180);
+    let mut panels = Vec::new();
+    for (k, (title, unit)) in [("critical |delta_a|", "deg"), ("critical P0", "rad/s")]
+        .iter()
+        .enumerate()
+    {
+        let b = |r: &Run| {
+            if k == 0 {
+                r.clearance.critical_delta_a_deg.clone()
+            } else {
+                r.clearance.critical_p0.clone()
+            }
+        };
+        let lo = series(&|r| Some(b(r).lo));
+        let hi = series(&|r| b(r).hi);
+        let mc = series(&|r| {
+            if k == 0 {
+                r.monte_carlo.min_abs_delta_a_deg
+            } else {
+                r.monte_carlo.min_p0
+            }
+        });
+        let (y0, y1) = range(&[&lo, &hi, &mc]);
+        let mut p = panel(
+            &format!("{title} vs delta_e"),
+            Axis::linear("delta_e (deg)", d0, d1),
+            Axis::linear(format!("{title} ({unit})"), y0, y1),
+            vec![
+                line("proven lower bound lo", lo, red, Dash::Solid),
+                line("worst case found hi", hi, green, Dash::Dashed),
+                line("Monte Carlo minimum", mc, blue, Dash::Dotted),
+            ],
+        );
+        p.area = if k == 0 {
+            [0.0, 0.0, 1.0, 0.5]
+        } else {
+            [0.0, 0.5, 1.0, 1.0]
+        };
+        panels.push(p);
+    }
+    Figure {
+        title: format!(
+            "{}: clearance map",
+            runs.first().map_or("", |r| &r.clearance.aircraft)
+        ),
+        panels,
+        legend_area: None,
+        note: String::new(),
+    }
+}

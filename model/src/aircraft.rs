@@ -201,6 +201,20 @@ pub struct Aircraft {
     pub limits: Limits,
     /// Range of alpha and beta in which the model is trusted (`[validity]`; 30 deg by default).
     pub validity: Validity,
+    /// The uncertain parameters of the optional `[uncertainty]` table, each with its exact
+    /// interval (empty without the table); see [`Uncertain`].
+    pub uncertainty: Vec<Uncertain>,
+}
+
+/// One uncertain parameter: the closed interval `[lo, hi]` (exact) its value may take.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Uncertain {
+    /// The parameter.
+    pub param: Param,
+    /// Lower end, exact.
+    pub lo: BigRational,
+    /// Upper end, exact (`lo <= hi`).
+    pub hi: BigRational,
 }
 
 impl Aircraft {
@@ -234,6 +248,7 @@ impl Aircraft {
             speed,
             limits: Limits::default(),
             validity: Validity::default(),
+            uncertainty: Vec::new(),
         }
     }
 
@@ -244,6 +259,13 @@ impl Aircraft {
             .map(|s| decimal_to_rational(s).expect("built-in decimal literal"))
             .collect();
         Aircraft::new(name, values, speed)
+    }
+
+    /// The same aircraft with `p` set to the exact value `v` (for points of an uncertainty box).
+    pub fn with(&self, p: Param, v: BigRational) -> Aircraft {
+        let mut a = self.clone();
+        a.values[p.index()] = v;
+        a
     }
 
     /// The exact value of a parameter.

@@ -9,6 +9,7 @@
 pub mod aircraft;
 pub mod algebra;
 pub mod analysis;
+pub mod clearance;
 pub mod continuation;
 pub mod derivation;
 pub mod emit;

@@ -108,6 +108,32 @@ enum Command {
         #[arg(long, value_name = "FILE")]
         csv: Option<std::path::PathBuf>,
     },
+    /// Certified clearance of the critical jump over the file's `[uncertainty]` box.
+    Clear {
+        /// Path of an aircraft TOML file with an `[uncertainty]` table (or `A`/`B`: a point).
+        aircraft: String,
+        /// Elevator deflection in degrees.
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
+        delta_e_deg: f64,
+        /// A range of elevator deflections `A:B:STEP` in degrees (a clearance map).
+        #[arg(long, value_name = "A:B:STEP", allow_hyphen_values = true)]
+        delta_e_range: Option<String>,
+        /// Monte Carlo samples (exact path).
+        #[arg(long, default_value_t = 1000)]
+        samples: usize,
+        /// Tolerance on the roll-rate gap, rad/s (the aileron gap is 10 times it, in deg).
+        #[arg(long, default_value_t = 1e-3)]
+        tolerance: f64,
+        /// Seed of the Monte Carlo samples and of the worst-case search.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+        /// Write summary.md, summary.json and samples.csv into DIR.
+        #[arg(long, value_name = "DIR")]
+        out: Option<std::path::PathBuf>,
+    },
     /// Print the dimensional principal-axis TOML equivalent to a nondimensional body-axis file.
     Convert {
         /// Path of a nondimensional body-axis aircraft TOML file.
@@ -395,6 +421,99 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
             );
             Ok(ExitCode::SUCCESS)
         }
+        Command::Clear {
+            aircraft,
+            delta_e_deg,
+            delta_e_range,
+            samples,
+            tolerance,
+            seed,
+            json,
+            out: dir,
+        } => {
+            let ac = load_aircraft(&aircraft)?;
+            let settings: Vec<f64> = match delta_e_range {
+                Some(r) => delta_e_list(&r)?,
+                None => vec![elevator(delta_e_deg)?],
+            };
+            if !(tolerance.is_finite() && tolerance > 0.0) {
+                return Err(Failure::Input(format!(
+                    "--tolerance = {tolerance}: expected a finite tolerance > 0 in rad/s"
+                )));
+            }
+            let bar = progress_bar("clear");
+            let mut runs = Vec::new();
+            for (k, de) in settings.iter().enumerate() {
+                let s = model::clearance::Settings {
+                    delta_e_rad: *de,
+                    tolerance_p0: tolerance,
+                    tolerance_deg: 10.0 * tolerance,
+                    seed,
+                    ..Default::default()
+                };
+                let n = settings.len() as f64;
+                let mut tick = |f: f64| {
+                    if let Some(b) = &bar {
+                        b.set_position((1000.0 * (k as f64 + f) / n) as u64);
+                    }
+                };
+                let clearance =
+                    model::clearance::clear(&ac, &s, &mut tick).map_err(|e| named(&ac, e))?;
+                let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+                let monte_carlo =
+                    model::clearance::monte_carlo::run(&ac, *de, samples, seed, threads);
+                runs.push(model::clearance::output::Run {
+                    clearance,
+                    monte_carlo,
+                });
+            }
+            if let Some(b) = bar {
+                b.finish_and_clear();
+            }
+            let text = serde_json::to_string_pretty(
+                &if runs.len() == 1 {
+                    serde_json::to_value(&runs[0])
+                } else {
+                    serde_json::to_value(&runs)
+                }
+                .map_err(|e| e.to_string())?,
+            )
+            .map_err(|e| e.to_string())?;
+            if let Some(dir) = dir {
+                std::fs::create_dir_all(&dir).map_err(|e| {
+                    Failure::Output(format!("cannot create {}: {e}", dir.display()))
+                })?;
+                write_file(&dir.join("summary.json"), format!("{text}\n").as_bytes())?;
+                write_file(
+                    &dir.join("summary.md"),
+                    model::clearance::output::markdown(&runs).as_bytes(),
+                )?;
+                write_file(
+                    &dir.join("samples.csv"),
+                    model::clearance::output::samples_csv(&runs).as_bytes(),
+                )?;
+                let style = model::plot::PlotStyle::default();
+                let mut figures = vec![(
+                    "clearance_histogram",
+                    model::clearance::output::histogram(&runs[0]),
+                )];
+                if runs.len() > 1 {
+                    figures.push(("clearance_map", model::clearance::output::map(&runs)));
+                }
+                for (stem, f) in figures {
+                    model::plot::render(&dir.join(stem), &f, &style)
+                        .map_err(|e| Failure::Output(e.to_string()))?;
+                }
+            }
+            if json {
+                say!(out, "{text}");
+            } else {
+                for r in &runs {
+                    write!(out, "{}", model::clearance::output::text(r)).map_err(stdout_error)?;
+                }
+            }
+            Ok(ExitCode::SUCCESS)
+        }
         Command::Convert { file } => {
             let text = aircraft::convert_file(&file).map_err(|e| e.to_string())?;
             write!(out, "{text}").map_err(stdout_error)?;
@@ -466,6 +585,31 @@ fn elevator(deg: f64) -> Result<f64, Failure> {
              (delta_e)"
         )))
     }
+}
+
+/// `A:B:STEP` in degrees as the list of elevator deflections in rad.
+fn delta_e_list(r: &str) -> Result<Vec<f64>, Failure> {
+    let bad = || {
+        Failure::Input(format!(
+            "--delta-e-range = {r:?}: expected A:B:STEP in degrees with A <= B, STEP > 0, at most \
+             1000 settings, each of at most 90 deg"
+        ))
+    };
+    let v: Vec<f64> = r
+        .split(':')
+        .map(|x| x.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| bad())?;
+    let [a, b, step] = v[..] else {
+        return Err(bad());
+    };
+    if !(a <= b && step > 0.0 && ((b - a) / step) < 1000.0) {
+        return Err(bad());
+    }
+    let n = ((b - a) / step + 1e-9).floor() as usize;
+    (0..=n)
+        .map(|i| elevator(a + i as f64 * step).map_err(|_| bad()))
+        .collect()
 }
 
 /// An angle in degrees converted to rad, or an error naming the option.
@@ -735,6 +879,7 @@ mod tests {
                         delta_e_deg,
                         ..
                     } => vec![elevator(delta_e_deg), finite_angle("delta_a", delta_a_deg)],
+                    Command::Clear { delta_e_deg, .. } => vec![elevator(delta_e_deg)],
                     Command::Emit { .. } | Command::Convert { .. } => vec![],
                 };
                 for c in checks {

@@ -41,6 +41,8 @@ use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
+mod uncertainty;
+
 /// Where in an aircraft file an error was found (1-based line and column, in characters).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Location {
@@ -406,6 +408,9 @@ fn read_document(text: &str, file: &str) -> Result<Parsed, AircraftError> {
     };
 
     if body_axis.is_some() {
+        if let Some((key, _)) = find("uncertainty") {
+            return Err(uncertainty::not_in_body_axis(&cx, key));
+        }
         let table = |t: &'static str| {
             find(t)
                 .map(|(_, t)| t)
@@ -450,13 +455,16 @@ fn read_document(text: &str, file: &str) -> Result<Parsed, AircraftError> {
     let mut aircraft = Aircraft::new(name, values, speed);
     aircraft.limits = limits;
     aircraft.validity = validity;
+    if let Some((key, t)) = find("uncertainty") {
+        aircraft.uncertainty = cx.uncertainty(key, t, &aircraft)?;
+    }
     Ok(Parsed::Dimensional(aircraft))
 }
 
 // ---------------------------------------------------------------------------------------------
 // Validation
 
-const TOP_KEYS: [&str; 8] = [
+const TOP_KEYS: [&str; 9] = [
     "name",
     "inertia",
     "derivatives",
@@ -465,6 +473,7 @@ const TOP_KEYS: [&str; 8] = [
     "coefficients",
     "limits",
     "validity",
+    "uncertainty",
 ];
 const INERTIA_KEYS: [&str; 7] = ["C", "D", "E", "ix", "iy", "iz", "ixz"];
 const FLIGHT_KEYS: [&str; 3] = ["speed", "density", "altitude"];
@@ -488,7 +497,7 @@ fn keys_of(table: &str) -> Vec<&'static str> {
 }
 
 /// The valid keys of each table, `""` being the top level.
-fn tables_of_format() -> [(&'static str, Vec<&'static str>); 8] {
+fn tables_of_format() -> [(&'static str, Vec<&'static str>); 9] {
     [
         ("", TOP_KEYS.to_vec()),
         ("inertia", INERTIA_KEYS.to_vec()),
@@ -501,6 +510,7 @@ fn tables_of_format() -> [(&'static str, Vec<&'static str>); 8] {
         ),
         ("limits", LIMIT_KEYS.to_vec()),
         ("validity", VALIDITY_KEYS.to_vec()),
+        ("uncertainty", Param::ALL.iter().map(|p| p.key()).collect()),
     ]
 }
 
@@ -1384,7 +1394,8 @@ enum Kind {
     Float(f64),
     String(String),
     Boolean(bool),
-    Array,
+    /// An array, with its elements (empty for an array of tables).
+    Array(Vec<Node>),
     Datetime,
     Table(Vec<(Key, Node)>),
 }
@@ -1402,7 +1413,7 @@ impl Kind {
                     "a boolean (`false`)"
                 }
             }
-            Kind::Array => "an array",
+            Kind::Array(_) => "an array",
             Kind::Datetime => "a date-time",
             Kind::Table(_) => "a table",
         }
@@ -1435,7 +1446,7 @@ fn item_node(item: &toml_edit::Item) -> Option<Node> {
         }),
         Item::ArrayOfTables(a) => Some(Node {
             span: a.span(),
-            kind: Kind::Array,
+            kind: Kind::Array(Vec::new()),
         }),
     }
 }
@@ -1448,7 +1459,7 @@ fn value_node(value: &toml_edit::Value) -> Node {
         Value::Float(x) => Kind::Float(*x.value()),
         Value::Boolean(b) => Kind::Boolean(*b.value()),
         Value::Datetime(_) => Kind::Datetime,
-        Value::Array(_) => Kind::Array,
+        Value::Array(a) => Kind::Array(a.iter().map(value_node).collect()),
         Value::InlineTable(t) => Kind::Table(
             t.iter()
                 .map(|(name, v)| {

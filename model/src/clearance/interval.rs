@@ -1,0 +1,238 @@
+//! Closed intervals of f64 with outward rounding, enough for polynomial enclosures.
+//!
+//! Every operation computes its ends in round-to-nearest and then moves each end one ulp
+//! outwards (`next_down` / `next_up` on the bits). Round-to-nearest is within half an ulp of the
+//! exact result, so the widened interval contains the exact result of the operation on any
+//! reals of the operands: every result encloses the true range. Exact rationals enter through
+//! [`I::from_q`], which brackets the rational between two adjacent doubles exactly.
+
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// A closed interval `[lo, hi]` of reals (lo <= hi, both finite unless an overflow made the
+/// enclosure unbounded, which every test below treats as "may contain anything").
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct I {
+    /// Lower end.
+    pub lo: f64,
+    /// Upper end.
+    pub hi: f64,
+}
+
+/// The next double below `x` (`x` itself for -inf and NaN).
+pub fn next_down(x: f64) -> f64 {
+    if x.is_nan() || x == f64::NEG_INFINITY {
+        return x;
+    }
+    if x == 0.0 {
+        return -f64::from_bits(1);
+    }
+    let b = x.to_bits();
+    f64::from_bits(if x > 0.0 { b - 1 } else { b + 1 })
+}
+
+/// The next double above `x`.
+pub fn next_up(x: f64) -> f64 {
+    -next_down(-x)
+}
+
+impl I {
+    /// The degenerate interval `[x, x]` (exact).
+    pub fn point(x: f64) -> I {
+        I { lo: x, hi: x }
+    }
+
+    /// `[lo, hi]` as given (exact ends).
+    pub fn new(lo: f64, hi: f64) -> I {
+        I { lo, hi }
+    }
+
+    fn out(lo: f64, hi: f64) -> I {
+        if lo.is_nan() || hi.is_nan() {
+            return I::entire();
+        }
+        I {
+            lo: next_down(lo),
+            hi: next_up(hi),
+        }
+    }
+
+    /// The whole real line.
+    pub fn entire() -> I {
+        I {
+            lo: f64::NEG_INFINITY,
+            hi: f64::INFINITY,
+        }
+    }
+
+    /// The tightest double interval containing the exact rational `q`.
+    pub fn from_q(q: &BigRational) -> I {
+        let x = q.to_f64().unwrap_or(f64::NAN);
+        if !x.is_finite() {
+            return I::entire();
+        }
+        let Some(e) = BigRational::from_float(x) else {
+            return I::entire();
+        };
+        match e.cmp(q) {
+            std::cmp::Ordering::Equal => I::point(x),
+            std::cmp::Ordering::Less => I::new(x, next_up(x)),
+            std::cmp::Ordering::Greater => I::new(next_down(x), x),
+        }
+    }
+
+    /// The enclosure of `[lo, hi]` for exact ends.
+    pub fn from_q_pair(lo: &BigRational, hi: &BigRational) -> I {
+        I::new(I::from_q(lo).lo, I::from_q(hi).hi)
+    }
+
+    /// Midpoint (a double inside the interval).
+    pub fn mid(self) -> f64 {
+        let m = 0.5 * self.lo + 0.5 * self.hi;
+        m.clamp(self.lo, self.hi)
+    }
+
+    /// Width `hi - lo` (rounded up).
+    pub fn width(self) -> f64 {
+        next_up(self.hi - self.lo)
+    }
+
+    /// Whether 0 lies in the interval (always true for an unbounded or NaN enclosure).
+    pub fn contains_zero(self) -> bool {
+        !(self.lo > 0.0 || self.hi < 0.0)
+    }
+
+    /// Integer power (even powers are non-negative).
+    pub fn powi(self, k: u32) -> I {
+        match k {
+            0 => I::point(1.0),
+            1 => self,
+            _ => {
+                let mut r = self;
+                for _ in 1..k {
+                    r = r * self;
+                }
+                if k % 2 == 0 {
+                    r.lo = r.lo.max(0.0);
+                }
+                r
+            }
+        }
+    }
+
+    /// Square, non-negative.
+    pub fn sqr(self) -> I {
+        self.powi(2)
+    }
+
+    /// Square root of the non-negative part; `None` when the interval has no non-negative part.
+    pub fn sqrt(self) -> Option<I> {
+        if self.hi < 0.0 || self.hi.is_nan() {
+            return None;
+        }
+        let lo = self.lo.max(0.0).sqrt();
+        Some(I::new(next_down(lo).max(0.0), next_up(self.hi.sqrt())))
+    }
+
+    /// `self / o`; `None` when `o` contains 0.
+    pub fn checked_div(self, o: I) -> Option<I> {
+        if o.contains_zero() {
+            return None;
+        }
+        let c = [
+            self.lo / o.lo,
+            self.lo / o.hi,
+            self.hi / o.lo,
+            self.hi / o.hi,
+        ];
+        Some(I::out(min4(c), max4(c)))
+    }
+
+    /// The sign of the whole interval: `Some(1.0)` if > 0, `Some(-1.0)` if < 0, else `None`.
+    pub fn sign(self) -> Option<f64> {
+        if self.lo > 0.0 {
+            Some(1.0)
+        } else if self.hi < 0.0 {
+            Some(-1.0)
+        } else {
+            None
+        }
+    }
+
+    /// The convex hull of two intervals.
+    pub fn hull(self, o: I) -> I {
+        I::new(self.lo.min(o.lo), self.hi.max(o.hi))
+    }
+
+    /// The largest magnitude in the interval.
+    pub fn mag(self) -> f64 {
+        self.lo.abs().max(self.hi.abs())
+    }
+}
+
+fn min4(c: [f64; 4]) -> f64 {
+    c.iter().copied().fold(f64::INFINITY, f64::min)
+}
+
+fn max4(c: [f64; 4]) -> f64 {
+    c.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+}
+
+impl Add for I {
+    type Output = I;
+    fn add(self, o: I) -> I {
+        I::out(self.lo + o.lo, self.hi + o.hi)
+    }
+}
+
+impl Sub for I {
+    type Output = I;
+    fn sub(self, o: I) -> I {
+        I::out(self.lo - o.hi, self.hi - o.lo)
+    }
+}
+
+impl Neg for I {
+    type Output = I;
+    fn neg(self) -> I {
+        I::new(-self.hi, -self.lo)
+    }
+}
+
+impl Mul for I {
+    type Output = I;
+    fn mul(self, o: I) -> I {
+        if (self.lo == 0.0 && self.hi == 0.0) || (o.lo == 0.0 && o.hi == 0.0) {
+            return I::point(0.0);
+        }
+        let c = [
+            self.lo * o.lo,
+            self.lo * o.hi,
+            self.hi * o.lo,
+            self.hi * o.hi,
+        ];
+        I::out(min4(c), max4(c))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn enclosures_contain_the_exact_results() {
+        // 0.1 is not a double: [0.1] brackets it, and 3 * [0.1] contains 3/10 exactly.
+        let tenth = BigRational::new(1.into(), 10.into());
+        let t = I::from_q(&tenth);
+        assert!(t.lo < t.hi);
+        let three = I::point(3.0) * t;
+        let exact = BigRational::new(3.into(), 10.into());
+        assert!(BigRational::from_float(three.lo).unwrap() < exact);
+        assert!(BigRational::from_float(three.hi).unwrap() > exact);
+        assert!(I::new(-1.0, 2.0).sqr().lo == 0.0);
+        assert!(I::new(-1.0, 2.0).checked_div(I::new(-1.0, 1.0)).is_none());
+        assert_eq!(next_up(1.0), 1.0 + f64::EPSILON);
+        assert_eq!(next_down(0.0), -f64::from_bits(1));
+    }
+}

@@ -1,0 +1,539 @@
+//! Certified clearance: the critical jump over a box of uncertain data (`model clear`).
+//!
+//! For an aircraft whose file has an `[uncertainty]` table, [`clear`] bounds the minimum over the
+//! box of the critical jump roll rate (the first fold of the primary branch, as
+//! [`crate::analysis::analyze`] defines it) and of |delta_a| at it: `lo` is proven by the branch
+//! and bound of [`bound`] (no aircraft of the box has a primary-branch jump below it), `hi` is
+//! attained by a reported aircraft of the box, computed by the exact `analyze`. What exactly is
+//! proven is in `docs/clearance.md`.
+
+pub mod bound;
+pub mod interval;
+pub mod monte_carlo;
+
+use crate::aircraft::{Aircraft, Param, Uncertain};
+use crate::analysis::{analyze, AnalysisError, JumpPoint};
+use bound::{BoxPolys, Failure};
+use interval::I;
+use num_rational::BigRational;
+use serde::Serialize;
+use std::time::Instant;
+
+/// Settings of a clearance run.
+#[derive(Clone, Debug)]
+pub struct Settings {
+    /// Elevator deflection, rad.
+    pub delta_e_rad: f64,
+    /// Tolerance on the roll-rate gap hi - lo, rad/s.
+    pub tolerance_p0: f64,
+    /// Tolerance on the aileron gap, deg.
+    pub tolerance_deg: f64,
+    /// Wall-clock budget of the branch and bound, s.
+    pub time_budget_s: f64,
+    /// Most boxes the branch and bound may hold.
+    pub max_boxes: usize,
+    /// Seed of the random candidates for the worst case.
+    pub seed: u64,
+    /// Random candidates tried for the worst case (exact analyses).
+    pub candidates: usize,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            delta_e_rad: 2f64.to_radians(),
+            tolerance_p0: 1e-3,
+            tolerance_deg: 0.01,
+            time_budget_s: 50.0,
+            max_boxes: 20_000,
+            seed: 1,
+            candidates: 64,
+        }
+    }
+}
+
+/// A certified interval for a minimum over the box.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Bounds {
+    /// Proven lower bound.
+    pub lo: f64,
+    /// Attained by the worst-case aircraft (null when no aircraft of the box has a critical jump).
+    pub hi: Option<f64>,
+    /// `hi - lo` (null without `hi`).
+    pub gap: Option<f64>,
+    /// Whether the gap is within the tolerance.
+    pub converged: bool,
+}
+
+/// One aircraft of the box: every parameter by its TOML key, and its critical jump.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct CaseAircraft {
+    /// Every parameter by its TOML key (exact values rounded once to f64).
+    #[serde(flatten)]
+    pub parameters: std::collections::BTreeMap<String, f64>,
+    /// Its critical jump roll rate, rad/s.
+    pub p0: f64,
+    /// The aileron at it, deg.
+    pub delta_a_deg: f64,
+    /// The exact aircraft (not serialized).
+    #[serde(skip)]
+    pub aircraft: Aircraft,
+}
+
+/// The result of [`clear`].
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Clearance {
+    /// Aircraft name.
+    pub aircraft: String,
+    /// Elevator deflection, rad.
+    pub delta_e_rad: f64,
+    /// The uncertain parameters (TOML keys) and their intervals.
+    #[serde(rename = "box")]
+    pub box_: Vec<(String, f64, f64)>,
+    /// Bounds on the minimum critical jump roll rate, rad/s.
+    pub critical_p0: Bounds,
+    /// Bounds on the minimum |delta_a| at the critical jump, deg.
+    pub critical_delta_a_deg: Bounds,
+    /// The aircraft attaining `critical_p0.hi`.
+    pub worst_case: Option<CaseAircraft>,
+    /// The aircraft attaining `critical_delta_a_deg.hi`.
+    pub worst_case_aileron: Option<CaseAircraft>,
+    /// Cleared against the aileron limit (null without a limit, or when undecided).
+    pub cleared: Option<bool>,
+    /// An aircraft of the box with a critical jump within the aileron limit.
+    pub counterexample: Option<CaseAircraft>,
+    /// Why the branch and bound stopped (and, when not converged, what limited it).
+    pub note: String,
+    /// Boxes examined and slabs tried.
+    pub boxes: usize,
+    /// Slabs tried.
+    pub slabs: usize,
+    /// Wall-clock time of the proof, s.
+    pub seconds: f64,
+}
+
+/// Why a clearance cannot be computed.
+#[derive(Debug, thiserror::Error)]
+pub enum ClearError {
+    /// The exact analysis of an aircraft of the box failed.
+    #[error("{0}")]
+    Analysis(#[from] AnalysisError),
+}
+
+/// The critical jump of one exact aircraft by the exact path.
+pub fn critical(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Option<JumpPoint>, AnalysisError> {
+    Ok(analyze(aircraft, delta_e_rad)?.critical)
+}
+
+/// The box of an aircraft: its uncertain parameters of nonzero width with their exact ends, and
+/// the aircraft with every zero-width parameter set to its value.
+pub fn split_box(aircraft: &Aircraft) -> (Aircraft, Vec<Uncertain>) {
+    let mut base = aircraft.clone();
+    let mut wide = Vec::new();
+    for u in &aircraft.uncertainty {
+        if u.lo == u.hi {
+            base = base.with(u.param, u.lo.clone());
+        } else {
+            wide.push(u.clone());
+        }
+    }
+    base.uncertainty = Vec::new();
+    (base, wide)
+}
+
+/// The aircraft at exact coordinates `x` of the box.
+pub fn at(base: &Aircraft, params: &[Uncertain], x: &[BigRational]) -> Aircraft {
+    params
+        .iter()
+        .zip(x)
+        .fold(base.clone(), |a, (u, v)| a.with(u.param, v.clone()))
+}
+
+/// An f64 coordinate of the box as an exact value within the exact ends.
+pub fn clamp_exact(u: &Uncertain, v: f64) -> BigRational {
+    let q = BigRational::from_float(v).unwrap_or_else(|| u.lo.clone());
+    if q < u.lo {
+        u.lo.clone()
+    } else if q > u.hi {
+        u.hi.clone()
+    } else {
+        q
+    }
+}
+
+fn case(a: &Aircraft, j: &JumpPoint) -> CaseAircraft {
+    CaseAircraft {
+        parameters: Param::ALL
+            .iter()
+            .map(|p| (p.key().to_string(), a.value(*p)))
+            .collect(),
+        p0: j.p0,
+        delta_a_deg: j.delta_a_deg,
+        aircraft: a.clone(),
+    }
+}
+
+/// A small deterministic generator (SplitMix64) for seeded samples.
+#[derive(Clone, Debug)]
+pub struct Rng(u64);
+
+impl Rng {
+    /// A generator from a seed.
+    pub fn new(seed: u64) -> Rng {
+        Rng(seed)
+    }
+
+    /// Uniform in [0, 1).
+    pub fn unit(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// A uniform random aircraft of the box.
+pub fn sample(base: &Aircraft, params: &[Uncertain], rng: &mut Rng) -> Aircraft {
+    let x: Vec<BigRational> = params
+        .iter()
+        .map(|u| {
+            let b = I::from_q_pair(&u.lo, &u.hi);
+            clamp_exact(u, b.lo + rng.unit() * (b.hi - b.lo))
+        })
+        .collect();
+    at(base, params, &x)
+}
+
+/// The worst cases found so far, by the exact path.
+struct Worst {
+    p0: Option<(f64, CaseAircraft)>,
+    da: Option<(f64, CaseAircraft)>,
+    limit_hit: Option<CaseAircraft>,
+    limit_deg: Option<f64>,
+    delta_e_rad: f64,
+}
+
+impl Worst {
+    /// Evaluates one aircraft; returns its critical (p0, |delta_a| deg) if it has one.
+    fn try_aircraft(&mut self, a: &Aircraft) -> Result<Option<(f64, f64)>, ClearError> {
+        let Some(j) = critical(a, self.delta_e_rad)? else {
+            return Ok(None);
+        };
+        let da = j.delta_a_deg.abs();
+        if self.p0.as_ref().is_none_or(|(p, _)| j.p0 < *p) {
+            self.p0 = Some((j.p0, case(a, &j)));
+        }
+        if self.da.as_ref().is_none_or(|(d, _)| da < *d) {
+            self.da = Some((da, case(a, &j)));
+        }
+        if let Some(l) = self.limit_deg {
+            if da <= l && self.limit_hit.is_none() {
+                self.limit_hit = Some(case(a, &j));
+            }
+        }
+        Ok(Some((j.p0, da)))
+    }
+}
+
+/// Greedy vertex search from `start`: each coordinate in turn moved to the end of its interval
+/// that lowers `key` (the critical p0 or |delta_a|), repeated while it improves.
+fn descend(
+    worst: &mut Worst,
+    base: &Aircraft,
+    params: &[Uncertain],
+    start: Vec<BigRational>,
+    key: fn(f64, f64) -> f64,
+) -> Result<(), ClearError> {
+    let mut x = start;
+    let mut best = match worst.try_aircraft(&at(base, params, &x))? {
+        Some((p, d)) => key(p, d),
+        None => f64::INFINITY,
+    };
+    for _pass in 0..3 {
+        let mut improved = false;
+        for i in 0..params.len() {
+            for end in [&params[i].lo, &params[i].hi] {
+                if x[i] == *end {
+                    continue;
+                }
+                let mut y = x.clone();
+                y[i] = end.clone();
+                if let Some((p, d)) = worst.try_aircraft(&at(base, params, &y))? {
+                    if key(p, d) < best {
+                        best = key(p, d);
+                        x = y;
+                        improved = true;
+                    }
+                }
+            }
+        }
+        if !improved {
+            break;
+        }
+    }
+    Ok(())
+}
+
+/// A leaf of the branch and bound: a sub-box certified from P0 = 0 to `depth`.
+#[derive(Clone, Debug)]
+struct Leaf {
+    theta: Vec<I>,
+    depth: f64,
+    step: f64,
+    /// Lower bound of |delta_a| (rad) of the primary branch at `depth` over the box.
+    da_lo: f64,
+    stuck: Option<Failure>,
+}
+
+/// Runs the clearance of `aircraft`'s `[uncertainty]` box; `progress` gets a fraction in [0, 1].
+pub fn clear(
+    aircraft: &Aircraft,
+    settings: &Settings,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Clearance, ClearError> {
+    let start = Instant::now();
+    let de = settings.delta_e_rad;
+    let (base, params) = split_box(aircraft);
+    let mut worst = Worst {
+        p0: None,
+        da: None,
+        limit_hit: None,
+        limit_deg: aircraft.limits.aileron_deg,
+        delta_e_rad: de,
+    };
+    let box_ = params
+        .iter()
+        .map(|u| {
+            let b = I::from_q_pair(&u.lo, &u.hi);
+            (u.param.key().to_string(), b.lo, b.hi)
+        })
+        .collect();
+    let finish = |worst: Worst,
+                  p0_lo: f64,
+                  da_lo_deg: f64,
+                  note: String,
+                  boxes: usize,
+                  slabs: usize|
+     -> Clearance {
+        let bounds = |lo: f64, hi: Option<f64>, tol: f64| {
+            let gap = hi.map(|h| (h - lo).max(0.0));
+            Bounds {
+                lo,
+                hi,
+                gap,
+                converged: gap.is_some_and(|g| g <= tol),
+            }
+        };
+        let hi_p0 = worst.p0.as_ref().map(|(p, _)| *p);
+        let hi_da = worst.da.as_ref().map(|(d, _)| *d);
+        let cleared = worst.limit_deg.and_then(|l| {
+            if worst.limit_hit.is_some() {
+                Some(false)
+            } else if da_lo_deg > l {
+                Some(true)
+            } else {
+                None
+            }
+        });
+        Clearance {
+            aircraft: aircraft.name.clone(),
+            delta_e_rad: de,
+            box_,
+            critical_p0: bounds(p0_lo, hi_p0, settings.tolerance_p0),
+            critical_delta_a_deg: bounds(da_lo_deg, hi_da, settings.tolerance_deg),
+            worst_case: worst.p0.map(|(_, c)| c),
+            worst_case_aileron: worst.da.map(|(_, c)| c),
+            cleared,
+            counterexample: worst.limit_hit,
+            note,
+            boxes,
+            slabs,
+            seconds: start.elapsed().as_secs_f64(),
+        }
+    };
+
+    if params.is_empty() {
+        // A point: the exact analysis is the proof.
+        let (lo, da) = match worst.try_aircraft(&base)? {
+            Some((p, d)) => (p, d),
+            None => (f64::INFINITY, f64::INFINITY),
+        };
+        let note = "zero-width box: the exact analysis of its one aircraft".to_string();
+        let mut c = finish(worst, lo, da, note, 0, 0);
+        if !lo.is_finite() {
+            c.critical_p0.lo = 0.0;
+            c.critical_delta_a_deg.lo = 0.0;
+        }
+        return Ok(c);
+    }
+
+    // Candidates for the worst case: the centre, seeded random points, and a greedy vertex
+    // search from the best of them for each of the two minima.
+    let centre: Vec<BigRational> = params
+        .iter()
+        .map(|u| (&u.lo + &u.hi) / BigRational::from_integer(2.into()))
+        .collect();
+    worst.try_aircraft(&at(&base, &params, &centre))?;
+    let mut rng = Rng::new(settings.seed);
+    for _ in 0..settings.candidates {
+        worst.try_aircraft(&sample(&base, &params, &mut rng))?;
+    }
+    progress(0.05);
+    let coords = |c: &Option<(f64, CaseAircraft)>| -> Vec<BigRational> {
+        match c {
+            Some((_, w)) => params
+                .iter()
+                .map(|u| w.aircraft.exact(u.param).clone())
+                .collect(),
+            None => centre.clone(),
+        }
+    };
+    let from_p0 = coords(&worst.p0);
+    descend(&mut worst, &base, &params, from_p0, |p, _| p)?;
+    let from_da = coords(&worst.da);
+    descend(&mut worst, &base, &params, from_da, |_, d| d)?;
+    progress(0.1);
+
+    let polys = BoxPolys::new(
+        &base,
+        &params.iter().map(|u| u.param).collect::<Vec<_>>(),
+        de,
+    );
+    let theta0: Vec<I> = params
+        .iter()
+        .map(|u| I::from_q_pair(&u.lo, &u.hi))
+        .collect();
+    let hi_p0 = worst.p0.as_ref().map_or(f64::INFINITY, |(p, _)| *p);
+    let first_step = if hi_p0.is_finite() {
+        hi_p0 / 32.0
+    } else {
+        0.05
+    };
+    let min_step = settings.tolerance_p0 / 8.0;
+    let mut leaves = vec![Leaf {
+        theta: theta0.clone(),
+        depth: 0.0,
+        step: first_step,
+        da_lo: 0.0,
+        stuck: None,
+    }];
+    let (mut boxes, mut slabs) = (1usize, 0usize);
+    let hi_da_rad = worst
+        .da
+        .as_ref()
+        .map_or(f64::INFINITY, |(d, _)| d.to_radians());
+    let tol_da = settings.tolerance_deg.to_radians();
+    let note;
+    loop {
+        let lo = leaves.iter().map(|l| l.depth).fold(f64::INFINITY, f64::min);
+        let lo_da = leaves.iter().map(|l| l.da_lo).fold(f64::INFINITY, f64::min);
+        let done_p0 = lo >= hi_p0 - settings.tolerance_p0;
+        let done_da = !polys.symmetric || lo_da >= hi_da_rad - tol_da;
+        if hi_p0.is_finite() {
+            progress(0.1 + 0.9 * (lo / hi_p0).clamp(0.0, 1.0));
+        }
+        if done_p0 && done_da {
+            note = "converged: both gaps within the tolerance".to_string();
+            break;
+        }
+        if start.elapsed().as_secs_f64() > settings.time_budget_s {
+            note = format!(
+                "stopped at the time budget of {} s with {} boxes",
+                settings.time_budget_s,
+                leaves.len()
+            );
+            break;
+        }
+        if leaves.len() >= settings.max_boxes {
+            note = format!("stopped at the budget of {} boxes", settings.max_boxes);
+            break;
+        }
+        // Work on the leaf that limits the larger relative gap.
+        let by_p0 = !done_p0;
+        let i = (0..leaves.len())
+            .filter(|i| leaves[*i].stuck.is_none())
+            .min_by(|a, b| {
+                let k = |l: &Leaf| if by_p0 { l.depth } else { l.da_lo };
+                k(&leaves[*a]).total_cmp(&k(&leaves[*b]))
+            });
+        let Some(i) = i else {
+            note = "every remaining box is stuck at a point where the proof cannot continue"
+                .to_string();
+            break;
+        };
+        let leaf = &mut leaves[i];
+        let limit = if by_p0 { hi_p0 } else { f64::INFINITY };
+        let top = (leaf.depth + leaf.step).min(limit.max(leaf.depth + min_step));
+        let slab = I::new(leaf.depth, top);
+        slabs += 1;
+        match polys.certify(slab, &leaf.theta) {
+            Ok(_) => {
+                leaf.depth = top;
+                leaf.step *= 2.0;
+                if let Ok(d) = polys.aileron(I::point(top), &leaf.theta) {
+                    leaf.da_lo = leaf.da_lo.max(polys.aileron_lower(top, &leaf.theta, d));
+                }
+            }
+            Err(why) => {
+                if leaf.step > min_step {
+                    leaf.step = (leaf.step / 4.0).max(min_step);
+                } else {
+                    // Split the widest coordinate (relative to the initial box).
+                    let k = (0..leaf.theta.len())
+                        .max_by(|a, b| {
+                            let r = |j: usize| leaf.theta[j].width() / theta0[j].width();
+                            r(*a).total_cmp(&r(*b))
+                        })
+                        .unwrap_or(0);
+                    let t = leaf.theta[k];
+                    let m = t.mid();
+                    if m <= t.lo || m >= t.hi {
+                        leaf.stuck = Some(why);
+                        continue;
+                    }
+                    let mut other = leaf.clone();
+                    leaf.theta[k] = I::new(t.lo, m);
+                    other.theta[k] = I::new(m, t.hi);
+                    leaf.step = first_step.max(min_step);
+                    other.step = leaf.step;
+                    leaves.push(other);
+                    boxes += 1;
+                }
+            }
+        }
+    }
+    let mut lo = leaves.iter().map(|l| l.depth).fold(f64::INFINITY, f64::min);
+    let mut lo_da = leaves.iter().map(|l| l.da_lo).fold(f64::INFINITY, f64::min);
+    let mut note = note;
+    if !polys.symmetric {
+        lo_da = 0.0;
+        note += "; the trim at P0 = 0 needs aileron for some aircraft of the box, so |delta_a| \
+                 is not monotone from 0 along the branch and its lower bound is 0";
+    }
+    if let Some(l) = leaves
+        .iter()
+        .find(|l| l.depth <= lo && l.stuck == Some(Failure::Turn))
+    {
+        // A branch that may turn in P0 can come back to lower roll rates on its other trim.
+        note += &format!(
+            "; the primary branch may turn in P0 near {:.4} rad/s for part of the box, after \
+             which a jump could lie at a lower roll rate: no lower bound above 0 is claimed",
+            l.depth
+        );
+        lo = 0.0;
+        lo_da = 0.0;
+    }
+    if let Some(hi) = worst.p0.as_ref().map(|(p, _)| *p) {
+        lo = lo.min(hi);
+    }
+    if let Some(hi) = worst.da.as_ref().map(|(d, _)| d.to_radians()) {
+        lo_da = lo_da.min(hi);
+    }
+    progress(1.0);
+    Ok(finish(worst, lo, lo_da.to_degrees(), note, boxes, slabs))
+}
+
+#[cfg(feature = "cli")]
+pub mod output;

@@ -1,0 +1,289 @@
+//! What `model clear` prints and writes: the text summary, the JSON object, summary.md and the
+//! CSV of the Monte Carlo samples.
+
+use super::monte_carlo::MonteCarlo;
+use super::{Bounds, CaseAircraft, Clearance};
+use crate::report::fixed;
+use serde::Serialize;
+
+/// One elevator setting's clearance with its Monte Carlo comparison.
+#[derive(Clone, Debug, Serialize)]
+pub struct Run {
+    /// The certified bounds and worst cases.
+    #[serde(flatten)]
+    pub clearance: Clearance,
+    /// The Monte Carlo comparison.
+    pub monte_carlo: MonteCarlo,
+}
+
+fn bounds(name: &str, unit: &str, b: &Bounds, digits: usize) -> String {
+    let hi = b.hi.map_or("none".to_string(), |h| fixed(h, digits));
+    let gap = b.gap.map_or("-".to_string(), |g| format!("{g:.2e}"));
+    format!(
+        "{name}: [{}, {}] {unit}  (gap {gap}{})\n",
+        fixed(b.lo, digits),
+        hi,
+        if b.converged { "" } else { ", not converged" }
+    )
+}
+
+fn aircraft(title: &str, c: &CaseAircraft) -> String {
+    let mut s = format!(
+        "{title}: critical jump P0 = {} rad/s at delta_a = {} deg\n",
+        fixed(c.p0, 6),
+        fixed(c.delta_a_deg, 4)
+    );
+    let kv: Vec<String> = c
+        .parameters
+        .iter()
+        .map(|(k, v)| format!("{k} = {v}"))
+        .collect();
+    for line in kv.chunks(6) {
+        s += &format!("    {}\n", line.join(", "));
+    }
+    s
+}
+
+/// The text summary of one run.
+pub fn text(r: &Run) -> String {
+    let c = &r.clearance;
+    let mut s = format!(
+        "{}  (delta_e = {} deg), {} uncertain parameters\n\n",
+        c.aircraft,
+        fixed(c.delta_e_rad.to_degrees(), 4),
+        c.box_.len()
+    );
+    for (k, lo, hi) in &c.box_ {
+        s += &format!("    {k:<10} [{lo}, {hi}]\n");
+    }
+    s += "\nMinimum over the box of the critical jump (lo proven, hi attained):\n";
+    s += &bounds("  roll rate P0    ", "rad/s", &c.critical_p0, 6);
+    s += &bounds("  |delta_a|       ", "deg", &c.critical_delta_a_deg, 4);
+    s += &format!(
+        "  proof: {} boxes, {} slabs, {:.2} s; {}\n\n",
+        c.boxes, c.slabs, c.seconds, c.note
+    );
+    if let Some(w) = &c.worst_case {
+        s += &aircraft("Worst case (roll rate)", w);
+    }
+    if let Some(w) = &c.worst_case_aileron {
+        s += &aircraft("Worst case (aileron)", w);
+    }
+    s += &match c.cleared {
+        Some(true) => "\nCleared: no aircraft of the box has a critical jump within the aileron limit.\n"
+            .to_string(),
+        Some(false) => "\nNOT cleared: the counterexample below has its critical jump within the aileron limit.\n"
+            .to_string(),
+        None => "\nCleared: undecided (no aileron limit in [limits], or the bounds straddle it).\n"
+            .to_string(),
+    };
+    if let Some(w) = &c.counterexample {
+        s += &aircraft("Counterexample", w);
+    }
+    let m = &r.monte_carlo;
+    let opt = |x: Option<f64>, d: usize| x.map_or("none".to_string(), |v| fixed(v, d));
+    s += &format!(
+        "\nMonte Carlo ({} seeded samples, exact path): min P0 = {} rad/s, min |delta_a| = {} deg, within limit: {}\n",
+        m.samples,
+        opt(m.min_p0, 6),
+        opt(m.min_abs_delta_a_deg, 4),
+        m.fraction_within_limit.map_or("no limit".to_string(), |f| format!("{:.4}", f))
+    );
+    s
+}
+
+/// summary.md of a run set.
+pub fn markdown(runs: &[Run]) -> String {
+    let mut s = String::from("# Clearance\n\n");
+    for r in runs {
+        s += "```text\n";
+        s += &text(r);
+        s += "```\n\n";
+    }
+    s
+}
+
+/// The CSV of the Monte Carlo samples (every run).
+pub fn samples_csv(runs: &[Run]) -> String {
+    let mut s = String::from("delta_e_deg,sample,p0_rad_s,abs_delta_a_deg\n");
+    for r in runs {
+        for (i, v) in r.monte_carlo.values.iter().enumerate() {
+            let o = |x: Option<f64>| x.map_or(String::new(), |v| v.to_string());
+            s += &format!(
+                "{},{},{},{}\n",
+                r.clearance.delta_e_rad.to_degrees(),
+                i,
+                o(v.p0),
+                o(v.abs_delta_a_deg)
+            );
+        }
+    }
+    s
+}
+
+use crate::plot::{Axis, Dash, Figure, LegendPlace, Line, Panel, Rgb};
+
+fn line(label: &str, points: Vec<(f64, f64)>, color: Rgb, dash: Dash) -> Line {
+    Line {
+        label: Some(label.to_string()),
+        points,
+        color,
+        dash,
+        width: 2,
+    }
+}
+
+fn panel(title: &str, x: Axis, y: Axis, lines: Vec<Line>) -> Panel {
+    Panel {
+        title: title.to_string(),
+        area: [0.0, 0.0, 1.0, 1.0],
+        x,
+        y,
+        lines,
+        markers: Vec::new(),
+        legend: LegendPlace::UpperRight,
+    }
+}
+
+/// The histogram of the Monte Carlo critical roll rates with the certified bounds.
+pub fn histogram(r: &Run) -> Figure {
+    let v: Vec<f64> = r.monte_carlo.values.iter().filter_map(|s| s.p0).collect();
+    let c = &r.clearance;
+    let lo = c.critical_p0.lo;
+    let hi = c.critical_p0.hi.unwrap_or(lo);
+    let vmax = v.iter().copied().fold(hi, f64::max);
+    let (x0, x1) = (
+        lo - 0.05 * (vmax - lo).max(1e-3),
+        vmax + 0.05 * (vmax - lo).max(1e-3),
+    );
+    let bins = 40;
+    let w = (x1 - x0) / bins as f64;
+    let mut counts = vec![0usize; bins];
+    for x in &v {
+        counts[(((x - x0) / w) as usize).min(bins - 1)] += 1;
+    }
+    let top = counts.iter().copied().max().unwrap_or(1).max(1) as f64 * 1.15;
+    let mut steps = vec![(x0, 0.0)];
+    for (i, n) in counts.iter().enumerate() {
+        let a = x0 + i as f64 * w;
+        steps.push((a, *n as f64));
+        steps.push((a + w, *n as f64));
+    }
+    steps.push((x1, 0.0));
+    let blue = Rgb(31, 119, 180);
+    let red = Rgb(214, 39, 40);
+    let green = Rgb(44, 160, 44);
+    Figure {
+        title: format!(
+            "{}: critical jump roll rate over the uncertainty box (delta_e = {:.2} deg)",
+            c.aircraft,
+            c.delta_e_rad.to_degrees()
+        ),
+        panels: vec![panel(
+            "",
+            Axis::linear("critical jump P0 (rad/s)", x0, x1),
+            Axis::linear("Monte Carlo samples (count)", 0.0, top),
+            vec![
+                line(&format!("{} samples", v.len()), steps, blue, Dash::Solid),
+                line(
+                    "proven lower bound lo",
+                    vec![(lo, 0.0), (lo, top)],
+                    red,
+                    Dash::Dashed,
+                ),
+                line(
+                    "worst case found hi",
+                    vec![(hi, 0.0), (hi, top)],
+                    green,
+                    Dash::Dotted,
+                ),
+            ],
+        )],
+        legend_area: None,
+        note: String::new(),
+    }
+}
+
+/// The clearance map: certified band and Monte Carlo minimum of the critical aileron and roll
+/// rate versus delta_e.
+pub fn map(runs: &[Run]) -> Figure {
+    let de: Vec<f64> = runs
+        .iter()
+        .map(|r| r.clearance.delta_e_rad.to_degrees())
+        .collect();
+    let series = |f: &dyn Fn(&Run) -> Option<f64>| -> Vec<(f64, f64)> {
+        runs.iter()
+            .zip(&de)
+            .filter_map(|(r, d)| f(r).map(|v| (*d, v)))
+            .collect()
+    };
+    let range = |pts: &[&Vec<(f64, f64)>]| {
+        let ys: Vec<f64> = pts.iter().flat_map(|p| p.iter().map(|q| q.1)).collect();
+        let lo = ys.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = ys.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        if lo.is_finite() && hi.is_finite() {
+            let m = 0.05 * (hi - lo).max(1e-3);
+            (lo - m, hi + m)
+        } else {
+            (0.0, 1.0)
+        }
+    };
+    let (d0, d1) = (
+        de.first().copied().unwrap_or(0.0),
+        de.last()
+            .copied()
+            .unwrap_or(1.0)
+            .max(de.first().copied().unwrap_or(0.0) + 1e-3),
+    );
+    let red = Rgb(214, 39, 40);
+    let green = Rgb(44, 160, 44);
+    let blue = Rgb(31, 119, 180);
+    let mut panels = Vec::new();
+    for (k, (title, unit)) in [("critical |delta_a|", "deg"), ("critical P0", "rad/s")]
+        .iter()
+        .enumerate()
+    {
+        let b = |r: &Run| {
+            if k == 0 {
+                r.clearance.critical_delta_a_deg.clone()
+            } else {
+                r.clearance.critical_p0.clone()
+            }
+        };
+        let lo = series(&|r| Some(b(r).lo));
+        let hi = series(&|r| b(r).hi);
+        let mc = series(&|r| {
+            if k == 0 {
+                r.monte_carlo.min_abs_delta_a_deg
+            } else {
+                r.monte_carlo.min_p0
+            }
+        });
+        let (y0, y1) = range(&[&lo, &hi, &mc]);
+        let mut p = panel(
+            &format!("{title} vs delta_e"),
+            Axis::linear("delta_e (deg)", d0, d1),
+            Axis::linear(format!("{title} ({unit})"), y0, y1),
+            vec![
+                line("proven lower bound lo", lo, red, Dash::Solid),
+                line("worst case found hi", hi, green, Dash::Dashed),
+                line("Monte Carlo minimum", mc, blue, Dash::Dotted),
+            ],
+        );
+        p.area = if k == 0 {
+            [0.0, 0.0, 1.0, 0.5]
+        } else {
+            [0.0, 0.5, 1.0, 1.0]
+        };
+        panels.push(p);
+    }
+    Figure {
+        title: format!(
+            "{}: clearance map",
+            runs.first().map_or("", |r| &r.clearance.aircraft)
+        ),
+        panels,
+        legend_area: None,
+        note: String::new(),
+    }
+}

@@ -24,7 +24,11 @@ use num_traits::Zero;
 use serde::Serialize;
 use std::sync::OnceLock;
 
+mod departure;
 mod primary;
+pub use departure::{
+    omega_at, parametric_characteristic, FirstDeparture, HopfPoint, HopfPolys, Landing,
+};
 pub use primary::{quadratic_roots, InAileron, Outcome};
 
 /// A trim on the unconstrained roll (delta_r = 0) at which something happens: a jump point (a
@@ -50,6 +54,10 @@ pub struct JumpPoint {
     pub within_limits: Option<bool>,
     /// Whether |alpha| and |beta| are within the `[validity]` range of the linear aerodynamics.
     pub valid: bool,
+    /// For a jump point: the stable equilibria at the same aileron the jump can land on (empty:
+    /// divergence); absent for poles and Hopf points.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lands_at: Option<Vec<Landing>>,
 }
 
 /// A departure point of the zero-sideslip roll: a positive root of det K at the beta = 0 trim.
@@ -82,6 +90,8 @@ pub struct DeparturePoint {
 pub struct ZeroSideslip {
     /// Positive roots of det K at the zero-sideslip trims, ascending.
     pub departure: Vec<DeparturePoint>,
+    /// Hopf roll rates of the zero-sideslip trims (omega^2 > 0), rad/s, ascending.
+    pub hopf_roll_rates: Vec<f64>,
 }
 
 /// Everything `model analyze` reports (angles in rad, rates in rad/s, lists ascending in P0).
@@ -106,6 +116,11 @@ pub struct Analysis {
     pub det_k_poles: Vec<JumpPoint>,
     /// Section V: zero-sideslip roll.
     pub zero_sideslip: ZeroSideslip,
+    /// Hopf points (a complex pair of J5 on the imaginary axis), ascending in P0.
+    pub hopf: Vec<HopfPoint>,
+    /// The first loss of stability along the primary branch (jump or Hopf), `None` when the
+    /// branch never loses stability within the aileron range (or diverges first).
+    pub first_departure: Option<FirstDeparture>,
 }
 
 /// Why an aircraft cannot be analysed in closed form.
@@ -207,6 +222,7 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
             r,
             within_limits: marks.within(da, None),
             valid: marks.valid(alpha, beta),
+            lands_at: None,
         }
     };
 
@@ -221,7 +237,7 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
 
     // A root shared with det A after cancellation has no finite trim: not a jump point.
     let jump_num = strip(&cancel(&d.jump, &d.poles).0, &det_a);
-    let jump: Vec<JumpPoint> = positive_roots(&jump_num)
+    let mut jump: Vec<JumpPoint> = positive_roots(&jump_num)
         .iter()
         .map(|root| point(root.value, &jump_at))
         // A root where the common aileron of the trim condition and det J5 is complex (a
@@ -235,6 +251,12 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         .map_or(DEFAULT_AILERON_RANGE, |l| {
             l.to_radians().max(DEFAULT_AILERON_RANGE)
         });
+    let hp = HopfPolys::new(&d, aircraft, delta_e_rad);
+    for j in &mut jump {
+        j.lands_at = Some(departure::landings(&hp, &d, &trims, j));
+    }
+    let hopf = departure::hopf_points(&hp, &g, &trims, &marks);
+    let first_departure = departure::first_departure(&hp, &g, &trims, &jump, &hopf, bound);
     let roots: Vec<(f64, f64)> = jump.iter().map(|j| (j.p0, j.delta_a_rad)).collect();
     let (critical, critical_note) = match primary::follow(&g, &trims[0], &roots, bound) {
         Outcome::Jump(i) => (Some(jump[i].clone()), None),
@@ -304,7 +326,15 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         divergence_roll_rates,
         jump,
         det_k_poles,
-        zero_sideslip: ZeroSideslip { departure },
+        zero_sideslip: ZeroSideslip {
+            departure,
+            hopf_roll_rates: departure::zs_hopf_roll_rates(&hp, &zs_trims)
+                .iter()
+                .map(|(p, _)| *p)
+                .collect(),
+        },
+        hopf,
+        first_departure,
     };
     check(&analysis)?;
     Ok(analysis)

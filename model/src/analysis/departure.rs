@@ -1,0 +1,445 @@
+//! Beyond the paper: Hopf points from the closed form, their first Lyapunov coefficient, where a
+//! jump lands, and the first loss of stability along the primary branch.
+//!
+//! The Hopf polynomial is [`crate::derivation::hopf`]'s `det(A)^10 Delta4` specialised to the
+//! aircraft (the cleared characteristic coefficients `C_k` are built from the same trim
+//! numerators as the jump polynomial, and delta_a is eliminated by [`eliminate_aileron`]). Its
+//! roots include neutral saddles; `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` (derived in
+//! [`crate::derivation::hopf::orlando`]) tells them apart.
+
+use super::{
+    aileron_of_root, exact_f64, in_aileron, specialisation, strip, univariate, CriterionPolys,
+    InAileron, JumpPoint, Marks,
+};
+use crate::aircraft::Aircraft;
+use crate::algebra::{Poly, Sym, Q};
+use crate::derivation::eliminate_aileron;
+use crate::derivation::hopf::{
+    characteristic_coefficients, cleared_coefficients, hopf_at, orlando, Orlando,
+};
+use crate::equations::symbols;
+use crate::roots::{positive_roots, real_roots, UPoly};
+use nalgebra::{Complex, Matrix5, Vector5};
+use serde::Serialize;
+use std::sync::OnceLock;
+
+/// A Hopf point of the unconstrained roll: a trim where a complex pair of J5 crosses the
+/// imaginary axis.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct HopfPoint {
+    /// The trim (same keys as a jump entry).
+    #[serde(flatten)]
+    pub point: JumpPoint,
+    /// The frequency of the pair `+-i omega`, rad/s.
+    pub omega: f64,
+    /// The period `2 pi / omega`, s.
+    pub period: f64,
+    /// First Lyapunov coefficient (Kuznetsov's formula, eigenvectors normalised `<q, q> = 1`,
+    /// `<p, q> = 1`).
+    pub l1: f64,
+    /// `"supercritical"` (l1 < 0) or `"subcritical"` (l1 > 0).
+    pub kind: &'static str,
+}
+
+/// A stable equilibrium a jump can land on (same aileron as the fold).
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Landing {
+    /// Roll rate after the jump, rad/s.
+    pub p0: f64,
+    /// Angle of attack, rad.
+    pub alpha: f64,
+    /// Sideslip, rad.
+    pub beta: f64,
+    /// Pitch rate, rad/s.
+    pub q: f64,
+    /// Yaw rate, rad/s.
+    pub r: f64,
+}
+
+/// The first loss of stability met along the primary branch.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct FirstDeparture {
+    /// `"jump"` or `"hopf"`.
+    pub kind: &'static str,
+    /// Trim roll rate, rad/s.
+    pub p0: f64,
+    /// Aileron deflection, rad (the mirror point has the opposite sign and -P0).
+    pub delta_a_rad: f64,
+    /// The same in degrees.
+    pub delta_a_deg: f64,
+    /// For a Hopf point: its frequency, rad/s.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub omega: Option<f64>,
+    /// For a Hopf point: its first Lyapunov coefficient.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub l1: Option<f64>,
+    /// For a Hopf point: supercritical or subcritical.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub hopf_kind: Option<&'static str>,
+    /// For a jump: the stable equilibria it can land on (empty: divergence).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lands_at: Option<Vec<Landing>>,
+}
+
+/// The parametric characteristic coefficients `c1..c5` of J5 at the trim (trim symbols).
+pub fn parametric_characteristic() -> &'static [Poly; 5] {
+    static C: OnceLock<[Poly; 5]> = OnceLock::new();
+    C.get_or_init(|| characteristic_coefficients(&super::parametric().jacobian))
+}
+
+/// The Hopf part of the closed form specialised to one aircraft.
+#[derive(Clone, Debug)]
+pub struct HopfPolys {
+    /// `c1..c5` in trim symbols, exact.
+    pub c: [Poly; 5],
+    /// `det(A)^10 Delta4` at the trim, in P0 and delta_a.
+    pub hopf_at: Poly,
+    /// The Hopf polynomial in P0 (delta_a eliminated, det A's roots removed).
+    pub hopf: UPoly,
+    /// The Hopf polynomial of the zero-sideslip trims in P0 (`det(A1)^10 Delta4`).
+    pub zs_hopf: UPoly,
+    /// Entries of J5 (row-major) in trim symbols, exact.
+    pub jacobian: Vec<Poly>,
+    /// Second derivatives `d2 f_i / dx_j dx_k` of the PSS right-hand side (constants for the
+    /// quadratic PSS model), index `[i][j][k]`.
+    pub second: Vec<Poly>,
+    /// Third derivatives, index `[i][j][k][l]` (identically zero for the PSS model; kept so
+    /// Kuznetsov's formula is complete).
+    pub third: Vec<Poly>,
+}
+
+impl HopfPolys {
+    /// Specialises the Hopf criterion to an aircraft (delta_r = 0).
+    pub fn new(cp: &CriterionPolys, aircraft: &Aircraft, delta_e_rad: f64) -> HopfPolys {
+        let s = symbols();
+        let values = specialisation(aircraft, delta_e_rad);
+        let c: [Poly; 5] = parametric_characteristic()
+            .clone()
+            .map(|ck| ck.subs_values(&values));
+        let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
+        let hopf_at = hopf_at(&cleared_coefficients(&c, &t4, &cp.trim, &cp.det_a));
+        let hopf = univariate(&eliminate_aileron(&cp.trim_condition, &hopf_at), s.p0);
+        let hopf = strip(&hopf, &univariate(&cp.det_a, s.p0));
+        let zero = [(s.beta0, Q::ZERO)];
+        let t3 = [s.alpha0, s.q0, s.r0];
+        let czs = c.clone().map(|ck| ck.subs_values(&zero));
+        let zs_hopf = univariate(&hopf_at_zs(&czs, &t3, &cp.zs_trim, &cp.zs_det), s.p0);
+        let zs_hopf = strip(&zs_hopf, &univariate(&cp.zs_det, s.p0));
+        let par = super::parametric();
+        let jacobian = (0..5)
+            .flat_map(|i| (0..5).map(move |j| (i, j)))
+            .map(|(i, j)| par.jacobian.get(i, j).subs_values(&values))
+            .collect();
+        let model: Vec<Poly> = par
+            .unconstrained_model
+            .iter()
+            .map(|f| f.subs_values(&values))
+            .collect();
+        let x = s.states();
+        let mut second = Vec::with_capacity(125);
+        let mut third = Vec::with_capacity(625);
+        for f in &model {
+            for a in x {
+                for b in x {
+                    let fab = f.diff(a).diff(b);
+                    for c in x {
+                        third.push(fab.diff(c));
+                    }
+                    second.push(fab);
+                }
+            }
+        }
+        HopfPolys {
+            c,
+            hopf_at,
+            hopf,
+            zs_hopf,
+            jacobian,
+            second,
+            third,
+        }
+    }
+
+    /// J5 at a trim `[alpha0, beta0, P0, Q0, R0]` in f64.
+    pub fn j5(&self, trim: &[f64; 5]) -> Matrix5<f64> {
+        let look = trim_lookup(trim);
+        Matrix5::from_fn(|i, j| self.jacobian[5 * i + j].eval_f64(&look))
+    }
+
+    /// `c1..c5` at a trim in f64.
+    pub fn coefficients(&self, trim: &[f64; 5]) -> [f64; 5] {
+        let look = trim_lookup(trim);
+        std::array::from_fn(|k| self.c[k].eval_f64(&look))
+    }
+
+    /// The first Lyapunov coefficient at a Hopf trim with frequency `omega` (Kuznetsov,
+    /// *Elements of Applied Bifurcation Theory*, Eq. 3.20 in its n-dimensional form):
+    /// `l1 = Re[<p, C(q,q,qb)> - 2 <p, B(q, A^-1 B(q,qb))> + <p, B(qb, (2 i omega - A)^-1 B(q,q))>]
+    /// / (2 omega)`, with `A q = i omega q`, `A^T p = -i omega p`, `<p, q> = 1`.
+    pub fn lyapunov(&self, trim: &[f64; 5], omega: f64) -> Option<f64> {
+        let look = trim_lookup(trim);
+        let sec: Vec<f64> = self.second.iter().map(|p| p.eval_f64(&look)).collect();
+        let thi: Vec<f64> = self.third.iter().map(|p| p.eval_f64(&look)).collect();
+        let a = self.j5(trim).map(|v| Complex::new(v, 0.0));
+        let iw = Complex::new(0.0, omega);
+        let q = null_vector(&(a - Matrix5::from_diagonal_element(iw)))?;
+        let q = q.unscale(q.norm());
+        let p = null_vector(&(a.transpose() + Matrix5::from_diagonal_element(iw)))?;
+        // <p, q> = p^H q = 1.
+        let pq = p.dotc(&q);
+        if pq.norm() == 0.0 {
+            return None;
+        }
+        let p = p * pq.conj().inv();
+        let b = |u: &Vector5<Complex<f64>>, v: &Vector5<Complex<f64>>| {
+            Vector5::from_fn(|i, _| {
+                let mut acc = Complex::new(0.0, 0.0);
+                for j in 0..5 {
+                    for k in 0..5 {
+                        acc += sec[25 * i + 5 * j + k] * u[j] * v[k];
+                    }
+                }
+                acc
+            })
+        };
+        let cterm = Vector5::from_fn(|i, _| {
+            let mut acc = Complex::new(0.0, 0.0);
+            for j in 0..5 {
+                for k in 0..5 {
+                    for l in 0..5 {
+                        acc += thi[125 * i + 25 * j + 5 * k + l] * q[j] * q[k] * q[l].conj();
+                    }
+                }
+            }
+            acc
+        });
+        let qb = q.map(|z| z.conj());
+        let a_inv_b = a.lu().solve(&b(&q, &qb))?;
+        let shifted = Matrix5::from_diagonal_element(iw * 2.0) - a;
+        let s_inv_b = shifted.lu().solve(&b(&q, &q))?;
+        let inner = p.dotc(&cterm) - p.dotc(&b(&q, &a_inv_b)) * 2.0 + p.dotc(&b(&qb, &s_inv_b));
+        let l1 = inner.re / (2.0 * omega);
+        l1.is_finite().then_some(l1)
+    }
+
+    /// Whether the trim is asymptotically stable (every eigenvalue of J5 in the left half-plane).
+    pub fn stable(&self, trim: &[f64; 5]) -> bool {
+        self.j5(trim)
+            .complex_eigenvalues()
+            .iter()
+            .all(|l| l.re < 0.0)
+    }
+}
+
+/// `den^10 Delta4` at the zero-sideslip trim (beta0 = 0 already substituted into `c`).
+fn hopf_at_zs(c: &[Poly; 5], t: &[Sym], num: &[Poly], den: &Poly) -> Poly {
+    hopf_at(&cleared_coefficients(c, t, num, den))
+}
+
+fn trim_lookup(trim: &[f64; 5]) -> impl Fn(Sym) -> f64 {
+    let s = symbols();
+    let t = s.trims();
+    let trim = *trim;
+    move |x: Sym| t.iter().position(|y| *y == x).map_or(f64::NAN, |i| trim[i])
+}
+
+/// A null vector of a (numerically) singular 5x5 complex matrix: the row with the smallest
+/// pivot is replaced by the normalisation `x_k = 1`, choosing `k` for the smallest residual.
+fn null_vector(m: &Matrix5<Complex<f64>>) -> Option<Vector5<Complex<f64>>> {
+    let mut best: Option<(f64, Vector5<Complex<f64>>)> = None;
+    for row in 0..5 {
+        for k in 0..5 {
+            let mut a = *m;
+            let mut rhs = Vector5::zeros();
+            for j in 0..5 {
+                a[(row, j)] = Complex::new(if j == k { 1.0 } else { 0.0 }, 0.0);
+            }
+            rhs[row] = Complex::new(1.0, 0.0);
+            if let Some(x) = a.lu().solve(&rhs) {
+                let res = (m * x).norm() / x.norm();
+                if res.is_finite() && best.as_ref().is_none_or(|(r, _)| res < *r) {
+                    best = Some((res, x));
+                }
+            }
+        }
+    }
+    best.map(|(_, x)| x)
+}
+
+/// The Hopf points of the unconstrained roll, ascending in P0, and the zero-sideslip Hopf
+/// roll rates (positive roots of the zero-sideslip Hopf polynomial with omega^2 > 0).
+pub(super) fn hopf_points(
+    h: &HopfPolys,
+    g: &InAileron,
+    trims: &[InAileron],
+    marks: &Marks,
+) -> Vec<HopfPoint> {
+    let o: &Orlando = orlando();
+    let hopf_ia = in_aileron(&h.hopf_at);
+    positive_roots(&h.hopf)
+        .iter()
+        .filter_map(|root| {
+            let p0 = root.value;
+            let da = aileron_of_root(g, &hopf_ia, p0);
+            if !da.is_finite() {
+                return None;
+            }
+            let point = trim_point(p0, da, trims, marks);
+            let t = [point.alpha, point.beta, p0, point.q, point.r];
+            let omega = omega_at(o, &h.coefficients(&t))?;
+            let l1 = h.lyapunov(&t, omega)?;
+            Some(HopfPoint {
+                point,
+                omega,
+                period: 2.0 * std::f64::consts::PI / omega,
+                l1,
+                kind: if l1 < 0.0 {
+                    "supercritical"
+                } else {
+                    "subcritical"
+                },
+            })
+        })
+        .collect()
+}
+
+/// `omega` from `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` when positive (a Hopf pair), `None` for
+/// a neutral saddle (`omega^2 < 0`) or a degenerate root.
+pub fn omega_at(o: &Orlando, c: &[f64; 5]) -> Option<f64> {
+    let hs = crate::derivation::hopf::hopf_symbols();
+    let look = |x: Sym| hs.c.iter().position(|y| *y == x).map_or(f64::NAN, |i| c[i]);
+    let w = o.omega_sq.num.eval_f64(&look) / o.omega_sq.den.eval_f64(&look);
+    (w.is_finite() && w > 0.0).then(|| w.sqrt())
+}
+
+/// The trim at `(p0, delta_a)` as a [`JumpPoint`] (no landing).
+pub(super) fn trim_point(p0: f64, da: f64, trims: &[InAileron], marks: &Marks) -> JumpPoint {
+    let dv = trims[0].eval(p0, 0.0);
+    let [alpha, beta, q, r] = std::array::from_fn(|i| trims[i + 1].eval(p0, da) / dv);
+    JumpPoint {
+        p0,
+        delta_a_rad: da,
+        delta_a_deg: da.to_degrees(),
+        alpha,
+        beta,
+        q,
+        r,
+        within_limits: marks.within(da, None),
+        valid: marks.valid(alpha, beta),
+        lands_at: None,
+    }
+}
+
+/// Every stable equilibrium at the aileron of the fold `fold` other than the fold itself: all
+/// real roots in P0 of the trim condition at that (exact) delta_a, with finite trims and all
+/// eigenvalues of J5 in the left half-plane.
+pub(super) fn landings(
+    h: &HopfPolys,
+    cp: &CriterionPolys,
+    trims: &[InAileron],
+    fold: &JumpPoint,
+) -> Vec<Landing> {
+    let s = symbols();
+    let at = cp
+        .trim_condition
+        .subs_values(&[(s.delta_a, exact_f64(fold.delta_a_rad))]);
+    let det_a = univariate(&cp.det_a, s.p0);
+    let g = strip(&univariate(&at, s.p0), &det_a);
+    if g.is_zero() {
+        return Vec::new();
+    }
+    real_roots(&g)
+        .iter()
+        .map(|r| r.value)
+        // The fold is a double root at its exact aileron; the rounded aileron splits it.
+        .filter(|p| (p - fold.p0).abs() > 1e-6 * (1.0 + fold.p0.abs()))
+        .filter_map(|p0| {
+            let dv = trims[0].eval(p0, 0.0);
+            let [alpha, beta, q, r] =
+                std::array::from_fn(|i| trims[i + 1].eval(p0, fold.delta_a_rad) / dv);
+            let t = [alpha, beta, p0, q, r];
+            (t.iter().all(|v| v.is_finite()) && h.stable(&t)).then_some(Landing {
+                p0,
+                alpha,
+                beta,
+                q,
+                r,
+            })
+        })
+        .collect()
+}
+
+/// The first loss of stability along the primary branch: the first jump or Hopf point the branch
+/// meets when followed from the (stable) wings-level trim P0 = 0, delta_a = 0 towards P0 > 0.
+/// With delta_r = 0 the model is symmetric under `(P0, beta, r, delta_a) -> -(...)`, so the other
+/// aileron direction meets the mirror point (-P0, -delta_a) with the same kind, omega and l1
+/// (the symmetry maps J5 to a similar matrix). `None` when the wings-level trim is itself
+/// unstable, or the branch diverges or runs off the aileron range first.
+pub(super) fn first_departure(
+    h: &HopfPolys,
+    g: &InAileron,
+    trims: &[InAileron],
+    jump: &[JumpPoint],
+    hopf: &[HopfPoint],
+    bound: f64,
+) -> Option<FirstDeparture> {
+    let dv = trims[0].eval(0.0, 0.0);
+    let origin: [f64; 5] = [
+        trims[1].eval(0.0, 0.0) / dv,
+        trims[2].eval(0.0, 0.0) / dv,
+        0.0,
+        trims[3].eval(0.0, 0.0) / dv,
+        trims[4].eval(0.0, 0.0) / dv,
+    ];
+    if !h.stable(&origin) {
+        return None;
+    }
+    let hits: Vec<(f64, f64)> = jump
+        .iter()
+        .map(|j| (j.p0, j.delta_a_rad))
+        .chain(hopf.iter().map(|h| (h.point.p0, h.point.delta_a_rad)))
+        .collect();
+    let i = match super::primary::follow(g, &trims[0], &hits, bound) {
+        super::Outcome::Jump(i) => i,
+        _ => return None,
+    };
+    if let Some(j) = jump.get(i) {
+        return Some(FirstDeparture {
+            kind: "jump",
+            p0: j.p0,
+            delta_a_rad: j.delta_a_rad,
+            delta_a_deg: j.delta_a_deg,
+            omega: None,
+            l1: None,
+            hopf_kind: None,
+            lands_at: j.lands_at.clone(),
+        });
+    }
+    let hp = hopf.get(i - jump.len())?;
+    Some(FirstDeparture {
+        kind: "hopf",
+        p0: hp.point.p0,
+        delta_a_rad: hp.point.delta_a_rad,
+        delta_a_deg: hp.point.delta_a_deg,
+        omega: Some(hp.omega),
+        l1: Some(hp.l1),
+        hopf_kind: Some(hp.kind),
+        lands_at: None,
+    })
+}
+
+/// The zero-sideslip Hopf roll rates: positive roots of the zero-sideslip Hopf polynomial whose
+/// omega^2 at the beta = 0 trim is positive.
+pub(super) fn zs_hopf_roll_rates(h: &HopfPolys, zs_trims: &[InAileron]) -> Vec<(f64, f64)> {
+    let o = orlando();
+    positive_roots(&h.zs_hopf)
+        .iter()
+        .filter_map(|root| {
+            let p0 = root.value;
+            let dv = zs_trims[0].eval(p0, 0.0);
+            let [alpha, q, r] = std::array::from_fn(|i| zs_trims[i + 1].eval(p0, 0.0) / dv);
+            let c = h.coefficients(&[alpha, 0.0, p0, q, r]);
+            omega_at(o, &c).map(|w| (p0, w))
+        })
+        .collect()
+}

@@ -118,7 +118,7 @@ impl HopfPolys {
             .map(|ck| ck.subs_values(&values));
         let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
         let hopf_at = hopf_at(&cleared_coefficients(&c, &t4, &cp.trim, &cp.det_a));
-        let hopf = univariate(&eliminate_aileron(&cp.trim_condition, &hopf_at), s.p0);
+        let hopf = resultant_in_aileron(&cp.trim_condition, &hopf_at);
         let hopf = strip(&hopf, &univariate(&cp.det_a, s.p0));
         let zero = [(s.beta0, Q::ZERO)];
         let t3 = [s.alpha0, s.q0, s.r0];
@@ -231,6 +231,56 @@ impl HopfPolys {
     }
 }
 
+/// The resultant in delta_a of the trim condition `g` and `f` (both in P0 and delta_a), as a
+/// polynomial in P0: the same resultant as [`eliminate_aileron`] (numeric data, actual degrees),
+/// computed in the dense univariate ring when `g` is quadratic, because the Hopf polynomial's
+/// resultant exceeds the packed monomials' exponent range (P0 degree above 127).
+///
+/// With `g = g2 x^2 + g1 x + g0` and `f` of degree `n >= 2` in `x = delta_a`, the pseudo-remainder
+/// `R = g2^(n-1) f mod g = R1 x + R0` gives `Res(g, f) = Res(g, R) / g2^(n-1)` and
+/// `Res(g, R1 x + R0) = g2 R0^2 - g1 R0 R1 + g0 R1^2`; the division is exact.
+pub fn resultant_in_aileron(g: &Poly, f: &Poly) -> UPoly {
+    let s = symbols();
+    if g.degree(s.delta_a) < 2 || f.degree(s.delta_a) < 2 {
+        return univariate(&eliminate_aileron(g, f), s.p0);
+    }
+    let u = |p: &Poly| -> Vec<UPoly> {
+        p.coeffs(s.delta_a)
+            .iter()
+            .map(|c| univariate(c, s.p0))
+            .collect()
+    };
+    let gc = u(g);
+    assert_eq!(
+        gc.len(),
+        3,
+        "the trim condition is at most quadratic in delta_a"
+    );
+    let (g0, g1, g2) = (&gc[0], &gc[1], &gc[2]);
+    let mut h = u(f);
+    let n = h.len() - 1;
+    for i in (2..=n).rev() {
+        let c = h[i].clone();
+        for hj in h.iter_mut().take(i) {
+            *hj = hj.mul(g2);
+        }
+        h[i - 1] = h[i - 1].sub(&c.mul(g1));
+        h[i - 2] = h[i - 2].sub(&c.mul(g0));
+        h[i] = UPoly::zero();
+    }
+    let (r0, r1) = (&h[0], &h[1]);
+    let mut res = g2
+        .mul(&r0.mul(r0))
+        .sub(&g1.mul(&r0.mul(r1)))
+        .add(&g0.mul(&r1.mul(r1)));
+    for _ in 0..n - 1 {
+        let (q, r) = res.div_rem(g2);
+        assert!(r.is_zero(), "Res(g, R) carries g2^(n-1)");
+        res = q;
+    }
+    res
+}
+
 /// `den^10 Delta4` at the zero-sideslip trim (beta0 = 0 already substituted into `c`).
 fn hopf_at_zs(c: &[Poly; 5], t: &[Sym], num: &[Poly], den: &Poly) -> Poly {
     hopf_at(&cleared_coefficients(c, t, num, den))
@@ -280,10 +330,7 @@ pub(super) fn hopf_points(
         .iter()
         .filter_map(|root| {
             let p0 = root.value;
-            let da = aileron_of_root(g, &hopf_ia, p0);
-            if !da.is_finite() {
-                return None;
-            }
+            let da = hopf_aileron(h, g, &hopf_ia, trims, p0)?;
             let point = trim_point(p0, da, trims, marks);
             let t = [point.alpha, point.beta, p0, point.q, point.r];
             let omega = omega_at(o, &h.coefficients(&t))?;
@@ -301,6 +348,42 @@ pub(super) fn hopf_points(
             })
         })
         .collect()
+}
+
+/// The aileron of the trim at a root `p0` of the Hopf polynomial: of the trims of that roll rate
+/// (roots of the trim condition), the one where Delta4, evaluated from the characteristic
+/// coefficients at the trim, is smallest relative to the size of its terms. The high degree of
+/// `hopf_at` in delta_a makes its own value a poor guide with aileron yaw. `None` when no trim is
+/// real.
+fn hopf_aileron(
+    h: &HopfPolys,
+    g: &InAileron,
+    hopf_ia: &InAileron,
+    trims: &[InAileron],
+    p0: f64,
+) -> Option<f64> {
+    let mut candidates = g.aileron_roots(p0);
+    if candidates.len() < 2 {
+        let da = aileron_of_root(g, hopf_ia, p0);
+        return da.is_finite().then_some(da);
+    }
+    let hs = crate::derivation::hopf::hopf_symbols();
+    let delta4 = &orlando().delta4;
+    let relative = |da: f64| {
+        let dv = trims[0].eval(p0, 0.0);
+        let [alpha, beta, q, r] = std::array::from_fn(|i| trims[i + 1].eval(p0, da) / dv);
+        let c = h.coefficients(&[alpha, beta, p0, q, r]);
+        let look = |x: Sym| hs.c.iter().position(|y| *y == x).map_or(f64::NAN, |i| c[i]);
+        let (mut sum, mut size) = (0.0, 0.0);
+        for (m, coef) in delta4.terms() {
+            let t = Poly::term(*m, coef.clone()).eval_f64(&look);
+            sum += t;
+            size += t.abs();
+        }
+        (sum / size).abs()
+    };
+    candidates.sort_by(|a, b| relative(*a).total_cmp(&relative(*b)));
+    candidates.first().copied()
 }
 
 /// `omega` from `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` when positive (a Hopf pair), `None` for

@@ -262,3 +262,39 @@ fn a_jump_lands_on_a_reported_stable_equilibrium_for_a_and_b() {
         assert!(eigenvalues(&k, &x, da).iter().all(|z| z.re < 0.0));
     }
 }
+
+#[test]
+fn generated_characteristic_coefficients_delta4_and_omega_squared_match_nalgebra() {
+    // At the Hopf point of B, P0 = 3.129030 rad/s: the generated coefficients are those
+    // of prod (s - l_i) over the oracle's eigenvalues, Delta4 changes sign across it, and
+    // omega^2 is the 0.8796^2.
+    let k = Aircraft::b().values_f64();
+    let kd = paper_tests::generated_derivatives(&k);
+    let p0 = 3.129030;
+    let (x, da) = trim_branches(&k, p0, de(), 0.0).remove(0);
+    let eig = eigenvalues(&k, &x, da);
+    // Coefficients of prod (s - l_i), highest power first.
+    let mut poly = vec![Complex::new(1.0, 0.0)];
+    for l in &eig {
+        let mut next = vec![Complex::new(0.0, 0.0); poly.len() + 1];
+        for (i, c) in poly.iter().enumerate() {
+            next[i] += c;
+            next[i + 1] -= c * l;
+        }
+        poly = next;
+    }
+    let c = roll_criterion::characteristic_coefficients(&kd, p0, de(), 0.0);
+    for i in 0..5 {
+        let want = poly[i + 1].re;
+        assert!(
+            (c[i] - want).abs() < 1e-5 * (1.0 + want.abs()),
+            "c{}: {} vs {want}",
+            i + 1,
+            c[i]
+        );
+    }
+    let d4 = |p: f64| roll_criterion::hurwitz_delta4(&kd, p, de(), 0.0);
+    assert!(d4(p0 - 1e-5) * d4(p0 + 1e-5) < 0.0);
+    let w2 = roll_criterion::hopf_omega_squared(&kd, p0, de(), 0.0);
+    assert!((w2.sqrt() - 0.8796).abs() < 5e-5, "{w2}");
+}

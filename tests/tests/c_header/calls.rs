@@ -16,7 +16,7 @@ pub const COLUMNS: [&str; 8] = [
 /// The built-in aircraft, by their index in a record.
 pub const AIRCRAFT: [&str; 2] = ["aircraft_a", "aircraft_b"];
 /// What each output is, per aircraft (C names).
-pub const LABELS: [[&str; 140]; 2] = [
+pub const LABELS: [[&str; 154]; 2] = [
     [
         "rc_trim(&rc_aircraft_a_derivatives).alpha",
         "rc_trim(&rc_aircraft_a_derivatives).beta",
@@ -88,6 +88,13 @@ pub const LABELS: [[&str; 140]; 2] = [
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives).v[6]",
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives).v[7]",
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives).v[8]",
+        "rc_characteristic_coefficients(&rc_aircraft_a_derivatives).v[0]",
+        "rc_characteristic_coefficients(&rc_aircraft_a_derivatives).v[1]",
+        "rc_characteristic_coefficients(&rc_aircraft_a_derivatives).v[2]",
+        "rc_characteristic_coefficients(&rc_aircraft_a_derivatives).v[3]",
+        "rc_characteristic_coefficients(&rc_aircraft_a_derivatives).v[4]",
+        "rc_hurwitz_delta4(&rc_aircraft_a_derivatives)",
+        "rc_hopf_omega_squared(&rc_aircraft_a_derivatives)",
         "rc_aircraft_a_trim().alpha",
         "rc_aircraft_a_trim().beta",
         "rc_aircraft_a_trim().q",
@@ -158,6 +165,13 @@ pub const LABELS: [[&str; 140]; 2] = [
         "rc_aircraft_a_zero_sideslip_jump_polynomial().v[6]",
         "rc_aircraft_a_zero_sideslip_jump_polynomial().v[7]",
         "rc_aircraft_a_zero_sideslip_jump_polynomial().v[8]",
+        "rc_aircraft_a_characteristic_coefficients().v[0]",
+        "rc_aircraft_a_characteristic_coefficients().v[1]",
+        "rc_aircraft_a_characteristic_coefficients().v[2]",
+        "rc_aircraft_a_characteristic_coefficients().v[3]",
+        "rc_aircraft_a_characteristic_coefficients().v[4]",
+        "rc_aircraft_a_hurwitz_delta4()",
+        "rc_aircraft_a_hopf_omega_squared()",
     ],
     [
         "rc_trim(&rc_aircraft_b_derivatives).alpha",
@@ -230,6 +244,13 @@ pub const LABELS: [[&str; 140]; 2] = [
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives).v[6]",
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives).v[7]",
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives).v[8]",
+        "rc_characteristic_coefficients(&rc_aircraft_b_derivatives).v[0]",
+        "rc_characteristic_coefficients(&rc_aircraft_b_derivatives).v[1]",
+        "rc_characteristic_coefficients(&rc_aircraft_b_derivatives).v[2]",
+        "rc_characteristic_coefficients(&rc_aircraft_b_derivatives).v[3]",
+        "rc_characteristic_coefficients(&rc_aircraft_b_derivatives).v[4]",
+        "rc_hurwitz_delta4(&rc_aircraft_b_derivatives)",
+        "rc_hopf_omega_squared(&rc_aircraft_b_derivatives)",
         "rc_aircraft_b_trim().alpha",
         "rc_aircraft_b_trim().beta",
         "rc_aircraft_b_trim().q",
@@ -300,10 +321,17 @@ pub const LABELS: [[&str; 140]; 2] = [
         "rc_aircraft_b_zero_sideslip_jump_polynomial().v[6]",
         "rc_aircraft_b_zero_sideslip_jump_polynomial().v[7]",
         "rc_aircraft_b_zero_sideslip_jump_polynomial().v[8]",
+        "rc_aircraft_b_characteristic_coefficients().v[0]",
+        "rc_aircraft_b_characteristic_coefficients().v[1]",
+        "rc_aircraft_b_characteristic_coefficients().v[2]",
+        "rc_aircraft_b_characteristic_coefficients().v[3]",
+        "rc_aircraft_b_characteristic_coefficients().v[4]",
+        "rc_aircraft_b_hurwitz_delta4()",
+        "rc_aircraft_b_hopf_omega_squared()",
     ],
 ];
 /// Every output for the aircraft with index `aircraft`, in record order.
-pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 140] {
+pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 154] {
     match aircraft {
         0 => aircraft_a(x),
         1 => aircraft_b(x),
@@ -311,7 +339,7 @@ pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 140] {
     }
 }
 /// Every output for Aircraft A, in record order.
-fn aircraft_a(x: &[f64; 8]) -> [f64; 140] {
+fn aircraft_a(x: &[f64; 8]) -> [f64; 154] {
     let k = &rc::aircraft_a::DERIVATIVES;
     let r0 = rc::trim(k, x[5], x[2], x[3]);
     let r1 = rc::zero_sideslip_trim(k, x[5], x[2]);
@@ -325,18 +353,24 @@ fn aircraft_a(x: &[f64; 8]) -> [f64; 140] {
     let r9 = rc::divergence_roll_rates(k);
     let r10 = rc::jump_polynomial(k, x[2], x[3]);
     let r11 = rc::zero_sideslip_jump_polynomial(k, x[2]);
-    let r12 = rc::aircraft_a::trim(x[5], x[2], x[3]);
-    let r13 = rc::aircraft_a::zero_sideslip_trim(x[5], x[2]);
-    let r14 = rc::aircraft_a::jacobian5(x[0], x[1], x[4], x[6], x[7]);
-    let r15 = rc::aircraft_a::residual_denominator(x[5], x[2], x[3]);
-    let r16 = rc::aircraft_a::stiffness(x[5], x[2], x[3]);
-    let r17 = rc::aircraft_a::det_k(x[5], x[2], x[3]);
-    let r18 = rc::aircraft_a::det_j5(x[5], x[2], x[3]);
-    let r19 = rc::aircraft_a::zero_sideslip_det_k(x[5], x[2]);
-    let r20 = rc::aircraft_a::divergence_biquadratic();
-    let r21 = rc::aircraft_a::divergence_roll_rates();
-    let r22 = rc::aircraft_a::jump_polynomial(x[2], x[3]);
-    let r23 = rc::aircraft_a::zero_sideslip_jump_polynomial(x[2]);
+    let r12 = rc::characteristic_coefficients(k, x[5], x[2], x[3]);
+    let r13 = rc::hurwitz_delta4(k, x[5], x[2], x[3]);
+    let r14 = rc::hopf_omega_squared(k, x[5], x[2], x[3]);
+    let r15 = rc::aircraft_a::trim(x[5], x[2], x[3]);
+    let r16 = rc::aircraft_a::zero_sideslip_trim(x[5], x[2]);
+    let r17 = rc::aircraft_a::jacobian5(x[0], x[1], x[4], x[6], x[7]);
+    let r18 = rc::aircraft_a::residual_denominator(x[5], x[2], x[3]);
+    let r19 = rc::aircraft_a::stiffness(x[5], x[2], x[3]);
+    let r20 = rc::aircraft_a::det_k(x[5], x[2], x[3]);
+    let r21 = rc::aircraft_a::det_j5(x[5], x[2], x[3]);
+    let r22 = rc::aircraft_a::zero_sideslip_det_k(x[5], x[2]);
+    let r23 = rc::aircraft_a::divergence_biquadratic();
+    let r24 = rc::aircraft_a::divergence_roll_rates();
+    let r25 = rc::aircraft_a::jump_polynomial(x[2], x[3]);
+    let r26 = rc::aircraft_a::zero_sideslip_jump_polynomial(x[2]);
+    let r27 = rc::aircraft_a::characteristic_coefficients(x[5], x[2], x[3]);
+    let r28 = rc::aircraft_a::hurwitz_delta4(x[5], x[2], x[3]);
+    let r29 = rc::aircraft_a::hopf_omega_squared(x[5], x[2], x[3]);
     [
         r0.alpha,
         r0.beta,
@@ -408,80 +442,94 @@ fn aircraft_a(x: &[f64; 8]) -> [f64; 140] {
         r11[6],
         r11[7],
         r11[8],
-        r12.alpha,
-        r12.beta,
-        r12.q,
-        r12.r,
-        r12.delta_a,
-        r13.alpha,
-        r13.q,
-        r13.r,
-        r13.delta_a,
-        r13.n_delta_r_delta_r,
-        r14[0][0],
-        r14[0][1],
-        r14[0][2],
-        r14[0][3],
-        r14[0][4],
-        r14[1][0],
-        r14[1][1],
-        r14[1][2],
-        r14[1][3],
-        r14[1][4],
-        r14[2][0],
-        r14[2][1],
-        r14[2][2],
-        r14[2][3],
-        r14[2][4],
-        r14[3][0],
-        r14[3][1],
-        r14[3][2],
-        r14[3][3],
-        r14[3][4],
-        r14[4][0],
-        r14[4][1],
-        r14[4][2],
-        r14[4][3],
-        r14[4][4],
-        r15,
-        r16[0][0],
-        r16[0][1],
-        r16[1][0],
-        r16[1][1],
-        r17,
+        r12[0],
+        r12[1],
+        r12[2],
+        r12[3],
+        r12[4],
+        r13,
+        r14,
+        r15.alpha,
+        r15.beta,
+        r15.q,
+        r15.r,
+        r15.delta_a,
+        r16.alpha,
+        r16.q,
+        r16.r,
+        r16.delta_a,
+        r16.n_delta_r_delta_r,
+        r17[0][0],
+        r17[0][1],
+        r17[0][2],
+        r17[0][3],
+        r17[0][4],
+        r17[1][0],
+        r17[1][1],
+        r17[1][2],
+        r17[1][3],
+        r17[1][4],
+        r17[2][0],
+        r17[2][1],
+        r17[2][2],
+        r17[2][3],
+        r17[2][4],
+        r17[3][0],
+        r17[3][1],
+        r17[3][2],
+        r17[3][3],
+        r17[3][4],
+        r17[4][0],
+        r17[4][1],
+        r17[4][2],
+        r17[4][3],
+        r17[4][4],
         r18,
-        r19,
-        r20[0],
-        r20[1],
-        r20[2],
-        r21[0],
-        r21[1],
-        r22[0],
-        r22[1],
-        r22[2],
-        r22[3],
-        r22[4],
-        r22[5],
-        r22[6],
-        r22[7],
-        r22[8],
-        r22[9],
-        r22[10],
-        r22[11],
-        r22[12],
+        r19[0][0],
+        r19[0][1],
+        r19[1][0],
+        r19[1][1],
+        r20,
+        r21,
+        r22,
         r23[0],
         r23[1],
         r23[2],
-        r23[3],
-        r23[4],
-        r23[5],
-        r23[6],
-        r23[7],
-        r23[8],
+        r24[0],
+        r24[1],
+        r25[0],
+        r25[1],
+        r25[2],
+        r25[3],
+        r25[4],
+        r25[5],
+        r25[6],
+        r25[7],
+        r25[8],
+        r25[9],
+        r25[10],
+        r25[11],
+        r25[12],
+        r26[0],
+        r26[1],
+        r26[2],
+        r26[3],
+        r26[4],
+        r26[5],
+        r26[6],
+        r26[7],
+        r26[8],
+        r27[0],
+        r27[1],
+        r27[2],
+        r27[3],
+        r27[4],
+        r28,
+        r29,
     ]
 }
 /// Every output for Aircraft B, in record order.
-fn aircraft_b(x: &[f64; 8]) -> [f64; 140] {
+fn aircraft_b(x: &[f64; 8]) -> [f64; 154] {
     let k = &rc::aircraft_b::DERIVATIVES;
     let r0 = rc::trim(k, x[5], x[2], x[3]);
     let r1 = rc::zero_sideslip_trim(k, x[5], x[2]);
@@ -495,18 +543,24 @@ fn aircraft_b(x: &[f64; 8]) -> [f64; 140] {
     let r9 = rc::divergence_roll_rates(k);
     let r10 = rc::jump_polynomial(k, x[2], x[3]);
     let r11 = rc::zero_sideslip_jump_polynomial(k, x[2]);
-    let r12 = rc::aircraft_b::trim(x[5], x[2], x[3]);
-    let r13 = rc::aircraft_b::zero_sideslip_trim(x[5], x[2]);
-    let r14 = rc::aircraft_b::jacobian5(x[0], x[1], x[4], x[6], x[7]);
-    let r15 = rc::aircraft_b::residual_denominator(x[5], x[2], x[3]);
-    let r16 = rc::aircraft_b::stiffness(x[5], x[2], x[3]);
-    let r17 = rc::aircraft_b::det_k(x[5], x[2], x[3]);
-    let r18 = rc::aircraft_b::det_j5(x[5], x[2], x[3]);
-    let r19 = rc::aircraft_b::zero_sideslip_det_k(x[5], x[2]);
-    let r20 = rc::aircraft_b::divergence_biquadratic();
-    let r21 = rc::aircraft_b::divergence_roll_rates();
-    let r22 = rc::aircraft_b::jump_polynomial(x[2], x[3]);
-    let r23 = rc::aircraft_b::zero_sideslip_jump_polynomial(x[2]);
+    let r12 = rc::characteristic_coefficients(k, x[5], x[2], x[3]);
+    let r13 = rc::hurwitz_delta4(k, x[5], x[2], x[3]);
+    let r14 = rc::hopf_omega_squared(k, x[5], x[2], x[3]);
+    let r15 = rc::aircraft_b::trim(x[5], x[2], x[3]);
+    let r16 = rc::aircraft_b::zero_sideslip_trim(x[5], x[2]);
+    let r17 = rc::aircraft_b::jacobian5(x[0], x[1], x[4], x[6], x[7]);
+    let r18 = rc::aircraft_b::residual_denominator(x[5], x[2], x[3]);
+    let r19 = rc::aircraft_b::stiffness(x[5], x[2], x[3]);
+    let r20 = rc::aircraft_b::det_k(x[5], x[2], x[3]);
+    let r21 = rc::aircraft_b::det_j5(x[5], x[2], x[3]);
+    let r22 = rc::aircraft_b::zero_sideslip_det_k(x[5], x[2]);
+    let r23 = rc::aircraft_b::divergence_biquadratic();
+    let r24 = rc::aircraft_b::divergence_roll_rates();
+    let r25 = rc::aircraft_b::jump_polynomial(x[2], x[3]);
+    let r26 = rc::aircraft_b::zero_sideslip_jump_polynomial(x[2]);
+    let r27 = rc::aircraft_b::characteristic_coefficients(x[5], x[2], x[3]);
+    let r28 = rc::aircraft_b::hurwitz_delta4(x[5], x[2], x[3]);
+    let r29 = rc::aircraft_b::hopf_omega_squared(x[5], x[2], x[3]);
     [
         r0.alpha,
         r0.beta,
@@ -578,75 +632,89 @@ fn aircraft_b(x: &[f64; 8]) -> [f64; 140] {
         r11[6],
         r11[7],
         r11[8],
-        r12.alpha,
-        r12.beta,
-        r12.q,
-        r12.r,
-        r12.delta_a,
-        r13.alpha,
-        r13.q,
-        r13.r,
-        r13.delta_a,
-        r13.n_delta_r_delta_r,
-        r14[0][0],
-        r14[0][1],
-        r14[0][2],
-        r14[0][3],
-        r14[0][4],
-        r14[1][0],
-        r14[1][1],
-        r14[1][2],
-        r14[1][3],
-        r14[1][4],
-        r14[2][0],
-        r14[2][1],
-        r14[2][2],
-        r14[2][3],
-        r14[2][4],
-        r14[3][0],
-        r14[3][1],
-        r14[3][2],
-        r14[3][3],
-        r14[3][4],
-        r14[4][0],
-        r14[4][1],
-        r14[4][2],
-        r14[4][3],
-        r14[4][4],
-        r15,
-        r16[0][0],
-        r16[0][1],
-        r16[1][0],
-        r16[1][1],
-        r17,
+        r12[0],
+        r12[1],
+        r12[2],
+        r12[3],
+        r12[4],
+        r13,
+        r14,
+        r15.alpha,
+        r15.beta,
+        r15.q,
+        r15.r,
+        r15.delta_a,
+        r16.alpha,
+        r16.q,
+        r16.r,
+        r16.delta_a,
+        r16.n_delta_r_delta_r,
+        r17[0][0],
+        r17[0][1],
+        r17[0][2],
+        r17[0][3],
+        r17[0][4],
+        r17[1][0],
+        r17[1][1],
+        r17[1][2],
+        r17[1][3],
+        r17[1][4],
+        r17[2][0],
+        r17[2][1],
+        r17[2][2],
+        r17[2][3],
+        r17[2][4],
+        r17[3][0],
+        r17[3][1],
+        r17[3][2],
+        r17[3][3],
+        r17[3][4],
+        r17[4][0],
+        r17[4][1],
+        r17[4][2],
+        r17[4][3],
+        r17[4][4],
         r18,
-        r19,
-        r20[0],
-        r20[1],
-        r20[2],
-        r21[0],
-        r21[1],
-        r22[0],
-        r22[1],
-        r22[2],
-        r22[3],
-        r22[4],
-        r22[5],
-        r22[6],
-        r22[7],
-        r22[8],
-        r22[9],
-        r22[10],
-        r22[11],
-        r22[12],
+        r19[0][0],
+        r19[0][1],
+        r19[1][0],
+        r19[1][1],
+        r20,
+        r21,
+        r22,
         r23[0],
         r23[1],
         r23[2],
-        r23[3],
-        r23[4],
-        r23[5],
-        r23[6],
-        r23[7],
-        r23[8],
+        r24[0],
+        r24[1],
+        r25[0],
+        r25[1],
+        r25[2],
+        r25[3],
+        r25[4],
+        r25[5],
+        r25[6],
+        r25[7],
+        r25[8],
+        r25[9],
+        r25[10],
+        r25[11],
+        r25[12],
+        r26[0],
+        r26[1],
+        r26[2],
+        r26[3],
+        r26[4],
+        r26[5],
+        r26[6],
+        r26[7],
+        r26[8],
+        r27[0],
+        r27[1],
+        r27[2],
+        r27[3],
+        r27[4],
+        r28,
+        r29,
     ]
 }

@@ -187,6 +187,17 @@ pub const DEFAULT_AILERON_RANGE: f64 = std::f64::consts::FRAC_PI_2;
 
 /// Runs the analysis for one aircraft at elevator deflection `delta_e_rad`.
 pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, AnalysisError> {
+    analyze_with(aircraft, delta_e_rad, true)
+}
+
+/// [`analyze`], with the Hopf points, landings and first departure (issue 10) only when
+/// `departures` is true; `false` gives the jump analysis alone (empty `hopf`, no `lands_at`,
+/// no `first_departure`), the baseline of the benchmark.
+pub fn analyze_with(
+    aircraft: &Aircraft,
+    delta_e_rad: f64,
+    departures: bool,
+) -> Result<Analysis, AnalysisError> {
     if !delta_e_rad.is_finite() || delta_e_rad.abs() > std::f64::consts::FRAC_PI_2 {
         return Err(AnalysisError::DeltaE(delta_e_rad));
     }
@@ -251,12 +262,15 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         .map_or(DEFAULT_AILERON_RANGE, |l| {
             l.to_radians().max(DEFAULT_AILERON_RANGE)
         });
-    let hp = HopfPolys::new(&d, aircraft, delta_e_rad);
-    for j in &mut jump {
-        j.lands_at = Some(departure::landings(&hp, &d, &trims, j));
+    let hp = departures.then(|| HopfPolys::new(&d, aircraft, delta_e_rad));
+    let (mut hopf, mut first_departure, mut zs_hopf) = (Vec::new(), None, Vec::new());
+    if let Some(hp) = &hp {
+        for j in &mut jump {
+            j.lands_at = Some(departure::landings(hp, &d, &trims, j));
+        }
+        hopf = departure::hopf_points(hp, &g, &trims, &marks);
+        first_departure = departure::first_departure(hp, &g, &trims, &jump, &hopf, bound);
     }
-    let hopf = departure::hopf_points(&hp, &g, &trims, &marks);
-    let first_departure = departure::first_departure(&hp, &g, &trims, &jump, &hopf, bound);
     let roots: Vec<(f64, f64)> = jump.iter().map(|j| (j.p0, j.delta_a_rad)).collect();
     let (critical, critical_note) = match primary::follow(&g, &trims[0], &roots, bound) {
         Outcome::Jump(i) => (Some(jump[i].clone()), None),
@@ -282,6 +296,12 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
     let zs_trims = in_aileron_all(&[&d.zs_det, &d.zs_trim[0], &d.zs_trim[1], &d.zs_trim[2]]);
     // Without lateral control authority (l_delta_a n_delta_r = l_delta_r n_delta_a) no
     // zero-sideslip trim exists: there is nothing to report.
+    if let Some(hp) = &hp {
+        zs_hopf = departure::zs_hopf_roll_rates(hp, &zs_trims)
+            .iter()
+            .map(|(p, _)| *p)
+            .collect();
+    }
     let lateral_authority = !d.zs_delta_a.den.is_zero();
     let zs_roots = if lateral_authority {
         positive_roots(&zs_num)
@@ -328,10 +348,7 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         det_k_poles,
         zero_sideslip: ZeroSideslip {
             departure,
-            hopf_roll_rates: departure::zs_hopf_roll_rates(&hp, &zs_trims)
-                .iter()
-                .map(|(p, _)| *p)
-                .collect(),
+            hopf_roll_rates: std::mem::take(&mut zs_hopf),
         },
         hopf,
         first_departure,

@@ -404,6 +404,7 @@ fn check(a: &Analysis) -> Result<(), AnalysisError> {
             &v,
         )?;
     }
+    departure::check_finite(a).map_err(AnalysisError::NotFinite)?;
     for (i, d) in a.zero_sideslip.departure.iter().enumerate() {
         let v = [
             d.p0,

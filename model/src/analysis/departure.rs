@@ -623,3 +623,45 @@ pub(super) fn zs_hopf_roll_rates(h: &HopfPolys, zs_trims: &[InAileron]) -> Vec<(
         })
         .collect()
 }
+
+/// The issue-10 part of the checks every answer passes: every Hopf point, landing and
+/// zero-sideslip Hopf roll rate finite; `Err` names the value.
+pub(super) fn check_finite(a: &super::Analysis) -> Result<(), String> {
+    for h in &a.hopf {
+        let j = &h.point;
+        let v = [
+            j.p0,
+            j.delta_a_rad,
+            j.delta_a_deg,
+            j.alpha,
+            j.beta,
+            j.q,
+            j.r,
+            h.omega,
+            h.period,
+            h.l1,
+        ];
+        if !v.iter().all(|x| x.is_finite()) {
+            return Err(format!("the Hopf point at P0 = {:e} rad/s", j.p0));
+        }
+    }
+    for j in &a.jump {
+        for l in j.lands_at.iter().flatten() {
+            if ![l.p0, l.alpha, l.beta, l.q, l.r]
+                .iter()
+                .all(|x| x.is_finite())
+            {
+                return Err(format!("where the jump at P0 = {:e} rad/s lands", j.p0));
+            }
+        }
+    }
+    if !a
+        .zero_sideslip
+        .hopf_roll_rates
+        .iter()
+        .all(|x| x.is_finite())
+    {
+        return Err("a zero-sideslip Hopf roll rate".into());
+    }
+    Ok(())
+}

@@ -2,9 +2,14 @@
 //! J5 at the trim, the fourth Hurwitz determinant and omega^2, all derived in
 //! [`crate::derivation::hopf`] and emitted through the same DAG as the jump criterion.
 //!
-//! The Hopf polynomial in P0 is not emitted: fully parametric it is far too large to be useful
-//! (see `docs/formulas.tex` and the benchmark), and per aircraft `model analyze` folds it
-//! exactly; the functions here give `Delta4` at any trim instead.
+//! The Hopf polynomial in P0 is not emitted. Fully parametric it is far too large to be useful:
+//! Delta4 of the parametric `c_k` has 61 600 terms in the trim symbols (`cargo bench -p model
+//! --bench hopf`), and with the trim substituted the cleared `C_k = det(A)^k c_k` have 45, 782,
+//! 6151, 18 330 and 14 778 terms, whose products in Delta4 exhaust memory (`cargo run --release
+//! -p model --example hopf_parametric_size full` requests a 1.1 TB allocation). Per aircraft
+//! `model analyze` builds it exactly (degree 32 in P0 for A and B); the functions here give
+//! `Delta4` and `omega^2` at any trim instead, from which the Hopf points follow by a scalar root
+//! search in P0.
 
 use super::{lines, Ctx, Function, Ret, DE, DR, P0};
 use crate::derivation::hopf::{characteristic_coefficients, hopf_symbols, orlando};

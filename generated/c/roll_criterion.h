@@ -18,6 +18,9 @@
 //   divergence_roll_rates                  8      14       2       1       3      28
 //   jump_polynomial                      291     433       0       1       1     726
 //   zero_sideslip_jump_polynomial         57     116       0       0       0     173
+//   characteristic_coefficients          191     244       3       1       1     440
+//   hurwitz_delta4                       197     254       3       0       1     455
+//   hopf_omega_squared                   193     246       4       0       1     444
 //
 // Use: `#include "roll_criterion.h"` and link with -lm (for sqrt). Every function is
 // straight-line double arithmetic: no allocation, no recursion, no loops or branches, one
@@ -122,6 +125,11 @@ struct rc_array2 {
 /// `[f64; 3]` of the Rust crate: C cannot return an array.
 struct rc_array3 {
     double v[3];
+};
+
+/// `[f64; 5]` of the Rust crate: C cannot return an array.
+struct rc_array5 {
+    double v[5];
 };
 
 /// `[f64; 9]` of the Rust crate: C cannot return an array.
@@ -908,6 +916,396 @@ ROLL_CRITERION_API struct rc_array9 rc_zero_sideslip_jump_polynomial(const struc
     return result;
 }
 
+/// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
+/// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10).
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 191 add/sub, 244 mul, 3 div, 1 neg, 1 libm (440 operations); straight-line, no branches.
+/// Rust: `roll_criterion::characteristic_coefficients`, bit-identical.
+ROLL_CRITERION_API struct rc_array5 rc_characteristic_coefficients(const struct rc_derivatives *k,
+    double p0, double delta_e, double delta_r)
+{
+    const double t0 = p0 * k->c;
+    const double t1 = p0 * k->d;
+    const double t2 = delta_e * k->m_delta_e;
+    const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
+    const double t4 = k->m_q * k->n_r;
+    const double t5 = t4 + t0 * t1;
+    const double t6 = k->m_alpha * k->n_r;
+    const double t7 = p0 * t1;
+    const double t8 = k->n_beta + k->y_beta * k->n_r;
+    const double t9 = p0 * k->m_q;
+    const double t10 = k->y_beta * t0;
+    const double t11 = t9 + t10;
+    const double t12 = p0 * k->n_r;
+    const double t13 = k->m_alpha + p0 * t0;
+    const double t14 = k->z_alpha * k->m_q - t13;
+    const double t15 = k->z_alpha * t10 + p0 * t13;
+    const double t16 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t9 - k->y_beta * k->m_alpha;
+    const double t17 = 1.0 / (k->z_alpha * (k->y_beta * t5 + k->m_q * k->n_beta) + p0 * (p0 * t5 +
+        k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * t6 + k->m_alpha * k->n_beta));
+    const double t18 = (t2 * (k->z_alpha * t1 + t12) + t3 * t14) * t17;
+    const double t19 = (t3 * t15 - t2 * (k->z_alpha * t8 + p0 * t12)) * t17;
+    const double t20 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t7)) - t3 *
+        t16) * t17;
+    const double t21 = t17 * (k->n_delta_a * t14);
+    const double t22 = t17 * (k->n_delta_a * t15);
+    const double t23 = t17 * (k->n_delta_a * t16);
+    const double t24 = k->l_r - k->e * t19;
+    const double t25 = t20 * t24 + (delta_r * k->l_delta_r - k->l_beta * t18 + p0 * k->l_p);
+    const double t26 = k->e * 0.5 * (t22 * t23);
+    const double t27 = k->l_delta_a - k->l_beta * t21 - t22 * (k->e * t20) - t23 * t24;
+    const double t28 = t25 * 2.0 / (t27 * (1.0 + sqrt(1.0 - t25 * (t26 + t26) / (t27 * t27) *
+        4.0)));
+    const double t29 = t17 * (k->n_delta_a * t11) * t28 - (t2 * (t7 - t8) + t3 * t11) * t17;
+    const double t30 = t21 * t28 - t18;
+    const double t31 = t19 - t22 * t28;
+    const double t32 = t20 + t23 * t28;
+    const double t33 = k->m_q + k->n_r;
+    const double t34 = k->l_p + t33;
+    const double t35 = k->y_beta + t34;
+    const double t36 = k->e * t31;
+    const double t37 = k->l_r - t36;
+    const double t38 = t31 * t37;
+    const double t39 = p0 * p0;
+    const double t40 = k->c * t39;
+    const double t41 = k->y_beta * t34;
+    const double t42 = t32 * t32;
+    const double t43 = k->c * t42;
+    const double t44 = k->e * (k->n_p * t31 + t43);
+    const double t45 = k->l_p * t33;
+    const double t46 = k->n_beta + t39;
+    const double t47 = k->l_beta * t29;
+    const double t48 = k->l_r * k->n_p;
+    const double t49 = t36 - k->l_r;
+    const double t50 = k->y_beta + k->m_q;
+    const double t51 = k->n_beta * t29;
+    const double t52 = k->c * k->d;
+    const double t53 = k->y_beta + k->n_r;
+    const double t54 = k->l_p + k->n_r;
+    const double t55 = k->y_beta * t54;
+    const double t56 = k->d * t31;
+    const double t57 = k->n_p - t56;
+    const double t58 = k->l_r * t57;
+    const double t59 = k->l_p * k->n_r;
+    const double t60 = k->y_beta + k->l_p;
+    const double t61 = k->l_beta * t30;
+    const double t62 = k->n_p + k->n_r * t29;
+    const double t63 = t62 - t56;
+    const double t64 = k->l_beta * t63;
+    const double t65 = k->y_beta * k->l_p;
+    const double t66 = k->z_alpha + k->y_beta;
+    const double t67 = t29 * (k->e * k->m_alpha);
+    const double t68 = t31 * (k->d * k->e);
+    const double t69 = k->e * k->n_p;
+    const double t70 = t69 + k->d * k->l_r;
+    const double t71 = t31 * (t70 - t68);
+    const double t72 = t31 * t57;
+    const double t73 = t56 - k->n_p;
+    const double t74 = t59 + k->l_r * t73;
+    const double t75 = k->l_beta * (t56 - t62);
+    const double t76 = k->n_beta * (k->l_p + t29 * t37);
+    const double t77 = k->c * (k->e * (t8 * t42));
+    const double t78 = k->l_r - 2.0 * t36;
+    const double t79 = k->l_p + k->l_r * t29;
+    const double t80 = k->n_beta * t49 + k->l_beta * k->n_r;
+    struct rc_array5 result;
+    result.v[0] = -(k->z_alpha + t35);
+    result.v[1] = k->z_alpha * t35 + (k->d * (t38 + t40) + (t41 + (t44 + (t45 + (t4 + (t46 -
+        k->m_alpha) - t47 - t48)))));
+    result.v[2] = k->z_alpha * (k->d * (t31 * t49 - t40) + (t48 + (t47 - (k->n_beta + t4)) - t45 -
+        t44 - t41)) + (k->e * (t31 * (t31 * (k->d * t50) + (t51 - 2.0 * (t32 * (p0 * t52)) - k->n_p
+        * t50)) + t32 * (p0 * (k->c * k->n_p) - k->m_alpha * t30 - t32 * (k->c * t53))) + (k->m_q *
+        (t58 + (t47 - t46 - t59) - t55) + (p0 * (t61 + t32 * (k->l_r * t52) - p0 * (t54 + k->c *
+        (k->d * t60))) + (k->y_beta * (t58 + (k->m_alpha - t59)) + (t64 + (k->l_p * (k->m_alpha -
+        k->n_beta) + (t6 - t29 * (k->l_r * k->n_beta))))))));
+    result.v[3] = p0 * (p0 * (t39 * t52 + (k->d * (k->c * (k->z_alpha * t60 + (t65 - t47)) +
+        (k->m_alpha + t38)) + (k->c * (k->e * t42 - k->n_beta) + (t45 + (t4 + k->n_p * t49))))) +
+        (t32 * (k->c * (k->d * (k->e * (t31 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) - (k->l_beta +
+        k->l_r * t66)) + (k->e * (t51 - k->n_p * t66) - k->l_beta)) - t67) + t30 * (k->d *
+        (k->m_alpha * t49) + (k->n_beta * t37 - k->l_beta * t33)))) + (k->z_alpha * (k->m_q * (t71 +
+        (t55 + (t59 + (k->n_beta - t47 - t48)))) + (k->y_beta * (k->e * (t43 + t72) + t74) + (t75 +
+        (t76 + t42 * (k->n_r * (k->c * k->e)))))) + (k->m_q * (k->y_beta * (t71 + (t59 - t48)) +
+        (t75 + t76)) + (k->m_alpha * (k->e * (t30 * (t32 * t53) + t31 * t73) + (t58 + (t47 -
+        k->n_beta - t59) - t55)) + t77)));
+    result.v[4] = p0 * (p0 * (p0 * (k->c * (k->d * (t61 + t32 * t78) + t32 * t69) - p0 * (k->l_p *
+        t52)) + (k->d * (t31 * (t31 * (k->e * k->m_q) + (t67 - k->l_r * k->m_q + k->c * k->l_beta))
+        + (k->c * (k->z_alpha * (t47 - t65)) - k->m_alpha * t79)) + (k->c * (k->l_p * k->n_beta -
+        k->l_beta * k->n_p - k->e * (t32 * (k->n_r * t32 + k->n_beta * t30))) + k->m_q * (k->n_p *
+        t37 - t59)))) + (t32 * (k->c * (k->z_alpha * (k->d * (k->l_beta + k->y_beta * t78) + k->e *
+        (k->y_beta * k->n_p - t51)) + t80) + k->e * (k->m_alpha * t63)) + t30 * (k->d * (k->m_alpha
+        * (k->l_beta + k->y_beta * t37)) + k->m_q * t80))) + (k->z_alpha * (k->m_q * (k->y_beta *
+        (t31 * (t68 - t70) + (t48 - t59)) + (t64 + k->n_beta * (t29 * t49 - k->l_p))) - t77) +
+        k->m_alpha * (k->y_beta * (t74 + k->e * (t72 - t32 * (k->n_r * t30))) + (t75 + k->n_beta *
+        (t79 - k->e * (t30 * t32 + t29 * t31)))));
+    return result;
+}
+
+/// The fourth Hurwitz determinant of J5 at the trim of `p0`,
+/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`, 1/s^10.
+/// By Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
+/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle (`+-lambda`).
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 197 add/sub, 254 mul, 3 div, 0 neg, 1 libm (455 operations); straight-line, no branches.
+/// Rust: `roll_criterion::hurwitz_delta4`, bit-identical.
+ROLL_CRITERION_API double rc_hurwitz_delta4(const struct rc_derivatives *k, double p0,
+    double delta_e, double delta_r)
+{
+    const double t0 = p0 * k->c;
+    const double t1 = p0 * k->d;
+    const double t2 = delta_e * k->m_delta_e;
+    const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
+    const double t4 = k->m_q * k->n_r;
+    const double t5 = t4 + t0 * t1;
+    const double t6 = k->m_alpha * k->n_r;
+    const double t7 = p0 * t1;
+    const double t8 = k->n_beta + k->y_beta * k->n_r;
+    const double t9 = p0 * k->m_q;
+    const double t10 = k->y_beta * t0;
+    const double t11 = t9 + t10;
+    const double t12 = p0 * k->n_r;
+    const double t13 = k->m_alpha + p0 * t0;
+    const double t14 = k->z_alpha * k->m_q - t13;
+    const double t15 = k->z_alpha * t10 + p0 * t13;
+    const double t16 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t9 - k->y_beta * k->m_alpha;
+    const double t17 = 1.0 / (k->z_alpha * (k->y_beta * t5 + k->m_q * k->n_beta) + p0 * (p0 * t5 +
+        k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * t6 + k->m_alpha * k->n_beta));
+    const double t18 = (t2 * (k->z_alpha * t1 + t12) + t3 * t14) * t17;
+    const double t19 = (t3 * t15 - t2 * (k->z_alpha * t8 + p0 * t12)) * t17;
+    const double t20 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t7)) - t3 *
+        t16) * t17;
+    const double t21 = t17 * (k->n_delta_a * t14);
+    const double t22 = t17 * (k->n_delta_a * t15);
+    const double t23 = t17 * (k->n_delta_a * t16);
+    const double t24 = k->l_r - k->e * t19;
+    const double t25 = t20 * t24 + (delta_r * k->l_delta_r - k->l_beta * t18 + p0 * k->l_p);
+    const double t26 = k->e * 0.5 * (t22 * t23);
+    const double t27 = k->l_delta_a - k->l_beta * t21 - t22 * (k->e * t20) - t23 * t24;
+    const double t28 = t25 * 2.0 / (t27 * (1.0 + sqrt(1.0 - t25 * (t26 + t26) / (t27 * t27) *
+        4.0)));
+    const double t29 = t17 * (k->n_delta_a * t11) * t28 - (t2 * (t7 - t8) + t3 * t11) * t17;
+    const double t30 = t21 * t28 - t18;
+    const double t31 = t19 - t22 * t28;
+    const double t32 = t20 + t23 * t28;
+    const double t33 = k->m_q + k->n_r;
+    const double t34 = k->l_p + t33;
+    const double t35 = k->y_beta + t34;
+    const double t36 = k->z_alpha + t35;
+    const double t37 = k->e * t31;
+    const double t38 = k->l_r - t37;
+    const double t39 = t31 * t38;
+    const double t40 = p0 * p0;
+    const double t41 = k->c * t40;
+    const double t42 = k->y_beta * t34;
+    const double t43 = t32 * t32;
+    const double t44 = k->c * t43;
+    const double t45 = k->e * (k->n_p * t31 + t44);
+    const double t46 = k->l_p * t33;
+    const double t47 = k->n_beta + t40;
+    const double t48 = k->l_beta * t29;
+    const double t49 = k->l_r * k->n_p;
+    const double t50 = k->z_alpha * t35 + (k->d * (t39 + t41) + (t42 + (t45 + (t46 + (t4 + (t47 -
+        k->m_alpha) - t48 - t49)))));
+    const double t51 = t37 - k->l_r;
+    const double t52 = k->y_beta + k->m_q;
+    const double t53 = k->n_beta * t29;
+    const double t54 = k->c * k->d;
+    const double t55 = k->y_beta + k->n_r;
+    const double t56 = k->l_p + k->n_r;
+    const double t57 = k->y_beta * t56;
+    const double t58 = k->d * t31;
+    const double t59 = k->n_p - t58;
+    const double t60 = k->l_r * t59;
+    const double t61 = k->l_p * k->n_r;
+    const double t62 = k->y_beta + k->l_p;
+    const double t63 = k->l_beta * t30;
+    const double t64 = k->n_p + k->n_r * t29;
+    const double t65 = t64 - t58;
+    const double t66 = k->l_beta * t65;
+    const double t67 = k->z_alpha * (k->d * (t31 * t51 - t41) + (t49 + (t48 - (k->n_beta + t4)) -
+        t46 - t45 - t42)) + (k->e * (t31 * (t31 * (k->d * t52) + (t53 - 2.0 * (t32 * (p0 * t54)) -
+        k->n_p * t52)) + t32 * (p0 * (k->c * k->n_p) - k->m_alpha * t30 - t32 * (k->c * t55))) +
+        (k->m_q * (t60 + (t48 - t47 - t61) - t57) + (p0 * (t63 + t32 * (k->l_r * t54) - p0 * (t56 +
+        k->c * (k->d * t62))) + (k->y_beta * (t60 + (k->m_alpha - t61)) + (t66 + (k->l_p *
+        (k->m_alpha - k->n_beta) + (t6 - t29 * (k->l_r * k->n_beta))))))));
+    const double t68 = k->y_beta * k->l_p;
+    const double t69 = k->z_alpha + k->y_beta;
+    const double t70 = t29 * (k->e * k->m_alpha);
+    const double t71 = t31 * (k->d * k->e);
+    const double t72 = k->e * k->n_p;
+    const double t73 = t72 + k->d * k->l_r;
+    const double t74 = t31 * (t73 - t71);
+    const double t75 = t31 * t59;
+    const double t76 = t58 - k->n_p;
+    const double t77 = t61 + k->l_r * t76;
+    const double t78 = k->l_beta * (t58 - t64);
+    const double t79 = k->n_beta * (k->l_p + t29 * t38);
+    const double t80 = k->c * (k->e * (t8 * t43));
+    const double t81 = p0 * (p0 * (t40 * t54 + (k->d * (k->c * (k->z_alpha * t62 + (t68 - t48)) +
+        (k->m_alpha + t39)) + (k->c * (k->e * t43 - k->n_beta) + (t46 + (t4 + k->n_p * t51))))) +
+        (t32 * (k->c * (k->d * (k->e * (t31 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) - (k->l_beta +
+        k->l_r * t69)) + (k->e * (t53 - k->n_p * t69) - k->l_beta)) - t70) + t30 * (k->d *
+        (k->m_alpha * t51) + (k->n_beta * t38 - k->l_beta * t33)))) + (k->z_alpha * (k->m_q * (t74 +
+        (t57 + (t61 + (k->n_beta - t48 - t49)))) + (k->y_beta * (k->e * (t44 + t75) + t77) + (t78 +
+        (t79 + t43 * (k->n_r * (k->c * k->e)))))) + (k->m_q * (k->y_beta * (t74 + (t61 - t49)) +
+        (t78 + t79)) + (k->m_alpha * (k->e * (t30 * (t32 * t55) + t31 * t76) + (t60 + (t48 -
+        k->n_beta - t61) - t57)) + t80)));
+    const double t82 = k->l_r - 2.0 * t37;
+    const double t83 = k->l_p + k->l_r * t29;
+    const double t84 = k->n_beta * t51 + k->l_beta * k->n_r;
+    const double t85 = p0 * (p0 * (p0 * (k->c * (k->d * (t63 + t32 * t82) + t32 * t72) - p0 *
+        (k->l_p * t54)) + (k->d * (t31 * (t31 * (k->e * k->m_q) + (t70 - k->l_r * k->m_q + k->c *
+        k->l_beta)) + (k->c * (k->z_alpha * (t48 - t68)) - k->m_alpha * t83)) + (k->c * (k->l_p *
+        k->n_beta - k->l_beta * k->n_p - k->e * (t32 * (k->n_r * t32 + k->n_beta * t30))) + k->m_q *
+        (k->n_p * t38 - t61)))) + (t32 * (k->c * (k->z_alpha * (k->d * (k->l_beta + k->y_beta * t82)
+        + k->e * (k->y_beta * k->n_p - t53)) + t84) + k->e * (k->m_alpha * t65)) + t30 * (k->d *
+        (k->m_alpha * (k->l_beta + k->y_beta * t38)) + k->m_q * t84))) + (k->z_alpha * (k->m_q *
+        (k->y_beta * (t31 * (t71 - t73) + (t49 - t61)) + (t66 + k->n_beta * (t29 * t51 - k->l_p))) -
+        t80) + k->m_alpha * (k->y_beta * (t77 + k->e * (t75 - t32 * (k->n_r * t30))) + (t78 +
+        k->n_beta * (t83 - k->e * (t30 * t32 + t29 * t31)))));
+    const double t86 = t50 * t85;
+    const double t87 = t67 * t81;
+    return t67 * (t86 - t87) - t85 * t85 - t36 * (t36 * (t81 * t81) + (t50 * (t87 - t86) + 2.0 *
+        (t81 * t85)));
+}
+
+/// `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` at the trim of `p0`, rad^2/s^2: at a zero of
+/// [`hurwitz_delta4`] the square of the frequency of the pair on the imaginary axis, positive
+/// at a Hopf point and negative at a neutral saddle (from the even and odd parts of
+/// `p(i omega) = 0` with `w^2` eliminated).
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 193 add/sub, 246 mul, 4 div, 0 neg, 1 libm (444 operations); straight-line, no branches.
+/// Rust: `roll_criterion::hopf_omega_squared`, bit-identical.
+ROLL_CRITERION_API double rc_hopf_omega_squared(const struct rc_derivatives *k, double p0,
+    double delta_e, double delta_r)
+{
+    const double t0 = p0 * k->c;
+    const double t1 = p0 * k->d;
+    const double t2 = delta_e * k->m_delta_e;
+    const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
+    const double t4 = k->m_q * k->n_r;
+    const double t5 = t4 + t0 * t1;
+    const double t6 = k->m_alpha * k->n_r;
+    const double t7 = p0 * t1;
+    const double t8 = k->n_beta + k->y_beta * k->n_r;
+    const double t9 = p0 * k->m_q;
+    const double t10 = k->y_beta * t0;
+    const double t11 = t9 + t10;
+    const double t12 = p0 * k->n_r;
+    const double t13 = k->m_alpha + p0 * t0;
+    const double t14 = k->z_alpha * k->m_q - t13;
+    const double t15 = k->z_alpha * t10 + p0 * t13;
+    const double t16 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t9 - k->y_beta * k->m_alpha;
+    const double t17 = 1.0 / (k->z_alpha * (k->y_beta * t5 + k->m_q * k->n_beta) + p0 * (p0 * t5 +
+        k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * t6 + k->m_alpha * k->n_beta));
+    const double t18 = (t2 * (k->z_alpha * t1 + t12) + t3 * t14) * t17;
+    const double t19 = (t3 * t15 - t2 * (k->z_alpha * t8 + p0 * t12)) * t17;
+    const double t20 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t7)) - t3 *
+        t16) * t17;
+    const double t21 = t17 * (k->n_delta_a * t14);
+    const double t22 = t17 * (k->n_delta_a * t15);
+    const double t23 = t17 * (k->n_delta_a * t16);
+    const double t24 = k->l_r - k->e * t19;
+    const double t25 = t20 * t24 + (delta_r * k->l_delta_r - k->l_beta * t18 + p0 * k->l_p);
+    const double t26 = k->e * 0.5 * (t22 * t23);
+    const double t27 = k->l_delta_a - k->l_beta * t21 - t22 * (k->e * t20) - t23 * t24;
+    const double t28 = t25 * 2.0 / (t27 * (1.0 + sqrt(1.0 - t25 * (t26 + t26) / (t27 * t27) *
+        4.0)));
+    const double t29 = t17 * (k->n_delta_a * t11) * t28 - (t2 * (t7 - t8) + t3 * t11) * t17;
+    const double t30 = t21 * t28 - t18;
+    const double t31 = t19 - t22 * t28;
+    const double t32 = t20 + t23 * t28;
+    const double t33 = k->m_q + k->n_r;
+    const double t34 = k->l_p + t33;
+    const double t35 = k->y_beta + t34;
+    const double t36 = k->z_alpha + t35;
+    const double t37 = k->e * t31;
+    const double t38 = k->l_r - t37;
+    const double t39 = t31 * t38;
+    const double t40 = p0 * p0;
+    const double t41 = k->c * t40;
+    const double t42 = k->y_beta * t34;
+    const double t43 = t32 * t32;
+    const double t44 = k->c * t43;
+    const double t45 = k->e * (k->n_p * t31 + t44);
+    const double t46 = k->l_p * t33;
+    const double t47 = k->n_beta + t40;
+    const double t48 = k->l_beta * t29;
+    const double t49 = k->l_r * k->n_p;
+    const double t50 = t37 - k->l_r;
+    const double t51 = k->y_beta + k->m_q;
+    const double t52 = k->n_beta * t29;
+    const double t53 = k->c * k->d;
+    const double t54 = k->y_beta + k->n_r;
+    const double t55 = k->l_p + k->n_r;
+    const double t56 = k->y_beta * t55;
+    const double t57 = k->d * t31;
+    const double t58 = k->n_p - t57;
+    const double t59 = k->l_r * t58;
+    const double t60 = k->l_p * k->n_r;
+    const double t61 = k->y_beta + k->l_p;
+    const double t62 = k->l_beta * t30;
+    const double t63 = k->n_p + k->n_r * t29;
+    const double t64 = t63 - t57;
+    const double t65 = k->l_beta * t64;
+    const double t66 = k->y_beta * k->l_p;
+    const double t67 = k->z_alpha + k->y_beta;
+    const double t68 = t29 * (k->e * k->m_alpha);
+    const double t69 = t31 * (k->d * k->e);
+    const double t70 = k->e * k->n_p;
+    const double t71 = t70 + k->d * k->l_r;
+    const double t72 = t31 * (t71 - t69);
+    const double t73 = t31 * t58;
+    const double t74 = t57 - k->n_p;
+    const double t75 = t60 + k->l_r * t74;
+    const double t76 = k->l_beta * (t57 - t63);
+    const double t77 = k->n_beta * (k->l_p + t29 * t38);
+    const double t78 = k->c * (k->e * (t8 * t43));
+    const double t79 = k->l_r - 2.0 * t37;
+    const double t80 = k->l_p + k->l_r * t29;
+    const double t81 = k->n_beta * t50 + k->l_beta * k->n_r;
+    return (p0 * (p0 * (p0 * (k->c * (k->d * (t62 + t32 * t79) + t32 * t70) - p0 * (k->l_p * t53)) +
+        (k->d * (t31 * (t31 * (k->e * k->m_q) + (t68 - k->l_r * k->m_q + k->c * k->l_beta)) + (k->c
+        * (k->z_alpha * (t48 - t66)) - k->m_alpha * t80)) + (k->c * (k->l_p * k->n_beta - k->l_beta
+        * k->n_p - k->e * (t32 * (k->n_r * t32 + k->n_beta * t30))) + k->m_q * (k->n_p * t38 -
+        t60)))) + (t32 * (k->c * (k->z_alpha * (k->d * (k->l_beta + k->y_beta * t79) + k->e *
+        (k->y_beta * k->n_p - t52)) + t81) + k->e * (k->m_alpha * t64)) + t30 * (k->d * (k->m_alpha
+        * (k->l_beta + k->y_beta * t38)) + k->m_q * t81))) + (k->z_alpha * (k->m_q * (k->y_beta *
+        (t31 * (t69 - t71) + (t49 - t60)) + (t65 + k->n_beta * (t29 * t50 - k->l_p))) - t78) +
+        k->m_alpha * (k->y_beta * (t75 + k->e * (t73 - t32 * (k->n_r * t30))) + (t76 + k->n_beta *
+        (t80 - k->e * (t30 * t32 + t29 * t31))))) + t36 * (p0 * (p0 * (t40 * t53 + (k->d * (k->c *
+        (k->z_alpha * t61 + (t66 - t48)) + (k->m_alpha + t39)) + (k->c * (k->e * t43 - k->n_beta) +
+        (t46 + (t4 + k->n_p * t50))))) + (t32 * (k->c * (k->d * (k->e * (t31 * (k->y_beta * 2.0 +
+        k->z_alpha * 2.0)) - (k->l_beta + k->l_r * t67)) + (k->e * (t52 - k->n_p * t67) -
+        k->l_beta)) - t68) + t30 * (k->d * (k->m_alpha * t50) + (k->n_beta * t38 - k->l_beta *
+        t33)))) + (k->z_alpha * (k->m_q * (t72 + (t56 + (t60 + (k->n_beta - t48 - t49)))) +
+        (k->y_beta * (k->e * (t44 + t73) + t75) + (t76 + (t77 + t43 * (k->n_r * (k->c * k->e)))))) +
+        (k->m_q * (k->y_beta * (t72 + (t60 - t49)) + (t76 + t77)) + (k->m_alpha * (k->e * (t30 *
+        (t32 * t54) + t31 * t74) + (t59 + (t48 - k->n_beta - t60) - t56)) + t78))))) / (k->z_alpha *
+        (k->d * (t31 * t50 - t41) + (t49 + (t48 - (k->n_beta + t4)) - t46 - t45 - t42)) + (k->e *
+        (t31 * (t31 * (k->d * t51) + (t52 - 2.0 * (t32 * (p0 * t53)) - k->n_p * t51)) + t32 * (p0 *
+        (k->c * k->n_p) - k->m_alpha * t30 - t32 * (k->c * t54))) + (k->m_q * (t59 + (t48 - t47 -
+        t60) - t56) + (p0 * (t62 + t32 * (k->l_r * t53) - p0 * (t55 + k->c * (k->d * t61))) +
+        (k->y_beta * (t59 + (k->m_alpha - t60)) + (t65 + (k->l_p * (k->m_alpha - k->n_beta) + (t6 -
+        t29 * (k->l_r * k->n_beta)))))))) + t36 * (k->z_alpha * t35 + (k->d * (t39 + t41) + (t42 +
+        (t45 + (t46 + (t4 + (t47 - k->m_alpha) - t48 - t49)))))));
+}
+
 // Aircraft A: every constant folded exactly, then rounded once to double.
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
@@ -923,6 +1321,9 @@ ROLL_CRITERION_API struct rc_array9 rc_zero_sideslip_jump_polynomial(const struc
 //   divergence_roll_rates                  2       0       2       0       3       7
 //   jump_polynomial                      196     254       0       0       0     450
 //   zero_sideslip_jump_polynomial         21      30       0       0       0      51
+//   characteristic_coefficients           74      96       1       0       0     171
+//   hurwitz_delta4                        80     106       1       0       0     187
+//   hopf_omega_squared                    76      98       2       0       0     176
 
 /// The data of Aircraft A (Table A.1), for the parametric functions.
 static const struct rc_derivatives rc_aircraft_a_derivatives = {
@@ -1477,6 +1878,169 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_a_zero_sideslip_jump_polynomial(
     return result;
 }
 
+/// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
+/// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10).
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 74 add/sub, 96 mul, 1 div, 0 neg, 0 libm (171 operations); straight-line, no branches.
+/// Rust: `roll_criterion::aircraft_a::characteristic_coefficients`, bit-identical.
+ROLL_CRITERION_API struct rc_array5 rc_aircraft_a_characteristic_coefficients(double p0,
+    double delta_e, double delta_r)
+{
+    const double t0 = p0 * 0.959;
+    const double t1 = p0 * 0.786;
+    const double t2 = delta_e * 33.268;
+    const double t3 = 0.473352 + t0 * t1;
+    const double t4 = p0 * t1;
+    const double t5 = p0 * 1.815;
+    const double t6 = t0 * 0.0558;
+    const double t7 = p0 * 0.2608;
+    const double t8 = p0 * t0 - 13.52504;
+    const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
+        (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+    const double t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
+    const double t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
+    const double t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9;
+    const double t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232) - t2 * (p0 * 3.716 -
+        (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
+    const double t14 = t12 * (1.1952702 - t12 * 0.55413);
+    const double t15 = t13 * t13 * 0.676095;
+    const double t16 = p0 * p0;
+    const double t17 = t13 * (1.1462641218 - t12 * 1.06282134);
+    struct rc_array5 result;
+    result.v[0] = 26.8921;
+    result.v[1] = t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774);
+    result.v[2] = p0 * (p0 * 42.5345817162 + (t17 - t11 * 110.45)) + (t12 * (92.64470614368 + t10 *
+        2.61978 - t12 * 2.703267792) + (t13 * (t13 * 2.247474999 + t11 * 9.5351532) +
+        (551.318118699284 + t10 * 555.8106088)));
+    result.v[3] = p0 * (p0 * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 * 83.2543383)))
+        + (t13 * (192.68735381072213 - t12 * 3.255846892956 + t10 * 12.04752222) + t11 *
+        (-207.455111534192 - t12 * 10.1144104152))) + (t12 * (441.68020918365863 + t10 *
+        12.634151028 - t12 * 10.6686289158804) + (t13 * (t13 * 3.165989810886 + t11 * 3.01882950312)
+        + (592.9168745384313 + t10 * 2208.42906185688)));
+    result.v[4] = p0 * (p0 * (p0 * (p0 * 16.3967704446 + (t17 - t11 * 83.2543383)) + (t12 *
+        (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595) + (t13 * (t13 * 0.176325576 - t11 *
+        2.51236902) + (t10 * 266.561825136888 - 295.71919022813984)))) + (t13 * (272.79322540195807
+        + t12 * 9.828632421610132 + t10 * 10.042969019112) + t11 * (1133.0355257374322 - t12 *
+        5.17310107716816))) + (t12 * (1649.3230169830567 + t10 * 49.73346863652 - t12 *
+        0.586988765940636) + (t13 * (t13 * 7.58579274212467 + t11 * 35.57139094306445) +
+        (1540.5445555579067 + t10 * 439.5600225423592)));
+    return result;
+}
+
+/// The fourth Hurwitz determinant of J5 at the trim of `p0`,
+/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`, 1/s^10.
+/// By Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
+/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle (`+-lambda`).
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 80 add/sub, 106 mul, 1 div, 0 neg, 0 libm (187 operations); straight-line, no branches.
+/// Rust: `roll_criterion::aircraft_a::hurwitz_delta4`, bit-identical.
+ROLL_CRITERION_API double rc_aircraft_a_hurwitz_delta4(double p0, double delta_e, double delta_r)
+{
+    const double t0 = p0 * 0.959;
+    const double t1 = p0 * 0.786;
+    const double t2 = delta_e * 33.268;
+    const double t3 = 0.473352 + t0 * t1;
+    const double t4 = p0 * t1;
+    const double t5 = p0 * 1.815;
+    const double t6 = t0 * 0.0558;
+    const double t7 = p0 * 0.2608;
+    const double t8 = p0 * t0 - 13.52504;
+    const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
+        (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+    const double t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
+    const double t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
+    const double t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9;
+    const double t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232) - t2 * (p0 * 3.716 -
+        (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
+    const double t14 = t12 * (1.1952702 - t12 * 0.55413);
+    const double t15 = t13 * t13 * 0.676095;
+    const double t16 = p0 * p0;
+    const double t17 = t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774);
+    const double t18 = t13 * (1.1462641218 - t12 * 1.06282134);
+    const double t19 = p0 * (p0 * 42.5345817162 + (t18 - t11 * 110.45)) + (t12 * (92.64470614368 +
+        t10 * 2.61978 - t12 * 2.703267792) + (t13 * (t13 * 2.247474999 + t11 * 9.5351532) +
+        (551.318118699284 + t10 * 555.8106088)));
+    const double t20 = p0 * (p0 * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 *
+        83.2543383))) + (t13 * (192.68735381072213 - t12 * 3.255846892956 + t10 * 12.04752222) + t11
+        * (-207.455111534192 - t12 * 10.1144104152))) + (t12 * (441.68020918365863 + t10 *
+        12.634151028 - t12 * 10.6686289158804) + (t13 * (t13 * 3.165989810886 + t11 * 3.01882950312)
+        + (592.9168745384313 + t10 * 2208.42906185688)));
+    const double t21 = p0 * (p0 * (p0 * (p0 * 16.3967704446 + (t18 - t11 * 83.2543383)) + (t12 *
+        (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595) + (t13 * (t13 * 0.176325576 - t11 *
+        2.51236902) + (t10 * 266.561825136888 - 295.71919022813984)))) + (t13 * (272.79322540195807
+        + t12 * 9.828632421610132 + t10 * 10.042969019112) + t11 * (1133.0355257374322 - t12 *
+        5.17310107716816))) + (t12 * (1649.3230169830567 + t10 * 49.73346863652 - t12 *
+        0.586988765940636) + (t13 * (t13 * 7.58579274212467 + t11 * 35.57139094306445) +
+        (1540.5445555579067 + t10 * 439.5600225423592)));
+    const double t22 = t17 * t21;
+    const double t23 = t19 * t20;
+    return 26.8921 * (t17 * (t23 - t22) + 2.0 * (t20 * t21) - 26.8921 * (t20 * t20)) + (t19 * (t22 -
+        t23) - t21 * t21);
+}
+
+/// `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` at the trim of `p0`, rad^2/s^2: at a zero of
+/// [`hurwitz_delta4`] the square of the frequency of the pair on the imaginary axis, positive
+/// at a Hopf point and negative at a neutral saddle (from the even and odd parts of
+/// `p(i omega) = 0` with `w^2` eliminated).
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 76 add/sub, 98 mul, 2 div, 0 neg, 0 libm (176 operations); straight-line, no branches.
+/// Rust: `roll_criterion::aircraft_a::hopf_omega_squared`, bit-identical.
+ROLL_CRITERION_API double rc_aircraft_a_hopf_omega_squared(double p0, double delta_e,
+    double delta_r)
+{
+    const double t0 = p0 * 0.959;
+    const double t1 = p0 * 0.786;
+    const double t2 = delta_e * 33.268;
+    const double t3 = 0.473352 + t0 * t1;
+    const double t4 = p0 * t1;
+    const double t5 = p0 * 1.815;
+    const double t6 = t0 * 0.0558;
+    const double t7 = p0 * 0.2608;
+    const double t8 = p0 * t0 - 13.52504;
+    const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
+        (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+    const double t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
+    const double t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
+    const double t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9;
+    const double t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232) - t2 * (p0 * 3.716 -
+        (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
+    const double t14 = t12 * (1.1952702 - t12 * 0.55413);
+    const double t15 = t13 * t13 * 0.676095;
+    const double t16 = p0 * p0;
+    const double t17 = t13 * (1.1462641218 - t12 * 1.06282134);
+    return (26.8921 * (p0 * (p0 * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 *
+        83.2543383))) + (t13 * (192.68735381072213 - t12 * 3.255846892956 + t10 * 12.04752222) + t11
+        * (-207.455111534192 - t12 * 10.1144104152))) + (t12 * (441.68020918365863 + t10 *
+        12.634151028 - t12 * 10.6686289158804) + (t13 * (t13 * 3.165989810886 + t11 * 3.01882950312)
+        + (592.9168745384313 + t10 * 2208.42906185688)))) - (p0 * (p0 * (p0 * (p0 * 16.3967704446 +
+        (t17 - t11 * 83.2543383)) + (t12 * (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595) +
+        (t13 * (t13 * 0.176325576 - t11 * 2.51236902) + (t10 * 266.561825136888 -
+        295.71919022813984)))) + (t13 * (272.79322540195807 + t12 * 9.828632421610132 + t10 *
+        10.042969019112) + t11 * (1133.0355257374322 - t12 * 5.17310107716816))) + (t12 *
+        (1649.3230169830567 + t10 * 49.73346863652 - t12 * 0.586988765940636) + (t13 * (t13 *
+        7.58579274212467 + t11 * 35.57139094306445) + (1540.5445555579067 + t10 *
+        439.5600225423592))))) / (26.8921 * (t14 + (136.03372548 + t15 + t10 * 110.45 + t16 *
+        1.753774)) - (p0 * (p0 * 42.5345817162 + (t17 - t11 * 110.45)) + (t12 * (92.64470614368 +
+        t10 * 2.61978 - t12 * 2.703267792) + (t13 * (t13 * 2.247474999 + t11 * 9.5351532) +
+        (551.318118699284 + t10 * 555.8106088)))));
+}
+
 // Aircraft B: every constant folded exactly, then rounded once to double.
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
@@ -1492,6 +2056,9 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_a_zero_sideslip_jump_polynomial(
 //   divergence_roll_rates                  2       0       2       0       3       7
 //   jump_polynomial                      196     254       0       0       0     450
 //   zero_sideslip_jump_polynomial         21      30       0       0       0      51
+//   characteristic_coefficients           74      96       1       0       0     171
+//   hurwitz_delta4                        80     106       1       0       0     187
+//   hopf_omega_squared                    76      98       2       0       0     176
 
 /// The data of Aircraft B (Table A.1), for the parametric functions.
 static const struct rc_derivatives rc_aircraft_b_derivatives = {
@@ -2042,6 +2609,167 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_b_zero_sideslip_jump_polynomial(
     result.v[7] = 0.0;
     result.v[8] = -2.406775633553772;
     return result;
+}
+
+/// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
+/// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10).
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 74 add/sub, 96 mul, 1 div, 0 neg, 0 libm (171 operations); straight-line, no branches.
+/// Rust: `roll_criterion::aircraft_b::characteristic_coefficients`, bit-identical.
+ROLL_CRITERION_API struct rc_array5 rc_aircraft_b_characteristic_coefficients(double p0,
+    double delta_e, double delta_r)
+{
+    const double t0 = p0 * 0.949;
+    const double t1 = p0 * 0.716;
+    const double t2 = delta_e * 28.37;
+    const double t3 = 0.19129 + t0 * t1;
+    const double t4 = p0 * t1;
+    const double t5 = p0 * 0.814;
+    const double t6 = t0 * 0.196;
+    const double t7 = p0 * 0.235;
+    const double t8 = p0 * t0 - 23.18;
+    const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 +
+        (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+    const double t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
+    const double t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
+    const double t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
+    const double t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328) - t2 * (p0 * 5.67 - (1.329 *
+        (t1 * 0.196) + p0 * t4))) * t9;
+    const double t14 = t12 * (0.090216 - t12 * 0.520532);
+    const double t15 = t13 * t13 * 0.689923;
+    const double t16 = p0 * p0;
+    const double t17 = t13 * (0.085614984 - t12 * 0.987969736);
+    struct rc_array5 result;
+    result.v[0] = 6.507;
+    result.v[1] = t14 + (41.025041 + t15 + t10 * 9.99 + t16 * 1.679484);
+    result.v[2] = p0 * (p0 * 8.690623672 + (t17 - t11 * 9.99)) + (t12 * (7.363855224 + t10 * 4.12209
+        - t12 * 1.217524348) + (t13 * (t13 * 1.21426448 + t11 * 16.85186) + (144.241950533 + t10 *
+        23.0418)));
+    result.v[3] = p0 * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 * 6.78804516))) +
+        (t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341) + t11 * (-7.67388312 - t12 *
+        16.18802176))) + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 * 12.847684415688) + (t13
+        * (t13 * 4.338828467857 + t11 * 7.26315166) + (227.986032885638 + t10 * 245.87545383)));
+    result.v[4] = p0 * (p0 * (p0 * (p0 * 2.672410572 + (t17 - t11 * 6.78804516)) + (t12 *
+        (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048) + (t13 * (t13 * 0.162131905 - t11 *
+        3.91186341) + (t10 * 11.11251889764 - 84.98986966456316)))) + (t13 * (10.593548621132255 +
+        t12 * 15.720444861287776 + t10 * 9.15905357189) + t11 * (164.88325852848 - t12 *
+        5.72030388496))) + (t12 * (173.96982183469882 + t10 * 100.00934789454 - t12 *
+        2.475293094555232) + (t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716) +
+        (545.4360653175479 + t10 * 39.62510941338)));
+    return result;
+}
+
+/// The fourth Hurwitz determinant of J5 at the trim of `p0`,
+/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`, 1/s^10.
+/// By Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
+/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle (`+-lambda`).
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 80 add/sub, 106 mul, 1 div, 0 neg, 0 libm (187 operations); straight-line, no branches.
+/// Rust: `roll_criterion::aircraft_b::hurwitz_delta4`, bit-identical.
+ROLL_CRITERION_API double rc_aircraft_b_hurwitz_delta4(double p0, double delta_e, double delta_r)
+{
+    const double t0 = p0 * 0.949;
+    const double t1 = p0 * 0.716;
+    const double t2 = delta_e * 28.37;
+    const double t3 = 0.19129 + t0 * t1;
+    const double t4 = p0 * t1;
+    const double t5 = p0 * 0.814;
+    const double t6 = t0 * 0.196;
+    const double t7 = p0 * 0.235;
+    const double t8 = p0 * t0 - 23.18;
+    const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 +
+        (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+    const double t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
+    const double t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
+    const double t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
+    const double t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328) - t2 * (p0 * 5.67 - (1.329 *
+        (t1 * 0.196) + p0 * t4))) * t9;
+    const double t14 = t12 * (0.090216 - t12 * 0.520532);
+    const double t15 = t13 * t13 * 0.689923;
+    const double t16 = p0 * p0;
+    const double t17 = t14 + (41.025041 + t15 + t10 * 9.99 + t16 * 1.679484);
+    const double t18 = t13 * (0.085614984 - t12 * 0.987969736);
+    const double t19 = p0 * (p0 * 8.690623672 + (t18 - t11 * 9.99)) + (t12 * (7.363855224 + t10 *
+        4.12209 - t12 * 1.217524348) + (t13 * (t13 * 1.21426448 + t11 * 16.85186) + (144.241950533 +
+        t10 * 23.0418)));
+    const double t20 = p0 * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 *
+        6.78804516))) + (t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341) + t11 *
+        (-7.67388312 - t12 * 16.18802176))) + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 *
+        12.847684415688) + (t13 * (t13 * 4.338828467857 + t11 * 7.26315166) + (227.986032885638 +
+        t10 * 245.87545383)));
+    const double t21 = p0 * (p0 * (p0 * (p0 * 2.672410572 + (t18 - t11 * 6.78804516)) + (t12 *
+        (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048) + (t13 * (t13 * 0.162131905 - t11 *
+        3.91186341) + (t10 * 11.11251889764 - 84.98986966456316)))) + (t13 * (10.593548621132255 +
+        t12 * 15.720444861287776 + t10 * 9.15905357189) + t11 * (164.88325852848 - t12 *
+        5.72030388496))) + (t12 * (173.96982183469882 + t10 * 100.00934789454 - t12 *
+        2.475293094555232) + (t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716) +
+        (545.4360653175479 + t10 * 39.62510941338)));
+    const double t22 = t17 * t21;
+    const double t23 = t19 * t20;
+    return 6.507 * (t17 * (t23 - t22) + 2.0 * (t20 * t21) - 6.507 * (t20 * t20)) + (t19 * (t22 -
+        t23) - t21 * t21);
+}
+
+/// `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` at the trim of `p0`, rad^2/s^2: at a zero of
+/// [`hurwitz_delta4`] the square of the frequency of the pair on the imaginary axis, positive
+/// at a Hopf point and negative at a neutral saddle (from the even and odd parts of
+/// `p(i omega) = 0` with `w^2` eliminated).
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 76 add/sub, 98 mul, 2 div, 0 neg, 0 libm (176 operations); straight-line, no branches.
+/// Rust: `roll_criterion::aircraft_b::hopf_omega_squared`, bit-identical.
+ROLL_CRITERION_API double rc_aircraft_b_hopf_omega_squared(double p0, double delta_e,
+    double delta_r)
+{
+    const double t0 = p0 * 0.949;
+    const double t1 = p0 * 0.716;
+    const double t2 = delta_e * 28.37;
+    const double t3 = 0.19129 + t0 * t1;
+    const double t4 = p0 * t1;
+    const double t5 = p0 * 0.814;
+    const double t6 = t0 * 0.196;
+    const double t7 = p0 * 0.235;
+    const double t8 = p0 * t0 - 23.18;
+    const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 +
+        (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+    const double t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
+    const double t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
+    const double t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
+    const double t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328) - t2 * (p0 * 5.67 - (1.329 *
+        (t1 * 0.196) + p0 * t4))) * t9;
+    const double t14 = t12 * (0.090216 - t12 * 0.520532);
+    const double t15 = t13 * t13 * 0.689923;
+    const double t16 = p0 * p0;
+    const double t17 = t13 * (0.085614984 - t12 * 0.987969736);
+    return (6.507 * (p0 * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 *
+        6.78804516))) + (t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341) + t11 *
+        (-7.67388312 - t12 * 16.18802176))) + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 *
+        12.847684415688) + (t13 * (t13 * 4.338828467857 + t11 * 7.26315166) + (227.986032885638 +
+        t10 * 245.87545383)))) - (p0 * (p0 * (p0 * (p0 * 2.672410572 + (t17 - t11 * 6.78804516)) +
+        (t12 * (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048) + (t13 * (t13 * 0.162131905 -
+        t11 * 3.91186341) + (t10 * 11.11251889764 - 84.98986966456316)))) + (t13 *
+        (10.593548621132255 + t12 * 15.720444861287776 + t10 * 9.15905357189) + t11 *
+        (164.88325852848 - t12 * 5.72030388496))) + (t12 * (173.96982183469882 + t10 *
+        100.00934789454 - t12 * 2.475293094555232) + (t13 * (t13 * 5.24109923903202 + t11 *
+        96.3262428716) + (545.4360653175479 + t10 * 39.62510941338))))) / (6.507 * (t14 + (41.025041
+        + t15 + t10 * 9.99 + t16 * 1.679484)) - (p0 * (p0 * 8.690623672 + (t17 - t11 * 9.99)) + (t12
+        * (7.363855224 + t10 * 4.12209 - t12 * 1.217524348) + (t13 * (t13 * 1.21426448 + t11 *
+        16.85186) + (144.241950533 + t10 * 23.0418)))));
 }
 
 #ifdef __cplusplus

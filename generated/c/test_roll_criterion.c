@@ -7,7 +7,7 @@
 // It prints the number of checks and exits 1 on any failure.
 // `./a.out --bits FILE` reads records "<aircraft index> <hex bits of each column>",
 // columns alpha, beta, delta_e, delta_r, p, p0, q, r,
-// and writes the 150 results of each record as doubles in host byte order: the C half
+// and writes the 164 results of each record as doubles in host byte order: the C half
 // of the workspace's bit-identity check (tests/tests/c_header.rs).
 
 #include "roll_criterion.h"
@@ -128,6 +128,27 @@ static void self_test_aircraft_a(void)
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, 0.03490658503988659)", got, want, tol, 9);
     }
     {
+        static const double want[5] = {26.8921, 129.50119318085413, 511.31229230147534, 391.2201083555913, 1104.4646970770052};
+        static const double tol[5] = {1.7026624554716818e-14, 1.8523172606848692e-13, 1.1977469487929313e-12, 1.6485846228520578e-12, 4.0275249925560335e-12};
+        const struct rc_array5 r = rc_characteristic_coefficients(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
+        const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
+        check("rc_characteristic_coefficients(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 5);
+    }
+    {
+        static const double want[1] = {80713292.94884312};
+        static const double tol[1] = {1.03487756473417e-5};
+        const double r = rc_hurwitz_delta4(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
+        const double got[1] = {r};
+        check("rc_hurwitz_delta4(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {3.1691294555706047};
+        static const double tol[1] = {3.118277532538995e-14};
+        const double r = rc_hopf_omega_squared(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
+        const double got[1] = {r};
+        check("rc_hopf_omega_squared(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {-0.06082818036915503, -0.02258882623335746, -0.19424124839494938, -0.02915363368075617, -0.025757273203972076, -0.06082818036915503, -0.02258882623335746, -0.19424124839494938, -0.02915363368075617, 0.0};
         static const double tol[10] = {1.8239508564094464e-16, 8.066816961603556e-17, 5.733439695025788e-16, 9.734878504783477e-17, 8.028046919782094e-17, 1.8239508564094464e-16, 8.066816961603556e-17, 5.733439695025788e-16, 9.734878504783477e-17, -2.0};
         const struct rc_Trim_array2 r = rc_aircraft_a_trim(0.5, 0.03490658503988659, 0.0);
@@ -210,6 +231,27 @@ static void self_test_aircraft_a(void)
         const struct rc_array9 r = rc_aircraft_a_zero_sideslip_jump_polynomial(0.03490658503988659);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_aircraft_a_zero_sideslip_jump_polynomial(0.03490658503988659)", got, want, tol, 9);
+    }
+    {
+        static const double want[5] = {26.8921, 129.50119318085413, 511.31229230147534, 391.2201083555913, 1104.4646970770052};
+        static const double tol[5] = {5.971245720104434e-15, 1.7109876772377132e-13, 7.782760589743801e-13, 1.3605243420618254e-12, 3.092743799617738e-12};
+        const struct rc_array5 r = rc_aircraft_a_characteristic_coefficients(0.5, 0.03490658503988659, 0.0);
+        const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
+        check("rc_aircraft_a_characteristic_coefficients(0.5, 0.03490658503988659, 0.0)", got, want, tol, 5);
+    }
+    {
+        static const double want[1] = {80713292.94884312};
+        static const double tol[1] = {8.22069492654615e-6};
+        const double r = rc_aircraft_a_hurwitz_delta4(0.5, 0.03490658503988659, 0.0);
+        const double got[1] = {r};
+        check("rc_aircraft_a_hurwitz_delta4(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {3.169129455570604};
+        static const double tol[1] = {2.4425530933700254e-14};
+        const double r = rc_aircraft_a_hopf_omega_squared(0.5, 0.03490658503988659, 0.0);
+        const double got[1] = {r};
+        check("rc_aircraft_a_hopf_omega_squared(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[10] = {0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, -0.1255202853445439, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -296,6 +338,27 @@ static void self_test_aircraft_a(void)
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, -0.05)", got, want, tol, 9);
     }
     {
+        static const double want[5] = {26.8921, 148.15999841915024, 686.665693127369, 1084.1105341327816, 1936.5017433701814};
+        static const double tol[5] = {1.7026624554716818e-14, 2.2999339963881076e-13, 1.732873846756139e-12, 4.008734104517081e-12, 9.315720753829744e-12};
+        const struct rc_array5 r = rc_characteristic_coefficients(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
+        const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
+        check("rc_characteristic_coefficients(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 5);
+    }
+    {
+        static const double want[1] = {767921374.3230038};
+        static const double tol[1] = {4.591616978134607e-5};
+        const double r = rc_hurwitz_delta4(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
+        const double got[1] = {r};
+        check("rc_hurwitz_delta4(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {8.253562456657566};
+        static const double tol[1] = {7.691961611431115e-14};
+        const double r = rc_hopf_omega_squared(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
+        const double got[1] = {r};
+        check("rc_hopf_omega_squared(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, -0.1255202853445439, 0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, 0.0};
         static const double tol[10] = {3.3647602538508114e-16, 5.062140387643495e-16, 1.4651925655055977e-15, 4.85023363546011e-16, 3.9650023656935233e-16, 3.3647602538508114e-16, 5.062140387643495e-16, 1.4651925655055977e-15, 4.85023363546011e-16, -2.0};
         const struct rc_Trim_array2 r = rc_aircraft_a_trim(1.3, -0.05, 0.01);
@@ -378,6 +441,27 @@ static void self_test_aircraft_a(void)
         const struct rc_array9 r = rc_aircraft_a_zero_sideslip_jump_polynomial(-0.05);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_aircraft_a_zero_sideslip_jump_polynomial(-0.05)", got, want, tol, 9);
+    }
+    {
+        static const double want[5] = {26.8921, 148.15999841915024, 686.665693127369, 1084.1105341327814, 1936.5017433701814};
+        static const double tol[5] = {5.971245720104434e-15, 2.0344344223093683e-13, 1.1972212798501006e-12, 3.1736254082481744e-12, 7.591516747854355e-12};
+        const struct rc_array5 r = rc_aircraft_a_characteristic_coefficients(1.3, -0.05, 0.01);
+        const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
+        check("rc_aircraft_a_characteristic_coefficients(1.3, -0.05, 0.01)", got, want, tol, 5);
+    }
+    {
+        static const double want[1] = {767921374.3230036};
+        static const double tol[1] = {3.622056316301993e-5};
+        const double r = rc_aircraft_a_hurwitz_delta4(1.3, -0.05, 0.01);
+        const double got[1] = {r};
+        check("rc_aircraft_a_hurwitz_delta4(1.3, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {8.253562456657566};
+        static const double tol[1] = {5.872485335698718e-14};
+        const double r = rc_aircraft_a_hopf_omega_squared(1.3, -0.05, 0.01);
+        const double got[1] = {r};
+        check("rc_aircraft_a_hopf_omega_squared(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[10] = {0.005590298225498764, -0.01615283065336472, -0.022761054157733485, 0.014597558602929725, -0.15732122985399027, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -464,6 +548,27 @@ static void self_test_aircraft_a(void)
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, 0.0)", got, want, tol, 9);
     }
     {
+        static const double want[5] = {26.8921, 147.1508537367839, 812.0397546562365, 1131.032360356705, 326.1327950544973};
+        static const double tol[5] = {1.7026624554716818e-14, 2.015440701280449e-13, 1.731468394427108e-12, 3.0194871511766596e-12, 8.288854464787214e-12};
+        const struct rc_array5 r = rc_characteristic_coefficients(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
+        const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
+        check("rc_characteristic_coefficients(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 5);
+    }
+    {
+        static const double want[1] = {1832318526.1174514};
+        static const double tol[1] = {4.683670854168323e-5};
+        const double r = rc_hurwitz_delta4(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
+        const double got[1] = {r};
+        check("rc_hurwitz_delta4(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {9.566999293543777};
+        static const double tol[1] = {7.514352253179553e-14};
+        const double r = rc_hopf_omega_squared(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
+        const double got[1] = {r};
+        check("rc_hopf_omega_squared(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {0.005590298225498764, -0.01615283065336472, -0.022761054157733482, 0.014597558602929725, -0.15732122985399027, 0.005590298225498764, -0.01615283065336472, -0.022761054157733482, 0.014597558602929725, 0.0};
         static const double tol[10] = {7.42935114772493e-17, 2.1922447544029468e-16, 3.235112727675879e-16, 1.9951536450857543e-16, 3.5932235909586705e-16, 7.42935114772493e-17, 2.1922447544029468e-16, 3.235112727675879e-16, 1.9951536450857543e-16, -2.0};
         const struct rc_Trim_array2 r = rc_aircraft_a_trim(2.45, 0.0, -0.02);
@@ -546,6 +651,27 @@ static void self_test_aircraft_a(void)
         const struct rc_array9 r = rc_aircraft_a_zero_sideslip_jump_polynomial(0.0);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_aircraft_a_zero_sideslip_jump_polynomial(0.0)", got, want, tol, 9);
+    }
+    {
+        static const double want[5] = {26.8921, 147.15085373678386, 812.0397546562365, 1131.032360356705, 326.1327950544973};
+        static const double tol[5] = {5.971245720104434e-15, 1.7201762637228648e-13, 1.0377896835775604e-12, 2.2914722884695003e-12, 6.5328339337160764e-12};
+        const struct rc_array5 r = rc_aircraft_a_characteristic_coefficients(2.45, 0.0, -0.02);
+        const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
+        check("rc_aircraft_a_characteristic_coefficients(2.45, 0.0, -0.02)", got, want, tol, 5);
+    }
+    {
+        static const double want[1] = {1832318526.1174512};
+        static const double tol[1] = {3.49662534472452e-5};
+        const double r = rc_aircraft_a_hurwitz_delta4(2.45, 0.0, -0.02);
+        const double got[1] = {r};
+        check("rc_aircraft_a_hurwitz_delta4(2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {9.566999293543777};
+        static const double tol[1] = {5.491100279086769e-14};
+        const double r = rc_aircraft_a_hopf_omega_squared(2.45, 0.0, -0.02);
+        const double got[1] = {r};
+        check("rc_aircraft_a_hopf_omega_squared(2.45, 0.0, -0.02)", got, want, tol, 1);
     }
 }
 
@@ -665,115 +791,147 @@ static void outputs_aircraft_a(const double *x, double *o)
         o[74] = r.v[8];
     }
     {
+        const struct rc_array5 r = rc_characteristic_coefficients(k, x[5], x[2], x[3]);
+        o[75] = r.v[0];
+        o[76] = r.v[1];
+        o[77] = r.v[2];
+        o[78] = r.v[3];
+        o[79] = r.v[4];
+    }
+    {
+        const double r = rc_hurwitz_delta4(k, x[5], x[2], x[3]);
+        o[80] = r;
+    }
+    {
+        const double r = rc_hopf_omega_squared(k, x[5], x[2], x[3]);
+        o[81] = r;
+    }
+    {
         const struct rc_Trim_array2 r = rc_aircraft_a_trim(x[5], x[2], x[3]);
-        o[75] = r.v[0].alpha;
-        o[76] = r.v[0].beta;
-        o[77] = r.v[0].q;
-        o[78] = r.v[0].r;
-        o[79] = r.v[0].delta_a;
-        o[80] = r.v[1].alpha;
-        o[81] = r.v[1].beta;
-        o[82] = r.v[1].q;
-        o[83] = r.v[1].r;
-        o[84] = r.v[1].delta_a;
+        o[82] = r.v[0].alpha;
+        o[83] = r.v[0].beta;
+        o[84] = r.v[0].q;
+        o[85] = r.v[0].r;
+        o[86] = r.v[0].delta_a;
+        o[87] = r.v[1].alpha;
+        o[88] = r.v[1].beta;
+        o[89] = r.v[1].q;
+        o[90] = r.v[1].r;
+        o[91] = r.v[1].delta_a;
     }
     {
         const struct rc_ZeroSideslipTrim r = rc_aircraft_a_zero_sideslip_trim(x[5], x[2]);
-        o[85] = r.alpha;
-        o[86] = r.q;
-        o[87] = r.r;
-        o[88] = r.delta_a;
-        o[89] = r.delta_r;
+        o[92] = r.alpha;
+        o[93] = r.q;
+        o[94] = r.r;
+        o[95] = r.delta_a;
+        o[96] = r.delta_r;
     }
     {
         const struct rc_matrix5x5 r = rc_aircraft_a_jacobian5(x[0], x[1], x[4], x[6], x[7]);
-        o[90] = r.m[0][0];
-        o[91] = r.m[0][1];
-        o[92] = r.m[0][2];
-        o[93] = r.m[0][3];
-        o[94] = r.m[0][4];
-        o[95] = r.m[1][0];
-        o[96] = r.m[1][1];
-        o[97] = r.m[1][2];
-        o[98] = r.m[1][3];
-        o[99] = r.m[1][4];
-        o[100] = r.m[2][0];
-        o[101] = r.m[2][1];
-        o[102] = r.m[2][2];
-        o[103] = r.m[2][3];
-        o[104] = r.m[2][4];
-        o[105] = r.m[3][0];
-        o[106] = r.m[3][1];
-        o[107] = r.m[3][2];
-        o[108] = r.m[3][3];
-        o[109] = r.m[3][4];
-        o[110] = r.m[4][0];
-        o[111] = r.m[4][1];
-        o[112] = r.m[4][2];
-        o[113] = r.m[4][3];
-        o[114] = r.m[4][4];
+        o[97] = r.m[0][0];
+        o[98] = r.m[0][1];
+        o[99] = r.m[0][2];
+        o[100] = r.m[0][3];
+        o[101] = r.m[0][4];
+        o[102] = r.m[1][0];
+        o[103] = r.m[1][1];
+        o[104] = r.m[1][2];
+        o[105] = r.m[1][3];
+        o[106] = r.m[1][4];
+        o[107] = r.m[2][0];
+        o[108] = r.m[2][1];
+        o[109] = r.m[2][2];
+        o[110] = r.m[2][3];
+        o[111] = r.m[2][4];
+        o[112] = r.m[3][0];
+        o[113] = r.m[3][1];
+        o[114] = r.m[3][2];
+        o[115] = r.m[3][3];
+        o[116] = r.m[3][4];
+        o[117] = r.m[4][0];
+        o[118] = r.m[4][1];
+        o[119] = r.m[4][2];
+        o[120] = r.m[4][3];
+        o[121] = r.m[4][4];
     }
     {
         const double r = rc_aircraft_a_residual_denominator(x[5], x[2], x[3]);
-        o[115] = r;
-    }
-    {
-        const struct rc_matrix2x2 r = rc_aircraft_a_stiffness(x[5], x[2], x[3]);
-        o[116] = r.m[0][0];
-        o[117] = r.m[0][1];
-        o[118] = r.m[1][0];
-        o[119] = r.m[1][1];
-    }
-    {
-        const double r = rc_aircraft_a_det_k(x[5], x[2], x[3]);
-        o[120] = r;
-    }
-    {
-        const double r = rc_aircraft_a_det_j5(x[5], x[2], x[3]);
-        o[121] = r;
-    }
-    {
-        const double r = rc_aircraft_a_zero_sideslip_det_k(x[5], x[2]);
         o[122] = r;
     }
     {
+        const struct rc_matrix2x2 r = rc_aircraft_a_stiffness(x[5], x[2], x[3]);
+        o[123] = r.m[0][0];
+        o[124] = r.m[0][1];
+        o[125] = r.m[1][0];
+        o[126] = r.m[1][1];
+    }
+    {
+        const double r = rc_aircraft_a_det_k(x[5], x[2], x[3]);
+        o[127] = r;
+    }
+    {
+        const double r = rc_aircraft_a_det_j5(x[5], x[2], x[3]);
+        o[128] = r;
+    }
+    {
+        const double r = rc_aircraft_a_zero_sideslip_det_k(x[5], x[2]);
+        o[129] = r;
+    }
+    {
         const struct rc_array3 r = rc_aircraft_a_divergence_biquadratic();
-        o[123] = r.v[0];
-        o[124] = r.v[1];
-        o[125] = r.v[2];
+        o[130] = r.v[0];
+        o[131] = r.v[1];
+        o[132] = r.v[2];
     }
     {
         const struct rc_array2 r = rc_aircraft_a_divergence_roll_rates();
-        o[126] = r.v[0];
-        o[127] = r.v[1];
+        o[133] = r.v[0];
+        o[134] = r.v[1];
     }
     {
         const struct rc_array13 r = rc_aircraft_a_jump_polynomial(x[2], x[3]);
-        o[128] = r.v[0];
-        o[129] = r.v[1];
-        o[130] = r.v[2];
-        o[131] = r.v[3];
-        o[132] = r.v[4];
-        o[133] = r.v[5];
-        o[134] = r.v[6];
-        o[135] = r.v[7];
-        o[136] = r.v[8];
-        o[137] = r.v[9];
-        o[138] = r.v[10];
-        o[139] = r.v[11];
-        o[140] = r.v[12];
+        o[135] = r.v[0];
+        o[136] = r.v[1];
+        o[137] = r.v[2];
+        o[138] = r.v[3];
+        o[139] = r.v[4];
+        o[140] = r.v[5];
+        o[141] = r.v[6];
+        o[142] = r.v[7];
+        o[143] = r.v[8];
+        o[144] = r.v[9];
+        o[145] = r.v[10];
+        o[146] = r.v[11];
+        o[147] = r.v[12];
     }
     {
         const struct rc_array9 r = rc_aircraft_a_zero_sideslip_jump_polynomial(x[2]);
-        o[141] = r.v[0];
-        o[142] = r.v[1];
-        o[143] = r.v[2];
-        o[144] = r.v[3];
-        o[145] = r.v[4];
-        o[146] = r.v[5];
-        o[147] = r.v[6];
-        o[148] = r.v[7];
-        o[149] = r.v[8];
+        o[148] = r.v[0];
+        o[149] = r.v[1];
+        o[150] = r.v[2];
+        o[151] = r.v[3];
+        o[152] = r.v[4];
+        o[153] = r.v[5];
+        o[154] = r.v[6];
+        o[155] = r.v[7];
+        o[156] = r.v[8];
+    }
+    {
+        const struct rc_array5 r = rc_aircraft_a_characteristic_coefficients(x[5], x[2], x[3]);
+        o[157] = r.v[0];
+        o[158] = r.v[1];
+        o[159] = r.v[2];
+        o[160] = r.v[3];
+        o[161] = r.v[4];
+    }
+    {
+        const double r = rc_aircraft_a_hurwitz_delta4(x[5], x[2], x[3]);
+        o[162] = r;
+    }
+    {
+        const double r = rc_aircraft_a_hopf_omega_squared(x[5], x[2], x[3]);
+        o[163] = r;
     }
 }
 
@@ -865,6 +1023,27 @@ static void self_test_aircraft_b(void)
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, 0.03490658503988659)", got, want, tol, 9);
     }
     {
+        static const double want[5] = {6.507, 41.027491946596605, 145.0764494050307, 213.3365798185311, 512.5909424134004};
+        static const double tol[5] = {3.933742220851855e-15, 7.464727528012436e-14, 2.9200480143562796e-13, 5.065402664153849e-13, 1.0561904344582675e-12};
+        const struct rc_array5 r = rc_characteristic_coefficients(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
+        const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
+        check("rc_characteristic_coefficients(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 5);
+    }
+    {
+        static const double want[1] = {442459.8244561408};
+        static const double tol[1] = {1.2705629405310434e-7};
+        const double r = rc_hurwitz_delta4(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
+        const double got[1] = {r};
+        check("rc_hurwitz_delta4(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {7.183478548253213};
+        static const double tol[1] = {1.0874588396253116e-13};
+        const double r = rc_hopf_omega_squared(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
+        const double got[1] = {r};
+        check("rc_hopf_omega_squared(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {-0.04112860174591951, -0.004406825842779853, -0.05686332464171695, -0.019700563007774903, -0.04201991042752198, -0.04112860174591951, -0.004406825842779853, -0.05686332464171695, -0.019700563007774903, 0.0};
         static const double tol[10] = {1.1465382014899896e-16, 1.470628100293585e-17, 1.5707845624589236e-16, 6.114536290948603e-17, 7.897750012301334e-17, 1.1465382014899896e-16, 1.470628100293585e-17, 1.5707845624589236e-16, 6.114536290948603e-17, -2.0};
         const struct rc_Trim_array2 r = rc_aircraft_b_trim(0.5, 0.03490658503988659, 0.0);
@@ -947,6 +1126,27 @@ static void self_test_aircraft_b(void)
         const struct rc_array9 r = rc_aircraft_b_zero_sideslip_jump_polynomial(0.03490658503988659);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_aircraft_b_zero_sideslip_jump_polynomial(0.03490658503988659)", got, want, tol, 9);
+    }
+    {
+        static const double want[5] = {6.507, 41.027491946596605, 145.0764494050307, 213.33657981853113, 512.5909424134005};
+        static const double tol[5] = {1.4448442442471786e-15, 4.709620217757568e-14, 1.6626620052311831e-13, 2.8658564206883664e-13, 6.772249417146711e-13};
+        const struct rc_array5 r = rc_aircraft_b_characteristic_coefficients(0.5, 0.03490658503988659, 0.0);
+        const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
+        check("rc_aircraft_b_characteristic_coefficients(0.5, 0.03490658503988659, 0.0)", got, want, tol, 5);
+    }
+    {
+        static const double want[1] = {442459.82445614086};
+        static const double tol[1] = {7.916501174042561e-8};
+        const double r = rc_aircraft_b_hurwitz_delta4(0.5, 0.03490658503988659, 0.0);
+        const double got[1] = {r};
+        check("rc_aircraft_b_hurwitz_delta4(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {7.1834785482532135};
+        static const double tol[1] = {6.554469341108535e-14};
+        const double r = rc_aircraft_b_hopf_omega_squared(0.5, 0.03490658503988659, 0.0);
+        const double got[1] = {r};
+        check("rc_aircraft_b_hopf_omega_squared(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[10] = {0.06127401382437423, 0.02319501480715936, 0.11158668362190052, 0.07510999506948327, -0.11654478563509404, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -1033,6 +1233,27 @@ static void self_test_aircraft_b(void)
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, -0.05)", got, want, tol, 9);
     }
     {
+        static const double want[5] = {6.507, 44.4829740208118, 160.9082710949139, 226.36774160804893, 437.71615209315485};
+        static const double tol[5] = {3.933742220851855e-15, 8.20828494048664e-14, 3.296087008076787e-13, 6.509358339289391e-13, 1.4410235007748175e-12};
+        const struct rc_array5 r = rc_characteristic_coefficients(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
+        const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
+        check("rc_characteristic_coefficients(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 5);
+    }
+    {
+        static const double want[1] = {1107486.9121202743};
+        static const double tol[1] = {1.808087088033442e-7};
+        const double r = rc_hurwitz_delta4(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
+        const double got[1] = {r};
+        check("rc_hurwitz_delta4(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {8.053828258092345};
+        static const double tol[1] = {1.2810564454727736e-13};
+        const double r = rc_hopf_omega_squared(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
+        const double got[1] = {r};
+        check("rc_hopf_omega_squared(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {0.061274013824374224, 0.02319501480715936, 0.11158668362190051, 0.07510999506948327, -0.11654478563509404, 0.061274013824374224, 0.02319501480715936, 0.11158668362190051, 0.07510999506948327, 0.0};
         static const double tol[10] = {2.2090603624145868e-16, 8.976413110798022e-17, 3.777948014941962e-16, 3.1038329419458586e-16, 2.275324708897782e-16, 2.2090603624145868e-16, 8.976413110798022e-17, 3.777948014941962e-16, 3.1038329419458586e-16, -2.0};
         const struct rc_Trim_array2 r = rc_aircraft_b_trim(1.3, -0.05, 0.01);
@@ -1115,6 +1336,27 @@ static void self_test_aircraft_b(void)
         const struct rc_array9 r = rc_aircraft_b_zero_sideslip_jump_polynomial(-0.05);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_aircraft_b_zero_sideslip_jump_polynomial(-0.05)", got, want, tol, 9);
+    }
+    {
+        static const double want[5] = {6.507, 44.4829740208118, 160.90827109491394, 226.36774160804893, 437.7161520931549};
+        static const double tol[5] = {1.4448442442471786e-15, 5.166437446440774e-14, 1.8909529624886992e-13, 3.8553909730494255e-13, 9.843326701581016e-13};
+        const struct rc_array5 r = rc_aircraft_b_characteristic_coefficients(1.3, -0.05, 0.01);
+        const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
+        check("rc_aircraft_b_characteristic_coefficients(1.3, -0.05, 0.01)", got, want, tol, 5);
+    }
+    {
+        static const double want[1] = {1107486.9121202745};
+        static const double tol[1] = {1.1565350807093328e-7};
+        const double r = rc_aircraft_b_hurwitz_delta4(1.3, -0.05, 0.01);
+        const double got[1] = {r};
+        check("rc_aircraft_b_hurwitz_delta4(1.3, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {8.053828258092345};
+        static const double tol[1] = {7.859288356113616e-14};
+        const double r = rc_aircraft_b_hopf_omega_squared(1.3, -0.05, 0.01);
+        const double got[1] = {r};
+        check("rc_aircraft_b_hopf_omega_squared(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[10] = {0.001464739718743919, -0.011099354722233735, -0.025246779983261986, 0.005764085836480414, -0.2078144310521549, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -1201,6 +1443,27 @@ static void self_test_aircraft_b(void)
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, 0.0)", got, want, tol, 9);
     }
     {
+        static const double want[5] = {6.507, 51.118189931717495, 196.52651300623458, 172.36700211022463, 125.1176858749448};
+        static const double tol[5] = {3.933742220851855e-15, 9.347440960975381e-14, 4.000506832963825e-13, 6.821363624682705e-13, 2.155903465333913e-12};
+        const struct rc_array5 r = rc_characteristic_coefficients(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
+        const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
+        check("rc_characteristic_coefficients(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 5);
+    }
+    {
+        static const double want[1] = {2746904.159969922};
+        static const double tol[1] = {2.4124176501617675e-7};
+        const double r = rc_hurwitz_delta4(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
+        const double got[1] = {r};
+        check("rc_hurwitz_delta4(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {7.321658338036844};
+        static const double tol[1] = {1.291762485179968e-13};
+        const double r = rc_hopf_omega_squared(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
+        const double got[1] = {r};
+        check("rc_hopf_omega_squared(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {0.001464739718743919, -0.011099354722233737, -0.025246779983261986, 0.005764085836480415, -0.2078144310521549, 0.001464739718743919, -0.011099354722233737, -0.025246779983261986, 0.005764085836480415, 0.0};
         static const double tol[10] = {1.5201158010961836e-17, 1.171541029696021e-16, 2.7366734706120234e-16, 6.003802783651317e-17, 3.9707749466287693e-16, 1.5201158010961836e-17, 1.171541029696021e-16, 2.7366734706120234e-16, 6.003802783651317e-17, -2.0};
         const struct rc_Trim_array2 r = rc_aircraft_b_trim(2.45, 0.0, -0.02);
@@ -1283,6 +1546,27 @@ static void self_test_aircraft_b(void)
         const struct rc_array9 r = rc_aircraft_b_zero_sideslip_jump_polynomial(0.0);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_aircraft_b_zero_sideslip_jump_polynomial(0.0)", got, want, tol, 9);
+    }
+    {
+        static const double want[5] = {6.507, 51.1181899317175, 196.52651300623458, 172.36700211022463, 125.1176858749448};
+        static const double tol[5] = {1.4448442442471786e-15, 5.694095038830932e-14, 2.2384437257353e-13, 3.934107289869611e-13, 1.5487450707436792e-12};
+        const struct rc_array5 r = rc_aircraft_b_characteristic_coefficients(2.45, 0.0, -0.02);
+        const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
+        check("rc_aircraft_b_characteristic_coefficients(2.45, 0.0, -0.02)", got, want, tol, 5);
+    }
+    {
+        static const double want[1] = {2746904.159969923};
+        static const double tol[1] = {1.5512684435125215e-7};
+        const double r = rc_aircraft_b_hurwitz_delta4(2.45, 0.0, -0.02);
+        const double got[1] = {r};
+        check("rc_aircraft_b_hurwitz_delta4(2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {7.321658338036845};
+        static const double tol[1] = {7.864654231937969e-14};
+        const double r = rc_aircraft_b_hopf_omega_squared(2.45, 0.0, -0.02);
+        const double got[1] = {r};
+        check("rc_aircraft_b_hopf_omega_squared(2.45, 0.0, -0.02)", got, want, tol, 1);
     }
 }
 
@@ -1402,125 +1686,157 @@ static void outputs_aircraft_b(const double *x, double *o)
         o[74] = r.v[8];
     }
     {
+        const struct rc_array5 r = rc_characteristic_coefficients(k, x[5], x[2], x[3]);
+        o[75] = r.v[0];
+        o[76] = r.v[1];
+        o[77] = r.v[2];
+        o[78] = r.v[3];
+        o[79] = r.v[4];
+    }
+    {
+        const double r = rc_hurwitz_delta4(k, x[5], x[2], x[3]);
+        o[80] = r;
+    }
+    {
+        const double r = rc_hopf_omega_squared(k, x[5], x[2], x[3]);
+        o[81] = r;
+    }
+    {
         const struct rc_Trim_array2 r = rc_aircraft_b_trim(x[5], x[2], x[3]);
-        o[75] = r.v[0].alpha;
-        o[76] = r.v[0].beta;
-        o[77] = r.v[0].q;
-        o[78] = r.v[0].r;
-        o[79] = r.v[0].delta_a;
-        o[80] = r.v[1].alpha;
-        o[81] = r.v[1].beta;
-        o[82] = r.v[1].q;
-        o[83] = r.v[1].r;
-        o[84] = r.v[1].delta_a;
+        o[82] = r.v[0].alpha;
+        o[83] = r.v[0].beta;
+        o[84] = r.v[0].q;
+        o[85] = r.v[0].r;
+        o[86] = r.v[0].delta_a;
+        o[87] = r.v[1].alpha;
+        o[88] = r.v[1].beta;
+        o[89] = r.v[1].q;
+        o[90] = r.v[1].r;
+        o[91] = r.v[1].delta_a;
     }
     {
         const struct rc_ZeroSideslipTrim r = rc_aircraft_b_zero_sideslip_trim(x[5], x[2]);
-        o[85] = r.alpha;
-        o[86] = r.q;
-        o[87] = r.r;
-        o[88] = r.delta_a;
-        o[89] = r.delta_r;
+        o[92] = r.alpha;
+        o[93] = r.q;
+        o[94] = r.r;
+        o[95] = r.delta_a;
+        o[96] = r.delta_r;
     }
     {
         const struct rc_matrix5x5 r = rc_aircraft_b_jacobian5(x[0], x[1], x[4], x[6], x[7]);
-        o[90] = r.m[0][0];
-        o[91] = r.m[0][1];
-        o[92] = r.m[0][2];
-        o[93] = r.m[0][3];
-        o[94] = r.m[0][4];
-        o[95] = r.m[1][0];
-        o[96] = r.m[1][1];
-        o[97] = r.m[1][2];
-        o[98] = r.m[1][3];
-        o[99] = r.m[1][4];
-        o[100] = r.m[2][0];
-        o[101] = r.m[2][1];
-        o[102] = r.m[2][2];
-        o[103] = r.m[2][3];
-        o[104] = r.m[2][4];
-        o[105] = r.m[3][0];
-        o[106] = r.m[3][1];
-        o[107] = r.m[3][2];
-        o[108] = r.m[3][3];
-        o[109] = r.m[3][4];
-        o[110] = r.m[4][0];
-        o[111] = r.m[4][1];
-        o[112] = r.m[4][2];
-        o[113] = r.m[4][3];
-        o[114] = r.m[4][4];
+        o[97] = r.m[0][0];
+        o[98] = r.m[0][1];
+        o[99] = r.m[0][2];
+        o[100] = r.m[0][3];
+        o[101] = r.m[0][4];
+        o[102] = r.m[1][0];
+        o[103] = r.m[1][1];
+        o[104] = r.m[1][2];
+        o[105] = r.m[1][3];
+        o[106] = r.m[1][4];
+        o[107] = r.m[2][0];
+        o[108] = r.m[2][1];
+        o[109] = r.m[2][2];
+        o[110] = r.m[2][3];
+        o[111] = r.m[2][4];
+        o[112] = r.m[3][0];
+        o[113] = r.m[3][1];
+        o[114] = r.m[3][2];
+        o[115] = r.m[3][3];
+        o[116] = r.m[3][4];
+        o[117] = r.m[4][0];
+        o[118] = r.m[4][1];
+        o[119] = r.m[4][2];
+        o[120] = r.m[4][3];
+        o[121] = r.m[4][4];
     }
     {
         const double r = rc_aircraft_b_residual_denominator(x[5], x[2], x[3]);
-        o[115] = r;
-    }
-    {
-        const struct rc_matrix2x2 r = rc_aircraft_b_stiffness(x[5], x[2], x[3]);
-        o[116] = r.m[0][0];
-        o[117] = r.m[0][1];
-        o[118] = r.m[1][0];
-        o[119] = r.m[1][1];
-    }
-    {
-        const double r = rc_aircraft_b_det_k(x[5], x[2], x[3]);
-        o[120] = r;
-    }
-    {
-        const double r = rc_aircraft_b_det_j5(x[5], x[2], x[3]);
-        o[121] = r;
-    }
-    {
-        const double r = rc_aircraft_b_zero_sideslip_det_k(x[5], x[2]);
         o[122] = r;
     }
     {
+        const struct rc_matrix2x2 r = rc_aircraft_b_stiffness(x[5], x[2], x[3]);
+        o[123] = r.m[0][0];
+        o[124] = r.m[0][1];
+        o[125] = r.m[1][0];
+        o[126] = r.m[1][1];
+    }
+    {
+        const double r = rc_aircraft_b_det_k(x[5], x[2], x[3]);
+        o[127] = r;
+    }
+    {
+        const double r = rc_aircraft_b_det_j5(x[5], x[2], x[3]);
+        o[128] = r;
+    }
+    {
+        const double r = rc_aircraft_b_zero_sideslip_det_k(x[5], x[2]);
+        o[129] = r;
+    }
+    {
         const struct rc_array3 r = rc_aircraft_b_divergence_biquadratic();
-        o[123] = r.v[0];
-        o[124] = r.v[1];
-        o[125] = r.v[2];
+        o[130] = r.v[0];
+        o[131] = r.v[1];
+        o[132] = r.v[2];
     }
     {
         const struct rc_array2 r = rc_aircraft_b_divergence_roll_rates();
-        o[126] = r.v[0];
-        o[127] = r.v[1];
+        o[133] = r.v[0];
+        o[134] = r.v[1];
     }
     {
         const struct rc_array13 r = rc_aircraft_b_jump_polynomial(x[2], x[3]);
-        o[128] = r.v[0];
-        o[129] = r.v[1];
-        o[130] = r.v[2];
-        o[131] = r.v[3];
-        o[132] = r.v[4];
-        o[133] = r.v[5];
-        o[134] = r.v[6];
-        o[135] = r.v[7];
-        o[136] = r.v[8];
-        o[137] = r.v[9];
-        o[138] = r.v[10];
-        o[139] = r.v[11];
-        o[140] = r.v[12];
+        o[135] = r.v[0];
+        o[136] = r.v[1];
+        o[137] = r.v[2];
+        o[138] = r.v[3];
+        o[139] = r.v[4];
+        o[140] = r.v[5];
+        o[141] = r.v[6];
+        o[142] = r.v[7];
+        o[143] = r.v[8];
+        o[144] = r.v[9];
+        o[145] = r.v[10];
+        o[146] = r.v[11];
+        o[147] = r.v[12];
     }
     {
         const struct rc_array9 r = rc_aircraft_b_zero_sideslip_jump_polynomial(x[2]);
-        o[141] = r.v[0];
-        o[142] = r.v[1];
-        o[143] = r.v[2];
-        o[144] = r.v[3];
-        o[145] = r.v[4];
-        o[146] = r.v[5];
-        o[147] = r.v[6];
-        o[148] = r.v[7];
-        o[149] = r.v[8];
+        o[148] = r.v[0];
+        o[149] = r.v[1];
+        o[150] = r.v[2];
+        o[151] = r.v[3];
+        o[152] = r.v[4];
+        o[153] = r.v[5];
+        o[154] = r.v[6];
+        o[155] = r.v[7];
+        o[156] = r.v[8];
+    }
+    {
+        const struct rc_array5 r = rc_aircraft_b_characteristic_coefficients(x[5], x[2], x[3]);
+        o[157] = r.v[0];
+        o[158] = r.v[1];
+        o[159] = r.v[2];
+        o[160] = r.v[3];
+        o[161] = r.v[4];
+    }
+    {
+        const double r = rc_aircraft_b_hurwitz_delta4(x[5], x[2], x[3]);
+        o[162] = r;
+    }
+    {
+        const double r = rc_aircraft_b_hopf_omega_squared(x[5], x[2], x[3]);
+        o[163] = r;
     }
 }
 
-/* The --bits mode: one record per line, 8 columns, 150 outputs. */
+/* The --bits mode: one record per line, 8 columns, 164 outputs. */
 static int bits(const char *path)
 {
     FILE *in = fopen(path, "r");
     unsigned aircraft;
     double x[8];
-    double o[150];
+    double o[164];
     if (!in) {
         perror(path);
         return 2;

@@ -24,7 +24,11 @@ use num_traits::Zero;
 use serde::Serialize;
 use std::sync::OnceLock;
 
+mod departure;
 mod primary;
+pub use departure::{
+    omega_at, parametric_characteristic, FirstDeparture, HopfPoint, HopfPolys, Landing,
+};
 pub use primary::{quadratic_roots, InAileron, Outcome};
 
 /// A trim on the unconstrained roll (delta_r = 0) at which something happens: a jump point (a
@@ -50,6 +54,10 @@ pub struct JumpPoint {
     pub within_limits: Option<bool>,
     /// Whether |alpha| and |beta| are within the `[validity]` range of the linear aerodynamics.
     pub valid: bool,
+    /// For a jump point: the stable equilibria at the same aileron the jump can land on (empty:
+    /// divergence); absent for poles and Hopf points.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lands_at: Option<Vec<Landing>>,
 }
 
 /// A departure point of the zero-sideslip roll: a positive root of det K at the beta = 0 trim.
@@ -82,6 +90,8 @@ pub struct DeparturePoint {
 pub struct ZeroSideslip {
     /// Positive roots of det K at the zero-sideslip trims, ascending.
     pub departure: Vec<DeparturePoint>,
+    /// Hopf roll rates of the zero-sideslip trims (omega^2 > 0), rad/s, ascending.
+    pub hopf_roll_rates: Vec<f64>,
 }
 
 /// Everything `model analyze` reports (angles in rad, rates in rad/s, lists ascending in P0).
@@ -106,6 +116,11 @@ pub struct Analysis {
     pub det_k_poles: Vec<JumpPoint>,
     /// Section V: zero-sideslip roll.
     pub zero_sideslip: ZeroSideslip,
+    /// Hopf points (a complex pair of J5 on the imaginary axis), ascending in P0.
+    pub hopf: Vec<HopfPoint>,
+    /// The first loss of stability along the primary branch (jump or Hopf), `None` when the
+    /// branch never loses stability within the aileron range (or diverges first).
+    pub first_departure: Option<FirstDeparture>,
 }
 
 /// Why an aircraft cannot be analysed in closed form.
@@ -172,6 +187,17 @@ pub const DEFAULT_AILERON_RANGE: f64 = std::f64::consts::FRAC_PI_2;
 
 /// Runs the analysis for one aircraft at elevator deflection `delta_e_rad`.
 pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, AnalysisError> {
+    analyze_with(aircraft, delta_e_rad, true)
+}
+
+/// [`analyze`], with the Hopf points, landings and first departure (issue 10) only when
+/// `departures` is true; `false` gives the jump analysis alone (empty `hopf`, no `lands_at`,
+/// no `first_departure`), the baseline of the benchmark.
+pub fn analyze_with(
+    aircraft: &Aircraft,
+    delta_e_rad: f64,
+    departures: bool,
+) -> Result<Analysis, AnalysisError> {
     if !delta_e_rad.is_finite() || delta_e_rad.abs() > std::f64::consts::FRAC_PI_2 {
         return Err(AnalysisError::DeltaE(delta_e_rad));
     }
@@ -206,6 +232,7 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
             r,
             within_limits: aircraft.within_limits(da, delta_e_rad, None),
             valid: aircraft.valid(alpha, beta),
+            lands_at: None,
         }
     };
 
@@ -220,7 +247,7 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
 
     // A root shared with det A after cancellation has no finite trim: not a jump point.
     let jump_num = strip(&cancel(&d.jump, &d.poles).0, &det_a);
-    let jump: Vec<JumpPoint> = positive_roots(&jump_num)
+    let mut jump: Vec<JumpPoint> = positive_roots(&jump_num)
         .iter()
         .map(|root| point(root.value, &jump_at))
         // A root where the common aileron of the trim condition and det J5 is complex (a
@@ -234,6 +261,15 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         .map_or(DEFAULT_AILERON_RANGE, |l| {
             l.to_radians().max(DEFAULT_AILERON_RANGE)
         });
+    let hp = departures.then(|| HopfPolys::new(&d, aircraft, delta_e_rad));
+    let (mut hopf, mut first_departure, mut zs_hopf) = (Vec::new(), None, Vec::new());
+    if let Some(hp) = &hp {
+        for j in &mut jump {
+            j.lands_at = Some(departure::landings(hp, &d, &trims, j));
+        }
+        hopf = departure::hopf_points(hp, &g, &trims, (aircraft, delta_e_rad));
+        first_departure = departure::first_departure(hp, &g, &trims, &jump, &hopf, bound);
+    }
     let roots: Vec<(f64, f64)> = jump.iter().map(|j| (j.p0, j.delta_a_rad)).collect();
     let (critical, critical_note) = match primary::follow(&g, &trims[0], &roots, bound) {
         Outcome::Jump(i) => (Some(jump[i].clone()), None),
@@ -259,6 +295,12 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
     let zs_trims = in_aileron_all(&[&d.zs_det, &d.zs_trim[0], &d.zs_trim[1], &d.zs_trim[2]]);
     // Without lateral control authority (l_delta_a n_delta_r = l_delta_r n_delta_a) no
     // zero-sideslip trim exists: there is nothing to report.
+    if let Some(hp) = &hp {
+        zs_hopf = departure::zs_hopf_roll_rates(hp, &zs_trims)
+            .iter()
+            .map(|(p, _)| *p)
+            .collect();
+    }
     let lateral_authority = !d.zs_delta_a.den.is_zero();
     let zs_roots = if lateral_authority {
         positive_roots(&zs_num)
@@ -303,7 +345,12 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
         divergence_roll_rates,
         jump,
         det_k_poles,
-        zero_sideslip: ZeroSideslip { departure },
+        zero_sideslip: ZeroSideslip {
+            departure,
+            hopf_roll_rates: std::mem::take(&mut zs_hopf),
+        },
+        hopf,
+        first_departure,
     };
     check(&analysis)?;
     Ok(analysis)
@@ -356,6 +403,7 @@ fn check(a: &Analysis) -> Result<(), AnalysisError> {
             &v,
         )?;
     }
+    departure::check_finite(a).map_err(AnalysisError::NotFinite)?;
     for (i, d) in a.zero_sideslip.departure.iter().enumerate() {
         let v = [
             d.p0,

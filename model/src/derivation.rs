@@ -18,6 +18,8 @@ use crate::algebra::{Matrix, Poly, Sym, Q};
 use crate::equations::{pss, symbols, Symbols};
 use std::sync::OnceLock;
 
+pub mod hopf;
+
 /// A quotient `num / den` of two polynomials, not normalized.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Ratio {

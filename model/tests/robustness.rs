@@ -168,8 +168,14 @@ fn finite_aircraft(ac: &Aircraft) -> bool {
 /// Every number of an analysis, through its JSON form (a non-finite f64 becomes null).
 fn finite_analysis(a: &Analysis) -> bool {
     // Null is a number that did not make it (NaN or inf in serde_json), except where it means
-    // "none": no critical jump (and then no note's absence), no limit given.
-    const MAY_BE_NULL: [&str; 3] = ["critical", "critical_note", "within_limits"];
+    // "none": no critical jump (and then no note's absence), no limit given, no loss of
+    // stability on the primary branch.
+    const MAY_BE_NULL: [&str; 4] = [
+        "critical",
+        "critical_note",
+        "within_limits",
+        "first_departure",
+    ];
     fn walk(v: &serde_json::Value) -> bool {
         match v {
             serde_json::Value::Null => false,

@@ -10,6 +10,8 @@ use crate::algebra::{Matrix, Poly, Sym, Q};
 use crate::derivation::{Derivation, TRIM_DEGREE};
 use crate::equations::symbols;
 
+mod hopf;
+
 /// How a generated function returns its outputs.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Ret {
@@ -854,5 +856,6 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
             Ret::Array(n),
         ));
     }
+    out.extend(hopf::functions(d, t));
     out
 }

@@ -34,6 +34,8 @@ pub const TAGS: [u32; 35] = {
     t
 };
 
+mod hopf;
+
 /// The LaTeX document for the parametric derivation (every parameter and control a symbol).
 pub fn document() -> String {
     document_for(&Derivation::parametric())
@@ -54,6 +56,7 @@ pub fn document_for(d: &Derivation) -> String {
     w.jump_section(&mut out, d);
     w.aileron_yaw_section(&mut out, d);
     w.zero_sideslip_section(&mut out, d);
+    w.hopf_section(&mut out, d);
     out.push_str("\\end{document}\n");
     out
 }

@@ -16,7 +16,7 @@ pub const COLUMNS: [&str; 8] = [
 /// The built-in aircraft, by their index in a record.
 pub const AIRCRAFT: [&str; 2] = ["aircraft_a", "aircraft_b"];
 /// What each output is, per aircraft (C names).
-pub const LABELS: [[&str; 150]; 2] = [
+pub const LABELS: [[&str; 164]; 2] = [
     [
         "rc_trim(&rc_aircraft_a_derivatives).v[0].alpha",
         "rc_trim(&rc_aircraft_a_derivatives).v[0].beta",
@@ -93,6 +93,13 @@ pub const LABELS: [[&str; 150]; 2] = [
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives).v[6]",
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives).v[7]",
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives).v[8]",
+        "rc_characteristic_coefficients(&rc_aircraft_a_derivatives).v[0]",
+        "rc_characteristic_coefficients(&rc_aircraft_a_derivatives).v[1]",
+        "rc_characteristic_coefficients(&rc_aircraft_a_derivatives).v[2]",
+        "rc_characteristic_coefficients(&rc_aircraft_a_derivatives).v[3]",
+        "rc_characteristic_coefficients(&rc_aircraft_a_derivatives).v[4]",
+        "rc_hurwitz_delta4(&rc_aircraft_a_derivatives)",
+        "rc_hopf_omega_squared(&rc_aircraft_a_derivatives)",
         "rc_aircraft_a_trim().v[0].alpha",
         "rc_aircraft_a_trim().v[0].beta",
         "rc_aircraft_a_trim().v[0].q",
@@ -168,6 +175,13 @@ pub const LABELS: [[&str; 150]; 2] = [
         "rc_aircraft_a_zero_sideslip_jump_polynomial().v[6]",
         "rc_aircraft_a_zero_sideslip_jump_polynomial().v[7]",
         "rc_aircraft_a_zero_sideslip_jump_polynomial().v[8]",
+        "rc_aircraft_a_characteristic_coefficients().v[0]",
+        "rc_aircraft_a_characteristic_coefficients().v[1]",
+        "rc_aircraft_a_characteristic_coefficients().v[2]",
+        "rc_aircraft_a_characteristic_coefficients().v[3]",
+        "rc_aircraft_a_characteristic_coefficients().v[4]",
+        "rc_aircraft_a_hurwitz_delta4()",
+        "rc_aircraft_a_hopf_omega_squared()",
     ],
     [
         "rc_trim(&rc_aircraft_b_derivatives).v[0].alpha",
@@ -245,6 +259,13 @@ pub const LABELS: [[&str; 150]; 2] = [
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives).v[6]",
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives).v[7]",
         "rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives).v[8]",
+        "rc_characteristic_coefficients(&rc_aircraft_b_derivatives).v[0]",
+        "rc_characteristic_coefficients(&rc_aircraft_b_derivatives).v[1]",
+        "rc_characteristic_coefficients(&rc_aircraft_b_derivatives).v[2]",
+        "rc_characteristic_coefficients(&rc_aircraft_b_derivatives).v[3]",
+        "rc_characteristic_coefficients(&rc_aircraft_b_derivatives).v[4]",
+        "rc_hurwitz_delta4(&rc_aircraft_b_derivatives)",
+        "rc_hopf_omega_squared(&rc_aircraft_b_derivatives)",
         "rc_aircraft_b_trim().v[0].alpha",
         "rc_aircraft_b_trim().v[0].beta",
         "rc_aircraft_b_trim().v[0].q",
@@ -320,10 +341,17 @@ pub const LABELS: [[&str; 150]; 2] = [
         "rc_aircraft_b_zero_sideslip_jump_polynomial().v[6]",
         "rc_aircraft_b_zero_sideslip_jump_polynomial().v[7]",
         "rc_aircraft_b_zero_sideslip_jump_polynomial().v[8]",
+        "rc_aircraft_b_characteristic_coefficients().v[0]",
+        "rc_aircraft_b_characteristic_coefficients().v[1]",
+        "rc_aircraft_b_characteristic_coefficients().v[2]",
+        "rc_aircraft_b_characteristic_coefficients().v[3]",
+        "rc_aircraft_b_characteristic_coefficients().v[4]",
+        "rc_aircraft_b_hurwitz_delta4()",
+        "rc_aircraft_b_hopf_omega_squared()",
     ],
 ];
 /// Every output for the aircraft with index `aircraft`, in record order.
-pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 150] {
+pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 164] {
     match aircraft {
         0 => aircraft_a(x),
         1 => aircraft_b(x),
@@ -331,7 +359,7 @@ pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 150] {
     }
 }
 /// Every output for Aircraft A, in record order.
-fn aircraft_a(x: &[f64; 8]) -> [f64; 150] {
+fn aircraft_a(x: &[f64; 8]) -> [f64; 164] {
     let k = &rc::aircraft_a::DERIVATIVES;
     let r0 = rc::trim(k, x[5], x[2], x[3]);
     let r1 = rc::zero_sideslip_trim(k, x[5], x[2]);
@@ -345,18 +373,24 @@ fn aircraft_a(x: &[f64; 8]) -> [f64; 150] {
     let r9 = rc::divergence_roll_rates(k);
     let r10 = rc::jump_polynomial(k, x[2], x[3]);
     let r11 = rc::zero_sideslip_jump_polynomial(k, x[2]);
-    let r12 = rc::aircraft_a::trim(x[5], x[2], x[3]);
-    let r13 = rc::aircraft_a::zero_sideslip_trim(x[5], x[2]);
-    let r14 = rc::aircraft_a::jacobian5(x[0], x[1], x[4], x[6], x[7]);
-    let r15 = rc::aircraft_a::residual_denominator(x[5], x[2], x[3]);
-    let r16 = rc::aircraft_a::stiffness(x[5], x[2], x[3]);
-    let r17 = rc::aircraft_a::det_k(x[5], x[2], x[3]);
-    let r18 = rc::aircraft_a::det_j5(x[5], x[2], x[3]);
-    let r19 = rc::aircraft_a::zero_sideslip_det_k(x[5], x[2]);
-    let r20 = rc::aircraft_a::divergence_biquadratic();
-    let r21 = rc::aircraft_a::divergence_roll_rates();
-    let r22 = rc::aircraft_a::jump_polynomial(x[2], x[3]);
-    let r23 = rc::aircraft_a::zero_sideslip_jump_polynomial(x[2]);
+    let r12 = rc::characteristic_coefficients(k, x[5], x[2], x[3]);
+    let r13 = rc::hurwitz_delta4(k, x[5], x[2], x[3]);
+    let r14 = rc::hopf_omega_squared(k, x[5], x[2], x[3]);
+    let r15 = rc::aircraft_a::trim(x[5], x[2], x[3]);
+    let r16 = rc::aircraft_a::zero_sideslip_trim(x[5], x[2]);
+    let r17 = rc::aircraft_a::jacobian5(x[0], x[1], x[4], x[6], x[7]);
+    let r18 = rc::aircraft_a::residual_denominator(x[5], x[2], x[3]);
+    let r19 = rc::aircraft_a::stiffness(x[5], x[2], x[3]);
+    let r20 = rc::aircraft_a::det_k(x[5], x[2], x[3]);
+    let r21 = rc::aircraft_a::det_j5(x[5], x[2], x[3]);
+    let r22 = rc::aircraft_a::zero_sideslip_det_k(x[5], x[2]);
+    let r23 = rc::aircraft_a::divergence_biquadratic();
+    let r24 = rc::aircraft_a::divergence_roll_rates();
+    let r25 = rc::aircraft_a::jump_polynomial(x[2], x[3]);
+    let r26 = rc::aircraft_a::zero_sideslip_jump_polynomial(x[2]);
+    let r27 = rc::aircraft_a::characteristic_coefficients(x[5], x[2], x[3]);
+    let r28 = rc::aircraft_a::hurwitz_delta4(x[5], x[2], x[3]);
+    let r29 = rc::aircraft_a::hopf_omega_squared(x[5], x[2], x[3]);
     [
         r0[0].alpha,
         r0[0].beta,
@@ -433,85 +467,99 @@ fn aircraft_a(x: &[f64; 8]) -> [f64; 150] {
         r11[6],
         r11[7],
         r11[8],
-        r12[0].alpha,
-        r12[0].beta,
-        r12[0].q,
-        r12[0].r,
-        r12[0].delta_a,
-        r12[1].alpha,
-        r12[1].beta,
-        r12[1].q,
-        r12[1].r,
-        r12[1].delta_a,
-        r13.alpha,
-        r13.q,
-        r13.r,
-        r13.delta_a,
-        r13.delta_r,
-        r14[0][0],
-        r14[0][1],
-        r14[0][2],
-        r14[0][3],
-        r14[0][4],
-        r14[1][0],
-        r14[1][1],
-        r14[1][2],
-        r14[1][3],
-        r14[1][4],
-        r14[2][0],
-        r14[2][1],
-        r14[2][2],
-        r14[2][3],
-        r14[2][4],
-        r14[3][0],
-        r14[3][1],
-        r14[3][2],
-        r14[3][3],
-        r14[3][4],
-        r14[4][0],
-        r14[4][1],
-        r14[4][2],
-        r14[4][3],
-        r14[4][4],
-        r15,
-        r16[0][0],
-        r16[0][1],
-        r16[1][0],
-        r16[1][1],
-        r17,
+        r12[0],
+        r12[1],
+        r12[2],
+        r12[3],
+        r12[4],
+        r13,
+        r14,
+        r15[0].alpha,
+        r15[0].beta,
+        r15[0].q,
+        r15[0].r,
+        r15[0].delta_a,
+        r15[1].alpha,
+        r15[1].beta,
+        r15[1].q,
+        r15[1].r,
+        r15[1].delta_a,
+        r16.alpha,
+        r16.q,
+        r16.r,
+        r16.delta_a,
+        r16.delta_r,
+        r17[0][0],
+        r17[0][1],
+        r17[0][2],
+        r17[0][3],
+        r17[0][4],
+        r17[1][0],
+        r17[1][1],
+        r17[1][2],
+        r17[1][3],
+        r17[1][4],
+        r17[2][0],
+        r17[2][1],
+        r17[2][2],
+        r17[2][3],
+        r17[2][4],
+        r17[3][0],
+        r17[3][1],
+        r17[3][2],
+        r17[3][3],
+        r17[3][4],
+        r17[4][0],
+        r17[4][1],
+        r17[4][2],
+        r17[4][3],
+        r17[4][4],
         r18,
-        r19,
-        r20[0],
-        r20[1],
-        r20[2],
-        r21[0],
-        r21[1],
-        r22[0],
-        r22[1],
-        r22[2],
-        r22[3],
-        r22[4],
-        r22[5],
-        r22[6],
-        r22[7],
-        r22[8],
-        r22[9],
-        r22[10],
-        r22[11],
-        r22[12],
+        r19[0][0],
+        r19[0][1],
+        r19[1][0],
+        r19[1][1],
+        r20,
+        r21,
+        r22,
         r23[0],
         r23[1],
         r23[2],
-        r23[3],
-        r23[4],
-        r23[5],
-        r23[6],
-        r23[7],
-        r23[8],
+        r24[0],
+        r24[1],
+        r25[0],
+        r25[1],
+        r25[2],
+        r25[3],
+        r25[4],
+        r25[5],
+        r25[6],
+        r25[7],
+        r25[8],
+        r25[9],
+        r25[10],
+        r25[11],
+        r25[12],
+        r26[0],
+        r26[1],
+        r26[2],
+        r26[3],
+        r26[4],
+        r26[5],
+        r26[6],
+        r26[7],
+        r26[8],
+        r27[0],
+        r27[1],
+        r27[2],
+        r27[3],
+        r27[4],
+        r28,
+        r29,
     ]
 }
 /// Every output for Aircraft B, in record order.
-fn aircraft_b(x: &[f64; 8]) -> [f64; 150] {
+fn aircraft_b(x: &[f64; 8]) -> [f64; 164] {
     let k = &rc::aircraft_b::DERIVATIVES;
     let r0 = rc::trim(k, x[5], x[2], x[3]);
     let r1 = rc::zero_sideslip_trim(k, x[5], x[2]);
@@ -525,18 +573,24 @@ fn aircraft_b(x: &[f64; 8]) -> [f64; 150] {
     let r9 = rc::divergence_roll_rates(k);
     let r10 = rc::jump_polynomial(k, x[2], x[3]);
     let r11 = rc::zero_sideslip_jump_polynomial(k, x[2]);
-    let r12 = rc::aircraft_b::trim(x[5], x[2], x[3]);
-    let r13 = rc::aircraft_b::zero_sideslip_trim(x[5], x[2]);
-    let r14 = rc::aircraft_b::jacobian5(x[0], x[1], x[4], x[6], x[7]);
-    let r15 = rc::aircraft_b::residual_denominator(x[5], x[2], x[3]);
-    let r16 = rc::aircraft_b::stiffness(x[5], x[2], x[3]);
-    let r17 = rc::aircraft_b::det_k(x[5], x[2], x[3]);
-    let r18 = rc::aircraft_b::det_j5(x[5], x[2], x[3]);
-    let r19 = rc::aircraft_b::zero_sideslip_det_k(x[5], x[2]);
-    let r20 = rc::aircraft_b::divergence_biquadratic();
-    let r21 = rc::aircraft_b::divergence_roll_rates();
-    let r22 = rc::aircraft_b::jump_polynomial(x[2], x[3]);
-    let r23 = rc::aircraft_b::zero_sideslip_jump_polynomial(x[2]);
+    let r12 = rc::characteristic_coefficients(k, x[5], x[2], x[3]);
+    let r13 = rc::hurwitz_delta4(k, x[5], x[2], x[3]);
+    let r14 = rc::hopf_omega_squared(k, x[5], x[2], x[3]);
+    let r15 = rc::aircraft_b::trim(x[5], x[2], x[3]);
+    let r16 = rc::aircraft_b::zero_sideslip_trim(x[5], x[2]);
+    let r17 = rc::aircraft_b::jacobian5(x[0], x[1], x[4], x[6], x[7]);
+    let r18 = rc::aircraft_b::residual_denominator(x[5], x[2], x[3]);
+    let r19 = rc::aircraft_b::stiffness(x[5], x[2], x[3]);
+    let r20 = rc::aircraft_b::det_k(x[5], x[2], x[3]);
+    let r21 = rc::aircraft_b::det_j5(x[5], x[2], x[3]);
+    let r22 = rc::aircraft_b::zero_sideslip_det_k(x[5], x[2]);
+    let r23 = rc::aircraft_b::divergence_biquadratic();
+    let r24 = rc::aircraft_b::divergence_roll_rates();
+    let r25 = rc::aircraft_b::jump_polynomial(x[2], x[3]);
+    let r26 = rc::aircraft_b::zero_sideslip_jump_polynomial(x[2]);
+    let r27 = rc::aircraft_b::characteristic_coefficients(x[5], x[2], x[3]);
+    let r28 = rc::aircraft_b::hurwitz_delta4(x[5], x[2], x[3]);
+    let r29 = rc::aircraft_b::hopf_omega_squared(x[5], x[2], x[3]);
     [
         r0[0].alpha,
         r0[0].beta,
@@ -613,80 +667,94 @@ fn aircraft_b(x: &[f64; 8]) -> [f64; 150] {
         r11[6],
         r11[7],
         r11[8],
-        r12[0].alpha,
-        r12[0].beta,
-        r12[0].q,
-        r12[0].r,
-        r12[0].delta_a,
-        r12[1].alpha,
-        r12[1].beta,
-        r12[1].q,
-        r12[1].r,
-        r12[1].delta_a,
-        r13.alpha,
-        r13.q,
-        r13.r,
-        r13.delta_a,
-        r13.delta_r,
-        r14[0][0],
-        r14[0][1],
-        r14[0][2],
-        r14[0][3],
-        r14[0][4],
-        r14[1][0],
-        r14[1][1],
-        r14[1][2],
-        r14[1][3],
-        r14[1][4],
-        r14[2][0],
-        r14[2][1],
-        r14[2][2],
-        r14[2][3],
-        r14[2][4],
-        r14[3][0],
-        r14[3][1],
-        r14[3][2],
-        r14[3][3],
-        r14[3][4],
-        r14[4][0],
-        r14[4][1],
-        r14[4][2],
-        r14[4][3],
-        r14[4][4],
-        r15,
-        r16[0][0],
-        r16[0][1],
-        r16[1][0],
-        r16[1][1],
-        r17,
+        r12[0],
+        r12[1],
+        r12[2],
+        r12[3],
+        r12[4],
+        r13,
+        r14,
+        r15[0].alpha,
+        r15[0].beta,
+        r15[0].q,
+        r15[0].r,
+        r15[0].delta_a,
+        r15[1].alpha,
+        r15[1].beta,
+        r15[1].q,
+        r15[1].r,
+        r15[1].delta_a,
+        r16.alpha,
+        r16.q,
+        r16.r,
+        r16.delta_a,
+        r16.delta_r,
+        r17[0][0],
+        r17[0][1],
+        r17[0][2],
+        r17[0][3],
+        r17[0][4],
+        r17[1][0],
+        r17[1][1],
+        r17[1][2],
+        r17[1][3],
+        r17[1][4],
+        r17[2][0],
+        r17[2][1],
+        r17[2][2],
+        r17[2][3],
+        r17[2][4],
+        r17[3][0],
+        r17[3][1],
+        r17[3][2],
+        r17[3][3],
+        r17[3][4],
+        r17[4][0],
+        r17[4][1],
+        r17[4][2],
+        r17[4][3],
+        r17[4][4],
         r18,
-        r19,
-        r20[0],
-        r20[1],
-        r20[2],
-        r21[0],
-        r21[1],
-        r22[0],
-        r22[1],
-        r22[2],
-        r22[3],
-        r22[4],
-        r22[5],
-        r22[6],
-        r22[7],
-        r22[8],
-        r22[9],
-        r22[10],
-        r22[11],
-        r22[12],
+        r19[0][0],
+        r19[0][1],
+        r19[1][0],
+        r19[1][1],
+        r20,
+        r21,
+        r22,
         r23[0],
         r23[1],
         r23[2],
-        r23[3],
-        r23[4],
-        r23[5],
-        r23[6],
-        r23[7],
-        r23[8],
+        r24[0],
+        r24[1],
+        r25[0],
+        r25[1],
+        r25[2],
+        r25[3],
+        r25[4],
+        r25[5],
+        r25[6],
+        r25[7],
+        r25[8],
+        r25[9],
+        r25[10],
+        r25[11],
+        r25[12],
+        r26[0],
+        r26[1],
+        r26[2],
+        r26[3],
+        r26[4],
+        r26[5],
+        r26[6],
+        r26[7],
+        r26[8],
+        r27[0],
+        r27[1],
+        r27[2],
+        r27[3],
+        r27[4],
+        r28,
+        r29,
     ]
 }

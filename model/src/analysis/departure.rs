@@ -1,0 +1,673 @@
+//! Beyond the paper: Hopf points from the closed form, their first Lyapunov coefficient, where a
+//! jump lands, and the first loss of stability along the primary branch.
+//!
+//! The Hopf polynomial is [`crate::derivation::hopf`]'s `det(A)^10 Delta4` specialised to the
+//! aircraft (the cleared characteristic coefficients `C_k` are built from the same trim
+//! numerators as the jump polynomial, and delta_a is eliminated by [`eliminate_aileron`]). Its
+//! roots include neutral saddles; `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` (derived in
+//! [`crate::derivation::hopf::orlando`]) tells them apart.
+
+use super::{
+    aileron_of_root, exact_f64, in_aileron, specialisation, strip, univariate, CriterionPolys,
+    InAileron, JumpPoint,
+};
+use crate::aircraft::Aircraft;
+use crate::algebra::{Poly, Sym, Q};
+use crate::derivation::eliminate_aileron;
+use crate::derivation::hopf::{
+    characteristic_coefficients, cleared_coefficients, hopf_at, orlando, Orlando,
+};
+use crate::equations::symbols;
+use crate::roots::{positive_roots, real_roots, UPoly};
+use nalgebra::{Complex, Matrix5, Vector5};
+use serde::Serialize;
+use std::sync::OnceLock;
+
+/// A Hopf point of the unconstrained roll: a trim where a complex pair of J5 crosses the
+/// imaginary axis.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct HopfPoint {
+    /// The trim (same keys as a jump entry).
+    #[serde(flatten)]
+    pub point: JumpPoint,
+    /// The frequency of the pair `+-i omega`, rad/s.
+    pub omega: f64,
+    /// The period `2 pi / omega`, s.
+    pub period: f64,
+    /// First Lyapunov coefficient (Kuznetsov's formula, eigenvectors normalised `<q, q> = 1`,
+    /// `<p, q> = 1`).
+    pub l1: f64,
+    /// `"supercritical"` (l1 < 0) or `"subcritical"` (l1 > 0).
+    pub kind: &'static str,
+}
+
+/// A stable equilibrium a jump can land on (same aileron as the fold).
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Landing {
+    /// Roll rate after the jump, rad/s.
+    pub p0: f64,
+    /// Angle of attack, rad.
+    pub alpha: f64,
+    /// Sideslip, rad.
+    pub beta: f64,
+    /// Pitch rate, rad/s.
+    pub q: f64,
+    /// Yaw rate, rad/s.
+    pub r: f64,
+}
+
+/// The first loss of stability met along the primary branch.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct FirstDeparture {
+    /// `"jump"` or `"hopf"`.
+    pub kind: &'static str,
+    /// Trim roll rate, rad/s.
+    pub p0: f64,
+    /// Aileron deflection, rad (the mirror point has the opposite sign and -P0).
+    pub delta_a_rad: f64,
+    /// The same in degrees.
+    pub delta_a_deg: f64,
+    /// For a Hopf point: its frequency, rad/s.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub omega: Option<f64>,
+    /// For a Hopf point: its first Lyapunov coefficient.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub l1: Option<f64>,
+    /// For a Hopf point: supercritical or subcritical.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub hopf_kind: Option<&'static str>,
+    /// For a jump: the stable equilibria it can land on (empty: divergence).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lands_at: Option<Vec<Landing>>,
+}
+
+/// The parametric characteristic coefficients `c1..c5` of J5 at the trim (trim symbols).
+pub fn parametric_characteristic() -> &'static [Poly; 5] {
+    static C: OnceLock<[Poly; 5]> = OnceLock::new();
+    C.get_or_init(|| characteristic_coefficients(&super::parametric().jacobian))
+}
+
+/// The Hopf part of the closed form specialised to one aircraft.
+#[derive(Clone, Debug)]
+pub struct HopfPolys {
+    /// `c1..c5` in trim symbols, exact.
+    pub c: [Poly; 5],
+    /// `det(A)^10 Delta4` at the trim, in P0 and delta_a.
+    pub hopf_at: Poly,
+    /// The Hopf polynomial in P0 (delta_a eliminated, det A's roots removed).
+    pub hopf: UPoly,
+    /// The Hopf polynomial of the zero-sideslip trims in P0 (`det(A1)^10 Delta4`).
+    pub zs_hopf: UPoly,
+    /// Entries of J5 (row-major) in trim symbols, exact.
+    pub jacobian: Vec<Poly>,
+    /// Second derivatives `d2 f_i / dx_j dx_k` of the PSS right-hand side (constants for the
+    /// quadratic PSS model), index `[i][j][k]`.
+    pub second: Vec<Poly>,
+    /// Third derivatives, index `[i][j][k][l]` (identically zero for the PSS model; kept so
+    /// Kuznetsov's formula is complete).
+    pub third: Vec<Poly>,
+}
+
+impl HopfPolys {
+    /// Specialises the Hopf criterion to an aircraft (delta_r = 0).
+    pub fn new(cp: &CriterionPolys, aircraft: &Aircraft, delta_e_rad: f64) -> HopfPolys {
+        let s = symbols();
+        let values = specialisation(aircraft, delta_e_rad);
+        let c: [Poly; 5] = parametric_characteristic()
+            .clone()
+            .map(|ck| ck.subs_values(&values));
+        // Integer coefficients for the exact polynomials; `c` itself stays for f64 evaluation.
+        let ci = weighted_integer(&c);
+        let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
+        // Without aileron yaw everything is univariate in P0: dense arithmetic is much faster.
+        let (hopf_at, hopf) = match dense_hopf(&ci, &t4, &cp.trim, &cp.det_a) {
+            Some(u) => (from_univariate(&u), u),
+            None => {
+                let hopf_at = hopf_at(&cleared_coefficients(&ci, &t4, &cp.trim, &cp.det_a));
+                let hopf = resultant_in_aileron(&cp.trim_condition, &hopf_at);
+                (hopf_at, hopf)
+            }
+        };
+        let hopf = strip(&hopf, &univariate(&cp.det_a, s.p0));
+        let zero = [(s.beta0, Q::ZERO)];
+        let t3 = [s.alpha0, s.q0, s.r0];
+        let czs = ci.map(|ck| ck.subs_values(&zero));
+        let zs_hopf = dense_hopf(&czs, &t3, &cp.zs_trim, &cp.zs_det)
+            .unwrap_or_else(|| univariate(&hopf_at_zs(&czs, &t3, &cp.zs_trim, &cp.zs_det), s.p0));
+        let zs_hopf = strip(&zs_hopf, &univariate(&cp.zs_det, s.p0));
+        let par = super::parametric();
+        let jacobian = (0..5)
+            .flat_map(|i| (0..5).map(move |j| (i, j)))
+            .map(|(i, j)| par.jacobian.get(i, j).subs_values(&values))
+            .collect();
+        let model: Vec<Poly> = par
+            .unconstrained_model
+            .iter()
+            .map(|f| f.subs_values(&values))
+            .collect();
+        let x = s.states();
+        let mut second = Vec::with_capacity(125);
+        let mut third = Vec::with_capacity(625);
+        for f in &model {
+            for a in x {
+                for b in x {
+                    let fab = f.diff(a).diff(b);
+                    for c in x {
+                        third.push(fab.diff(c));
+                    }
+                    second.push(fab);
+                }
+            }
+        }
+        HopfPolys {
+            c,
+            hopf_at,
+            hopf,
+            zs_hopf,
+            jacobian,
+            second,
+            third,
+        }
+    }
+
+    /// J5 at a trim `[alpha0, beta0, P0, Q0, R0]` in f64.
+    pub fn j5(&self, trim: &[f64; 5]) -> Matrix5<f64> {
+        let look = trim_lookup(trim);
+        Matrix5::from_fn(|i, j| self.jacobian[5 * i + j].eval_f64(&look))
+    }
+
+    /// `c1..c5` at a trim in f64.
+    pub fn coefficients(&self, trim: &[f64; 5]) -> [f64; 5] {
+        let look = trim_lookup(trim);
+        std::array::from_fn(|k| self.c[k].eval_f64(&look))
+    }
+
+    /// The first Lyapunov coefficient at a Hopf trim with frequency `omega` (Kuznetsov,
+    /// *Elements of Applied Bifurcation Theory*, Eq. 3.20 in its n-dimensional form):
+    /// `l1 = Re[<p, C(q,q,qb)> - 2 <p, B(q, A^-1 B(q,qb))> + <p, B(qb, (2 i omega - A)^-1 B(q,q))>]
+    /// / (2 omega)`, with `A q = i omega q`, `A^T p = -i omega p`, `<p, q> = 1`.
+    pub fn lyapunov(&self, trim: &[f64; 5], omega: f64) -> Option<f64> {
+        let look = trim_lookup(trim);
+        let sec: Vec<f64> = self.second.iter().map(|p| p.eval_f64(&look)).collect();
+        let thi: Vec<f64> = self.third.iter().map(|p| p.eval_f64(&look)).collect();
+        let a = self.j5(trim).map(|v| Complex::new(v, 0.0));
+        let iw = Complex::new(0.0, omega);
+        let q = null_vector(&(a - Matrix5::from_diagonal_element(iw)))?;
+        let q = q.unscale(q.norm());
+        let p = null_vector(&(a.transpose() + Matrix5::from_diagonal_element(iw)))?;
+        // <p, q> = p^H q = 1.
+        let pq = p.dotc(&q);
+        if pq.norm() == 0.0 {
+            return None;
+        }
+        let p = p * pq.conj().inv();
+        let b = |u: &Vector5<Complex<f64>>, v: &Vector5<Complex<f64>>| {
+            Vector5::from_fn(|i, _| {
+                let mut acc = Complex::new(0.0, 0.0);
+                for j in 0..5 {
+                    for k in 0..5 {
+                        acc += sec[25 * i + 5 * j + k] * u[j] * v[k];
+                    }
+                }
+                acc
+            })
+        };
+        let cterm = Vector5::from_fn(|i, _| {
+            let mut acc = Complex::new(0.0, 0.0);
+            for j in 0..5 {
+                for k in 0..5 {
+                    for l in 0..5 {
+                        acc += thi[125 * i + 25 * j + 5 * k + l] * q[j] * q[k] * q[l].conj();
+                    }
+                }
+            }
+            acc
+        });
+        let qb = q.map(|z| z.conj());
+        let a_inv_b = a.lu().solve(&b(&q, &qb))?;
+        let shifted = Matrix5::from_diagonal_element(iw * 2.0) - a;
+        let s_inv_b = shifted.lu().solve(&b(&q, &q))?;
+        let inner = p.dotc(&cterm) - p.dotc(&b(&q, &a_inv_b)) * 2.0 + p.dotc(&b(&qb, &s_inv_b));
+        let l1 = inner.re / (2.0 * omega);
+        l1.is_finite().then_some(l1)
+    }
+
+    /// Whether the trim is asymptotically stable (every eigenvalue of J5 in the left half-plane).
+    pub fn stable(&self, trim: &[f64; 5]) -> bool {
+        self.j5(trim)
+            .complex_eigenvalues()
+            .iter()
+            .all(|l| l.re < 0.0)
+    }
+}
+
+/// The resultant in delta_a of the trim condition `g` and `f` (both in P0 and delta_a), as a
+/// polynomial in P0: the same resultant as [`eliminate_aileron`] (numeric data, actual degrees),
+/// computed in the dense univariate ring when `g` is quadratic, because the Hopf polynomial's
+/// resultant exceeds the packed monomials' exponent range (P0 degree above 127).
+///
+/// With `g = g2 x^2 + g1 x + g0` and `f` of degree `n >= 2` in `x = delta_a`, the pseudo-remainder
+/// `R = g2^(n-1) f mod g = R1 x + R0` gives `Res(g, f) = Res(g, R) / g2^(n-1)` and
+/// `Res(g, R1 x + R0) = g2 R0^2 - g1 R0 R1 + g0 R1^2`; the division is exact.
+pub fn resultant_in_aileron(g: &Poly, f: &Poly) -> UPoly {
+    let s = symbols();
+    if g.degree(s.delta_a) < 2 || f.degree(s.delta_a) < 2 {
+        return univariate(&eliminate_aileron(g, f), s.p0);
+    }
+    let u = |p: &Poly| -> Vec<UPoly> {
+        p.coeffs(s.delta_a)
+            .iter()
+            .map(|c| univariate(c, s.p0))
+            .collect()
+    };
+    let gc = u(g);
+    assert_eq!(
+        gc.len(),
+        3,
+        "the trim condition is at most quadratic in delta_a"
+    );
+    let (g0, g1, g2) = (&gc[0], &gc[1], &gc[2]);
+    let mut h = u(f);
+    let n = h.len() - 1;
+    for i in (2..=n).rev() {
+        let c = h[i].clone();
+        for hj in h.iter_mut().take(i) {
+            *hj = hj.mul(g2);
+        }
+        h[i - 1] = h[i - 1].sub(&c.mul(g1));
+        h[i - 2] = h[i - 2].sub(&c.mul(g0));
+        h[i] = UPoly::zero();
+    }
+    let (r0, r1) = (&h[0], &h[1]);
+    let mut res = g2
+        .mul(&r0.mul(r0))
+        .sub(&g1.mul(&r0.mul(r1)))
+        .add(&g0.mul(&r1.mul(r1)));
+    for _ in 0..n - 1 {
+        let (q, r) = res.div_rem(g2);
+        assert!(r.is_zero(), "Res(g, R) carries g2^(n-1)");
+        res = q;
+    }
+    res
+}
+
+/// `den^10 Delta4(c(num / den))` in dense univariate arithmetic, when the trim numerators `num`
+/// and `den` are polynomials in P0 alone (no aileron yaw, or the zero-sideslip trim): the same
+/// polynomial as [`hopf_at`] of [`cleared_coefficients`], each `C_k = den^k c_k(num / den)`
+/// built term by term from tables of powers. `None` when delta_a occurs.
+fn dense_hopf(c: &[Poly; 5], t: &[Sym], num: &[Poly], den: &Poly) -> Option<UPoly> {
+    let s = symbols();
+    if num.iter().chain([den]).any(|p| p.contains(s.delta_a)) {
+        return None;
+    }
+    let u = |p: &Poly| univariate(p, s.p0);
+    let int = |n: i64| num_rational::BigRational::from_integer(n.into());
+    let powers = |p: &UPoly| {
+        let mut v = vec![UPoly::constant(int(1))];
+        for e in 0..5 {
+            let next = v[e].mul(p);
+            v.push(next);
+        }
+        v
+    };
+    let npow: Vec<Vec<UPoly>> = num.iter().map(|n| powers(&u(n))).collect();
+    let dpow = powers(&u(den));
+    let x_pow = |a: u32, q: &Q| {
+        let mut v = vec![int(0); a as usize + 1];
+        v[a as usize] = q.to_big();
+        UPoly::new(v)
+    };
+    let cleared: Vec<UPoly> = (0..5)
+        .map(|k| {
+            c[k].terms().iter().fold(UPoly::zero(), |acc, (m, q)| {
+                let mut term = x_pow(m.exp(s.p0), q);
+                let mut j = 0usize;
+                for (i, ti) in t.iter().enumerate() {
+                    let e = m.exp(*ti) as usize;
+                    j += e;
+                    if e > 0 {
+                        term = term.mul(&npow[i][e]);
+                    }
+                }
+                acc.add(&term.mul(&dpow[k + 1 - j]))
+            })
+        })
+        .collect();
+    let hs = crate::derivation::hopf::hopf_symbols();
+    let d4 = orlando()
+        .delta4
+        .terms()
+        .iter()
+        .fold(UPoly::zero(), |acc, (m, q)| {
+            let term = hs.c.iter().enumerate().fold(x_pow(0, q), |t, (k, ck)| {
+                (0..m.exp(*ck)).fold(t, |t, _| t.mul(&cleared[k]))
+            });
+            acc.add(&term)
+        });
+    Some(d4)
+}
+
+/// A polynomial in P0 as a [`Poly`].
+fn from_univariate(u: &UPoly) -> Poly {
+    let s = symbols();
+    Poly::from_terms(u.coeffs().iter().enumerate().map(|(i, c)| {
+        (
+            crate::algebra::Mono::var(s.p0, i as u32),
+            Q::from_big(c.clone()),
+        )
+    }))
+}
+
+/// `mu^k c_k` with `mu` the least common multiple of every coefficient's denominator, so that
+/// each has integer coefficients (exact arithmetic then never reduces fractions) while Delta4
+/// weighted-homogeneous of weight 10 in the `c_k`, changes by the positive constant `mu^10` only
+/// (no root moves). Only for the exact polynomials: the scaled values overflow f64.
+fn weighted_integer(c: &[Poly; 5]) -> [Poly; 5] {
+    use num_integer::Integer;
+    let mut mu = num_bigint::BigInt::from(1);
+    for ck in c {
+        for (_, q) in ck.terms() {
+            mu = mu.lcm(q.to_big().denom());
+        }
+    }
+    let m = Q::from_big(num_rational::BigRational::from_integer(mu));
+    let mut scale = Q::ONE;
+    std::array::from_fn(|k| {
+        scale = &scale * &m;
+        c[k].scale(&scale)
+    })
+}
+
+/// `den^10 Delta4` at the zero-sideslip trim (beta0 = 0 already substituted into `c`).
+fn hopf_at_zs(c: &[Poly; 5], t: &[Sym], num: &[Poly], den: &Poly) -> Poly {
+    hopf_at(&cleared_coefficients(c, t, num, den))
+}
+
+fn trim_lookup(trim: &[f64; 5]) -> impl Fn(Sym) -> f64 {
+    let s = symbols();
+    let t = s.trims();
+    let trim = *trim;
+    move |x: Sym| t.iter().position(|y| *y == x).map_or(f64::NAN, |i| trim[i])
+}
+
+/// A null vector of a (numerically) singular 5x5 complex matrix: the row with the smallest
+/// pivot is replaced by the normalisation `x_k = 1`, choosing `k` for the smallest residual.
+fn null_vector(m: &Matrix5<Complex<f64>>) -> Option<Vector5<Complex<f64>>> {
+    let mut best: Option<(f64, Vector5<Complex<f64>>)> = None;
+    for row in 0..5 {
+        for k in 0..5 {
+            let mut a = *m;
+            let mut rhs = Vector5::zeros();
+            for j in 0..5 {
+                a[(row, j)] = Complex::new(if j == k { 1.0 } else { 0.0 }, 0.0);
+            }
+            rhs[row] = Complex::new(1.0, 0.0);
+            if let Some(x) = a.lu().solve(&rhs) {
+                let res = (m * x).norm() / x.norm();
+                if res.is_finite() && best.as_ref().is_none_or(|(r, _)| res < *r) {
+                    best = Some((res, x));
+                }
+            }
+        }
+    }
+    best.map(|(_, x)| x)
+}
+
+/// The Hopf points of the unconstrained roll, ascending in P0, and the zero-sideslip Hopf
+/// roll rates (positive roots of the zero-sideslip Hopf polynomial with omega^2 > 0).
+pub(super) fn hopf_points(
+    h: &HopfPolys,
+    g: &InAileron,
+    trims: &[InAileron],
+    marks: (&Aircraft, f64),
+) -> Vec<HopfPoint> {
+    let o: &Orlando = orlando();
+    let hopf_ia = in_aileron(&h.hopf_at);
+    positive_roots(&h.hopf)
+        .iter()
+        .filter_map(|root| {
+            let p0 = root.value;
+            let da = hopf_aileron(h, g, &hopf_ia, trims, p0)?;
+            let point = trim_point(p0, da, trims, marks);
+            let t = [point.alpha, point.beta, p0, point.q, point.r];
+            let omega = omega_at(o, &h.coefficients(&t))?;
+            let l1 = h.lyapunov(&t, omega)?;
+            Some(HopfPoint {
+                point,
+                omega,
+                period: 2.0 * std::f64::consts::PI / omega,
+                l1,
+                kind: if l1 < 0.0 {
+                    "supercritical"
+                } else {
+                    "subcritical"
+                },
+            })
+        })
+        .collect()
+}
+
+/// The aileron of the trim at a root `p0` of the Hopf polynomial: of the trims of that roll rate
+/// (roots of the trim condition), the one where Delta4, evaluated from the characteristic
+/// coefficients at the trim, is smallest relative to the size of its terms. The high degree of
+/// `hopf_at` in delta_a makes its own value a poor guide with aileron yaw. `None` when no trim is
+/// real.
+fn hopf_aileron(
+    h: &HopfPolys,
+    g: &InAileron,
+    hopf_ia: &InAileron,
+    trims: &[InAileron],
+    p0: f64,
+) -> Option<f64> {
+    let mut candidates = g.aileron_roots(p0);
+    if candidates.len() < 2 {
+        let da = aileron_of_root(g, hopf_ia, p0);
+        return da.is_finite().then_some(da);
+    }
+    let hs = crate::derivation::hopf::hopf_symbols();
+    let delta4 = &orlando().delta4;
+    let relative = |da: f64| {
+        let dv = trims[0].eval(p0, 0.0);
+        let [alpha, beta, q, r] = std::array::from_fn(|i| trims[i + 1].eval(p0, da) / dv);
+        let c = h.coefficients(&[alpha, beta, p0, q, r]);
+        let look = |x: Sym| hs.c.iter().position(|y| *y == x).map_or(f64::NAN, |i| c[i]);
+        let (mut sum, mut size) = (0.0, 0.0);
+        for (m, coef) in delta4.terms() {
+            let t = Poly::term(*m, coef.clone()).eval_f64(&look);
+            sum += t;
+            size += t.abs();
+        }
+        (sum / size).abs()
+    };
+    candidates.sort_by(|a, b| relative(*a).total_cmp(&relative(*b)));
+    candidates.first().copied()
+}
+
+/// `omega` from `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` when positive (a Hopf pair), `None` for
+/// a neutral saddle (`omega^2 < 0`) or a degenerate root.
+pub fn omega_at(o: &Orlando, c: &[f64; 5]) -> Option<f64> {
+    let hs = crate::derivation::hopf::hopf_symbols();
+    let look = |x: Sym| hs.c.iter().position(|y| *y == x).map_or(f64::NAN, |i| c[i]);
+    let w = o.omega_sq.num.eval_f64(&look) / o.omega_sq.den.eval_f64(&look);
+    (w.is_finite() && w > 0.0).then(|| w.sqrt())
+}
+
+/// The trim at `(p0, delta_a)` as a [`JumpPoint`] (no landing), marked with the aircraft's
+/// limits and validity range at elevator `marks.1`.
+pub(super) fn trim_point(
+    p0: f64,
+    da: f64,
+    trims: &[InAileron],
+    marks: (&Aircraft, f64),
+) -> JumpPoint {
+    let dv = trims[0].eval(p0, 0.0);
+    let [alpha, beta, q, r] = std::array::from_fn(|i| trims[i + 1].eval(p0, da) / dv);
+    JumpPoint {
+        p0,
+        delta_a_rad: da,
+        delta_a_deg: da.to_degrees(),
+        alpha,
+        beta,
+        q,
+        r,
+        within_limits: marks.0.within_limits(da, marks.1, None),
+        valid: marks.0.valid(alpha, beta),
+        lands_at: None,
+    }
+}
+
+/// Every stable equilibrium at the aileron of the fold `fold` other than the fold itself: all
+/// real roots in P0 of the trim condition at that (exact) delta_a, with finite trims and all
+/// eigenvalues of J5 in the left half-plane.
+pub(super) fn landings(
+    h: &HopfPolys,
+    cp: &CriterionPolys,
+    trims: &[InAileron],
+    fold: &JumpPoint,
+) -> Vec<Landing> {
+    let s = symbols();
+    let at = cp
+        .trim_condition
+        .subs_values(&[(s.delta_a, exact_f64(fold.delta_a_rad))]);
+    let det_a = univariate(&cp.det_a, s.p0);
+    let g = strip(&univariate(&at, s.p0), &det_a);
+    if g.is_zero() {
+        return Vec::new();
+    }
+    real_roots(&g)
+        .iter()
+        .map(|r| r.value)
+        // The fold is a double root at its exact aileron; the rounded aileron splits it.
+        .filter(|p| (p - fold.p0).abs() > 1e-6 * (1.0 + fold.p0.abs()))
+        .filter_map(|p0| {
+            let dv = trims[0].eval(p0, 0.0);
+            let [alpha, beta, q, r] =
+                std::array::from_fn(|i| trims[i + 1].eval(p0, fold.delta_a_rad) / dv);
+            let t = [alpha, beta, p0, q, r];
+            (t.iter().all(|v| v.is_finite()) && h.stable(&t)).then_some(Landing {
+                p0,
+                alpha,
+                beta,
+                q,
+                r,
+            })
+        })
+        .collect()
+}
+
+/// The first loss of stability along the primary branch: the first jump or Hopf point the branch
+/// meets when followed from the (stable) wings-level trim P0 = 0, delta_a = 0 towards P0 > 0.
+/// With delta_r = 0 the model is symmetric under `(P0, beta, r, delta_a) -> -(...)`, so the other
+/// aileron direction meets the mirror point (-P0, -delta_a) with the same kind, omega and l1
+/// (the symmetry maps J5 to a similar matrix). `None` when the wings-level trim is itself
+/// unstable, or the branch diverges or runs off the aileron range first.
+pub(super) fn first_departure(
+    h: &HopfPolys,
+    g: &InAileron,
+    trims: &[InAileron],
+    jump: &[JumpPoint],
+    hopf: &[HopfPoint],
+    bound: f64,
+) -> Option<FirstDeparture> {
+    let dv = trims[0].eval(0.0, 0.0);
+    let origin: [f64; 5] = [
+        trims[1].eval(0.0, 0.0) / dv,
+        trims[2].eval(0.0, 0.0) / dv,
+        0.0,
+        trims[3].eval(0.0, 0.0) / dv,
+        trims[4].eval(0.0, 0.0) / dv,
+    ];
+    if !h.stable(&origin) {
+        return None;
+    }
+    let hits: Vec<(f64, f64)> = jump
+        .iter()
+        .map(|j| (j.p0, j.delta_a_rad))
+        .chain(hopf.iter().map(|h| (h.point.p0, h.point.delta_a_rad)))
+        .collect();
+    let i = match super::primary::follow(g, &trims[0], &hits, bound) {
+        super::Outcome::Jump(i) => i,
+        _ => return None,
+    };
+    if let Some(j) = jump.get(i) {
+        return Some(FirstDeparture {
+            kind: "jump",
+            p0: j.p0,
+            delta_a_rad: j.delta_a_rad,
+            delta_a_deg: j.delta_a_deg,
+            omega: None,
+            l1: None,
+            hopf_kind: None,
+            lands_at: j.lands_at.clone(),
+        });
+    }
+    let hp = hopf.get(i - jump.len())?;
+    Some(FirstDeparture {
+        kind: "hopf",
+        p0: hp.point.p0,
+        delta_a_rad: hp.point.delta_a_rad,
+        delta_a_deg: hp.point.delta_a_deg,
+        omega: Some(hp.omega),
+        l1: Some(hp.l1),
+        hopf_kind: Some(hp.kind),
+        lands_at: None,
+    })
+}
+
+/// The zero-sideslip Hopf roll rates: positive roots of the zero-sideslip Hopf polynomial whose
+/// omega^2 at the beta = 0 trim is positive.
+pub(super) fn zs_hopf_roll_rates(h: &HopfPolys, zs_trims: &[InAileron]) -> Vec<(f64, f64)> {
+    let o = orlando();
+    positive_roots(&h.zs_hopf)
+        .iter()
+        .filter_map(|root| {
+            let p0 = root.value;
+            let dv = zs_trims[0].eval(p0, 0.0);
+            let [alpha, q, r] = std::array::from_fn(|i| zs_trims[i + 1].eval(p0, 0.0) / dv);
+            let c = h.coefficients(&[alpha, 0.0, p0, q, r]);
+            omega_at(o, &c).map(|w| (p0, w))
+        })
+        .collect()
+}
+
+/// The issue-10 part of the checks every answer passes: every Hopf point, landing and
+/// zero-sideslip Hopf roll rate finite; `Err` names the value.
+pub(super) fn check_finite(a: &super::Analysis) -> Result<(), String> {
+    for h in &a.hopf {
+        let j = &h.point;
+        let v = [
+            j.p0,
+            j.delta_a_rad,
+            j.delta_a_deg,
+            j.alpha,
+            j.beta,
+            j.q,
+            j.r,
+            h.omega,
+            h.period,
+            h.l1,
+        ];
+        if !v.iter().all(|x| x.is_finite()) {
+            return Err(format!("the Hopf point at P0 = {:e} rad/s", j.p0));
+        }
+    }
+    for j in &a.jump {
+        for l in j.lands_at.iter().flatten() {
+            if ![l.p0, l.alpha, l.beta, l.q, l.r]
+                .iter()
+                .all(|x| x.is_finite())
+            {
+                return Err(format!("where the jump at P0 = {:e} rad/s lands", j.p0));
+            }
+        }
+    }
+    if !a
+        .zero_sideslip
+        .hopf_roll_rates
+        .iter()
+        .all(|x| x.is_finite())
+    {
+        return Err("a zero-sideslip Hopf roll rate".into());
+    }
+    Ok(())
+}

@@ -1,0 +1,204 @@
+//! Beyond the paper: the closed-form Hopf (oscillatory departure) criterion.
+//!
+//! The paper's jump criterion is `det J5 = 0`, a real eigenvalue of the PSS Jacobian through
+//! zero. A complex pair through the imaginary axis (a Hopf bifurcation: a growing pitch-yaw
+//! oscillation) is the other way a trim loses stability. It is derived here the same way:
+//!
+//! 1. The characteristic polynomial `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5`
+//!    of the Jacobian at the trim, its coefficients polynomials in the trim symbols; `c5 = -det
+//!    J5` is the jump criterion (its constant term). `c_k` has degree at most `k` in the trim
+//!    states (the entries of J5 are affine in them).
+//! 2. Orlando's formula: the fourth Hurwitz determinant
+//!    `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`
+//!    is, up to sign, the product of `l_i + l_j` over the ten eigenvalue pairs, so it vanishes
+//!    exactly when two eigenvalues sum to zero: a pair `+-i omega` (Hopf) or `+-lambda` (a
+//!    neutral saddle). Each term of Delta4 has weight 10 (`c_k` counts `k`).
+//! 3. The trim is substituted and det A cleared: because Delta4 is weighted-homogeneous of weight
+//!    10, substituting the cleared coefficients `C_k = det(A)^k c_k(trim)` gives
+//!    `det(A)^10 Delta4` directly: the Hopf polynomial in P0 (and delta_a with aileron yaw,
+//!    which is then eliminated against the trim condition exactly as for the jump polynomial).
+//! 4. At a root, `s = i omega` splits `p(i omega) = 0` into the even part
+//!    `c1 w^2 - c3 w + c5 = 0` and the odd part `w^2 - c2 w + c4 = 0` with `w = omega^2`;
+//!    eliminating `w^2` leaves a linear equation, `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)`
+//!    (derived below from the characteristic polynomial, not typed). A Hopf point has
+//!    `omega^2 > 0`; a neutral saddle `omega^2 < 0` (the pair is `+-sqrt(-w)`).
+
+use super::{homogenize, Ratio};
+use crate::algebra::{Matrix, Poly, Sym, Q};
+use std::sync::OnceLock;
+
+/// The symbols of the generic characteristic polynomial: the eigenvalue variable `s`, the
+/// coefficients `c1..c5` and `w = omega^2`.
+#[derive(Debug)]
+pub struct HopfSymbols {
+    /// The Laplace variable of the characteristic polynomial.
+    pub s: Sym,
+    /// `c1..c5`, the coefficients of `s^4 .. s^0`.
+    pub c: [Sym; 5],
+    /// `w = omega^2` at a pair `+-i omega`.
+    pub w: Sym,
+}
+
+/// The Hopf symbols (created once, after the model's).
+pub fn hopf_symbols() -> &'static HopfSymbols {
+    static S: OnceLock<HopfSymbols> = OnceLock::new();
+    S.get_or_init(|| {
+        crate::equations::symbols();
+        HopfSymbols {
+            s: Sym::new("s"),
+            c: std::array::from_fn(|i| Sym::new(&format!("c{}", i + 1))),
+            w: Sym::new("w"),
+        }
+    })
+}
+
+/// The generic results, in the symbols `c1..c5` only (they hold for any 5x5 matrix).
+#[derive(Clone, Debug)]
+pub struct Orlando {
+    /// Delta4, the fourth Hurwitz determinant, in `c1..c5`.
+    pub delta4: Poly,
+    /// Even part of `p(i omega)` in `w = omega^2`: `c1 w^2 - c3 w + c5`.
+    pub even: Poly,
+    /// Odd part of `p(i omega) / (i omega)` in `w`: `w^2 - c2 w + c4`.
+    pub odd: Poly,
+    /// `omega^2` at a root of Delta4, rational in `c1..c5`.
+    pub omega_sq: Ratio,
+    /// `Res_w(even, odd) - Delta4`: identically zero (the two conditions on `w` have a common
+    /// root exactly where Delta4 vanishes); a check of the whole construction.
+    pub identity_residual: Poly,
+}
+
+/// Derives the generic Hurwitz/omega^2 results once.
+pub fn orlando() -> &'static Orlando {
+    static O: OnceLock<Orlando> = OnceLock::new();
+    O.get_or_init(|| {
+        let h = hopf_symbols();
+        let c = |i: usize| Poly::var(h.c[i - 1]);
+        let z = Poly::zero;
+        let one = || Poly::int(1);
+        let delta4 = Matrix::from_rows(vec![
+            vec![c(1), c(3), c(5), z()],
+            vec![one(), c(2), c(4), z()],
+            vec![z(), c(1), c(3), c(5)],
+            vec![z(), one(), c(2), c(4)],
+        ])
+        .det();
+        // p(s) with s = i omega: s^(2k) = (-w)^k, s^(2k+1) = s (-w)^k.
+        let char_poly = characteristic_generic();
+        let (mut even, mut odd) = (Poly::zero(), Poly::zero());
+        for (k, ck) in char_poly.coeffs(h.s).iter().enumerate() {
+            let half = Poly::var(h.w).scale(&Q::from(-1)).pow((k / 2) as u32);
+            if k % 2 == 0 {
+                even = &even + &(ck * &half);
+            } else {
+                odd = &odd + &(ck * &half);
+            }
+        }
+        // Normalise signs: even = c1 w^2 - c3 w + c5, odd = w^2 - c2 w + c4.
+        let lead = |p: &Poly| p.coeff(h.w, 2).coeff(h.c[0], 0).as_constant();
+        if lead(&odd) == Some(Q::from(-1)) {
+            odd = -&odd;
+        }
+        if even.coeff(h.w, 2).coeff(h.c[0], 1).as_constant() == Some(Q::from(-1)) {
+            even = -&even;
+        }
+        // Eliminate w^2: even - c1 odd is linear in w.
+        let lin = &even - &(&c(1) * &odd);
+        assert!(lin.degree(h.w) == 1, "even - c1 odd is linear in w");
+        let omega_sq = Ratio {
+            num: -lin.coeff(h.w, 0),
+            den: lin.coeff(h.w, 1),
+        };
+        let res = even.resultant(&odd, h.w);
+        let identity_residual = if (&res - &delta4).is_zero() {
+            Poly::zero()
+        } else {
+            &res + &delta4
+        };
+        Orlando {
+            delta4,
+            even,
+            odd,
+            omega_sq,
+            identity_residual,
+        }
+    })
+}
+
+/// `s^5 + c1 s^4 + ... + c5` in the generic symbols.
+fn characteristic_generic() -> Poly {
+    let h = hopf_symbols();
+    (0..=5).fold(Poly::zero(), |acc, k| {
+        let ck = if k == 0 {
+            Poly::int(1)
+        } else {
+            Poly::var(h.c[k - 1])
+        };
+        &acc + &(&ck * &Poly::var(h.s).pow(5 - k as u32))
+    })
+}
+
+/// The coefficients `c1..c5` of `det(s I - J)` for a 5x5 matrix of polynomials.
+pub fn characteristic_coefficients(j: &Matrix) -> [Poly; 5] {
+    let h = hopf_symbols();
+    let n = j.rows();
+    assert!(n == 5 && j.cols() == 5, "J5 is 5x5");
+    let rows = (0..n)
+        .map(|r| {
+            (0..n)
+                .map(|c| {
+                    let e = -j.get(r, c);
+                    if r == c {
+                        &e + &Poly::var(h.s)
+                    } else {
+                        e
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let p = Matrix::from_rows(rows).det();
+    let cs = p.coeffs(h.s);
+    assert!(
+        cs.len() == 6 && cs[5].as_constant() == Some(Q::ONE),
+        "det(s I - J5) is monic of degree 5"
+    );
+    std::array::from_fn(|k| cs[4 - k].clone())
+}
+
+/// Substitutes `c1..c5` into a generic result.
+pub fn at_coefficients(f: &Poly, c: &[Poly; 5]) -> Poly {
+    let h = hopf_symbols();
+    let subs: Vec<(Sym, Poly)> = h.c.iter().copied().zip(c.iter().cloned()).collect();
+    f.subs_all(&subs)
+}
+
+/// The characteristic coefficients at the trim `t_i = num_i / den`, each cleared of its own
+/// power of `den` (step 3): `C_k = den^k c_k(num / den)`. `Delta4(C) = den^10 Delta4(c)`.
+pub fn cleared_coefficients(c: &[Poly; 5], t: &[Sym], num: &[Poly], den: &Poly) -> [Poly; 5] {
+    std::array::from_fn(|k| homogenize(&c[k], t, num, den, k as u32 + 1))
+}
+
+/// The Hopf polynomial `den^10 Delta4` at the trim, from the cleared coefficients.
+pub fn hopf_at(cleared: &[Poly; 5]) -> Poly {
+    at_coefficients(&orlando().delta4, cleared)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn orlando_delta4_is_the_resultant_of_the_even_and_odd_parts() {
+        let o = orlando();
+        assert!(o.identity_residual.is_zero());
+        let h = hopf_symbols();
+        // omega^2 = (c1 c4 - c5) / (c1 c2 - c3), up to a common sign.
+        let c = |i: usize| Poly::var(h.c[i - 1]);
+        let num = &(&c(1) * &c(4)) - &c(5);
+        let den = &(&c(1) * &c(2)) - &c(3);
+        let same = (&o.omega_sq.num - &num).is_zero() && (&o.omega_sq.den - &den).is_zero();
+        let flipped = (&o.omega_sq.num + &num).is_zero() && (&o.omega_sq.den + &den).is_zero();
+        assert!(same || flipped, "{:?}", o.omega_sq);
+    }
+}

@@ -9,9 +9,9 @@
 //   jacobian5                              2       6       0       4       0      12
 //   residual_denominator                  41      83       3       0       1     128
 //   stiffness                             61     110       4       0       1     176
-//   det_k                                 64     115       4       0       1     184
+//   det_k                                 62     117       4       0       1     184
 //   det_j5                                90     163       3       0       1     257
-//   zero_sideslip_det_k                   23      42       1       0       0      66
+//   zero_sideslip_det_k                   23      44       1       0       0      68
 //   divergence_biquadratic                 5      10       0       0       0      15
 //   divergence_roll_rates                  8      14       2       1       3      28
 //   jump_polynomial                      291     433       0       1       1     726
@@ -349,7 +349,7 @@ pub fn stiffness(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> [[f64;
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 64 add/sub, 115 mul, 4 div, 0 neg, 1 libm (184 operations); straight-line, no branches.
+/// Cost after CSE: 62 add/sub, 117 mul, 4 div, 0 neg, 1 libm (184 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn det_k(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f64 {
@@ -397,23 +397,23 @@ pub fn det_k(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f64 {
                             )))));
     let t30 = t2 * (t8 - t9) + (t10 + t11) * t29;
     let t31 = t13 + t16 * t29;
-    let t32 = t18 * t29;
-    let t33 = t32 - t17;
-    let t34 = t20 * t29;
-    let t35 = t19 - t34;
-    let t36 = k.c * (t34 - t19 + p0 * t30) + k.m_q * t31;
-    let t37 = k.n_p * t7 + (k.d * (t17 - t32 + p0 * t31) - k.n_r * t30);
-    let t38 = p0 * p0;
-    let t39 = t14 - k.m_alpha - k.c * t38;
-    let t40 = p0 * (k.m_q + k.c * k.y_beta);
-    let t41 = p0 * (k.n_r + k.d * k.z_alpha);
-    let t42 = t9 - k.d * t38;
-    t39 * t42 + t40 * t41
-        - ((t7 * (p0 * k.l_r) + k.e * (k.z_alpha * t35 - p0 * t33))
-            * (t36 * t42 + t37 * t40)
-            + (t7 * (k.l_beta + k.y_beta * k.l_r) - k.e * (p0 * t35 + k.y_beta * t33))
-                * (t37 * t39 - t36 * t41))
-            / (k.l_p * (t7 * t7) - t7 * (k.l_r * t30) + k.e * (t31 * t35 + t30 * t33))
+    let t32 = t18 * t29 - t17;
+    let t33 = t19 - t20 * t29;
+    let t34 = k.m_q * t31 - k.c * t33 + t0 * t30;
+    let t35 = k.n_p * t7 - k.d * t32 + t1 * t31 - k.n_r * t30;
+    let t36 = p0 * k.e;
+    let t37 = p0 * p0;
+    let t38 = t14 - k.m_alpha - k.c * t37;
+    let t39 = p0 * (k.m_q + k.c * k.y_beta);
+    let t40 = p0 * (k.n_r + k.d * k.z_alpha);
+    let t41 = t9 - k.d * t37;
+    t38 * t41 + t39 * t40
+        - ((t7 * (p0 * k.l_r) + t33 * (k.e * k.z_alpha) - t32 * t36)
+            * (t34 * t41 + t35 * t39)
+            + (t7 * (k.l_beta + k.y_beta * k.l_r) - t33 * t36 - t32 * (k.e * k.y_beta))
+                * (t35 * t38 - t34 * t40))
+            / (k.l_p * (t7 * t7) + k.e * (t31 * t33) - k.l_r * (t7 * t30)
+                + k.e * (t30 * t32))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -520,27 +520,29 @@ pub fn det_j5(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f64 {
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 23 add/sub, 42 mul, 1 div, 0 neg, 0 libm (66 operations); straight-line, no branches.
+/// Cost after CSE: 23 add/sub, 44 mul, 1 div, 0 neg, 0 libm (68 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn zero_sideslip_det_k(k: &Derivatives, p0: f64, delta_e: f64) -> f64 {
-    let t0 = delta_e * k.m_delta_e;
-    let t1 = k.z_alpha * k.m_q;
-    let t2 = t1 - (k.m_alpha + p0 * (p0 * k.c));
-    let t3 = k.z_alpha * t0;
-    let t4 = p0 * t0;
-    let t5 = k.c * (t4 + t4);
-    let t6 = k.n_p * t2 + (k.n_r * t0 + k.d * t3);
-    let t7 = p0 * p0;
-    let t8 = t1 - k.m_alpha - k.c * t7;
-    let t9 = p0 * (k.m_q + k.c * k.y_beta);
-    let t10 = p0 * (k.n_r + k.d * k.z_alpha);
-    let t11 = k.n_beta + k.y_beta * k.n_r - k.d * t7;
-    t8 * t11 + t9 * t10
-        - ((t2 * (p0 * k.l_r) + k.e * (p0 * t3 + k.z_alpha * t4)) * (t6 * t9 - t5 * t11)
-            + (t2 * (k.l_beta + k.y_beta * k.l_r) + k.e * (k.y_beta * t3 - p0 * t4))
-                * (t6 * t8 + t5 * t10))
-            / (k.l_p * (t2 * t2) + t2 * (k.l_r * t0) + t3 * (k.e * t0))
+    let t0 = p0 * k.c;
+    let t1 = delta_e * k.m_delta_e;
+    let t2 = k.z_alpha * k.m_q;
+    let t3 = t2 - (k.m_alpha + p0 * t0);
+    let t4 = k.z_alpha * t1;
+    let t5 = p0 * t1;
+    let t6 = k.c * t5 + t0 * t1;
+    let t7 = k.n_p * t3 + k.d * t4 + k.n_r * t1;
+    let t8 = p0 * k.e;
+    let t9 = p0 * p0;
+    let t10 = t2 - k.m_alpha - k.c * t9;
+    let t11 = p0 * (k.m_q + k.c * k.y_beta);
+    let t12 = p0 * (k.n_r + k.d * k.z_alpha);
+    let t13 = k.n_beta + k.y_beta * k.n_r - k.d * t9;
+    t10 * t13 + t11 * t12
+        - ((t3 * (p0 * k.l_r) + t5 * (k.e * k.z_alpha) + t4 * t8) * (t7 * t11 - t6 * t13)
+            + (t3 * (k.l_beta + k.y_beta * k.l_r) - t5 * t8 + t4 * (k.e * k.y_beta))
+                * (t7 * t10 + t6 * t12))
+            / (k.l_p * (t3 * t3) + k.l_r * (t1 * t3) + k.e * (t1 * t4))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive
@@ -642,10 +644,10 @@ pub fn jump_polynomial(k: &Derivatives, delta_e: f64, delta_r: f64) -> [f64; 13]
     let t47 = t21 * t25;
     let t48 = t22 * t25;
     let t49 = t21 * t28 - t23 * t25;
-    let t50 = t21 * t29 - t23 * t28;
-    let t51 = t23 * t29;
-    let t52 = t22 * t28 - t9 * t25;
-    let t53 = t22 * t29 - t9 * t28;
+    let t50 = t22 * t28 - t9 * t25;
+    let t51 = t21 * t29 - t23 * t28;
+    let t52 = t22 * t29 - t9 * t28;
+    let t53 = t23 * t29;
     let t54 = t9 * t29;
     let t55 = k.l_beta + k.y_beta * k.l_r;
     let t56 = k.l_beta * k.n_r;
@@ -672,16 +674,16 @@ pub fn jump_polynomial(k: &Derivatives, delta_e: f64, delta_r: f64) -> [f64; 13]
     let t76 = k.n_r * t75;
     let t77 = t16 * t25;
     let t78 = t19 * t25;
-    let t79 = t20 * t25 - t16 * t28;
-    let t80 = t14 * t25;
-    let t81 = t19 * t28 + t80;
-    let t82 = t14 * t28;
-    let t83 = t19 * t29 + t82;
-    let t84 = t14 * t29;
-    let t85 = t15 * t25;
-    let t86 = t20 * t28 - t16 * t29 + t85;
-    let t87 = t15 * t28;
-    let t88 = t20 * t29 + t87;
+    let t79 = t14 * t25;
+    let t80 = t15 * t25;
+    let t81 = t20 * t25 - t16 * t28;
+    let t82 = t79 + t19 * t28;
+    let t83 = t14 * t28;
+    let t84 = t15 * t28;
+    let t85 = t80 + t20 * t28 - t16 * t29;
+    let t86 = t83 + t19 * t29;
+    let t87 = t84 + t20 * t29;
+    let t88 = t14 * t29;
     let t89 = t15 * t29;
     let t90 = k.m_alpha * t55;
     let t91 = k.d * (k.z_alpha * (k.m_q * t55) - t90)
@@ -727,10 +729,10 @@ pub fn jump_polynomial(k: &Derivatives, delta_e: f64, delta_r: f64) -> [f64; 13]
     let t130 = k.m_q * t129;
     let t131 = t8 * t25;
     let t132 = t13 * t25;
-    let t133 = t80 + t8 * t28;
-    let t134 = t82 + t8 * t29;
-    let t135 = t85 + t13 * t28;
-    let t136 = t87 + t13 * t29;
+    let t133 = t79 + t8 * t28;
+    let t134 = t80 + t13 * t28;
+    let t135 = t83 + t8 * t29;
+    let t136 = t84 + t13 * t29;
     let t137 = k.m_q * t58;
     let t138 = t137 - k.d * t90;
     let t139 = k.l_beta * t29;
@@ -744,10 +746,10 @@ pub fn jump_polynomial(k: &Derivatives, delta_e: f64, delta_r: f64) -> [f64; 13]
     let t147 = k.e * (k.m_alpha * (k.d * k.y_beta) - k.m_q * k.n_beta);
     let t148 = t1 * t25;
     let t149 = t3 * t25;
-    let t150 = t3 * t28;
-    let t151 = t3 * t29;
-    let t152 = t1 * t28 - t5 * t25;
-    let t153 = t1 * t29 - t5 * t28;
+    let t150 = t1 * t28 - t5 * t25;
+    let t151 = t3 * t28;
+    let t152 = t1 * t29 - t5 * t28;
+    let t153 = t3 * t29;
     let t154 = t5 * t29;
     let t155 = k.z_alpha * t137 + k.m_alpha * (t56 - t57);
     let t156 = k.d * (k.l_r * k.m_alpha - k.l_beta * t17);
@@ -769,44 +771,44 @@ pub fn jump_polynomial(k: &Derivatives, delta_e: f64, delta_r: f64) -> [f64; 13]
             + t141 * t145 - t8 * t16 * t147 - t149 * t155 + t1 * t21 * t157
             + t159 * t165) * t167,
         (t33 * t42 + t30 * t45 + t48 * t59 + (t68 * t74 + t61 * t76)
-            + (t79 * t91 - t77 * t92) + t94 * t106 + (t117 * t128 - t108 * t130)
+            + (t81 * t91 - t77 * t92) + t94 * t106 + (t117 * t128 - t108 * t130)
             + t132 * t138 + (t142 * t145 + t140 * t146) + (t8 * t19 - t13 * t16) * t147
-            + (t152 * t155 + t148 * t156) + (t1 * t22 - t3 * t21) * t157
+            + (t150 * t155 + t148 * t156) + (t1 * t22 - t3 * t21) * t157
             + (t160 * t165 + t158 * t166)) * t167,
-        (t49 * t59 - t47 * t60 + (t65 * t76 - t70 * t74) + (t81 * t91 + t78 * t92)
+        (t49 * t59 - t47 * t60 + (t65 * t76 - t70 * t74) + (t82 * t91 + t78 * t92)
             + (t95 * t106 - t93 * t107) + (t120 * t128 + t113 * t130)
             + (t133 * t138 - t131 * t139) + (t143 * t145 + t141 * t146)
-            + (t8 * t20 + t13 * t19 - t111) * t147 - (t150 * t155 + t149 * t156)
+            + (t8 * t20 + t13 * t19 - t111) * t147 - (t151 * t155 + t149 * t156)
             - (t1 * t23 + t3 * t22 + t5 * t21) * t157 + (t161 * t165 - t159 * t166))
             * t167,
-        (t35 * t42 + t33 * t45 + t30 * t46 + (t52 * t59 - t48 * t60)
-            + (t71 * t74 + t68 * t76) + (t86 * t91 + t79 * t92)
+        (t35 * t42 + t33 * t45 + t30 * t46 + (t50 * t59 - t48 * t60)
+            + (t71 * t74 + t68 * t76) + (t85 * t91 + t81 * t92)
             + (t97 * t106 + t94 * t107) + (t123 * t128 - t117 * t130)
-            + (t135 * t138 - t132 * t139) + (t144 * t145 + t142 * t146)
-            + (t115 + (t8 * t14 + t13 * t20) - t112) * t147 + (t153 * t155 + t152 * t156)
+            + (t134 * t138 - t132 * t139) + (t144 * t145 + t142 * t146)
+            + (t115 + (t8 * t14 + t13 * t20) - t112) * t147 + (t152 * t155 + t150 * t156)
             + (t3 * t23 - t1 * t9 - t5 * t22) * t157 + (t162 * t165 - t160 * t166))
             * t167,
-        (t50 * t59 - t49 * t60 + (t72 * t74 - t70 * t76) + (t83 * t91 + t81 * t92)
+        (t51 * t59 - t49 * t60 + (t72 * t74 - t70 * t76) + (t86 * t91 + t82 * t92)
             + (t101 * t106 + t95 * t107) + (t124 * t128 - t120 * t130)
-            + (t134 * t138 - t133 * t139) + (t143 * t146 - t104 * t145)
+            + (t135 * t138 - t133 * t139) + (t143 * t146 - t104 * t145)
             + (t116 + (t118 + (t8 * t15 + t13 * t14))) * t147
-            - (t151 * t155 + t150 * t156) + (t3 * t9 + t5 * t23) * t157
+            - (t153 * t155 + t151 * t156) + (t3 * t9 + t5 * t23) * t157
             - (t163 * t165 + t161 * t166)) * t167,
-        (t36 * t42 + t35 * t45 + t33 * t46 + (t53 * t59 - t52 * t60)
-            + (t73 * t74 + t71 * t76) + (t88 * t91 + t86 * t92)
+        (t36 * t42 + t35 * t45 + t33 * t46 + (t52 * t59 - t50 * t60)
+            + (t73 * t74 + t71 * t76) + (t87 * t91 + t85 * t92)
             + (t103 * t106 + t97 * t107) + (t125 * t128 - t123 * t130)
-            + (t136 * t138 - t135 * t139) + (t144 * t146 - t105 * t145)
-            + (t119 + (t121 + t13 * t15)) * t147 + (t153 * t156 - t154 * t155)
+            + (t136 * t138 - t134 * t139) + (t144 * t146 - t105 * t145)
+            + (t119 + (t121 + t13 * t15)) * t147 + (t152 * t156 - t154 * t155)
             + t5 * t9 * t157 - (t164 * t165 + t162 * t166)) * t167,
-        (t72 * t76 - (t51 * t59 + t50 * t60) + (t84 * t91 + t83 * t92)
+        (t72 * t76 - (t53 * t59 + t51 * t60) + (t88 * t91 + t86 * t92)
             + (t101 * t107 - t104 * t106) + (t126 * t128 - t124 * t130)
-            + (t84 * t138 - t134 * t139) - t104 * t146 + t126 * t147 - t151 * t156
+            + (t88 * t138 - t135 * t139) - t104 * t146 + t126 * t147 - t153 * t156
             + t163 * t166) * t167,
-        (t37 * t42 + t36 * t45 + t35 * t46 - (t54 * t59 + t53 * t60) + t73 * t76
-            + (t89 * t91 + t88 * t92) + (t103 * t107 - t105 * t106)
+        (t37 * t42 + t36 * t45 + t35 * t46 - (t54 * t59 + t52 * t60) + t73 * t76
+            + (t89 * t91 + t87 * t92) + (t103 * t107 - t105 * t106)
             + (t127 * t128 - t125 * t130) + (t89 * t138 - t136 * t139) - t105 * t146
             + t127 * t147 - t154 * t156 + t164 * t166) * t167,
-        (t51 * t60 + t84 * t92 - t104 * t107 - t126 * t130 - t84 * t139) * t167,
+        (t53 * t60 + t88 * t92 - t104 * t107 - t126 * t130 - t88 * t139) * t167,
         (t37 * t45 + t36 * t46 + t54 * t60 + t89 * t92 - t105 * t107 - t127 * t130
             - t89 * t139) * t167,
         0.0,

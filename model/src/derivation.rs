@@ -519,27 +519,89 @@ fn time_derivative(s: &Symbols, f: &Poly) -> Poly {
 /// for every aircraft, also when E = 0 lowers the degree of d.
 pub const TRIM_DEGREE: u32 = 2;
 
+/// The ring step 8 builds its result in: exact polynomials ([`homogenize`]) or the emitter's
+/// expression DAG (one node, or the coefficient nodes of a polynomial in P0), so that the
+/// clearing of the trim's denominator is written once ([`clear_trim`]).
+pub trait Clearing {
+    /// A value of the ring.
+    type Value: Clone;
+    /// A polynomial free of the trim symbols as a value.
+    fn lift(&mut self, p: &Poly) -> Self::Value;
+    /// `a + b`.
+    fn add(&mut self, a: &Self::Value, b: &Self::Value) -> Self::Value;
+    /// `a * b`.
+    fn mul(&mut self, a: &Self::Value, b: &Self::Value) -> Self::Value;
+    /// `a^n` (by default `n` products starting from 1).
+    fn pow(&mut self, a: &Self::Value, n: u32) -> Self::Value {
+        let mut acc = self.lift(&Poly::int(1));
+        for _ in 0..n {
+            acc = self.mul(&acc, a);
+        }
+        acc
+    }
+}
+
+/// Exact polynomials as the ring of [`Clearing`].
+struct Exact;
+
+impl Clearing for Exact {
+    type Value = Poly;
+    fn lift(&mut self, p: &Poly) -> Poly {
+        p.clone()
+    }
+    fn add(&mut self, a: &Poly, b: &Poly) -> Poly {
+        a + b
+    }
+    fn mul(&mut self, a: &Poly, b: &Poly) -> Poly {
+        a * b
+    }
+    fn pow(&mut self, a: &Poly, n: u32) -> Poly {
+        a.pow(n)
+    }
+}
+
+/// Step 8 in any [`Clearing`] ring: `f` (of degree at most `k` in the trim symbols `t`) with
+/// `t_i = num_i / den` substituted, times `den^k`, built without division. `f` is grouped by its
+/// monomial `t^m` in the trim symbols, `f = sum_m c_m t^m`; each group becomes
+/// `c_m num^m den^(k - |m|)`.
+pub fn clear_trim<C: Clearing>(
+    ring: &mut C,
+    f: &Poly,
+    t: &[Sym],
+    num: &[C::Value],
+    den: &C::Value,
+    k: u32,
+) -> C::Value {
+    assert!(f.degree_in(t) <= k, "degree in the trim states above {k}");
+    let mut groups: std::collections::BTreeMap<Vec<u32>, Poly> = Default::default();
+    for (m, c) in f.terms() {
+        let e: Vec<u32> = t.iter().map(|s| m.exp(*s)).collect();
+        let mut rest = *m;
+        for s in t {
+            rest.set(*s, 0);
+        }
+        let g = groups.entry(e).or_insert_with(Poly::zero);
+        *g = &*g + &Poly::term(rest, c.clone());
+    }
+    let den_pows: Vec<C::Value> = (0..=k).map(|j| ring.pow(den, j)).collect();
+    let mut acc = ring.lift(&Poly::zero());
+    for (e, c) in &groups {
+        let mut prod = den_pows[(k - e.iter().sum::<u32>()) as usize].clone();
+        for (n, ei) in num.iter().zip(e) {
+            for _ in 0..*ei {
+                prod = ring.mul(&prod, n);
+            }
+        }
+        let c = ring.lift(c);
+        let term = ring.mul(&c, &prod);
+        acc = ring.add(&acc, &term);
+    }
+    acc
+}
+
 /// Substitutes `t_i = num_i / den` into `f` (of degree at most k in the `t_i`) and multiplies
 /// by `den^k` (step 8), giving a polynomial: each term of degree j in the `t_i` gets
 /// `den^(k-j)`.
 pub fn homogenize(f: &Poly, t: &[Sym], num: &[Poly], den: &Poly, k: u32) -> Poly {
-    assert!(f.degree_in(t) <= k, "degree in the trim states above {k}");
-    let mut den_pows = vec![Poly::int(1)];
-    for _ in 0..k {
-        let next = den_pows.last().map(|p| p * den).unwrap_or_default();
-        den_pows.push(next);
-    }
-    // Group the terms of f by their degree in t, substitute the numerators, scale by den^(k-j).
-    let mut by_degree = vec![Poly::zero(); k as usize + 1];
-    for (m, c) in f.terms() {
-        let j = t.iter().map(|s| m.exp(*s)).sum::<u32>() as usize;
-        by_degree[j] = &by_degree[j] + &Poly::term(*m, c.clone());
-    }
-    let subs: Vec<(Sym, Poly)> = t.iter().copied().zip(num.iter().cloned()).collect();
-    by_degree
-        .iter()
-        .enumerate()
-        .fold(Poly::zero(), |acc, (j, part)| {
-            &acc + &(&part.subs_all(&subs) * &den_pows[k as usize - j])
-        })
+    clear_trim(&mut Exact, f, t, num, den, k)
 }

@@ -22,3 +22,4 @@ pub mod report;
 pub mod roots;
 #[cfg(feature = "cli")]
 pub mod simulation;
+pub mod specialise;

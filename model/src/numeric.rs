@@ -6,8 +6,8 @@
 //! exactly and the Jacobian differentiated symbolically (no finite differences), flattened into
 //! term lists. One source of truth, evaluated at machine speed.
 
-use crate::aircraft::{Aircraft, Param};
-use crate::algebra::{Poly, Sym, MAX_SYMS, Q};
+use crate::aircraft::Aircraft;
+use crate::algebra::{Poly, MAX_SYMS};
 use crate::equations::{pss, symbols};
 
 /// A polynomial flattened for f64 evaluation: coefficient and (symbol index, power) factors.
@@ -78,10 +78,7 @@ impl PssModel {
     /// Builds the model for `aircraft` (its data substituted exactly).
     pub fn new(aircraft: &Aircraft) -> PssModel {
         let s = symbols();
-        let values: Vec<(Sym, Q)> = Param::ALL
-            .iter()
-            .map(|p| (s.param(*p), Q::from_big(aircraft.exact(*p).clone())))
-            .collect();
+        let values = crate::specialise::aircraft_values(aircraft);
         let f = pss().map(|e| e.subs_values(&values));
         let states = s.states();
         let controls = [s.delta_a, s.delta_e, s.delta_r];

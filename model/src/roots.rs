@@ -68,6 +68,24 @@ pub struct UPoly {
     coeffs: Vec<BigRational>,
 }
 
+/// A univariate polynomial with `f64` coefficients (ascending powers), evaluated by Horner's
+/// scheme: the one f64 polynomial evaluation of the crate (display, plotting, simulation).
+///
+/// ```
+/// use model::roots::F64Poly;
+/// // 1 + 2x + 3x^2 at x = 2
+/// assert_eq!(F64Poly(vec![1.0, 2.0, 3.0]).eval(2.0), 17.0);
+/// ```
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct F64Poly(pub Vec<f64>);
+
+impl F64Poly {
+    /// Value at `x` by Horner's scheme.
+    pub fn eval(&self, x: f64) -> f64 {
+        self.0.iter().rev().fold(0.0, |acc, c| acc * x + c)
+    }
+}
+
 impl UPoly {
     /// Builds a polynomial from ascending coefficients, trimming trailing zeros.
     pub fn new(mut coeffs: Vec<BigRational>) -> Self {
@@ -146,11 +164,17 @@ impl UPoly {
     ///
     /// Only for display and plotting: never use it to decide whether something is a root.
     pub fn eval_f64(&self, x: f64) -> f64 {
-        let mut acc = 0.0;
-        for c in self.coeffs.iter().rev() {
-            acc = acc * x + c.to_f64().unwrap_or(f64::NAN);
-        }
-        acc
+        self.to_f64().eval(x)
+    }
+
+    /// The coefficients rounded once to `f64` (each to the nearest double).
+    pub fn to_f64(&self) -> F64Poly {
+        F64Poly(
+            self.coeffs
+                .iter()
+                .map(crate::aircraft::rational_to_f64)
+                .collect(),
+        )
     }
 
     /// The derivative.

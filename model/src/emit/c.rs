@@ -309,9 +309,9 @@ pub fn header(param: &[Function], builtins: &[Builtin]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::analysis::exact_f64;
     use crate::emit::expr::Dag;
     use crate::emit::functions::{Arg, Ret};
+    use crate::specialise::exact_f64;
 
     #[test]
     fn double_literals_are_doubles_that_round_trip_exactly() {

@@ -18,9 +18,8 @@ pub mod rust;
 pub mod shape;
 
 use crate::aircraft::{Aircraft, Param};
-use crate::algebra::{Sym, Q};
+use crate::algebra::Q;
 use crate::derivation::Derivation;
-use crate::equations::symbols;
 use expr::OpCount;
 use functions::{functions, structs, Function};
 use proc_macro2::{Ident, Span, TokenStream};
@@ -55,14 +54,7 @@ pub enum EmitError {
 /// The command that regenerates the outputs, quoted in headers and in `--check` messages.
 pub const COMMAND: &str = "cargo run -p model -- emit";
 
-/// The parameter values of an aircraft as exact symbol values (controls stay symbolic).
-pub fn aircraft_values(ac: &Aircraft) -> Vec<(Sym, Q)> {
-    let s = symbols();
-    Param::ALL
-        .iter()
-        .map(|p| (s.param(*p), Q::from_big(ac.exact(*p).clone())))
-        .collect()
-}
+pub use crate::specialise::aircraft_values;
 
 /// The functions with every parameter an argument (`k: &Derivatives`).
 pub fn parametric_functions() -> Vec<Function> {

@@ -10,9 +10,9 @@ use super::rust::{float_literal, pretty};
 use super::{aircraft_values, COMMAND};
 use crate::aircraft::Aircraft;
 use crate::algebra::{Poly, Q};
-use crate::analysis::{exact_f64, univariate};
 use crate::derivation::Derivation;
 use crate::equations::symbols;
+use crate::specialise::{exact_f64, univariate};
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
 

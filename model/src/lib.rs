@@ -9,6 +9,7 @@
 pub mod aircraft;
 pub mod algebra;
 pub mod analysis;
+#[cfg(feature = "continuation")]
 pub mod continuation;
 pub mod derivation;
 pub mod emit;

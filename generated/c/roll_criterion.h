@@ -2,7 +2,7 @@
 // Header-only C99 library: the roll-coupling jump criterion (AIAA 2006-6267), the same
 // functions as the Rust crate roll-criterion, printed from the same expression DAGs.
 // Derived from model/src/equations.rs (Appendix A.2 of AIAA 2006-6267) by model/src/derivation.rs;
-// inputs: symbolic parameters, Aircraft A (model::aircraft), Aircraft B (model::aircraft); model 0.1.0.
+// inputs: symbolic parameters, Aircraft A (model::aircraft), Aircraft B (model::aircraft); model 0.1.0; inputs hash 37dab29631f8b07d (model::emit::inputs_hash).
 // Operation counts after common-subexpression elimination (parametric; the functions of
 // each built-in aircraft are counted in its section):
 //   function                         add/sub     mul     div     neg    libm   total

@@ -37,13 +37,13 @@ pub struct Derivation {
     pub unconstrained_model: [Poly; 5],
     /// Eq. 2: the 4x4 matrix A of the trim system in x = [alpha, beta, q, r] at p = P0.
     pub a: Matrix,
-    /// Eq. 1-2: the constant part `b u + b1 P0` of the trim system `A x + b u + b1 P0 = 0`; with
+    /// Eqs 1-2: the constant part `b u + b1 P0` of the trim system `A x + b u + b1 P0 = 0`; with
     /// aileron yaw `u` includes delta_a (the `n_delta_a delta_a` term of the yaw equation), so the
     /// trim is affine in delta_a for a given P0.
     pub a_rhs: Vec<Poly>,
     /// Eq. 4: det A, the common denominator of the trim states.
     pub det_a: Poly,
-    /// Eq. 3-4: numerators of [alpha0, beta0, Q0, R0] over `det_a`: `-adj(A) (b u + b1 P0)`,
+    /// Eqs 3-4: numerators of [alpha0, beta0, Q0, R0] over `det_a`: `-adj(A) (b u + b1 P0)`,
     /// affine in delta_a (which enters through `n_delta_a` only).
     pub trim: [Poly; 4],
     /// Eq. 5: coefficients of P0^0, P0^2, P0^4 of det A (odd powers vanish identically).
@@ -54,13 +54,13 @@ pub struct Derivation {
     pub roll_at_trim: Poly,
     /// The 5x5 Jacobian of the PSS model at the trim (alpha0, beta0, P0, Q0, R0).
     pub jacobian: Matrix,
-    /// Eqs. 6-10: the linearized equations, right-hand sides in the perturbations.
+    /// Eqs 6-10: the linearized equations, right-hand sides in the perturbations.
     pub linearized: [Poly; 5],
     /// Eq. 11: q in terms of alpha, alpha_dot, beta, p.
     pub q_elim: Poly,
     /// Eq. 12: r in terms of alpha, beta, beta_dot, p.
     pub r_elim: Poly,
-    /// Eqs. 13-14: the coupled second-order equations (= 0), leading coefficients 1.
+    /// Eqs 13-14: the coupled second-order equations (= 0), leading coefficients 1.
     pub second_order: [Poly; 2],
     /// Eq. 21: the roll-mode equation, d p / dt in terms of alpha, alpha_dot, beta, beta_dot, p.
     pub roll_mode: Poly,
@@ -68,13 +68,13 @@ pub struct Derivation {
     pub d: Poly,
     /// Eq. 22: `h = [h_alpha, h_beta]` with the static residual `p_s = -(h . y) / d`.
     pub h: [Poly; 2],
-    /// Eqs. 24-25: d p_s / d alpha and d p_s / d beta.
+    /// Eqs 24-25: d p_s / d alpha and d p_s / d beta.
     pub dps: [Ratio; 2],
     /// Eq. 16: the stiffness matrix without the roll residual (coefficients of y in Eqs 13-14).
     pub k0: [[Poly; 2]; 2],
     /// Coefficients of p in Eqs 13-14 (g); the residual terms are `f_ij = -g_i h_j / d`.
     pub g: [Poly; 2],
-    /// Eqs. 16, 27-31: `d K` entry by entry, `d K0_ij - g_i h_j`.
+    /// Eqs 16, 27-31: `d K` entry by entry, `d K0_ij - g_i h_j`.
     pub k_times_d: [[Poly; 2]; 2],
     /// Eq. 27: `d det K = d det K0 - h^T adj(K0) g`, a polynomial.
     pub d_det_k: Poly,
@@ -86,9 +86,9 @@ pub struct Derivation {
     step8: OnceLock<Step8>,
     /// The aileron elimination after step 8, computed on first use (see [`Derivation::jump`]).
     elimination: OnceLock<Elimination>,
-    /// Eqs. 32-34: the zero-sideslip trim system in [alpha, q, r] (beta = 0, delta_r freed).
+    /// Eqs 32-34: the zero-sideslip trim system in [alpha, q, r] (beta = 0, delta_r freed).
     pub zs_a: Matrix,
-    /// Eqs. 32-33: the constant part of the zero-sideslip trim system `zs_a x + zs_rhs = 0`.
+    /// Eqs 32-33: the constant part of the zero-sideslip trim system `zs_a x + zs_rhs = 0`.
     pub zs_rhs: Vec<Poly>,
     /// Eq. 35: det of the zero-sideslip system, common denominator of `zs_trim`.
     pub zs_det: Poly,

@@ -102,7 +102,7 @@ fn document_states_the_identity_and_the_comparisons_with_the_print() {
         "det J5 = d det K verified symbolically"
     );
     assert!(!d.contains("WARNING"), "the identity residual is zero");
-    // Eq. 13's printed p-terms contradict Eqs. 17 and 28; the derivation agrees with the latter.
+    // Eq. 13's printed p-terms contradict Eqs 17 and 28; the derivation agrees with the latter.
     assert!(d.contains("Eq.~13: differs from the paper's print"));
     assert!(d.contains("The first factor of Eqs.~28--29: agrees with the paper's print."));
     assert!(d.contains("$g_1$ (the factor in Eqs.~17--18): agrees with the paper's print."));

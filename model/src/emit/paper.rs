@@ -30,7 +30,7 @@ pub const EQ2_A: [[&str; 4]; 4] = [
 ];
 /// Eq. 2: `b u + b1 P0` with `b` and `b1` as printed.
 pub const EQ2_RHS: [&str; 4] = ["0", "0", "m_delta_e*delta_e", "n_delta_r*delta_r + n_p*P0"];
-/// Eqs. 6-10: right-hand sides of the linearized equations.
+/// Eqs 6-10: right-hand sides of the linearized equations.
 pub const EQ6_10: [&str; 5] = [
     "q - P0*beta - p*beta0 + z_alpha*alpha",
     "P0*alpha + p*alpha0 - r + y_beta*beta",
@@ -56,7 +56,7 @@ pub const EQ16_K0: [[&str; 2]; 2] = [
     ["-(m_alpha - m_q*z_alpha + C*P0^2)", "-P0*(m_q + C*y_beta)"],
     ["P0*(n_r + D*z_alpha)", "n_beta + n_r*y_beta - D*P0^2"],
 ];
-/// Eqs. 17-20: the factors multiplying the partials of p_s.
+/// Eqs 17-20: the factors multiplying the partials of p_s.
 pub const EQ17_20_G: [&str; 2] = [
     "-m_q*beta0 - C*R0 - C*P0*alpha0",
     "n_r*alpha0 - D*Q0 - D*P0*beta0",
@@ -72,7 +72,7 @@ pub const EQ22_H: [&str; 2] = [
     "l_r*P0 - E*Q0*P0 + E*R0*z_alpha",
     "l_beta + l_r*y_beta - E*Q0*y_beta - E*R0*P0",
 ];
-/// Eqs. 28-31: the first factors of the numerators of f_ij (rows i = 1, 2).
+/// Eqs 28-31: the first factors of the numerators of f_ij (rows i = 1, 2).
 pub const EQ28_31: [&str; 2] = [
     "m_q*beta0 + C*R0 + C*P0*alpha0",
     "D*Q0 + D*P0*beta0 - n_r*alpha0",

@@ -12,6 +12,17 @@
 //! Rational functions are never normalized: trims are numerators over the common denominator
 //! `det A`, and the stiffness matrix is kept as `K = K0 - g h^T / d`, whose determinant times
 //! `d` is a polynomial (matrix determinant lemma).
+//!
+//! ```
+//! use model::algebra::{Poly, Sym};
+//! use model::derivation::homogenize;
+//!
+//! // Step 8 on f = t^2 + t with t = n / d: (n^2 + n d) has no denominator left
+//! let (t, n, d) = (Sym::new("t"), Sym::new("n"), Sym::new("d"));
+//! let f = &Poly::var(t).pow(2) + &Poly::var(t);
+//! let cleared = homogenize(&f, &[t], &[Poly::var(n)], &Poly::var(d), 2);
+//! assert_eq!(cleared, &Poly::var(n).pow(2) + &(&Poly::var(n) * &Poly::var(d)));
+//! ```
 
 use crate::aircraft::Param;
 use crate::algebra::{Matrix, Poly, Sym, Q};

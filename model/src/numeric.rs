@@ -5,6 +5,16 @@
 //! they use the equations of [`crate::equations::pss`] with the aircraft's data substituted
 //! exactly and the Jacobian differentiated symbolically (no finite differences), flattened into
 //! term lists. One source of truth, evaluated at machine speed.
+//!
+//! ```
+//! use model::aircraft::Aircraft;
+//! use model::numeric::{Controls, PssModel};
+//!
+//! let m = PssModel::new(&Aircraft::a());
+//! let u = Controls { delta_a: 0.0, delta_e: 0.0, delta_r: 0.0 };
+//! // the level, non-rolling state with centred controls is an equilibrium
+//! assert_eq!(m.rhs(&[0.0; 5], &u), [0.0; 5]);
+//! ```
 
 use crate::aircraft::Aircraft;
 use crate::algebra::{Poly, MAX_SYMS};

@@ -2,7 +2,7 @@
 // Header-only C99 library: the roll-coupling jump criterion (AIAA 2006-6267), the same
 // functions as the Rust crate roll-criterion, printed from the same expression DAGs.
 // Derived from model/src/equations.rs (Appendix A.2 of AIAA 2006-6267) by model/src/derivation.rs;
-// inputs: symbolic parameters, Aircraft A (model::aircraft), Aircraft B (model::aircraft); model 0.1.0.
+// inputs: symbolic parameters, Aircraft A (model::aircraft), Aircraft B (model::aircraft); model 0.1.0; inputs hash 37dab29631f8b07d (model::emit::inputs_hash).
 // Operation counts after common-subexpression elimination (parametric; the functions of
 // each built-in aircraft are counted in its section):
 //   function                         add/sub     mul     div     neg    libm   total
@@ -11,9 +11,9 @@
 //   jacobian5                              2       6       0       4       0      12
 //   residual_denominator                  41      83       3       0       1     128
 //   stiffness                             61     110       4       0       1     176
-//   det_k                                 64     115       4       0       1     184
+//   det_k                                 62     117       4       0       1     184
 //   det_j5                                90     163       3       0       1     257
-//   zero_sideslip_det_k                   23      42       1       0       0      66
+//   zero_sideslip_det_k                   23      44       1       0       0      68
 //   divergence_biquadratic                 5      10       0       0       0      15
 //   divergence_roll_rates                  8      14       2       1       3      28
 //   jump_polynomial                      291     433       0       1       1     726
@@ -420,7 +420,7 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_stiffness(const struct rc_derivatives 
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 64 add/sub, 115 mul, 4 div, 0 neg, 1 libm (184 operations); straight-line, no branches.
+/// Cost after CSE: 62 add/sub, 117 mul, 4 div, 0 neg, 1 libm (184 operations); straight-line, no branches.
 /// Rust: `roll_criterion::det_k`, bit-identical.
 ROLL_CRITERION_API double rc_det_k(const struct rc_derivatives *k, double p0, double delta_e,
     double delta_r)
@@ -462,21 +462,20 @@ ROLL_CRITERION_API double rc_det_k(const struct rc_derivatives *k, double p0, do
         t27) / (t28 * t28) * 4.0)))));
     const double t30 = t2 * (t8 - t9) + (t10 + t11) * t29;
     const double t31 = t13 + t16 * t29;
-    const double t32 = t18 * t29;
-    const double t33 = t32 - t17;
-    const double t34 = t20 * t29;
-    const double t35 = t19 - t34;
-    const double t36 = k->c * (t34 - t19 + p0 * t30) + k->m_q * t31;
-    const double t37 = k->n_p * t7 + (k->d * (t17 - t32 + p0 * t31) - k->n_r * t30);
-    const double t38 = p0 * p0;
-    const double t39 = t14 - k->m_alpha - k->c * t38;
-    const double t40 = p0 * (k->m_q + k->c * k->y_beta);
-    const double t41 = p0 * (k->n_r + k->d * k->z_alpha);
-    const double t42 = t9 - k->d * t38;
-    return t39 * t42 + t40 * t41 - ((t7 * (p0 * k->l_r) + k->e * (k->z_alpha * t35 - p0 * t33)) *
-        (t36 * t42 + t37 * t40) + (t7 * (k->l_beta + k->y_beta * k->l_r) - k->e * (p0 * t35 +
-        k->y_beta * t33)) * (t37 * t39 - t36 * t41)) / (k->l_p * (t7 * t7) - t7 * (k->l_r * t30) +
-        k->e * (t31 * t35 + t30 * t33));
+    const double t32 = t18 * t29 - t17;
+    const double t33 = t19 - t20 * t29;
+    const double t34 = k->m_q * t31 - k->c * t33 + t0 * t30;
+    const double t35 = k->n_p * t7 - k->d * t32 + t1 * t31 - k->n_r * t30;
+    const double t36 = p0 * k->e;
+    const double t37 = p0 * p0;
+    const double t38 = t14 - k->m_alpha - k->c * t37;
+    const double t39 = p0 * (k->m_q + k->c * k->y_beta);
+    const double t40 = p0 * (k->n_r + k->d * k->z_alpha);
+    const double t41 = t9 - k->d * t37;
+    return t38 * t41 + t39 * t40 - ((t7 * (p0 * k->l_r) + t33 * (k->e * k->z_alpha) - t32 * t36) *
+        (t34 * t41 + t35 * t39) + (t7 * (k->l_beta + k->y_beta * k->l_r) - t33 * t36 - t32 * (k->e *
+        k->y_beta)) * (t35 * t38 - t34 * t40)) / (k->l_p * (t7 * t7) + k->e * (t31 * t33) - k->l_r *
+        (t7 * t30) + k->e * (t30 * t32));
 }
 
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -560,26 +559,29 @@ ROLL_CRITERION_API double rc_det_j5(const struct rc_derivatives *k, double p0, d
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 23 add/sub, 42 mul, 1 div, 0 neg, 0 libm (66 operations); straight-line, no branches.
+/// Cost after CSE: 23 add/sub, 44 mul, 1 div, 0 neg, 0 libm (68 operations); straight-line, no branches.
 /// Rust: `roll_criterion::zero_sideslip_det_k`, bit-identical.
 ROLL_CRITERION_API double rc_zero_sideslip_det_k(const struct rc_derivatives *k, double p0,
     double delta_e)
 {
-    const double t0 = delta_e * k->m_delta_e;
-    const double t1 = k->z_alpha * k->m_q;
-    const double t2 = t1 - (k->m_alpha + p0 * (p0 * k->c));
-    const double t3 = k->z_alpha * t0;
-    const double t4 = p0 * t0;
-    const double t5 = k->c * (t4 + t4);
-    const double t6 = k->n_p * t2 + (k->n_r * t0 + k->d * t3);
-    const double t7 = p0 * p0;
-    const double t8 = t1 - k->m_alpha - k->c * t7;
-    const double t9 = p0 * (k->m_q + k->c * k->y_beta);
-    const double t10 = p0 * (k->n_r + k->d * k->z_alpha);
-    const double t11 = k->n_beta + k->y_beta * k->n_r - k->d * t7;
-    return t8 * t11 + t9 * t10 - ((t2 * (p0 * k->l_r) + k->e * (p0 * t3 + k->z_alpha * t4)) * (t6 *
-        t9 - t5 * t11) + (t2 * (k->l_beta + k->y_beta * k->l_r) + k->e * (k->y_beta * t3 - p0 * t4))
-        * (t6 * t8 + t5 * t10)) / (k->l_p * (t2 * t2) + t2 * (k->l_r * t0) + t3 * (k->e * t0));
+    const double t0 = p0 * k->c;
+    const double t1 = delta_e * k->m_delta_e;
+    const double t2 = k->z_alpha * k->m_q;
+    const double t3 = t2 - (k->m_alpha + p0 * t0);
+    const double t4 = k->z_alpha * t1;
+    const double t5 = p0 * t1;
+    const double t6 = k->c * t5 + t0 * t1;
+    const double t7 = k->n_p * t3 + k->d * t4 + k->n_r * t1;
+    const double t8 = p0 * k->e;
+    const double t9 = p0 * p0;
+    const double t10 = t2 - k->m_alpha - k->c * t9;
+    const double t11 = p0 * (k->m_q + k->c * k->y_beta);
+    const double t12 = p0 * (k->n_r + k->d * k->z_alpha);
+    const double t13 = k->n_beta + k->y_beta * k->n_r - k->d * t9;
+    return t10 * t13 + t11 * t12 - ((t3 * (p0 * k->l_r) + t5 * (k->e * k->z_alpha) + t4 * t8) * (t7
+        * t11 - t6 * t13) + (t3 * (k->l_beta + k->y_beta * k->l_r) - t5 * t8 + t4 * (k->e *
+        k->y_beta)) * (t7 * t10 + t6 * t12)) / (k->l_p * (t3 * t3) + k->l_r * (t1 * t3) + k->e * (t1
+        * t4));
 }
 
 /// Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive
@@ -683,10 +685,10 @@ ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivati
     const double t47 = t21 * t25;
     const double t48 = t22 * t25;
     const double t49 = t21 * t28 - t23 * t25;
-    const double t50 = t21 * t29 - t23 * t28;
-    const double t51 = t23 * t29;
-    const double t52 = t22 * t28 - t9 * t25;
-    const double t53 = t22 * t29 - t9 * t28;
+    const double t50 = t22 * t28 - t9 * t25;
+    const double t51 = t21 * t29 - t23 * t28;
+    const double t52 = t22 * t29 - t9 * t28;
+    const double t53 = t23 * t29;
     const double t54 = t9 * t29;
     const double t55 = k->l_beta + k->y_beta * k->l_r;
     const double t56 = k->l_beta * k->n_r;
@@ -713,16 +715,16 @@ ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivati
     const double t76 = k->n_r * t75;
     const double t77 = t16 * t25;
     const double t78 = t19 * t25;
-    const double t79 = t20 * t25 - t16 * t28;
-    const double t80 = t14 * t25;
-    const double t81 = t19 * t28 + t80;
-    const double t82 = t14 * t28;
-    const double t83 = t19 * t29 + t82;
-    const double t84 = t14 * t29;
-    const double t85 = t15 * t25;
-    const double t86 = t20 * t28 - t16 * t29 + t85;
-    const double t87 = t15 * t28;
-    const double t88 = t20 * t29 + t87;
+    const double t79 = t14 * t25;
+    const double t80 = t15 * t25;
+    const double t81 = t20 * t25 - t16 * t28;
+    const double t82 = t79 + t19 * t28;
+    const double t83 = t14 * t28;
+    const double t84 = t15 * t28;
+    const double t85 = t80 + t20 * t28 - t16 * t29;
+    const double t86 = t83 + t19 * t29;
+    const double t87 = t84 + t20 * t29;
+    const double t88 = t14 * t29;
     const double t89 = t15 * t29;
     const double t90 = k->m_alpha * t55;
     const double t91 = k->d * (k->z_alpha * (k->m_q * t55) - t90) + k->e * (k->y_beta * (k->n_p *
@@ -768,10 +770,10 @@ ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivati
     const double t130 = k->m_q * t129;
     const double t131 = t8 * t25;
     const double t132 = t13 * t25;
-    const double t133 = t80 + t8 * t28;
-    const double t134 = t82 + t8 * t29;
-    const double t135 = t85 + t13 * t28;
-    const double t136 = t87 + t13 * t29;
+    const double t133 = t79 + t8 * t28;
+    const double t134 = t80 + t13 * t28;
+    const double t135 = t83 + t8 * t29;
+    const double t136 = t84 + t13 * t29;
     const double t137 = k->m_q * t58;
     const double t138 = t137 - k->d * t90;
     const double t139 = k->l_beta * t29;
@@ -785,10 +787,10 @@ ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivati
     const double t147 = k->e * (k->m_alpha * (k->d * k->y_beta) - k->m_q * k->n_beta);
     const double t148 = t1 * t25;
     const double t149 = t3 * t25;
-    const double t150 = t3 * t28;
-    const double t151 = t3 * t29;
-    const double t152 = t1 * t28 - t5 * t25;
-    const double t153 = t1 * t29 - t5 * t28;
+    const double t150 = t1 * t28 - t5 * t25;
+    const double t151 = t3 * t28;
+    const double t152 = t1 * t29 - t5 * t28;
+    const double t153 = t3 * t29;
     const double t154 = t5 * t29;
     const double t155 = k->z_alpha * t137 + k->m_alpha * (t56 - t57);
     const double t156 = k->d * (k->l_r * k->m_alpha - k->l_beta * t17);
@@ -808,34 +810,34 @@ ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivati
         t158 * t165) * t167;
     result.v[1] = (t47 * t59 + t65 * t74 + t78 * t91 - t93 * t106 - t113 * t128 + t131 * t138 + t141
         * t145 - t8 * t16 * t147 - t149 * t155 + t1 * t21 * t157 + t159 * t165) * t167;
-    result.v[2] = (t33 * t42 + t30 * t45 + t48 * t59 + (t68 * t74 + t61 * t76) + (t79 * t91 - t77 *
+    result.v[2] = (t33 * t42 + t30 * t45 + t48 * t59 + (t68 * t74 + t61 * t76) + (t81 * t91 - t77 *
         t92) + t94 * t106 + (t117 * t128 - t108 * t130) + t132 * t138 + (t142 * t145 + t140 * t146)
-        + (t8 * t19 - t13 * t16) * t147 + (t152 * t155 + t148 * t156) + (t1 * t22 - t3 * t21) * t157
+        + (t8 * t19 - t13 * t16) * t147 + (t150 * t155 + t148 * t156) + (t1 * t22 - t3 * t21) * t157
         + (t160 * t165 + t158 * t166)) * t167;
-    result.v[3] = (t49 * t59 - t47 * t60 + (t65 * t76 - t70 * t74) + (t81 * t91 + t78 * t92) + (t95
+    result.v[3] = (t49 * t59 - t47 * t60 + (t65 * t76 - t70 * t74) + (t82 * t91 + t78 * t92) + (t95
         * t106 - t93 * t107) + (t120 * t128 + t113 * t130) + (t133 * t138 - t131 * t139) + (t143 *
-        t145 + t141 * t146) + (t8 * t20 + t13 * t19 - t111) * t147 - (t150 * t155 + t149 * t156) -
+        t145 + t141 * t146) + (t8 * t20 + t13 * t19 - t111) * t147 - (t151 * t155 + t149 * t156) -
         (t1 * t23 + t3 * t22 + t5 * t21) * t157 + (t161 * t165 - t159 * t166)) * t167;
-    result.v[4] = (t35 * t42 + t33 * t45 + t30 * t46 + (t52 * t59 - t48 * t60) + (t71 * t74 + t68 *
-        t76) + (t86 * t91 + t79 * t92) + (t97 * t106 + t94 * t107) + (t123 * t128 - t117 * t130) +
-        (t135 * t138 - t132 * t139) + (t144 * t145 + t142 * t146) + (t115 + (t8 * t14 + t13 * t20) -
-        t112) * t147 + (t153 * t155 + t152 * t156) + (t3 * t23 - t1 * t9 - t5 * t22) * t157 + (t162
+    result.v[4] = (t35 * t42 + t33 * t45 + t30 * t46 + (t50 * t59 - t48 * t60) + (t71 * t74 + t68 *
+        t76) + (t85 * t91 + t81 * t92) + (t97 * t106 + t94 * t107) + (t123 * t128 - t117 * t130) +
+        (t134 * t138 - t132 * t139) + (t144 * t145 + t142 * t146) + (t115 + (t8 * t14 + t13 * t20) -
+        t112) * t147 + (t152 * t155 + t150 * t156) + (t3 * t23 - t1 * t9 - t5 * t22) * t157 + (t162
         * t165 - t160 * t166)) * t167;
-    result.v[5] = (t50 * t59 - t49 * t60 + (t72 * t74 - t70 * t76) + (t83 * t91 + t81 * t92) + (t101
-        * t106 + t95 * t107) + (t124 * t128 - t120 * t130) + (t134 * t138 - t133 * t139) + (t143 *
-        t146 - t104 * t145) + (t116 + (t118 + (t8 * t15 + t13 * t14))) * t147 - (t151 * t155 + t150
+    result.v[5] = (t51 * t59 - t49 * t60 + (t72 * t74 - t70 * t76) + (t86 * t91 + t82 * t92) + (t101
+        * t106 + t95 * t107) + (t124 * t128 - t120 * t130) + (t135 * t138 - t133 * t139) + (t143 *
+        t146 - t104 * t145) + (t116 + (t118 + (t8 * t15 + t13 * t14))) * t147 - (t153 * t155 + t151
         * t156) + (t3 * t9 + t5 * t23) * t157 - (t163 * t165 + t161 * t166)) * t167;
-    result.v[6] = (t36 * t42 + t35 * t45 + t33 * t46 + (t53 * t59 - t52 * t60) + (t73 * t74 + t71 *
-        t76) + (t88 * t91 + t86 * t92) + (t103 * t106 + t97 * t107) + (t125 * t128 - t123 * t130) +
-        (t136 * t138 - t135 * t139) + (t144 * t146 - t105 * t145) + (t119 + (t121 + t13 * t15)) *
-        t147 + (t153 * t156 - t154 * t155) + t5 * t9 * t157 - (t164 * t165 + t162 * t166)) * t167;
-    result.v[7] = (t72 * t76 - (t51 * t59 + t50 * t60) + (t84 * t91 + t83 * t92) + (t101 * t107 -
-        t104 * t106) + (t126 * t128 - t124 * t130) + (t84 * t138 - t134 * t139) - t104 * t146 + t126
-        * t147 - t151 * t156 + t163 * t166) * t167;
-    result.v[8] = (t37 * t42 + t36 * t45 + t35 * t46 - (t54 * t59 + t53 * t60) + t73 * t76 + (t89 *
-        t91 + t88 * t92) + (t103 * t107 - t105 * t106) + (t127 * t128 - t125 * t130) + (t89 * t138 -
+    result.v[6] = (t36 * t42 + t35 * t45 + t33 * t46 + (t52 * t59 - t50 * t60) + (t73 * t74 + t71 *
+        t76) + (t87 * t91 + t85 * t92) + (t103 * t106 + t97 * t107) + (t125 * t128 - t123 * t130) +
+        (t136 * t138 - t134 * t139) + (t144 * t146 - t105 * t145) + (t119 + (t121 + t13 * t15)) *
+        t147 + (t152 * t156 - t154 * t155) + t5 * t9 * t157 - (t164 * t165 + t162 * t166)) * t167;
+    result.v[7] = (t72 * t76 - (t53 * t59 + t51 * t60) + (t88 * t91 + t86 * t92) + (t101 * t107 -
+        t104 * t106) + (t126 * t128 - t124 * t130) + (t88 * t138 - t135 * t139) - t104 * t146 + t126
+        * t147 - t153 * t156 + t163 * t166) * t167;
+    result.v[8] = (t37 * t42 + t36 * t45 + t35 * t46 - (t54 * t59 + t52 * t60) + t73 * t76 + (t89 *
+        t91 + t87 * t92) + (t103 * t107 - t105 * t106) + (t127 * t128 - t125 * t130) + (t89 * t138 -
         t136 * t139) - t105 * t146 + t127 * t147 - t154 * t156 + t164 * t166) * t167;
-    result.v[9] = (t51 * t60 + t84 * t92 - t104 * t107 - t126 * t130 - t84 * t139) * t167;
+    result.v[9] = (t53 * t60 + t88 * t92 - t104 * t107 - t126 * t130 - t88 * t139) * t167;
     result.v[10] = (t37 * t45 + t36 * t46 + t54 * t60 + t89 * t92 - t105 * t107 - t127 * t130 - t89
         * t139) * t167;
     result.v[11] = 0.0;
@@ -1314,7 +1316,7 @@ ROLL_CRITERION_API double rc_hopf_omega_squared(const struct rc_derivatives *k, 
 //   jacobian5                              1       6       0       5       0      12
 //   residual_denominator                  25      41       1       0       0      67
 //   stiffness                             38      65       2       0       0     105
-//   det_k                                 40      71       1       0       0     112
+//   det_k                                 40      68       1       0       0     109
 //   det_j5                                44      63       1       0       0     108
 //   zero_sideslip_det_k                   17      36       1       0       0      54
 //   divergence_biquadratic                 0       0       0       0       0       0
@@ -1555,7 +1557,7 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_a_stiffness(double p0, double
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 40 add/sub, 71 mul, 1 div, 0 neg, 0 libm (112 operations); straight-line, no branches.
+/// Cost after CSE: 40 add/sub, 68 mul, 1 div, 0 neg, 0 libm (109 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::det_k`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_a_det_k(double p0, double delta_e, double delta_r)
 {
@@ -1575,17 +1577,17 @@ ROLL_CRITERION_API double rc_aircraft_a_det_k(double p0, double delta_e, double 
     const double t12 = t2 * (-11.220010120064 - p0 * t9) - delta_r * (3.0076 * t7 + p0 * t10);
     const double t13 = delta_r * (-0.3046007052 - p0 * t6 - 0.754697232) - t2 * (p0 * 3.716 -
         (3.0076 * (t1 * 0.0558) + p0 * t5));
-    const double t14 = 1.815 * t11 - 0.959 * t13 - 0.959 * (p0 * t8);
-    const double t15 = 0.786 * t12 + t8 * 0.2608 + 0.786 * (p0 * t11);
-    const double t16 = p0 * p0;
-    const double t17 = 18.983834 - 0.959 * t16;
-    const double t18 = p0 * 1.8685122;
-    const double t19 = p0 * 2.6247736;
-    const double t20 = 3.73055264 - 0.786 * t16;
-    return t17 * t20 + t18 * t19 - ((t4 * (p0 * 1.5207) - (t13 * 2.120358 + 0.705 * (p0 * t12))) *
-        (t14 * t20 + t15 * t18) + (t12 * 0.039339 - 0.705 * (p0 * t13) - t4 * 110.53485506) * (t14 *
-        t19 - t15 * t17)) / (t4 * (t8 * 1.5207) - 21.7529 * (t4 * t4) - (0.705 * (t11 * t13) + 0.705
-        * (t8 * t12)));
+    const double t14 = 1.815 * t11 - 0.959 * t13 - t0 * t8;
+    const double t15 = 0.786 * t12 + t1 * t11 + t8 * 0.2608;
+    const double t16 = p0 * 0.705;
+    const double t17 = p0 * p0;
+    const double t18 = 18.983834 - 0.959 * t17;
+    const double t19 = p0 * 1.8685122;
+    const double t20 = p0 * 2.6247736;
+    const double t21 = 3.73055264 - 0.786 * t17;
+    return t18 * t21 + t19 * t20 - ((t4 * (p0 * 1.5207) - t13 * 2.120358 - t12 * t16) * (t14 * t21 +
+        t15 * t19) + (t12 * 0.039339 - (t4 * 110.53485506 + t13 * t16)) * (t14 * t20 - t15 * t18)) /
+        (1.5207 * (t4 * t8) - (21.7529 * (t4 * t4) + 0.705 * (t11 * t13)) - 0.705 * (t8 * t12));
 }
 
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -1636,21 +1638,22 @@ ROLL_CRITERION_API double rc_aircraft_a_det_j5(double p0, double delta_e, double
 /// Rust: `roll_criterion::aircraft_a::zero_sideslip_det_k`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_a_zero_sideslip_det_k(double p0, double delta_e)
 {
-    const double t0 = delta_e * 33.268;
-    const double t1 = 5.458794 - (p0 * (p0 * 0.959) - 13.52504);
-    const double t2 = t0 * 3.0076;
-    const double t3 = p0 * t0;
-    const double t4 = 0.959 * t3;
-    const double t5 = t4 + t4;
-    const double t6 = t2 * 0.786 + t0 * 0.2608;
-    const double t7 = p0 * p0;
-    const double t8 = 18.983834 - 0.959 * t7;
-    const double t9 = p0 * 1.8685122;
-    const double t10 = p0 * 2.6247736;
-    const double t11 = 3.73055264 - 0.786 * t7;
-    return t8 * t11 + t9 * t10 + ((t1 * (p0 * 1.5207) + (t3 * 2.120358 + p0 * t2 * 0.705)) * (t5 *
-        t11 - t6 * t9) + (0.705 * (p0 * t3) - t2 * 0.039339 - t1 * 110.53485506) * (t6 * t8 + t5 *
-        t10)) / (t1 * t1 * 21.7529 + t1 * (t0 * 1.5207) + 0.705 * (t0 * t2));
+    const double t0 = p0 * 0.959;
+    const double t1 = delta_e * 33.268;
+    const double t2 = 5.458794 - (p0 * t0 - 13.52504);
+    const double t3 = t1 * 3.0076;
+    const double t4 = p0 * t1;
+    const double t5 = 0.959 * t4 + t0 * t1;
+    const double t6 = t3 * 0.786 + t1 * 0.2608;
+    const double t7 = p0 * 0.705;
+    const double t8 = p0 * p0;
+    const double t9 = 18.983834 - 0.959 * t8;
+    const double t10 = p0 * 1.8685122;
+    const double t11 = p0 * 2.6247736;
+    const double t12 = 3.73055264 - 0.786 * t8;
+    return t9 * t12 + t10 * t11 + ((t2 * (p0 * 1.5207) + t4 * 2.120358 + t3 * t7) * (t5 * t12 - t6 *
+        t10) + (t4 * t7 - t2 * 110.53485506 - t3 * 0.039339) * (t6 * t9 + t5 * t11)) / (t2 * t2 *
+        21.7529 + 1.5207 * (t1 * t2) + 0.705 * (t1 * t3));
 }
 
 /// Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive
@@ -1709,13 +1712,13 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_a_jump_polynomial(double delta_
     const double t11 = delta_r * 1.815;
     const double t12 = t9 * 70.82019204602176;
     const double t13 = t10 * 70.82019204602176;
-    const double t14 = t9 * 13.59447201192208 - t11 * 70.82019204602176;
-    const double t15 = t11 * 13.59447201192208 - t9 * 0.753774;
-    const double t16 = t11 * 0.753774;
-    const double t17 = t2 * 70.82019204602176;
-    const double t18 = t10 * 13.59447201192208 + t17;
-    const double t19 = t2 * 13.59447201192208;
-    const double t20 = t10 * 0.753774 + t19;
+    const double t14 = t2 * 70.82019204602176;
+    const double t15 = t9 * 13.59447201192208 - t11 * 70.82019204602176;
+    const double t16 = t14 + t10 * 13.59447201192208;
+    const double t17 = t2 * 13.59447201192208;
+    const double t18 = t11 * 13.59447201192208 - t9 * 0.753774;
+    const double t19 = t17 + t10 * 0.753774;
+    const double t20 = t11 * 0.753774;
     const double t21 = t2 * 0.753774;
     const double t22 = t9 * t9;
     const double t23 = t9 * t10;
@@ -1732,13 +1735,13 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_a_jump_polynomial(double delta_
     const double t34 = t2 * t2;
     const double t35 = t6 * 70.82019204602176;
     const double t36 = t7 * 70.82019204602176;
-    const double t37 = t6 * 13.59447201192208 - t8 * 70.82019204602176;
-    const double t38 = t8 * 13.59447201192208 - t6 * 0.753774;
-    const double t39 = t8 * 0.753774;
-    const double t40 = t5 * 70.82019204602176;
-    const double t41 = t7 * 13.59447201192208 + t40;
-    const double t42 = t5 * 13.59447201192208;
-    const double t43 = t7 * 0.753774 + t42;
+    const double t37 = t5 * 70.82019204602176;
+    const double t38 = t6 * 13.59447201192208 - t8 * 70.82019204602176;
+    const double t39 = t37 + t7 * 13.59447201192208;
+    const double t40 = t5 * 13.59447201192208;
+    const double t41 = t8 * 13.59447201192208 - t6 * 0.753774;
+    const double t42 = t40 + t7 * 0.753774;
+    const double t43 = t8 * 0.753774;
     const double t44 = t5 * 0.753774;
     const double t45 = t6 * t9;
     const double t46 = t2 * t6;
@@ -1768,10 +1771,10 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_a_jump_polynomial(double delta_
     const double t70 = t5 * t5;
     const double t71 = t3 * 70.82019204602176;
     const double t72 = t4 * 70.82019204602176;
-    const double t73 = t4 * 13.59447201192208;
-    const double t74 = t4 * 0.753774;
-    const double t75 = t40 + t3 * 13.59447201192208;
-    const double t76 = t42 + t3 * 0.753774;
+    const double t73 = t37 + t3 * 13.59447201192208;
+    const double t74 = t4 * 13.59447201192208;
+    const double t75 = t40 + t3 * 0.753774;
+    const double t76 = t4 * 0.753774;
     const double t77 = t3 * t9;
     const double t78 = t4 * t9 - t3 * t10;
     const double t79 = t51 + (t4 * t10 - t3 * t11);
@@ -1779,10 +1782,10 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_a_jump_polynomial(double delta_
     const double t81 = t55 - t2 * t4;
     const double t82 = t0 * 70.82019204602176;
     const double t83 = t1 * 70.82019204602176;
-    const double t84 = t1 * 13.59447201192208;
-    const double t85 = t1 * 0.753774;
-    const double t86 = t17 + t0 * 13.59447201192208;
-    const double t87 = t19 + t0 * 0.753774;
+    const double t84 = t14 + t0 * 13.59447201192208;
+    const double t85 = t1 * 13.59447201192208;
+    const double t86 = t17 + t0 * 0.753774;
+    const double t87 = t1 * 0.753774;
     const double t88 = t0 * t6;
     const double t89 = t1 * t6 - t0 * t7;
     const double t90 = t0 * t8 - t1 * t7 - t46;
@@ -1797,45 +1800,45 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_a_jump_polynomial(double delta_
         35.57139094306445 - t3 * t6 * 5.17310107716816 + t83 * 439.5600225423592 - t0 * t9 *
         10.042969019112 - t89 * 49.73346863652;
     result.v[2] = 4449538.442178107 + t13 * 272.79322540195807 - (t29 * 7.58579274212467 + t22 *
-        0.176325576) - (t37 * 1649.3230169830567 + t35 * 81.084922887) - t47 * 9.828632421610132 +
+        0.176325576) - (t38 * 1649.3230169830567 + t35 * 81.084922887) - t47 * 9.828632421610132 +
         (t65 * 0.586988765940636 + t58 * 1.00574595) + t72 * 1133.0355257374322 - (t79 *
         35.57139094306445 + t77 * 2.51236902) + (t3 * t7 + t4 * t6) * 5.17310107716816 + (t82 *
-        266.561825136888 - t86 * 439.5600225423592) - (t0 * t10 + t1 * t9) * 10.042969019112 + (t88
+        266.561825136888 - t84 * 439.5600225423592) - (t0 * t10 + t1 * t9) * 10.042969019112 + (t88
         * 7.4946304152 - t90 * 49.73346863652);
-    result.v[3] = t12 * 1.1462641218 - t14 * 272.79322540195807 - (t31 * 7.58579274212467 + t26 *
-        0.176325576) + (t41 * 1649.3230169830567 + t36 * 81.084922887) + (t45 * 1.06282134 - t49 *
-        9.828632421610132) + (t67 * 0.586988765940636 - t62 * 1.00574595) + (t75 *
+    result.v[3] = t12 * 1.1462641218 - t15 * 272.79322540195807 - (t31 * 7.58579274212467 + t26 *
+        0.176325576) + (t39 * 1649.3230169830567 + t36 * 81.084922887) + (t45 * 1.06282134 - t49 *
+        9.828632421610132) + (t67 * 0.586988765940636 - t62 * 1.00574595) + (t73 *
         1133.0355257374322 + t71 * 83.2543383) + (t78 * 2.51236902 - t80 * 35.57139094306445) + (t61
-        - (t3 * t8 + t4 * t7)) * 5.17310107716816 + (t83 * 266.561825136888 - t84 *
+        - (t3 * t8 + t4 * t7)) * 5.17310107716816 + (t83 * 266.561825136888 - t85 *
         439.5600225423592) - (t0 * t11 + t1 * t10 - t25) * 10.042969019112 + (t89 * 7.4946304152 -
         t91 * 49.73346863652);
-    result.v[4] = t13 * 1.1462641218 - t18 * 272.79322540195807 - 1100836.5763739955 - (t32 *
-        7.58579274212467 + t29 * 0.176325576) + (t37 * 81.084922887 - t38 * 1649.3230169830567) +
+    result.v[4] = t13 * 1.1462641218 - t16 * 272.79322540195807 - 1100836.5763739955 - (t32 *
+        7.58579274212467 + t29 * 0.176325576) + (t38 * 81.084922887 - t41 * 1649.3230169830567) +
         (t47 * 1.06282134 - t52 * 9.828632421610132) + (t68 * 0.586988765940636 + t65 * 1.00574595)
-        - (t73 * 1133.0355257374322 + t72 * 83.2543383) + (t79 * 2.51236902 - t81 *
-        35.57139094306445) + (t4 * t8 - t3 * t5 - t64) * 5.17310107716816 + (t87 * 439.5600225423592
-        - t86 * 266.561825136888) - (t1 * t11 - t0 * t2 - t28) * 10.042969019112 + (t90 *
+        - (t74 * 1133.0355257374322 + t72 * 83.2543383) + (t79 * 2.51236902 - t81 *
+        35.57139094306445) + (t4 * t8 - t3 * t5 - t64) * 5.17310107716816 + (t86 * 439.5600225423592
+        - t84 * 266.561825136888) - (t1 * t11 - t0 * t2 - t28) * 10.042969019112 + (t90 *
         7.4946304152 - t92 * 49.73346863652);
-    result.v[5] = t33 * 7.58579274212467 - t31 * 0.176325576 - (t15 * 272.79322540195807 + t14 *
-        1.1462641218) - (t43 * 1649.3230169830567 + t41 * 81.084922887) + (t49 * 1.06282134 - t54 *
-        9.828632421610132) + (t69 * 0.586988765940636 + t67 * 1.00574595) - (t76 *
-        1133.0355257374322 + t75 * 83.2543383) + (t57 * 35.57139094306445 + t80 * 2.51236902) + (t66
-        + t4 * t5) * 5.17310107716816 + (t85 * 439.5600225423592 - t84 * 266.561825136888) + (t30 +
+    result.v[5] = t33 * 7.58579274212467 - t31 * 0.176325576 - (t18 * 272.79322540195807 + t15 *
+        1.1462641218) - (t42 * 1649.3230169830567 + t39 * 81.084922887) + (t49 * 1.06282134 - t54 *
+        9.828632421610132) + (t69 * 0.586988765940636 + t67 * 1.00574595) - (t75 *
+        1133.0355257374322 + t73 * 83.2543383) + (t57 * 35.57139094306445 + t80 * 2.51236902) + (t66
+        + t4 * t5) * 5.17310107716816 + (t87 * 439.5600225423592 - t85 * 266.561825136888) + (t30 +
         t1 * t2) * 10.042969019112 + (t57 * 49.73346863652 + t91 * 7.4946304152);
-    result.v[6] = 149369.0008407279 + (t20 * 272.79322540195807 - t18 * 1.1462641218) - (t34 *
-        7.58579274212467 + t32 * 0.176325576) + (t39 * 1649.3230169830567 + t38 * 81.084922887) +
+    result.v[6] = 149369.0008407279 + (t19 * 272.79322540195807 - t16 * 1.1462641218) - (t34 *
+        7.58579274212467 + t32 * 0.176325576) + (t43 * 1649.3230169830567 + t41 * 81.084922887) +
         (t52 * 1.06282134 - t56 * 9.828632421610132) + (t70 * 0.586988765940636 + t68 * 1.00574595)
-        + (t74 * 1133.0355257374322 + t73 * 83.2543383) + t81 * 2.51236902 + t70 * 5.17310107716816
-        + (t87 * 266.561825136888 - t21 * 439.5600225423592) - t34 * 10.042969019112 + t92 *
+        + (t76 * 1133.0355257374322 + t74 * 83.2543383) + t81 * 2.51236902 + t70 * 5.17310107716816
+        + (t86 * 266.561825136888 - t21 * 439.5600225423592) - t34 * 10.042969019112 + t92 *
         7.4946304152;
-    result.v[7] = t16 * 272.79322540195807 - t15 * 1.1462641218 + t33 * 0.176325576 + (t44 *
-        1649.3230169830567 + t43 * 81.084922887) + (t57 * 9.828632421610132 + t54 * 1.06282134) +
-        t69 * 1.00574595 + (t44 * 1133.0355257374322 + t76 * 83.2543383) - t57 * 2.51236902 + t85 *
+    result.v[7] = t20 * 272.79322540195807 - t18 * 1.1462641218 + t33 * 0.176325576 + (t44 *
+        1649.3230169830567 + t42 * 81.084922887) + (t57 * 9.828632421610132 + t54 * 1.06282134) +
+        t69 * 1.00574595 + (t44 * 1133.0355257374322 + t75 * 83.2543383) - t57 * 2.51236902 + t87 *
         266.561825136888 - t57 * 7.4946304152;
-    result.v[8] = t20 * 1.1462641218 - t21 * 272.79322540195807 - 11716.743001494644 - t34 *
-        0.176325576 - t39 * 81.084922887 + t56 * 1.06282134 + t70 * 1.00574595 - t74 * 83.2543383 -
+    result.v[8] = t19 * 1.1462641218 - t21 * 272.79322540195807 - 11716.743001494644 - t34 *
+        0.176325576 - t43 * 81.084922887 + t56 * 1.06282134 + t70 * 1.00574595 - t76 * 83.2543383 -
         t21 * 266.561825136888;
-    result.v[9] = t16 * 1.1462641218 - t44 * 81.084922887 - t57 * 1.06282134 - t44 * 83.2543383;
+    result.v[9] = t20 * 1.1462641218 - t44 * 81.084922887 - t57 * 1.06282134 - t44 * 83.2543383;
     result.v[10] = 504.0609683703337 - t21 * 1.1462641218;
     result.v[11] = 0.0;
     result.v[12] = -9.316239033021978;
@@ -2049,7 +2052,7 @@ ROLL_CRITERION_API double rc_aircraft_a_hopf_omega_squared(double p0, double del
 //   jacobian5                              1       6       0       5       0      12
 //   residual_denominator                  25      41       1       0       0      67
 //   stiffness                             38      65       2       0       0     105
-//   det_k                                 40      71       1       0       0     112
+//   det_k                                 40      68       1       0       0     109
 //   det_j5                                44      63       1       0       0     108
 //   zero_sideslip_det_k                   17      36       1       0       0      54
 //   divergence_biquadratic                 0       0       0       0       0       0
@@ -2290,7 +2293,7 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_b_stiffness(double p0, double
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 40 add/sub, 71 mul, 1 div, 0 neg, 0 libm (112 operations); straight-line, no branches.
+/// Cost after CSE: 40 add/sub, 68 mul, 1 div, 0 neg, 0 libm (109 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::det_k`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_b_det_k(double p0, double delta_e, double delta_r)
 {
@@ -2310,17 +2313,17 @@ ROLL_CRITERION_API double rc_aircraft_b_det_k(double p0, double delta_e, double 
     const double t12 = t2 * (-7.59664374 - p0 * t9) - delta_r * (1.329 * t7 + p0 * t10);
     const double t13 = delta_r * (-0.212033976 - p0 * t6 - 4.54328) - t2 * (p0 * 5.67 - (1.329 * (t1
         * 0.196) + p0 * t5));
-    const double t14 = 0.814 * t11 - 0.949 * t13 - 0.949 * (p0 * t8);
-    const double t15 = 0.716 * t12 + t8 * 0.235 + 0.716 * (p0 * t11);
-    const double t16 = p0 * p0;
-    const double t17 = 24.261806 - 0.949 * t16;
-    const double t18 = p0 * 1.000004;
-    const double t19 = p0 * 1.186564;
-    const double t20 = 5.71606 - 0.716 * t16;
-    return t17 * t20 + t18 * t19 - ((t4 * (p0 * 0.126) - (t13 * 0.966183 + 0.727 * (p0 * t12))) *
-        (t14 * t20 + t15 * t18) + (t12 * 0.142492 - 0.727 * (p0 * t13) - t4 * 10.014696) * (t14 *
-        t19 - t15 * t17)) / (t4 * (t8 * 0.126) - 3.933 * (t4 * t4) - (0.727 * (t11 * t13) + 0.727 *
-        (t8 * t12)));
+    const double t14 = 0.814 * t11 - 0.949 * t13 - t0 * t8;
+    const double t15 = 0.716 * t12 + t1 * t11 + t8 * 0.235;
+    const double t16 = p0 * 0.727;
+    const double t17 = p0 * p0;
+    const double t18 = 24.261806 - 0.949 * t17;
+    const double t19 = p0 * 1.000004;
+    const double t20 = p0 * 1.186564;
+    const double t21 = 5.71606 - 0.716 * t17;
+    return t18 * t21 + t19 * t20 - ((t4 * (p0 * 0.126) - t13 * 0.966183 - t12 * t16) * (t14 * t21 +
+        t15 * t19) + (t12 * 0.142492 - (t4 * 10.014696 + t13 * t16)) * (t14 * t20 - t15 * t18)) /
+        (0.126 * (t4 * t8) - (3.933 * (t4 * t4) + 0.727 * (t11 * t13)) - 0.727 * (t8 * t12));
 }
 
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -2371,21 +2374,22 @@ ROLL_CRITERION_API double rc_aircraft_b_det_j5(double p0, double delta_e, double
 /// Rust: `roll_criterion::aircraft_b::zero_sideslip_det_k`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_b_zero_sideslip_det_k(double p0, double delta_e)
 {
-    const double t0 = delta_e * 28.37;
-    const double t1 = 1.081806 - (p0 * (p0 * 0.949) - 23.18);
-    const double t2 = t0 * 1.329;
-    const double t3 = p0 * t0;
-    const double t4 = 0.949 * t3;
-    const double t5 = t4 + t4;
-    const double t6 = t2 * 0.716 + t0 * 0.235;
-    const double t7 = p0 * p0;
-    const double t8 = 24.261806 - 0.949 * t7;
-    const double t9 = p0 * 1.000004;
-    const double t10 = p0 * 1.186564;
-    const double t11 = 5.71606 - 0.716 * t7;
-    return t8 * t11 + t9 * t10 + ((t1 * (p0 * 0.126) + (t3 * 0.966183 + p0 * t2 * 0.727)) * (t5 *
-        t11 - t6 * t9) + (0.727 * (p0 * t3) - t2 * 0.142492 - t1 * 10.014696) * (t6 * t8 + t5 *
-        t10)) / (t1 * t1 * 3.933 + t1 * (t0 * 0.126) + 0.727 * (t0 * t2));
+    const double t0 = p0 * 0.949;
+    const double t1 = delta_e * 28.37;
+    const double t2 = 1.081806 - (p0 * t0 - 23.18);
+    const double t3 = t1 * 1.329;
+    const double t4 = p0 * t1;
+    const double t5 = 0.949 * t4 + t0 * t1;
+    const double t6 = t3 * 0.716 + t1 * 0.235;
+    const double t7 = p0 * 0.727;
+    const double t8 = p0 * p0;
+    const double t9 = 24.261806 - 0.949 * t8;
+    const double t10 = p0 * 1.000004;
+    const double t11 = p0 * 1.186564;
+    const double t12 = 5.71606 - 0.716 * t8;
+    return t9 * t12 + t10 * t11 + ((t2 * (p0 * 0.126) + t4 * 0.966183 + t3 * t7) * (t5 * t12 - t6 *
+        t10) + (t4 * t7 - t2 * 10.014696 - t3 * 0.142492) * (t6 * t9 + t5 * t11)) / (t2 * t2 * 3.933
+        + 0.126 * (t1 * t2) + 0.727 * (t1 * t3));
 }
 
 /// Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive
@@ -2444,13 +2448,13 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_b_jump_polynomial(double delta_
     const double t11 = delta_r * 0.814;
     const double t12 = t9 * 138.68193880436;
     const double t13 = t10 * 138.68193880436;
-    const double t14 = t9 * 21.609425289744 - t11 * 138.68193880436;
-    const double t15 = t11 * 21.609425289744 - t9 * 0.679484;
-    const double t16 = t11 * 0.679484;
-    const double t17 = t2 * 138.68193880436;
-    const double t18 = t10 * 21.609425289744 + t17;
-    const double t19 = t2 * 21.609425289744;
-    const double t20 = t10 * 0.679484 + t19;
+    const double t14 = t2 * 138.68193880436;
+    const double t15 = t9 * 21.609425289744 - t11 * 138.68193880436;
+    const double t16 = t14 + t10 * 21.609425289744;
+    const double t17 = t2 * 21.609425289744;
+    const double t18 = t11 * 21.609425289744 - t9 * 0.679484;
+    const double t19 = t17 + t10 * 0.679484;
+    const double t20 = t11 * 0.679484;
     const double t21 = t2 * 0.679484;
     const double t22 = t9 * t9;
     const double t23 = t9 * t10;
@@ -2467,13 +2471,13 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_b_jump_polynomial(double delta_
     const double t34 = t2 * t2;
     const double t35 = t6 * 138.68193880436;
     const double t36 = t7 * 138.68193880436;
-    const double t37 = t6 * 21.609425289744 - t8 * 138.68193880436;
-    const double t38 = t8 * 21.609425289744 - t6 * 0.679484;
-    const double t39 = t8 * 0.679484;
-    const double t40 = t5 * 138.68193880436;
-    const double t41 = t7 * 21.609425289744 + t40;
-    const double t42 = t5 * 21.609425289744;
-    const double t43 = t7 * 0.679484 + t42;
+    const double t37 = t5 * 138.68193880436;
+    const double t38 = t6 * 21.609425289744 - t8 * 138.68193880436;
+    const double t39 = t37 + t7 * 21.609425289744;
+    const double t40 = t5 * 21.609425289744;
+    const double t41 = t8 * 21.609425289744 - t6 * 0.679484;
+    const double t42 = t40 + t7 * 0.679484;
+    const double t43 = t8 * 0.679484;
     const double t44 = t5 * 0.679484;
     const double t45 = t6 * t9;
     const double t46 = t2 * t6;
@@ -2503,10 +2507,10 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_b_jump_polynomial(double delta_
     const double t70 = t5 * t5;
     const double t71 = t3 * 138.68193880436;
     const double t72 = t4 * 138.68193880436;
-    const double t73 = t4 * 21.609425289744;
-    const double t74 = t4 * 0.679484;
-    const double t75 = t40 + t3 * 21.609425289744;
-    const double t76 = t42 + t3 * 0.679484;
+    const double t73 = t37 + t3 * 21.609425289744;
+    const double t74 = t4 * 21.609425289744;
+    const double t75 = t40 + t3 * 0.679484;
+    const double t76 = t4 * 0.679484;
     const double t77 = t3 * t9;
     const double t78 = t4 * t9 - t3 * t10;
     const double t79 = t51 + (t4 * t10 - t3 * t11);
@@ -2514,10 +2518,10 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_b_jump_polynomial(double delta_
     const double t81 = t55 - t2 * t4;
     const double t82 = t0 * 138.68193880436;
     const double t83 = t1 * 138.68193880436;
-    const double t84 = t1 * 21.609425289744;
-    const double t85 = t1 * 0.679484;
-    const double t86 = t17 + t0 * 21.609425289744;
-    const double t87 = t19 + t0 * 0.679484;
+    const double t84 = t14 + t0 * 21.609425289744;
+    const double t85 = t1 * 21.609425289744;
+    const double t86 = t17 + t0 * 0.679484;
+    const double t87 = t1 * 0.679484;
     const double t88 = t0 * t6;
     const double t89 = t1 * t6 - t0 * t7;
     const double t90 = t0 * t8 - t1 * t7 - t46;
@@ -2531,44 +2535,44 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_b_jump_polynomial(double delta_
         - t3 * t6 * 5.72030388496 + t83 * 39.62510941338 - t0 * t9 * 9.15905357189 - t89 *
         100.00934789454;
     result.v[2] = 4903748.937882921 + t13 * 10.593548621132255 - (t29 * 5.24109923903202 + t22 *
-        0.162131905) - (t37 * 173.96982183469882 + t35 * 6.714609336) - t47 * 15.720444861287776 +
+        0.162131905) - (t38 * 173.96982183469882 + t35 * 6.714609336) - t47 * 15.720444861287776 +
         (t65 * 2.475293094555232 + t58 * 0.423713048) + t72 * 164.88325852848 - (t79 * 96.3262428716
-        + t77 * 3.91186341) + (t3 * t7 + t4 * t6) * 5.72030388496 + (t82 * 11.11251889764 - t86 *
+        + t77 * 3.91186341) + (t3 * t7 + t4 * t6) * 5.72030388496 + (t82 * 11.11251889764 - t84 *
         39.62510941338) - (t0 * t10 + t1 * t9) * 9.15905357189 + (t88 * 12.06593176 - t90 *
         100.00934789454);
-    result.v[3] = t12 * 0.085614984 - t14 * 10.593548621132255 - (t31 * 5.24109923903202 + t26 *
-        0.162131905) + (t41 * 173.96982183469882 + t36 * 6.714609336) + (t45 * 0.987969736 - t49 *
-        15.720444861287776) + (t67 * 2.475293094555232 - t62 * 0.423713048) + (t75 * 164.88325852848
+    result.v[3] = t12 * 0.085614984 - t15 * 10.593548621132255 - (t31 * 5.24109923903202 + t26 *
+        0.162131905) + (t39 * 173.96982183469882 + t36 * 6.714609336) + (t45 * 0.987969736 - t49 *
+        15.720444861287776) + (t67 * 2.475293094555232 - t62 * 0.423713048) + (t73 * 164.88325852848
         + t71 * 6.78804516) + (t78 * 3.91186341 - t80 * 96.3262428716) + (t61 - (t3 * t8 + t4 * t7))
-        * 5.72030388496 + (t83 * 11.11251889764 - t84 * 39.62510941338) - (t0 * t11 + t1 * t10 -
+        * 5.72030388496 + (t83 * 11.11251889764 - t85 * 39.62510941338) - (t0 * t11 + t1 * t10 -
         t25) * 9.15905357189 + (t89 * 12.06593176 - t91 * 100.00934789454);
-    result.v[4] = t13 * 0.085614984 - t18 * 10.593548621132255 - 918295.2102800821 - (t32 *
-        5.24109923903202 + t29 * 0.162131905) + (t37 * 6.714609336 - t38 * 173.96982183469882) +
+    result.v[4] = t13 * 0.085614984 - t16 * 10.593548621132255 - 918295.2102800821 - (t32 *
+        5.24109923903202 + t29 * 0.162131905) + (t38 * 6.714609336 - t41 * 173.96982183469882) +
         (t47 * 0.987969736 - t52 * 15.720444861287776) + (t68 * 2.475293094555232 + t65 *
-        0.423713048) - (t73 * 164.88325852848 + t72 * 6.78804516) + (t79 * 3.91186341 - t81 *
-        96.3262428716) + (t4 * t8 - t3 * t5 - t64) * 5.72030388496 + (t87 * 39.62510941338 - t86 *
+        0.423713048) - (t74 * 164.88325852848 + t72 * 6.78804516) + (t79 * 3.91186341 - t81 *
+        96.3262428716) + (t4 * t8 - t3 * t5 - t64) * 5.72030388496 + (t86 * 39.62510941338 - t84 *
         11.11251889764) - (t1 * t11 - t0 * t2 - t28) * 9.15905357189 + (t90 * 12.06593176 - t92 *
         100.00934789454);
-    result.v[5] = t33 * 5.24109923903202 - t31 * 0.162131905 - (t15 * 10.593548621132255 + t14 *
-        0.085614984) - (t43 * 173.96982183469882 + t41 * 6.714609336) + (t49 * 0.987969736 - t54 *
-        15.720444861287776) + (t69 * 2.475293094555232 + t67 * 0.423713048) - (t76 * 164.88325852848
-        + t75 * 6.78804516) + (t57 * 96.3262428716 + t80 * 3.91186341) + (t66 + t4 * t5) *
-        5.72030388496 + (t85 * 39.62510941338 - t84 * 11.11251889764) + (t30 + t1 * t2) *
+    result.v[5] = t33 * 5.24109923903202 - t31 * 0.162131905 - (t18 * 10.593548621132255 + t15 *
+        0.085614984) - (t42 * 173.96982183469882 + t39 * 6.714609336) + (t49 * 0.987969736 - t54 *
+        15.720444861287776) + (t69 * 2.475293094555232 + t67 * 0.423713048) - (t75 * 164.88325852848
+        + t73 * 6.78804516) + (t57 * 96.3262428716 + t80 * 3.91186341) + (t66 + t4 * t5) *
+        5.72030388496 + (t87 * 39.62510941338 - t85 * 11.11251889764) + (t30 + t1 * t2) *
         9.15905357189 + (t57 * 100.00934789454 + t91 * 12.06593176);
-    result.v[6] = 87740.15989810045 + (t20 * 10.593548621132255 - t18 * 0.085614984) - (t34 *
-        5.24109923903202 + t32 * 0.162131905) + (t39 * 173.96982183469882 + t38 * 6.714609336) +
+    result.v[6] = 87740.15989810045 + (t19 * 10.593548621132255 - t16 * 0.085614984) - (t34 *
+        5.24109923903202 + t32 * 0.162131905) + (t43 * 173.96982183469882 + t41 * 6.714609336) +
         (t52 * 0.987969736 - t56 * 15.720444861287776) + (t70 * 2.475293094555232 + t68 *
-        0.423713048) + (t74 * 164.88325852848 + t73 * 6.78804516) + t81 * 3.91186341 + t70 *
-        5.72030388496 + (t87 * 11.11251889764 - t21 * 39.62510941338) - t34 * 9.15905357189 + t92 *
+        0.423713048) + (t76 * 164.88325852848 + t74 * 6.78804516) + t81 * 3.91186341 + t70 *
+        5.72030388496 + (t86 * 11.11251889764 - t21 * 39.62510941338) - t34 * 9.15905357189 + t92 *
         12.06593176;
-    result.v[7] = t16 * 10.593548621132255 - t15 * 0.085614984 + t33 * 0.162131905 + (t44 *
-        173.96982183469882 + t43 * 6.714609336) + (t57 * 15.720444861287776 + t54 * 0.987969736) +
-        t69 * 0.423713048 + (t44 * 164.88325852848 + t76 * 6.78804516) - t57 * 3.91186341 + t85 *
+    result.v[7] = t20 * 10.593548621132255 - t18 * 0.085614984 + t33 * 0.162131905 + (t44 *
+        173.96982183469882 + t42 * 6.714609336) + (t57 * 15.720444861287776 + t54 * 0.987969736) +
+        t69 * 0.423713048 + (t44 * 164.88325852848 + t75 * 6.78804516) - t57 * 3.91186341 + t87 *
         11.11251889764 - t57 * 12.06593176;
-    result.v[8] = t20 * 0.085614984 - t21 * 10.593548621132255 - 4499.265787898939 - t34 *
-        0.162131905 - t39 * 6.714609336 + t56 * 0.987969736 + t70 * 0.423713048 - t74 * 6.78804516 -
+    result.v[8] = t19 * 0.085614984 - t21 * 10.593548621132255 - 4499.265787898939 - t34 *
+        0.162131905 - t43 * 6.714609336 + t56 * 0.987969736 + t70 * 0.423713048 - t76 * 6.78804516 -
         t21 * 11.11251889764;
-    result.v[9] = t16 * 0.085614984 - t44 * 6.714609336 - t57 * 0.987969736 - t44 * 6.78804516;
+    result.v[9] = t20 * 0.085614984 - t44 * 6.714609336 - t57 * 0.987969736 - t44 * 6.78804516;
     result.v[10] = 117.71908761306281 - t21 * 0.085614984;
     result.v[11] = 0.0;
     result.v[12] = -1.2338479691951425;

@@ -80,7 +80,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {50.53787941202994};
-        static const double tol[1] = {2.443824151863277e-13};
+        static const double tol[1] = {2.5129496742081963e-13};
         const double r = rc_det_k(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_det_k(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
@@ -94,7 +94,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {51.6612900933818};
-        static const double tol[1] = {1.9779312194133567e-13};
+        static const double tol[1] = {2.009638827332498e-13};
         const double r = rc_zero_sideslip_det_k(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659);
         const double got[1] = {r};
         check("rc_zero_sideslip_det_k(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659)", got, want, tol, 1);
@@ -185,7 +185,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {50.53787941202994};
-        static const double tol[1] = {2.4957548961601444e-13};
+        static const double tol[1] = {2.569278017693219e-13};
         const double r = rc_aircraft_a_det_k(0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_aircraft_a_det_k(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
@@ -199,7 +199,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {51.661290093381794};
-        static const double tol[1] = {2.1110624327680248e-13};
+        static const double tol[1] = {2.146167787858728e-13};
         const double r = rc_aircraft_a_zero_sideslip_det_k(0.5, 0.03490658503988659);
         const double got[1] = {r};
         check("rc_aircraft_a_zero_sideslip_det_k(0.5, 0.03490658503988659)", got, want, tol, 1);
@@ -290,7 +290,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {89.39633977289456};
-        static const double tol[1] = {5.089197125517212e-13};
+        static const double tol[1] = {5.233944548954862e-13};
         const double r = rc_det_k(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_det_k(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
@@ -304,7 +304,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {76.50642099402414};
-        static const double tol[1] = {2.596450428967602e-13};
+        static const double tol[1] = {2.650335602585789e-13};
         const double r = rc_zero_sideslip_det_k(&rc_aircraft_a_derivatives, 1.3, -0.05);
         const double got[1] = {r};
         check("rc_zero_sideslip_det_k(&rc_aircraft_a_derivatives, 1.3, -0.05)", got, want, tol, 1);
@@ -395,7 +395,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {89.39633977289456};
-        static const double tol[1] = {5.668592632401948e-13};
+        static const double tol[1] = {5.863286064174625e-13};
         const double r = rc_aircraft_a_det_k(1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_aircraft_a_det_k(1.3, -0.05, 0.01)", got, want, tol, 1);
@@ -409,7 +409,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {76.50642099402414};
-        static const double tol[1] = {2.918641424696763e-13};
+        static const double tol[1] = {2.9774514194076096e-13};
         const double r = rc_aircraft_a_zero_sideslip_det_k(1.3, -0.05);
         const double got[1] = {r};
         check("rc_aircraft_a_zero_sideslip_det_k(1.3, -0.05)", got, want, tol, 1);
@@ -500,7 +500,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {14.99865028599726};
-        static const double tol[1] = {1.57328752287312e-13};
+        static const double tol[1] = {1.5761147809666012e-13};
         const double r = rc_det_k(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_det_k(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
@@ -605,7 +605,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {14.99865028599726};
-        static const double tol[1] = {1.774893553729242e-13};
+        static const double tol[1] = {1.7859379467820362e-13};
         const double r = rc_aircraft_a_det_k(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_a_det_k(2.45, 0.0, -0.02)", got, want, tol, 1);
@@ -975,7 +975,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {130.1010215623377};
-        static const double tol[1] = {2.3603613469285996e-13};
+        static const double tol[1] = {2.3730576152520193e-13};
         const double r = rc_det_k(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_det_k(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
@@ -989,7 +989,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {130.28109824428327};
-        static const double tol[1] = {2.2880392411676754e-13};
+        static const double tol[1] = {2.293498111804456e-13};
         const double r = rc_zero_sideslip_det_k(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659);
         const double got[1] = {r};
         check("rc_zero_sideslip_det_k(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659)", got, want, tol, 1);
@@ -1080,7 +1080,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {130.1010215623377};
-        static const double tol[1] = {2.36931613030189e-13};
+        static const double tol[1] = {2.3825149001788303e-13};
         const double r = rc_aircraft_b_det_k(0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_aircraft_b_det_k(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
@@ -1094,7 +1094,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {130.28109824428327};
-        static const double tol[1] = {2.3225464051467226e-13};
+        static const double tol[1] = {2.329308992166661e-13};
         const double r = rc_aircraft_b_zero_sideslip_det_k(0.5, 0.03490658503988659);
         const double got[1] = {r};
         check("rc_aircraft_b_zero_sideslip_det_k(0.5, 0.03490658503988659)", got, want, tol, 1);
@@ -1185,7 +1185,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {111.33518544150859};
-        static const double tol[1] = {2.5349979936827874e-13};
+        static const double tol[1] = {2.561601372536179e-13};
         const double r = rc_det_k(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_det_k(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
@@ -1199,7 +1199,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {109.03116808767453};
-        static const double tol[1] = {2.1568495439189544e-13};
+        static const double tol[1] = {2.1658396968113914e-13};
         const double r = rc_zero_sideslip_det_k(&rc_aircraft_b_derivatives, 1.3, -0.05);
         const double got[1] = {r};
         check("rc_zero_sideslip_det_k(&rc_aircraft_b_derivatives, 1.3, -0.05)", got, want, tol, 1);
@@ -1290,7 +1290,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {111.33518544150859};
-        static const double tol[1] = {2.6617342011356707e-13};
+        static const double tol[1] = {2.6946837463461395e-13};
         const double r = rc_aircraft_b_det_k(1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_aircraft_b_det_k(1.3, -0.05, 0.01)", got, want, tol, 1);
@@ -1304,7 +1304,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {109.03116808767453};
-        static const double tol[1] = {2.282705398325939e-13};
+        static const double tol[1] = {2.293568837781325e-13};
         const double r = rc_aircraft_b_zero_sideslip_det_k(1.3, -0.05);
         const double got[1] = {r};
         check("rc_aircraft_b_zero_sideslip_det_k(1.3, -0.05)", got, want, tol, 1);
@@ -1395,7 +1395,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {31.81436371662072};
-        static const double tol[1] = {1.54655942580561e-13};
+        static const double tol[1] = {1.551900636728606e-13};
         const double r = rc_det_k(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_det_k(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
@@ -1500,7 +1500,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {31.814363716620715};
-        static const double tol[1] = {1.822549809248186e-13};
+        static const double tol[1] = {1.8319083132624117e-13};
         const double r = rc_aircraft_b_det_k(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_b_det_k(2.45, 0.0, -0.02)", got, want, tol, 1);

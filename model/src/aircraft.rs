@@ -6,6 +6,15 @@
 //! Table A.1 of the paper, read from `aircraft/a.toml` and `aircraft/b.toml` (compiled in, so the
 //! table exists once); users bring their own as TOML, either dimensional or as nondimensional
 //! body-axis coefficients (see [`load`] and [`convert`]).
+//!
+//! ```
+//! use model::aircraft::{Aircraft, Param};
+//!
+//! let a = Aircraft::a();
+//! assert_eq!(a.name, "Aircraft A");
+//! // Table A.1's decimals enter exactly: l_p = -21.7529 = -217529/10000
+//! assert_eq!(a.exact(Param::Lp).to_string(), "-217529/10000");
+//! ```
 
 use num_bigint::BigInt;
 use num_rational::BigRational;

@@ -14,22 +14,23 @@
 //! univariate gcds before any root is sought, so a pole is never reported as a root, however
 //! close a true root lies.
 
-use crate::aircraft::{Aircraft, Param};
+use crate::aircraft::Aircraft;
 use crate::algebra::{Poly, Sym, Q};
 use crate::derivation::{eliminate_aileron, homogenize, Derivation, Ratio, TRIM_DEGREE};
 use crate::equations::symbols;
 use crate::roots::{positive_roots, UPoly};
-use num_rational::BigRational;
-use num_traits::Zero;
 use serde::Serialize;
-use std::sync::OnceLock;
 
 mod departure;
 mod primary;
+pub use crate::specialise::{
+    cancel, exact_f64, in_aileron, in_aileron_all, parametric, quadratic_roots, specialisation,
+    univariate, InAileron,
+};
 pub use departure::{
     omega_at, parametric_characteristic, FirstDeparture, HopfPoint, HopfPolys, Landing,
 };
-pub use primary::{quadratic_roots, InAileron, Outcome};
+pub use primary::Outcome;
 
 /// A trim on the unconstrained roll (delta_r = 0) at which something happens: a jump point (a
 /// positive root of det K, i.e. of det J5 on the equilibrium curve) or a pole of det K (d = 0).
@@ -156,30 +157,6 @@ pub enum AnalysisError {
         /// The f64 spacing at `p0`, rad/s: a bound on their separation.
         ulp: f64,
     },
-}
-
-/// The symbol values that specialise the derivation to an aircraft and elevator setting
-/// (delta_r = 0 for the unconstrained roll).
-pub fn specialisation(aircraft: &Aircraft, delta_e_rad: f64) -> Vec<(Sym, Q)> {
-    let s = symbols();
-    let mut values: Vec<(Sym, Q)> = Param::ALL
-        .iter()
-        .map(|p| (s.param(*p), Q::from_big(aircraft.exact(*p).clone())))
-        .collect();
-    values.push((s.delta_e, exact_f64(delta_e_rad)));
-    values.push((s.delta_r, Q::ZERO));
-    values
-}
-
-/// The exact rational value of a finite f64.
-pub fn exact_f64(x: f64) -> Q {
-    Q::from_big(BigRational::from_float(x).unwrap_or_default())
-}
-
-/// The parametric derivation, derived once per process (every analysis specialises it).
-pub fn parametric() -> &'static Derivation {
-    static P: OnceLock<Derivation> = OnceLock::new();
-    P.get_or_init(Derivation::parametric)
 }
 
 /// How far the primary branch is followed when the aircraft gives no aileron limit, rad.
@@ -456,45 +433,6 @@ fn aileron_of_root(g: &InAileron, f: &InAileron, p0: f64) -> f64 {
         .unwrap_or(f64::NAN)
 }
 
-/// A polynomial in P0 and delta_a (specialised: no other symbol) as [`InAileron`], scaled by a
-/// power of two (see [`in_aileron_all`]).
-pub fn in_aileron(p: &Poly) -> InAileron {
-    in_aileron_all(&[p]).remove(0)
-}
-
-/// Polynomials in P0 and delta_a as [`InAileron`]s, all scaled by the same power of two, which
-/// brings their largest coefficient near 1 so that f64 evaluation neither overflows nor
-/// underflows for any aircraft (cleared criterion polynomials carry integer scales of hundreds
-/// of digits) and ratios of them are unchanged.
-pub fn in_aileron_all(ps: &[&Poly]) -> Vec<InAileron> {
-    let s = symbols();
-    let cs: Vec<Vec<UPoly>> = ps
-        .iter()
-        .map(|p| {
-            p.coeffs(s.delta_a)
-                .iter()
-                .map(|c| univariate(c, s.p0))
-                .collect()
-        })
-        .collect();
-    let log2 = |q: &BigRational| q.numer().bits() as i64 - q.denom().bits() as i64;
-    let e = cs
-        .iter()
-        .flatten()
-        .flat_map(|c| c.coeffs().iter().filter(|q| !q.is_zero()).map(log2))
-        .max()
-        .unwrap_or(0);
-    let two = BigRational::from_integer(2.into());
-    let scale = if e >= 0 {
-        num_traits::pow(two.recip(), e as usize)
-    } else {
-        num_traits::pow(two, (-e) as usize)
-    };
-    cs.into_iter()
-        .map(|c| InAileron(c.iter().map(|u| u.scale(&scale)).collect()))
-        .collect()
-}
-
 /// The criterion polynomials of one aircraft and elevator setting, each exact up to a positive
 /// or negative constant factor (which moves no root and cancels in every ratio used: the trim
 /// `trim_i / det_a`, det K `jump_at / d_at`).
@@ -609,31 +547,6 @@ impl CriterionPolys {
             zs_jump,
             zs_d_det,
         }
-    }
-}
-
-/// A polynomial in `x` alone as a dense univariate polynomial. Panics if another symbol occurs
-/// (the specialised derivation leaves only P0 by construction).
-pub fn univariate(p: &Poly, x: Sym) -> UPoly {
-    let c = p
-        .univariate_coeffs(x)
-        .expect("specialised criterion polynomials are univariate in P0");
-    UPoly::new(c.iter().map(Q::to_big).collect())
-}
-
-/// Cancels every common factor of `num / den` exactly; returns the reduced pair.
-pub fn cancel(num: &UPoly, den: &UPoly) -> (UPoly, UPoly) {
-    let (mut n, mut d) = (num.clone(), den.clone());
-    if n.is_zero() || d.is_zero() {
-        return (n, d);
-    }
-    loop {
-        let g = n.gcd(&d);
-        if g.degree().unwrap_or(0) == 0 {
-            return (n, d);
-        }
-        n = n.div_rem(&g).0;
-        d = d.div_rem(&g).0;
     }
 }
 

@@ -12,6 +12,17 @@
 //! Rational functions are never normalized: trims are numerators over the common denominator
 //! `det A`, and the stiffness matrix is kept as `K = K0 - g h^T / d`, whose determinant times
 //! `d` is a polynomial (matrix determinant lemma).
+//!
+//! ```
+//! use model::algebra::{Poly, Sym};
+//! use model::derivation::homogenize;
+//!
+//! // Step 8 on f = t^2 + t with t = n / d: (n^2 + n d) has no denominator left
+//! let (t, n, d) = (Sym::new("t"), Sym::new("n"), Sym::new("d"));
+//! let f = &Poly::var(t).pow(2) + &Poly::var(t);
+//! let cleared = homogenize(&f, &[t], &[Poly::var(n)], &Poly::var(d), 2);
+//! assert_eq!(cleared, &Poly::var(n).pow(2) + &(&Poly::var(n) * &Poly::var(d)));
+//! ```
 
 use crate::aircraft::Param;
 use crate::algebra::{Matrix, Poly, Sym, Q};
@@ -39,13 +50,13 @@ pub struct Derivation {
     pub unconstrained_model: [Poly; 5],
     /// Eq. 2: the 4x4 matrix A of the trim system in x = [alpha, beta, q, r] at p = P0.
     pub a: Matrix,
-    /// Eq. 1-2: the constant part `b u + b1 P0` of the trim system `A x + b u + b1 P0 = 0`; with
+    /// Eqs 1-2: the constant part `b u + b1 P0` of the trim system `A x + b u + b1 P0 = 0`; with
     /// aileron yaw `u` includes delta_a (the `n_delta_a delta_a` term of the yaw equation), so the
     /// trim is affine in delta_a for a given P0.
     pub a_rhs: Vec<Poly>,
     /// Eq. 4: det A, the common denominator of the trim states.
     pub det_a: Poly,
-    /// Eq. 3-4: numerators of [alpha0, beta0, Q0, R0] over `det_a`: `-adj(A) (b u + b1 P0)`,
+    /// Eqs 3-4: numerators of [alpha0, beta0, Q0, R0] over `det_a`: `-adj(A) (b u + b1 P0)`,
     /// affine in delta_a (which enters through `n_delta_a` only).
     pub trim: [Poly; 4],
     /// Eq. 5: coefficients of P0^0, P0^2, P0^4 of det A (odd powers vanish identically).
@@ -56,13 +67,13 @@ pub struct Derivation {
     pub roll_at_trim: Poly,
     /// The 5x5 Jacobian of the PSS model at the trim (alpha0, beta0, P0, Q0, R0).
     pub jacobian: Matrix,
-    /// Eqs. 6-10: the linearized equations, right-hand sides in the perturbations.
+    /// Eqs 6-10: the linearized equations, right-hand sides in the perturbations.
     pub linearized: [Poly; 5],
     /// Eq. 11: q in terms of alpha, alpha_dot, beta, p.
     pub q_elim: Poly,
     /// Eq. 12: r in terms of alpha, beta, beta_dot, p.
     pub r_elim: Poly,
-    /// Eqs. 13-14: the coupled second-order equations (= 0), leading coefficients 1.
+    /// Eqs 13-14: the coupled second-order equations (= 0), leading coefficients 1.
     pub second_order: [Poly; 2],
     /// Eq. 21: the roll-mode equation, d p / dt in terms of alpha, alpha_dot, beta, beta_dot, p.
     pub roll_mode: Poly,
@@ -70,13 +81,13 @@ pub struct Derivation {
     pub d: Poly,
     /// Eq. 22: `h = [h_alpha, h_beta]` with the static residual `p_s = -(h . y) / d`.
     pub h: [Poly; 2],
-    /// Eqs. 24-25: d p_s / d alpha and d p_s / d beta.
+    /// Eqs 24-25: d p_s / d alpha and d p_s / d beta.
     pub dps: [Ratio; 2],
     /// Eq. 16: the stiffness matrix without the roll residual (coefficients of y in Eqs 13-14).
     pub k0: [[Poly; 2]; 2],
     /// Coefficients of p in Eqs 13-14 (g); the residual terms are `f_ij = -g_i h_j / d`.
     pub g: [Poly; 2],
-    /// Eqs. 16, 27-31: `d K` entry by entry, `d K0_ij - g_i h_j`.
+    /// Eqs 16, 27-31: `d K` entry by entry, `d K0_ij - g_i h_j`.
     pub k_times_d: [[Poly; 2]; 2],
     /// Eq. 27: `d det K = d det K0 - h^T adj(K0) g`, a polynomial.
     pub d_det_k: Poly,
@@ -88,9 +99,9 @@ pub struct Derivation {
     step8: OnceLock<Step8>,
     /// The aileron elimination after step 8, computed on first use (see [`Derivation::jump`]).
     elimination: OnceLock<Elimination>,
-    /// Eqs. 32-34: the zero-sideslip trim system in [alpha, q, r] (beta = 0, delta_r freed).
+    /// Eqs 32-34: the zero-sideslip trim system in [alpha, q, r] (beta = 0, delta_r freed).
     pub zs_a: Matrix,
-    /// Eqs. 32-33: the constant part of the zero-sideslip trim system `zs_a x + zs_rhs = 0`.
+    /// Eqs 32-33: the constant part of the zero-sideslip trim system `zs_a x + zs_rhs = 0`.
     pub zs_rhs: Vec<Poly>,
     /// Eq. 35: det of the zero-sideslip system, common denominator of `zs_trim`.
     pub zs_det: Poly,
@@ -521,27 +532,89 @@ fn time_derivative(s: &Symbols, f: &Poly) -> Poly {
 /// for every aircraft, also when E = 0 lowers the degree of d.
 pub const TRIM_DEGREE: u32 = 2;
 
+/// The ring step 8 builds its result in: exact polynomials ([`homogenize`]) or the emitter's
+/// expression DAG (one node, or the coefficient nodes of a polynomial in P0), so that the
+/// clearing of the trim's denominator is written once ([`clear_trim`]).
+pub trait Clearing {
+    /// A value of the ring.
+    type Value: Clone;
+    /// A polynomial free of the trim symbols as a value.
+    fn lift(&mut self, p: &Poly) -> Self::Value;
+    /// `a + b`.
+    fn add(&mut self, a: &Self::Value, b: &Self::Value) -> Self::Value;
+    /// `a * b`.
+    fn mul(&mut self, a: &Self::Value, b: &Self::Value) -> Self::Value;
+    /// `a^n` (by default `n` products starting from 1).
+    fn pow(&mut self, a: &Self::Value, n: u32) -> Self::Value {
+        let mut acc = self.lift(&Poly::int(1));
+        for _ in 0..n {
+            acc = self.mul(&acc, a);
+        }
+        acc
+    }
+}
+
+/// Exact polynomials as the ring of [`Clearing`].
+struct Exact;
+
+impl Clearing for Exact {
+    type Value = Poly;
+    fn lift(&mut self, p: &Poly) -> Poly {
+        p.clone()
+    }
+    fn add(&mut self, a: &Poly, b: &Poly) -> Poly {
+        a + b
+    }
+    fn mul(&mut self, a: &Poly, b: &Poly) -> Poly {
+        a * b
+    }
+    fn pow(&mut self, a: &Poly, n: u32) -> Poly {
+        a.pow(n)
+    }
+}
+
+/// Step 8 in any [`Clearing`] ring: `f` (of degree at most `k` in the trim symbols `t`) with
+/// `t_i = num_i / den` substituted, times `den^k`, built without division. `f` is grouped by its
+/// monomial `t^m` in the trim symbols, `f = sum_m c_m t^m`; each group becomes
+/// `c_m num^m den^(k - |m|)`.
+pub fn clear_trim<C: Clearing>(
+    ring: &mut C,
+    f: &Poly,
+    t: &[Sym],
+    num: &[C::Value],
+    den: &C::Value,
+    k: u32,
+) -> C::Value {
+    assert!(f.degree_in(t) <= k, "degree in the trim states above {k}");
+    let mut groups: std::collections::BTreeMap<Vec<u32>, Poly> = Default::default();
+    for (m, c) in f.terms() {
+        let e: Vec<u32> = t.iter().map(|s| m.exp(*s)).collect();
+        let mut rest = *m;
+        for s in t {
+            rest.set(*s, 0);
+        }
+        let g = groups.entry(e).or_insert_with(Poly::zero);
+        *g = &*g + &Poly::term(rest, c.clone());
+    }
+    let den_pows: Vec<C::Value> = (0..=k).map(|j| ring.pow(den, j)).collect();
+    let mut acc = ring.lift(&Poly::zero());
+    for (e, c) in &groups {
+        let mut prod = den_pows[(k - e.iter().sum::<u32>()) as usize].clone();
+        for (n, ei) in num.iter().zip(e) {
+            for _ in 0..*ei {
+                prod = ring.mul(&prod, n);
+            }
+        }
+        let c = ring.lift(c);
+        let term = ring.mul(&c, &prod);
+        acc = ring.add(&acc, &term);
+    }
+    acc
+}
+
 /// Substitutes `t_i = num_i / den` into `f` (of degree at most k in the `t_i`) and multiplies
 /// by `den^k` (step 8), giving a polynomial: each term of degree j in the `t_i` gets
 /// `den^(k-j)`.
 pub fn homogenize(f: &Poly, t: &[Sym], num: &[Poly], den: &Poly, k: u32) -> Poly {
-    assert!(f.degree_in(t) <= k, "degree in the trim states above {k}");
-    let mut den_pows = vec![Poly::int(1)];
-    for _ in 0..k {
-        let next = den_pows.last().map(|p| p * den).unwrap_or_default();
-        den_pows.push(next);
-    }
-    // Group the terms of f by their degree in t, substitute the numerators, scale by den^(k-j).
-    let mut by_degree = vec![Poly::zero(); k as usize + 1];
-    for (m, c) in f.terms() {
-        let j = t.iter().map(|s| m.exp(*s)).sum::<u32>() as usize;
-        by_degree[j] = &by_degree[j] + &Poly::term(*m, c.clone());
-    }
-    let subs: Vec<(Sym, Poly)> = t.iter().copied().zip(num.iter().cloned()).collect();
-    by_degree
-        .iter()
-        .enumerate()
-        .fold(Poly::zero(), |acc, (j, part)| {
-            &acc + &(&part.subs_all(&subs) * &den_pows[k as usize - j])
-        })
+    clear_trim(&mut Exact, f, t, num, den, k)
 }

@@ -14,6 +14,16 @@
 //! Beyond Appendix A.2, the roll equation carries the roll-due-to-rudder derivative
 //! `l_{\delta r} \delta r` (zero for the paper's aircraft): real data have it, and the rotation of
 //! body-axis data into principal axes produces it even when the body-axis `Cl_delta_r` is zero.
+//!
+//! ```
+//! use model::algebra::Poly;
+//! use model::equations::{pss, symbols};
+//!
+//! let s = symbols();
+//! let [alpha_dot, ..] = pss();
+//! // alpha_dot = q - p beta + z_alpha alpha: linear in q with coefficient 1
+//! assert_eq!(alpha_dot.coeff(s.q, 1), Poly::int(1));
+//! ```
 
 use crate::aircraft::Param;
 use crate::algebra::{Poly, Sym};

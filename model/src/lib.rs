@@ -8,8 +8,11 @@
 
 pub mod aircraft;
 pub mod algebra;
+#[cfg(feature = "analysis")]
 pub mod analysis;
+#[cfg(feature = "cli")]
 pub mod clearance;
+#[cfg(feature = "continuation")]
 pub mod continuation;
 pub mod derivation;
 pub mod emit;
@@ -23,3 +26,4 @@ pub mod report;
 pub mod roots;
 #[cfg(feature = "cli")]
 pub mod simulation;
+pub mod specialise;

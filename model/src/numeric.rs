@@ -5,9 +5,19 @@
 //! they use the equations of [`crate::equations::pss`] with the aircraft's data substituted
 //! exactly and the Jacobian differentiated symbolically (no finite differences), flattened into
 //! term lists. One source of truth, evaluated at machine speed.
+//!
+//! ```
+//! use model::aircraft::Aircraft;
+//! use model::numeric::{Controls, PssModel};
+//!
+//! let m = PssModel::new(&Aircraft::a());
+//! let u = Controls { delta_a: 0.0, delta_e: 0.0, delta_r: 0.0 };
+//! // the level, non-rolling state with centred controls is an equilibrium
+//! assert_eq!(m.rhs(&[0.0; 5], &u), [0.0; 5]);
+//! ```
 
-use crate::aircraft::{Aircraft, Param};
-use crate::algebra::{Poly, Sym, MAX_SYMS, Q};
+use crate::aircraft::Aircraft;
+use crate::algebra::{Poly, MAX_SYMS};
 use crate::equations::{pss, symbols};
 
 /// A polynomial flattened for f64 evaluation: coefficient and (symbol index, power) factors.
@@ -78,10 +88,7 @@ impl PssModel {
     /// Builds the model for `aircraft` (its data substituted exactly).
     pub fn new(aircraft: &Aircraft) -> PssModel {
         let s = symbols();
-        let values: Vec<(Sym, Q)> = Param::ALL
-            .iter()
-            .map(|p| (s.param(*p), Q::from_big(aircraft.exact(*p).clone())))
-            .collect();
+        let values = crate::specialise::aircraft_values(aircraft);
         let f = pss().map(|e| e.subs_values(&values));
         let states = s.states();
         let controls = [s.delta_a, s.delta_e, s.delta_r];

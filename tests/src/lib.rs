@@ -6,6 +6,21 @@
 
 use nalgebra::{Matrix4, Matrix5, Vector4};
 
+/// Reference numbers that several test files check, each written once. Computed by this
+/// crate's independent numeric oracle (scan and bisection of det J5 on its finite-difference
+/// Jacobian, `tests/tests/paper.rs` recomputes them), at delta_e = 2 deg, delta_r = 0, to the
+/// digits printed; the paper's Figs 1, 5-7 and 11 give them to two or three digits.
+pub mod reference {
+    /// Aircraft A: the jump roll rates, rad/s (roots of det K, Fig. 7; the folds of Fig. 1).
+    pub const A_JUMP_P0: [f64; 2] = [1.706288, 3.033180];
+    /// Aircraft A: the aileron of the first jump (the critical point), deg (Figs 1, 5).
+    pub const A_FOLD_DELTA_A_DEG: f64 = -3.8467;
+    /// Aircraft B: the aileron of the first jump, deg (Figs 2, 6).
+    pub const B_FOLD_DELTA_A_DEG: f64 = -11.2068;
+    /// Aircraft A: the zero-sideslip departure roll rates, rad/s (Fig. 11).
+    pub const A_ZERO_SIDESLIP_P0: [f64; 2] = [2.130625, 4.457684];
+}
+
 /// Parameter values in the order C, D, E, z_alpha, y_beta, l_p, l_r, l_beta, l_delta_a, m_q,
 /// m_alpha, m_delta_e, n_p, n_r, n_beta, n_delta_a, n_delta_r, l_delta_r (the order of
 /// `model::aircraft::Param::ALL`).
@@ -183,7 +198,7 @@ pub fn zero_sideslip_trim(k: &Params, p0: f64, de: f64) -> Option<([f64; 5], f64
 /// The static-residual denominator d computed numerically: dp/dp of the roll equation after
 /// eliminating q and r, i.e. l_p + (l_r - E Q0) alpha0 - E R0 beta0, from the Jacobian.
 pub fn residual_denominator(j: &Matrix5<f64>) -> f64 {
-    // Eq. 11-12 at alpha_dot = beta_dot = 0, alpha = beta = 0: q = -J[0][2] p / J[0][3],
+    // Eqs 11-12 at alpha_dot = beta_dot = 0, alpha = beta = 0: q = -J[0][2] p / J[0][3],
     // r = -J[1][2] p / J[1][4]; then d = J[2][2] + J[2][3] q/p + J[2][4] r/p.
     let q_per_p = -j[(0, 2)] / j[(0, 3)];
     let r_per_p = -j[(1, 2)] / j[(1, 4)];

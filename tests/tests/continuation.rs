@@ -12,7 +12,7 @@ use model::continuation::{
     continue_equilibria, ContinuationError, ContinuationParam, Diagram, Settings, SpecialKind,
     SpecialPoint,
 };
-use paper_tests::{fd_jacobian, pss_rhs, zero_sideslip_trim, Lcg, Params};
+use paper_tests::{fd_jacobian, pss_rhs, reference, zero_sideslip_trim, Lcg, Params};
 use std::path::Path;
 use std::sync::OnceLock;
 
@@ -202,11 +202,11 @@ fn fig_1_folds_aircraft_a_near_minus_4_and_plus_8_deg() {
     assert_eq!(f.len(), 4, "{f:?}");
     let at = |p0: f64| f.iter().find(|x| (x.p - p0).abs() < 1e-6).copied().unwrap();
     assert!(
-        (at(1.706288).param.to_degrees() - -3.847).abs() < 1e-3,
+        (at(reference::A_JUMP_P0[0]).param.to_degrees() - -3.847).abs() < 1e-3,
         "Fig. 1: about -4 deg"
     );
     assert!(
-        (at(3.033180).param.to_degrees() - 7.80).abs() < 1e-2,
+        (at(reference::A_JUMP_P0[1]).param.to_degrees() - 7.80).abs() < 1e-2,
         "Fig. 1: about +8 deg"
     );
     // The level trim is stable; the middle part between the folds is not (a saddle).
@@ -243,7 +243,10 @@ fn fig_2_folds_aircraft_b_are_the_jump_roots_first_near_minus_12_deg() {
         .into_iter()
         .find(|f| (f.p - 2.595015).abs() < 1e-6)
         .unwrap();
-    assert!((fa.param.to_degrees() - -11.2068).abs() < 1e-3, "{fa:?}");
+    assert!(
+        (fa.param.to_degrees() - reference::B_FOLD_DELTA_A_DEG).abs() < 1e-3,
+        "{fa:?}"
+    );
 }
 
 #[test]
@@ -336,7 +339,7 @@ fn fig_9_zero_sideslip_departure_of_a_is_a_branch_point_at_the_criterion_root() 
     let d = a_zero_sideslip();
     let a = analyze(&ac, de()).unwrap();
     let dep = &a.zero_sideslip.departure[0];
-    assert!((dep.p0 - 2.130625).abs() < 1e-6);
+    assert!((dep.p0 - reference::A_ZERO_SIDESLIP_P0[0]).abs() < 1e-6);
     let bps: Vec<&SpecialPoint> = d.special(SpecialKind::Branch).collect();
     let bp = bps
         .iter()

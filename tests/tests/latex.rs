@@ -6,7 +6,12 @@
 //! fails when the environment variable `CI` is set (CI installs texlive-latex-base) and is
 //! skipped otherwise, with a notice that the test runner prints even without --nocapture.
 
-use model::emit::latex::{document, parse, printed, TAGS};
+use model::aircraft::Param;
+use model::algebra::Poly;
+use model::derivation::Derivation;
+use model::emit::latex::{document, TAGS};
+use model::emit::paper::{self, parse};
+use model::equations::symbols;
 use std::path::PathBuf;
 use std::process::{Command, Stdio};
 use std::sync::OnceLock;
@@ -97,7 +102,7 @@ fn document_states_the_identity_and_the_comparisons_with_the_print() {
         "det J5 = d det K verified symbolically"
     );
     assert!(!d.contains("WARNING"), "the identity residual is zero");
-    // Eq. 13's printed p-terms contradict Eqs. 17 and 28; the derivation agrees with the latter.
+    // Eq. 13's printed p-terms contradict Eqs 17 and 28; the derivation agrees with the latter.
     assert!(d.contains("Eq.~13: differs from the paper's print"));
     assert!(d.contains("The first factor of Eqs.~28--29: agrees with the paper's print."));
     assert!(d.contains("$g_1$ (the factor in Eqs.~17--18): agrees with the paper's print."));
@@ -125,10 +130,10 @@ fn printed_transcriptions_parse() {
         parse("P0*(C + 1)*beta_dot - 2*E^2"),
         parse("C*P0*beta_dot + P0*beta_dot - E*E - E^2")
     );
-    assert_eq!(parse(printed::EQ11).len(), 4);
-    assert_eq!(parse(printed::EQ13).len(), 14);
-    assert_eq!(parse(printed::EQ21).len(), 14);
-    assert_eq!(parse(printed::EQ5_TIMES_CD).len(), 9);
+    assert_eq!(parse(paper::EQ11).len(), 4);
+    assert_eq!(parse(paper::EQ13).len(), 14);
+    assert_eq!(parse(paper::EQ21).len(), 14);
+    assert_eq!(parse(paper::EQ5_TIMES_CD).len(), 9);
 }
 
 #[test]
@@ -192,4 +197,49 @@ fn document_compiles_with_pdflatex() {
         .filter_map(|l| l.split("pt too wide").next()?.parse::<f64>().ok())
         .fold(0.0, f64::max);
     assert!(worst <= 5.0, "a line overruns the text width by {worst} pt");
+}
+
+// ---- the paper's print, difference by difference --------------------------------------------
+//
+// Each statement "differs from the paper's print" of `docs/formulas.tex` pinned as the exact
+// polynomial `derived - printed`, so that a change of the model, of the derivation or of a
+// transcription in `model::emit::paper` fails here by name and not only in the prose.
+
+fn derivation() -> &'static Derivation {
+    static D: OnceLock<Derivation> = OnceLock::new();
+    D.get_or_init(Derivation::parametric)
+}
+
+fn sym(p: Param) -> Poly {
+    Poly::var(symbols().param(p))
+}
+
+#[test]
+fn eq_13_p_terms_differ_from_the_print_by_minus_2_c_r0_plus_p0_alpha0_times_p() {
+    let s = symbols();
+    let diff = &derivation().second_order[0] - &parse(paper::EQ13);
+    // -2 C (R0 + P0 alpha0) p: the print has the wrong sign on both C-terms of the p coefficient.
+    let r0_p0_alpha0 = &Poly::var(s.r0) + &(&Poly::var(s.p0) * &Poly::var(s.alpha0));
+    let expected = &(&(&Poly::int(-2) * &sym(Param::C)) * &r0_p0_alpha0) * &Poly::var(s.p);
+    assert_eq!(diff, expected);
+}
+
+#[test]
+fn eq_14_drops_n_p_times_p() {
+    let diff = &derivation().second_order[1] - &parse(paper::EQ14);
+    assert_eq!(diff, &sym(Param::Np) * &Poly::var(symbols().p));
+}
+
+#[test]
+fn eqs_17_18_factor_g1_agrees_and_eqs_19_20_factor_g2_drops_n_p() {
+    let d = derivation();
+    assert_eq!(d.g[0], parse(paper::EQ17_20_G[0]));
+    assert_eq!(&d.g[1] - &parse(paper::EQ17_20_G[1]), sym(Param::Np));
+}
+
+#[test]
+fn eqs_28_29_factor_agrees_and_eqs_30_31_factor_drops_n_p() {
+    let d = derivation();
+    assert_eq!(-&d.g[0], parse(paper::EQ28_31[0]));
+    assert_eq!(&-&d.g[1] - &parse(paper::EQ28_31[1]), -&sym(Param::Np));
 }

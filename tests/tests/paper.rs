@@ -7,7 +7,7 @@
 
 use model::aircraft::Aircraft;
 use model::analysis::{analyze, Analysis};
-use paper_tests::{fd_jacobian, real_eigenvalues, trim, Params};
+use paper_tests::{fd_jacobian, real_eigenvalues, reference, trim, Params};
 
 fn params(ac: &Aircraft) -> Params {
     ac.values_f64()
@@ -44,7 +44,7 @@ fn table_1_divergence_roll_rates_aircraft_b() {
 fn fig_7_det_k_roots_aircraft_a_are_the_saddle_nodes_of_fig_1() {
     let a = at_2deg(&Aircraft::a());
     let p0: Vec<f64> = a.jump.iter().map(|j| j.p0).collect();
-    assert_close(&p0, &[1.706288, 3.033180], 1e-6, "Fig. 7 (independent)");
+    assert_close(&p0, &reference::A_JUMP_P0, 1e-6, "Fig. 7 (independent)");
     assert_close(&p0, &[1.70, 3.03], 4e-3, "Fig. 7 (paper)");
     // Fig. 1: saddle-nodes near delta_a = -4 deg and +8 deg; issue: -3.847 deg at the first.
     assert!(
@@ -89,7 +89,12 @@ fn fig_8_det_k_roots_and_poles_aircraft_b() {
 fn fig_11_zero_sideslip_departure_aircraft_a() {
     let a = at_2deg(&Aircraft::a());
     let p0: Vec<f64> = a.zero_sideslip.departure.iter().map(|j| j.p0).collect();
-    assert_close(&p0, &[2.130625, 4.457684], 1e-6, "Fig. 11 (independent)");
+    assert_close(
+        &p0,
+        &reference::A_ZERO_SIDESLIP_P0,
+        1e-6,
+        "Fig. 11 (independent)",
+    );
     assert_close(
         &p0,
         &[2.1293, 4.4546],

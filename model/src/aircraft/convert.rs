@@ -700,6 +700,7 @@ Cn_delta_r = -0.05
     }
 
     #[test]
+    #[cfg(feature = "analysis")]
     fn analyze_agrees_on_body_axis_and_converted_files() {
         // The fighter as it is (aileron yaw, roll due to rudder from the tilt, ixz != 0), and
         // without aileron yaw and product of inertia.

@@ -5,6 +5,17 @@
 //! matrices ([`Matrix`]) give determinant, adjugate and Cramer solve. Rational functions are kept
 //! as explicit numerator/denominator pairs by the derivation rather than normalized: the paper's
 //! det K as a single normalized fraction is enormous, while d * det K is a modest polynomial.
+//!
+//! ```
+//! use model::algebra::{Poly, Sym};
+//!
+//! let x = Poly::var(Sym::new("x"));
+//! let one = Poly::int(1);
+//! // (x + 1)^2 - (x^2 + 2x + 1) = 0, exactly
+//! let lhs = (&x + &one).pow(2);
+//! let rhs = &(&x * &x) + &(&(&Poly::int(2) * &x) + &one);
+//! assert!((&lhs - &rhs).is_zero());
+//! ```
 
 mod matrix;
 mod mono;

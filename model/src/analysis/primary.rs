@@ -12,53 +12,7 @@
 //! the two trims of a roll rate merge), where it continues on the other root with P0 running
 //! back. Without aileron yaw the curve is a graph over P0 and never turns.
 
-use crate::roots::UPoly;
-
-/// A polynomial in P0 and delta_a: `coeffs[i]` (a polynomial in P0) multiplies `delta_a^i`.
-#[derive(Clone, Debug)]
-pub struct InAileron(pub Vec<UPoly>);
-
-impl InAileron {
-    /// The coefficients of the polynomial in delta_a at `p0`, in f64.
-    pub fn at(&self, p0: f64) -> Vec<f64> {
-        self.0.iter().map(|c| c.eval_f64(p0)).collect()
-    }
-
-    /// Value at `(p0, delta_a)` in f64.
-    pub fn eval(&self, p0: f64, delta_a: f64) -> f64 {
-        self.at(p0)
-            .iter()
-            .rev()
-            .fold(0.0, |acc, c| acc * delta_a + c)
-    }
-
-    /// The real roots in delta_a at `p0` (at most two: the trim condition is at most quadratic),
-    /// by the cancellation-free form of the quadratic formula.
-    pub fn aileron_roots(&self, p0: f64) -> Vec<f64> {
-        let c = self.at(p0);
-        let get = |i: usize| c.get(i).copied().unwrap_or(0.0);
-        quadratic_roots(get(2), get(1), get(0))
-    }
-}
-
-/// Real roots of `a x^2 + b x + c` (linear when `a = 0`), without cancellation.
-pub fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
-    if a == 0.0 {
-        return if b == 0.0 { vec![] } else { vec![-c / b] };
-    }
-    let disc = b * b - 4.0 * a * c;
-    if disc < 0.0 {
-        return vec![];
-    }
-    let q = -0.5 * (b + b.signum() * disc.sqrt());
-    let mut r = if q == 0.0 {
-        vec![0.0]
-    } else {
-        vec![q / a, c / q]
-    };
-    r.sort_by(f64::total_cmp);
-    r
-}
+use crate::specialise::InAileron;
 
 /// How the primary branch ends.
 #[derive(Clone, Debug, PartialEq)]
@@ -150,20 +104,4 @@ pub fn follow(
         p = p_new;
     }
     Outcome::Lost("the primary branch was followed for 2e6 steps without an end")
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn quadratic_roots_are_accurate_without_cancellation() {
-        // x^2 - 1e8 x + 1 = 0: roots 1e8 and 1e-8; the textbook formula loses the small one.
-        let r = quadratic_roots(1.0, -1e8, 1.0);
-        assert_eq!(r.len(), 2);
-        assert!((r[0] - 1e-8).abs() < 1e-22, "{r:?}");
-        assert!((r[1] - 1e8).abs() < 1e-6);
-        assert_eq!(quadratic_roots(0.0, 2.0, -1.0), vec![0.5]);
-        assert!(quadratic_roots(1.0, 0.0, 1.0).is_empty());
-    }
 }

@@ -250,7 +250,7 @@ pub fn header(param: &[Function], builtins: &[Builtin]) -> String {
          // Header-only C99 library: the roll-coupling jump criterion (AIAA 2006-6267), the same\n\
          // functions as the Rust crate roll-criterion, printed from the same expression DAGs.\n\
          // Derived from model/src/equations.rs (Appendix A.2 of AIAA 2006-6267) by model/src/derivation.rs;\n\
-         // inputs: symbolic parameters, {}; model {}.\n\
+         // inputs: symbolic parameters, {}; model {}; inputs hash {} (model::emit::inputs_hash).\n\
          // Operation counts after common-subexpression elimination (parametric; the functions of\n\
          // each built-in aircraft are counted in its section):\n",
         builtins
@@ -258,7 +258,8 @@ pub fn header(param: &[Function], builtins: &[Builtin]) -> String {
             .map(|b| format!("{} (model::aircraft)", b.aircraft.name))
             .collect::<Vec<_>>()
             .join(", "),
-        env!("CARGO_PKG_VERSION")
+        env!("CARGO_PKG_VERSION"),
+        super::inputs_hash(&builtins.iter().map(|b| &b.aircraft).collect::<Vec<_>>())
     );
     op_counts(&mut out, param);
     out.push_str(
@@ -309,9 +310,9 @@ pub fn header(param: &[Function], builtins: &[Builtin]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::analysis::exact_f64;
     use crate::emit::expr::Dag;
     use crate::emit::functions::{Arg, Ret};
+    use crate::specialise::exact_f64;
 
     #[test]
     fn double_literals_are_doubles_that_round_trip_exactly() {

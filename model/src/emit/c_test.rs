@@ -16,7 +16,7 @@ use super::shape::{access, c_type};
 use super::{Builtin, COMMAND};
 use crate::aircraft::Param;
 use crate::algebra::Q;
-use crate::analysis::exact_f64;
+use crate::specialise::exact_f64;
 use std::fmt::Write;
 
 /// Inputs of the self-test: three points per function. Values are chosen by argument name,

@@ -7,7 +7,7 @@
 use super::expr::{Dag, Id};
 use crate::aircraft::Param;
 use crate::algebra::{Matrix, Poly, Sym, Q};
-use crate::derivation::{Derivation, TRIM_DEGREE};
+use crate::derivation::{clear_trim, Clearing, Derivation, TRIM_DEGREE};
 use crate::equations::symbols;
 
 mod hopf;
@@ -241,32 +241,10 @@ impl Ctx {
         (nums, det)
     }
 
-    /// `f * den^k` with the trim symbols `t` bound to `num / den`, built without division:
-    /// each term of degree j in `t` is multiplied by `den^(k - j)` (k = degree of f in t).
+    /// `f * den^k` with the trim symbols `t` bound to `num / den`, built without division
+    /// (step 8, [`clear_trim`] on single nodes).
     fn cleared(&mut self, f: &Poly, t: &[Sym], num: &[Id], den: Id, k: u32) -> Id {
-        let mut parts: Vec<(u32, Poly)> = Vec::new();
-        for (m, c) in f.terms() {
-            let j: u32 = t.iter().map(|s| m.exp(*s)).sum();
-            let term = Poly::term(*m, c.clone());
-            match parts.iter_mut().find(|(d, _)| *d == j) {
-                Some((_, p)) => *p = &*p + &term,
-                None => parts.push((j, term)),
-            }
-        }
-        parts.sort_by_key(|(j, _)| *j);
-        let saved = self.bound.clone();
-        for (s, n) in t.iter().zip(num) {
-            self.bind(*s, *n);
-        }
-        let mut acc = self.dag.constant(Q::ZERO);
-        for (j, p) in parts {
-            let v = self.poly(&p);
-            let pw = self.dag.power(den, k - j);
-            let t = self.dag.mul(v, pw);
-            acc = self.dag.add(acc, t);
-        }
-        self.bound = saved;
-        acc
+        clear_trim(&mut Nodes(self), f, t, num, &den, k)
     }
 
     /// det K with a single division (Eq. 27 by the matrix determinant lemma): with the trim
@@ -425,59 +403,12 @@ impl Ctx {
     }
 
     /// `f(t = num / den) * den^k` as coefficient nodes in P0, with k = [`TRIM_DEGREE`] (step 8
-    /// of the derivation, by univariate convolutions).
+    /// of the derivation, [`clear_trim`] by univariate convolutions).
     fn homogenize(&mut self, f: &Poly, t: &[Sym], num: &[Poly], den: &Poly) -> Vec<Id> {
-        let k = TRIM_DEGREE as usize;
-        assert!(
-            f.degree_in(t) as usize <= k,
-            "degree in the trim states above {k}"
-        );
         let num: Vec<Vec<Id>> = num.iter().map(|n| self.in_p0(n)).collect();
         let den = self.in_p0(den);
-        let one = vec![self.dag.constant(Q::ONE)];
-        let mut den_pows = vec![one.clone()];
-        for i in 0..k {
-            let next = self.conv(&den_pows[i], &den);
-            den_pows.push(next);
-        }
-        // Group f by its monomial in t: f = sum_m c_m t^m.
-        let mut groups: Vec<(Vec<u32>, Poly)> = Vec::new();
-        for (m, c) in f.terms() {
-            let e: Vec<u32> = t.iter().map(|s| m.exp(*s)).collect();
-            let mut rest = *m;
-            for s in t {
-                rest.set(*s, 0);
-            }
-            let term = Poly::term(rest, c.clone());
-            match groups.iter_mut().find(|(g, _)| *g == e) {
-                Some((_, p)) => *p = &*p + &term,
-                None => groups.push((e, term)),
-            }
-        }
-        groups.sort_by(|a, b| a.0.cmp(&b.0));
-        let zero = self.dag.constant(Q::ZERO);
-        let mut acc: Vec<Id> = Vec::new();
-        for (e, c) in groups {
-            let mut prod = one.clone();
-            for (i, ei) in e.iter().enumerate() {
-                for _ in 0..*ei {
-                    prod = self.conv(&prod, &num[i]);
-                }
-            }
-            let deg: usize = e.iter().map(|x| *x as usize).sum();
-            prod = self.conv(&prod, &den_pows[k - deg]);
-            let c = self.in_p0(&c);
-            let term = self.conv(&c, &prod);
-            if acc.len() < term.len() {
-                acc.resize(term.len(), zero);
-            }
-            for (i, x) in term.iter().enumerate() {
-                acc[i] = self.dag.add(acc[i], *x);
-            }
-        }
-        acc
+        clear_trim(&mut InP0(self), f, t, &num, &den, TRIM_DEGREE)
     }
-
     /// det K from the bound trim: K = K0 - g h^T / d (Eqs 16, 27-31), then the 2x2 determinant.
     fn stiffness(&mut self, d: &Derivation) -> [[Id; 2]; 2] {
         let dd = self.poly(&d.d);
@@ -521,6 +452,48 @@ impl Ctx {
             outputs,
             ret,
         }
+    }
+}
+
+/// The DAG as the ring of step 8, one node a value.
+struct Nodes<'a>(&'a mut Ctx);
+
+impl Clearing for Nodes<'_> {
+    type Value = Id;
+    fn lift(&mut self, p: &Poly) -> Id {
+        self.0.poly(p)
+    }
+    fn add(&mut self, a: &Id, b: &Id) -> Id {
+        self.0.dag.add(*a, *b)
+    }
+    fn mul(&mut self, a: &Id, b: &Id) -> Id {
+        self.0.dag.mul(*a, *b)
+    }
+    fn pow(&mut self, a: &Id, n: u32) -> Id {
+        self.0.dag.power(*a, n)
+    }
+}
+
+/// Polynomials in P0 as coefficient nodes (ascending powers), the ring of step 8 for the jump
+/// polynomials.
+struct InP0<'a>(&'a mut Ctx);
+
+impl Clearing for InP0<'_> {
+    type Value = Vec<Id>;
+    fn lift(&mut self, p: &Poly) -> Vec<Id> {
+        self.0.in_p0(p)
+    }
+    fn add(&mut self, a: &Vec<Id>, b: &Vec<Id>) -> Vec<Id> {
+        let zero = self.0.dag.constant(Q::ZERO);
+        (0..a.len().max(b.len()))
+            .map(|i| {
+                let (x, y) = (a.get(i).copied(), b.get(i).copied());
+                self.0.dag.add(x.unwrap_or(zero), y.unwrap_or(zero))
+            })
+            .collect()
+    }
+    fn mul(&mut self, a: &Vec<Id>, b: &Vec<Id>) -> Vec<Id> {
+        self.0.conv(a, b)
     }
 }
 

@@ -12,7 +12,7 @@
 
 use super::expr::{Dag, Id, Node};
 use crate::algebra::Q;
-use crate::analysis::exact_f64;
+use crate::specialise::exact_f64;
 
 /// Unit roundoff of f64.
 const U: f64 = f64::EPSILON / 2.0;

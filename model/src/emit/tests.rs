@@ -10,9 +10,9 @@ use super::rust::{float_literal, pretty};
 use super::{aircraft_values, COMMAND};
 use crate::aircraft::Aircraft;
 use crate::algebra::{Poly, Q};
-use crate::analysis::{exact_f64, univariate};
 use crate::derivation::Derivation;
 use crate::equations::symbols;
+use crate::specialise::{exact_f64, univariate};
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
 
@@ -126,10 +126,11 @@ pub fn values() -> Result<String, syn::Error> {
         });
     }
     let file = quote! {
-        //! Tests of the generated criterion against values computed independently: exact
+        //! Tests of the generated criterion against exact values of the same derivation:
         //! rational arithmetic in the generator (det K via the jump polynomial, a different
-        //! route than the code under test), the paper's Table 1 and independently computed
-        //! jump roots (AIAA 2006-6267, Figs 7-8).
+        //! route than the code under test, not an independent one), the paper's Table 1 and
+        //! jump roots (AIAA 2006-6267, Figs 7-8). The independent check is `independent.rs`
+        //! (SymPy values of `tests/oracle/write_values.py`).
         #![allow(clippy::excessive_precision, clippy::unreadable_literal)]
 
         use roll_criterion::{aircraft_a, aircraft_b, det_k};

@@ -20,13 +20,14 @@ use super::data::{
     BifurcationData, Branch, BranchPoint, DetKData, SpecialKind, SpecialPoint, ZeroSideslipData,
 };
 use super::PlotError;
-use crate::aircraft::{rational_to_f64, Aircraft};
-use crate::analysis::{analyze, cancel, in_aileron, specialisation, univariate, InAileron};
+use crate::aircraft::Aircraft;
+use crate::analysis::analyze;
 use crate::derivation::Derivation;
 use crate::equations::symbols;
 use crate::numeric::PssModel;
 use crate::roots::{positive_roots, UPoly};
 use crate::simulation::{Equilibrium, RudderSchedule, Trims};
+use crate::specialise::{cancel, in_aileron, specialisation, univariate, InAileron};
 use nalgebra::Matrix5;
 
 /// Samples of the P0 sweep of a diagram.
@@ -214,15 +215,6 @@ fn hopf_between(trims: &Trims, a: f64, sa: Spectrum, b: f64, sb: Spectrum) -> Op
     })
 }
 
-/// f64 coefficients of a univariate polynomial (ascending), for Horner.
-fn coeffs(u: &UPoly) -> Vec<f64> {
-    u.coeffs().iter().map(rational_to_f64).collect()
-}
-
-fn horner(c: &[f64], x: f64) -> f64 {
-    c.iter().rev().fold(0.0, |acc, k| acc * x + k)
-}
-
 /// det K as the reduced rational function `num / den` sampled on `[0, p_max]`.
 /// The P0 samples of the det K figures.
 fn sample_grid(p_max: f64) -> Vec<f64> {
@@ -231,9 +223,9 @@ fn sample_grid(p_max: f64) -> Vec<f64> {
 }
 
 fn sample_ratio(num: &UPoly, den: &UPoly, p_max: f64) -> (Vec<f64>, Vec<f64>) {
-    let (n, d) = (coeffs(num), coeffs(den));
+    let (n, d) = (num.to_f64(), den.to_f64());
     let p0 = sample_grid(p_max);
-    let v = p0.iter().map(|x| horner(&n, *x) / horner(&d, *x)).collect();
+    let v = p0.iter().map(|x| n.eval(*x) / d.eval(*x)).collect();
     (p0, v)
 }
 
@@ -636,7 +628,7 @@ mod tests {
                         i.map_or(f64::NAN, |i| e.x[i])
                     };
                     let want = det / d.d.eval_f64(&look);
-                    let got = horner(&coeffs(n), p0) / horner(&coeffs(m), p0);
+                    let got = n.eval_f64(p0) / m.eval_f64(p0);
                     assert!(
                         (got - want).abs() < 1e-9 * want.abs().max(1.0),
                         "{} {p0}: {got} vs {want}",

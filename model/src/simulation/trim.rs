@@ -11,29 +11,15 @@
 use super::SimError;
 use crate::aircraft::Aircraft;
 use crate::algebra::Poly;
-use crate::analysis::{exact_f64, specialisation, univariate};
 use crate::derivation::Derivation;
 use crate::equations::symbols;
 use crate::numeric::{Controls, PssModel};
+use crate::roots::F64Poly;
+use crate::specialise::{exact_f64, specialisation, univariate};
 
-/// A polynomial in P0 with f64 coefficients (ascending powers), evaluated by Horner's scheme.
-#[derive(Clone, Debug)]
-struct Horner(Vec<f64>);
-
-impl Horner {
-    fn new(p: &Poly) -> Horner {
-        let u = univariate(p, symbols().p0);
-        Horner(
-            u.coeffs()
-                .iter()
-                .map(crate::aircraft::rational_to_f64)
-                .collect(),
-        )
-    }
-
-    fn eval(&self, x: f64) -> f64 {
-        self.0.iter().rev().fold(0.0, |acc, c| acc * x + c)
-    }
+/// A specialised polynomial in P0 alone, rounded to f64 for Horner evaluation.
+fn horner(p: &Poly) -> F64Poly {
+    univariate(p, symbols().p0).to_f64()
 }
 
 /// An equilibrium of the PSS model: state and the controls that hold it.
@@ -57,15 +43,15 @@ pub struct Equilibrium {
 pub struct Trims {
     model: PssModel,
     delta_e: f64,
-    det_a: Horner,
+    det_a: F64Poly,
     /// Numerators of [alpha0, beta0, Q0, R0] at delta_a = delta_r = 0.
-    num0: [Horner; 4],
+    num0: [F64Poly; 4],
     /// Their delta_a coefficients (zero without aileron yaw).
-    num_a: [Horner; 4],
+    num_a: [F64Poly; 4],
     /// Their delta_r coefficients.
-    num_r: [Horner; 4],
-    zs_det: Horner,
-    zs_num: [Horner; 3],
+    num_r: [F64Poly; 4],
+    zs_det: F64Poly,
+    zs_num: [F64Poly; 3],
     /// `[[l_delta_a, l_delta_r], [n_delta_a, n_delta_r]]`: the lateral controls in the roll and
     /// yaw equations (exact, from the compiled model's control Jacobian).
     lateral: [[f64; 2]; 2],
@@ -106,14 +92,14 @@ impl Trims {
         Ok(Trims {
             model,
             delta_e,
-            det_a: Horner::new(&d0.det_a),
-            num0: std::array::from_fn(|i| Horner::new(&no_aileron(&d0.trim[i]))),
-            num_a: std::array::from_fn(|i| Horner::new(&d0.trim[i].coeff(s.delta_a, 1))),
+            det_a: horner(&d0.det_a),
+            num0: std::array::from_fn(|i| horner(&no_aileron(&d0.trim[i]))),
+            num_a: std::array::from_fn(|i| horner(&d0.trim[i].coeff(s.delta_a, 1))),
             num_r: std::array::from_fn(|i| {
-                Horner::new(&(&no_aileron(&d1.trim[i]) - &no_aileron(&d0.trim[i])))
+                horner(&(&no_aileron(&d1.trim[i]) - &no_aileron(&d0.trim[i])))
             }),
-            zs_det: Horner::new(&d0.zs_det),
-            zs_num: std::array::from_fn(|i| Horner::new(&d0.zs_trim[i])),
+            zs_det: horner(&d0.zs_det),
+            zs_num: std::array::from_fn(|i| horner(&d0.zs_trim[i])),
             lateral: [[dc[2][0], dc[2][2]], [dc[4][0], dc[4][2]]],
             n_delta_r,
         })
@@ -179,7 +165,7 @@ impl Trims {
         } else {
             (0.5 * (fp + fm) - f0, 0.5 * (fp - fm))
         };
-        crate::analysis::quadratic_roots(a, b, f0)
+        crate::specialise::quadratic_roots(a, b, f0)
             .into_iter()
             .filter_map(|da| {
                 let x = self.state(p0, da, delta_r)?;

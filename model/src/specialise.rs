@@ -1,0 +1,178 @@
+//! Specialisation: the symbol values of an aircraft, exact rationals of f64 inputs, and the
+//! specialised derivation's polynomials as univariate ([`UPoly`]) or bivariate ([`InAileron`])
+//! polynomials in P0.
+//!
+//! The helpers shared by `analysis`, `simulation`, `plot` and `emit`; they depend only on
+//! `algebra`, `aircraft`, `equations`, `derivation` and `roots`, so data flows one way.
+//!
+//! ```
+//! use model::aircraft::Aircraft;
+//! use model::specialise::{exact_f64, specialisation};
+//!
+//! let values = specialisation(&Aircraft::a(), 0.0349);
+//! // every parameter, the elevator and the rudder (delta_r = 0)
+//! assert_eq!(values.len(), model::aircraft::Param::ALL.len() + 2);
+//! assert_eq!(exact_f64(0.5).to_f64(), 0.5);
+//! ```
+
+use crate::aircraft::{Aircraft, Param};
+use crate::algebra::{Poly, Sym, Q};
+use crate::derivation::Derivation;
+use crate::equations::symbols;
+use crate::roots::{F64Poly, UPoly};
+use num_rational::BigRational;
+use num_traits::Zero;
+use std::sync::OnceLock;
+
+/// The symbol values of an aircraft's data (every [`Param`], exact), without any control.
+pub fn aircraft_values(aircraft: &Aircraft) -> Vec<(Sym, Q)> {
+    let s = symbols();
+    Param::ALL
+        .iter()
+        .map(|p| (s.param(*p), Q::from_big(aircraft.exact(*p).clone())))
+        .collect()
+}
+
+/// The symbol values that specialise the derivation to an aircraft and elevator setting
+/// (delta_r = 0 for the unconstrained roll).
+pub fn specialisation(aircraft: &Aircraft, delta_e_rad: f64) -> Vec<(Sym, Q)> {
+    let s = symbols();
+    let mut values = aircraft_values(aircraft);
+    values.push((s.delta_e, exact_f64(delta_e_rad)));
+    values.push((s.delta_r, Q::ZERO));
+    values
+}
+
+/// The exact rational value of a finite f64.
+pub fn exact_f64(x: f64) -> Q {
+    Q::from_big(BigRational::from_float(x).unwrap_or_default())
+}
+
+/// The parametric derivation, derived once per process (every analysis specialises it).
+pub fn parametric() -> &'static Derivation {
+    static P: OnceLock<Derivation> = OnceLock::new();
+    P.get_or_init(Derivation::parametric)
+}
+
+/// A polynomial in `x` alone as a dense univariate polynomial. Panics if another symbol occurs
+/// (the specialised derivation leaves only P0 by construction).
+pub fn univariate(p: &Poly, x: Sym) -> UPoly {
+    let c = p
+        .univariate_coeffs(x)
+        .expect("specialised criterion polynomials are univariate in P0");
+    UPoly::new(c.iter().map(Q::to_big).collect())
+}
+
+/// Cancels every common factor of `num / den` exactly; returns the reduced pair.
+pub fn cancel(num: &UPoly, den: &UPoly) -> (UPoly, UPoly) {
+    let (mut n, mut d) = (num.clone(), den.clone());
+    if n.is_zero() || d.is_zero() {
+        return (n, d);
+    }
+    loop {
+        let g = n.gcd(&d);
+        if g.degree().unwrap_or(0) == 0 {
+            return (n, d);
+        }
+        n = n.div_rem(&g).0;
+        d = d.div_rem(&g).0;
+    }
+}
+
+/// A polynomial in P0 and delta_a (specialised: no other symbol) as [`InAileron`], scaled by a
+/// power of two (see [`in_aileron_all`]).
+pub fn in_aileron(p: &Poly) -> InAileron {
+    in_aileron_all(&[p]).remove(0)
+}
+
+/// Polynomials in P0 and delta_a as [`InAileron`]s, all scaled by the same power of two, which
+/// brings their largest coefficient near 1 so that f64 evaluation neither overflows nor
+/// underflows for any aircraft (cleared criterion polynomials carry integer scales of hundreds
+/// of digits) and ratios of them are unchanged.
+pub fn in_aileron_all(ps: &[&Poly]) -> Vec<InAileron> {
+    let s = symbols();
+    let cs: Vec<Vec<UPoly>> = ps
+        .iter()
+        .map(|p| {
+            p.coeffs(s.delta_a)
+                .iter()
+                .map(|c| univariate(c, s.p0))
+                .collect()
+        })
+        .collect();
+    let log2 = |q: &BigRational| q.numer().bits() as i64 - q.denom().bits() as i64;
+    let e = cs
+        .iter()
+        .flatten()
+        .flat_map(|c| c.coeffs().iter().filter(|q| !q.is_zero()).map(log2))
+        .max()
+        .unwrap_or(0);
+    let two = BigRational::from_integer(2.into());
+    let scale = if e >= 0 {
+        num_traits::pow(two.recip(), e as usize)
+    } else {
+        num_traits::pow(two, (-e) as usize)
+    };
+    cs.into_iter()
+        .map(|c| InAileron(c.iter().map(|u| u.scale(&scale)).collect()))
+        .collect()
+}
+
+/// A polynomial in P0 and delta_a: `coeffs[i]` (a polynomial in P0) multiplies `delta_a^i`.
+#[derive(Clone, Debug)]
+pub struct InAileron(pub Vec<UPoly>);
+
+impl InAileron {
+    /// The coefficients of the polynomial in delta_a at `p0`, in f64.
+    pub fn at(&self, p0: f64) -> Vec<f64> {
+        self.0.iter().map(|c| c.eval_f64(p0)).collect()
+    }
+
+    /// Value at `(p0, delta_a)` in f64.
+    pub fn eval(&self, p0: f64, delta_a: f64) -> f64 {
+        F64Poly(self.at(p0)).eval(delta_a)
+    }
+
+    /// The real roots in delta_a at `p0` (at most two: the trim condition is at most quadratic),
+    /// by the cancellation-free form of the quadratic formula.
+    pub fn aileron_roots(&self, p0: f64) -> Vec<f64> {
+        let c = self.at(p0);
+        let get = |i: usize| c.get(i).copied().unwrap_or(0.0);
+        quadratic_roots(get(2), get(1), get(0))
+    }
+}
+
+/// Real roots of `a x^2 + b x + c` (linear when `a = 0`), without cancellation.
+pub fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
+    if a == 0.0 {
+        return if b == 0.0 { vec![] } else { vec![-c / b] };
+    }
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 {
+        return vec![];
+    }
+    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    let mut r = if q == 0.0 {
+        vec![0.0]
+    } else {
+        vec![q / a, c / q]
+    };
+    r.sort_by(f64::total_cmp);
+    r
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quadratic_roots_are_accurate_without_cancellation() {
+        // x^2 - 1e8 x + 1 = 0: roots 1e8 and 1e-8; the textbook formula loses the small one.
+        let r = quadratic_roots(1.0, -1e8, 1.0);
+        assert_eq!(r.len(), 2);
+        assert!((r[0] - 1e-8).abs() < 1e-22, "{r:?}");
+        assert!((r[1] - 1e8).abs() < 1e-6);
+        assert_eq!(quadratic_roots(0.0, 2.0, -1.0), vec![0.5]);
+        assert!(quadratic_roots(1.0, 0.0, 1.0).is_empty());
+    }
+}

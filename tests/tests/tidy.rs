@@ -1,0 +1,95 @@
+//! Tidy checks of the hand-written sources (rust-analyzer's habit): every Rust file opens with a
+//! `//!` line saying what it is, and comments cite equations in one form, "Eq. N" or "Eqs N-M",
+//! so that a search for "Eq. 27" finds every mention. Generated files (`// @generated`) are
+//! exempt; they are checked by `model emit --check`.
+
+use std::path::{Path, PathBuf};
+
+fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(dir).expect("readable source tree") {
+        let path = entry.expect("directory entry").path();
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
+        if path.is_dir() {
+            if !matches!(name, "target" | ".git" | "generated") && !name.starts_with('.') {
+                rust_files(&path, out);
+            }
+        } else if name.ends_with(".rs") {
+            out.push(path);
+        }
+    }
+}
+
+fn hand_written() -> Vec<(PathBuf, String)> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let mut files = Vec::new();
+    for dir in ["model", "derive", "tests"] {
+        rust_files(&root.join(dir), &mut files);
+    }
+    files.sort();
+    files
+        .into_iter()
+        .filter_map(|p| {
+            let text = std::fs::read_to_string(&p).expect("UTF-8 source");
+            (!text.starts_with("// @generated")).then_some((p, text))
+        })
+        .collect()
+}
+
+#[test]
+fn every_hand_written_source_file_opens_with_a_module_doc_line() {
+    let files = hand_written();
+    assert!(files.len() > 50, "found only {} files", files.len());
+    let missing: Vec<_> = files
+        .iter()
+        .filter(|(_, text)| !text.starts_with("//!"))
+        .map(|(p, _)| p.display().to_string())
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "files without a leading //! line: {missing:?}"
+    );
+}
+
+/// A comment's citation in a form other than "Eq. N" / "Eqs N-M", if any.
+fn stray_citation(comment: &str) -> Option<&'static str> {
+    let w: Vec<&str> = comment.split_whitespace().collect();
+    let number = |s: &str| s.starts_with(|c: char| c.is_ascii_digit());
+    for pair in w.windows(2) {
+        let (a, b) = (pair[0].trim_start_matches('('), pair[1]);
+        if !number(b) {
+            continue;
+        }
+        match a {
+            "Eqs." => return Some("\"Eqs. N\" (write \"Eqs N-M\")"),
+            "Eq" | "Equation" | "Equations" | "eq." | "Eqn" => {
+                return Some("\"Eq N\" (write \"Eq. N\")")
+            }
+            "Eq." if b.contains('-') => return Some("\"Eq. N-M\" (write \"Eqs N-M\")"),
+            _ => {}
+        }
+    }
+    None
+}
+
+#[test]
+fn comments_cite_equations_as_eq_n_or_eqs_n_m() {
+    let mut stray = Vec::new();
+    for (p, text) in hand_written() {
+        for (i, line) in text.lines().enumerate() {
+            if let Some(at) = line.find("//") {
+                if let Some(why) = stray_citation(&line[at..]) {
+                    stray.push(format!("{}:{}: {why}", p.display(), i + 1));
+                }
+            }
+        }
+    }
+    assert!(stray.is_empty(), "{stray:#?}");
+}
+
+#[test]
+fn the_citation_check_sees_each_stray_form() {
+    assert!(stray_citation("Eq. 27 and Eqs 28-31").is_none());
+    assert!(stray_citation("Eqs. 6-10").is_some());
+    assert!(stray_citation("Eq 5").is_some());
+    assert!(stray_citation("Eq. 1-2").is_some());
+}

@@ -27,6 +27,7 @@ pub use crate::specialise::{
     cancel, exact_f64, in_aileron, in_aileron_all, parametric, quadratic_roots, specialisation,
     univariate, InAileron,
 };
+use crate::specialise::{on_trim, OnTrim};
 pub use departure::{
     omega_at, parametric_characteristic, FirstDeparture, HopfPoint, HopfPolys, Landing,
 };
@@ -197,20 +198,7 @@ pub fn analyze_with(
     let d_at = in_aileron(&d.d_at);
     let point = |p0: f64, f: &InAileron| -> JumpPoint {
         let da = aileron_of_root(&g, f, p0);
-        let dv = trims[0].eval(p0, 0.0);
-        let [alpha, beta, q, r] = std::array::from_fn(|i| trims[i + 1].eval(p0, da) / dv);
-        JumpPoint {
-            p0,
-            delta_a_rad: da,
-            delta_a_deg: da.to_degrees(),
-            alpha,
-            beta,
-            q,
-            r,
-            within_limits: aircraft.within_limits(da, delta_e_rad, None),
-            valid: aircraft.valid(alpha, beta),
-            lands_at: None,
-        }
+        departure::trim_point(p0, da, &trims, (aircraft, delta_e_rad))
     };
 
     // Every root shared with det A is a trim at infinity (divergence), not a pole on the curve.
@@ -484,30 +472,21 @@ impl CriterionPolys {
             num: r.num.subs_values(&values),
             den: r.den.subs_values(&values),
         };
-        // One scale for det A and the numerators keeps every trim ratio exact.
+        // One scale for the zero-sideslip determinant and its numerators keeps every trim
+        // ratio exact (the unconstrained trim's are cleared the same way by `on_trim`).
         let cleared = |ps: &[&Poly]| {
             Poly::subs_values_cleared(ps, &values)
                 .expect("the parametric derivation has integer coefficients")
         };
-        let t = cleared(&[
-            &par.det_a,
-            &par.trim[0],
-            &par.trim[1],
-            &par.trim[2],
-            &par.trim[3],
-        ]);
-        let (det_a, trim) = (
-            t[0].clone(),
-            [t[1].clone(), t[2].clone(), t[3].clone(), t[4].clone()],
-        );
-        let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
-        let det_j5 = cleared(&[&par.det_j5])[0].clone();
-        let d = cleared(&[&par.d])[0].clone();
-        let roll = cleared(&[&par.roll_at_trim])[0].clone();
-        let step8 = |f: &Poly| homogenize(f, &t4, &trim, &det_a, TRIM_DEGREE);
-        let trim_condition = step8(&roll);
-        let jump_at = step8(&det_j5);
-        let d_at = step8(&d);
+        let OnTrim {
+            det_a,
+            trim,
+            det_j5,
+            d,
+            trim_condition,
+            jump_at,
+            d_at,
+        } = on_trim(par, &values);
         let jump = univariate(&eliminate_aileron(&trim_condition, &jump_at), s.p0);
         let poles = univariate(&eliminate_aileron(&trim_condition, &d_at), s.p0);
 

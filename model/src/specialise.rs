@@ -17,7 +17,7 @@
 
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::{Poly, Sym, Q};
-use crate::derivation::Derivation;
+use crate::derivation::{homogenize, Derivation, TRIM_DEGREE};
 use crate::equations::symbols;
 use crate::roots::{F64Poly, UPoly};
 use num_rational::BigRational;
@@ -76,6 +76,64 @@ pub fn cancel(num: &UPoly, den: &UPoly) -> (UPoly, UPoly) {
         }
         n = n.div_rem(&g).0;
         d = d.div_rem(&g).0;
+    }
+}
+
+/// The unconstrained roll's step-8 results for data `values` (all parameters, or some left
+/// symbolic as in a clearance box): det A and the trim numerators under one integer scale (so
+/// every trim ratio stays exact), det J5 and d in the trim symbols with their denominators
+/// cleared, and the trim condition, `det J5 det(A)^2` and `d det(A)^2` on the trim, in P0,
+/// delta_a and the symbols `values` leaves free. Each is exact up to a constant factor.
+#[derive(Clone, Debug)]
+pub struct OnTrim {
+    /// det A (Eq. 4).
+    pub det_a: Poly,
+    /// Numerators of [alpha0, beta0, Q0, R0] over `det_a`.
+    pub trim: [Poly; 4],
+    /// det J5 in the trim symbols.
+    pub det_j5: Poly,
+    /// The static-residual denominator d (Eq. 22) in the trim symbols.
+    pub d: Poly,
+    /// The trim condition `det(A)^2 p_dot` on the trim.
+    pub trim_condition: Poly,
+    /// `det J5 det(A)^2` on the trim.
+    pub jump_at: Poly,
+    /// `d det(A)^2` on the trim.
+    pub d_at: Poly,
+}
+
+/// [`OnTrim`] of the parametric derivation `par` with `values` substituted into its small
+/// trim-level results first (step 8 then runs on the small specialised polynomials).
+pub fn on_trim(par: &Derivation, values: &[(Sym, Q)]) -> OnTrim {
+    let s = symbols();
+    let cleared = |ps: &[&Poly]| {
+        Poly::subs_values_cleared(ps, values)
+            .expect("the parametric derivation has integer coefficients")
+    };
+    let t = cleared(&[
+        &par.det_a,
+        &par.trim[0],
+        &par.trim[1],
+        &par.trim[2],
+        &par.trim[3],
+    ]);
+    let (det_a, trim) = (
+        t[0].clone(),
+        [t[1].clone(), t[2].clone(), t[3].clone(), t[4].clone()],
+    );
+    let det_j5 = cleared(&[&par.det_j5])[0].clone();
+    let d = cleared(&[&par.d])[0].clone();
+    let roll = cleared(&[&par.roll_at_trim])[0].clone();
+    let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
+    let step8 = |f: &Poly| homogenize(f, &t4, &trim, &det_a, TRIM_DEGREE);
+    OnTrim {
+        trim_condition: step8(&roll),
+        jump_at: step8(&det_j5),
+        d_at: step8(&d),
+        det_a,
+        trim,
+        det_j5,
+        d,
     }
 }
 

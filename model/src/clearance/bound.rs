@@ -22,8 +22,8 @@ use super::interval::I;
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::{Poly, Sym};
 use crate::analysis::{parametric, specialisation};
-use crate::derivation::{homogenize, TRIM_DEGREE};
 use crate::equations::symbols;
+use crate::specialise::{on_trim, OnTrim};
 
 /// A polynomial compiled for interval evaluation over the variables `[P0, theta_1, ...]`.
 #[derive(Clone, Debug)]
@@ -165,24 +165,12 @@ impl BoxPolys {
             .into_iter()
             .filter(|(sym, _)| !free.contains(sym))
             .collect();
-        let cleared = |ps: &[&Poly]| {
-            Poly::subs_values_cleared(ps, &values)
-                .expect("the parametric derivation has integer coefficients")
-        };
-        let t = cleared(&[
-            &par.det_a,
-            &par.trim[0],
-            &par.trim[1],
-            &par.trim[2],
-            &par.trim[3],
-        ]);
-        let det_a = t[0].clone();
-        let trim = [t[1].clone(), t[2].clone(), t[3].clone(), t[4].clone()];
-        let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
-        let det_j5 = cleared(&[&par.det_j5])[0].clone();
-        let roll = cleared(&[&par.roll_at_trim])[0].clone();
-        let g = homogenize(&roll, &t4, &trim, &det_a, TRIM_DEGREE);
-        let j = homogenize(&det_j5, &t4, &trim, &det_a, TRIM_DEGREE);
+        let OnTrim {
+            det_a,
+            trim_condition: g,
+            jump_at: j,
+            ..
+        } = on_trim(par, &values);
         let mut vars = vec![s.p0];
         vars.extend(&free);
         let gc = g.coeffs(s.delta_a);

@@ -62,6 +62,22 @@ pub struct JumpPoint {
     pub lands_at: Option<Vec<Landing>>,
 }
 
+impl JumpPoint {
+    /// Its numbers (roll rate, aileron in rad and deg, trim state): what must be finite before
+    /// it is reported.
+    fn numbers(&self) -> [f64; 7] {
+        [
+            self.p0,
+            self.delta_a_rad,
+            self.delta_a_deg,
+            self.alpha,
+            self.beta,
+            self.q,
+            self.r,
+        ]
+    }
+}
+
 /// A departure point of the zero-sideslip roll: a positive root of det K at the beta = 0 trim.
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct DeparturePoint {
@@ -354,15 +370,7 @@ fn check(a: &Analysis) -> Result<(), AnalysisError> {
     }
     finite("a divergence roll rate".into(), &a.divergence_roll_rates)?;
     for (i, j) in a.jump.iter().chain(&a.det_k_poles).enumerate() {
-        let v = [
-            j.p0,
-            j.delta_a_rad,
-            j.delta_a_deg,
-            j.alpha,
-            j.beta,
-            j.q,
-            j.r,
-        ];
+        let v = j.numbers();
         finite(
             format!("the trim at P0 = {:e} rad/s (point {})", j.p0, i + 1),
             &v,

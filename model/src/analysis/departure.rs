@@ -635,19 +635,8 @@ pub(super) fn zs_hopf_roll_rates(h: &HopfPolys, zs_trims: &[InAileron]) -> Vec<(
 pub(super) fn check_finite(a: &super::Analysis) -> Result<(), String> {
     for h in &a.hopf {
         let j = &h.point;
-        let v = [
-            j.p0,
-            j.delta_a_rad,
-            j.delta_a_deg,
-            j.alpha,
-            j.beta,
-            j.q,
-            j.r,
-            h.omega,
-            h.period,
-            h.l1,
-        ];
-        if !v.iter().all(|x| x.is_finite()) {
+        let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+        if !(finite(&j.numbers()) && finite(&[h.omega, h.period, h.l1])) {
             return Err(format!("the Hopf point at P0 = {:e} rad/s", j.p0));
         }
     }

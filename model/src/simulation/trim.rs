@@ -55,7 +55,6 @@ pub struct Trims {
     /// `[[l_delta_a, l_delta_r], [n_delta_a, n_delta_r]]`: the lateral controls in the roll and
     /// yaw equations (exact, from the compiled model's control Jacobian).
     lateral: [[f64; 2]; 2],
-    n_delta_r: f64,
 }
 
 /// Relative size below which a trim denominator counts as zero (trims blow up: Eq. 5).
@@ -76,7 +75,7 @@ impl Trims {
         let s = symbols();
         let model = PssModel::new(aircraft);
         let dc = model.control_jacobian(&[0.0; 5], &Controls::default());
-        let (l_delta_a, n_delta_r) = (dc[2][0], dc[4][2]);
+        let l_delta_a = dc[2][0];
         if l_delta_a == 0.0 || !l_delta_a.is_finite() {
             return Err(SimError::NoAileronAuthority);
         }
@@ -101,7 +100,6 @@ impl Trims {
             zs_det: horner(&d0.zs_det),
             zs_num: std::array::from_fn(|i| horner(&d0.zs_trim[i])),
             lateral: [[dc[2][0], dc[2][2]], [dc[4][0], dc[4][2]]],
-            n_delta_r,
         })
     }
 
@@ -192,12 +190,17 @@ impl Trims {
             })
     }
 
+    /// The rudder's yaw authority n_delta_r, 1/s^2.
+    fn n_delta_r(&self) -> f64 {
+        self.lateral[1][1]
+    }
+
     /// The zero-sideslip trim at roll rate `p0` (Eq. 35) with the aileron and the rudder that
     /// hold it (the roll and yaw equations, linear in both, solved together). `None` where the
     /// zero-sideslip determinant vanishes or the lateral controls cannot hold the trim
     /// (`l_delta_a n_delta_r = l_delta_r n_delta_a`).
     pub fn zero_sideslip(&self, p0: f64) -> Option<Equilibrium> {
-        if self.n_delta_r == 0.0 {
+        if self.n_delta_r() == 0.0 {
             return None;
         }
         let den = self.zs_det.eval(p0);
@@ -212,19 +215,15 @@ impl Trims {
         }
         let v: [f64; 3] = std::array::from_fn(|i| self.zs_num[i].eval(p0) / den);
         let x = [v[0], 0.0, p0, v[1], v[2]];
-        let f = |delta_a: f64, delta_r: f64| {
-            let r = self.model.rhs(
-                &x,
-                &Controls {
-                    delta_a,
-                    delta_e: self.delta_e,
-                    delta_r,
-                },
-            );
-            (r[2], r[4])
+        // The roll and yaw equations are linear in (delta_a, delta_r) with the matrix `lateral`:
+        // their values without lateral controls, then Cramer.
+        let free = Controls {
+            delta_a: 0.0,
+            delta_e: self.delta_e,
+            delta_r: 0.0,
         };
-        // The roll and yaw equations are linear in (delta_a, delta_r) with the matrix `lateral`.
-        let (r0, y0) = f(0.0, 0.0);
+        let rhs = self.model.rhs(&x, &free);
+        let (r0, y0) = (rhs[2], rhs[4]);
         let [[m11, m12], [m21, m22]] = self.lateral;
         let det = m11 * m22 - m12 * m21;
         let controls = Controls {
@@ -368,7 +367,7 @@ impl RudderSchedule {
 
     /// Tabulates the zero-sideslip branch through P0 = 0.
     pub fn new(trims: Trims) -> Result<RudderSchedule, SimError> {
-        if trims.n_delta_r == 0.0 {
+        if trims.n_delta_r() == 0.0 {
             return Err(SimError::NoRudderAuthority);
         }
         let da = |p0: f64| trims.zero_sideslip(p0).map(|e| e.controls.delta_a);

@@ -18,10 +18,11 @@ use crate::aircraft::Aircraft;
 use crate::algebra::{Poly, Sym, Q};
 use crate::derivation::{eliminate_aileron, homogenize, Derivation, Ratio, TRIM_DEGREE};
 use crate::equations::symbols;
-use crate::roots::{positive_roots, UPoly};
+use crate::roots::{positive_roots, RealRoot, UPoly};
 use serde::Serialize;
 
 mod departure;
+pub mod fast;
 mod primary;
 pub use crate::specialise::{
     cancel, exact_f64, in_aileron, in_aileron_all, parametric, quadratic_roots, specialisation,
@@ -206,135 +207,201 @@ pub fn analyze_with(
     if d.jump.is_zero() {
         return Err(AnalysisError::Degenerate("det J5"));
     }
-    let divergence_roll_rates = positive_roots(&det_a).iter().map(|r| r.value).collect();
-    let g = in_aileron(&d.trim_condition);
-    // The trim numerators share det A's scale, so that their ratios are the trim.
-    let trims = in_aileron_all(&[&d.det_a, &d.trim[0], &d.trim[1], &d.trim[2], &d.trim[3]]);
-    let jump_at = in_aileron(&d.jump_at);
-    let d_at = in_aileron(&d.d_at);
-    let point = |p0: f64, f: &InAileron| -> JumpPoint {
-        let da = aileron_of_root(&g, f, p0);
-        departure::trim_point(p0, da, &trims, (aircraft, delta_e_rad))
+    let values = |roots: Vec<RealRoot>| roots.iter().map(|r| r.value).collect::<Vec<f64>>();
+    // Every root shared with det A is a trim at infinity (divergence), not a pole on the curve;
+    // a root shared with det A after cancellation has no finite trim: not a jump point.
+    let zs_det = u(&d.zs_det);
+    let zs_num = strip(&cancel(&u(&d.zs_jump), &u(&d.zs_d_det)).0, &zs_det);
+    let found = Found {
+        divergence: values(positive_roots(&det_a)),
+        jump_roots: values(positive_roots(&strip(&cancel(&d.jump, &d.poles).0, &det_a))),
+        pole_roots: values(positive_roots(&strip(&d.poles, &det_a))),
+        zs_roots: values(positive_roots(&zs_num)),
+        g: in_aileron(&d.trim_condition),
+        // The trim numerators share det A's scale, so that their ratios are the trim.
+        trims: in_aileron_all(&[&d.det_a, &d.trim[0], &d.trim[1], &d.trim[2], &d.trim[3]]),
+        jump_at: in_aileron(&d.jump_at),
+        d_at: in_aileron(&d.d_at),
+        // Numerators share the determinant's scale (see `in_aileron_all`).
+        zs_trims: in_aileron_all(&[&d.zs_det, &d.zs_trim[0], &d.zs_trim[1], &d.zs_trim[2]]),
+        // Without lateral control authority (l_delta_a n_delta_r = l_delta_r n_delta_a) no
+        // zero-sideslip trim exists: there is nothing to report.
+        lateral_authority: !d.zs_delta_a.den.is_zero(),
     };
+    let zs_controls =
+        |at: &[(Sym, f64)]| (eval_trim(&d.zs_delta_a, at), eval_trim(&d.zs_delta_r, at));
+    let (mut analysis, critical) = found.assemble(aircraft, delta_e_rad, &zs_controls);
 
-    // Every root shared with det A is a trim at infinity (divergence), not a pole on the curve.
-    let poles_num = strip(&d.poles, &det_a);
-    let det_k_poles = positive_roots(&poles_num)
-        .iter()
-        .map(|root| point(root.value, &d_at))
-        // As for jump points below: a root without a real trim is no pole on the curve.
-        .filter(|j| j.delta_a_rad.is_finite())
-        .collect();
+    if departures {
+        let hp = HopfPolys::new(&d, aircraft, delta_e_rad);
+        let (g, trims) = (&found.g, &found.trims);
+        for j in &mut analysis.jump {
+            j.lands_at = Some(departure::landings(&hp, &d, trims, j));
+        }
+        if let Some(i) = critical {
+            analysis.critical = Some(analysis.jump[i].clone());
+        }
+        analysis.hopf = departure::hopf_points(&hp, g, trims, (aircraft, delta_e_rad));
+        analysis.first_departure = departure::first_departure(
+            &hp,
+            g,
+            trims,
+            &found.divergence,
+            &analysis.jump,
+            &analysis.hopf,
+            aileron_range(aircraft),
+        );
+        analysis.zero_sideslip.hopf_roll_rates =
+            departure::zs_hopf_roll_rates(&hp, &found.zs_trims)
+                .iter()
+                .map(|(p, _)| *p)
+                .collect();
+    }
+    check(&analysis)?;
+    Ok(analysis)
+}
 
-    // A root shared with det A after cancellation has no finite trim: not a jump point.
-    let jump_num = strip(&cancel(&d.jump, &d.poles).0, &det_a);
-    let mut jump: Vec<JumpPoint> = positive_roots(&jump_num)
-        .iter()
-        .map(|root| point(root.value, &jump_at))
-        // A root where the common aileron of the trim condition and det J5 is complex (a
-        // conjugate pair shared by both) has no real trim.
-        .filter(|j| j.delta_a_rad.is_finite())
-        .collect();
-
-    let bound = aircraft
+/// How far the primary branch is followed: the aileron limit, at least
+/// [`DEFAULT_AILERON_RANGE`], rad.
+fn aileron_range(aircraft: &Aircraft) -> f64 {
+    aircraft
         .limits
         .aileron_deg
         .map_or(DEFAULT_AILERON_RANGE, |l| {
             l.to_radians().max(DEFAULT_AILERON_RANGE)
-        });
-    let hp = departures.then(|| HopfPolys::new(&d, aircraft, delta_e_rad));
-    let (mut hopf, mut first_departure, mut zs_hopf) = (Vec::new(), None, Vec::new());
-    if let Some(hp) = &hp {
-        for j in &mut jump {
-            j.lands_at = Some(departure::landings(hp, &d, &trims, j));
-        }
-        hopf = departure::hopf_points(hp, &g, &trims, (aircraft, delta_e_rad));
-        first_departure = departure::first_departure(hp, &g, &trims, &jump, &hopf, bound);
-    }
-    let roots: Vec<(f64, f64)> = jump.iter().map(|j| (j.p0, j.delta_a_rad)).collect();
-    let (critical, critical_note) = match primary::follow(&g, &trims[0], &roots, bound) {
-        Outcome::Jump(i) => (Some(jump[i].clone()), None),
-        Outcome::Divergence(p) => (
-            None,
-            Some(format!(
-                "the primary branch diverges (det A = 0, Eq. 5) near P0 = {p:.4} rad/s before any jump"
-            )),
-        ),
-        Outcome::Unbounded => (
-            None,
-            Some(format!(
-                "the primary branch reaches |delta_a| = {:.1} deg without a jump",
-                bound.to_degrees()
-            )),
-        ),
-        Outcome::Lost(why) => (None, Some(format!("the primary branch is not defined: {why}"))),
-    };
-
-    let zs_det = u(&d.zs_det);
-    let zs_num = strip(&cancel(&u(&d.zs_jump), &u(&d.zs_d_det)).0, &zs_det);
-    // Numerators share the determinant's scale (see `in_aileron_all`).
-    let zs_trims = in_aileron_all(&[&d.zs_det, &d.zs_trim[0], &d.zs_trim[1], &d.zs_trim[2]]);
-    // Without lateral control authority (l_delta_a n_delta_r = l_delta_r n_delta_a) no
-    // zero-sideslip trim exists: there is nothing to report.
-    if let Some(hp) = &hp {
-        zs_hopf = departure::zs_hopf_roll_rates(hp, &zs_trims)
-            .iter()
-            .map(|(p, _)| *p)
-            .collect();
-    }
-    let lateral_authority = !d.zs_delta_a.den.is_zero();
-    let zs_roots = if lateral_authority {
-        positive_roots(&zs_num)
-    } else {
-        Vec::new()
-    };
-    let departure = zs_roots
-        .iter()
-        .map(|root| {
-            let p0 = root.value;
-            let dv = zs_trims[0].eval(p0, 0.0);
-            let [alpha, q, r] = std::array::from_fn(|i| zs_trims[i + 1].eval(p0, 0.0) / dv);
-            let at = [
-                (s.alpha0, alpha),
-                (s.beta0, 0.0),
-                (s.p0, p0),
-                (s.q0, q),
-                (s.r0, r),
-            ];
-            let da = eval_trim(&d.zs_delta_a, &at);
-            let dr = eval_trim(&d.zs_delta_r, &at);
-            DeparturePoint {
-                p0,
-                delta_a_rad: da,
-                delta_a_deg: da.to_degrees(),
-                alpha,
-                q,
-                r,
-                delta_r_rad: dr,
-                delta_r_deg: dr.to_degrees(),
-                within_limits: aircraft.within_limits(da, delta_e_rad, Some(dr)),
-                valid: aircraft.valid(alpha, 0.0),
-            }
         })
-        .collect();
+}
 
-    let analysis = Analysis {
-        aircraft: aircraft.name.clone(),
-        delta_e_rad,
-        critical,
-        critical_note,
-        divergence_roll_rates,
-        jump,
-        det_k_poles,
-        zero_sideslip: ZeroSideslip {
-            departure,
-            hopf_roll_rates: std::mem::take(&mut zs_hopf),
-        },
-        hopf,
-        first_departure,
-    };
-    check(&analysis)?;
-    Ok(analysis)
+/// The aileron and rudder of a zero-sideslip trim given as symbol values (the trim symbols).
+pub(crate) type ZsControls<'a> = dyn Fn(&[(Sym, f64)]) -> (f64, f64) + 'a;
+
+/// What a route (exact or certified floating point) has found for one aircraft: the positive
+/// roots of the criterion polynomials, and the polynomials in f64 that give the trim, the
+/// aileron and the primary branch at them.
+pub(crate) struct Found {
+    /// Positive roots of det A (Eq. 5).
+    pub divergence: Vec<f64>,
+    /// Positive roots of the jump polynomial, common roots with the poles and det A removed.
+    pub jump_roots: Vec<f64>,
+    /// Positive roots of the pole polynomial, common roots with det A removed.
+    pub pole_roots: Vec<f64>,
+    /// Positive roots of det K at the zero-sideslip trims (poles and det A1 removed).
+    pub zs_roots: Vec<f64>,
+    /// The trim condition.
+    pub g: InAileron,
+    /// det A and the numerators of [alpha0, beta0, Q0, R0], under one scale.
+    pub trims: Vec<InAileron>,
+    /// `det J5 det(A)^2` on the trim.
+    pub jump_at: InAileron,
+    /// `d det(A)^2` on the trim.
+    pub d_at: InAileron,
+    /// det A1 and the numerators of [alpha0, Q0, R0] of the zero-sideslip trim.
+    pub zs_trims: Vec<InAileron>,
+    /// Whether the roll and yaw equations can hold zero sideslip with aileron and rudder.
+    pub lateral_authority: bool,
+}
+
+impl Found {
+    /// The jump part of the analysis (no Hopf points, landings or first departure) and the
+    /// index of the critical jump in its `jump` list.
+    pub(crate) fn assemble(
+        &self,
+        aircraft: &Aircraft,
+        delta_e_rad: f64,
+        zs_controls: &ZsControls<'_>,
+    ) -> (Analysis, Option<usize>) {
+        let s = symbols();
+        let point = |p0: f64, f: &InAileron| -> JumpPoint {
+            let da = aileron_of_root(&self.g, f, p0);
+            departure::trim_point(p0, da, &self.trims, (aircraft, delta_e_rad))
+        };
+        let det_k_poles = self
+            .pole_roots
+            .iter()
+            .map(|p0| point(*p0, &self.d_at))
+            // As for jump points below: a root without a real trim is no pole on the curve.
+            .filter(|j| j.delta_a_rad.is_finite())
+            .collect();
+        let jump: Vec<JumpPoint> = self
+            .jump_roots
+            .iter()
+            .map(|p0| point(*p0, &self.jump_at))
+            // A root where the common aileron of the trim condition and det J5 is complex (a
+            // conjugate pair shared by both) has no real trim.
+            .filter(|j| j.delta_a_rad.is_finite())
+            .collect();
+        let roots: Vec<(f64, f64)> = jump.iter().map(|j| (j.p0, j.delta_a_rad)).collect();
+        let bound = aileron_range(aircraft);
+        let (critical, critical_note) =
+            match primary::follow(&self.g, &self.trims[0], &self.divergence, &roots, bound) {
+                Outcome::Jump(i) => (Some(i), None),
+                Outcome::Divergence(p) => (
+                    None,
+                    Some(format!(
+                        "the primary branch diverges (det A = 0, Eq. 5) near P0 = {p:.4} rad/s before any jump"
+                    )),
+                ),
+                Outcome::Unbounded => (
+                    None,
+                    Some(format!(
+                        "the primary branch reaches |delta_a| = {:.1} deg without a jump",
+                        bound.to_degrees()
+                    )),
+                ),
+                Outcome::Lost(why) => {
+                    (None, Some(format!("the primary branch is not defined: {why}")))
+                }
+            };
+        let zs_roots: &[f64] = if self.lateral_authority {
+            &self.zs_roots
+        } else {
+            &[]
+        };
+        let departure = zs_roots
+            .iter()
+            .map(|&p0| {
+                let z = &self.zs_trims;
+                let dv = z[0].eval(p0, 0.0);
+                let [alpha, q, r] = std::array::from_fn(|i| z[i + 1].eval(p0, 0.0) / dv);
+                let at = [
+                    (s.alpha0, alpha),
+                    (s.beta0, 0.0),
+                    (s.p0, p0),
+                    (s.q0, q),
+                    (s.r0, r),
+                ];
+                let (da, dr) = zs_controls(&at);
+                DeparturePoint {
+                    p0,
+                    delta_a_rad: da,
+                    delta_a_deg: da.to_degrees(),
+                    alpha,
+                    q,
+                    r,
+                    delta_r_rad: dr,
+                    delta_r_deg: dr.to_degrees(),
+                    within_limits: aircraft.within_limits(da, delta_e_rad, Some(dr)),
+                    valid: aircraft.valid(alpha, 0.0),
+                }
+            })
+            .collect();
+        let analysis = Analysis {
+            aircraft: aircraft.name.clone(),
+            delta_e_rad,
+            critical: critical.map(|i: usize| jump[i].clone()),
+            critical_note,
+            divergence_roll_rates: self.divergence.clone(),
+            jump,
+            det_k_poles,
+            zero_sideslip: ZeroSideslip {
+                departure,
+                hopf_roll_rates: Vec::new(),
+            },
+            hopf: Vec::new(),
+            first_departure: None,
+        };
+        (analysis, critical)
+    }
 }
 
 /// The checks every answer passes before it is reported: every number finite, and no two
@@ -400,11 +467,17 @@ fn check(a: &Analysis) -> Result<(), AnalysisError> {
     Ok(())
 }
 
-/// The aileron of the trim at a root `p0` of the resultant of `g` and `f` in delta_a: the root
-/// of the trim condition at which `f` is smallest (relative to its size), i.e. the common root.
-/// Where the two trims of `p0` merge (a double root of the trim condition, whose discriminant
-/// rounding may push below zero) the vertex of the quadratic is the candidate. NaN when the
-/// common root is not real: a conjugate pair shared by both, with no real trim.
+/// The aileron of the trim at a root `p0` of the resultant of `g` and `f` in delta_a: their
+/// common root.
+///
+/// With aileron yaw both are quadratic in delta_a, and `g2 f - f2 g` is linear in it and
+/// vanishes at the common root: `delta_a = -(g2 f0 - f2 g0) / (g2 f1 - f2 g1)`. This is
+/// rational in the coefficients, so it stays accurate where the two trims of `p0` nearly merge
+/// (there the quadratic formula's square root of a vanishing discriminant amplifies rounding a
+/// millionfold). Where the linear form degenerates (its coefficient cancels: `g` and `f`
+/// nearly proportional) the root of the trim condition at which `f` is smallest (relative to
+/// its size) is the candidate; where the two trims merge, the vertex of the quadratic. NaN
+/// when the common root is not real: a conjugate pair shared by both, with no real trim.
 fn aileron_of_root(g: &InAileron, f: &InAileron, p0: f64) -> f64 {
     let relative = |h: &InAileron, da: f64| {
         let c = h.at(p0);
@@ -415,10 +488,20 @@ fn aileron_of_root(g: &InAileron, f: &InAileron, p0: f64) -> f64 {
             .sum();
         h.eval(p0, da).abs() / scale.max(f64::MIN_POSITIVE)
     };
-    let mut candidates = g.aileron_roots(p0);
+    let (gc, fc) = (g.at(p0), f.at(p0));
+    if let (3, 3) = (gc.len(), fc.len()) {
+        let lead = gc[2] * fc[1] - fc[2] * gc[1];
+        let size = (gc[2] * fc[1]).abs() + (fc[2] * gc[1]).abs();
+        if lead.abs() > 1e-8 * size {
+            let da = -(gc[2] * fc[0] - fc[2] * gc[0]) / lead;
+            if relative(g, da) < 1e-6 {
+                return da;
+            }
+        }
+    }
+    let mut candidates = g.aileron_roots(p0).to_vec();
     if candidates.is_empty() {
-        let c = g.at(p0);
-        if let (Some(c1), Some(c2)) = (c.get(1), c.get(2)) {
+        if let (Some(c1), Some(c2)) = (gc.get(1), gc.get(2)) {
             candidates.push(-c1 / (2.0 * c2));
         }
     }

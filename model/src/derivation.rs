@@ -585,31 +585,72 @@ pub fn clear_trim<C: Clearing>(
     den: &C::Value,
     k: u32,
 ) -> C::Value {
-    assert!(f.degree_in(t) <= k, "degree in the trim states above {k}");
-    let mut groups: std::collections::BTreeMap<Vec<u32>, Poly> = Default::default();
-    for (m, c) in f.terms() {
-        let e: Vec<u32> = t.iter().map(|s| m.exp(*s)).collect();
-        let mut rest = *m;
-        for s in t {
-            rest.set(*s, 0);
-        }
-        let g = groups.entry(e).or_insert_with(Poly::zero);
-        *g = &*g + &Poly::term(rest, c.clone());
-    }
-    let den_pows: Vec<C::Value> = (0..=k).map(|j| ring.pow(den, j)).collect();
-    let mut acc = ring.lift(&Poly::zero());
-    for (e, c) in &groups {
-        let mut prod = den_pows[(k - e.iter().sum::<u32>()) as usize].clone();
-        for (n, ei) in num.iter().zip(e) {
-            for _ in 0..*ei {
-                prod = ring.mul(&prod, n);
+    TrimGroups::new(f, t, k).clear(ring, num, den)
+}
+
+/// The grouping of step 8, `f = sum_m c_m t^m` by monomials `t^m` in the trim symbols, made
+/// once so that a caller clearing the same `f` for many aircraft ([`crate::certified`]) groups
+/// it once and lifts each coefficient `c_m` its own (precompiled) way.
+#[derive(Clone, Debug)]
+pub struct TrimGroups {
+    k: u32,
+    groups: Vec<(Vec<u32>, Poly)>,
+}
+
+impl TrimGroups {
+    /// Groups `f` (of degree at most `k` in the trim symbols `t`) by its monomials in `t`.
+    pub fn new(f: &Poly, t: &[Sym], k: u32) -> TrimGroups {
+        assert!(f.degree_in(t) <= k, "degree in the trim states above {k}");
+        let mut groups: std::collections::BTreeMap<Vec<u32>, Poly> = Default::default();
+        for (m, c) in f.terms() {
+            let e: Vec<u32> = t.iter().map(|s| m.exp(*s)).collect();
+            let mut rest = *m;
+            for s in t {
+                rest.set(*s, 0);
             }
+            let g = groups.entry(e).or_insert_with(Poly::zero);
+            *g = &*g + &Poly::term(rest, c.clone());
         }
-        let c = ring.lift(c);
-        let term = ring.mul(&c, &prod);
-        acc = ring.add(&acc, &term);
+        TrimGroups {
+            k,
+            groups: groups.into_iter().collect(),
+        }
     }
-    acc
+
+    /// The coefficients `c_m` (free of the trim symbols), in the order [`TrimGroups::clear_by`]
+    /// asks for them.
+    pub fn coefficients(&self) -> impl Iterator<Item = &Poly> {
+        self.groups.iter().map(|(_, c)| c)
+    }
+
+    /// Step 8 with every coefficient lifted by [`Clearing::lift`].
+    pub fn clear<C: Clearing>(&self, ring: &mut C, num: &[C::Value], den: &C::Value) -> C::Value {
+        self.clear_by(ring, num, den, |ring, i| ring.lift(&self.groups[i].1))
+    }
+
+    /// Step 8 with coefficient `i` (of [`TrimGroups::coefficients`]) lifted by `lift`.
+    pub fn clear_by<C: Clearing>(
+        &self,
+        ring: &mut C,
+        num: &[C::Value],
+        den: &C::Value,
+        mut lift: impl FnMut(&mut C, usize) -> C::Value,
+    ) -> C::Value {
+        let den_pows: Vec<C::Value> = (0..=self.k).map(|j| ring.pow(den, j)).collect();
+        let mut acc = ring.lift(&Poly::zero());
+        for (i, (e, _)) in self.groups.iter().enumerate() {
+            let mut prod = den_pows[(self.k - e.iter().sum::<u32>()) as usize].clone();
+            for (n, ei) in num.iter().zip(e) {
+                for _ in 0..*ei {
+                    prod = ring.mul(&prod, n);
+                }
+            }
+            let c = lift(ring, i);
+            let term = ring.mul(&c, &prod);
+            acc = ring.add(&acc, &term);
+        }
+        acc
+    }
 }
 
 /// Substitutes `t_i = num_i / den` into `f` (of degree at most k in the `t_i`) and multiplies

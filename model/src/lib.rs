@@ -10,6 +10,7 @@ pub mod aircraft;
 pub mod algebra;
 #[cfg(feature = "analysis")]
 pub mod analysis;
+pub mod certified;
 #[cfg(feature = "cli")]
 pub mod clearance;
 #[cfg(feature = "continuation")]
@@ -18,6 +19,7 @@ pub mod derivation;
 pub mod emit;
 pub mod equations;
 pub mod files;
+pub mod interval;
 pub mod numeric;
 #[cfg(feature = "cli")]
 pub mod plot;

@@ -172,51 +172,106 @@ pub fn in_aileron_all(ps: &[&Poly]) -> Vec<InAileron> {
         num_traits::pow(two, (-e) as usize)
     };
     cs.into_iter()
-        .map(|c| InAileron(c.iter().map(|u| u.scale(&scale)).collect()))
+        .map(|c| InAileron(c.iter().map(|u| u.scale(&scale).to_f64()).collect()))
         .collect()
 }
 
-/// A polynomial in P0 and delta_a: `coeffs[i]` (a polynomial in P0) multiplies `delta_a^i`.
+/// A polynomial in P0 and delta_a for f64 evaluation: `coeffs[i]` (a polynomial in P0, its
+/// exact coefficients rounded once to f64) multiplies `delta_a^i`.
 #[derive(Clone, Debug)]
-pub struct InAileron(pub Vec<UPoly>);
+pub struct InAileron(pub Vec<F64Poly>);
 
 impl InAileron {
     /// The coefficients of the polynomial in delta_a at `p0`, in f64.
     pub fn at(&self, p0: f64) -> Vec<f64> {
-        self.0.iter().map(|c| c.eval_f64(p0)).collect()
+        self.0.iter().map(|c| c.eval(p0)).collect()
     }
 
-    /// Value at `(p0, delta_a)` in f64.
+    /// Value at `(p0, delta_a)` in f64 (Horner in delta_a over Horner in P0).
     pub fn eval(&self, p0: f64, delta_a: f64) -> f64 {
-        F64Poly(self.at(p0)).eval(delta_a)
+        self.0
+            .iter()
+            .rev()
+            .fold(0.0, |acc, c| acc * delta_a + c.eval(p0))
     }
 
     /// The real roots in delta_a at `p0` (at most two: the trim condition is at most quadratic),
     /// by the cancellation-free form of the quadratic formula.
-    pub fn aileron_roots(&self, p0: f64) -> Vec<f64> {
-        let c = self.at(p0);
-        let get = |i: usize| c.get(i).copied().unwrap_or(0.0);
+    pub fn aileron_roots(&self, p0: f64) -> Roots {
+        let get = |i: usize| self.0.get(i).map_or(0.0, |c| c.eval(p0));
         quadratic_roots(get(2), get(1), get(0))
     }
 }
 
-/// Real roots of `a x^2 + b x + c` (linear when `a = 0`), without cancellation.
-pub fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
+/// At most two real roots, ascending, without allocation.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Roots {
+    r: [f64; 2],
+    n: usize,
+}
+
+impl Roots {
+    fn of(r: &[f64]) -> Roots {
+        let mut out = Roots::default();
+        for x in r {
+            out.r[out.n] = *x;
+            out.n += 1;
+        }
+        out
+    }
+
+    /// The roots as a slice.
+    pub fn as_slice(&self) -> &[f64] {
+        &self.r[..self.n]
+    }
+
+    /// The roots as a vector.
+    pub fn to_vec(&self) -> Vec<f64> {
+        self.as_slice().to_vec()
+    }
+
+    /// Whether there is no root.
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+
+    /// How many roots.
+    pub fn len(&self) -> usize {
+        self.n
+    }
+}
+
+impl IntoIterator for Roots {
+    type Item = f64;
+    type IntoIter = std::iter::Take<std::array::IntoIter<f64, 2>>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.r.into_iter().take(self.n)
+    }
+}
+
+/// Real roots of `a x^2 + b x + c` (linear when `a = 0`), without cancellation, ascending.
+pub fn quadratic_roots(a: f64, b: f64, c: f64) -> Roots {
     if a == 0.0 {
-        return if b == 0.0 { vec![] } else { vec![-c / b] };
+        return if b == 0.0 {
+            Roots::default()
+        } else {
+            Roots::of(&[-c / b])
+        };
     }
     let disc = b * b - 4.0 * a * c;
     if disc < 0.0 {
-        return vec![];
+        return Roots::default();
     }
     let q = -0.5 * (b + b.signum() * disc.sqrt());
-    let mut r = if q == 0.0 {
-        vec![0.0]
+    if q == 0.0 {
+        return Roots::of(&[0.0]);
+    }
+    let (x, y) = (q / a, c / q);
+    if x <= y {
+        Roots::of(&[x, y])
     } else {
-        vec![q / a, c / q]
-    };
-    r.sort_by(f64::total_cmp);
-    r
+        Roots::of(&[y, x])
+    }
 }
 
 #[cfg(test)]
@@ -226,11 +281,11 @@ mod tests {
     #[test]
     fn quadratic_roots_are_accurate_without_cancellation() {
         // x^2 - 1e8 x + 1 = 0: roots 1e8 and 1e-8; the textbook formula loses the small one.
-        let r = quadratic_roots(1.0, -1e8, 1.0);
+        let r = quadratic_roots(1.0, -1e8, 1.0).to_vec();
         assert_eq!(r.len(), 2);
         assert!((r[0] - 1e-8).abs() < 1e-22, "{r:?}");
         assert!((r[1] - 1e8).abs() < 1e-6);
-        assert_eq!(quadratic_roots(0.0, 2.0, -1.0), vec![0.5]);
+        assert_eq!(quadratic_roots(0.0, 2.0, -1.0).to_vec(), vec![0.5]);
         assert!(quadratic_roots(1.0, 0.0, 1.0).is_empty());
     }
 }

@@ -459,7 +459,7 @@ fn hopf_aileron(
     trims: &[InAileron],
     p0: f64,
 ) -> Option<f64> {
-    let mut candidates = g.aileron_roots(p0);
+    let mut candidates = g.aileron_roots(p0).to_vec();
     if candidates.len() < 2 {
         let da = aileron_of_root(g, hopf_ia, p0);
         return da.is_finite().then_some(da);
@@ -565,6 +565,7 @@ pub(super) fn first_departure(
     h: &HopfPolys,
     g: &InAileron,
     trims: &[InAileron],
+    divergence: &[f64],
     jump: &[JumpPoint],
     hopf: &[HopfPoint],
     bound: f64,
@@ -585,7 +586,7 @@ pub(super) fn first_departure(
         .map(|j| (j.p0, j.delta_a_rad))
         .chain(hopf.iter().map(|h| (h.point.p0, h.point.delta_a_rad)))
         .collect();
-    let i = match super::primary::follow(g, &trims[0], &hits, bound) {
+    let i = match super::primary::follow(g, &trims[0], divergence, &hits, bound) {
         super::Outcome::Jump(i) => i,
         _ => return None,
     };

@@ -29,15 +29,23 @@ pub enum Outcome {
 
 /// Follows the primary branch from `(0, 0)` and returns how it ends.
 ///
-/// `g` is the trim condition, `det_a` the trim's denominator (scaled for f64 evaluation), `jumps` the exact jump roots as
-/// `(p0, delta_a)` (in any order), `max_abs_delta_a` the aileron bound in rad.
+/// `g` is the trim condition, `det_a` the trim's denominator (scaled for f64 evaluation),
+/// `divergence` the positive roots of det A (the divergence roll rates), `jumps` the jump roots
+/// as `(p0, delta_a)` (in any order), `max_abs_delta_a` the aileron bound in rad.
+///
+/// Steps keep the change of P0 and of delta_a below 1e-3 where the curve may turn or meet its
+/// other trim (aileron yaw); without aileron yaw the curve is the graph of a rational function
+/// of P0, and steps of 2e-2 only look for the aileron bound (the jumps and divergence roll rates
+/// between two steps are found from their lists).
 pub fn follow(
     g: &InAileron,
     det_a: &InAileron,
+    divergence: &[f64],
     jumps: &[(f64, f64)],
     max_abs_delta_a: f64,
 ) -> Outcome {
-    const MAX_STEP: f64 = 1e-3;
+    let graph = g.0.len() <= 2 && det_a.0.len() <= 1;
+    let max_step: f64 = if graph { 2e-2 } else { 1e-3 };
     const MAX_STEPS: usize = 2_000_000;
     let nearest = |roots: &[f64], target: f64| -> Option<f64> {
         roots
@@ -45,7 +53,7 @@ pub fn follow(
             .copied()
             .min_by(|a, b| (a - target).abs().total_cmp(&(b - target).abs()))
     };
-    let Some(mut da) = nearest(&g.aileron_roots(0.0), 0.0) else {
+    let Some(mut da) = nearest(g.aileron_roots(0.0).as_slice(), 0.0) else {
         return Outcome::Lost("no trim at P0 = 0");
     };
     if da.abs() > 1e-9 {
@@ -56,17 +64,16 @@ pub fn follow(
     let (mut p, mut dir, mut slope) = (0.0f64, 1.0f64, 0.0f64);
     let sign_det_a = det_a.eval(0.0, 0.0).signum();
     for _ in 0..MAX_STEPS {
-        let h = MAX_STEP.min(MAX_STEP / slope.abs().max(1e-300)).max(1e-10);
+        let h = max_step.min(max_step / slope.abs().max(1e-300)).max(1e-10);
         let p_new = p + dir * h;
         let roots = g.aileron_roots(p_new);
-        let Some(da_new) = nearest(&roots, da + slope * dir * h) else {
+        let Some(da_new) = nearest(roots.as_slice(), da + slope * dir * h) else {
             // The two trims of this roll rate merged and vanished: the curve turns in P0 and
             // continues on the other root, P0 running back.
             dir = -dir;
             let back = g.aileron_roots(p);
             match back
-                .iter()
-                .copied()
+                .into_iter()
                 .filter(|r| (r - da).abs() > 0.0)
                 .min_by(|a, b| (a - da).abs().total_cmp(&(b - da).abs()))
             {
@@ -78,11 +85,12 @@ pub fn follow(
                 None => return Outcome::Lost("the equilibrium curve ends"),
             }
         };
-        if det_a.eval(p_new, 0.0).signum() != sign_det_a {
-            return Outcome::Divergence(p_new);
-        }
         // A jump root between p and p_new whose aileron is this branch's.
         let (lo, hi) = if p < p_new { (p, p_new) } else { (p_new, p) };
+        let diverges = divergence.iter().any(|d| *d > lo && *d <= hi);
+        if diverges || det_a.eval(p_new, 0.0).signum() != sign_det_a {
+            return Outcome::Divergence(p_new);
+        }
         let hit = jumps
             .iter()
             .enumerate()

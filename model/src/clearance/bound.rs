@@ -4,7 +4,7 @@
 //! For a box X of the uncertain parameters the derivation is specialised to the fixed data only,
 //! leaving polynomials in P0, delta_a and the uncertain parameters: det A, the trim condition
 //! `G = g0 + g1 delta_a + g2 delta_a^2` and `J = det J5 det(A)^2`. A slab `[pa, pb] x X` is
-//! *certified* when, with every enclosure outward-rounded ([`super::interval`]):
+//! *certified* when, with every enclosure outward-rounded ([`crate::interval`]):
 //!
 //! 1. det A has no zero on it (the trim exists and is finite);
 //! 2. `g1` has no zero and the discriminant `g1^2 - 4 g0 g2` is positive: the root
@@ -18,11 +18,11 @@
 //! test on its gradient enclosure: a coordinate in which it is monotone over the box is fixed at
 //! the face where the bound is attained.
 
-use super::interval::I;
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::{Poly, Sym};
 use crate::analysis::{parametric, specialisation};
 use crate::equations::symbols;
+use crate::interval::I;
 use crate::specialise::{on_trim, OnTrim};
 
 /// A polynomial compiled for interval evaluation over the variables `[P0, theta_1, ...]`.

@@ -8,13 +8,12 @@
 //! proven is in `docs/clearance.md`.
 
 pub mod bound;
-pub mod interval;
 pub mod monte_carlo;
 
 use crate::aircraft::{Aircraft, Param, Uncertain};
 use crate::analysis::{analyze, AnalysisError, JumpPoint};
+use crate::interval::I;
 use bound::{BoxPolys, Failure};
-use interval::I;
 use num_rational::BigRational;
 use serde::Serialize;
 use std::time::Instant;

@@ -72,13 +72,19 @@ impl I {
         if !x.is_finite() {
             return I::entire();
         }
-        let Some(e) = BigRational::from_float(x) else {
-            return I::entire();
+        // Compare q = n / d (d > 0) with x = m 2^e exactly: n 2^-e against m d, in integers.
+        let (mantissa, exponent, sign) = num_traits::float::FloatCore::integer_decode(x);
+        let m = num_bigint::BigInt::from(mantissa) * i64::from(sign);
+        let (n, d) = (q.numer(), q.denom());
+        let (lhs, rhs) = if exponent >= 0 {
+            (n.clone(), (m << exponent as usize) * d)
+        } else {
+            (n << (-exponent) as usize, m * d)
         };
-        match e.cmp(q) {
+        match lhs.cmp(&rhs) {
             std::cmp::Ordering::Equal => I::point(x),
-            std::cmp::Ordering::Less => I::new(x, next_up(x)),
-            std::cmp::Ordering::Greater => I::new(next_down(x), x),
+            std::cmp::Ordering::Greater => I::new(x, next_up(x)),
+            std::cmp::Ordering::Less => I::new(next_down(x), x),
         }
     }
 
@@ -140,6 +146,12 @@ impl I {
         if o.contains_zero() {
             return None;
         }
+        if self.is_point() && o.is_point() {
+            let q = self.lo / o.lo;
+            if exact_product(q, o.lo) == Some(self.lo) {
+                return Some(I::point(q));
+            }
+        }
         let c = [
             self.lo / o.lo,
             self.lo / o.hi,
@@ -169,6 +181,44 @@ impl I {
     pub fn mag(self) -> f64 {
         self.lo.abs().max(self.hi.abs())
     }
+
+    /// The smallest magnitude in the interval (0 when it contains 0).
+    pub fn mig(self) -> f64 {
+        if self.contains_zero() {
+            0.0
+        } else {
+            self.lo.abs().min(self.hi.abs())
+        }
+    }
+
+    /// The intersection of two enclosures of the same value; `None` when they are disjoint
+    /// (one of them is then wrong, and nothing can be concluded).
+    pub fn intersect(self, o: I) -> Option<I> {
+        let (lo, hi) = (self.lo.max(o.lo), self.hi.min(o.hi));
+        (lo <= hi).then_some(I::new(lo, hi))
+    }
+
+    /// Whether the interval is a single (exact) double.
+    pub fn is_point(self) -> bool {
+        self.lo == self.hi
+    }
+
+    /// Whether the interval is exactly `[0, 0]` (an exact zero, e.g. a term of a parameter
+    /// that is exactly zero).
+    pub fn is_exact_zero(self) -> bool {
+        self.lo == 0.0 && self.hi == 0.0
+    }
+
+    /// `self * 2^k` (exact for normal results; outward otherwise).
+    pub fn scale2(self, k: i32) -> I {
+        let f = 2f64.powi(k);
+        let r = I::new(self.lo * f, self.hi * f);
+        if r.lo / f == self.lo && r.hi / f == self.hi && r.lo.is_finite() && r.hi.is_finite() {
+            r
+        } else {
+            self * I::point(f)
+        }
+    }
 }
 
 fn min4(c: [f64; 4]) -> f64 {
@@ -179,9 +229,23 @@ fn max4(c: [f64; 4]) -> f64 {
     c.iter().copied().fold(f64::NEG_INFINITY, f64::max)
 }
 
+/// `a + b` when it is exact in f64 (Knuth's TwoSum error is zero), so that sums of exact
+/// values (above all of exact zeros) stay points instead of widening by an ulp.
+fn exact_sum(a: f64, b: f64) -> Option<f64> {
+    let s = a + b;
+    let bb = s - a;
+    let err = (a - (s - bb)) + (b - bb);
+    (err == 0.0 && s.is_finite()).then_some(s)
+}
+
 impl Add for I {
     type Output = I;
     fn add(self, o: I) -> I {
+        if self.lo == self.hi && o.lo == o.hi {
+            if let Some(s) = exact_sum(self.lo, o.lo) {
+                return I::point(s);
+            }
+        }
         I::out(self.lo + o.lo, self.hi + o.hi)
     }
 }
@@ -189,7 +253,7 @@ impl Add for I {
 impl Sub for I {
     type Output = I;
     fn sub(self, o: I) -> I {
-        I::out(self.lo - o.hi, self.hi - o.lo)
+        self + -o
     }
 }
 
@@ -200,11 +264,34 @@ impl Neg for I {
     }
 }
 
+/// `a * b` when it is exact in f64 (Dekker's product error is zero), so that products of
+/// exact values stay points.
+fn exact_product(a: f64, b: f64) -> Option<f64> {
+    // Veltkamp's split into halves of 26 bits (valid away from overflow).
+    fn split(x: f64) -> (f64, f64) {
+        let c = 134_217_729.0 * x; // 2^27 + 1
+        let hi = c - (c - x);
+        (hi, x - hi)
+    }
+    let p = a * b;
+    if !p.is_finite() || a.abs() > 1e300 || b.abs() > 1e300 || (p != 0.0 && p.abs() < 1e-290) {
+        return None;
+    }
+    let ((ah, al), (bh, bl)) = (split(a), split(b));
+    let err = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+    (err == 0.0).then_some(p)
+}
+
 impl Mul for I {
     type Output = I;
     fn mul(self, o: I) -> I {
         if (self.lo == 0.0 && self.hi == 0.0) || (o.lo == 0.0 && o.hi == 0.0) {
             return I::point(0.0);
+        }
+        if self.lo == self.hi && o.lo == o.hi {
+            if let Some(p) = exact_product(self.lo, o.lo) {
+                return I::point(p);
+            }
         }
         let c = [
             self.lo * o.lo,

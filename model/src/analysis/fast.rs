@@ -1,0 +1,164 @@
+//! The jump analysis in certified floating point ([`crate::certified`]), with the exact path
+//! as the fallback whenever a certificate fails.
+//!
+//! Same answer as [`super::analyze_with`] without departures (the critical jump, divergence roll
+//! rates, jump points, poles of det K, zero-sideslip departures), found from the enclosed
+//! criterion polynomials instead of the exact ones: each root is the value of a certified
+//! bracket of one or two ulps around the exact root, and everything evaluated at the roots (the
+//! trim, the aileron, the primary branch) is the same f64 evaluation as on the exact path, of
+//! polynomials whose coefficients differ from the exact path's by their enclosures' widths.
+//!
+//! ```
+//! use model::aircraft::Aircraft;
+//! use model::analysis::fast::{analyze_routed, Route};
+//!
+//! let (a, route) = analyze_routed(&Aircraft::a(), 2f64.to_radians()).unwrap();
+//! assert!(matches!(route, Route::Certified(w) if w <= 1e-10));
+//! // The paper's first jump of aircraft A, Fig. 7: P0 = 1.70 rad/s.
+//! assert!((a.critical.unwrap().p0 - 1.706288).abs() < 1e-6);
+//! ```
+
+use super::{analyze_with, check, parametric, Analysis, AnalysisError, Found, InAileron};
+use crate::aircraft::Aircraft;
+use crate::algebra::Sym;
+use crate::certified::dense::{IPoly, IPoly2};
+use crate::certified::{
+    positive_roots_by, value_at, Bracket, Criterion, EnclosedPolys, Uncertified, Values,
+};
+use crate::derivation::Ratio;
+use crate::equations::symbols;
+
+/// Which route gave the answer.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Route {
+    /// Every root certified in floating point: each reported roll rate lies in a bracket that
+    /// holds the exact root, the widest of relative width `.0` (at most [`MAX_WIDTH`]).
+    Certified(f64),
+    /// A certificate failed (why), and the exact path answered.
+    Exact(Uncertified),
+}
+
+/// The widest relative bracket the certified route reports; a root that double precision
+/// cannot pin down closer (an ill-conditioned root, e.g. next to a divergence roll rate) sends
+/// the aircraft to the exact path.
+pub const MAX_WIDTH: f64 = 1e-9;
+
+/// [`super::analyze_with`] without departures, by the certified route where it succeeds.
+pub fn analyze_fast(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, AnalysisError> {
+    analyze_routed(aircraft, delta_e_rad).map(|(a, _)| a)
+}
+
+/// [`analyze_fast`], saying which route answered.
+pub fn analyze_routed(
+    aircraft: &Aircraft,
+    delta_e_rad: f64,
+) -> Result<(Analysis, Route), AnalysisError> {
+    if !delta_e_rad.is_finite() || delta_e_rad.abs() > std::f64::consts::FRAC_PI_2 {
+        return Err(AnalysisError::DeltaE(delta_e_rad));
+    }
+    let why = match certified(aircraft, delta_e_rad) {
+        Ok((a, width)) => match check(&a) {
+            Ok(()) => return Ok((a, Route::Certified(width))),
+            // Values the checks refuse (not finite, indistinct in f64) are the exact path's
+            // to refuse, with its own message.
+            Err(_) => Uncertified::Sign,
+        },
+        Err(why) => why,
+    };
+    analyze_with(aircraft, delta_e_rad, false).map(|a| (a, Route::Exact(why)))
+}
+
+/// The certified route and its widest relative bracket, or why it cannot certify.
+fn certified(aircraft: &Aircraft, delta_e_rad: f64) -> Result<(Analysis, f64), Uncertified> {
+    let par = parametric();
+    let v = Values::of(aircraft, delta_e_rad, 0.0);
+    let e = EnclosedPolys::new(&v)?;
+    let roots = |p: &IPoly, which: Criterion| {
+        positive_roots_by(p, Some(&|x| value_at(&v, which, x)), MAX_WIDTH)
+    };
+    let divergence = roots(&e.det_a, Criterion::DetA)?;
+    let jump = roots(&e.jump, Criterion::Jump)?;
+    let poles = roots(&e.poles, Criterion::Poles)?;
+    // The exact path cancels common roots of the jump and pole polynomials and removes those of
+    // det A; here they must be provably distinct instead.
+    apart(&jump, &poles)?;
+    apart(&jump, &divergence)?;
+    apart(&poles, &divergence)?;
+
+    let lateral_authority = if e.lateral.is_exact_zero() {
+        false
+    } else if e.lateral.contains_zero() {
+        return Err(Uncertified::Degenerate);
+    } else {
+        true
+    };
+    let zs_roots = if lateral_authority {
+        let zs = roots(&e.zs_jump, Criterion::ZsJump)?;
+        apart(&zs, &roots(&e.zs_d_det, Criterion::ZsDDet)?)?;
+        apart(&zs, &roots(&e.zs_det, Criterion::ZsDet)?)?;
+        zs
+    } else {
+        Vec::new()
+    };
+
+    let f64s = |p: &IPoly2| InAileron(p.0.iter().map(|c| c.mid()).collect());
+    let univariate = |p: &IPoly| f64s(&IPoly2::new(vec![p.clone()]));
+    let width = [&divergence, &jump, &poles, &zs_roots]
+        .iter()
+        .flat_map(|b| b.iter().map(Bracket::relative_width))
+        .fold(0.0, f64::max);
+    if width > MAX_WIDTH {
+        return Err(Uncertified::Wide);
+    }
+    let value = |b: Vec<Bracket>| b.iter().map(|r| r.value).collect::<Vec<f64>>();
+    let found = Found {
+        divergence: value(divergence),
+        jump_roots: value(jump),
+        pole_roots: value(poles),
+        zs_roots: value(zs_roots),
+        g: f64s(&e.trim_condition),
+        trims: std::iter::once(univariate(&e.det_a))
+            .chain(e.trim.iter().map(f64s))
+            .collect(),
+        jump_at: f64s(&e.jump_at),
+        d_at: f64s(&e.d_at),
+        zs_trims: std::iter::once(&e.zs_det)
+            .chain(&e.zs_trim)
+            .map(univariate)
+            .collect(),
+        lateral_authority,
+    };
+    let data = aircraft.values_f64();
+    let s = symbols();
+    let zs_controls = |at: &[(Sym, f64)]| {
+        let look = |x: Sym| {
+            if let Some((_, v)) = at.iter().find(|(t, _)| *t == x) {
+                *v
+            } else if x == s.delta_e {
+                delta_e_rad
+            } else if x == s.delta_r {
+                0.0
+            } else {
+                s.params
+                    .iter()
+                    .position(|p| *p == x)
+                    .map_or(f64::NAN, |i| data[i])
+            }
+        };
+        let eval = |r: &Ratio| r.num.eval_f64(&look) / r.den.eval_f64(&look);
+        (eval(&par.zs_delta_a), eval(&par.zs_delta_r))
+    };
+    Ok((found.assemble(aircraft, delta_e_rad, &zs_controls).0, width))
+}
+
+/// Proves that no bracket of `a` meets one of `b` (their roots are distinct).
+fn apart(a: &[Bracket], b: &[Bracket]) -> Result<(), Uncertified> {
+    let meet = a
+        .iter()
+        .any(|x| b.iter().any(|y| x.lo <= y.hi && y.lo <= x.hi));
+    if meet {
+        Err(Uncertified::Sign)
+    } else {
+        Ok(())
+    }
+}

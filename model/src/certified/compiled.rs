@@ -1,0 +1,222 @@
+//! The parametric trim-level results compiled once per process for interval evaluation: every
+//! term's coefficient as an interval and its exponents as small integers, and step 8's grouping
+//! ([`crate::derivation::TrimGroups`]) made once, so that enclosing one aircraft's polynomials
+//! is a pass over a few hundred terms.
+
+use super::dense::{IPoly, IPoly2};
+use crate::algebra::{Poly, Sym, MAX_SYMS};
+use crate::derivation::{Derivation, TrimGroups, TRIM_DEGREE};
+use crate::equations::symbols;
+use crate::interval::I;
+use std::sync::OnceLock;
+
+/// Highest power of a valued symbol kept in the table of powers (higher ones are computed).
+const POWERS: usize = 8;
+
+/// The enclosures of the valued symbols (parameters, delta_e, delta_r) and their powers.
+#[derive(Clone, Debug)]
+pub struct Table {
+    powers: Vec<[I; POWERS + 1]>,
+}
+
+impl Table {
+    /// The table of `values`, indexed by symbol (`None`: no value, the whole line).
+    pub fn new(values: &[Option<I>; MAX_SYMS]) -> Table {
+        let powers = values
+            .iter()
+            .map(|v| {
+                let x = v.unwrap_or_else(I::entire);
+                let mut p = [I::point(1.0); POWERS + 1];
+                for e in 1..=POWERS {
+                    p[e] = if e % 2 == 0 {
+                        p[e / 2].sqr()
+                    } else {
+                        p[e - 1] * x
+                    };
+                }
+                p
+            })
+            .collect();
+        Table { powers }
+    }
+
+    fn pow(&self, sym: u8, e: u8) -> I {
+        let p = &self.powers[sym as usize];
+        match p.get(e as usize) {
+            Some(v) => *v,
+            None => p[1].powi(e as u32),
+        }
+    }
+}
+
+/// One term: coefficient, powers of valued symbols, and the exponents of P0 and delta_a.
+#[derive(Clone, Debug)]
+struct Term {
+    coef: I,
+    factors: Vec<(u8, u8)>,
+    p0: usize,
+    da: usize,
+}
+
+/// A polynomial in the valued symbols, P0 and delta_a, compiled for interval evaluation.
+#[derive(Clone, Debug)]
+pub struct Compiled {
+    terms: Vec<Term>,
+    p0_degree: usize,
+    da_degree: usize,
+}
+
+impl Compiled {
+    /// Compiles `p`; panics if a trim symbol occurs (step 8 has grouped them out).
+    pub fn new(p: &Poly) -> Compiled {
+        let s = symbols();
+        let terms: Vec<Term> = p
+            .terms()
+            .iter()
+            .map(|(m, c)| {
+                let coef = match c.as_i64() {
+                    Some(n) if n.unsigned_abs() <= 1 << 53 => I::point(n as f64),
+                    _ => I::from_q(&c.to_big()),
+                };
+                let (mut p0, mut da, mut factors) = (0, 0, Vec::new());
+                for (sym, e) in m.factors() {
+                    if sym == s.p0 {
+                        p0 = e as usize;
+                    } else if sym == s.delta_a {
+                        da = e as usize;
+                    } else {
+                        assert!(
+                            !s.trims().contains(&sym),
+                            "trim symbols are grouped out before compiling"
+                        );
+                        factors.push((sym.index() as u8, e as u8));
+                    }
+                }
+                Term {
+                    coef,
+                    factors,
+                    p0,
+                    da,
+                }
+            })
+            .collect();
+        Compiled {
+            p0_degree: terms.iter().map(|t| t.p0).max().unwrap_or(0),
+            da_degree: terms.iter().map(|t| t.da).max().unwrap_or(0),
+            terms,
+        }
+    }
+
+    fn term_value(t: &Term, table: &Table) -> I {
+        t.factors
+            .iter()
+            .fold(t.coef, |v, (sym, e)| v * table.pow(*sym, *e))
+    }
+
+    /// The enclosure as a polynomial in P0 and delta_a.
+    pub fn lift(&self, table: &Table) -> IPoly2 {
+        let mut grid = vec![vec![I::point(0.0); self.p0_degree + 1]; self.da_degree + 1];
+        for t in &self.terms {
+            grid[t.da][t.p0] = grid[t.da][t.p0] + Compiled::term_value(t, table);
+        }
+        IPoly2::new(grid.into_iter().map(IPoly::new).collect())
+    }
+
+    /// The highest power of P0.
+    pub fn p0_degree(&self) -> usize {
+        self.p0_degree
+    }
+}
+
+/// Step 8 of one trim quantity: its grouping and each group's coefficient compiled.
+#[derive(Clone, Debug)]
+pub struct Cleared {
+    /// The grouping by monomials in the trim symbols.
+    pub groups: TrimGroups,
+    /// The coefficient of each group, compiled.
+    pub coefficients: Vec<Compiled>,
+}
+
+impl Cleared {
+    fn new(f: &Poly, t: &[Sym]) -> Cleared {
+        let groups = TrimGroups::new(f, t, TRIM_DEGREE);
+        let coefficients = groups.coefficients().map(Compiled::new).collect();
+        Cleared {
+            groups,
+            coefficients,
+        }
+    }
+}
+
+/// Every parametric result the certified route evaluates, compiled once.
+#[derive(Debug)]
+pub struct Parametric {
+    /// det A (Eq. 4).
+    pub det_a: Compiled,
+    /// The trim numerators (Eqs 3-4).
+    pub trim: [Compiled; 4],
+    /// The roll equation at the trim, det J5 and d, grouped for step 8 with the trim of Eqs 3-4.
+    pub roll: Cleared,
+    /// det J5 on the trim.
+    pub det_j5: Cleared,
+    /// The static-residual denominator d (Eq. 22) on the trim.
+    pub d: Cleared,
+    /// det A1 of the zero-sideslip trim (Eq. 35).
+    pub zs_det: Compiled,
+    /// Its numerators (Eq. 35).
+    pub zs_trim: [Compiled; 3],
+    /// det J5 and d at beta0 = 0, grouped for step 8 with the zero-sideslip trim.
+    pub zs_det_j5: Cleared,
+    /// d at beta0 = 0.
+    pub zs_d: Cleared,
+    /// The lateral control determinant `l_delta_a n_delta_r - l_delta_r n_delta_a` (the
+    /// denominator of the zero-sideslip controls).
+    pub lateral: Compiled,
+}
+
+impl Parametric {
+    /// The compiled form of the process's parametric derivation.
+    pub fn get() -> &'static Parametric {
+        static P: OnceLock<Parametric> = OnceLock::new();
+        P.get_or_init(|| Parametric::new(crate::specialise::parametric()))
+    }
+
+    /// The highest power of P0 in any compiled result.
+    pub fn p0_degree(&self) -> usize {
+        let cleared = [
+            &self.roll,
+            &self.det_j5,
+            &self.d,
+            &self.zs_det_j5,
+            &self.zs_d,
+        ];
+        cleared
+            .iter()
+            .flat_map(|c| c.coefficients.iter())
+            .chain([&self.det_a, &self.zs_det, &self.lateral])
+            .chain(self.trim.iter())
+            .chain(self.zs_trim.iter())
+            .map(Compiled::p0_degree)
+            .max()
+            .unwrap_or(0)
+    }
+
+    fn new(par: &Derivation) -> Parametric {
+        let s = symbols();
+        let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
+        let t3 = [s.alpha0, s.q0, s.r0];
+        let zero = Poly::zero();
+        Parametric {
+            det_a: Compiled::new(&par.det_a),
+            trim: std::array::from_fn(|i| Compiled::new(&par.trim[i])),
+            roll: Cleared::new(&par.roll_at_trim, &t4),
+            det_j5: Cleared::new(&par.det_j5, &t4),
+            d: Cleared::new(&par.d, &t4),
+            zs_det: Compiled::new(&par.zs_det),
+            zs_trim: std::array::from_fn(|i| Compiled::new(&par.zs_trim[i])),
+            zs_det_j5: Cleared::new(&par.det_j5.subs(s.beta0, &zero), &t3),
+            zs_d: Cleared::new(&par.d.subs(s.beta0, &zero), &t3),
+            lateral: Compiled::new(&par.zs_delta_a.den),
+        }
+    }
+}

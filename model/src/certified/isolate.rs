@@ -1,0 +1,476 @@
+//! Certified isolation of the positive real roots of a polynomial with interval coefficients.
+//!
+//! The exact path ([`crate::roots`]) isolates roots of exact integer polynomials; here the
+//! coefficients are only known to lie in intervals, and every claim is about *every* polynomial
+//! with coefficients in them (hence about the exact one):
+//!
+//! 1. `(0, inf)` is split at a power of two `s` where the value has a certain sign: `(0, s]` is
+//!    mapped to `t in (0, 1]` by `x = s t`, `(s, inf)` by `x = s / t` (the reversed polynomial).
+//! 2. On `[0, 1]` the Bernstein coefficients are enclosed and bisected by de Casteljau's
+//!    algorithm (interval additions and halvings). Descartes' rule for the Bernstein form: when
+//!    every coefficient has a certain sign, 0 sign changes prove no root and 1 proves exactly
+//!    one (simple) root in the open interval. Any coefficient whose sign is uncertain makes the
+//!    node undecided; it is bisected, up to a depth and node budget.
+//! 3. Each isolated root is refined on the original polynomial: Newton steps in f64 propose a
+//!    point, and a bracket around it is certified by the signs of the interval values at its
+//!    ends, starting from the enclosure's half-width over the slope (the narrowest bracket the
+//!    enclosure can possibly certify) and doubling. The result is a bracket `[lo, hi]` with
+//!    certified opposite signs at its ends and exactly one root inside, within a factor two of
+//!    that narrowest width: a few ulps for a well-conditioned root, wider by the root's
+//!    condition number.
+//!
+//! Whatever cannot be decided (a leading or constant coefficient that may vanish, a root too
+//! close to a split point, roots closer than the enclosures can tell apart) is an
+//! [`Uncertified`] error: the caller then falls back to the exact path. Nothing is ever guessed.
+
+use super::dense::IPoly;
+use crate::interval::{next_down, next_up, I};
+
+/// A certified bracket of a simple real root: exactly one root lies in `[lo, hi]` (strictly
+/// inside unless `lo == hi`), and `value` is a double in the bracket.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bracket {
+    /// Lower end.
+    pub lo: f64,
+    /// Upper end.
+    pub hi: f64,
+    /// A double within `[lo, hi]`: when the bracket is one ulp wide, the end where the
+    /// floating-point value of the polynomial is smaller in magnitude; otherwise the Newton
+    /// root of the midpoint polynomial.
+    pub value: f64,
+}
+
+impl Bracket {
+    /// The width relative to the root's magnitude.
+    pub fn relative_width(&self) -> f64 {
+        (self.hi - self.lo) / self.lo.abs().max(self.hi.abs()).max(f64::MIN_POSITIVE)
+    }
+}
+
+/// Why the roots could not be certified.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Uncertified {
+    /// The polynomial may be zero, may have a root at 0 or may drop in degree.
+    Degenerate,
+    /// A sign that decides the isolation could not be certified (a root too close to a split
+    /// point or a bracket end).
+    Sign,
+    /// The bisection budget ran out (roots closer than the enclosures resolve).
+    Budget,
+    /// A root is certified, but only within a bracket wider than the caller accepts (an
+    /// ill-conditioned root: double precision cannot pin it down further).
+    Wide,
+}
+
+const MAX_DEPTH: u32 = 60;
+const MAX_NODES: usize = 4000;
+
+/// The positive real roots of every polynomial with coefficients in `p`'s intervals: one
+/// certified bracket per root, ascending and disjoint, or why that could not be proven.
+pub fn positive_roots(p: &IPoly) -> Result<Vec<Bracket>, Uncertified> {
+    positive_roots_by(p, None, 0.0)
+}
+
+/// [`positive_roots`], with each bracket refined towards relative width `target`, on the
+/// coefficients' enclosure and, where that is too coarse, on `value`: another enclosure of the
+/// same polynomial's value at a double (e.g. through the trim), intersected with it.
+pub fn positive_roots_by(
+    p: &IPoly,
+    value: Option<&dyn Fn(f64) -> I>,
+    target: f64,
+) -> Result<Vec<Bracket>, Uncertified> {
+    // A factor x^k (exact zeros at the bottom) only adds the root 0, which is not positive.
+    let first = p.coeffs().iter().take_while(|c| c.is_exact_zero()).count();
+    let p = IPoly::new(p.coeffs()[first..].to_vec());
+    let c = p.coeffs();
+    // A polynomial in x^2 (every odd coefficient exactly zero) is isolated in y = x^2: half the
+    // degree, and its roots are the squares of the positive ones.
+    let even = c.len() > 2 && c.iter().skip(1).step_by(2).all(|c| c.is_exact_zero());
+    let isolating: Vec<(f64, f64)> = if even {
+        let q: Vec<I> = c.iter().step_by(2).copied().collect();
+        isolate_positive(&q)?
+            .into_iter()
+            .map(|(lo, hi)| (next_down(lo.sqrt()), next_up(hi.sqrt())))
+            .collect()
+    } else {
+        isolate_positive(c)?
+    };
+    let mut brackets = isolating
+        .into_iter()
+        .map(|(lo, hi)| refine(&p, value, target, lo, hi))
+        .collect::<Result<Vec<_>, _>>()?;
+    brackets.sort_by(|a, b| a.lo.total_cmp(&b.lo));
+    if brackets.windows(2).any(|w| w[0].hi >= w[1].lo) {
+        return Err(Uncertified::Sign);
+    }
+    Ok(brackets)
+}
+
+/// Isolating intervals `[lo, hi]` (one root of every polynomial with coefficients in `c`
+/// inside each, none elsewhere in `(0, inf)`) for the ascending coefficients `c`, whose
+/// constant term must be certainly nonzero.
+fn isolate_positive(c: &[I]) -> Result<Vec<(f64, f64)>, Uncertified> {
+    let Some(n) = c.len().checked_sub(1) else {
+        return Err(Uncertified::Degenerate);
+    };
+    if c[0].contains_zero() || c[n].contains_zero() {
+        return Err(Uncertified::Degenerate);
+    }
+    if n == 0 {
+        return Ok(Vec::new());
+    }
+    let p = IPoly::new(c.to_vec());
+    let k = [0, 1, -1, 2, -2, 3, -3]
+        .into_iter()
+        .find(|k| !p.eval(I::point(2f64.powi(*k))).contains_zero())
+        .ok_or(Uncertified::Sign)?;
+    let s = 2f64.powi(k);
+    // q(t) = p(s t) on (0, 1]; its reverse t^n q(1/t) = t^n p(s / t) on (0, 1).
+    let forward: Vec<I> = c
+        .iter()
+        .enumerate()
+        .map(|(i, a)| a.scale2(k * i as i32))
+        .collect();
+    let reverse: Vec<I> = forward.iter().rev().copied().collect();
+    let bound = root_bound(c);
+    let mut out: Vec<(f64, f64)> = isolate_unit(&forward)?
+        .into_iter()
+        .map(|(tl, tr)| (s * tl, s * tr))
+        .collect();
+    for (tl, tr) in isolate_unit(&reverse)? {
+        let lo = next_down(s / tr);
+        let hi = if tl == 0.0 { bound } else { next_up(s / tl) };
+        out.push((lo, hi));
+    }
+    Ok(out)
+}
+
+/// Fujiwara's bound, `2 max |a_{n-i} / a_n|^(1/i)` (every root modulus is below it), rounded up
+/// generously to a power of two.
+fn root_bound(c: &[I]) -> f64 {
+    let n = c.len() - 1;
+    let lead = c[n].mig();
+    let m = (1..=n)
+        .map(|i| {
+            let r = c[n - i].mag() / lead;
+            let i = i as f64;
+            if i == n as f64 {
+                (r / 2.0).powf(1.0 / i)
+            } else {
+                r.powf(1.0 / i)
+            }
+        })
+        .fold(0.0f64, f64::max);
+    let b = 2.0 * m * (1.0 + 1e-9);
+    if b.is_finite() && b > 0.0 {
+        2f64.powi(b.log2().ceil() as i32 + 1)
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// An exact integer as an interval (a point below 2^53, else the two nearest doubles).
+fn integer(v: u128) -> I {
+    let x = v as f64;
+    match (x as u128).cmp(&v) {
+        std::cmp::Ordering::Equal => I::point(x),
+        std::cmp::Ordering::Less => I::new(x, next_up(x)),
+        std::cmp::Ordering::Greater => I::new(next_down(x), x),
+    }
+}
+
+/// The rows of Pascal's triangle up to [`MAX_BERNSTEIN_DEGREE`], as intervals (exact below
+/// 2^53; the entries are exact in u128), made once.
+fn pascal() -> &'static [Vec<I>] {
+    static P: std::sync::OnceLock<Vec<Vec<I>>> = std::sync::OnceLock::new();
+    P.get_or_init(|| {
+        let mut row: Vec<u128> = vec![1];
+        let mut rows = vec![vec![I::point(1.0)]];
+        for j in 1..=MAX_BERNSTEIN_DEGREE {
+            let mut next = vec![1u128; j + 1];
+            for i in 1..j {
+                next[i] = row[i - 1] + row[i];
+            }
+            rows.push(next.iter().map(|v| integer(*v)).collect());
+            row = next;
+        }
+        rows
+    })
+}
+
+/// The highest degree [`bernstein`] converts (binomials stay exact in u128).
+const MAX_BERNSTEIN_DEGREE: usize = 120;
+
+/// The Bernstein coefficients on `[0, 1]` of the polynomial with (ascending) coefficients `a`:
+/// `b_j = sum_{i <= j} C(j, i) / C(n, i) a_i`.
+fn bernstein(a: &[I]) -> Option<Vec<I>> {
+    let n = a.len() - 1;
+    if n > MAX_BERNSTEIN_DEGREE {
+        return None;
+    }
+    let rows = pascal();
+    let scaled: Vec<I> = (0..=n)
+        .map(|i| a[i].checked_div(rows[n][i]))
+        .collect::<Option<_>>()?;
+    Some(
+        (0..=n)
+            .map(|j| (0..=j).fold(I::point(0.0), |acc, i| acc + rows[j][i] * scaled[i]))
+            .collect(),
+    )
+}
+
+/// Sign changes of a sequence whose signs are all certain; `None` if some sign is not.
+fn variations(b: &[I]) -> Option<usize> {
+    let mut last = None;
+    let mut v = 0;
+    for x in b {
+        let s = x.sign()?;
+        if last.is_some_and(|l| l != s) {
+            v += 1;
+        }
+        last = Some(s);
+    }
+    Some(v)
+}
+
+/// de Casteljau subdivision of Bernstein coefficients at `t`: (left, right).
+fn split(b: &[I], t: f64) -> (Vec<I>, Vec<I>) {
+    let n = b.len() - 1;
+    let mut w = b.to_vec();
+    let mut left = Vec::with_capacity(n + 1);
+    let mut right = vec![I::point(0.0); n + 1];
+    left.push(w[0]);
+    right[n] = w[n];
+    let (u, v) = (I::point(1.0 - t), I::point(t));
+    for r in 1..=n {
+        for j in 0..=n - r {
+            w[j] = if t == 0.5 {
+                (w[j] + w[j + 1]).scale2(-1)
+            } else {
+                u * w[j] + v * w[j + 1]
+            };
+        }
+        left.push(w[0]);
+        right[n - r] = w[n - r];
+    }
+    (left, right)
+}
+
+/// The open sub-intervals `(tl, tr)` of `(0, 1)` holding exactly one root each, for a
+/// polynomial (ascending coefficients `a`) with certain, nonzero values at 0 and 1.
+fn isolate_unit(a: &[I]) -> Result<Vec<(f64, f64)>, Uncertified> {
+    let b = bernstein(a).ok_or(Uncertified::Degenerate)?;
+    let mut out = Vec::new();
+    let mut stack = vec![(0.0f64, 1.0f64, b, 0u32)];
+    let mut nodes = 0usize;
+    while let Some((tl, tr, b, depth)) = stack.pop() {
+        nodes += 1;
+        if nodes > MAX_NODES || depth > MAX_DEPTH {
+            return Err(Uncertified::Budget);
+        }
+        match variations(&b) {
+            Some(0) => continue,
+            Some(1) => {
+                out.push((tl, tr));
+                continue;
+            }
+            _ => {}
+        }
+        // Split where the value has a certain sign, so that no root sits on the split point.
+        let (t, (l, r)) = [0.5, 0.4375, 0.5625, 0.375, 0.625]
+            .into_iter()
+            .map(|t| (t, split(&b, t)))
+            .find(|(_, (l, _))| l.last().is_some_and(|v| !v.contains_zero()))
+            .ok_or(Uncertified::Sign)?;
+        let tm = tl + t * (tr - tl);
+        if !(tm > tl && tm < tr) {
+            return Err(Uncertified::Budget);
+        }
+        stack.push((tm, tr, r, depth + 1));
+        stack.push((tl, tm, l, depth + 1));
+    }
+    out.sort_by(|x, y| x.0.total_cmp(&y.0));
+    Ok(out)
+}
+
+/// Refines the bracket `[lo, hi]` of the single root of `p` in it, to relative width `target`
+/// if the enclosures allow.
+///
+/// A guess first, by safeguarded Newton on the midpoint polynomial (nothing certified). Then a
+/// bracket around the guess certified by the signs of the coefficients' Horner enclosure,
+/// starting from the enclosure's half-width over the slope (the narrowest bracket it can
+/// possibly certify) and doubling; only when that is wider than `target` is the same done with
+/// `value` (a tighter, costlier enclosure), intersected with the cheap one.
+fn refine(
+    p: &IPoly,
+    value: Option<&dyn Fn(f64) -> I>,
+    target: f64,
+    lo: f64,
+    hi: f64,
+) -> Result<Bracket, Uncertified> {
+    let cheap = |x: f64| p.eval(I::point(x));
+    let end_sign = |x: f64| {
+        let c = cheap(x);
+        c.sign()
+            .or_else(|| value.and_then(|v| c.intersect(v(x))?.sign()))
+    };
+    let (Some(slo), Some(shi)) = (end_sign(lo), end_sign(hi)) else {
+        return Err(Uncertified::Sign);
+    };
+    if slo == shi || lo >= hi || lo.is_nan() || hi.is_nan() {
+        return Err(Uncertified::Sign);
+    }
+    let (f, df) = (p.mid(), p.derivative().mid());
+    let inside = |x: f64, lo: f64, hi: f64| x > lo && x < hi;
+    let (mut a, mut b) = (lo, hi);
+    let fa_sign = f.eval(a).signum();
+    let mut x = 0.5 * a + 0.5 * b;
+    for _ in 0..100 {
+        let fx = f.eval(x);
+        if fx == 0.0 || b <= next_up(a) {
+            break;
+        }
+        if fx.signum() == fa_sign {
+            a = x;
+        } else {
+            b = x;
+        }
+        let newton = x - fx / df.eval(x);
+        let next = if inside(newton, a, b) {
+            newton
+        } else {
+            0.5 * a + 0.5 * b
+        };
+        if next == x {
+            break;
+        }
+        x = next;
+    }
+    if !inside(x, lo, hi) {
+        x = 0.5 * lo + 0.5 * hi;
+    }
+    let slope = df.eval(x).abs();
+    let certify = |enclose: &dyn Fn(f64) -> I, x: f64| -> (f64, f64, f64) {
+        certified_bracket(enclose, (lo, slo), (hi, shi), x, slope)
+    };
+    let (mut blo, mut bhi, mut bx) = certify(&cheap, x);
+    let wide = |lo: f64, hi: f64| hi - lo > target * lo.abs().max(hi.abs());
+    if let (true, Some(value)) = (wide(blo, bhi), value) {
+        let tight = |x: f64| {
+            let c = cheap(x);
+            if c.sign().is_some() {
+                c
+            } else {
+                c.intersect(value(x)).unwrap_or(c)
+            }
+        };
+        // The cheap bracket holds the root: the tight one is searched inside it.
+        let (l, h, bx2) = certified_bracket(&tight, (blo, slo), (bhi, shi), bx, slope);
+        (blo, bhi, bx) = (l, h, bx2);
+    }
+    let value = if bhi <= next_up(blo) {
+        if f.eval(blo).abs() <= f.eval(bhi).abs() {
+            blo
+        } else {
+            bhi
+        }
+    } else if (blo..=bhi).contains(&bx) {
+        bx
+    } else {
+        0.5 * blo + 0.5 * bhi
+    };
+    Ok(Bracket {
+        lo: blo,
+        hi: bhi,
+        value,
+    })
+}
+
+/// The narrowest bracket around `x` within `(lo, hi)` (whose ends have the known signs `slo`,
+/// `shi`) that `enclose` certifies: half-width from the enclosure's width over `slope`, doubled
+/// until both ends have certain, opposite signs; a root found outside moves the search to its
+/// side. Returns the bracket and its centre.
+fn certified_bracket(
+    enclose: &dyn Fn(f64) -> I,
+    (mut lo, slo): (f64, f64),
+    (mut hi, shi): (f64, f64),
+    mut x: f64,
+    slope: f64,
+) -> (f64, f64, f64) {
+    if hi <= next_up(lo) {
+        return (lo, hi, x);
+    }
+    let ulp = next_up(x.abs()) - x.abs();
+    let start = {
+        let v = enclose(x);
+        let guess = 0.5 * (v.hi - v.lo) / slope;
+        if guess.is_finite() {
+            guess.max(2.0 * ulp)
+        } else {
+            2.0 * ulp
+        }
+    };
+    let mut delta = start;
+    loop {
+        let (a, b) = (x - delta, x + delta);
+        if a <= lo && b >= hi {
+            return (lo, hi, x);
+        }
+        let (a, b) = (a.max(lo), b.min(hi));
+        let sign = |t: f64, end: f64, s: f64| if t == end { Some(s) } else { enclose(t).sign() };
+        match (sign(a, lo, slo), sign(b, hi, shi)) {
+            (Some(sa), Some(sb)) if sa == slo && sb == shi => return (a, b, x),
+            // The root is outside [a, b] on one side: move the other end in and recentre.
+            (Some(sa), _) if sa == shi => {
+                hi = a;
+                x = 0.5 * lo + 0.5 * hi;
+                delta = start;
+            }
+            (_, Some(sb)) if sb == slo => {
+                lo = b;
+                x = 0.5 * lo + 0.5 * hi;
+                delta = start;
+            }
+            _ => delta *= 2.0,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(c: &[f64]) -> IPoly {
+        IPoly::new(c.iter().map(|x| I::point(*x)).collect())
+    }
+
+    #[test]
+    fn well_conditioned_roots_are_bracketed_to_a_few_ulps() {
+        // (x - 1/3)(x - 2)(x - 1000)(x + 5): positive roots 1/3, 2, 1000.
+        let f = p(&[-1.0 / 3.0, 1.0]);
+        let q = f
+            .mul(&p(&[-2.0, 1.0]))
+            .mul(&p(&[-1000.0, 1.0]))
+            .mul(&p(&[5.0, 1.0]));
+        let r = positive_roots(&q).expect("simple, well separated roots");
+        assert_eq!(r.len(), 3);
+        for (b, want) in r.iter().zip([1.0 / 3.0, 2.0, 1000.0]) {
+            assert!(b.lo <= want && want <= b.hi, "{b:?} vs {want}");
+            // Outward rounding widens each Horner step by an ulp of the partial sum, and the
+            // bracket is within a factor two of what that enclosure can certify.
+            assert!(b.hi - b.lo <= 64.0 * f64::EPSILON * want, "{b:?}");
+        }
+    }
+
+    #[test]
+    fn undecidable_cases_are_errors_not_answers() {
+        // A double root: the Bernstein signs never separate it.
+        let d = p(&[-1.0, 1.0]).mul(&p(&[-1.0, 1.0])).mul(&p(&[3.0, 1.0]));
+        assert!(positive_roots(&d).is_err());
+        // A constant term that may vanish.
+        let z = IPoly::new(vec![I::new(-1e-20, 1e-20), I::point(1.0), I::point(1.0)]);
+        assert_eq!(positive_roots(&z), Err(Uncertified::Degenerate));
+        // No positive roots: x^2 + 1.
+        assert_eq!(positive_roots(&p(&[1.0, 0.0, 1.0])), Ok(Vec::new()));
+    }
+}

@@ -1,0 +1,518 @@
+//! Certified floating-point evaluation of the criterion: the same polynomials as the exact path,
+//! enclosed in f64 intervals, and their positive roots with proven brackets.
+//!
+//! The exact path ([`crate::specialise`], [`crate::roots`]) substitutes an aircraft's exact
+//! rational data into the parametric derivation and works in big rationals: every digit is
+//! right, at milliseconds per aircraft (much more for data with long fractions). Clearance and
+//! Monte Carlo analyse thousands to millions of aircraft, so they need the same answers in
+//! floating point, without giving up the guarantee. Here every number is an interval
+//! ([`crate::interval::I`], outward rounding) that encloses the exact value:
+//!
+//! 1. the parametric trim-level results of [`crate::derivation`] (det A, the trim numerators,
+//!    the roll equation, det J5 and d in the trim symbols) are evaluated at the data's
+//!    enclosures into dense polynomials in P0 and delta_a ([`dense`]);
+//! 2. the trim's denominator is cleared by the one step-8 routine,
+//!    [`crate::derivation::clear_trim`], in the ring of those interval polynomials, and the
+//!    aileron is eliminated by the resultant with the trim condition ([`eliminate`]);
+//! 3. [`isolate`] brackets the positive roots of every polynomial whose coefficients lie in
+//!    the enclosures, or says it cannot.
+//!
+//! So a certified answer is exactly the exact path's, up to the width of the brackets (an ulp or
+//! two). Where a certificate fails (a root too close to another, a coefficient that may vanish)
+//! callers fall back to the exact path: the answer is never a guess.
+
+pub mod compiled;
+pub mod dense;
+pub mod isolate;
+
+use crate::aircraft::{Aircraft, Param};
+use crate::algebra::MAX_SYMS;
+use crate::derivation::Clearing;
+use crate::equations::symbols;
+use crate::interval::I;
+use compiled::{Cleared, Parametric, Table};
+use dense::{IPoly, IPoly2};
+pub use isolate::{positive_roots, positive_roots_by, Bracket, Uncertified};
+
+/// The enclosures of an aircraft's data and controls: one interval per symbol of the model
+/// that has a value (the parameters, delta_e and delta_r), with their powers.
+#[derive(Clone, Debug)]
+pub struct Values {
+    table: Table,
+    lifted: Lifted,
+}
+
+impl Values {
+    /// The exact data of `aircraft` (each bracketed by the two nearest doubles) at elevator
+    /// `delta_e_rad` and rudder `delta_r_rad` (both exact doubles).
+    pub fn of(aircraft: &Aircraft, delta_e_rad: f64, delta_r_rad: f64) -> Values {
+        Values::new(
+            std::array::from_fn(|i| I::from_q(aircraft.exact(Param::ALL[i]))),
+            delta_e_rad,
+            delta_r_rad,
+        )
+    }
+
+    /// Enclosures `params` (in [`Param::ALL`] order) of the data.
+    pub fn new(params: [I; 18], delta_e_rad: f64, delta_r_rad: f64) -> Values {
+        let s = symbols();
+        let mut by_symbol = [None; MAX_SYMS];
+        for (p, v) in Param::ALL.iter().zip(params) {
+            by_symbol[s.param(*p).index()] = Some(v);
+        }
+        by_symbol[s.delta_e.index()] = Some(I::point(delta_e_rad));
+        by_symbol[s.delta_r.index()] = Some(I::point(delta_r_rad));
+        let table = Table::new(&by_symbol);
+        Values {
+            lifted: Lifted::new(Parametric::get(), &table),
+            table,
+        }
+    }
+
+    /// The table of enclosures and powers.
+    pub fn table(&self) -> &Table {
+        &self.table
+    }
+}
+
+/// Every compiled result of [`Parametric`] lifted to one aircraft: interval polynomials in P0
+/// and delta_a, computed once; the criterion polynomials are built from them
+/// ([`EnclosedPolys`]) and evaluated at single roll rates ([`value_at`]) without touching the
+/// parameters again.
+#[derive(Clone, Debug)]
+struct Lifted {
+    det_a: IPoly2,
+    trim: [IPoly2; 4],
+    roll: Vec<IPoly2>,
+    det_j5: Vec<IPoly2>,
+    d: Vec<IPoly2>,
+    zs_det: IPoly2,
+    zs_trim: [IPoly2; 3],
+    zs_det_j5: Vec<IPoly2>,
+    zs_d: Vec<IPoly2>,
+    lateral: IPoly2,
+}
+
+impl Lifted {
+    fn new(c: &Parametric, t: &Table) -> Lifted {
+        let groups = |g: &Cleared| g.coefficients.iter().map(|c| c.lift(t)).collect();
+        Lifted {
+            det_a: c.det_a.lift(t),
+            trim: std::array::from_fn(|i| c.trim[i].lift(t)),
+            roll: groups(&c.roll),
+            det_j5: groups(&c.det_j5),
+            d: groups(&c.d),
+            zs_det: c.zs_det.lift(t),
+            zs_trim: std::array::from_fn(|i| c.zs_trim[i].lift(t)),
+            zs_det_j5: groups(&c.zs_det_j5),
+            zs_d: groups(&c.zs_d),
+            lateral: c.lateral.lift(t),
+        }
+    }
+}
+
+/// The coefficient rings of the criterion polynomials in delta_a: polynomials in P0
+/// ([`IPoly`]) when the polynomials are built, numbers ([`I`]) when they are evaluated at one
+/// roll rate. [`eliminate`] is written once over both.
+pub trait Coeff: Clone {
+    /// `a + b`.
+    fn add(&self, o: &Self) -> Self;
+    /// `a - b`.
+    fn sub(&self, o: &Self) -> Self;
+    /// `a * b`.
+    fn mul(&self, o: &Self) -> Self;
+    /// `a^k`.
+    fn pow(&self, k: u32) -> Self;
+    /// `a / d` for an exact division (`None` when it cannot be certified).
+    fn div_exact(&self, d: &Self) -> Option<Self>;
+    /// Zero.
+    fn zero() -> Self;
+}
+
+impl Coeff for IPoly {
+    fn add(&self, o: &IPoly) -> IPoly {
+        IPoly::add(self, o)
+    }
+    fn sub(&self, o: &IPoly) -> IPoly {
+        IPoly::sub(self, o)
+    }
+    fn mul(&self, o: &IPoly) -> IPoly {
+        IPoly::mul(self, o)
+    }
+    fn pow(&self, k: u32) -> IPoly {
+        IPoly::pow(self, k)
+    }
+    fn div_exact(&self, d: &IPoly) -> Option<IPoly> {
+        IPoly::div_exact(self, d)
+    }
+    fn zero() -> IPoly {
+        IPoly::zero()
+    }
+}
+
+impl Coeff for I {
+    fn add(&self, o: &I) -> I {
+        *self + *o
+    }
+    fn sub(&self, o: &I) -> I {
+        *self - *o
+    }
+    fn mul(&self, o: &I) -> I {
+        *self * *o
+    }
+    fn pow(&self, k: u32) -> I {
+        self.powi(k)
+    }
+    fn div_exact(&self, d: &I) -> Option<I> {
+        self.checked_div(*d)
+    }
+    fn zero() -> I {
+        I::point(0.0)
+    }
+}
+
+/// How the compiled results are evaluated: the ring of step 8 (polynomials in delta_a over
+/// [`Mode::Coef`]) and the lift of a compiled coefficient into it.
+trait Mode: Clearing {
+    /// Coefficients of the polynomials in delta_a.
+    type Coef: Coeff;
+    /// A lifted result as a value of the ring.
+    fn lifted(&self, p: &IPoly2) -> Self::Value;
+    /// The coefficients of `delta_a^0, delta_a^1, ...` (trailing exact zeros dropped).
+    fn in_aileron(v: &Self::Value) -> Vec<Self::Coef>;
+    /// Step 8 of a grouped result whose group coefficients are `lifted`.
+    fn clear(
+        &mut self,
+        c: &Cleared,
+        lifted: &[IPoly2],
+        num: &[Self::Value],
+        den: &Self::Value,
+    ) -> Self::Value
+    where
+        Self: Sized,
+    {
+        c.groups
+            .clear_by(self, num, den, |m, i| m.lifted(&lifted[i]))
+    }
+    /// The value when delta_a does not occur.
+    fn univariate(v: &Self::Value) -> Result<Self::Coef, Uncertified> {
+        let mut c = Self::in_aileron(v);
+        match c.len() {
+            0 => Ok(Self::Coef::zero()),
+            1 => Ok(c.remove(0)),
+            _ => Err(Uncertified::Degenerate),
+        }
+    }
+}
+
+/// The criterion polynomials in P0 (and delta_a): values are [`IPoly2`].
+struct InP0;
+
+impl Clearing for InP0 {
+    type Value = IPoly2;
+    fn lift(&mut self, p: &crate::algebra::Poly) -> IPoly2 {
+        IPoly2::new(vec![IPoly::constant(constant(p))])
+    }
+    fn add(&mut self, a: &IPoly2, b: &IPoly2) -> IPoly2 {
+        a.add(b)
+    }
+    fn mul(&mut self, a: &IPoly2, b: &IPoly2) -> IPoly2 {
+        a.mul(b)
+    }
+}
+
+impl Mode for InP0 {
+    type Coef = IPoly;
+    fn lifted(&self, p: &IPoly2) -> IPoly2 {
+        p.clone()
+    }
+    fn in_aileron(v: &IPoly2) -> Vec<IPoly> {
+        v.0.clone()
+    }
+}
+
+/// The criterion at one roll rate `.0`: values are polynomials in delta_a with interval
+/// coefficients ([`Da`]).
+struct AtP0(I);
+
+/// A polynomial in delta_a of degree at most 3 with interval coefficients (no allocation).
+#[derive(Clone, Copy, Debug)]
+struct Da {
+    c: [I; 4],
+    len: usize,
+}
+
+impl Da {
+    fn new(c: [I; 4]) -> Da {
+        let len = c
+            .iter()
+            .rposition(|x| !x.is_exact_zero())
+            .map_or(0, |i| i + 1);
+        Da { c, len }
+    }
+}
+
+/// A constant step 8 lifts through the ring (only 0 and 1: the coefficients come compiled).
+fn constant(p: &crate::algebra::Poly) -> I {
+    let c = p
+        .as_constant()
+        .expect("step 8 lifts only constants through the ring");
+    match c.as_i64() {
+        Some(n) if n.unsigned_abs() <= 1 << 53 => I::point(n as f64),
+        _ => I::from_q(&c.to_big()),
+    }
+}
+
+impl Clearing for AtP0 {
+    type Value = Da;
+    fn lift(&mut self, p: &crate::algebra::Poly) -> Da {
+        let mut c = [I::point(0.0); 4];
+        c[0] = constant(p);
+        Da::new(c)
+    }
+    fn add(&mut self, a: &Da, b: &Da) -> Da {
+        Da::new(std::array::from_fn(|i| a.c[i] + b.c[i]))
+    }
+    fn mul(&mut self, a: &Da, b: &Da) -> Da {
+        let mut c = [I::point(0.0); 4];
+        for i in 0..a.len {
+            for j in 0..b.len {
+                // Step 8's products stay within degree 3 in delta_a (trim numerators are affine
+                // in it, every trim quantity at most quadratic in the trim states); a product
+                // beyond would be no value at all, never a truncated one.
+                let Some(slot) = c.get_mut(i + j) else {
+                    return Da::new([I::entire(); 4]);
+                };
+                *slot = *slot + a.c[i] * b.c[j];
+            }
+        }
+        Da::new(c)
+    }
+}
+
+impl Mode for AtP0 {
+    type Coef = I;
+    fn lifted(&self, p: &IPoly2) -> Da {
+        if p.0.len() > 4 {
+            return Da::new([I::entire(); 4]);
+        }
+        let mut out = [I::point(0.0); 4];
+        for (o, c) in out.iter_mut().zip(&p.0) {
+            *o = c.eval(self.0);
+        }
+        Da::new(out)
+    }
+    fn in_aileron(v: &Da) -> Vec<I> {
+        v.c[..v.len].to_vec()
+    }
+}
+
+/// The criterion quantities of the unconstrained roll in a [`Mode`].
+struct Unconstrained<M: Mode> {
+    det_a: M::Coef,
+    det_a_value: M::Value,
+    trim: [M::Value; 4],
+    trim_condition: M::Value,
+}
+
+impl<M: Mode> Unconstrained<M> {
+    /// det A, the trim and the trim condition; det J5 and d on the trim on demand
+    /// ([`Unconstrained::on_trim`]).
+    fn new(m: &mut M, l: &Lifted) -> Result<Unconstrained<M>, Uncertified> {
+        let c = Parametric::get();
+        let det_a_value = m.lifted(&l.det_a);
+        let det_a = M::univariate(&det_a_value)?;
+        let trim: [M::Value; 4] = std::array::from_fn(|i| m.lifted(&l.trim[i]));
+        Ok(Unconstrained {
+            trim_condition: m.clear(&c.roll, &l.roll, &trim, &det_a_value),
+            det_a,
+            det_a_value,
+            trim,
+        })
+    }
+
+    /// `det J5 det(A)^2` (`jump`) or `d det(A)^2` on the trim.
+    fn on_trim(&self, m: &mut M, l: &Lifted, jump: bool) -> M::Value {
+        let c = Parametric::get();
+        let (groups, lifted) = if jump {
+            (&c.det_j5, &l.det_j5)
+        } else {
+            (&c.d, &l.d)
+        };
+        m.clear(groups, lifted, &self.trim, &self.det_a_value)
+    }
+
+    fn eliminate(&self, f: &M::Value) -> Result<M::Coef, Uncertified> {
+        eliminate(
+            &M::in_aileron(&self.trim_condition),
+            &M::in_aileron(f),
+            &self.det_a,
+        )
+    }
+}
+
+/// The criterion quantities of the zero-sideslip roll in a [`Mode`].
+struct ZeroSideslip<M: Mode> {
+    zs_det: M::Coef,
+    zs_trim: [M::Coef; 3],
+    zs_jump: M::Coef,
+    zs_d_det: M::Coef,
+}
+
+impl<M: Mode> ZeroSideslip<M> {
+    fn new(m: &mut M, l: &Lifted) -> Result<ZeroSideslip<M>, Uncertified> {
+        let c = Parametric::get();
+        let den = m.lifted(&l.zs_det);
+        let num: [M::Value; 3] = std::array::from_fn(|i| m.lifted(&l.zs_trim[i]));
+        let zs_jump = m.clear(&c.zs_det_j5, &l.zs_det_j5, &num, &den);
+        let zs_d_det = m.clear(&c.zs_d, &l.zs_d, &num, &den);
+        Ok(ZeroSideslip {
+            zs_jump: M::univariate(&zs_jump)?,
+            zs_d_det: M::univariate(&zs_d_det)?,
+            zs_trim: [
+                M::univariate(&num[0])?,
+                M::univariate(&num[1])?,
+                M::univariate(&num[2])?,
+            ],
+            zs_det: M::univariate(&den)?,
+        })
+    }
+}
+
+/// The criterion polynomials of one aircraft, enclosed: the interval counterpart of
+/// [`crate::analysis::CriterionPolys`] (same names, same construction, each proportional to
+/// the exact one by a positive or negative constant).
+#[derive(Clone, Debug)]
+pub struct EnclosedPolys {
+    /// det A (Eq. 4) in P0.
+    pub det_a: IPoly,
+    /// Numerators of [alpha0, beta0, Q0, R0] over `det_a`, in P0 and delta_a.
+    pub trim: [IPoly2; 4],
+    /// The trim condition `det(A)^2 p_dot` on the trim.
+    pub trim_condition: IPoly2,
+    /// `det J5 det(A)^2` on the trim.
+    pub jump_at: IPoly2,
+    /// `d det(A)^2` on the trim.
+    pub d_at: IPoly2,
+    /// The jump polynomial in P0 (delta_a eliminated; with aileron yaw divided by det(A)^4,
+    /// a factor of every aircraft's resultant).
+    pub jump: IPoly,
+    /// The pole polynomial in P0 (as `jump`).
+    pub poles: IPoly,
+    /// det A1 of the zero-sideslip trim (Eq. 35) in P0.
+    pub zs_det: IPoly,
+    /// Numerators of [alpha0, Q0, R0] of the zero-sideslip trim over `zs_det`.
+    pub zs_trim: [IPoly; 3],
+    /// `det J5 det(A1)^2` at the zero-sideslip trim.
+    pub zs_jump: IPoly,
+    /// `d det(A1)^2` at the zero-sideslip trim.
+    pub zs_d_det: IPoly,
+    /// The lateral control determinant `l_delta_a n_delta_r - l_delta_r n_delta_a`.
+    pub lateral: I,
+}
+
+impl EnclosedPolys {
+    /// Encloses the criterion polynomials of the data `v`.
+    pub fn new(v: &Values) -> Result<EnclosedPolys, Uncertified> {
+        let l = &v.lifted;
+        let u = Unconstrained::new(&mut InP0, l)?;
+        let jump_at = u.on_trim(&mut InP0, l, true);
+        let d_at = u.on_trim(&mut InP0, l, false);
+        let z = ZeroSideslip::new(&mut InP0, l)?;
+        let lateral = l.lateral.coeff(0);
+        // Every polynomial isolated below is even or odd in P0 (see `IPoly::symmetric`).
+        Ok(EnclosedPolys {
+            jump: u.eliminate(&jump_at)?.symmetric(),
+            poles: u.eliminate(&d_at)?.symmetric(),
+            det_a: u.det_a.symmetric(),
+            trim: u.trim,
+            trim_condition: u.trim_condition,
+            jump_at,
+            d_at,
+            zs_det: z.zs_det.symmetric(),
+            zs_trim: z.zs_trim,
+            zs_jump: z.zs_jump.symmetric(),
+            zs_d_det: z.zs_d_det.symmetric(),
+            lateral: lateral.coeffs().first().copied().unwrap_or(I::point(0.0)),
+        })
+    }
+}
+
+/// Which criterion polynomial [`value_at`] encloses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Criterion {
+    /// det A.
+    DetA,
+    /// The jump polynomial.
+    Jump,
+    /// The pole polynomial.
+    Poles,
+    /// det A1 of the zero-sideslip trim.
+    ZsDet,
+    /// `det J5 det(A1)^2` at the zero-sideslip trim.
+    ZsJump,
+    /// `d det(A1)^2` at the zero-sideslip trim.
+    ZsDDet,
+}
+
+/// An enclosure of the value at `P0 = x` of a criterion polynomial of [`EnclosedPolys`],
+/// computed through the trim (the same construction at one roll rate): the trim-level factors
+/// are small, so this is much tighter near a root than the expanded polynomial's Horner sum.
+pub fn value_at(v: &Values, which: Criterion, x: f64) -> I {
+    type M1 = AtP0;
+    let mut m = AtP0(I::point(x));
+    let t = &v.lifted;
+    let value = match which {
+        Criterion::DetA | Criterion::Jump | Criterion::Poles => {
+            if which == Criterion::DetA {
+                M1::univariate(&m.lifted(&t.det_a))
+            } else {
+                Unconstrained::new(&mut m, t).and_then(|u| {
+                    let f = u.on_trim(&mut m, t, which == Criterion::Jump);
+                    u.eliminate(&f)
+                })
+            }
+        }
+        _ => ZeroSideslip::new(&mut m, t).map(|z| match which {
+            Criterion::ZsDet => z.zs_det,
+            Criterion::ZsJump => z.zs_jump,
+            _ => z.zs_d_det,
+        }),
+    };
+    value.unwrap_or_else(|_| I::entire())
+}
+
+/// The resultant in delta_a of the trim condition `g` and a trim quantity `f` (the enclosure of
+/// [`crate::derivation::eliminate_aileron`] on numeric data, up to sign): `f` itself when
+/// delta_a does not occur in `f` and `g` is linear in it; `g1^n f(-g0/g1)` for a linear `g`;
+/// for a quadratic `g` and `f` (aileron yaw) Bezout's form
+/// `(g2 f0 - g0 f2)^2 - (g2 f1 - g1 f2)(g1 f0 - g0 f1)`, divided by `det(A)^4`, which divides the
+/// resultant of every aircraft with aileron yaw (Jacobi's identity for the 2x2 minors of
+/// adj(A): the delta_a-parts of the trim numerators are columns of adj(A)).
+pub fn eliminate<C: Coeff>(g: &[C], f: &[C], det_a: &C) -> Result<C, Uncertified> {
+    let (Some(dg), Some(df)) = (g.len().checked_sub(1), f.len().checked_sub(1)) else {
+        return Err(Uncertified::Degenerate);
+    };
+    let at = |p: &[C], i: usize| p.get(i).cloned().unwrap_or_else(C::zero);
+    match (dg, df) {
+        (1, _) => {
+            // g1^n f(-g0 / g1) = sum_i f_i (-g0)^i g1^(n - i).
+            let (g0, g1) = (C::zero().sub(&g[0]), &g[1]);
+            Ok((0..=df).fold(C::zero(), |acc, i| {
+                acc.add(&f[i].mul(&g0.pow(i as u32)).mul(&g1.pow((df - i) as u32)))
+            }))
+        }
+        // Every trim quantity of the criterion (det J5, d) is quadratic in delta_a with aileron
+        // yaw; the factor det(A)^4 is established for that case only.
+        (2, 2) => {
+            let (g0, g1, g2) = (&g[0], &g[1], &g[2]);
+            let (f0, f1, f2) = (at(f, 0), at(f, 1), at(f, 2));
+            let a = g2.mul(&f0).sub(&g0.mul(&f2));
+            let b = g2.mul(&f1).sub(&g1.mul(&f2));
+            let c = g1.mul(&f0).sub(&g0.mul(&f1));
+            let res = a.mul(&a).sub(&b.mul(&c));
+            res.div_exact(&det_a.pow(4)).ok_or(Uncertified::Degenerate)
+        }
+        _ => Err(Uncertified::Degenerate),
+    }
+}

@@ -8,7 +8,7 @@
 //! hold is printed.
 
 use super::functions::Function;
-use super::program::{inputs_used, program, Expr};
+use super::program::{exact_text, inputs_used, program, Expr};
 use super::shape::{access, c_struct, c_type, shapes, C_PREFIX};
 use super::{cost_doc, doc_lines, op_count_lines, Builtin, COMMAND};
 use crate::aircraft::{Aircraft, Param};
@@ -59,6 +59,7 @@ pub fn data_name(module: &str) -> String {
 fn expr(e: &Expr, out: &mut String) {
     match e {
         Expr::Const(q) => out.push_str(&double_literal(q)),
+        Expr::Named(n) => write!(out, "K{n}").expect("write to String"),
         Expr::Input(name) => out.push_str(&name.replacen('.', "->", 1)),
         Expr::Temp(n) => write!(out, "t{n}").expect("write to String"),
         Expr::Binary(op, a, b) => {
@@ -73,6 +74,13 @@ fn expr(e: &Expr, out: &mut String) {
         Expr::Sqrt(a) => {
             out.push_str("sqrt(");
             expr(a, out);
+            out.push(')');
+        }
+        Expr::CopySign(a, b) => {
+            out.push_str("copysign(");
+            expr(a, out);
+            out.push_str(", ");
+            expr(b, out);
             out.push(')');
         }
         Expr::Paren(a) => {
@@ -173,6 +181,10 @@ pub fn function(f: &Function, module: Option<&str>) -> String {
     for u in unused {
         writeln!(out, "    (void){u};").expect("write to String");
     }
+    for (n, q) in p.constants.iter().enumerate() {
+        writeln!(out, "    // exact: {}", exact_text(q)).expect("write to String");
+        writeln!(out, "    const double K{n} = {};", double_literal(q)).expect("write to String");
+    }
     for (n, e) in p.temps.iter().enumerate() {
         let mut s = format!("const double t{n} = ");
         expr(e, &mut s);
@@ -264,11 +276,13 @@ pub fn header(param: &[Function], builtins: &[Builtin]) -> String {
     op_counts(&mut out, param);
     out.push_str(
         "//\n\
-         // Use: `#include \"roll_criterion.h\"` and link with -lm (for sqrt). Every function is\n\
-         // straight-line double arithmetic: no allocation, no recursion, no loops or branches, one\n\
-         // return, nothing from the C library but sqrt. Results are bit-identical to the Rust crate\n\
-         // when FLT_EVAL_METHOD == 0 and floating-point contraction is off (gcc/clang:\n\
-         // -ffp-contract=off); otherwise they differ by rounding only.\n\
+         // Use: `#include \"roll_criterion.h\"` and link with -lm (for sqrt and copysign). Every\n\
+         // function is straight-line double arithmetic: no allocation, no recursion, no loops or\n\
+         // branches, one return, nothing from the C library but sqrt and copysign (C99). A named\n\
+         // constant KN is a folded exact rational rounded once; its comment gives the exact value.\n\
+         // Results are bit-identical to the Rust crate when FLT_EVAL_METHOD == 0 and\n\
+         // floating-point contraction is off (gcc/clang: -ffp-contract=off); otherwise they\n\
+         // differ by rounding only.\n\
          // Define ROLL_CRITERION_API before the include to choose the linkage of the functions\n\
          // (default: static inline); the built-in aircraft data are static const objects.\n\n",
     );

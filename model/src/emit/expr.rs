@@ -39,6 +39,10 @@ pub enum Node {
     Neg(Id),
     /// sqrt(a) (libm; NaN for negative a, which is how "no root" is signalled without a branch)
     Sqrt(Id),
+    /// copysign(a, b): the magnitude of a with the sign of b (IEEE 754 `copySign`, C99
+    /// `copysign`, libm's `copysign`); exact, and how the stable quadratic formula picks the
+    /// root without cancellation without a branch.
+    CopySign(Id, Id),
 }
 
 /// Operation counts after common-subexpression elimination.
@@ -90,6 +94,21 @@ impl Dag {
     /// Node by id.
     pub fn node(&self, id: Id) -> &Node {
         &self.nodes[id.0 as usize]
+    }
+
+    /// A DAG with the given inputs (in this order) and no node yet: the start of a pass that
+    /// rebuilds a DAG ([`Dag::push`]).
+    pub fn with_inputs(inputs: &[String]) -> Dag {
+        Dag {
+            inputs: inputs.to_vec(),
+            ..Dag::default()
+        }
+    }
+
+    /// Adds a node exactly as given (hash-consed, not folded): for passes that copy nodes of
+    /// another DAG whose children they have already copied.
+    pub fn push(&mut self, n: Node) -> Id {
+        self.add_node(n)
     }
 
     fn add_node(&mut self, n: Node) -> Id {
@@ -253,6 +272,15 @@ impl Dag {
         self.add_node(Node::Sqrt(a))
     }
 
+    /// copysign(a, b). Folded only when both are constants: the sign of a rational zero is +.
+    pub fn copysign(&mut self, a: Id, b: Id) -> Id {
+        if let (Some(x), Some(y)) = (self.as_const(a).cloned(), self.as_const(b).cloned()) {
+            let m = if x.is_negative() { -&x } else { x };
+            return self.constant(if y.is_negative() { -&m } else { m });
+        }
+        self.add_node(Node::CopySign(a, b))
+    }
+
     /// Builds a polynomial with a greedy multivariate Horner scheme: factor out the symbol that
     /// occurs in most terms, recurse on its coefficients. `leaf` maps each symbol to a node.
     pub fn poly(&mut self, p: &Poly, leaf: &dyn Fn(Sym) -> Id) -> Id {
@@ -393,7 +421,11 @@ impl Dag {
     pub fn children(&self, id: Id) -> Vec<Id> {
         match *self.node(id) {
             Node::Const(_) | Node::Input(_) => vec![],
-            Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => vec![a, b],
+            Node::Add(a, b)
+            | Node::Sub(a, b)
+            | Node::Mul(a, b)
+            | Node::Div(a, b)
+            | Node::CopySign(a, b) => vec![a, b],
             Node::Neg(a) | Node::Sqrt(a) => vec![a],
         }
     }
@@ -411,7 +443,7 @@ impl Dag {
                 Node::Mul(..) => c.mul += 1,
                 Node::Div(..) => c.div += 1,
                 Node::Neg(_) => c.neg += 1,
-                Node::Sqrt(_) => c.libm += 1,
+                Node::Sqrt(_) | Node::CopySign(..) => c.libm += 1,
                 Node::Const(_) | Node::Input(_) => {}
             }
         }
@@ -432,6 +464,7 @@ impl Dag {
                 Node::Div(a, b) => g(a) / g(b),
                 Node::Neg(a) => -g(a),
                 Node::Sqrt(a) => g(a).sqrt(),
+                Node::CopySign(a, b) => g(a).copysign(g(b)),
             };
         }
         outputs.iter().map(|o| v[o.0 as usize]).collect()

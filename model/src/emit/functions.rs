@@ -5,6 +5,7 @@
 //! that det K costs one trim, one reciprocal of d and a 2x2 determinant.
 
 use super::expr::{Dag, Id};
+use super::linear::merge_like_terms;
 use crate::aircraft::Param;
 use crate::algebra::{Matrix, Poly, Sym, Q};
 use crate::derivation::{clear_trim, Clearing, Derivation, TRIM_DEGREE};
@@ -443,13 +444,20 @@ impl Ctx {
         outputs: Vec<(String, Id)>,
         ret: Ret,
     ) -> Function {
+        // Like terms merged exactly before anything is printed or counted.
+        let ids: Vec<Id> = outputs.iter().map(|(_, id)| *id).collect();
+        let (dag, ids) = merge_like_terms(&self.dag, &ids);
         Function {
             name,
             doc,
             takes_derivatives: takes,
             args,
-            dag: self.dag,
-            outputs,
+            dag,
+            outputs: outputs
+                .into_iter()
+                .zip(ids)
+                .map(|((n, _), id)| (n, id))
+                .collect(),
             ret,
         }
     }
@@ -740,27 +748,35 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         let mut c = Ctx::new(t, &[]);
         let [c0, c2, c4] = [0, 1, 2].map(|i| c.poly(&d.biquadratic[i]));
         let dag = &mut c.dag;
+        // The cancellation-free quadratic formula in x = P0^2: q = -(c2 + sign(c2) sqrt(disc)) / 2
+        // adds two numbers of the same sign, and the roots are c0 / q (the smaller in
+        // magnitude) and q / c4 (the larger), each a single rounding of well-conditioned parts.
         let four = dag.constant(Q::int(4));
-        let two = dag.constant(Q::int(2));
+        let half = dag.constant(Q::ratio(1, 2));
         let c2sq = dag.mul(c2, c2);
         let c4c0 = dag.mul(c4, c0);
         let f = dag.mul(four, c4c0);
         let disc = dag.sub(c2sq, f);
         let sq = dag.sqrt(disc);
-        let nc2 = dag.neg(c2);
-        let den = dag.mul(two, c4);
-        let lo = dag.sub(nc2, sq);
-        let hi = dag.add(nc2, sq);
-        let x1 = dag.div(lo, den);
-        let x2 = dag.div(hi, den);
-        let p1 = dag.sqrt(x1);
-        let p2 = dag.sqrt(x2);
+        let signed = dag.copysign(sq, c2);
+        let sum = dag.add(c2, signed);
+        let half_sum = dag.mul(sum, half);
+        let q = dag.neg(half_sum);
+        let small = dag.div(c0, q);
+        let large = dag.div(q, c4);
+        let p1 = dag.sqrt(small);
+        let p2 = dag.sqrt(large);
         out.push(c.finish(
             "divergence_roll_rates",
             lines(&[
-                "The divergence roll rates P1, P2 of Eq. 5 (Table 1), rad/s:",
-                "`P = sqrt((-c2 -+ sqrt(c2^2 - 4 c4 c0)) / (2 c4))`, ascending when c4 = C D > 0.",
-                "NaN for a root that does not exist (negative discriminant or P0^2 < 0), without a branch.",
+                "The divergence roll rates P1 <= P2 of Eq. 5 (Table 1), rad/s, the positive roots of",
+                "`det A = c4 P0^4 + c2 P0^2 + c0` ([`divergence_biquadratic`]), by the cancellation-free",
+                "quadratic formula in `P0^2`: `q = -(c2 + copysign(sqrt(c2^2 - 4 c4 c0), c2)) / 2`,",
+                "`P1 = sqrt(c0 / q)` (the root of smaller magnitude), `P2 = sqrt(q / c4)`. Both are",
+                "accurate to a few ulps of well-conditioned coefficients even when one root is tiny",
+                "against the other (the textbook `(-c2 -+ sqrt(...)) / (2 c4)` loses the small one to",
+                "cancellation); `c4 = 0` gives `P1 = sqrt(-c0 / c2)`. NaN for a root that does not",
+                "exist (negative discriminant or `P0^2 < 0`), without a branch.",
             ]),
             t,
             vec![],

@@ -12,6 +12,7 @@ pub mod cross;
 pub mod expr;
 pub mod functions;
 pub mod latex;
+pub mod linear;
 pub mod paper;
 pub mod program;
 pub mod reference;

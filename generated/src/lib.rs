@@ -107,15 +107,25 @@ pub struct ZeroSideslipTrim {
     pub delta_r: f64,
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
-/// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
-/// equation), and the aileron from the roll equation, a quadratic in delta_a
-/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the
-/// trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),
-/// element 1 the other root; both by the cancellation-free quadratic formula. NaN where
-/// the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw
-/// (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the
-/// divergence roll rates). The other functions of `p0` use element 0.
+/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = [alpha0, beta0, Q0, R0]` solves
+/// `A x0 + b = 0` (Cramer's rule, one division by det A), affine in delta_a (aileron yaw
+/// `n_delta_a` enters b); the aileron then solves the roll equation `p_dot = 0` along it,
+/// a quadratic `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element
+/// 0 is the trim that continues the trim without aileron yaw (the root that tends to
+/// `-g0/g1`), element 1 the other root; both by the cancellation-free quadratic formula.
+/// NaN where the two trims of `p0` are complex; element 1 is infinite or NaN without
+/// aileron yaw (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0
+/// (the divergence roll rates). The other functions of `p0` use element 0.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A = [[z_alpha, -P0, 1, 0],
+///      [P0, y_beta, 0, -1],
+///      [m_alpha, 0, m_q, C*P0],
+///      [0, n_beta, -D*P0, n_r]]
+/// b = [0, 0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
+/// p_dot = l_p*P0 + l_r*R0 + l_beta*beta0 + l_delta_a*delta_a + l_delta_r*delta_r - E*Q0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -182,10 +192,24 @@ pub fn trim(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the
-/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the
-/// rudder from the roll and yaw equations together (with aileron yaw and roll due to
-/// rudder both controls enter both; the rudder is the schedule of the aileron-rudder
-/// interconnect, Fig. 9). Angles in rad, rates in rad/s.
+/// rudder freed; `[alpha0, Q0, R0]` solves `A1 x + b1 = 0` (the alpha, beta and q
+/// equations), the aileron and the rudder the roll and yaw equations together (with
+/// aileron yaw and roll due to rudder both controls enter both; the rudder is the
+/// schedule of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A1 = [[z_alpha, 1, 0],
+///       [P0, 0, -1],
+///       [m_alpha, m_q, C*P0]]
+/// b1 = [0, 0, m_delta_e*delta_e]
+/// delta_a = (-l_p*n_delta_r*P0 - l_r*n_delta_r*R0 + n_p*l_delta_r*P0 + n_r*l_delta_r*R0
+///                - D*l_delta_r*P0*Q0 + E*n_delta_r*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// delta_r = (l_p*n_delta_a*P0 + l_r*n_delta_a*R0 - l_delta_a*n_p*P0 - l_delta_a*n_r*R0
+///                + D*l_delta_a*P0*Q0 - E*n_delta_a*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -212,7 +236,17 @@ pub fn zero_sideslip_trim(k: &Derivatives, p0: f64, delta_e: f64) -> ZeroSidesli
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The 5x5 Jacobian of the PSS model (Appendix A.2) at the state
-/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s.
+/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s;
+/// below with `(alpha0, beta0, P0, Q0, R0) = (alpha, beta, p, q, r)`.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// J5 = [[z_alpha, -P0, -beta0, 1, 0],
+///       [P0, y_beta, alpha0, 0, -1],
+///       [0, l_beta, l_p, -E*R0, l_r - E*Q0],
+///       [m_alpha, 0, C*R0, m_q, C*P0],
+///       [0, n_beta, n_p - D*Q0, -D*P0, n_r]]
+/// ```
 ///
 /// Arguments:
 /// - `alpha`: angle of attack, rad
@@ -241,8 +275,13 @@ pub fn jacobian5(
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// The static-residual denominator (Eq. 22) at the trim of `p0`:
-/// `d = l_p + l_r alpha0 - E Q0 alpha0 - E R0 beta0`, 1/s. det K has poles where d = 0 (Fig. 8).
+/// The static-residual denominator d (Eq. 22) at the trim of `p0`, 1/s. det K has
+/// poles where d = 0 (Fig. 8).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -300,9 +339,19 @@ pub fn residual_denominator(
         - k.e * ((t20 * t26 - t17) * (t19 + t22 * t26) + t27 * (t18 - t21 * t26))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of `p0`:
-/// `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in Eqs 13-14,
-/// g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual (Eqs 22-25). 1/s^2.
+/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of
+/// `p0`: `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in
+/// Eqs 13-14, g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual
+/// (Eqs 22-25). 1/s^2.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -373,8 +422,18 @@ pub fn stiffness(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> [[f64;
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the
 /// saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.
-/// Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared
-/// from g, h and d, on the trim branch of [`trim`].
+/// Evaluated as `det K0 - h^T adj(K0) g / d` (the matrix determinant lemma on
+/// `K = K0 - g h^T / d`) with the trim's denominator det A cleared from g, h and d, on
+/// the trim branch of [`trim`].
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -546,7 +605,8 @@ pub fn det_j5(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f64 {
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// det K (Eq. 27) at the zero-sideslip trim of `p0` (section V.D, Fig. 11), 1/s^4: its
-/// zeros mark the departure (transcritical point) of the zero-sideslip roll.
+/// zeros mark the departure (transcritical point) of the zero-sideslip roll. K0, g, h
+/// and d are those of [`det_k`] with `beta0 = 0`.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -578,8 +638,15 @@ pub fn zero_sideslip_det_k(k: &Derivatives, p0: f64, delta_e: f64) -> f64 {
         - t15 / (k.l_p * (t3 * t3) + k.l_r * (t1 * t3) + k.e * (t1 * t4))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive
-/// roots are the pitch-yaw divergence roll rates of Table 1.
+/// Coefficients [c0, c2, c4] of `det A = c4 P0^4 + c2 P0^2 + c0` (Eq. 5); its
+/// positive roots are the pitch-yaw divergence roll rates of Table 1.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c0 = -m_alpha*n_beta + z_alpha*m_q*n_beta - y_beta*m_alpha*n_r + z_alpha*y_beta*m_q*n_r
+/// c2 = -C*n_beta + D*m_alpha + m_q*n_r + C*D*z_alpha*y_beta
+/// c4 = C*D
+/// ```
 ///
 /// Cost after CSE: 5 add/sub, 10 mul, 0 div, 0 neg, 0 libm (15 operations); straight-line, no branches.
 #[must_use]
@@ -922,7 +989,16 @@ pub fn zero_sideslip_jump_polynomial(k: &Derivatives, delta_e: f64) -> [f64; 9] 
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
 /// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
-/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10).
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3
+/// to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c1 = -z_alpha - y_beta - l_p - m_q - n_r
+/// c2 = -m_alpha + n_beta + z_alpha*y_beta + z_alpha*l_p + z_alpha*m_q + z_alpha*n_r + y_beta*l_p
+///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha0 + m_q*n_r
+///          + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -1088,9 +1164,16 @@ pub fn characteristic_coefficients(
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The fourth Hurwitz determinant of J5 at the trim of `p0`,
-/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`, 1/s^10.
-/// By Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
-/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle (`+-lambda`).
+/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`
+/// (expanded below) in the coefficients of [`characteristic_coefficients`], 1/s^10. By
+/// Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
+/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle
+/// (`+-lambda`).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// Delta4 = -c5^2 + 2*c1*c4*c5 + c2*c3*c5 - c3^2*c4 - c1^2*c4^2 - c1*c2^2*c5 + c1*c2*c3*c4
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -1251,10 +1334,16 @@ pub fn hurwitz_delta4(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f
         - t36 * (t36 * (t93 * t93) + (t50 * (t107 - t106) + 2.0 * (t93 * t105)))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` at the trim of `p0`, rad^2/s^2: at a zero of
-/// [`hurwitz_delta4`] the square of the frequency of the pair on the imaginary axis, positive
-/// at a Hopf point and negative at a neutral saddle (from the even and odd parts of
-/// `p(i omega) = 0` with `w^2` eliminated).
+/// `omega^2` at the trim of `p0`, rad^2/s^2, in the coefficients of
+/// [`characteristic_coefficients`]: at a zero of [`hurwitz_delta4`] the square of the
+/// frequency of the pair on the imaginary axis, positive at a Hopf point and negative
+/// at a neutral saddle (from the even and odd parts of `p(i omega) = 0` with `w^2`
+/// eliminated).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// omega^2 = (-c5 + c1*c4) / (-c3 + c1*c2)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s

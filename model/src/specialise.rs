@@ -54,6 +54,13 @@ pub fn parametric() -> &'static Derivation {
     P.get_or_init(Derivation::parametric)
 }
 
+/// The characteristic coefficients `c1..c5` of J5 at the trim of the parametric derivation
+/// ([`crate::derivation::hopf::characteristic_coefficients`]), in the trim symbols; computed once.
+pub fn parametric_characteristic() -> &'static [Poly; 5] {
+    static C: OnceLock<[Poly; 5]> = OnceLock::new();
+    C.get_or_init(|| crate::derivation::hopf::characteristic_coefficients(&parametric().jacobian))
+}
+
 /// A polynomial in `x` alone as a dense univariate polynomial. Panics if another symbol occurs
 /// (the specialised derivation leaves only P0 by construction).
 pub fn univariate(p: &Poly, x: Sym) -> UPoly {

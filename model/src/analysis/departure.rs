@@ -8,20 +8,17 @@
 //! [`crate::derivation::hopf::orlando`]) tells them apart.
 
 use super::{
-    aileron_of_root, exact_f64, in_aileron, specialisation, strip, univariate, CriterionPolys,
-    InAileron, JumpPoint,
+    aileron_of_root, exact_f64, in_aileron, parametric_characteristic, specialisation, strip,
+    univariate, CriterionPolys, InAileron, JumpPoint,
 };
 use crate::aircraft::Aircraft;
 use crate::algebra::{Poly, Sym, Q};
 use crate::derivation::eliminate_aileron;
-use crate::derivation::hopf::{
-    characteristic_coefficients, cleared_coefficients, hopf_at, orlando, Orlando,
-};
+use crate::derivation::hopf::{cleared_coefficients, hopf_at, orlando, Orlando};
 use crate::equations::symbols;
 use crate::roots::{positive_roots, real_roots, UPoly};
 use nalgebra::{Complex, Matrix5, Vector5};
 use serde::Serialize;
-use std::sync::OnceLock;
 
 /// A Hopf point of the unconstrained roll: a trim where a complex pair of J5 crosses the
 /// imaginary axis.
@@ -79,12 +76,6 @@ pub struct FirstDeparture {
     /// For a jump: the stable equilibria it can land on (empty: divergence).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lands_at: Option<Vec<Landing>>,
-}
-
-/// The parametric characteristic coefficients `c1..c5` of J5 at the trim (trim symbols).
-pub fn parametric_characteristic() -> &'static [Poly; 5] {
-    static C: OnceLock<[Poly; 5]> = OnceLock::new();
-    C.get_or_init(|| characteristic_coefficients(&super::parametric().jacobian))
 }
 
 /// The Hopf part of the closed form specialised to one aircraft.

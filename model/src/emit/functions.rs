@@ -5,6 +5,7 @@
 //! that det K costs one trim, one reciprocal of d and a 2x2 determinant.
 
 use super::expr::{Dag, Id};
+use super::formulas::{block, Formula};
 use super::linear::merge_like_terms;
 use crate::aircraft::Param;
 use crate::algebra::{Matrix, Poly, Sym, Q};
@@ -509,9 +510,32 @@ fn lines(v: &[&str]) -> Vec<String> {
     v.iter().map(|s| s.to_string()).collect()
 }
 
+/// K0, g, h and d of Eqs 16, 22 and 27-31, the quantities det K is built from.
+fn stiffness_formulas(par: &Derivation) -> [(&'static str, Formula<'_>); 4] {
+    [
+        (
+            "K0",
+            Formula::Matrix(par.k0.iter().map(|r| r.iter().collect()).collect()),
+        ),
+        ("g", Formula::Vector(par.g.iter().collect())),
+        ("h", Formula::Vector(par.h.iter().collect())),
+        ("d", Formula::Poly(&par.d)),
+    ]
+}
+
+/// Prose lines followed by the block of formulas they name.
+fn with_formulas(v: &[&str], items: &[(&str, Formula)]) -> Vec<String> {
+    let mut out = lines(v);
+    out.extend(block(items));
+    out
+}
+
 /// All generated functions for a derivation (parametric when `takes_derivatives`).
 pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
     let s = symbols();
+    // The documented formulas are the parametric derivation's (the same polynomials as `d`'s
+    // before the data are folded in).
+    let par = crate::specialise::parametric();
     let t = takes_derivatives;
     let mut out = Vec::new();
     let trim_args = vec![P0, DE, DR];
@@ -534,17 +558,24 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         }
         out.push(c.finish(
             "trim",
-            lines(&[
-                "Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`",
-                "for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw",
-                "equation), and the aileron from the roll equation, a quadratic in delta_a",
-                "`g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the",
-                "trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),",
-                "element 1 the other root; both by the cancellation-free quadratic formula. NaN where",
-                "the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw",
-                "(a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the",
-                "divergence roll rates). The other functions of `p0` use element 0.",
-            ]),
+            with_formulas(
+                &[
+                    "Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = [alpha0, beta0, Q0, R0]` solves",
+                    "`A x0 + b = 0` (Cramer's rule, one division by det A), affine in delta_a (aileron yaw",
+                    "`n_delta_a` enters b); the aileron then solves the roll equation `p_dot = 0` along it,",
+                    "a quadratic `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element",
+                    "0 is the trim that continues the trim without aileron yaw (the root that tends to",
+                    "`-g0/g1`), element 1 the other root; both by the cancellation-free quadratic formula.",
+                    "NaN where the two trims of `p0` are complex; element 1 is infinite or NaN without",
+                    "aileron yaw (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0",
+                    "(the divergence roll rates). The other functions of `p0` use element 0.",
+                ],
+                &[
+                    ("A", Formula::matrix(&par.a)),
+                    ("b", Formula::Vector(par.a_rhs.iter().collect())),
+                    ("p_dot", Formula::Poly(&par.roll_at_trim)),
+                ],
+            ),
             t,
             trim_args.clone(),
             outputs,
@@ -574,13 +605,21 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         ];
         out.push(c.finish(
             "zero_sideslip_trim",
-            lines(&[
-                "Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the",
-                "rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the",
-                "rudder from the roll and yaw equations together (with aileron yaw and roll due to",
-                "rudder both controls enter both; the rudder is the schedule of the aileron-rudder",
-                "interconnect, Fig. 9). Angles in rad, rates in rad/s.",
-            ]),
+            with_formulas(
+                &[
+                    "Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the",
+                    "rudder freed; `[alpha0, Q0, R0]` solves `A1 x + b1 = 0` (the alpha, beta and q",
+                    "equations), the aileron and the rudder the roll and yaw equations together (with",
+                    "aileron yaw and roll due to rudder both controls enter both; the rudder is the",
+                    "schedule of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.",
+                ],
+                &[
+                    ("A1", Formula::matrix(&par.zs_a)),
+                    ("b1", Formula::Vector(par.zs_rhs.iter().collect())),
+                    ("delta_a", Formula::Ratio(&par.zs_delta_a)),
+                    ("delta_r", Formula::Ratio(&par.zs_delta_r)),
+                ],
+            ),
             t,
             args,
             outputs,
@@ -621,10 +660,14 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         }
         out.push(c.finish(
             "jacobian5",
-            lines(&[
-                "The 5x5 Jacobian of the PSS model (Appendix A.2) at the state",
-                "x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s.",
-            ]),
+            with_formulas(
+                &[
+                    "The 5x5 Jacobian of the PSS model (Appendix A.2) at the state",
+                    "x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s;",
+                    "below with `(alpha0, beta0, P0, Q0, R0) = (alpha, beta, p, q, r)`.",
+                ],
+                &[("J5", Formula::matrix(&par.jacobian))],
+            ),
             t,
             args,
             outputs,
@@ -638,10 +681,13 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         let dd = c.poly(&d.d);
         out.push(c.finish(
             "residual_denominator",
-            lines(&[
-                "The static-residual denominator (Eq. 22) at the trim of `p0`:",
-                "`d = l_p + l_r alpha0 - E Q0 alpha0 - E R0 beta0`, 1/s. det K has poles where d = 0 (Fig. 8).",
-            ]),
+            with_formulas(
+                &[
+                    "The static-residual denominator d (Eq. 22) at the trim of `p0`, 1/s. det K has",
+                    "poles where d = 0 (Fig. 8).",
+                ],
+                &[("d", Formula::Poly(&par.d))],
+            ),
             t,
             trim_args.clone(),
             vec![(String::new(), dd)],
@@ -656,11 +702,15 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         let outputs = k.iter().flatten().map(|id| (String::new(), *id)).collect();
         out.push(c.finish(
             "stiffness",
-            lines(&[
-                "The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of `p0`:",
-                "`K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in Eqs 13-14,",
-                "g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual (Eqs 22-25). 1/s^2.",
-            ]),
+            with_formulas(
+                &[
+                    "The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of",
+                    "`p0`: `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in",
+                    "Eqs 13-14, g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual",
+                    "(Eqs 22-25). 1/s^2.",
+                ],
+                &stiffness_formulas(par),
+            ),
             t,
             trim_args.clone(),
             outputs,
@@ -676,12 +726,16 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         let det = c.det_k_one_division(d, &d.a, &d.a_rhs, &trims);
         out.push(c.finish(
             "det_k",
-            lines(&[
-                "The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the",
-                "saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.",
-                "Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared",
-                "from g, h and d, on the trim branch of [`trim`].",
-            ]),
+            with_formulas(
+                &[
+                    "The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the",
+                    "saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.",
+                    "Evaluated as `det K0 - h^T adj(K0) g / d` (the matrix determinant lemma on",
+                    "`K = K0 - g h^T / d`) with the trim's denominator det A cleared from g, h and d, on",
+                    "the trim branch of [`trim`].",
+                ],
+                &stiffness_formulas(par),
+            ),
             t,
             trim_args.clone(),
             vec![(String::new(), det)],
@@ -716,7 +770,8 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
             "zero_sideslip_det_k",
             lines(&[
                 "det K (Eq. 27) at the zero-sideslip trim of `p0` (section V.D, Fig. 11), 1/s^4: its",
-                "zeros mark the departure (transcritical point) of the zero-sideslip roll.",
+                "zeros mark the departure (transcritical point) of the zero-sideslip roll. K0, g, h",
+                "and d are those of [`det_k`] with `beta0 = 0`.",
             ]),
             t,
             args,
@@ -734,10 +789,17 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
             .collect();
         out.push(c.finish(
             "divergence_biquadratic",
-            lines(&[
-                "Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive",
-                "roots are the pitch-yaw divergence roll rates of Table 1.",
-            ]),
+            with_formulas(
+                &[
+                    "Coefficients [c0, c2, c4] of `det A = c4 P0^4 + c2 P0^2 + c0` (Eq. 5); its",
+                    "positive roots are the pitch-yaw divergence roll rates of Table 1.",
+                ],
+                &[
+                    ("c0", Formula::Poly(&par.biquadratic[0])),
+                    ("c2", Formula::Poly(&par.biquadratic[1])),
+                    ("c4", Formula::Poly(&par.biquadratic[2])),
+                ],
+            ),
             t,
             vec![],
             outs,

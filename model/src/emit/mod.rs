@@ -10,6 +10,7 @@ pub mod c;
 pub mod c_test;
 pub mod cross;
 pub mod expr;
+pub mod formulas;
 pub mod functions;
 pub mod latex;
 pub mod linear;

@@ -11,7 +11,7 @@
 //! `Delta4` and `omega^2` at any trim instead, from which the Hopf points follow by a scalar root
 //! search in P0.
 
-use super::{lines, Ctx, Function, Ret, DE, DR, P0};
+use super::{with_formulas, Ctx, Formula, Function, Ret, DE, DR, P0};
 use crate::derivation::hopf::{characteristic_coefficients, hopf_symbols, orlando};
 use crate::derivation::Derivation;
 
@@ -21,6 +21,8 @@ pub(super) fn functions(d: &Derivation, t: bool) -> Vec<Function> {
     let coeffs = characteristic_coefficients(&d.jacobian);
     let h = hopf_symbols();
     let o = orlando();
+    // The documented c1, c2: the parametric derivation's.
+    let par_coeffs = crate::specialise::parametric_characteristic();
     let at_trim = |c: &mut Ctx| {
         c.trim(d);
         let ids: Vec<_> = coeffs.iter().map(|p| c.poly(p)).collect();
@@ -35,11 +37,18 @@ pub(super) fn functions(d: &Derivation, t: bool) -> Vec<Function> {
         let ids = at_trim(&mut c);
         out.push(c.finish(
             "characteristic_coefficients",
-            lines(&[
-                "Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim",
-                "of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);",
-                "`c5 = -det J5`, the jump criterion. Beyond the paper (issue 10).",
-            ]),
+            with_formulas(
+                &[
+                    "Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim",
+                    "of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);",
+                    "`c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3",
+                    "to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).",
+                ],
+                &[
+                    ("c1", Formula::Poly(&par_coeffs[0])),
+                    ("c2", Formula::Poly(&par_coeffs[1])),
+                ],
+            ),
             t,
             args.clone(),
             ids.into_iter().map(|id| (String::new(), id)).collect(),
@@ -52,12 +61,17 @@ pub(super) fn functions(d: &Derivation, t: bool) -> Vec<Function> {
         let delta4 = c.poly(&o.delta4);
         out.push(c.finish(
             "hurwitz_delta4",
-            lines(&[
-                "The fourth Hurwitz determinant of J5 at the trim of `p0`,",
-                "`Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`, 1/s^10.",
-                "By Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten",
-                "eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle (`+-lambda`).",
-            ]),
+            with_formulas(
+                &[
+                    "The fourth Hurwitz determinant of J5 at the trim of `p0`,",
+                    "`Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`",
+                    "(expanded below) in the coefficients of [`characteristic_coefficients`], 1/s^10. By",
+                    "Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten",
+                    "eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle",
+                    "(`+-lambda`).",
+                ],
+                &[("Delta4", Formula::Poly(&o.delta4))],
+            ),
             t,
             args.clone(),
             vec![(String::new(), delta4)],
@@ -72,12 +86,16 @@ pub(super) fn functions(d: &Derivation, t: bool) -> Vec<Function> {
         let w = c.dag.div(num, den);
         out.push(c.finish(
             "hopf_omega_squared",
-            lines(&[
-                "`omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` at the trim of `p0`, rad^2/s^2: at a zero of",
-                "[`hurwitz_delta4`] the square of the frequency of the pair on the imaginary axis, positive",
-                "at a Hopf point and negative at a neutral saddle (from the even and odd parts of",
-                "`p(i omega) = 0` with `w^2` eliminated).",
-            ]),
+            with_formulas(
+                &[
+                    "`omega^2` at the trim of `p0`, rad^2/s^2, in the coefficients of",
+                    "[`characteristic_coefficients`]: at a zero of [`hurwitz_delta4`] the square of the",
+                    "frequency of the pair on the imaginary axis, positive at a Hopf point and negative",
+                    "at a neutral saddle (from the even and odd parts of `p(i omega) = 0` with `w^2`",
+                    "eliminated).",
+                ],
+                &[("omega^2", Formula::Ratio(&o.omega_sq))],
+            ),
             t,
             args,
             vec![(String::new(), w)],

@@ -1494,6 +1494,7 @@ ROLL_CRITERION_API double rc_hopf_omega_squared(const struct rc_derivatives *k, 
 //   characteristic_coefficients           72      96       1       1       0     170
 //   hurwitz_delta4                        78     106       1       1       0     186
 //   hopf_omega_squared                    74      98       2       1       0     175
+//   hopf_polynomial                       80     156       0       1       0     237
 
 /// The data of Aircraft A (Table A.1), for the parametric functions.
 static const struct rc_derivatives rc_aircraft_a_derivatives = {
@@ -2469,6 +2470,114 @@ ROLL_CRITERION_API double rc_aircraft_a_hopf_omega_squared(double p0, double del
     return t29 / (26.8921 * (t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774)) - t28);
 }
 
+/// The Hopf polynomial `det(A)^10 Delta4` (issue 10) of this aircraft at the trim of `p0`
+/// (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
+/// [`hurwitz_delta4`], so its sign is that of Delta4 wherever det A != 0. Its real roots
+/// are the Hopf points (where [`hopf_omega_squared`] > 0), the neutral saddles (omega^2 < 0)
+/// and the roots of det A (the divergence roll rates).
+///
+/// At delta_r = 0 a polynomial of degree 48 in P0 and 6 in delta_e (154 terms,
+/// `model::specialise::hopf::hopf_polynomial`), evaluated here as the derivation builds
+/// it: the trim numerators N and det A by Cramer's rule, the cleared characteristic
+/// coefficients `C_k = det(A)^k c_k(N / det A)` as polynomials in N and det A (exact folded
+/// constants, no division) and Orlando's `Delta4(C_1, ..., C_5)`. Its expanded form in P0
+/// cancels far beyond double precision near the Hopf points; this form does not.
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 80 add/sub, 156 mul, 0 div, 1 neg, 0 libm (237 operations); straight-line, no branches.
+/// Rust: `roll_criterion::aircraft_a::hopf_polynomial`, bit-identical.
+ROLL_CRITERION_API double rc_aircraft_a_hopf_polynomial(double p0, double delta_e, double delta_r)
+{
+    // exact: 592.9168745384313456
+    const double K0 = 592.9168745384313;
+    // exact: 192.68735381072212
+    const double K1 = 192.68735381072213;
+    // exact: 441.680209183658616
+    const double K2 = 441.68020918365863;
+    // exact: 295.719190228139814032
+    const double K3 = 295.71919022813984;
+    // exact: 1540.544555557906743104
+    const double K4 = 1540.5445555579067;
+    // exact: 272.793225401958092944
+    const double K5 = 272.79322540195807;
+    // exact: 7.58579274212467008
+    const double K6 = 7.58579274212467;
+    // exact: 1649.32301698305663144
+    const double K7 = 1649.3230169830567;
+    // exact: 9.8286324216101328
+    const double K8 = 9.828632421610132;
+    // exact: 1133.0355257374320864
+    const double K9 = 1133.0355257374322;
+    // exact: 35.571390943064448
+    const double K10 = 35.57139094306445;
+    const double t0 = p0 * 0.959;
+    const double t1 = p0 * 0.786;
+    const double t2 = delta_e * 33.268;
+    const double t3 = 0.473352 + t0 * t1;
+    const double t4 = p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
+        50.4558736781056 - p0 * (t0 * 3.716);
+    const double t5 = p0 * t1;
+    const double t6 = p0 * 1.815;
+    const double t7 = t0 * 0.0558;
+    const double t8 = t2 * (t5 - 3.73055264) - delta_r * (t6 + t7);
+    const double t9 = p0 * 0.2608;
+    const double t10 = p0 * t0 - 13.52504;
+    const double t11 = delta_r * (5.458794 - t10) - t2 * (t1 * 3.0076 + t9);
+    const double t12 = t2 * (-11.220010120064 - p0 * t9) - delta_r * (3.0076 * t7 + p0 * t10);
+    const double t13 = delta_r * (-(p0 * t6 + 1.0592979372)) - t2 * (p0 * 3.716 - (3.0076 * (t1 *
+        0.0558) + p0 * t5));
+    const double t14 = t4 * 26.8921;
+    const double t15 = t4 * t4;
+    const double t16 = p0 * p0;
+    const double t17 = t4 * t12;
+    const double t18 = t4 * t8;
+    const double t19 = t15 * (136.03372548 + t16 * 1.753774) + t13 * t13 * 0.676095 + t17 *
+        1.1952702 - t12 * t12 * 0.55413 + t18 * 110.45;
+    const double t20 = t4 * t15;
+    const double t21 = t13 * t15;
+    const double t22 = t12 * t15;
+    const double t23 = t20 * (551.318118699284 + t16 * 42.5345817162) + t21 * (p0 * 1.1462641218) +
+        t13 * (t4 * t13) * 2.247474999;
+    const double t24 = t11 * t15;
+    const double t25 = t23 + t22 * 92.64470614368 - t13 * t17 * (p0 * 1.06282134) - t12 * t17 *
+        2.703267792 - t24 * (p0 * 110.45);
+    const double t26 = t8 * t15;
+    const double t27 = t25 + t13 * (t4 * t11) * 9.5351532 + t26 * 555.8106088 + t12 * t18 * 2.61978;
+    const double t28 = t15 * t15;
+    const double t29 = t13 * t20;
+    const double t30 = t28 * (t16 * (t16 * 0.753774 + 81.79006438806556) + K0) + t29 * (p0 * K1);
+    const double t31 = t12 * t20;
+    const double t32 = t30 + t13 * t21 * (3.165989810886 + t16 * 0.676095) + t31 * (K2 + t16 *
+        1.1952702) - t13 * t22 * (p0 * 3.255846892956);
+    const double t33 = t11 * t20;
+    const double t34 = t32 + t12 * t22 * (-10.6686289158804 - t16 * 0.55413) - t33 * (p0 *
+        207.455111534192) + t13 * t24 * 3.01882950312;
+    const double t35 = t8 * t20;
+    const double t36 = t16 * 83.2543383;
+    const double t37 = t34 - t12 * t24 * (p0 * 10.1144104152) + t35 * (2208.42906185688 + t36) + t13
+        * t26 * (p0 * 12.04752222);
+    const double t38 = t37 + t12 * t26 * 12.634151028;
+    const double t39 = t4 * t28 * (t16 * (t16 * 16.3967704446 - K3) + K4) + t13 * t28 * (p0 * (t16 *
+        1.1462641218 + K5));
+    const double t40 = t39 + t13 * t29 * (K6 + t16 * 0.176325576) + t12 * t28 * (K7 - t16 *
+        81.084922887);
+    const double t41 = t40 + t13 * t31 * (p0 * (K8 - t16 * 1.06282134)) + t12 * t31 *
+        (-0.586988765940636 - t16 * 1.00574595);
+    const double t42 = t41 + t11 * t28 * (p0 * (K9 - t36)) + t13 * t33 * (K10 - t16 * 2.51236902) -
+        t12 * t33 * (p0 * 5.17310107716816);
+    const double t43 = t42 + t8 * t28 * (439.5600225423592 + t16 * 266.561825136888) + t13 * t35 *
+        (p0 * 10.042969019112);
+    const double t44 = t43 + t12 * t35 * (49.73346863652 - t16 * 7.4946304152);
+    const double t45 = t19 * t44;
+    const double t46 = t27 * t38;
+    return t14 * (t19 * (t46 - t45) + t38 * t44 * 2.0 - t14 * (t38 * t38)) + (t27 * (t45 - t46) -
+        t44 * t44);
+}
+
 // Aircraft B: every constant folded exactly, then rounded once to double.
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
@@ -2487,6 +2596,7 @@ ROLL_CRITERION_API double rc_aircraft_a_hopf_omega_squared(double p0, double del
 //   characteristic_coefficients           72      96       1       1       0     170
 //   hurwitz_delta4                        78     106       1       1       0     186
 //   hopf_omega_squared                    74      98       2       1       0     175
+//   hopf_polynomial                       80     156       0       1       0     237
 
 /// The data of Aircraft B (Table A.1), for the parametric functions.
 static const struct rc_derivatives rc_aircraft_b_derivatives = {
@@ -3395,6 +3505,102 @@ ROLL_CRITERION_API double rc_aircraft_b_hopf_omega_squared(double p0, double del
     const double t29 = t27 - (t26 + (t12 * (K2 + t10 * 100.00934789454 - t12 * 2.475293094555232) +
         t25));
     return t29 / (6.507 * (t14 + (41.025041 + t15 + t10 * 9.99 + t16 * 1.679484)) - t28);
+}
+
+/// The Hopf polynomial `det(A)^10 Delta4` (issue 10) of this aircraft at the trim of `p0`
+/// (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
+/// [`hurwitz_delta4`], so its sign is that of Delta4 wherever det A != 0. Its real roots
+/// are the Hopf points (where [`hopf_omega_squared`] > 0), the neutral saddles (omega^2 < 0)
+/// and the roots of det A (the divergence roll rates).
+///
+/// At delta_r = 0 a polynomial of degree 48 in P0 and 6 in delta_e (154 terms,
+/// `model::specialise::hopf::hopf_polynomial`), evaluated here as the derivation builds
+/// it: the trim numerators N and det A by Cramer's rule, the cleared characteristic
+/// coefficients `C_k = det(A)^k c_k(N / det A)` as polynomials in N and det A (exact folded
+/// constants, no division) and Orlando's `Delta4(C_1, ..., C_5)`. Its expanded form in P0
+/// cancels far beyond double precision near the Hopf points; this form does not.
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 80 add/sub, 156 mul, 0 div, 1 neg, 0 libm (237 operations); straight-line, no branches.
+/// Rust: `roll_criterion::aircraft_b::hopf_polynomial`, bit-identical.
+ROLL_CRITERION_API double rc_aircraft_b_hopf_polynomial(double p0, double delta_e, double delta_r)
+{
+    // exact: 84.989869664563152
+    const double K0 = 84.98986966456316;
+    // exact: 545.43606531754788
+    const double K1 = 545.4360653175479;
+    // exact: 10.593548621132256
+    const double K2 = 10.593548621132255;
+    // exact: 173.969821834698816
+    const double K3 = 173.96982183469882;
+    const double t0 = p0 * 0.949;
+    const double t1 = p0 * 0.716;
+    const double t2 = delta_e * 28.37;
+    const double t3 = 0.19129 + t0 * t1;
+    const double t4 = p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708 -
+        p0 * (t0 * 5.67);
+    const double t5 = p0 * t1;
+    const double t6 = p0 * 0.814;
+    const double t7 = t0 * 0.196;
+    const double t8 = t2 * (t5 - 5.71606) - delta_r * (t6 + t7);
+    const double t9 = p0 * 0.235;
+    const double t10 = p0 * t0 - 23.18;
+    const double t11 = delta_r * (1.081806 - t10) - t2 * (t1 * 1.329 + t9);
+    const double t12 = t2 * (-7.59664374 - p0 * t9) - delta_r * (1.329 * t7 + p0 * t10);
+    const double t13 = delta_r * (-(p0 * t6 + 4.755313976)) - t2 * (p0 * 5.67 - (1.329 * (t1 *
+        0.196) + p0 * t5));
+    const double t14 = t4 * 6.507;
+    const double t15 = t4 * t4;
+    const double t16 = p0 * p0;
+    const double t17 = t4 * t12;
+    const double t18 = t4 * t8;
+    const double t19 = t15 * (41.025041 + t16 * 1.679484) + t13 * t13 * 0.689923 + t17 * 0.090216 -
+        t12 * t12 * 0.520532 + t18 * 9.99;
+    const double t20 = t4 * t15;
+    const double t21 = t13 * t15;
+    const double t22 = t12 * t15;
+    const double t23 = t20 * (144.241950533 + t16 * 8.690623672) + t21 * (p0 * 0.085614984) + t13 *
+        (t4 * t13) * 1.21426448 + t22 * 7.363855224;
+    const double t24 = t11 * t15;
+    const double t25 = t8 * t15;
+    const double t26 = t23 - t13 * t17 * (p0 * 0.987969736) - t12 * t17 * 1.217524348 - t24 * (p0 *
+        9.99) + t13 * (t4 * t11) * 16.85186;
+    const double t27 = t26 + t25 * 23.0418 + t12 * t18 * 4.12209;
+    const double t28 = t15 * t15;
+    const double t29 = t13 * t20;
+    const double t30 = t28 * (t16 * (t16 * 0.679484 - 13.408282167444) + 227.986032885638) + t29 *
+        (p0 * 16.3991180106);
+    const double t31 = t12 * t20;
+    const double t32 = t30 + t13 * t21 * (4.338828467857 + t16 * 0.689923) + t31 * (17.555232456144
+        + t16 * 0.090216);
+    const double t33 = t11 * t20;
+    const double t34 = t32 - t13 * t22 * (p0 * 1.5066538474) + t12 * t22 * (-12.847684415688 - t16 *
+        0.520532) - t33 * (p0 * 7.67388312);
+    const double t35 = t8 * t20;
+    const double t36 = t16 * 6.78804516;
+    const double t37 = t34 + t13 * t24 * 7.26315166 - t12 * t24 * (p0 * 16.18802176) + t35 *
+        (245.87545383 + t36);
+    const double t38 = t37 + t13 * t25 * (p0 * 20.76372341) + t12 * t25 * 8.83363887;
+    const double t39 = t4 * t28 * (t16 * (t16 * 2.672410572 - K0) + K1) + t13 * t28 * (p0 * (t16 *
+        0.085614984 + K2));
+    const double t40 = t39 + t13 * t29 * (5.24109923903202 + t16 * 0.162131905) + t12 * t28 * (K3 -
+        t16 * 6.714609336);
+    const double t41 = t40 + t13 * t31 * (p0 * (15.720444861287776 - t16 * 0.987969736)) + t12 * t31
+        * (-2.475293094555232 - t16 * 0.423713048);
+    const double t42 = t41 + t11 * t28 * (p0 * (164.88325852848 - t36)) + t13 * t33 * (96.3262428716
+        - t16 * 3.91186341);
+    const double t43 = t42 - t12 * t33 * (p0 * 5.72030388496) + t8 * t28 * (39.62510941338 + t16 *
+        11.11251889764);
+    const double t44 = t43 + t13 * t35 * (p0 * 9.15905357189) + t12 * t35 * (100.00934789454 - t16 *
+        12.06593176);
+    const double t45 = t19 * t44;
+    const double t46 = t27 * t38;
+    return t14 * (t19 * (t46 - t45) + t38 * t44 * 2.0 - t14 * (t38 * t38)) + (t27 * (t45 - t46) -
+        t44 * t44);
 }
 
 #ifdef __cplusplus

@@ -7,7 +7,7 @@
 // It prints the number of checks and exits 1 on any failure.
 // `./a.out --bits FILE` reads records "<aircraft index> <hex bits of each column>",
 // columns alpha, beta, delta_e, delta_r, p, p0, q, r,
-// and writes the 164 results of each record as doubles in host byte order: the C half
+// and writes the 165 results of each record as doubles in host byte order: the C half
 // of the workspace's bit-identity check (tests/tests/c_header.rs).
 
 #include "roll_criterion.h"
@@ -254,6 +254,13 @@ static void self_test_aircraft_a(void)
         check("rc_aircraft_a_hopf_omega_squared(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
+        static const double want[1] = {1.577493276490262e26};
+        static const double tol[1] = {66129593039545.48};
+        const double r = rc_aircraft_a_hopf_polynomial(0.5, 0.03490658503988659, 0.0);
+        const double got[1] = {r};
+        check("rc_aircraft_a_hopf_polynomial(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, -0.1255202853445439, 0.0, 0.0, 0.0, 0.0, 0.0};
         static const double tol[10] = {3.008800164957782e-16, 4.218172074699505e-16, 1.418849230758128e-15, 4.01314452057566e-16, 5.346172061855975e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
         const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
@@ -464,6 +471,13 @@ static void self_test_aircraft_a(void)
         check("rc_aircraft_a_hopf_omega_squared(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
+        static const double want[1] = {7.4968151701613135e25};
+        static const double tol[1] = {13103246234276.348};
+        const double r = rc_aircraft_a_hopf_polynomial(1.3, -0.05, 0.01);
+        const double got[1] = {r};
+        check("rc_aircraft_a_hopf_polynomial(1.3, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {0.005590298225498764, -0.01615283065336472, -0.022761054157733485, 0.014597558602929725, -0.15732122985399027, 0.0, 0.0, 0.0, 0.0, 0.0};
         static const double tol[10] = {5.794405382238442e-17, 1.7044486235463446e-16, 2.490128557212413e-16, 1.5728580980853888e-16, 5.497869807764547e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
         const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
@@ -672,6 +686,13 @@ static void self_test_aircraft_a(void)
         const double r = rc_aircraft_a_hopf_omega_squared(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_a_hopf_omega_squared(2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {2.544317957272215e21};
+        static const double tol[1] = {914194377.9458133};
+        const double r = rc_aircraft_a_hopf_polynomial(2.45, 0.0, -0.02);
+        const double got[1] = {r};
+        check("rc_aircraft_a_hopf_polynomial(2.45, 0.0, -0.02)", got, want, tol, 1);
     }
 }
 
@@ -933,6 +954,10 @@ static void outputs_aircraft_a(const double *x, double *o)
         const double r = rc_aircraft_a_hopf_omega_squared(x[5], x[2], x[3]);
         o[163] = r;
     }
+    {
+        const double r = rc_aircraft_a_hopf_polynomial(x[5], x[2], x[3]);
+        o[164] = r;
+    }
 }
 
 /* Every function with the data of Aircraft B, at 3 points. */
@@ -1149,6 +1174,13 @@ static void self_test_aircraft_b(void)
         check("rc_aircraft_b_hopf_omega_squared(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
+        static const double want[1] = {7.850434222707481e26};
+        static const double tol[1] = {625557103490999.6};
+        const double r = rc_aircraft_b_hopf_polynomial(0.5, 0.03490658503988659, 0.0);
+        const double got[1] = {r};
+        check("rc_aircraft_b_hopf_polynomial(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {0.06127401382437423, 0.02319501480715936, 0.11158668362190052, 0.07510999506948327, -0.11654478563509404, 0.0, 0.0, 0.0, 0.0, 0.0};
         static const double tol[10] = {2.063318542631225e-16, 7.809365511357641e-17, 3.8071069720786824e-16, 2.6768577653292643e-16, 3.8008150069470053e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
         const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
@@ -1359,6 +1391,13 @@ static void self_test_aircraft_b(void)
         check("rc_aircraft_b_hopf_omega_squared(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
+        static const double want[1] = {1.6556093987867826e26};
+        static const double tol[1] = {80453920434786.98};
+        const double r = rc_aircraft_b_hopf_polynomial(1.3, -0.05, 0.01);
+        const double got[1] = {r};
+        check("rc_aircraft_b_hopf_polynomial(1.3, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {0.001464739718743919, -0.011099354722233735, -0.025246779983261986, 0.005764085836480414, -0.2078144310521549, 0.0, 0.0, 0.0, 0.0, 0.0};
         static const double tol[10] = {1.2658444826030938e-17, 9.697583401661943e-17, 2.2685602052697726e-16, 5.092934536614279e-17, 6.684234646403062e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
         const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
@@ -1567,6 +1606,13 @@ static void self_test_aircraft_b(void)
         const double r = rc_aircraft_b_hopf_omega_squared(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_b_hopf_omega_squared(2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {4.821887749484026e21};
+        static const double tol[1] = {3377486181.2090454};
+        const double r = rc_aircraft_b_hopf_polynomial(2.45, 0.0, -0.02);
+        const double got[1] = {r};
+        check("rc_aircraft_b_hopf_polynomial(2.45, 0.0, -0.02)", got, want, tol, 1);
     }
 }
 
@@ -1828,15 +1874,19 @@ static void outputs_aircraft_b(const double *x, double *o)
         const double r = rc_aircraft_b_hopf_omega_squared(x[5], x[2], x[3]);
         o[163] = r;
     }
+    {
+        const double r = rc_aircraft_b_hopf_polynomial(x[5], x[2], x[3]);
+        o[164] = r;
+    }
 }
 
-/* The --bits mode: one record per line, 8 columns, 164 outputs. */
+/* The --bits mode: one record per line, 8 columns, 165 outputs. */
 static int bits(const char *path)
 {
     FILE *in = fopen(path, "r");
     unsigned aircraft;
     double x[8];
-    double o[164];
+    double o[165];
     if (!in) {
         perror(path);
         return 2;

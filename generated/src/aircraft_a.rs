@@ -19,6 +19,7 @@
 //   characteristic_coefficients           72      96       1       1       0     170
 //   hurwitz_delta4                        78     106       1       1       0     186
 //   hopf_omega_squared                    74      98       2       1       0     175
+//   hopf_polynomial                       80     156       0       1       0     237
 
 //! The criterion for Aircraft A of Table A.1: every constant folded exactly, then rounded once to f64.
 use super::{Trim, ZeroSideslipTrim};
@@ -990,4 +991,113 @@ pub fn hopf_omega_squared(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t29 = t27
         - (t26 + (t12 * (K7 + t10 * 49.73346863652 - t12 * 0.586988765940636) + t25));
     t29 / (26.8921 * (t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774)) - t28)
+}
+#[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
+/// The Hopf polynomial `det(A)^10 Delta4` (issue 10) of this aircraft at the trim of `p0`
+/// (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
+/// [`hurwitz_delta4`], so its sign is that of Delta4 wherever det A != 0. Its real roots
+/// are the Hopf points (where [`hopf_omega_squared`] > 0), the neutral saddles (omega^2 < 0)
+/// and the roots of det A (the divergence roll rates).
+///
+/// At delta_r = 0 a polynomial of degree 48 in P0 and 6 in delta_e (154 terms,
+/// `model::specialise::hopf::hopf_polynomial`), evaluated here as the derivation builds
+/// it: the trim numerators N and det A by Cramer's rule, the cleared characteristic
+/// coefficients `C_k = det(A)^k c_k(N / det A)` as polynomials in N and det A (exact folded
+/// constants, no division) and Orlando's `Delta4(C_1, ..., C_5)`. Its expanded form in P0
+/// cancels far beyond double precision near the Hopf points; this form does not.
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 80 add/sub, 156 mul, 0 div, 1 neg, 0 libm (237 operations); straight-line, no branches.
+#[must_use]
+#[inline]
+pub fn hopf_polynomial(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
+    /// exact: 592.9168745384313456
+    const K0: f64 = 592.9168745384313;
+    /// exact: 192.68735381072212
+    const K1: f64 = 192.68735381072213;
+    /// exact: 441.680209183658616
+    const K2: f64 = 441.68020918365863;
+    /// exact: 295.719190228139814032
+    const K3: f64 = 295.71919022813984;
+    /// exact: 1540.544555557906743104
+    const K4: f64 = 1540.5445555579067;
+    /// exact: 272.793225401958092944
+    const K5: f64 = 272.79322540195807;
+    /// exact: 7.58579274212467008
+    const K6: f64 = 7.58579274212467;
+    /// exact: 1649.32301698305663144
+    const K7: f64 = 1649.3230169830567;
+    /// exact: 9.8286324216101328
+    const K8: f64 = 9.828632421610132;
+    /// exact: 1133.0355257374320864
+    const K9: f64 = 1133.0355257374322;
+    /// exact: 35.571390943064448
+    const K10: f64 = 35.57139094306445;
+    let t0 = p0 * 0.959;
+    let t1 = p0 * 0.786;
+    let t2 = delta_e * 33.268;
+    let t3 = 0.473352 + t0 * t1;
+    let t4 = p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076
+        + 50.4558736781056 - p0 * (t0 * 3.716);
+    let t5 = p0 * t1;
+    let t6 = p0 * 1.815;
+    let t7 = t0 * 0.0558;
+    let t8 = t2 * (t5 - 3.73055264) - delta_r * (t6 + t7);
+    let t9 = p0 * 0.2608;
+    let t10 = p0 * t0 - 13.52504;
+    let t11 = delta_r * (5.458794 - t10) - t2 * (t1 * 3.0076 + t9);
+    let t12 = t2 * (-11.220010120064 - p0 * t9) - delta_r * (3.0076 * t7 + p0 * t10);
+    let t13 = delta_r * (-(p0 * t6 + 1.0592979372))
+        - t2 * (p0 * 3.716 - (3.0076 * (t1 * 0.0558) + p0 * t5));
+    let t14 = t4 * 26.8921;
+    let t15 = t4 * t4;
+    let t16 = p0 * p0;
+    let t17 = t4 * t12;
+    let t18 = t4 * t8;
+    let t19 = t15 * (136.03372548 + t16 * 1.753774) + t13 * t13 * 0.676095
+        + t17 * 1.1952702 - t12 * t12 * 0.55413 + t18 * 110.45;
+    let t20 = t4 * t15;
+    let t21 = t13 * t15;
+    let t22 = t12 * t15;
+    let t23 = t20 * (551.318118699284 + t16 * 42.5345817162) + t21 * (p0 * 1.1462641218)
+        + t13 * (t4 * t13) * 2.247474999;
+    let t24 = t11 * t15;
+    let t25 = t23 + t22 * 92.64470614368 - t13 * t17 * (p0 * 1.06282134)
+        - t12 * t17 * 2.703267792 - t24 * (p0 * 110.45);
+    let t26 = t8 * t15;
+    let t27 = t25 + t13 * (t4 * t11) * 9.5351532 + t26 * 555.8106088
+        + t12 * t18 * 2.61978;
+    let t28 = t15 * t15;
+    let t29 = t13 * t20;
+    let t30 = t28 * (t16 * (t16 * 0.753774 + 81.79006438806556) + K0) + t29 * (p0 * K1);
+    let t31 = t12 * t20;
+    let t32 = t30 + t13 * t21 * (3.165989810886 + t16 * 0.676095)
+        + t31 * (K2 + t16 * 1.1952702) - t13 * t22 * (p0 * 3.255846892956);
+    let t33 = t11 * t20;
+    let t34 = t32 + t12 * t22 * (-10.6686289158804 - t16 * 0.55413)
+        - t33 * (p0 * 207.455111534192) + t13 * t24 * 3.01882950312;
+    let t35 = t8 * t20;
+    let t36 = t16 * 83.2543383;
+    let t37 = t34 - t12 * t24 * (p0 * 10.1144104152) + t35 * (2208.42906185688 + t36)
+        + t13 * t26 * (p0 * 12.04752222);
+    let t38 = t37 + t12 * t26 * 12.634151028;
+    let t39 = t4 * t28 * (t16 * (t16 * 16.3967704446 - K3) + K4)
+        + t13 * t28 * (p0 * (t16 * 1.1462641218 + K5));
+    let t40 = t39 + t13 * t29 * (K6 + t16 * 0.176325576)
+        + t12 * t28 * (K7 - t16 * 81.084922887);
+    let t41 = t40 + t13 * t31 * (p0 * (K8 - t16 * 1.06282134))
+        + t12 * t31 * (-0.586988765940636 - t16 * 1.00574595);
+    let t42 = t41 + t11 * t28 * (p0 * (K9 - t36)) + t13 * t33 * (K10 - t16 * 2.51236902)
+        - t12 * t33 * (p0 * 5.17310107716816);
+    let t43 = t42 + t8 * t28 * (439.5600225423592 + t16 * 266.561825136888)
+        + t13 * t35 * (p0 * 10.042969019112);
+    let t44 = t43 + t12 * t35 * (49.73346863652 - t16 * 7.4946304152);
+    let t45 = t19 * t44;
+    let t46 = t27 * t38;
+    t14 * (t19 * (t46 - t45) + t38 * t44 * 2.0 - t14 * (t38 * t38))
+        + (t27 * (t45 - t46) - t44 * t44)
 }

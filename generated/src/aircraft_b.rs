@@ -19,6 +19,7 @@
 //   characteristic_coefficients           72      96       1       1       0     170
 //   hurwitz_delta4                        78     106       1       1       0     186
 //   hopf_omega_squared                    74      98       2       1       0     175
+//   hopf_polynomial                       80     156       0       1       0     237
 
 //! The criterion for Aircraft B of Table A.1: every constant folded exactly, then rounded once to f64.
 use super::{Trim, ZeroSideslipTrim};
@@ -922,4 +923,100 @@ pub fn hopf_omega_squared(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t29 = t27
         - (t26 + (t12 * (K2 + t10 * 100.00934789454 - t12 * 2.475293094555232) + t25));
     t29 / (6.507 * (t14 + (41.025041 + t15 + t10 * 9.99 + t16 * 1.679484)) - t28)
+}
+#[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
+/// The Hopf polynomial `det(A)^10 Delta4` (issue 10) of this aircraft at the trim of `p0`
+/// (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
+/// [`hurwitz_delta4`], so its sign is that of Delta4 wherever det A != 0. Its real roots
+/// are the Hopf points (where [`hopf_omega_squared`] > 0), the neutral saddles (omega^2 < 0)
+/// and the roots of det A (the divergence roll rates).
+///
+/// At delta_r = 0 a polynomial of degree 48 in P0 and 6 in delta_e (154 terms,
+/// `model::specialise::hopf::hopf_polynomial`), evaluated here as the derivation builds
+/// it: the trim numerators N and det A by Cramer's rule, the cleared characteristic
+/// coefficients `C_k = det(A)^k c_k(N / det A)` as polynomials in N and det A (exact folded
+/// constants, no division) and Orlando's `Delta4(C_1, ..., C_5)`. Its expanded form in P0
+/// cancels far beyond double precision near the Hopf points; this form does not.
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 80 add/sub, 156 mul, 0 div, 1 neg, 0 libm (237 operations); straight-line, no branches.
+#[must_use]
+#[inline]
+pub fn hopf_polynomial(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
+    /// exact: 84.989869664563152
+    const K0: f64 = 84.98986966456316;
+    /// exact: 545.43606531754788
+    const K1: f64 = 545.4360653175479;
+    /// exact: 10.593548621132256
+    const K2: f64 = 10.593548621132255;
+    /// exact: 173.969821834698816
+    const K3: f64 = 173.96982183469882;
+    let t0 = p0 * 0.949;
+    let t1 = p0 * 0.716;
+    let t2 = delta_e * 28.37;
+    let t3 = 0.19129 + t0 * t1;
+    let t4 = p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708
+        - p0 * (t0 * 5.67);
+    let t5 = p0 * t1;
+    let t6 = p0 * 0.814;
+    let t7 = t0 * 0.196;
+    let t8 = t2 * (t5 - 5.71606) - delta_r * (t6 + t7);
+    let t9 = p0 * 0.235;
+    let t10 = p0 * t0 - 23.18;
+    let t11 = delta_r * (1.081806 - t10) - t2 * (t1 * 1.329 + t9);
+    let t12 = t2 * (-7.59664374 - p0 * t9) - delta_r * (1.329 * t7 + p0 * t10);
+    let t13 = delta_r * (-(p0 * t6 + 4.755313976))
+        - t2 * (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t5));
+    let t14 = t4 * 6.507;
+    let t15 = t4 * t4;
+    let t16 = p0 * p0;
+    let t17 = t4 * t12;
+    let t18 = t4 * t8;
+    let t19 = t15 * (41.025041 + t16 * 1.679484) + t13 * t13 * 0.689923 + t17 * 0.090216
+        - t12 * t12 * 0.520532 + t18 * 9.99;
+    let t20 = t4 * t15;
+    let t21 = t13 * t15;
+    let t22 = t12 * t15;
+    let t23 = t20 * (144.241950533 + t16 * 8.690623672) + t21 * (p0 * 0.085614984)
+        + t13 * (t4 * t13) * 1.21426448 + t22 * 7.363855224;
+    let t24 = t11 * t15;
+    let t25 = t8 * t15;
+    let t26 = t23 - t13 * t17 * (p0 * 0.987969736) - t12 * t17 * 1.217524348
+        - t24 * (p0 * 9.99) + t13 * (t4 * t11) * 16.85186;
+    let t27 = t26 + t25 * 23.0418 + t12 * t18 * 4.12209;
+    let t28 = t15 * t15;
+    let t29 = t13 * t20;
+    let t30 = t28 * (t16 * (t16 * 0.679484 - 13.408282167444) + 227.986032885638)
+        + t29 * (p0 * 16.3991180106);
+    let t31 = t12 * t20;
+    let t32 = t30 + t13 * t21 * (4.338828467857 + t16 * 0.689923)
+        + t31 * (17.555232456144 + t16 * 0.090216);
+    let t33 = t11 * t20;
+    let t34 = t32 - t13 * t22 * (p0 * 1.5066538474)
+        + t12 * t22 * (-12.847684415688 - t16 * 0.520532) - t33 * (p0 * 7.67388312);
+    let t35 = t8 * t20;
+    let t36 = t16 * 6.78804516;
+    let t37 = t34 + t13 * t24 * 7.26315166 - t12 * t24 * (p0 * 16.18802176)
+        + t35 * (245.87545383 + t36);
+    let t38 = t37 + t13 * t25 * (p0 * 20.76372341) + t12 * t25 * 8.83363887;
+    let t39 = t4 * t28 * (t16 * (t16 * 2.672410572 - K0) + K1)
+        + t13 * t28 * (p0 * (t16 * 0.085614984 + K2));
+    let t40 = t39 + t13 * t29 * (5.24109923903202 + t16 * 0.162131905)
+        + t12 * t28 * (K3 - t16 * 6.714609336);
+    let t41 = t40 + t13 * t31 * (p0 * (15.720444861287776 - t16 * 0.987969736))
+        + t12 * t31 * (-2.475293094555232 - t16 * 0.423713048);
+    let t42 = t41 + t11 * t28 * (p0 * (164.88325852848 - t36))
+        + t13 * t33 * (96.3262428716 - t16 * 3.91186341);
+    let t43 = t42 - t12 * t33 * (p0 * 5.72030388496)
+        + t8 * t28 * (39.62510941338 + t16 * 11.11251889764);
+    let t44 = t43 + t13 * t35 * (p0 * 9.15905357189)
+        + t12 * t35 * (100.00934789454 - t16 * 12.06593176);
+    let t45 = t19 * t44;
+    let t46 = t27 * t38;
+    t14 * (t19 * (t46 - t45) + t38 * t44 * 2.0 - t14 * (t38 * t38))
+        + (t27 * (t45 - t46) - t44 * t44)
 }

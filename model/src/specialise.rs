@@ -24,6 +24,8 @@ use num_rational::BigRational;
 use num_traits::Zero;
 use std::sync::OnceLock;
 
+pub mod hopf;
+
 /// The symbol values of an aircraft's data (every [`Param`], exact), without any control.
 pub fn aircraft_values(aircraft: &Aircraft) -> Vec<(Sym, Q)> {
     let s = symbols();
@@ -68,6 +70,17 @@ pub fn univariate(p: &Poly, x: Sym) -> UPoly {
         .univariate_coeffs(x)
         .expect("specialised criterion polynomials are univariate in P0");
     UPoly::new(c.iter().map(Q::to_big).collect())
+}
+
+/// A dense univariate polynomial in P0 as a [`Poly`] (the inverse of [`univariate`] in P0).
+pub fn from_univariate(u: &UPoly) -> Poly {
+    let s = symbols();
+    Poly::from_terms(u.coeffs().iter().enumerate().map(|(i, c)| {
+        (
+            crate::algebra::Mono::var(s.p0, i as u32),
+            Q::from_big(c.clone()),
+        )
+    }))
 }
 
 /// Cancels every common factor of `num / den` exactly; returns the reduced pair.

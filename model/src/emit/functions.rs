@@ -13,6 +13,7 @@ use crate::derivation::{clear_trim, Clearing, Derivation, TRIM_DEGREE};
 use crate::equations::symbols;
 
 mod hopf;
+pub(crate) use hopf::polynomial as hopf_polynomial;
 
 /// How a generated function returns its outputs.
 #[derive(Clone, Debug, PartialEq)]

@@ -66,7 +66,11 @@ pub fn parametric_functions() -> Vec<Function> {
 
 /// The functions with an aircraft's data folded in exactly, then rounded once to f64.
 pub fn specialised_functions(ac: &Aircraft) -> Vec<Function> {
-    functions(&Derivation::derive(&aircraft_values(ac)), false)
+    let d = Derivation::derive(&aircraft_values(ac));
+    let mut fs = functions(&d, false);
+    // Only per aircraft: the parametric Hopf polynomial is out of reach (functions/hopf.rs).
+    fs.push(functions::hopf_polynomial(ac, &d));
+    fs
 }
 
 /// Operation counts per function, as the header lines of a generated file.

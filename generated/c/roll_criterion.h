@@ -21,6 +21,8 @@
 //   characteristic_coefficients          190     245       3       1       1     440
 //   hurwitz_delta4                       196     255       3       0       1     455
 //   hopf_omega_squared                   192     247       4       0       1     444
+//   Prepared::new                         18      51       0       0       0      69
+//   Prepared::det_k                       49      80       2       0       2     133
 //
 // Use: `#include "roll_criterion.h"` and link with -lm (for sqrt and copysign). Every
 // function is straight-line double arithmetic: no allocation, no recursion, no loops or
@@ -36,6 +38,7 @@
 #define ROLL_CRITERION_H
 
 #include <math.h>
+#include <stddef.h>
 
 #ifndef ROLL_CRITERION_API
 #define ROLL_CRITERION_API static inline
@@ -1474,6 +1477,188 @@ ROLL_CRITERION_API double rc_hopf_omega_squared(const struct rc_derivatives *k, 
     const double t104 = t69 + (k->e * (t55 + t32 * (p0 * (k->c * k->n_p) - k->m_alpha * t30 - t32 *
         (k->c * t54))) + t68) + t103;
     return (t101 + (t100 + k->m_alpha * t99) + t102) / t104;
+}
+
+/// det K (Eq. 27) of one aircraft and control setting, prepared for many roll rates (issue 11):
+/// `Prepared::new(k, delta_e, delta_r)` computes once everything of `det_k` that does not
+/// depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch
+/// of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is
+/// the roll-rate-dependent part of one straight-line program (model/src/emit/stage.rs), with
+/// 41 fields; per call 133 operations against 69 for `Prepared::new`.
+struct rc_Prepared {
+    double f0;
+    double f1;
+    double f2;
+    double f3;
+    double f4;
+    double f5;
+    double f6;
+    double f7;
+    double f8;
+    double f9;
+    double f10;
+    double f11;
+    double f12;
+    double f13;
+    double f14;
+    double f15;
+    double f16;
+    double f17;
+    double f18;
+    double f19;
+    double f20;
+    double f21;
+    double f22;
+    double f23;
+    double f24;
+    double f25;
+    double f26;
+    double f27;
+    double f28;
+    double f29;
+    double f30;
+    double f31;
+    double f32;
+    double f33;
+    double f34;
+    double f35;
+    double f36;
+    double f37;
+    double f38;
+    double f39;
+    double f40;
+};
+
+/// Prepares det K for an aircraft `k` and the controls: computes once everything of
+/// [`det_k`](Self::det_k) that does not depend on the roll rate (the coefficients of the
+/// polynomials in P0 of the trim numerators, det A, the trim condition and K0, g, h, d).
+///
+/// Arguments:
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 18 add/sub, 51 mul, 0 div, 0 neg, 0 libm (69 operations); straight-line, no branches.
+/// Rust: `roll_criterion::Prepared::new`, bit-identical.
+ROLL_CRITERION_API struct rc_Prepared rc_prepared_new(const struct rc_derivatives *k,
+    double delta_e, double delta_r)
+{
+    const double t0 = k->n_beta + k->y_beta * k->n_r;
+    const double t1 = k->m_delta_e * (delta_e * t0);
+    const double t2 = k->m_q + k->c * k->y_beta;
+    const double t3 = delta_e * (k->d * k->m_delta_e);
+    const double t4 = t3 + k->m_q * k->n_p;
+    const double t5 = k->z_alpha * t4;
+    const double t6 = delta_e * (k->m_delta_e * k->n_r);
+    const double t7 = k->m_alpha * k->n_p;
+    const double t8 = k->z_alpha * k->m_q;
+    const double t9 = k->m_alpha - t8;
+    const double t10 = k->n_delta_r * (delta_r * t9);
+    const double t11 = k->n_delta_a * t9;
+    const double t12 = k->m_alpha + k->y_beta * (k->c * k->z_alpha);
+    const double t13 = k->d * k->z_alpha;
+    struct rc_Prepared result;
+    result.f0 = k->c;
+    result.f1 = k->d;
+    result.f2 = k->e;
+    result.f3 = k->l_p;
+    result.f4 = k->l_r;
+    result.f5 = k->l_beta;
+    result.f6 = k->l_delta_a;
+    result.f7 = k->m_q;
+    result.f8 = k->n_p;
+    result.f9 = k->n_r;
+    result.f10 = t0;
+    result.f11 = t1;
+    result.f12 = t2;
+    result.f13 = k->n_delta_r * (delta_r * t2);
+    result.f14 = k->n_p * t2 + t3;
+    result.f15 = k->n_delta_a * t2;
+    result.f16 = t4;
+    result.f17 = t7 - t6 - t5;
+    result.f18 = t10;
+    result.f19 = delta_r * (k->c * k->n_delta_r);
+    result.f20 = k->c * k->n_p;
+    result.f21 = t11;
+    result.f22 = k->c * k->n_delta_a;
+    result.f23 = k->n_p * t12 - t6;
+    result.f24 = k->n_delta_r * (delta_r * t12);
+    result.f25 = k->z_alpha * t1;
+    result.f26 = k->n_delta_a * t12;
+    result.f27 = k->y_beta * (t7 - t5) + delta_e * (k->m_delta_e * k->n_beta);
+    result.f28 = delta_r * (k->m_q * k->n_delta_r);
+    result.f29 = k->y_beta * t10;
+    result.f30 = k->m_q * k->n_delta_a;
+    result.f31 = k->y_beta * t11;
+    result.f32 = k->z_alpha * (k->m_q * t0) - k->m_alpha * t0;
+    result.f33 = k->c * (k->y_beta * t13 - k->n_beta) + (k->m_q * k->n_r + k->d * k->m_alpha);
+    result.f34 = k->c * k->d;
+    result.f35 = delta_r * k->l_delta_r;
+    result.f36 = k->e * k->z_alpha;
+    result.f37 = k->l_beta + k->y_beta * k->l_r;
+    result.f38 = k->e * k->y_beta;
+    result.f39 = t8 - k->m_alpha;
+    result.f40 = k->n_r + t13;
+    return result;
+}
+
+/// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4: the value of the free
+/// function `det_k(k, p0, delta_e, delta_r)` on the same trim branch (element 0 of
+/// `trim`, with aileron yaw too), computed from the prepared fields. Not bit-identical to
+/// `det_k` (other operations), equal to it within rounding away from roots and poles.
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+///
+/// Cost after CSE: 49 add/sub, 80 mul, 2 div, 0 neg, 2 libm (133 operations); straight-line, no branches.
+/// Rust: `roll_criterion::Prepared::det_k`, bit-identical.
+ROLL_CRITERION_API double rc_prepared_det_k(const struct rc_Prepared *self, double p0)
+{
+    const double t0 = p0 * (self->f19 + p0 * self->f20);
+    const double t1 = self->f18 + p0 * (self->f17 + t0);
+    const double t2 = p0 * p0;
+    const double t3 = self->f22 * t2;
+    const double t4 = self->f21 + t3;
+    const double t5 = p0 * (self->f24 + p0 * (t0 + self->f23)) - self->f25;
+    const double t6 = p0 * (t3 + self->f26);
+    const double t7 = self->f29 + p0 * (self->f27 - p0 * (self->f28 + p0 * self->f16));
+    const double t8 = self->f31 - t2 * self->f30;
+    const double t9 = self->f32 + t2 * (self->f33 + t2 * self->f34);
+    const double t10 = t9 * t9;
+    const double t11 = t10 * (self->f35 + p0 * self->f3) + self->f4 * (t7 * t9) - self->f2 * (t5 *
+        t7) + self->f5 * (t1 * t9);
+    const double t12 = self->f6 * t10 + self->f4 * (t8 * t9) - self->f2 * (t5 * t8 + t6 * t7) +
+        self->f5 * (t4 * t9);
+    const double t13 = t11 * 2.0 / (t12 + copysign(sqrt(t12 * t12 + self->f2 * (t6 * t8) * t11 *
+        4.0), t12));
+    const double t14 = self->f11 - p0 * (self->f13 + p0 * self->f14) + p0 * self->f15 * t13;
+    const double t15 = t1 - t4 * t13;
+    const double t16 = t5 - t6 * t13;
+    const double t17 = t7 - t8 * t13;
+    const double t18 = self->f0 * t17 + self->f7 * t15 + t14 * (p0 * self->f0);
+    const double t19 = self->f8 * t9 - self->f1 * t16 - t15 * (p0 * self->f1) + self->f9 * t14;
+    const double t20 = p0 * self->f2;
+    const double t21 = self->f39 - self->f0 * t2;
+    const double t22 = p0 * self->f12;
+    const double t23 = p0 * self->f40;
+    const double t24 = self->f10 - self->f1 * t2;
+    const double t25 = (t9 * (p0 * self->f4) + t17 * self->f36 - t16 * t20) * (t19 * t22 - t18 *
+        t24);
+    const double t26 = self->f3 * t10 - self->f2 * (t15 * t17) + self->f4 * (t9 * t14) - self->f2 *
+        (t14 * t16);
+    return t21 * t24 + t22 * t23 - (t25 + (t9 * self->f37 - t17 * t20 - t16 * self->f38) * (t19 *
+        t21 + t18 * t23)) / t26;
+}
+
+/// det K at `n` roll rates: `out[i] = rc_prepared_det_k(self, p0[i])` for i < n (the slice form
+/// of the Rust crate's `Prepared::det_k_into`); `p0` and `out` hold at least n doubles.
+/// No allocation; the loop body is the straight-line det_k.
+ROLL_CRITERION_API void rc_prepared_det_k_into(const struct rc_Prepared *self, const double *p0,
+    double *out, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        out[i] = rc_prepared_det_k(self, p0[i]);
+    }
 }
 
 // Aircraft A: every constant folded exactly, then rounded once to double.

@@ -7,7 +7,7 @@
 // It prints the number of checks and exits 1 on any failure.
 // `./a.out --bits FILE` reads records "<aircraft index> <hex bits of each column>",
 // columns alpha, beta, delta_e, delta_r, p, p0, q, r,
-// and writes the 165 results of each record as doubles in host byte order: the C half
+// and writes the 169 results of each record as doubles in host byte order: the C half
 // of the workspace's bit-identity check (tests/tests/c_header.rs).
 
 #include "roll_criterion.h"
@@ -261,6 +261,13 @@ static void self_test_aircraft_a(void)
         check("rc_aircraft_a_hopf_polynomial(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
+        const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_a_derivatives, 0.03490658503988659, 0.0);
+        static const double want[1] = {50.53787941202994};
+        static const double tol[1] = {2.623319377959465e-13};
+        const double got[1] = {rc_prepared_det_k(&prepared, 0.5)};
+        check("rc_prepared_det_k(&prepared, 0.5) with prepared = rc_prepared_new(&rc_aircraft_a_derivatives, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, -0.1255202853445439, 0.0, 0.0, 0.0, 0.0, 0.0};
         static const double tol[10] = {3.008800164957782e-16, 4.218172074699505e-16, 1.418849230758128e-15, 4.01314452057566e-16, 5.346172061855975e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
         const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
@@ -478,6 +485,13 @@ static void self_test_aircraft_a(void)
         check("rc_aircraft_a_hopf_polynomial(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
+        const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_a_derivatives, -0.05, 0.01);
+        static const double want[1] = {89.39633977289456};
+        static const double tol[1] = {5.939259374373493e-13};
+        const double got[1] = {rc_prepared_det_k(&prepared, 1.3)};
+        check("rc_prepared_det_k(&prepared, 1.3) with prepared = rc_prepared_new(&rc_aircraft_a_derivatives, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {0.005590298225498764, -0.01615283065336472, -0.022761054157733485, 0.014597558602929725, -0.15732122985399027, 0.0, 0.0, 0.0, 0.0, 0.0};
         static const double tol[10] = {5.794405382238442e-17, 1.7044486235463446e-16, 2.490128557212413e-16, 1.5728580980853888e-16, 5.497869807764547e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
         const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
@@ -693,6 +707,13 @@ static void self_test_aircraft_a(void)
         const double r = rc_aircraft_a_hopf_polynomial(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_a_hopf_polynomial(2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
+        const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_a_derivatives, 0.0, -0.02);
+        static const double want[1] = {14.99865028599726};
+        static const double tol[1] = {1.6784198262111796e-13};
+        const double got[1] = {rc_prepared_det_k(&prepared, 2.45)};
+        check("rc_prepared_det_k(&prepared, 2.45) with prepared = rc_prepared_new(&rc_aircraft_a_derivatives, 0.0, -0.02)", got, want, tol, 1);
     }
 }
 
@@ -958,6 +979,19 @@ static void outputs_aircraft_a(const double *x, double *o)
         const double r = rc_aircraft_a_hopf_polynomial(x[5], x[2], x[3]);
         o[164] = r;
     }
+    {
+        const struct rc_Prepared p = rc_prepared_new(k, x[2], x[3]);
+        double in[3];
+        double r[3];
+        in[0] = x[5];
+        in[1] = x[5] * 0.5;
+        in[2] = x[5] + 1.0;
+        rc_prepared_det_k_into(&p, in, r, 3);
+        o[165] = rc_prepared_det_k(&p, x[5]);
+        o[166] = r[0];
+        o[167] = r[1];
+        o[168] = r[2];
+    }
 }
 
 /* Every function with the data of Aircraft B, at 3 points. */
@@ -1181,6 +1215,13 @@ static void self_test_aircraft_b(void)
         check("rc_aircraft_b_hopf_polynomial(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
+        const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_b_derivatives, 0.03490658503988659, 0.0);
+        static const double want[1] = {130.1010215623377};
+        static const double tol[1] = {2.398287054276162e-13};
+        const double got[1] = {rc_prepared_det_k(&prepared, 0.5)};
+        check("rc_prepared_det_k(&prepared, 0.5) with prepared = rc_prepared_new(&rc_aircraft_b_derivatives, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {0.06127401382437423, 0.02319501480715936, 0.11158668362190052, 0.07510999506948327, -0.11654478563509404, 0.0, 0.0, 0.0, 0.0, 0.0};
         static const double tol[10] = {2.063318542631225e-16, 7.809365511357641e-17, 3.8071069720786824e-16, 2.6768577653292643e-16, 3.8008150069470053e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
         const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
@@ -1398,6 +1439,13 @@ static void self_test_aircraft_b(void)
         check("rc_aircraft_b_hopf_polynomial(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
+        const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_b_derivatives, -0.05, 0.01);
+        static const double want[1] = {111.33518544150859};
+        static const double tol[1] = {2.666415930760957e-13};
+        const double got[1] = {rc_prepared_det_k(&prepared, 1.3)};
+        check("rc_prepared_det_k(&prepared, 1.3) with prepared = rc_prepared_new(&rc_aircraft_b_derivatives, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
         static const double want[10] = {0.001464739718743919, -0.011099354722233735, -0.025246779983261986, 0.005764085836480414, -0.2078144310521549, 0.0, 0.0, 0.0, 0.0, 0.0};
         static const double tol[10] = {1.2658444826030938e-17, 9.697583401661943e-17, 2.2685602052697726e-16, 5.092934536614279e-17, 6.684234646403062e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
         const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
@@ -1613,6 +1661,13 @@ static void self_test_aircraft_b(void)
         const double r = rc_aircraft_b_hopf_polynomial(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_b_hopf_polynomial(2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
+        const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_b_derivatives, 0.0, -0.02);
+        static const double want[1] = {31.81436371662072};
+        static const double tol[1] = {1.6454215317222066e-13};
+        const double got[1] = {rc_prepared_det_k(&prepared, 2.45)};
+        check("rc_prepared_det_k(&prepared, 2.45) with prepared = rc_prepared_new(&rc_aircraft_b_derivatives, 0.0, -0.02)", got, want, tol, 1);
     }
 }
 
@@ -1878,15 +1933,28 @@ static void outputs_aircraft_b(const double *x, double *o)
         const double r = rc_aircraft_b_hopf_polynomial(x[5], x[2], x[3]);
         o[164] = r;
     }
+    {
+        const struct rc_Prepared p = rc_prepared_new(k, x[2], x[3]);
+        double in[3];
+        double r[3];
+        in[0] = x[5];
+        in[1] = x[5] * 0.5;
+        in[2] = x[5] + 1.0;
+        rc_prepared_det_k_into(&p, in, r, 3);
+        o[165] = rc_prepared_det_k(&p, x[5]);
+        o[166] = r[0];
+        o[167] = r[1];
+        o[168] = r[2];
+    }
 }
 
-/* The --bits mode: one record per line, 8 columns, 165 outputs. */
+/* The --bits mode: one record per line, 8 columns, 169 outputs. */
 static int bits(const char *path)
 {
     FILE *in = fopen(path, "r");
     unsigned aircraft;
     double x[8];
-    double o[165];
+    double o[169];
     if (!in) {
         perror(path);
         return 2;

@@ -19,6 +19,8 @@
 //   characteristic_coefficients          190     245       3       1       1     440
 //   hurwitz_delta4                       196     255       3       0       1     455
 //   hopf_omega_squared                   192     247       4       0       1     444
+//   Prepared::new                         18      51       0       0       0      69
+//   Prepared::det_k                       49      80       2       0       2     133
 
 //! Closed-form roll-coupling jump criterion (Mahale & Ananthkrishnan, AIAA 2006-6267),
 //! generated from the model equations by exact symbolic derivation.
@@ -679,7 +681,7 @@ pub fn divergence_roll_rates(k: &Derivatives) -> [f64; 2] {
     let t2 = k.c * (k.y_beta * (k.d * k.z_alpha) - k.n_beta)
         + (k.m_q * k.n_r + k.d * k.m_alpha);
     let t3 = k.c * k.d;
-    let t4 = 0.5 * (t2 + libm::copysign(libm::sqrt(t2 * t2 - 4.0 * (t1 * t3)), t2));
+    let t4 = 0.5 * (t2 + libm::sqrt(t2 * t2 - 4.0 * (t1 * t3)).copysign(t2));
     [libm::sqrt(-(t1 / t4)), libm::sqrt(-(t4 / t3))]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
@@ -1499,4 +1501,188 @@ pub fn hopf_omega_squared(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) 
         + (k.e * (t55 + t32 * (p0 * (k.c * k.n_p) - k.m_alpha * t30 - t32 * (k.c * t54)))
             + t68) + t103;
     (t101 + (t100 + k.m_alpha * t99) + t102) / t104
+}
+/// det K (Eq. 27) of one aircraft and control setting, prepared for many roll rates (issue 11):
+/// `Prepared::new(k, delta_e, delta_r)` computes once everything of `det_k` that does not
+/// depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch
+/// of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is
+/// the roll-rate-dependent part of one straight-line program (model/src/emit/stage.rs), with
+/// 41 fields; per call 133 operations against 69 for `Prepared::new`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Prepared {
+    f0: f64,
+    f1: f64,
+    f2: f64,
+    f3: f64,
+    f4: f64,
+    f5: f64,
+    f6: f64,
+    f7: f64,
+    f8: f64,
+    f9: f64,
+    f10: f64,
+    f11: f64,
+    f12: f64,
+    f13: f64,
+    f14: f64,
+    f15: f64,
+    f16: f64,
+    f17: f64,
+    f18: f64,
+    f19: f64,
+    f20: f64,
+    f21: f64,
+    f22: f64,
+    f23: f64,
+    f24: f64,
+    f25: f64,
+    f26: f64,
+    f27: f64,
+    f28: f64,
+    f29: f64,
+    f30: f64,
+    f31: f64,
+    f32: f64,
+    f33: f64,
+    f34: f64,
+    f35: f64,
+    f36: f64,
+    f37: f64,
+    f38: f64,
+    f39: f64,
+    f40: f64,
+}
+impl Prepared {
+    #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
+    /// Prepares det K for an aircraft `k` and the controls: computes once everything of
+    /// [`det_k`](Self::det_k) that does not depend on the roll rate (the coefficients of the
+    /// polynomials in P0 of the trim numerators, det A, the trim condition and K0, g, h, d).
+    ///
+    /// Arguments:
+    /// - `delta_e`: elevator deflection, rad
+    /// - `delta_r`: rudder deflection, rad
+    ///
+    /// Cost after CSE: 18 add/sub, 51 mul, 0 div, 0 neg, 0 libm (69 operations); straight-line, no branches.
+    #[must_use]
+    #[inline]
+    pub fn new(k: &Derivatives, delta_e: f64, delta_r: f64) -> Prepared {
+        let t0 = k.n_beta + k.y_beta * k.n_r;
+        let t1 = k.m_delta_e * (delta_e * t0);
+        let t2 = k.m_q + k.c * k.y_beta;
+        let t3 = delta_e * (k.d * k.m_delta_e);
+        let t4 = t3 + k.m_q * k.n_p;
+        let t5 = k.z_alpha * t4;
+        let t6 = delta_e * (k.m_delta_e * k.n_r);
+        let t7 = k.m_alpha * k.n_p;
+        let t8 = k.z_alpha * k.m_q;
+        let t9 = k.m_alpha - t8;
+        let t10 = k.n_delta_r * (delta_r * t9);
+        let t11 = k.n_delta_a * t9;
+        let t12 = k.m_alpha + k.y_beta * (k.c * k.z_alpha);
+        let t13 = k.d * k.z_alpha;
+        Prepared {
+            f0: k.c,
+            f1: k.d,
+            f2: k.e,
+            f3: k.l_p,
+            f4: k.l_r,
+            f5: k.l_beta,
+            f6: k.l_delta_a,
+            f7: k.m_q,
+            f8: k.n_p,
+            f9: k.n_r,
+            f10: t0,
+            f11: t1,
+            f12: t2,
+            f13: k.n_delta_r * (delta_r * t2),
+            f14: k.n_p * t2 + t3,
+            f15: k.n_delta_a * t2,
+            f16: t4,
+            f17: t7 - t6 - t5,
+            f18: t10,
+            f19: delta_r * (k.c * k.n_delta_r),
+            f20: k.c * k.n_p,
+            f21: t11,
+            f22: k.c * k.n_delta_a,
+            f23: k.n_p * t12 - t6,
+            f24: k.n_delta_r * (delta_r * t12),
+            f25: k.z_alpha * t1,
+            f26: k.n_delta_a * t12,
+            f27: k.y_beta * (t7 - t5) + delta_e * (k.m_delta_e * k.n_beta),
+            f28: delta_r * (k.m_q * k.n_delta_r),
+            f29: k.y_beta * t10,
+            f30: k.m_q * k.n_delta_a,
+            f31: k.y_beta * t11,
+            f32: k.z_alpha * (k.m_q * t0) - k.m_alpha * t0,
+            f33: k.c * (k.y_beta * t13 - k.n_beta) + (k.m_q * k.n_r + k.d * k.m_alpha),
+            f34: k.c * k.d,
+            f35: delta_r * k.l_delta_r,
+            f36: k.e * k.z_alpha,
+            f37: k.l_beta + k.y_beta * k.l_r,
+            f38: k.e * k.y_beta,
+            f39: t8 - k.m_alpha,
+            f40: k.n_r + t13,
+        }
+    }
+    #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
+    /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4: the value of the free
+    /// function `det_k(k, p0, delta_e, delta_r)` on the same trim branch (element 0 of
+    /// `trim`, with aileron yaw too), computed from the prepared fields. Not bit-identical to
+    /// `det_k` (other operations), equal to it within rounding away from roots and poles.
+    ///
+    /// Arguments:
+    /// - `p0`: trim roll rate P0, rad/s
+    ///
+    /// Cost after CSE: 49 add/sub, 80 mul, 2 div, 0 neg, 2 libm (133 operations); straight-line, no branches.
+    #[must_use]
+    #[inline]
+    pub fn det_k(&self, p0: f64) -> f64 {
+        let t0 = p0 * (self.f19 + p0 * self.f20);
+        let t1 = self.f18 + p0 * (self.f17 + t0);
+        let t2 = p0 * p0;
+        let t3 = self.f22 * t2;
+        let t4 = self.f21 + t3;
+        let t5 = p0 * (self.f24 + p0 * (t0 + self.f23)) - self.f25;
+        let t6 = p0 * (t3 + self.f26);
+        let t7 = self.f29 + p0 * (self.f27 - p0 * (self.f28 + p0 * self.f16));
+        let t8 = self.f31 - t2 * self.f30;
+        let t9 = self.f32 + t2 * (self.f33 + t2 * self.f34);
+        let t10 = t9 * t9;
+        let t11 = t10 * (self.f35 + p0 * self.f3) + self.f4 * (t7 * t9)
+            - self.f2 * (t5 * t7) + self.f5 * (t1 * t9);
+        let t12 = self.f6 * t10 + self.f4 * (t8 * t9) - self.f2 * (t5 * t8 + t6 * t7)
+            + self.f5 * (t4 * t9);
+        let t13 = t11 * 2.0
+            / (t12
+                + libm::sqrt(t12 * t12 + self.f2 * (t6 * t8) * t11 * 4.0).copysign(t12));
+        let t14 = self.f11 - p0 * (self.f13 + p0 * self.f14) + p0 * self.f15 * t13;
+        let t15 = t1 - t4 * t13;
+        let t16 = t5 - t6 * t13;
+        let t17 = t7 - t8 * t13;
+        let t18 = self.f0 * t17 + self.f7 * t15 + t14 * (p0 * self.f0);
+        let t19 = self.f8 * t9 - self.f1 * t16 - t15 * (p0 * self.f1) + self.f9 * t14;
+        let t20 = p0 * self.f2;
+        let t21 = self.f39 - self.f0 * t2;
+        let t22 = p0 * self.f12;
+        let t23 = p0 * self.f40;
+        let t24 = self.f10 - self.f1 * t2;
+        let t25 = (t9 * (p0 * self.f4) + t17 * self.f36 - t16 * t20)
+            * (t19 * t22 - t18 * t24);
+        let t26 = self.f3 * t10 - self.f2 * (t15 * t17) + self.f4 * (t9 * t14)
+            - self.f2 * (t14 * t16);
+        t21 * t24 + t22 * t23
+            - (t25
+                + (t9 * self.f37 - t17 * t20 - t16 * self.f38) * (t19 * t21 + t18 * t23))
+                / t26
+    }
+    /// det K at each roll rate of `p0`, written to `out`: element i of `out` is
+    /// `self.det_k(p0[i])` for i below the shorter length; the rest of `out` is not touched.
+    /// No allocation, no panic; the loop body is `det_k`, straight-line.
+    #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
+    #[inline]
+    pub fn det_k_into(&self, p0: &[f64], out: &mut [f64]) {
+        for (o, p) in core::iter::zip(out, p0) {
+            *o = self.det_k(*p);
+        }
+    }
 }

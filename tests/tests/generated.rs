@@ -47,6 +47,26 @@ impl<'ast> Visit<'ast> for StraightLine {
         syn::visit::visit_item_fn(self, f);
     }
 
+    fn visit_impl_item_fn(&mut self, f: &'ast syn::ImplItemFn) {
+        self.fn_name = f.sig.ident.to_string();
+        if self.fn_name == "det_k_into" {
+            // The slice form: one loop over the shorter slice whose body is the straight-line
+            // det_k; exactly this, nothing else.
+            let want: syn::Block = syn::parse_quote!({
+                for (o, p) in core::iter::zip(out, p0) {
+                    *o = self.det_k(*p);
+                }
+            });
+            let text = |b: &syn::Block| quote::ToTokens::to_token_stream(b).to_string();
+            if text(&f.block) != text(&want) {
+                self.violations
+                    .push("det_k_into: not the one-loop slice form".into());
+            }
+            return;
+        }
+        syn::visit::visit_impl_item_fn(self, f);
+    }
+
     fn visit_expr(&mut self, e: &'ast syn::Expr) {
         use syn::Expr::*;
         let bad = match e {
@@ -60,8 +80,10 @@ impl<'ast> Visit<'ast> for StraightLine {
                     Path(p) => quote_path(&p.path),
                     _ => String::new(),
                 };
-                !matches!(path.as_str(), "libm::sqrt" | "libm::copysign")
+                path != "libm::sqrt"
             }
+            // core's f64::copysign, exact and branch-free.
+            MethodCall(m) => m.method != "copysign" || m.args.len() != 1,
             Lit(_) | Paren(_) | Path(_) | Field(_) | Struct(_) | Array(_) | Block(_) => false,
             other => {
                 self.violations

@@ -13,7 +13,9 @@ use crate::derivation::{clear_trim, Clearing, Derivation, TRIM_DEGREE};
 use crate::equations::symbols;
 
 mod hopf;
+mod prepared;
 pub(crate) use hopf::polynomial as hopf_polynomial;
+pub use prepared::{prepared, Prepared};
 
 /// How a generated function returns its outputs.
 #[derive(Clone, Debug, PartialEq)]
@@ -57,6 +59,17 @@ pub struct Function {
     pub outputs: Vec<(String, Id)>,
     /// Return shape.
     pub ret: Ret,
+    /// The type whose `impl` block holds the function (`Some("Prepared")` for `Prepared::new`
+    /// and `Prepared::det_k`), or `None` for a free function. A function whose program reads
+    /// fields `self.fN` takes `&self`.
+    pub owner: Option<&'static str>,
+}
+
+impl Function {
+    /// Whether the function reads the fields of its owner (a method taking `&self`).
+    pub fn takes_self(&self) -> bool {
+        self.dag.inputs().iter().any(|i| i.starts_with("self."))
+    }
 }
 
 /// A struct the functions return: name, doc, fields (name, doc).
@@ -115,6 +128,9 @@ const DR: Arg = Arg {
 struct Ctx {
     dag: Dag,
     bound: Vec<(Sym, Id)>,
+    /// Symbols every polynomial is built as a Horner scheme in first ([`Dag::poly_over`]):
+    /// empty for the greedy scheme; the late symbols for a program split by [`super::stage`].
+    outer: Vec<Sym>,
 }
 
 impl Ctx {
@@ -143,7 +159,11 @@ impl Ctx {
                 bound.push((s.param(p), id));
             }
         }
-        Ctx { dag, bound }
+        Ctx {
+            dag,
+            bound,
+            outer: Vec::new(),
+        }
     }
 
     fn poly(&mut self, p: &Poly) -> Id {
@@ -158,7 +178,11 @@ impl Ctx {
                 .map(|(_, id)| *id)
                 .unwrap_or_else(|| panic!("symbol {x} is not bound in this function"))
         };
-        self.dag.poly(p, &leaf)
+        if self.outer.is_empty() {
+            self.dag.poly(p, &leaf)
+        } else {
+            self.dag.poly_over(p, &self.outer.clone(), &leaf)
+        }
     }
 
     fn bind(&mut self, s: Sym, id: Id) {
@@ -255,15 +279,21 @@ impl Ctx {
     /// h^ = h det A and d^ = d det(A)^2 are polynomials in N and det A.
     fn det_k_one_division(&mut self, d: &Derivation, a: &Matrix, rhs: &[Poly], t: &[Sym]) -> Id {
         let (num, det) = self.cramer_numerators(a, rhs);
+        self.det_k_cleared(d, t, &num, det)
+    }
+
+    /// det K from the trim numerators `num` over `det` (the second half of
+    /// [`Ctx::det_k_one_division`]).
+    fn det_k_cleared(&mut self, d: &Derivation, t: &[Sym], num: &[Id], det: Id) -> Id {
         let g = [
-            self.cleared(&d.g[0], t, &num, det, 1),
-            self.cleared(&d.g[1], t, &num, det, 1),
+            self.cleared(&d.g[0], t, num, det, 1),
+            self.cleared(&d.g[1], t, num, det, 1),
         ];
         let h = [
-            self.cleared(&d.h[0], t, &num, det, 1),
-            self.cleared(&d.h[1], t, &num, det, 1),
+            self.cleared(&d.h[0], t, num, det, 1),
+            self.cleared(&d.h[1], t, num, det, 1),
         ];
-        let dd = self.cleared(&d.d, t, &num, det, 2);
+        let dd = self.cleared(&d.d, t, num, det, 2);
         let k0: Vec<Vec<Id>> = (0..2)
             .map(|i| (0..2).map(|j| self.poly(&d.k0[i][j])).collect())
             .collect();
@@ -386,10 +416,9 @@ impl Ctx {
         [x[0], x[1], x[2]]
     }
 
-    /// Coefficients of a polynomial in P0 as nodes (ascending powers).
-    fn in_p0(&mut self, p: &Poly) -> Vec<Id> {
-        let s = symbols();
-        p.coeffs(s.p0).iter().map(|c| self.poly(c)).collect()
+    /// Coefficients of a polynomial in `x` as nodes (ascending powers).
+    fn in_var(&mut self, p: &Poly, x: Sym) -> Vec<Id> {
+        p.coeffs(x).iter().map(|c| self.poly(c)).collect()
     }
 
     /// Product of two polynomials in P0 given by coefficient nodes.
@@ -408,9 +437,10 @@ impl Ctx {
     /// `f(t = num / den) * den^k` as coefficient nodes in P0, with k = [`TRIM_DEGREE`] (step 8
     /// of the derivation, [`clear_trim`] by univariate convolutions).
     fn homogenize(&mut self, f: &Poly, t: &[Sym], num: &[Poly], den: &Poly) -> Vec<Id> {
-        let num: Vec<Vec<Id>> = num.iter().map(|n| self.in_p0(n)).collect();
-        let den = self.in_p0(den);
-        clear_trim(&mut InP0(self), f, t, &num, &den, TRIM_DEGREE)
+        let p0 = symbols().p0;
+        let num: Vec<Vec<Id>> = num.iter().map(|n| self.in_var(n, p0)).collect();
+        let den = self.in_var(den, p0);
+        clear_trim(&mut InVar(self, p0), f, t, &num, &den, TRIM_DEGREE)
     }
     /// det K from the bound trim: K = K0 - g h^T / d (Eqs 16, 27-31), then the 2x2 determinant.
     fn stiffness(&mut self, d: &Derivation) -> [[Id; 2]; 2] {
@@ -461,6 +491,7 @@ impl Ctx {
                 .map(|((n, _), id)| (n, id))
                 .collect(),
             ret,
+            owner: None,
         }
     }
 }
@@ -484,14 +515,14 @@ impl Clearing for Nodes<'_> {
     }
 }
 
-/// Polynomials in P0 as coefficient nodes (ascending powers), the ring of step 8 for the jump
-/// polynomials.
-struct InP0<'a>(&'a mut Ctx);
+/// Polynomials in one symbol as coefficient nodes (ascending powers): the ring of step 8 for the
+/// jump polynomials (in P0) and for the trim condition in delta_a.
+struct InVar<'a>(&'a mut Ctx, Sym);
 
-impl Clearing for InP0<'_> {
+impl Clearing for InVar<'_> {
     type Value = Vec<Id>;
     fn lift(&mut self, p: &Poly) -> Vec<Id> {
-        self.0.in_p0(p)
+        self.0.in_var(p, self.1)
     }
     fn add(&mut self, a: &Vec<Id>, b: &Vec<Id>) -> Vec<Id> {
         let zero = self.0.dag.constant(Q::ZERO);

@@ -157,19 +157,10 @@ pub fn merge_like_terms(dag: &Dag, outputs: &[Id]) -> (Dag, Vec<Id>) {
         if !needed[i] {
             continue;
         }
-        let m = |id: &Id| map[id.0 as usize].expect("children are rebuilt first");
+        let m = |id: Id| map[id.0 as usize].expect("children are rebuilt first");
         let new = match &plans[i] {
-            Some(t) => rebuild(&mut out, t, &m),
-            None => out.push(match node {
-                Node::Const(_) | Node::Input(_) => node.clone(),
-                Node::Add(a, b) => Node::Add(m(a), m(b)),
-                Node::Sub(a, b) => Node::Sub(m(a), m(b)),
-                Node::Mul(a, b) => Node::Mul(m(a), m(b)),
-                Node::Div(a, b) => Node::Div(m(a), m(b)),
-                Node::Neg(a) => Node::Neg(m(a)),
-                Node::Sqrt(a) => Node::Sqrt(m(a)),
-                Node::CopySign(a, b) => Node::CopySign(m(a), m(b)),
-            }),
+            Some(t) => rebuild(&mut out, t, &|id: &Id| m(*id)),
+            None => out.push(node.map_children(m)),
         };
         map[i] = Some(new);
     }

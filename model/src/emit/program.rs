@@ -135,7 +135,8 @@ fn literal_width(q: &Q) -> usize {
 }
 
 /// The width of an expression on one line, the longer of its Rust and C spellings
-/// (`libm::sqrt(a)` against `sqrt(a)`, `k->l_p` against `k.l_p`).
+/// (`libm::sqrt(a)` against `sqrt(a)`, `(a).copysign(b)` against `copysign(a, b)`, `k->l_p`
+/// against `k.l_p`).
 fn width(e: &Expr) -> usize {
     match e {
         Expr::Const(q) => literal_width(q),
@@ -145,7 +146,7 @@ fn width(e: &Expr) -> usize {
         Expr::Binary(_, a, b) => width(a) + 3 + width(b),
         Expr::Neg(a) => 1 + width(a),
         Expr::Sqrt(a) => "libm::sqrt()".len() + width(a),
-        Expr::CopySign(a, b) => "libm::copysign(, )".len() + width(a) + width(b),
+        Expr::CopySign(a, b) => "().copysign()".len() + width(a) + width(b),
         Expr::Paren(a) => 2 + width(a),
     }
 }

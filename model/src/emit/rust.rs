@@ -81,8 +81,19 @@ fn tokens(e: &Expr) -> TokenStream {
             quote!(libm::sqrt(#x))
         }
         Expr::CopySign(a, b) => {
-            let (x, y) = (tokens(a), tokens(b));
-            quote!(libm::copysign(#x, #y))
+            // core's `f64::copysign` (the `llvm.copysign` intrinsic: inlined, cannot unwind, so the
+            // no-panic proof holds even where the arguments are constants), a method call: its
+            // receiver is parenthesized unless it is an atom.
+            let atom = match &**a {
+                Expr::Const(q) => !q.is_negative(),
+                Expr::Named(_) | Expr::Input(_) | Expr::Temp(_) => true,
+                Expr::Sqrt(_) | Expr::CopySign(..) | Expr::Paren(_) => true,
+                Expr::Binary(..) | Expr::Neg(_) => false,
+            };
+            let x = tokens(a);
+            let x = if atom { x } else { quote!((#x)) };
+            let y = tokens(b);
+            quote!(#x.copysign(#y))
         }
         Expr::Paren(a) => {
             let x = tokens(a);
@@ -116,6 +127,9 @@ pub fn function(f: &Function, header_doc: &[String]) -> TokenStream {
     let (stmts, outs) = body(&f.dag, &ids);
     let name = Ident::new(f.name, Span::call_site());
     let mut args = Vec::new();
+    if f.takes_self() {
+        args.push(quote!(&self));
+    }
     if f.takes_derivatives {
         args.push(quote!(k: &Derivatives));
     }

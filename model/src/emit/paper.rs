@@ -4,7 +4,7 @@
 //!
 //! Nothing is derived from these strings: `docs/formulas.tex` ([`super::latex`]) compares them with
 //! the derivation and states agreement or typesets the difference, and
-//! `tests/tests/latex.rs` pins each difference exactly. [`print`] is the parser's inverse: it
+//! `tests/tests/latex.rs` pins each difference exactly. [`print()`] is the parser's inverse: it
 //! writes the derivation's polynomials in the same notation for the generated code's doc
 //! comments, where `tests/tests/generated.rs` reads them back with [`parse`].
 //!

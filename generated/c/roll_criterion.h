@@ -22,7 +22,7 @@
 //   hurwitz_delta4                       196     255       3       0       1     455
 //   hopf_omega_squared                   192     247       4       0       1     444
 //   Prepared::new                         18      51       0       0       0      69
-//   Prepared::det_k                       49      80       2       0       2     133
+//   Prepared::det_k                       48      84       1       0       2     135
 //
 // Use: `#include "roll_criterion.h"` and link with -lm (for sqrt and copysign). Every
 // function is straight-line double arithmetic: no allocation, no recursion, no loops or
@@ -1484,7 +1484,7 @@ ROLL_CRITERION_API double rc_hopf_omega_squared(const struct rc_derivatives *k, 
 /// depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch
 /// of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is
 /// the roll-rate-dependent part of one straight-line program (model/src/emit/stage.rs), with
-/// 41 fields; per call 133 operations against 69 for `Prepared::new`.
+/// 41 fields; per call 135 operations against 69 for `Prepared::new`.
 struct rc_Prepared {
     double f0;
     double f1;
@@ -1609,7 +1609,7 @@ ROLL_CRITERION_API struct rc_Prepared rc_prepared_new(const struct rc_derivative
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 ///
-/// Cost after CSE: 49 add/sub, 80 mul, 2 div, 0 neg, 2 libm (133 operations); straight-line, no branches.
+/// Cost after CSE: 48 add/sub, 84 mul, 1 div, 0 neg, 2 libm (135 operations); straight-line, no branches.
 /// Rust: `roll_criterion::Prepared::det_k`, bit-identical.
 ROLL_CRITERION_API double rc_prepared_det_k(const struct rc_Prepared *self, double p0)
 {
@@ -1628,25 +1628,22 @@ ROLL_CRITERION_API double rc_prepared_det_k(const struct rc_Prepared *self, doub
         t7) + self->f5 * (t1 * t9);
     const double t12 = self->f6 * t10 + self->f4 * (t8 * t9) - self->f2 * (t5 * t8 + t6 * t7) +
         self->f5 * (t4 * t9);
-    const double t13 = t11 * 2.0 / (t12 + copysign(sqrt(t12 * t12 + self->f2 * (t6 * t8) * t11 *
-        4.0), t12));
-    const double t14 = self->f11 - p0 * (self->f13 + p0 * self->f14) + p0 * self->f15 * t13;
-    const double t15 = t1 - t4 * t13;
-    const double t16 = t5 - t6 * t13;
-    const double t17 = t7 - t8 * t13;
-    const double t18 = self->f0 * t17 + self->f7 * t15 + t14 * (p0 * self->f0);
-    const double t19 = self->f8 * t9 - self->f1 * t16 - t15 * (p0 * self->f1) + self->f9 * t14;
-    const double t20 = p0 * self->f2;
-    const double t21 = self->f39 - self->f0 * t2;
-    const double t22 = p0 * self->f12;
-    const double t23 = p0 * self->f40;
-    const double t24 = self->f10 - self->f1 * t2;
-    const double t25 = (t9 * (p0 * self->f4) + t17 * self->f36 - t16 * t20) * (t19 * t22 - t18 *
-        t24);
-    const double t26 = self->f3 * t10 - self->f2 * (t15 * t17) + self->f4 * (t9 * t14) - self->f2 *
-        (t14 * t16);
-    return t21 * t24 + t22 * t23 - (t25 + (t9 * self->f37 - t17 * t20 - t16 * self->f38) * (t19 *
-        t21 + t18 * t23)) / t26;
+    const double t13 = t12 + copysign(sqrt(t12 * t12 + self->f2 * (t6 * t8) * t11 * 4.0), t12);
+    const double t14 = t11 * 2.0;
+    const double t15 = (self->f11 - p0 * (self->f13 + p0 * self->f14)) * t13 + p0 * self->f15 * t14;
+    const double t16 = t1 * t13 - t4 * t14;
+    const double t17 = t5 * t13 - t6 * t14;
+    const double t18 = t7 * t13 - t8 * t14;
+    const double t19 = t9 * t13;
+    const double t20 = self->f0 * t18 + self->f7 * t16 + t15 * (p0 * self->f0);
+    const double t21 = self->f8 * t19 - self->f1 * t17 - t16 * (p0 * self->f1) + self->f9 * t15;
+    const double t22 = p0 * self->f2;
+    const double t23 = (t19 * (p0 * self->f4) + t18 * self->f36 - t17 * t22) * (t21 * (p0 *
+        self->f12) - t20 * (self->f10 - self->f1 * t2));
+    const double t24 = t23 + (t19 * self->f37 - t18 * t22 - t17 * self->f38) * (t21 * (self->f39 -
+        self->f0 * t2) + t20 * (p0 * self->f40));
+    return t9 - t24 / (self->f3 * (t19 * t19) - self->f2 * (t16 * t18) + self->f4 * (t15 * t19) -
+        self->f2 * (t15 * t17));
 }
 
 /// det K at `n` roll rates: `out[i] = rc_prepared_det_k(self, p0[i])` for i < n (the slice form

@@ -20,7 +20,7 @@
 //   hurwitz_delta4                       196     255       3       0       1     455
 //   hopf_omega_squared                   192     247       4       0       1     444
 //   Prepared::new                         18      51       0       0       0      69
-//   Prepared::det_k                       49      80       2       0       2     133
+//   Prepared::det_k                       48      84       1       0       2     135
 
 //! Closed-form roll-coupling jump criterion (Mahale & Ananthkrishnan, AIAA 2006-6267),
 //! generated from the model equations by exact symbolic derivation.
@@ -1507,7 +1507,7 @@ pub fn hopf_omega_squared(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) 
 /// depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch
 /// of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is
 /// the roll-rate-dependent part of one straight-line program (model/src/emit/stage.rs), with
-/// 41 fields; per call 133 operations against 69 for `Prepared::new`.
+/// 41 fields; per call 135 operations against 69 for `Prepared::new`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Prepared {
     f0: f64,
@@ -1633,7 +1633,7 @@ impl Prepared {
     /// Arguments:
     /// - `p0`: trim roll rate P0, rad/s
     ///
-    /// Cost after CSE: 49 add/sub, 80 mul, 2 div, 0 neg, 2 libm (133 operations); straight-line, no branches.
+    /// Cost after CSE: 48 add/sub, 84 mul, 1 div, 0 neg, 2 libm (135 operations); straight-line, no branches.
     #[must_use]
     #[inline]
     pub fn det_k(&self, p0: f64) -> f64 {
@@ -1652,28 +1652,27 @@ impl Prepared {
             - self.f2 * (t5 * t7) + self.f5 * (t1 * t9);
         let t12 = self.f6 * t10 + self.f4 * (t8 * t9) - self.f2 * (t5 * t8 + t6 * t7)
             + self.f5 * (t4 * t9);
-        let t13 = t11 * 2.0
-            / (t12
-                + libm::sqrt(t12 * t12 + self.f2 * (t6 * t8) * t11 * 4.0).copysign(t12));
-        let t14 = self.f11 - p0 * (self.f13 + p0 * self.f14) + p0 * self.f15 * t13;
-        let t15 = t1 - t4 * t13;
-        let t16 = t5 - t6 * t13;
-        let t17 = t7 - t8 * t13;
-        let t18 = self.f0 * t17 + self.f7 * t15 + t14 * (p0 * self.f0);
-        let t19 = self.f8 * t9 - self.f1 * t16 - t15 * (p0 * self.f1) + self.f9 * t14;
-        let t20 = p0 * self.f2;
-        let t21 = self.f39 - self.f0 * t2;
-        let t22 = p0 * self.f12;
-        let t23 = p0 * self.f40;
-        let t24 = self.f10 - self.f1 * t2;
-        let t25 = (t9 * (p0 * self.f4) + t17 * self.f36 - t16 * t20)
-            * (t19 * t22 - t18 * t24);
-        let t26 = self.f3 * t10 - self.f2 * (t15 * t17) + self.f4 * (t9 * t14)
-            - self.f2 * (t14 * t16);
-        t21 * t24 + t22 * t23
-            - (t25
-                + (t9 * self.f37 - t17 * t20 - t16 * self.f38) * (t19 * t21 + t18 * t23))
-                / t26
+        let t13 = t12
+            + libm::sqrt(t12 * t12 + self.f2 * (t6 * t8) * t11 * 4.0).copysign(t12);
+        let t14 = t11 * 2.0;
+        let t15 = (self.f11 - p0 * (self.f13 + p0 * self.f14)) * t13
+            + p0 * self.f15 * t14;
+        let t16 = t1 * t13 - t4 * t14;
+        let t17 = t5 * t13 - t6 * t14;
+        let t18 = t7 * t13 - t8 * t14;
+        let t19 = t9 * t13;
+        let t20 = self.f0 * t18 + self.f7 * t16 + t15 * (p0 * self.f0);
+        let t21 = self.f8 * t19 - self.f1 * t17 - t16 * (p0 * self.f1) + self.f9 * t15;
+        let t22 = p0 * self.f2;
+        let t23 = (t19 * (p0 * self.f4) + t18 * self.f36 - t17 * t22)
+            * (t21 * (p0 * self.f12) - t20 * (self.f10 - self.f1 * t2));
+        let t24 = t23
+            + (t19 * self.f37 - t18 * t22 - t17 * self.f38)
+                * (t21 * (self.f39 - self.f0 * t2) + t20 * (p0 * self.f40));
+        t9
+            - t24
+                / (self.f3 * (t19 * t19) - self.f2 * (t16 * t18) + self.f4 * (t15 * t19)
+                    - self.f2 * (t15 * t17))
     }
     /// det K at each roll rate of `p0`, written to `out`: element i of `out` is
     /// `self.det_k(p0[i])` for i below the shorter length; the rest of `out` is not touched.

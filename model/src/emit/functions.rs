@@ -279,12 +279,20 @@ impl Ctx {
     /// h^ = h det A and d^ = d det(A)^2 are polynomials in N and det A.
     fn det_k_one_division(&mut self, d: &Derivation, a: &Matrix, rhs: &[Poly], t: &[Sym]) -> Id {
         let (num, det) = self.cramer_numerators(a, rhs);
-        self.det_k_cleared(d, t, &num, det)
+        self.det_k_cleared(d, t, &num, det, None)
     }
 
     /// det K from the trim numerators `num` over `det` (the second half of
-    /// [`Ctx::det_k_one_division`]).
-    fn det_k_cleared(&mut self, d: &Derivation, t: &[Sym], num: &[Id], det: Id) -> Id {
+    /// [`Ctx::det_k_one_division`]); `det_k0` is det K0 when the caller has it already, else it
+    /// is built from K0's entries.
+    fn det_k_cleared(
+        &mut self,
+        d: &Derivation,
+        t: &[Sym],
+        num: &[Id],
+        det: Id,
+        det_k0: Option<Id>,
+    ) -> Id {
         let g = [
             self.cleared(&d.g[0], t, num, det, 1),
             self.cleared(&d.g[1], t, num, det, 1),
@@ -297,7 +305,8 @@ impl Ctx {
         let k0: Vec<Vec<Id>> = (0..2)
             .map(|i| (0..2).map(|j| self.poly(&d.k0[i][j])).collect())
             .collect();
-        let det_k0 = self.det2([[k0[0][0], k0[0][1]], [k0[1][0], k0[1][1]]]);
+        let det_k0 =
+            det_k0.unwrap_or_else(|| self.det2([[k0[0][0], k0[0][1]], [k0[1][0], k0[1][1]]]));
         // adj(K0) g^ = [K0_11 g0 - K0_01 g1, K0_00 g1 - K0_10 g0]
         let a0 = {
             let x = self.dag.mul(k0[1][1], g[0]);

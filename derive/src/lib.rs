@@ -23,8 +23,10 @@
 //! Every expansion defines the structs `Trim` and `ZeroSideslipTrim` (and, parametric,
 //! `Derivatives`) and the functions `trim`, `zero_sideslip_trim`, `jacobian5`,
 //! `residual_denominator`, `stiffness`, `det_k`, `det_j5`, `zero_sideslip_det_k`,
-//! `divergence_biquadratic`, `divergence_roll_rates`, `jump_polynomial` and
-//! `zero_sideslip_jump_polynomial`; the doc comment of each gives its formula and units. Since the
+//! `divergence_biquadratic`, `divergence_roll_rates`, `jump_polynomial`,
+//! `zero_sideslip_jump_polynomial`, `characteristic_coefficients`, `hurwitz_delta4` and
+//! `hopf_omega_squared`, and for an aircraft `hopf_polynomial` (the exact Hopf polynomial of its
+//! data; NaN with aileron yaw); the doc comment of each gives its formula and units. Since the
 //! names are fixed, put each invocation in a module of its own.
 //!
 //! The functions take square roots through `libm::sqrt`: add `libm = "0.2"` to the

@@ -157,6 +157,11 @@ fn macro_equals_committed_generated_aircraft_a() {
                 a::zero_sideslip_det_k(p0, de),
                 g::zero_sideslip_det_k(p0, de),
             ),
+            (
+                "hopf_polynomial",
+                a::hopf_polynomial(p0, de, dr),
+                g::hopf_polynomial(p0, de, dr),
+            ),
         ];
         for (name, m, c) in scalars {
             assert_eq!(m.to_bits(), c.to_bits(), "{name} {at}: {m:e} vs {c:e}");
@@ -242,4 +247,6 @@ fn fighter_with_aileron_yaw_expands_and_its_trims_hold_the_roll_equation() {
         }
     }
     assert!(real >= 3, "{real} real trims");
+    // With aileron yaw no Hopf polynomial in P0 and the controls alone exists: NaN.
+    assert!(fighter::hopf_polynomial(1.5, DE, 0.0).is_nan());
 }

@@ -6,27 +6,31 @@
 // Operation counts after common-subexpression elimination (parametric; the functions of
 // each built-in aircraft are counted in its section):
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  42      84       4       2       1     133
+//   trim                                  41      85       4       2       1     133
 //   zero_sideslip_trim                     9      23       2       1       0      35
 //   jacobian5                              2       6       0       4       0      12
-//   residual_denominator                  41      83       3       0       1     128
-//   stiffness                             61     110       4       0       1     176
-//   det_k                                 62     117       4       0       1     184
-//   det_j5                                90     163       3       0       1     257
+//   residual_denominator                  40      84       3       0       1     128
+//   stiffness                             60     111       4       0       1     176
+//   det_k                                 61     118       4       0       1     184
+//   det_j5                                89     164       3       0       1     257
 //   zero_sideslip_det_k                   23      44       1       0       0      68
 //   divergence_biquadratic                 5      10       0       0       0      15
-//   divergence_roll_rates                  8      14       2       1       3      28
-//   jump_polynomial                      291     433       0       1       1     726
-//   zero_sideslip_jump_polynomial         57     116       0       0       0     173
-//   characteristic_coefficients          191     244       3       1       1     440
-//   hurwitz_delta4                       197     254       3       0       1     455
-//   hopf_omega_squared                   193     246       4       0       1     444
+//   divergence_roll_rates                  7      14       2       2       4      29
+//   jump_polynomial                      272     452       0       1       1     726
+//   zero_sideslip_jump_polynomial         56     117       0       0       0     173
+//   characteristic_coefficients          190     245       3       1       1     440
+//   hurwitz_delta4                       196     255       3       0       1     455
+//   hopf_omega_squared                   192     247       4       0       1     444
+//   Prepared::new                         18      51       0       0       0      69
+//   Prepared::det_k                       48      84       1       0       2     135
 //
-// Use: `#include "roll_criterion.h"` and link with -lm (for sqrt). Every function is
-// straight-line double arithmetic: no allocation, no recursion, no loops or branches, one
-// return, nothing from the C library but sqrt. Results are bit-identical to the Rust crate
-// when FLT_EVAL_METHOD == 0 and floating-point contraction is off (gcc/clang:
-// -ffp-contract=off); otherwise they differ by rounding only.
+// Use: `#include "roll_criterion.h"` and link with -lm (for sqrt and copysign). Every
+// function is straight-line double arithmetic: no allocation, no recursion, no loops or
+// branches, one return, nothing from the C library but sqrt and copysign (C99). A named
+// constant KN is a folded exact rational rounded once; its comment gives the exact value.
+// Results are bit-identical to the Rust crate when FLT_EVAL_METHOD == 0 and
+// floating-point contraction is off (gcc/clang: -ffp-contract=off); otherwise they
+// differ by rounding only.
 // Define ROLL_CRITERION_API before the include to choose the linkage of the functions
 // (default: static inline); the built-in aircraft data are static const objects.
 
@@ -34,6 +38,7 @@
 #define ROLL_CRITERION_H
 
 #include <math.h>
+#include <stddef.h>
 
 #ifndef ROLL_CRITERION_API
 #define ROLL_CRITERION_API static inline
@@ -152,22 +157,32 @@ struct rc_matrix5x5 {
     double m[5][5];
 };
 
-/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
-/// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
-/// equation), and the aileron from the roll equation, a quadratic in delta_a
-/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the
-/// trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),
-/// element 1 the other root; both by the cancellation-free quadratic formula. NaN where
-/// the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw
-/// (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the
-/// divergence roll rates). The other functions of `p0` use element 0.
+/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = [alpha0, beta0, Q0, R0]` solves
+/// `A x0 + b = 0` (Cramer's rule, one division by det A), affine in delta_a (aileron yaw
+/// `n_delta_a` enters b); the aileron then solves the roll equation `p_dot = 0` along it,
+/// a quadratic `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element
+/// 0 is the trim that continues the trim without aileron yaw (the root that tends to
+/// `-g0/g1`), element 1 the other root; both by the cancellation-free quadratic formula.
+/// NaN where the two trims of `p0` are complex; element 1 is infinite or NaN without
+/// aileron yaw (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0
+/// (the divergence roll rates). The other functions of `p0` use element 0.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A = [[z_alpha, -P0, 1, 0],
+///      [P0, y_beta, 0, -1],
+///      [m_alpha, 0, m_q, C*P0],
+///      [0, n_beta, -D*P0, n_r]]
+/// b = [0, 0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
+/// p_dot = l_p*P0 + l_r*R0 + l_beta*beta0 + l_delta_a*delta_a + l_delta_r*delta_r - E*Q0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 42 add/sub, 84 mul, 4 div, 2 neg, 1 libm (133 operations); straight-line, no branches.
+/// Cost after CSE: 41 add/sub, 85 mul, 4 div, 2 neg, 1 libm (133 operations); straight-line, no branches.
 /// Rust: `roll_criterion::trim`, bit-identical.
 ROLL_CRITERION_API struct rc_Trim_array2 rc_trim(const struct rc_derivatives *k, double p0,
     double delta_e, double delta_r)
@@ -177,55 +192,69 @@ ROLL_CRITERION_API struct rc_Trim_array2 rc_trim(const struct rc_derivatives *k,
     const double t2 = delta_e * k->m_delta_e;
     const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
     const double t4 = k->m_q * k->n_r + t0 * t1;
-    const double t5 = p0 * t1;
-    const double t6 = k->n_beta + k->y_beta * k->n_r;
-    const double t7 = p0 * k->m_q;
-    const double t8 = k->y_beta * t0;
-    const double t9 = t7 + t8;
-    const double t10 = p0 * k->n_r;
-    const double t11 = k->m_alpha + p0 * t0;
-    const double t12 = k->z_alpha * k->m_q - t11;
-    const double t13 = k->z_alpha * t8 + p0 * t11;
-    const double t14 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t7 - k->y_beta * k->m_alpha;
-    const double t15 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
-        k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
-        k->n_beta));
-    const double t16 = (t2 * (t5 - t6) + t3 * t9) * t15;
-    const double t17 = (t2 * (k->z_alpha * t1 + t10) + t3 * t12) * t15;
-    const double t18 = (t3 * t13 - t2 * (k->z_alpha * t6 + p0 * t10)) * t15;
-    const double t19 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
-        t14) * t15;
-    const double t20 = t15 * (k->n_delta_a * t9);
-    const double t21 = t15 * (k->n_delta_a * t12);
-    const double t22 = t15 * (k->n_delta_a * t13);
-    const double t23 = t15 * (k->n_delta_a * t14);
-    const double t24 = k->l_r - k->e * t18;
-    const double t25 = t19 * t24 + (delta_r * k->l_delta_r - k->l_beta * t17 + p0 * k->l_p);
-    const double t26 = k->e * 0.5 * (t22 * t23);
-    const double t27 = k->l_delta_a - k->l_beta * t21 - t22 * (k->e * t19) - t23 * t24;
-    const double t28 = t26 + t26;
-    const double t29 = t27 * (1.0 + sqrt(1.0 - t25 * t28 / (t27 * t27) * 4.0));
-    const double t30 = t25 * 2.0 / t29;
+    const double t5 = k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
+        k->m_alpha * t1);
+    const double t6 = p0 * t1;
+    const double t7 = k->n_beta + k->y_beta * k->n_r;
+    const double t8 = p0 * k->m_q;
+    const double t9 = k->y_beta * t0;
+    const double t10 = t8 + t9;
+    const double t11 = p0 * k->n_r;
+    const double t12 = k->m_alpha + p0 * t0;
+    const double t13 = k->z_alpha * k->m_q - t12;
+    const double t14 = k->z_alpha * t9 + p0 * t12;
+    const double t15 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t8 - k->y_beta * k->m_alpha;
+    const double t16 = 1.0 / (t5 - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) +
+        k->m_alpha * k->n_beta));
+    const double t17 = (t2 * (t6 - t7) + t3 * t10) * t16;
+    const double t18 = (t2 * (k->z_alpha * t1 + t11) + t3 * t13) * t16;
+    const double t19 = (t3 * t14 - t2 * (k->z_alpha * t7 + p0 * t11)) * t16;
+    const double t20 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t6)) - t3 *
+        t15) * t16;
+    const double t21 = t16 * (k->n_delta_a * t10);
+    const double t22 = t16 * (k->n_delta_a * t13);
+    const double t23 = t16 * (k->n_delta_a * t14);
+    const double t24 = t16 * (k->n_delta_a * t15);
+    const double t25 = k->l_r - k->e * t19;
+    const double t26 = t20 * t25 + (delta_r * k->l_delta_r - k->l_beta * t18 + p0 * k->l_p);
+    const double t27 = k->l_delta_a - k->l_beta * t22 - t23 * (k->e * t20) - t24 * t25;
+    const double t28 = k->e * 0.5 * (t23 * t24) * 2.0;
+    const double t29 = t27 * (1.0 + sqrt(1.0 - t26 * t28 / (t27 * t27) * 4.0));
+    const double t30 = t26 * 2.0 / t29;
     const double t31 = t29 / (t28 * 2.0);
     struct rc_Trim_array2 result;
-    result.v[0].alpha = t20 * t30 - t16;
-    result.v[0].beta = t21 * t30 - t17;
-    result.v[0].q = t18 - t22 * t30;
-    result.v[0].r = t19 + t23 * t30;
+    result.v[0].alpha = t21 * t30 - t17;
+    result.v[0].beta = t22 * t30 - t18;
+    result.v[0].q = t19 - t23 * t30;
+    result.v[0].r = t20 + t24 * t30;
     result.v[0].delta_a = -t30;
-    result.v[1].alpha = t20 * t31 - t16;
-    result.v[1].beta = t21 * t31 - t17;
-    result.v[1].q = t18 - t22 * t31;
-    result.v[1].r = t19 + t23 * t31;
+    result.v[1].alpha = t21 * t31 - t17;
+    result.v[1].beta = t22 * t31 - t18;
+    result.v[1].q = t19 - t23 * t31;
+    result.v[1].r = t20 + t24 * t31;
     result.v[1].delta_a = -t31;
     return result;
 }
 
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the
-/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the
-/// rudder from the roll and yaw equations together (with aileron yaw and roll due to
-/// rudder both controls enter both; the rudder is the schedule of the aileron-rudder
-/// interconnect, Fig. 9). Angles in rad, rates in rad/s.
+/// rudder freed; `[alpha0, Q0, R0]` solves `A1 x + b1 = 0` (the alpha, beta and q
+/// equations), the aileron and the rudder the roll and yaw equations together (with
+/// aileron yaw and roll due to rudder both controls enter both; the rudder is the
+/// schedule of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A1 = [[z_alpha, 1, 0],
+///       [P0, 0, -1],
+///       [m_alpha, m_q, C*P0]]
+/// b1 = [0, 0, m_delta_e*delta_e]
+/// delta_a = (-l_p*n_delta_r*P0 - l_r*n_delta_r*R0 + n_p*l_delta_r*P0 + n_r*l_delta_r*R0
+///                - D*l_delta_r*P0*Q0 + E*n_delta_r*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// delta_r = (l_p*n_delta_a*P0 + l_r*n_delta_a*R0 - l_delta_a*n_p*P0 - l_delta_a*n_r*R0
+///                + D*l_delta_a*P0*Q0 - E*n_delta_a*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -253,7 +282,17 @@ ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_zero_sideslip_trim(const struct
 }
 
 /// The 5x5 Jacobian of the PSS model (Appendix A.2) at the state
-/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s.
+/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s;
+/// below with `(alpha0, beta0, P0, Q0, R0) = (alpha, beta, p, q, r)`.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// J5 = [[z_alpha, -P0, -beta0, 1, 0],
+///       [P0, y_beta, alpha0, 0, -1],
+///       [0, l_beta, l_p, -E*R0, l_r - E*Q0],
+///       [m_alpha, 0, C*R0, m_q, C*P0],
+///       [0, n_beta, n_p - D*Q0, -D*P0, n_r]]
+/// ```
 ///
 /// Arguments:
 /// - `alpha`: angle of attack, rad
@@ -296,15 +335,20 @@ ROLL_CRITERION_API struct rc_matrix5x5 rc_jacobian5(const struct rc_derivatives 
     return result;
 }
 
-/// The static-residual denominator (Eq. 22) at the trim of `p0`:
-/// `d = l_p + l_r alpha0 - E Q0 alpha0 - E R0 beta0`, 1/s. det K has poles where d = 0 (Fig. 8).
+/// The static-residual denominator d (Eq. 22) at the trim of `p0`, 1/s. det K has
+/// poles where d = 0 (Fig. 8).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 41 add/sub, 83 mul, 3 div, 0 neg, 1 libm (128 operations); straight-line, no branches.
+/// Cost after CSE: 40 add/sub, 84 mul, 3 div, 0 neg, 1 libm (128 operations); straight-line, no branches.
 /// Rust: `roll_criterion::residual_denominator`, bit-identical.
 ROLL_CRITERION_API double rc_residual_denominator(const struct rc_derivatives *k, double p0,
     double delta_e, double delta_r)
@@ -314,47 +358,57 @@ ROLL_CRITERION_API double rc_residual_denominator(const struct rc_derivatives *k
     const double t2 = delta_e * k->m_delta_e;
     const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
     const double t4 = k->m_q * k->n_r + t0 * t1;
-    const double t5 = p0 * t1;
-    const double t6 = k->n_beta + k->y_beta * k->n_r;
-    const double t7 = p0 * k->m_q;
-    const double t8 = k->y_beta * t0;
-    const double t9 = t7 + t8;
-    const double t10 = p0 * k->n_r;
-    const double t11 = k->m_alpha + p0 * t0;
-    const double t12 = k->z_alpha * k->m_q - t11;
-    const double t13 = k->z_alpha * t8 + p0 * t11;
-    const double t14 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t7 - k->y_beta * k->m_alpha;
-    const double t15 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
-        k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
-        k->n_beta));
-    const double t16 = (t2 * (k->z_alpha * t1 + t10) + t3 * t12) * t15;
-    const double t17 = (t3 * t13 - t2 * (k->z_alpha * t6 + p0 * t10)) * t15;
-    const double t18 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
-        t14) * t15;
-    const double t19 = t15 * (k->n_delta_a * t12);
-    const double t20 = t15 * (k->n_delta_a * t13);
-    const double t21 = t15 * (k->n_delta_a * t14);
-    const double t22 = k->l_r - k->e * t17;
-    const double t23 = t18 * t22 + (delta_r * k->l_delta_r - k->l_beta * t16 + p0 * k->l_p);
-    const double t24 = k->e * 0.5 * (t20 * t21);
-    const double t25 = k->l_delta_a - k->l_beta * t19 - t20 * (k->e * t18) - t21 * t22;
-    const double t26 = t23 * 2.0 / (t25 * (1.0 + sqrt(1.0 - t23 * (t24 + t24) / (t25 * t25) *
-        4.0)));
-    const double t27 = t15 * (k->n_delta_a * t9) * t26 - (t2 * (t5 - t6) + t3 * t9) * t15;
-    return k->l_p + k->l_r * t27 - k->e * ((t19 * t26 - t16) * (t18 + t21 * t26) + t27 * (t17 - t20
+    const double t5 = k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
+        k->m_alpha * t1);
+    const double t6 = p0 * t1;
+    const double t7 = k->n_beta + k->y_beta * k->n_r;
+    const double t8 = p0 * k->m_q;
+    const double t9 = k->y_beta * t0;
+    const double t10 = t8 + t9;
+    const double t11 = p0 * k->n_r;
+    const double t12 = k->m_alpha + p0 * t0;
+    const double t13 = k->z_alpha * k->m_q - t12;
+    const double t14 = k->z_alpha * t9 + p0 * t12;
+    const double t15 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t8 - k->y_beta * k->m_alpha;
+    const double t16 = 1.0 / (t5 - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) +
+        k->m_alpha * k->n_beta));
+    const double t17 = (t2 * (k->z_alpha * t1 + t11) + t3 * t13) * t16;
+    const double t18 = (t3 * t14 - t2 * (k->z_alpha * t7 + p0 * t11)) * t16;
+    const double t19 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t6)) - t3 *
+        t15) * t16;
+    const double t20 = t16 * (k->n_delta_a * t13);
+    const double t21 = t16 * (k->n_delta_a * t14);
+    const double t22 = t16 * (k->n_delta_a * t15);
+    const double t23 = k->l_r - k->e * t18;
+    const double t24 = t19 * t23 + (delta_r * k->l_delta_r - k->l_beta * t17 + p0 * k->l_p);
+    const double t25 = k->l_delta_a - k->l_beta * t20 - t21 * (k->e * t19) - t22 * t23;
+    const double t26 = t24 * 2.0 / (t25 * (1.0 + sqrt(1.0 - t24 * (k->e * 0.5 * (t21 * t22) * 2.0) /
+        (t25 * t25) * 4.0)));
+    const double t27 = t16 * (k->n_delta_a * t10) * t26 - (t2 * (t6 - t7) + t3 * t10) * t16;
+    return k->l_p + k->l_r * t27 - k->e * ((t20 * t26 - t17) * (t19 + t22 * t26) + t27 * (t18 - t21
         * t26));
 }
 
-/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of `p0`:
-/// `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in Eqs 13-14,
-/// g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual (Eqs 22-25). 1/s^2.
+/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of
+/// `p0`: `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in
+/// Eqs 13-14, g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual
+/// (Eqs 22-25). 1/s^2.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 61 add/sub, 110 mul, 4 div, 0 neg, 1 libm (176 operations); straight-line, no branches.
+/// Cost after CSE: 60 add/sub, 111 mul, 4 div, 0 neg, 1 libm (176 operations); straight-line, no branches.
 /// Rust: `roll_criterion::stiffness`, bit-identical.
 ROLL_CRITERION_API struct rc_matrix2x2 rc_stiffness(const struct rc_derivatives *k, double p0,
     double delta_e, double delta_r)
@@ -364,63 +418,73 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_stiffness(const struct rc_derivatives 
     const double t2 = delta_e * k->m_delta_e;
     const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
     const double t4 = k->m_q * k->n_r + t0 * t1;
-    const double t5 = p0 * t1;
-    const double t6 = k->n_beta + k->y_beta * k->n_r;
-    const double t7 = p0 * k->m_q;
-    const double t8 = k->y_beta * t0;
-    const double t9 = t7 + t8;
-    const double t10 = p0 * k->n_r;
-    const double t11 = k->z_alpha * k->m_q;
-    const double t12 = k->m_alpha + p0 * t0;
-    const double t13 = t11 - t12;
-    const double t14 = k->z_alpha * t8 + p0 * t12;
-    const double t15 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t7 - k->y_beta * k->m_alpha;
-    const double t16 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
-        k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
-        k->n_beta));
-    const double t17 = (t2 * (k->z_alpha * t1 + t10) + t3 * t13) * t16;
-    const double t18 = (t3 * t14 - t2 * (k->z_alpha * t6 + p0 * t10)) * t16;
-    const double t19 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
-        t15) * t16;
-    const double t20 = t16 * (k->n_delta_a * t13);
-    const double t21 = t16 * (k->n_delta_a * t14);
-    const double t22 = t16 * (k->n_delta_a * t15);
-    const double t23 = k->l_r - k->e * t18;
-    const double t24 = t19 * t23 + (delta_r * k->l_delta_r - k->l_beta * t17 + p0 * k->l_p);
-    const double t25 = k->e * 0.5 * (t21 * t22);
-    const double t26 = k->l_delta_a - k->l_beta * t20 - t21 * (k->e * t19) - t22 * t23;
-    const double t27 = t24 * 2.0 / (t26 * (1.0 + sqrt(1.0 - t24 * (t25 + t25) / (t26 * t26) *
-        4.0)));
-    const double t28 = t16 * (k->n_delta_a * t9) * t27 - (t2 * (t5 - t6) + t3 * t9) * t16;
-    const double t29 = t20 * t27 - t17;
-    const double t30 = t21 * t27;
-    const double t31 = t18 - t30;
-    const double t32 = t19 + t22 * t27;
+    const double t5 = k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
+        k->m_alpha * t1);
+    const double t6 = p0 * t1;
+    const double t7 = k->n_beta + k->y_beta * k->n_r;
+    const double t8 = p0 * k->m_q;
+    const double t9 = k->y_beta * t0;
+    const double t10 = t8 + t9;
+    const double t11 = p0 * k->n_r;
+    const double t12 = k->z_alpha * k->m_q;
+    const double t13 = k->m_alpha + p0 * t0;
+    const double t14 = t12 - t13;
+    const double t15 = k->z_alpha * t9 + p0 * t13;
+    const double t16 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t8 - k->y_beta * k->m_alpha;
+    const double t17 = 1.0 / (t5 - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) +
+        k->m_alpha * k->n_beta));
+    const double t18 = (t2 * (k->z_alpha * t1 + t11) + t3 * t14) * t17;
+    const double t19 = (t3 * t15 - t2 * (k->z_alpha * t7 + p0 * t11)) * t17;
+    const double t20 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t6)) - t3 *
+        t16) * t17;
+    const double t21 = t17 * (k->n_delta_a * t14);
+    const double t22 = t17 * (k->n_delta_a * t15);
+    const double t23 = t17 * (k->n_delta_a * t16);
+    const double t24 = k->l_r - k->e * t19;
+    const double t25 = t20 * t24 + (delta_r * k->l_delta_r - k->l_beta * t18 + p0 * k->l_p);
+    const double t26 = k->l_delta_a - k->l_beta * t21 - t22 * (k->e * t20) - t23 * t24;
+    const double t27 = t25 * 2.0 / (t26 * (1.0 + sqrt(1.0 - t25 * (k->e * 0.5 * (t22 * t23) * 2.0) /
+        (t26 * t26) * 4.0)));
+    const double t28 = t17 * (k->n_delta_a * t10) * t27 - (t2 * (t6 - t7) + t3 * t10) * t17;
+    const double t29 = t21 * t27 - t18;
+    const double t30 = t22 * t27;
+    const double t31 = t19 - t30;
+    const double t32 = t20 + t23 * t27;
     const double t33 = 1.0 / (k->l_p + k->l_r * t28 - k->e * (t29 * t32 + t28 * t31));
     const double t34 = k->e * (k->z_alpha * t32 - p0 * t31) + p0 * k->l_r;
     const double t35 = k->l_beta + k->y_beta * k->l_r - k->e * (p0 * t32 + k->y_beta * t31);
     const double t36 = t33 * (k->c * (t32 + p0 * t28) + k->m_q * t29);
     const double t37 = p0 * p0;
-    const double t38 = t33 * (k->d * (t30 - t18 - p0 * t29) + (k->n_p + k->n_r * t28));
+    const double t38 = t33 * (k->d * (t30 - t19 - p0 * t29) + (k->n_p + k->n_r * t28));
     struct rc_matrix2x2 result;
-    result.m[0][0] = t11 - k->m_alpha - k->c * t37 + t34 * t36;
+    result.m[0][0] = t12 - k->m_alpha - k->c * t37 + t34 * t36;
     result.m[0][1] = t35 * t36 - p0 * (k->m_q + k->c * k->y_beta);
     result.m[1][0] = p0 * (k->n_r + k->d * k->z_alpha) - t34 * t38;
-    result.m[1][1] = t6 - k->d * t37 - t35 * t38;
+    result.m[1][1] = t7 - k->d * t37 - t35 * t38;
     return result;
 }
 
 /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the
 /// saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.
-/// Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared
-/// from g, h and d, on the trim branch of [`trim`].
+/// Evaluated as `det K0 - h^T adj(K0) g / d` (the matrix determinant lemma on
+/// `K = K0 - g h^T / d`) with the trim's denominator det A cleared from g, h and d, on
+/// the trim branch of [`trim`].
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 62 add/sub, 117 mul, 4 div, 0 neg, 1 libm (184 operations); straight-line, no branches.
+/// Cost after CSE: 61 add/sub, 118 mul, 4 div, 0 neg, 1 libm (184 operations); straight-line, no branches.
 /// Rust: `roll_criterion::det_k`, bit-identical.
 ROLL_CRITERION_API double rc_det_k(const struct rc_derivatives *k, double p0, double delta_e,
     double delta_r)
@@ -433,49 +497,52 @@ ROLL_CRITERION_API double rc_det_k(const struct rc_derivatives *k, double p0, do
     const double t5 = t3 + t4;
     const double t6 = k->m_q * k->n_r + t0 * t1;
     const double t7 = k->z_alpha * (k->y_beta * t6 + k->m_q * k->n_beta) + p0 * (p0 * t6 +
-        k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
+        k->m_alpha * t1);
+    const double t8 = t7 - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
         k->n_beta);
-    const double t8 = p0 * t1;
-    const double t9 = k->n_beta + k->y_beta * k->n_r;
-    const double t10 = p0 * k->m_q;
-    const double t11 = k->y_beta * t0;
-    const double t12 = p0 * k->n_r;
-    const double t13 = t2 * (k->z_alpha * t1 + t12);
-    const double t14 = k->z_alpha * k->m_q;
-    const double t15 = k->m_alpha + p0 * t0;
-    const double t16 = t14 - t15;
-    const double t17 = t2 * (k->z_alpha * t9 + p0 * t12);
-    const double t18 = k->z_alpha * t11 + p0 * t15;
-    const double t19 = t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t8));
-    const double t20 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t10 - k->y_beta * k->m_alpha;
-    const double t21 = 1.0 / t7;
-    const double t22 = (t19 - t5 * t20) * t21;
-    const double t23 = t21 * (k->n_delta_a * t18);
-    const double t24 = t21 * (k->n_delta_a * t20);
-    const double t25 = k->l_r - k->e * ((t5 * t18 - t17) * t21);
-    const double t26 = t22 * t25 + (delta_r * k->l_delta_r - k->l_beta * ((t13 + t5 * t16) * t21) +
+    const double t9 = p0 * t1;
+    const double t10 = k->n_beta + k->y_beta * k->n_r;
+    const double t11 = p0 * k->m_q;
+    const double t12 = k->y_beta * t0;
+    const double t13 = p0 * k->n_r;
+    const double t14 = t2 * (k->z_alpha * t1 + t13);
+    const double t15 = k->z_alpha * k->m_q;
+    const double t16 = k->m_alpha + p0 * t0;
+    const double t17 = t15 - t16;
+    const double t18 = t2 * (k->z_alpha * t10 + p0 * t13);
+    const double t19 = k->z_alpha * t12 + p0 * t16;
+    const double t20 = t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t9));
+    const double t21 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t11 - k->y_beta * k->m_alpha;
+    const double t22 = 1.0 / t8;
+    const double t23 = (t20 - t5 * t21) * t22;
+    const double t24 = t22 * (k->n_delta_a * t19);
+    const double t25 = t22 * (k->n_delta_a * t21);
+    const double t26 = k->l_r - k->e * ((t5 * t19 - t18) * t22);
+    const double t27 = t23 * t26 + (delta_r * k->l_delta_r - k->l_beta * ((t14 + t5 * t17) * t22) +
         p0 * k->l_p);
-    const double t27 = k->e * 0.5 * (t23 * t24);
-    const double t28 = k->l_delta_a - k->l_beta * (t21 * (k->n_delta_a * t16)) - t23 * (k->e * t22)
-        - t24 * t25;
-    const double t29 = t4 + (t3 - k->n_delta_a * (t26 * 2.0 / (t28 * (1.0 + sqrt(1.0 - t26 * (t27 +
-        t27) / (t28 * t28) * 4.0)))));
-    const double t30 = t2 * (t8 - t9) + (t10 + t11) * t29;
-    const double t31 = t13 + t16 * t29;
-    const double t32 = t18 * t29 - t17;
-    const double t33 = t19 - t20 * t29;
-    const double t34 = k->m_q * t31 - k->c * t33 + t0 * t30;
-    const double t35 = k->n_p * t7 - k->d * t32 + t1 * t31 - k->n_r * t30;
-    const double t36 = p0 * k->e;
-    const double t37 = p0 * p0;
-    const double t38 = t14 - k->m_alpha - k->c * t37;
-    const double t39 = p0 * (k->m_q + k->c * k->y_beta);
-    const double t40 = p0 * (k->n_r + k->d * k->z_alpha);
-    const double t41 = t9 - k->d * t37;
-    return t38 * t41 + t39 * t40 - ((t7 * (p0 * k->l_r) + t33 * (k->e * k->z_alpha) - t32 * t36) *
-        (t34 * t41 + t35 * t39) + (t7 * (k->l_beta + k->y_beta * k->l_r) - t33 * t36 - t32 * (k->e *
-        k->y_beta)) * (t35 * t38 - t34 * t40)) / (k->l_p * (t7 * t7) + k->e * (t31 * t33) - k->l_r *
-        (t7 * t30) + k->e * (t30 * t32));
+    const double t28 = k->l_delta_a - k->l_beta * (t22 * (k->n_delta_a * t17)) - t24 * (k->e * t23)
+        - t25 * t26;
+    const double t29 = t27 * 2.0 / (t28 * (1.0 + sqrt(1.0 - t27 * (k->e * 0.5 * (t24 * t25) * 2.0) /
+        (t28 * t28) * 4.0)));
+    const double t30 = t4 + (t3 - k->n_delta_a * t29);
+    const double t31 = t2 * (t9 - t10) + (t11 + t12) * t30;
+    const double t32 = t14 + t17 * t30;
+    const double t33 = t19 * t30 - t18;
+    const double t34 = t20 - t21 * t30;
+    const double t35 = k->m_q * t32 - k->c * t34 + t0 * t31;
+    const double t36 = k->n_p * t8 - k->d * t33 + t1 * t32 - k->n_r * t31;
+    const double t37 = p0 * k->e;
+    const double t38 = p0 * p0;
+    const double t39 = t15 - k->m_alpha - k->c * t38;
+    const double t40 = p0 * (k->m_q + k->c * k->y_beta);
+    const double t41 = p0 * (k->n_r + k->d * k->z_alpha);
+    const double t42 = t10 - k->d * t38;
+    const double t43 = (t8 * (k->l_beta + k->y_beta * k->l_r) - t34 * t37 - t33 * (k->e *
+        k->y_beta)) * (t36 * t39 - t35 * t41);
+    const double t44 = (t8 * (p0 * k->l_r) + t34 * (k->e * k->z_alpha) - t33 * t37) * (t35 * t42 +
+        t36 * t40) + t43;
+    return t39 * t42 + t40 * t41 - t44 / (k->l_p * (t8 * t8) + k->e * (t32 * t34) - k->l_r * (t8 *
+        t31) + k->e * (t31 * t33));
 }
 
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -486,7 +553,7 @@ ROLL_CRITERION_API double rc_det_k(const struct rc_derivatives *k, double p0, do
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 90 add/sub, 163 mul, 3 div, 0 neg, 1 libm (257 operations); straight-line, no branches.
+/// Cost after CSE: 89 add/sub, 164 mul, 3 div, 0 neg, 1 libm (257 operations); straight-line, no branches.
 /// Rust: `roll_criterion::det_j5`, bit-identical.
 ROLL_CRITERION_API double rc_det_j5(const struct rc_derivatives *k, double p0, double delta_e,
     double delta_r)
@@ -496,64 +563,73 @@ ROLL_CRITERION_API double rc_det_j5(const struct rc_derivatives *k, double p0, d
     const double t2 = delta_e * k->m_delta_e;
     const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
     const double t4 = k->m_q * k->n_r + t0 * t1;
-    const double t5 = p0 * t1;
-    const double t6 = k->n_beta + k->y_beta * k->n_r;
-    const double t7 = p0 * k->m_q;
-    const double t8 = k->y_beta * t0;
-    const double t9 = t7 + t8;
-    const double t10 = p0 * k->n_r;
-    const double t11 = k->m_alpha + p0 * t0;
-    const double t12 = k->z_alpha * k->m_q - t11;
-    const double t13 = k->z_alpha * t8 + p0 * t11;
-    const double t14 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t7 - k->y_beta * k->m_alpha;
-    const double t15 = 1.0 / (k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
-        k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
-        k->n_beta));
-    const double t16 = (t2 * (k->z_alpha * t1 + t10) + t3 * t12) * t15;
-    const double t17 = (t3 * t13 - t2 * (k->z_alpha * t6 + p0 * t10)) * t15;
-    const double t18 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t5)) - t3 *
-        t14) * t15;
-    const double t19 = t15 * (k->n_delta_a * t12);
-    const double t20 = t15 * (k->n_delta_a * t13);
-    const double t21 = t15 * (k->n_delta_a * t14);
-    const double t22 = k->l_r - k->e * t17;
-    const double t23 = t18 * t22 + (delta_r * k->l_delta_r - k->l_beta * t16 + p0 * k->l_p);
-    const double t24 = k->e * 0.5 * (t20 * t21);
-    const double t25 = k->l_delta_a - k->l_beta * t19 - t20 * (k->e * t18) - t21 * t22;
-    const double t26 = t23 * 2.0 / (t25 * (1.0 + sqrt(1.0 - t23 * (t24 + t24) / (t25 * t25) *
-        4.0)));
-    const double t27 = t15 * (k->n_delta_a * t9) * t26 - (t2 * (t5 - t6) + t3 * t9) * t15;
-    const double t28 = t19 * t26 - t16;
-    const double t29 = t17 - t20 * t26;
-    const double t30 = t18 + t21 * t26;
+    const double t5 = k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
+        k->m_alpha * t1);
+    const double t6 = p0 * t1;
+    const double t7 = k->n_beta + k->y_beta * k->n_r;
+    const double t8 = p0 * k->m_q;
+    const double t9 = k->y_beta * t0;
+    const double t10 = t8 + t9;
+    const double t11 = p0 * k->n_r;
+    const double t12 = k->m_alpha + p0 * t0;
+    const double t13 = k->z_alpha * k->m_q - t12;
+    const double t14 = k->z_alpha * t9 + p0 * t12;
+    const double t15 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t8 - k->y_beta * k->m_alpha;
+    const double t16 = 1.0 / (t5 - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) +
+        k->m_alpha * k->n_beta));
+    const double t17 = (t2 * (k->z_alpha * t1 + t11) + t3 * t13) * t16;
+    const double t18 = (t3 * t14 - t2 * (k->z_alpha * t7 + p0 * t11)) * t16;
+    const double t19 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t6)) - t3 *
+        t15) * t16;
+    const double t20 = t16 * (k->n_delta_a * t13);
+    const double t21 = t16 * (k->n_delta_a * t14);
+    const double t22 = t16 * (k->n_delta_a * t15);
+    const double t23 = k->l_r - k->e * t18;
+    const double t24 = t19 * t23 + (delta_r * k->l_delta_r - k->l_beta * t17 + p0 * k->l_p);
+    const double t25 = k->l_delta_a - k->l_beta * t20 - t21 * (k->e * t19) - t22 * t23;
+    const double t26 = t24 * 2.0 / (t25 * (1.0 + sqrt(1.0 - t24 * (k->e * 0.5 * (t21 * t22) * 2.0) /
+        (t25 * t25) * 4.0)));
+    const double t27 = t16 * (k->n_delta_a * t10) * t26 - (t2 * (t6 - t7) + t3 * t10) * t16;
+    const double t28 = t20 * t26 - t17;
+    const double t29 = t18 - t21 * t26;
+    const double t30 = t19 + t22 * t26;
     const double t31 = k->e * t29;
     const double t32 = 2.0 * t31 - k->l_r;
     const double t33 = k->e * k->n_p;
     const double t34 = k->l_p + k->l_r * t27;
-    const double t35 = t31 - k->l_r;
-    const double t36 = k->l_p * k->n_r;
-    const double t37 = k->l_r - t31;
-    const double t38 = k->n_beta * t37 - k->l_beta * k->n_r;
-    const double t39 = k->n_p + k->n_r * t27;
-    const double t40 = k->d * t29;
-    const double t41 = t40 - t39;
-    return p0 * (p0 * (p0 * (p0 * (k->l_p * (k->c * k->d)) + k->c * (k->d * (t30 * t32 - k->l_beta *
-        t28) - t30 * t33)) + (k->d * (t29 * (k->l_r * k->m_q - t27 * (k->e * k->m_alpha) - k->c *
-        k->l_beta - t29 * (k->e * k->m_q)) + (k->c * (k->z_alpha * (k->y_beta * k->l_p - k->l_beta *
-        t27)) + k->m_alpha * t34)) + (k->c * (k->e * (t30 * (k->n_r * t30 + k->n_beta * t28)) +
-        (k->l_beta * k->n_p - k->l_p * k->n_beta)) + k->m_q * (k->n_p * t35 + t36)))) + (t30 * (k->c
-        * (k->z_alpha * (k->d * (k->y_beta * t32 - k->l_beta) + k->e * (k->n_beta * t27 - k->y_beta
-        * k->n_p)) + t38) + k->e * (k->m_alpha * t41)) + t28 * (k->d * (k->m_alpha * (k->y_beta *
-        t35 - k->l_beta)) + k->m_q * t38))) + (k->z_alpha * (k->m_q * (k->y_beta * (t29 * (t33 +
-        k->d * k->l_r - t29 * (k->d * k->e)) + (t36 - k->l_r * k->n_p)) + (k->l_beta * t41 +
-        k->n_beta * (k->l_p + t27 * t37))) + k->c * (k->e * (t6 * (t30 * t30)))) + k->m_alpha *
-        (k->y_beta * (k->e * (t29 * (t40 - k->n_p) + t30 * (k->n_r * t28)) + (k->l_r * (k->n_p -
-        t40) - t36)) + (k->n_beta * (k->e * (t28 * t30 + t27 * t29) - t34) + k->l_beta * (t39 -
-        t40))));
+    const double t35 = t29 * (k->l_r * k->m_q - t27 * (k->e * k->m_alpha) - k->c * k->l_beta - t29 *
+        (k->e * k->m_q));
+    const double t36 = t31 - k->l_r;
+    const double t37 = k->l_p * k->n_r;
+    const double t38 = k->c * (k->e * (t30 * (k->n_r * t30 + k->n_beta * t28)) + (k->l_beta * k->n_p
+        - k->l_p * k->n_beta));
+    const double t39 = k->d * (t35 + (k->c * (k->z_alpha * (k->y_beta * k->l_p - k->l_beta * t27)) +
+        k->m_alpha * t34));
+    const double t40 = p0 * (p0 * (k->l_p * (k->c * k->d)) + k->c * (k->d * (t30 * t32 - k->l_beta *
+        t28) - t30 * t33));
+    const double t41 = k->l_r - t31;
+    const double t42 = k->n_beta * t41 - k->l_beta * k->n_r;
+    const double t43 = k->n_p + k->n_r * t27;
+    const double t44 = k->d * t29;
+    const double t45 = t44 - t43;
+    const double t46 = k->c * (k->z_alpha * (k->d * (k->y_beta * t32 - k->l_beta) + k->e *
+        (k->n_beta * t27 - k->y_beta * k->n_p)) + t42);
+    const double t47 = t30 * (t46 + k->e * (k->m_alpha * t45)) + t28 * (k->d * (k->m_alpha *
+        (k->y_beta * t36 - k->l_beta)) + k->m_q * t42);
+    const double t48 = k->y_beta * (t29 * (t33 + k->d * k->l_r - t29 * (k->d * k->e)) + (t37 -
+        k->l_r * k->n_p));
+    const double t49 = k->m_q * (t48 + (k->l_beta * t45 + k->n_beta * (k->l_p + t27 * t41))) + k->c
+        * (k->e * (t7 * (t30 * t30)));
+    const double t50 = k->y_beta * (k->e * (t29 * (t44 - k->n_p) + t30 * (k->n_r * t28)) + (k->l_r *
+        (k->n_p - t44) - t37));
+    const double t51 = k->z_alpha * t49 + k->m_alpha * (t50 + (k->n_beta * (k->e * (t28 * t30 + t27
+        * t29) - t34) + k->l_beta * (t43 - t44)));
+    return p0 * (p0 * (t40 + (t39 + (t38 + k->m_q * (k->n_p * t36 + t37)))) + t47) + t51;
 }
 
 /// det K (Eq. 27) at the zero-sideslip trim of `p0` (section V.D, Fig. 11), 1/s^4: its
-/// zeros mark the departure (transcritical point) of the zero-sideslip roll.
+/// zeros mark the departure (transcritical point) of the zero-sideslip roll. K0, g, h
+/// and d are those of [`det_k`] with `beta0 = 0`.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -578,14 +654,23 @@ ROLL_CRITERION_API double rc_zero_sideslip_det_k(const struct rc_derivatives *k,
     const double t11 = p0 * (k->m_q + k->c * k->y_beta);
     const double t12 = p0 * (k->n_r + k->d * k->z_alpha);
     const double t13 = k->n_beta + k->y_beta * k->n_r - k->d * t9;
-    return t10 * t13 + t11 * t12 - ((t3 * (p0 * k->l_r) + t5 * (k->e * k->z_alpha) + t4 * t8) * (t7
-        * t11 - t6 * t13) + (t3 * (k->l_beta + k->y_beta * k->l_r) - t5 * t8 + t4 * (k->e *
-        k->y_beta)) * (t7 * t10 + t6 * t12)) / (k->l_p * (t3 * t3) + k->l_r * (t1 * t3) + k->e * (t1
-        * t4));
+    const double t14 = (t3 * (k->l_beta + k->y_beta * k->l_r) - t5 * t8 + t4 * (k->e * k->y_beta)) *
+        (t7 * t10 + t6 * t12);
+    const double t15 = (t3 * (p0 * k->l_r) + t5 * (k->e * k->z_alpha) + t4 * t8) * (t7 * t11 - t6 *
+        t13) + t14;
+    return t10 * t13 + t11 * t12 - t15 / (k->l_p * (t3 * t3) + k->l_r * (t1 * t3) + k->e * (t1 *
+        t4));
 }
 
-/// Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive
-/// roots are the pitch-yaw divergence roll rates of Table 1.
+/// Coefficients [c0, c2, c4] of `det A = c4 P0^4 + c2 P0^2 + c0` (Eq. 5); its
+/// positive roots are the pitch-yaw divergence roll rates of Table 1.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c0 = -m_alpha*n_beta + z_alpha*m_q*n_beta - y_beta*m_alpha*n_r + z_alpha*y_beta*m_q*n_r
+/// c2 = -C*n_beta + D*m_alpha + m_q*n_r + C*D*z_alpha*y_beta
+/// c4 = C*D
+/// ```
 ///
 /// Cost after CSE: 5 add/sub, 10 mul, 0 div, 0 neg, 0 libm (15 operations); straight-line, no branches.
 /// Rust: `roll_criterion::divergence_biquadratic`, bit-identical.
@@ -600,23 +685,28 @@ ROLL_CRITERION_API struct rc_array3 rc_divergence_biquadratic(const struct rc_de
     return result;
 }
 
-/// The divergence roll rates P1, P2 of Eq. 5 (Table 1), rad/s:
-/// `P = sqrt((-c2 -+ sqrt(c2^2 - 4 c4 c0)) / (2 c4))`, ascending when c4 = C D > 0.
-/// NaN for a root that does not exist (negative discriminant or P0^2 < 0), without a branch.
+/// The divergence roll rates P1 <= P2 of Eq. 5 (Table 1), rad/s, the positive roots of
+/// `det A = c4 P0^4 + c2 P0^2 + c0` ([`divergence_biquadratic`]), by the cancellation-free
+/// quadratic formula in `P0^2`: `q = -(c2 + copysign(sqrt(c2^2 - 4 c4 c0), c2)) / 2`,
+/// `P1 = sqrt(c0 / q)` (the root of smaller magnitude), `P2 = sqrt(q / c4)`. Both are
+/// accurate to a few ulps of well-conditioned coefficients even when one root is tiny
+/// against the other (the textbook `(-c2 -+ sqrt(...)) / (2 c4)` loses the small one to
+/// cancellation); `c4 = 0` gives `P1 = sqrt(-c0 / c2)`. NaN for a root that does not
+/// exist (negative discriminant or `P0^2 < 0`), without a branch.
 ///
-/// Cost after CSE: 8 add/sub, 14 mul, 2 div, 1 neg, 3 libm (28 operations); straight-line, no branches.
+/// Cost after CSE: 7 add/sub, 14 mul, 2 div, 2 neg, 4 libm (29 operations); straight-line, no branches.
 /// Rust: `roll_criterion::divergence_roll_rates`, bit-identical.
 ROLL_CRITERION_API struct rc_array2 rc_divergence_roll_rates(const struct rc_derivatives *k)
 {
     const double t0 = k->n_beta + k->y_beta * k->n_r;
-    const double t1 = k->c * (k->y_beta * (k->d * k->z_alpha) - k->n_beta) + (k->m_q * k->n_r + k->d
+    const double t1 = k->z_alpha * (k->m_q * t0) - k->m_alpha * t0;
+    const double t2 = k->c * (k->y_beta * (k->d * k->z_alpha) - k->n_beta) + (k->m_q * k->n_r + k->d
         * k->m_alpha);
-    const double t2 = k->c * k->d;
-    const double t3 = sqrt(t1 * t1 - 4.0 * ((k->z_alpha * (k->m_q * t0) - k->m_alpha * t0) * t2));
-    const double t4 = t2 * 2.0;
+    const double t3 = k->c * k->d;
+    const double t4 = 0.5 * (t2 + copysign(sqrt(t2 * t2 - 4.0 * (t1 * t3)), t2));
     struct rc_array2 result;
-    result.v[0] = sqrt(-((t1 + t3) / t4));
-    result.v[1] = sqrt((t3 - t1) / t4);
+    result.v[0] = sqrt(-(t1 / t4));
+    result.v[1] = sqrt(-(t4 / t3));
     return result;
 }
 
@@ -629,7 +719,7 @@ ROLL_CRITERION_API struct rc_array2 rc_divergence_roll_rates(const struct rc_der
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 291 add/sub, 433 mul, 0 div, 1 neg, 1 libm (726 operations); straight-line, no branches.
+/// Cost after CSE: 272 add/sub, 452 mul, 0 div, 1 neg, 1 libm (726 operations); straight-line, no branches.
 /// Rust: `roll_criterion::jump_polynomial`, bit-identical.
 ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivatives *k,
     double delta_e, double delta_r)
@@ -665,183 +755,188 @@ ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivati
     const double t28 = k->c * (t26 - k->n_beta) + (k->m_q * k->n_r + t27);
     const double t29 = k->c * k->d;
     const double t30 = t25 * t25;
-    const double t31 = t25 * t28;
-    const double t32 = t25 * t29;
-    const double t33 = t31 + t31;
-    const double t34 = t28 * t29;
-    const double t35 = t32 + (t32 + t28 * t28);
-    const double t36 = t34 + t34;
-    const double t37 = t29 * t29;
-    const double t38 = k->l_r * k->n_p;
-    const double t39 = k->l_p * k->n_r;
-    const double t40 = k->l_beta * k->n_p;
-    const double t41 = k->l_p * k->n_beta;
-    const double t42 = k->z_alpha * (k->m_q * (k->y_beta * (t39 - t38) + (t41 - t40))) + k->m_alpha
-        * (k->y_beta * (t38 - t39) + (t40 - t41));
-    const double t43 = k->l_r * k->m_q;
-    const double t44 = k->c * k->l_beta;
-    const double t45 = k->l_p * t28 + k->n_p * (t44 - t43);
-    const double t46 = k->l_p * t29;
-    const double t47 = t21 * t25;
-    const double t48 = t22 * t25;
-    const double t49 = t21 * t28 - t23 * t25;
-    const double t50 = t22 * t28 - t9 * t25;
-    const double t51 = t21 * t29 - t23 * t28;
-    const double t52 = t22 * t29 - t9 * t28;
-    const double t53 = t23 * t29;
-    const double t54 = t9 * t29;
-    const double t55 = k->l_beta + k->y_beta * k->l_r;
-    const double t56 = k->l_beta * k->n_r;
-    const double t57 = k->l_r * k->n_beta;
-    const double t58 = t57 - t56;
-    const double t59 = k->c * (t58 - k->z_alpha * (k->d * t55 + k->n_p * (k->e * k->y_beta))) -
+    const double t31 = t25 * t28 * 2.0;
+    const double t32 = t28 * t28 + t25 * t29 * 2.0;
+    const double t33 = 2.0 * (t28 * t29);
+    const double t34 = t29 * t29;
+    const double t35 = k->l_r * k->n_p;
+    const double t36 = k->l_p * k->n_r;
+    const double t37 = k->l_beta * k->n_p;
+    const double t38 = k->l_p * k->n_beta;
+    const double t39 = k->z_alpha * (k->m_q * (k->y_beta * (t36 - t35) + (t38 - t37))) + k->m_alpha
+        * (k->y_beta * (t35 - t36) + (t37 - t38));
+    const double t40 = k->l_r * k->m_q;
+    const double t41 = k->c * k->l_beta;
+    const double t42 = k->l_p * t28 + k->n_p * (t41 - t40);
+    const double t43 = k->l_p * t29;
+    const double t44 = t21 * t25;
+    const double t45 = t22 * t25;
+    const double t46 = t21 * t28 - t23 * t25;
+    const double t47 = t22 * t28 - t9 * t25;
+    const double t48 = t21 * t29 - t23 * t28;
+    const double t49 = t22 * t29 - t9 * t28;
+    const double t50 = t23 * t29;
+    const double t51 = t9 * t29;
+    const double t52 = k->l_beta + k->y_beta * k->l_r;
+    const double t53 = k->l_beta * k->n_r;
+    const double t54 = k->l_r * k->n_beta;
+    const double t55 = t54 - t53;
+    const double t56 = k->c * (t55 - k->z_alpha * (k->d * t52 + k->n_p * (k->e * k->y_beta))) -
         k->n_p * (k->e * k->m_alpha);
-    const double t60 = k->c * (k->e * k->n_p + k->d * k->l_r);
-    const double t61 = t21 * t21;
-    const double t62 = t21 * t22;
-    const double t63 = t21 * t23;
-    const double t64 = t9 * t21;
-    const double t65 = t62 + t62;
-    const double t66 = t22 * t23;
-    const double t67 = t9 * t22;
-    const double t68 = t22 * t22 - t63 - t63;
-    const double t69 = t9 * t23;
-    const double t70 = t64 + (t66 + (t64 + t66));
-    const double t71 = t23 * t23 - t67 - t67;
-    const double t72 = t69 + t69;
-    const double t73 = t9 * t9;
-    const double t74 = k->c * (k->e * (k->z_alpha * t0));
-    const double t75 = k->c * k->e;
-    const double t76 = k->n_r * t75;
-    const double t77 = t16 * t25;
-    const double t78 = t19 * t25;
-    const double t79 = t14 * t25;
-    const double t80 = t15 * t25;
-    const double t81 = t20 * t25 - t16 * t28;
-    const double t82 = t79 + t19 * t28;
-    const double t83 = t14 * t28;
-    const double t84 = t15 * t28;
-    const double t85 = t80 + t20 * t28 - t16 * t29;
-    const double t86 = t83 + t19 * t29;
-    const double t87 = t84 + t20 * t29;
-    const double t88 = t14 * t29;
-    const double t89 = t15 * t29;
-    const double t90 = k->m_alpha * t55;
-    const double t91 = k->d * (k->z_alpha * (k->m_q * t55) - t90) + k->e * (k->y_beta * (k->n_p *
+    const double t57 = k->c * (k->e * k->n_p + k->d * k->l_r);
+    const double t58 = t21 * t21;
+    const double t59 = 2.0 * (t21 * t22);
+    const double t60 = t22 * t22 - 2.0 * (t21 * t23);
+    const double t61 = 2.0 * (t9 * t21) + 2.0 * (t22 * t23);
+    const double t62 = t23 * t23 - 2.0 * (t9 * t22);
+    const double t63 = 2.0 * (t9 * t23);
+    const double t64 = t9 * t9;
+    const double t65 = k->c * (k->e * (k->z_alpha * t0));
+    const double t66 = k->c * k->e;
+    const double t67 = k->n_r * t66;
+    const double t68 = t16 * t25;
+    const double t69 = t19 * t25;
+    const double t70 = t14 * t25;
+    const double t71 = t15 * t25;
+    const double t72 = t20 * t25 - t16 * t28;
+    const double t73 = t70 + t19 * t28;
+    const double t74 = t14 * t28;
+    const double t75 = t15 * t28;
+    const double t76 = t71 + t20 * t28 - t16 * t29;
+    const double t77 = t74 + t19 * t29;
+    const double t78 = t75 + t20 * t29;
+    const double t79 = t14 * t29;
+    const double t80 = t15 * t29;
+    const double t81 = k->m_alpha * t52;
+    const double t82 = k->d * (k->z_alpha * (k->m_q * t52) - t81) + k->e * (k->y_beta * (k->n_p *
         (t6 - k->m_alpha)));
-    const double t92 = k->d * (t43 - t44) + k->n_p * (k->e * k->m_q);
-    const double t93 = t16 * t21;
-    const double t94 = t19 * t21 - t16 * t22;
-    const double t95 = t16 * t23 + t19 * t22 + t20 * t21;
-    const double t96 = t14 * t21;
-    const double t97 = t9 * t16 - t19 * t23 + t20 * t22 + t96;
-    const double t98 = t14 * t22;
-    const double t99 = t14 * t23;
-    const double t100 = t15 * t21;
-    const double t101 = t98 - (t9 * t19 + t20 * t23) + t100;
-    const double t102 = t15 * t22;
-    const double t103 = t102 - (t9 * t20 + t99);
-    const double t104 = t9 * t14 + t15 * t23;
-    const double t105 = t9 * t15;
-    const double t106 = k->e * (t27 + k->c * (t26 * 2.0 - k->n_beta));
-    const double t107 = 2.0 * (k->e * t29);
-    const double t108 = t16 * t16;
-    const double t109 = t16 * t19;
-    const double t110 = t16 * t20;
-    const double t111 = t14 * t16;
-    const double t112 = t15 * t16;
-    const double t113 = t109 + t109;
-    const double t114 = t19 * t20;
-    const double t115 = t14 * t19;
-    const double t116 = t15 * t19;
-    const double t117 = t19 * t19 - t110 - t110;
-    const double t118 = t14 * t20;
-    const double t119 = t15 * t20;
-    const double t120 = t114 + (t114 - t111) - t111;
-    const double t121 = t14 * t14;
-    const double t122 = t14 * t15;
-    const double t123 = t115 + (t115 - t112 + t20 * t20) - t112;
-    const double t124 = t116 + (t118 + (t116 + t118));
-    const double t125 = t119 + (t119 + t121);
-    const double t126 = t122 + t122;
-    const double t127 = t15 * t15;
-    const double t128 = k->d * (k->e * (k->y_beta * t7));
-    const double t129 = k->d * k->e;
-    const double t130 = k->m_q * t129;
-    const double t131 = t8 * t25;
-    const double t132 = t13 * t25;
-    const double t133 = t79 + t8 * t28;
-    const double t134 = t80 + t13 * t28;
-    const double t135 = t83 + t8 * t29;
-    const double t136 = t84 + t13 * t29;
-    const double t137 = k->m_q * t58;
-    const double t138 = t137 - k->d * t90;
-    const double t139 = k->l_beta * t29;
-    const double t140 = t8 * t21;
-    const double t141 = t8 * t22 + t13 * t21;
-    const double t142 = t96 + (t13 * t22 - t8 * t23);
-    const double t143 = t100 + (t98 - (t8 * t9 + t13 * t23));
-    const double t144 = t102 - (t99 + t9 * t13);
-    const double t145 = k->e * t24;
-    const double t146 = k->n_beta * t75;
-    const double t147 = k->e * (k->m_alpha * (k->d * k->y_beta) - k->m_q * k->n_beta);
-    const double t148 = t1 * t25;
-    const double t149 = t3 * t25;
-    const double t150 = t1 * t28 - t5 * t25;
-    const double t151 = t3 * t28;
-    const double t152 = t1 * t29 - t5 * t28;
-    const double t153 = t3 * t29;
-    const double t154 = t5 * t29;
-    const double t155 = k->z_alpha * t137 + k->m_alpha * (t56 - t57);
-    const double t156 = k->d * (k->l_r * k->m_alpha - k->l_beta * t17);
+    const double t83 = k->d * (t40 - t41) + k->n_p * (k->e * k->m_q);
+    const double t84 = t16 * t21;
+    const double t85 = t19 * t21 - t16 * t22;
+    const double t86 = t16 * t23 + t19 * t22 + t20 * t21;
+    const double t87 = t14 * t21;
+    const double t88 = t9 * t16 - t19 * t23 + t20 * t22 + t87;
+    const double t89 = t14 * t22;
+    const double t90 = t14 * t23;
+    const double t91 = t15 * t21;
+    const double t92 = t89 - (t9 * t19 + t20 * t23) + t91;
+    const double t93 = t15 * t22;
+    const double t94 = t93 - (t9 * t20 + t90);
+    const double t95 = t9 * t14 + t15 * t23;
+    const double t96 = t9 * t15;
+    const double t97 = k->e * (t27 + k->c * (t26 * 2.0 - k->n_beta));
+    const double t98 = 2.0 * (k->e * t29);
+    const double t99 = t32 * t39 + t31 * t42 + t30 * t43 + (t47 * t56 - t45 * t57) + (t62 * t65 +
+        t60 * t67) + (t76 * t82 + t72 * t83);
+    const double t100 = t33 * t39 + t32 * t42 + t31 * t43 + (t49 * t56 - t47 * t57) + (t64 * t65 +
+        t62 * t67) + (t78 * t82 + t76 * t83);
+    const double t101 = t34 * t39 + t33 * t42 + t32 * t43 - (t51 * t56 + t49 * t57) + t64 * t67 +
+        (t80 * t82 + t78 * t83);
+    const double t102 = t16 * t16;
+    const double t103 = t14 * t16;
+    const double t104 = t15 * t16;
+    const double t105 = 2.0 * (t16 * t19);
+    const double t106 = t14 * t19;
+    const double t107 = t15 * t19;
+    const double t108 = t19 * t19 - 2.0 * (t16 * t20);
+    const double t109 = t14 * t20;
+    const double t110 = t15 * t20;
+    const double t111 = 2.0 * (t19 * t20) - 2.0 * t103;
+    const double t112 = t14 * t14;
+    const double t113 = t20 * t20 + (2.0 * t106 - 2.0 * t104);
+    const double t114 = 2.0 * t107 + 2.0 * t109;
+    const double t115 = t112 + 2.0 * t110;
+    const double t116 = 2.0 * (t14 * t15);
+    const double t117 = t15 * t15;
+    const double t118 = k->d * (k->e * (k->y_beta * t7));
+    const double t119 = k->d * k->e;
+    const double t120 = k->m_q * t119;
+    const double t121 = t31 * t39 + t30 * t42 + t45 * t56 + (t60 * t65 + t58 * t67) + (t72 * t82 -
+        t68 * t83) + t85 * t97;
+    const double t122 = t46 * t56 - t44 * t57 + (t59 * t67 - t61 * t65) + (t73 * t82 + t69 * t83) +
+        (t86 * t97 - t84 * t98);
+    const double t123 = t48 * t56 - t46 * t57 + (t63 * t65 - t61 * t67) + (t77 * t82 + t73 * t83) +
+        (t92 * t97 + t86 * t98);
+    const double t124 = t8 * t25;
+    const double t125 = t13 * t25;
+    const double t126 = t70 + t8 * t28;
+    const double t127 = t71 + t13 * t28;
+    const double t128 = t74 + t8 * t29;
+    const double t129 = t75 + t13 * t29;
+    const double t130 = k->m_q * t55;
+    const double t131 = t130 - k->d * t81;
+    const double t132 = k->l_beta * t29;
+    const double t133 = t63 * t67 - (t50 * t56 + t48 * t57) + (t79 * t82 + t77 * t83) + (t92 * t98 -
+        t95 * t97) + (t116 * t118 - t114 * t120);
+    const double t134 = t8 * t21;
+    const double t135 = t8 * t22 + t13 * t21;
+    const double t136 = t87 + (t13 * t22 - t8 * t23);
+    const double t137 = t91 + (t89 - (t8 * t9 + t13 * t23));
+    const double t138 = t93 - (t90 + t9 * t13);
+    const double t139 = k->e * t24;
+    const double t140 = k->n_beta * t66;
+    const double t141 = k->e * (k->m_alpha * (k->d * k->y_beta) - k->m_q * k->n_beta);
+    const double t142 = t122 + (t111 * t118 + t105 * t120) + (t126 * t131 - t124 * t132) + (t137 *
+        t139 + t135 * t140);
+    const double t143 = t99 + (t88 * t97 + t85 * t98) + (t113 * t118 - t108 * t120) + (t127 * t131 -
+        t125 * t132) + (t138 * t139 + t136 * t140);
+    const double t144 = t123 + (t114 * t118 - t111 * t120) + (t128 * t131 - t126 * t132) + (t137 *
+        t140 - t95 * t139);
+    const double t145 = t100 + (t94 * t97 + t88 * t98) + (t115 * t118 - t113 * t120) + (t129 * t131
+        - t127 * t132) + (t138 * t140 - t96 * t139);
+    const double t146 = t1 * t25;
+    const double t147 = t3 * t25;
+    const double t148 = t1 * t28 - t5 * t25;
+    const double t149 = t3 * t28;
+    const double t150 = t1 * t29 - t5 * t28;
+    const double t151 = t3 * t29;
+    const double t152 = t5 * t29;
+    const double t153 = k->z_alpha * t130 + k->m_alpha * (t53 - t54);
+    const double t154 = k->d * (k->l_r * k->m_alpha - k->l_beta * t17);
+    const double t155 = t121 + (t108 * t118 - t102 * t120) + t125 * t131 + (t136 * t139 + t134 *
+        t140) + (t8 * t19 - t13 * t16) * t141;
+    const double t156 = t101 + (t94 * t98 - t96 * t97) + (t117 * t118 - t115 * t120) + (t80 * t131 -
+        t129 * t132) - t96 * t140 + t117 * t141;
     const double t157 = k->e * (k->n_beta * t17 - k->m_alpha * k->n_r);
-    const double t158 = t1 * t16;
-    const double t159 = t1 * t19 + t3 * t16;
-    const double t160 = t1 * t20 - t3 * t19 + t5 * t16;
-    const double t161 = t1 * t14 - t3 * t20 - t5 * t19;
-    const double t162 = t1 * t15 - t3 * t14 - t5 * t20;
-    const double t163 = t3 * t15 + t5 * t14;
-    const double t164 = t5 * t15;
-    const double t165 = k->e * (k->n_beta * t7);
-    const double t166 = k->m_alpha * t129;
-    const double t167 = 1.0 + sqrt(-(k->n_delta_a * k->n_delta_a));
+    const double t158 = t44 * t56 + t59 * t65 + t69 * t82 - t84 * t97 - t105 * t118 + t124 * t131 +
+        t135 * t139 - t8 * t16 * t141 - t147 * t153;
+    const double t159 = t143 + (t106 + (t8 * t14 + t13 * t20) - t104) * t141 + (t150 * t153 + t148 *
+        t154);
+    const double t160 = t1 * t16;
+    const double t161 = t1 * t19 + t3 * t16;
+    const double t162 = t1 * t20 - t3 * t19 + t5 * t16;
+    const double t163 = t1 * t14 - t3 * t20 - t5 * t19;
+    const double t164 = t1 * t15 - t3 * t14 - t5 * t20;
+    const double t165 = t3 * t15 + t5 * t14;
+    const double t166 = t5 * t15;
+    const double t167 = k->e * (k->n_beta * t7);
+    const double t168 = k->m_alpha * t119;
+    const double t169 = t142 + (t8 * t20 + t13 * t19 - t103) * t141 - (t149 * t153 + t147 * t154) -
+        (t1 * t23 + t3 * t22 + t5 * t21) * t157;
+    const double t170 = t144 + (t107 + (t109 + (t8 * t15 + t13 * t14))) * t141 - (t151 * t153 + t149
+        * t154) + (t3 * t9 + t5 * t23) * t157;
+    const double t171 = 1.0 + sqrt(-(k->n_delta_a * k->n_delta_a));
+    const double t172 = t145 + (t110 + (t112 + t13 * t15)) * t141 + (t150 * t154 - t152 * t153) + t5
+        * t9 * t157 - (t166 * t167 + t164 * t168);
     struct rc_array13 result;
-    result.v[0] = (t30 * t42 + t61 * t74 - t77 * t91 + t108 * t128 + t140 * t145 + t148 * t155 -
-        t158 * t165) * t167;
-    result.v[1] = (t47 * t59 + t65 * t74 + t78 * t91 - t93 * t106 - t113 * t128 + t131 * t138 + t141
-        * t145 - t8 * t16 * t147 - t149 * t155 + t1 * t21 * t157 + t159 * t165) * t167;
-    result.v[2] = (t33 * t42 + t30 * t45 + t48 * t59 + (t68 * t74 + t61 * t76) + (t81 * t91 - t77 *
-        t92) + t94 * t106 + (t117 * t128 - t108 * t130) + t132 * t138 + (t142 * t145 + t140 * t146)
-        + (t8 * t19 - t13 * t16) * t147 + (t150 * t155 + t148 * t156) + (t1 * t22 - t3 * t21) * t157
-        + (t160 * t165 + t158 * t166)) * t167;
-    result.v[3] = (t49 * t59 - t47 * t60 + (t65 * t76 - t70 * t74) + (t82 * t91 + t78 * t92) + (t95
-        * t106 - t93 * t107) + (t120 * t128 + t113 * t130) + (t133 * t138 - t131 * t139) + (t143 *
-        t145 + t141 * t146) + (t8 * t20 + t13 * t19 - t111) * t147 - (t151 * t155 + t149 * t156) -
-        (t1 * t23 + t3 * t22 + t5 * t21) * t157 + (t161 * t165 - t159 * t166)) * t167;
-    result.v[4] = (t35 * t42 + t33 * t45 + t30 * t46 + (t50 * t59 - t48 * t60) + (t71 * t74 + t68 *
-        t76) + (t85 * t91 + t81 * t92) + (t97 * t106 + t94 * t107) + (t123 * t128 - t117 * t130) +
-        (t134 * t138 - t132 * t139) + (t144 * t145 + t142 * t146) + (t115 + (t8 * t14 + t13 * t20) -
-        t112) * t147 + (t152 * t155 + t150 * t156) + (t3 * t23 - t1 * t9 - t5 * t22) * t157 + (t162
-        * t165 - t160 * t166)) * t167;
-    result.v[5] = (t51 * t59 - t49 * t60 + (t72 * t74 - t70 * t76) + (t86 * t91 + t82 * t92) + (t101
-        * t106 + t95 * t107) + (t124 * t128 - t120 * t130) + (t135 * t138 - t133 * t139) + (t143 *
-        t146 - t104 * t145) + (t116 + (t118 + (t8 * t15 + t13 * t14))) * t147 - (t153 * t155 + t151
-        * t156) + (t3 * t9 + t5 * t23) * t157 - (t163 * t165 + t161 * t166)) * t167;
-    result.v[6] = (t36 * t42 + t35 * t45 + t33 * t46 + (t52 * t59 - t50 * t60) + (t73 * t74 + t71 *
-        t76) + (t87 * t91 + t85 * t92) + (t103 * t106 + t97 * t107) + (t125 * t128 - t123 * t130) +
-        (t136 * t138 - t134 * t139) + (t144 * t146 - t105 * t145) + (t119 + (t121 + t13 * t15)) *
-        t147 + (t152 * t156 - t154 * t155) + t5 * t9 * t157 - (t164 * t165 + t162 * t166)) * t167;
-    result.v[7] = (t72 * t76 - (t53 * t59 + t51 * t60) + (t88 * t91 + t86 * t92) + (t101 * t107 -
-        t104 * t106) + (t126 * t128 - t124 * t130) + (t88 * t138 - t135 * t139) - t104 * t146 + t126
-        * t147 - t153 * t156 + t163 * t166) * t167;
-    result.v[8] = (t37 * t42 + t36 * t45 + t35 * t46 - (t54 * t59 + t52 * t60) + t73 * t76 + (t89 *
-        t91 + t87 * t92) + (t103 * t107 - t105 * t106) + (t127 * t128 - t125 * t130) + (t89 * t138 -
-        t136 * t139) - t105 * t146 + t127 * t147 - t154 * t156 + t164 * t166) * t167;
-    result.v[9] = (t53 * t60 + t88 * t92 - t104 * t107 - t126 * t130 - t88 * t139) * t167;
-    result.v[10] = (t37 * t45 + t36 * t46 + t54 * t60 + t89 * t92 - t105 * t107 - t127 * t130 - t89
-        * t139) * t167;
+    result.v[0] = (t30 * t39 + t58 * t65 - t68 * t82 + t102 * t118 + t134 * t139 + t146 * t153 -
+        t160 * t167) * t171;
+    result.v[1] = (t158 + t1 * t21 * t157 + t161 * t167) * t171;
+    result.v[2] = (t155 + (t148 * t153 + t146 * t154) + (t1 * t22 - t3 * t21) * t157 + (t162 * t167
+        + t160 * t168)) * t171;
+    result.v[3] = (t169 + (t163 * t167 - t161 * t168)) * t171;
+    result.v[4] = (t159 + (t3 * t23 - t1 * t9 - t5 * t22) * t157 + (t164 * t167 - t162 * t168)) *
+        t171;
+    result.v[5] = (t170 - (t165 * t167 + t163 * t168)) * t171;
+    result.v[6] = t172 * t171;
+    result.v[7] = (t133 + (t79 * t131 - t128 * t132) - t95 * t140 + t116 * t141 - t151 * t154 + t165
+        * t168) * t171;
+    result.v[8] = (t156 - t152 * t154 + t166 * t168) * t171;
+    result.v[9] = (t50 * t57 + t79 * t83 - t95 * t98 - t116 * t120 - t79 * t132) * t171;
+    result.v[10] = (t34 * t42 + t33 * t43 + t51 * t57 + t80 * t83 - t96 * t98 - t117 * t120 - t80 *
+        t132) * t171;
     result.v[11] = 0.0;
-    result.v[12] = t37 * t46 * t167;
+    result.v[12] = t34 * t43 * t171;
     return result;
 }
 
@@ -851,7 +946,7 @@ ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivati
 /// Arguments:
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 57 add/sub, 116 mul, 0 div, 0 neg, 0 libm (173 operations); straight-line, no branches.
+/// Cost after CSE: 56 add/sub, 117 mul, 0 div, 0 neg, 0 libm (173 operations); straight-line, no branches.
 /// Rust: `roll_criterion::zero_sideslip_jump_polynomial`, bit-identical.
 ROLL_CRITERION_API struct rc_array9 rc_zero_sideslip_jump_polynomial(const struct rc_derivatives *k,
     double delta_e)
@@ -861,73 +956,84 @@ ROLL_CRITERION_API struct rc_array9 rc_zero_sideslip_jump_polynomial(const struc
     const double t2 = k->z_alpha * k->m_q;
     const double t3 = t2 - k->m_alpha;
     const double t4 = t3 * t3;
-    const double t5 = k->c * t3;
-    const double t6 = t5 + t5;
-    const double t7 = k->c * k->c;
-    const double t8 = k->l_r * k->n_p;
-    const double t9 = k->l_p * k->n_r;
-    const double t10 = k->l_beta * k->n_p;
-    const double t11 = k->l_p * k->n_beta;
-    const double t12 = k->z_alpha * (k->m_q * (k->y_beta * (t9 - t8) + (t11 - t10))) + k->m_alpha *
-        (k->y_beta * (t8 - t9) + (t10 - t11));
-    const double t13 = k->y_beta * (k->d * k->z_alpha);
-    const double t14 = k->d * k->m_alpha;
-    const double t15 = k->l_r * k->m_q;
-    const double t16 = k->c * k->l_beta;
-    const double t17 = k->l_p * (k->c * (t13 - k->n_beta) + (k->m_q * k->n_r + t14)) + k->n_p * (t16
-        - t15);
-    const double t18 = k->c * k->d;
-    const double t19 = k->l_p * t18;
-    const double t20 = t0 * t3;
-    const double t21 = k->c * t0;
-    const double t22 = k->l_beta + k->y_beta * k->l_r;
-    const double t23 = k->l_beta * k->n_r;
-    const double t24 = k->l_r * k->n_beta;
-    const double t25 = t24 - t23;
-    const double t26 = k->c * (t25 - k->z_alpha * (k->d * t22 + k->n_p * (k->e * k->y_beta))) -
+    const double t5 = k->c * t3 * 2.0;
+    const double t6 = k->c * k->c;
+    const double t7 = k->l_r * k->n_p;
+    const double t8 = k->l_p * k->n_r;
+    const double t9 = k->l_beta * k->n_p;
+    const double t10 = k->l_p * k->n_beta;
+    const double t11 = k->z_alpha * (k->m_q * (k->y_beta * (t8 - t7) + (t10 - t9))) + k->m_alpha *
+        (k->y_beta * (t7 - t8) + (t9 - t10));
+    const double t12 = k->y_beta * (k->d * k->z_alpha);
+    const double t13 = k->d * k->m_alpha;
+    const double t14 = k->l_r * k->m_q;
+    const double t15 = k->c * k->l_beta;
+    const double t16 = k->l_p * (k->c * (t12 - k->n_beta) + (k->m_q * k->n_r + t13)) + k->n_p * (t15
+        - t14);
+    const double t17 = k->c * k->d;
+    const double t18 = k->l_p * t17;
+    const double t19 = t0 * t3;
+    const double t20 = k->c * t0;
+    const double t21 = k->l_beta + k->y_beta * k->l_r;
+    const double t22 = k->l_beta * k->n_r;
+    const double t23 = k->l_r * k->n_beta;
+    const double t24 = t23 - t22;
+    const double t25 = k->c * (t24 - k->z_alpha * (k->d * t21 + k->n_p * (k->e * k->y_beta))) -
         k->n_p * (k->e * k->m_alpha);
-    const double t27 = k->c * (k->e * k->n_p + k->d * k->l_r);
-    const double t28 = t0 * t0;
-    const double t29 = t1 * t3;
-    const double t30 = k->c * t1;
-    const double t31 = k->d * (k->z_alpha * (k->m_q * t22) - k->m_alpha * t22) + k->e * (k->y_beta *
+    const double t26 = k->c * (k->e * k->n_p + k->d * k->l_r);
+    const double t27 = t0 * t0;
+    const double t28 = t1 * t3;
+    const double t29 = k->c * t1;
+    const double t30 = k->d * (k->z_alpha * (k->m_q * t21) - k->m_alpha * t21) + k->e * (k->y_beta *
         (k->n_p * t3));
-    const double t32 = k->d * (t15 - t16) + k->n_p * (k->e * k->m_q);
+    const double t31 = k->d * (t14 - t15) + k->n_p * (k->e * k->m_q);
+    const double t32 = t4 * t16 - t5 * t11 + t19 * t25 + t27 * (k->c * (k->e * (k->z_alpha *
+        (k->n_beta + k->y_beta * k->n_r))));
     const double t33 = t0 * t1;
-    const double t34 = t1 * t1;
-    const double t35 = k->m_alpha - t2;
-    const double t36 = k->d * k->e;
-    const double t37 = k->z_alpha * (k->m_q * t25) + k->m_alpha * (t23 - t24);
-    const double t38 = k->c * k->z_alpha;
-    const double t39 = k->d * (k->l_r * k->m_alpha - k->l_beta * t38);
+    const double t34 = t6 * t11 - t5 * t16 + t4 * t18 - (t20 * t25 + t19 * t26) + t27 * (k->n_r *
+        (k->c * k->e)) + t29 * t31;
+    const double t35 = t1 * t1;
+    const double t36 = k->m_alpha - t2;
+    const double t37 = k->d * k->e;
+    const double t38 = k->z_alpha * (k->m_q * t24) + k->m_alpha * (t22 - t23);
+    const double t39 = k->c * k->z_alpha;
+    const double t40 = k->d * (k->l_r * k->m_alpha - k->l_beta * t39);
+    const double t41 = t32 + (t29 * t30 - t28 * t31) - t33 * (k->e * (t13 + k->c * (t12 * 2.0 -
+        k->n_beta))) - t35 * (k->m_q * t37);
     struct rc_array9 result;
-    result.v[0] = t4 * t12 - t29 * t31 + t34 * (k->d * (k->e * (k->y_beta * t35))) + t20 * t37 - t33
-        * (k->e * (k->n_beta * t35));
+    result.v[0] = t4 * t11 - t28 * t30 + t35 * (k->d * (k->e * (k->y_beta * t36))) + t19 * t38 - t33
+        * (k->e * (k->n_beta * t36));
     result.v[1] = 0.0;
-    result.v[2] = t4 * t17 - t6 * t12 + t20 * t26 + t28 * (k->c * (k->e * (k->z_alpha * (k->n_beta +
-        k->y_beta * k->n_r)))) + (t30 * t31 - t29 * t32) - t33 * (k->e * (t14 + k->c * (t13 * 2.0 -
-        k->n_beta))) - t34 * (k->m_q * t36) + (t20 * t39 - t21 * t37) + t28 * (k->e * (k->n_beta *
-        t38 - k->m_alpha * k->n_r)) + t33 * (k->m_alpha * t36);
+    result.v[2] = t41 + (t19 * t40 - t20 * t38) + t27 * (k->e * (k->n_beta * t39 - k->m_alpha *
+        k->n_r)) + t33 * (k->m_alpha * t37);
     result.v[3] = 0.0;
-    result.v[4] = t7 * t12 - t6 * t17 + t4 * t19 - (t21 * t26 + t20 * t27) + t28 * (k->n_r * (k->c *
-        k->e)) + t30 * t32 - t33 * (2.0 * (k->e * t18)) - t21 * t39;
+    result.v[4] = t34 - t33 * (2.0 * (k->e * t17)) - t20 * t40;
     result.v[5] = 0.0;
-    result.v[6] = t7 * t17 - t6 * t19 + t21 * t27;
+    result.v[6] = t6 * t16 - t5 * t18 + t20 * t26;
     result.v[7] = 0.0;
-    result.v[8] = t7 * t19;
+    result.v[8] = t6 * t18;
     return result;
 }
 
 /// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
 /// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
-/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10).
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3
+/// to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c1 = -z_alpha - y_beta - l_p - m_q - n_r
+/// c2 = -m_alpha + n_beta + z_alpha*y_beta + z_alpha*l_p + z_alpha*m_q + z_alpha*n_r + y_beta*l_p
+///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha0 + m_q*n_r
+///          + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 191 add/sub, 244 mul, 3 div, 1 neg, 1 libm (440 operations); straight-line, no branches.
+/// Cost after CSE: 190 add/sub, 245 mul, 3 div, 1 neg, 1 libm (440 operations); straight-line, no branches.
 /// Rust: `roll_criterion::characteristic_coefficients`, bit-identical.
 ROLL_CRITERION_API struct rc_array5 rc_characteristic_coefficients(const struct rc_derivatives *k,
     double p0, double delta_e, double delta_r)
@@ -939,35 +1045,36 @@ ROLL_CRITERION_API struct rc_array5 rc_characteristic_coefficients(const struct 
     const double t4 = k->m_q * k->n_r;
     const double t5 = t4 + t0 * t1;
     const double t6 = k->m_alpha * k->n_r;
-    const double t7 = p0 * t1;
-    const double t8 = k->n_beta + k->y_beta * k->n_r;
-    const double t9 = p0 * k->m_q;
-    const double t10 = k->y_beta * t0;
-    const double t11 = t9 + t10;
-    const double t12 = p0 * k->n_r;
-    const double t13 = k->m_alpha + p0 * t0;
-    const double t14 = k->z_alpha * k->m_q - t13;
-    const double t15 = k->z_alpha * t10 + p0 * t13;
-    const double t16 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t9 - k->y_beta * k->m_alpha;
-    const double t17 = 1.0 / (k->z_alpha * (k->y_beta * t5 + k->m_q * k->n_beta) + p0 * (p0 * t5 +
-        k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * t6 + k->m_alpha * k->n_beta));
-    const double t18 = (t2 * (k->z_alpha * t1 + t12) + t3 * t14) * t17;
-    const double t19 = (t3 * t15 - t2 * (k->z_alpha * t8 + p0 * t12)) * t17;
-    const double t20 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t7)) - t3 *
-        t16) * t17;
-    const double t21 = t17 * (k->n_delta_a * t14);
-    const double t22 = t17 * (k->n_delta_a * t15);
-    const double t23 = t17 * (k->n_delta_a * t16);
-    const double t24 = k->l_r - k->e * t19;
-    const double t25 = t20 * t24 + (delta_r * k->l_delta_r - k->l_beta * t18 + p0 * k->l_p);
-    const double t26 = k->e * 0.5 * (t22 * t23);
-    const double t27 = k->l_delta_a - k->l_beta * t21 - t22 * (k->e * t20) - t23 * t24;
-    const double t28 = t25 * 2.0 / (t27 * (1.0 + sqrt(1.0 - t25 * (t26 + t26) / (t27 * t27) *
-        4.0)));
-    const double t29 = t17 * (k->n_delta_a * t11) * t28 - (t2 * (t7 - t8) + t3 * t11) * t17;
-    const double t30 = t21 * t28 - t18;
-    const double t31 = t19 - t22 * t28;
-    const double t32 = t20 + t23 * t28;
+    const double t7 = k->z_alpha * (k->y_beta * t5 + k->m_q * k->n_beta) + p0 * (p0 * t5 +
+        k->m_alpha * t1);
+    const double t8 = p0 * t1;
+    const double t9 = k->n_beta + k->y_beta * k->n_r;
+    const double t10 = p0 * k->m_q;
+    const double t11 = k->y_beta * t0;
+    const double t12 = t10 + t11;
+    const double t13 = p0 * k->n_r;
+    const double t14 = k->m_alpha + p0 * t0;
+    const double t15 = k->z_alpha * k->m_q - t14;
+    const double t16 = k->z_alpha * t11 + p0 * t14;
+    const double t17 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t10 - k->y_beta * k->m_alpha;
+    const double t18 = 1.0 / (t7 - (p0 * (k->n_beta * t0) + k->y_beta * t6 + k->m_alpha *
+        k->n_beta));
+    const double t19 = (t2 * (k->z_alpha * t1 + t13) + t3 * t15) * t18;
+    const double t20 = (t3 * t16 - t2 * (k->z_alpha * t9 + p0 * t13)) * t18;
+    const double t21 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t8)) - t3 *
+        t17) * t18;
+    const double t22 = t18 * (k->n_delta_a * t15);
+    const double t23 = t18 * (k->n_delta_a * t16);
+    const double t24 = t18 * (k->n_delta_a * t17);
+    const double t25 = k->l_r - k->e * t20;
+    const double t26 = t21 * t25 + (delta_r * k->l_delta_r - k->l_beta * t19 + p0 * k->l_p);
+    const double t27 = k->l_delta_a - k->l_beta * t22 - t23 * (k->e * t21) - t24 * t25;
+    const double t28 = t26 * 2.0 / (t27 * (1.0 + sqrt(1.0 - t26 * (k->e * 0.5 * (t23 * t24) * 2.0) /
+        (t27 * t27) * 4.0)));
+    const double t29 = t18 * (k->n_delta_a * t12) * t28 - (t2 * (t8 - t9) + t3 * t12) * t18;
+    const double t30 = t22 * t28 - t19;
+    const double t31 = t20 - t23 * t28;
+    const double t32 = t21 + t24 * t28;
     const double t33 = k->m_q + k->n_r;
     const double t34 = k->l_p + t33;
     const double t35 = k->y_beta + t34;
@@ -989,76 +1096,98 @@ ROLL_CRITERION_API struct rc_array5 rc_characteristic_coefficients(const struct 
     const double t51 = k->n_beta * t29;
     const double t52 = k->c * k->d;
     const double t53 = k->y_beta + k->n_r;
-    const double t54 = k->l_p + k->n_r;
-    const double t55 = k->y_beta * t54;
-    const double t56 = k->d * t31;
-    const double t57 = k->n_p - t56;
-    const double t58 = k->l_r * t57;
-    const double t59 = k->l_p * k->n_r;
-    const double t60 = k->y_beta + k->l_p;
-    const double t61 = k->l_beta * t30;
-    const double t62 = k->n_p + k->n_r * t29;
-    const double t63 = t62 - t56;
-    const double t64 = k->l_beta * t63;
-    const double t65 = k->y_beta * k->l_p;
-    const double t66 = k->z_alpha + k->y_beta;
-    const double t67 = t29 * (k->e * k->m_alpha);
-    const double t68 = t31 * (k->d * k->e);
-    const double t69 = k->e * k->n_p;
-    const double t70 = t69 + k->d * k->l_r;
-    const double t71 = t31 * (t70 - t68);
-    const double t72 = t31 * t57;
-    const double t73 = t56 - k->n_p;
-    const double t74 = t59 + k->l_r * t73;
-    const double t75 = k->l_beta * (t56 - t62);
-    const double t76 = k->n_beta * (k->l_p + t29 * t37);
-    const double t77 = k->c * (k->e * (t8 * t42));
-    const double t78 = k->l_r - 2.0 * t36;
-    const double t79 = k->l_p + k->l_r * t29;
-    const double t80 = k->n_beta * t49 + k->l_beta * k->n_r;
+    const double t54 = t31 * (t31 * (k->d * t50) + (t51 - 2.0 * (t32 * (p0 * t52)) - k->n_p * t50));
+    const double t55 = k->l_p + k->n_r;
+    const double t56 = k->y_beta * t55;
+    const double t57 = k->d * t31;
+    const double t58 = k->n_p - t57;
+    const double t59 = k->l_r * t58;
+    const double t60 = k->l_p * k->n_r;
+    const double t61 = k->y_beta + k->l_p;
+    const double t62 = k->l_beta * t30;
+    const double t63 = k->n_p + k->n_r * t29;
+    const double t64 = t63 - t57;
+    const double t65 = k->l_beta * t64;
+    const double t66 = k->y_beta * (t59 + (k->m_alpha - t60)) + (t65 + (k->l_p * (k->m_alpha -
+        k->n_beta) + (t6 - t29 * (k->l_r * k->n_beta))));
+    const double t67 = k->m_q * (t59 + (t47 - t46 - t60) - t56) + (p0 * (t62 + t32 * (k->l_r * t52)
+        - p0 * (t55 + k->c * (k->d * t61))) + t66);
+    const double t68 = k->z_alpha * (k->d * (t31 * t49 - t40) + (t48 + (t47 - (k->n_beta + t4)) -
+        t45 - t44 - t41));
+    const double t69 = k->y_beta * k->l_p;
+    const double t70 = k->d * (k->c * (k->z_alpha * t61 + (t69 - t47)) + (k->m_alpha + t38));
+    const double t71 = k->z_alpha + k->y_beta;
+    const double t72 = k->d * (k->e * (t31 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) - (k->l_beta +
+        k->l_r * t71));
+    const double t73 = t29 * (k->e * k->m_alpha);
+    const double t74 = t30 * (k->d * (k->m_alpha * t49) + (k->n_beta * t37 - k->l_beta * t33));
+    const double t75 = p0 * (t39 * t52 + (t70 + (k->c * (k->e * t42 - k->n_beta) + (t45 + (t4 +
+        k->n_p * t49)))));
+    const double t76 = t31 * (k->d * k->e);
+    const double t77 = k->e * k->n_p;
+    const double t78 = t77 + k->d * k->l_r;
+    const double t79 = t31 * (t78 - t76);
+    const double t80 = t31 * t58;
+    const double t81 = t57 - k->n_p;
+    const double t82 = t60 + k->l_r * t81;
+    const double t83 = k->l_beta * (t57 - t63);
+    const double t84 = k->n_beta * (k->l_p + t29 * t37);
+    const double t85 = k->y_beta * (k->e * (t43 + t80) + t82) + (t83 + (t84 + t42 * (k->n_r * (k->c
+        * k->e))));
+    const double t86 = k->c * (k->e * (t9 * t42));
+    const double t87 = k->m_alpha * (k->e * (t30 * (t32 * t53) + t31 * t81) + (t59 + (t47 -
+        k->n_beta - t60) - t56)) + t86;
+    const double t88 = k->z_alpha * (k->m_q * (t79 + (t56 + (t60 + (k->n_beta - t47 - t48)))) +
+        t85);
+    const double t89 = p0 * (t75 + (t32 * (k->c * (t72 + (k->e * (t51 - k->n_p * t71) - k->l_beta))
+        - t73) + t74));
+    const double t90 = k->l_r - 2.0 * t36;
+    const double t91 = k->l_p + k->l_r * t29;
+    const double t92 = t31 * (t31 * (k->e * k->m_q) + (t73 - k->l_r * k->m_q + k->c * k->l_beta));
+    const double t93 = k->c * (k->l_p * k->n_beta - k->l_beta * k->n_p - k->e * (t32 * (k->n_r * t32
+        + k->n_beta * t30)));
+    const double t94 = k->d * (t92 + (k->c * (k->z_alpha * (t47 - t69)) - k->m_alpha * t91)) + (t93
+        + k->m_q * (k->n_p * t37 - t60));
+    const double t95 = k->n_beta * t49 + k->l_beta * k->n_r;
+    const double t96 = k->c * (k->z_alpha * (k->d * (k->l_beta + k->y_beta * t90) + k->e *
+        (k->y_beta * k->n_p - t51)) + t95);
+    const double t97 = t32 * (t96 + k->e * (k->m_alpha * t64)) + t30 * (k->d * (k->m_alpha *
+        (k->l_beta + k->y_beta * t37)) + k->m_q * t95);
+    const double t98 = k->y_beta * (t82 + k->e * (t80 - t32 * (k->n_r * t30))) + (t83 + k->n_beta *
+        (t91 - k->e * (t30 * t32 + t29 * t31)));
+    const double t99 = k->z_alpha * (k->m_q * (k->y_beta * (t31 * (t76 - t78) + (t48 - t60)) + (t65
+        + k->n_beta * (t29 * t49 - k->l_p))) - t86);
+    const double t100 = p0 * (p0 * (p0 * (k->c * (k->d * (t62 + t32 * t90) + t32 * t77) - p0 *
+        (k->l_p * t52)) + t94) + t97);
     struct rc_array5 result;
     result.v[0] = -(k->z_alpha + t35);
     result.v[1] = k->z_alpha * t35 + (k->d * (t38 + t40) + (t41 + (t44 + (t45 + (t4 + (t46 -
         k->m_alpha) - t47 - t48)))));
-    result.v[2] = k->z_alpha * (k->d * (t31 * t49 - t40) + (t48 + (t47 - (k->n_beta + t4)) - t45 -
-        t44 - t41)) + (k->e * (t31 * (t31 * (k->d * t50) + (t51 - 2.0 * (t32 * (p0 * t52)) - k->n_p
-        * t50)) + t32 * (p0 * (k->c * k->n_p) - k->m_alpha * t30 - t32 * (k->c * t53))) + (k->m_q *
-        (t58 + (t47 - t46 - t59) - t55) + (p0 * (t61 + t32 * (k->l_r * t52) - p0 * (t54 + k->c *
-        (k->d * t60))) + (k->y_beta * (t58 + (k->m_alpha - t59)) + (t64 + (k->l_p * (k->m_alpha -
-        k->n_beta) + (t6 - t29 * (k->l_r * k->n_beta))))))));
-    result.v[3] = p0 * (p0 * (t39 * t52 + (k->d * (k->c * (k->z_alpha * t60 + (t65 - t47)) +
-        (k->m_alpha + t38)) + (k->c * (k->e * t42 - k->n_beta) + (t45 + (t4 + k->n_p * t49))))) +
-        (t32 * (k->c * (k->d * (k->e * (t31 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) - (k->l_beta +
-        k->l_r * t66)) + (k->e * (t51 - k->n_p * t66) - k->l_beta)) - t67) + t30 * (k->d *
-        (k->m_alpha * t49) + (k->n_beta * t37 - k->l_beta * t33)))) + (k->z_alpha * (k->m_q * (t71 +
-        (t55 + (t59 + (k->n_beta - t47 - t48)))) + (k->y_beta * (k->e * (t43 + t72) + t74) + (t75 +
-        (t76 + t42 * (k->n_r * (k->c * k->e)))))) + (k->m_q * (k->y_beta * (t71 + (t59 - t48)) +
-        (t75 + t76)) + (k->m_alpha * (k->e * (t30 * (t32 * t53) + t31 * t73) + (t58 + (t47 -
-        k->n_beta - t59) - t55)) + t77)));
-    result.v[4] = p0 * (p0 * (p0 * (k->c * (k->d * (t61 + t32 * t78) + t32 * t69) - p0 * (k->l_p *
-        t52)) + (k->d * (t31 * (t31 * (k->e * k->m_q) + (t67 - k->l_r * k->m_q + k->c * k->l_beta))
-        + (k->c * (k->z_alpha * (t47 - t65)) - k->m_alpha * t79)) + (k->c * (k->l_p * k->n_beta -
-        k->l_beta * k->n_p - k->e * (t32 * (k->n_r * t32 + k->n_beta * t30))) + k->m_q * (k->n_p *
-        t37 - t59)))) + (t32 * (k->c * (k->z_alpha * (k->d * (k->l_beta + k->y_beta * t78) + k->e *
-        (k->y_beta * k->n_p - t51)) + t80) + k->e * (k->m_alpha * t63)) + t30 * (k->d * (k->m_alpha
-        * (k->l_beta + k->y_beta * t37)) + k->m_q * t80))) + (k->z_alpha * (k->m_q * (k->y_beta *
-        (t31 * (t68 - t70) + (t48 - t59)) + (t64 + k->n_beta * (t29 * t49 - k->l_p))) - t77) +
-        k->m_alpha * (k->y_beta * (t74 + k->e * (t72 - t32 * (k->n_r * t30))) + (t75 + k->n_beta *
-        (t79 - k->e * (t30 * t32 + t29 * t31)))));
+    result.v[2] = t68 + (k->e * (t54 + t32 * (p0 * (k->c * k->n_p) - k->m_alpha * t30 - t32 * (k->c
+        * t53))) + t67);
+    result.v[3] = t89 + (t88 + (k->m_q * (k->y_beta * (t79 + (t60 - t48)) + (t83 + t84)) + t87));
+    result.v[4] = t100 + (t99 + k->m_alpha * t98);
     return result;
 }
 
 /// The fourth Hurwitz determinant of J5 at the trim of `p0`,
-/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`, 1/s^10.
-/// By Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
-/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle (`+-lambda`).
+/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`
+/// (expanded below) in the coefficients of [`characteristic_coefficients`], 1/s^10. By
+/// Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
+/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle
+/// (`+-lambda`).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// Delta4 = -c5^2 + 2*c1*c4*c5 + c2*c3*c5 - c3^2*c4 - c1^2*c4^2 - c1*c2^2*c5 + c1*c2*c3*c4
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 197 add/sub, 254 mul, 3 div, 0 neg, 1 libm (455 operations); straight-line, no branches.
+/// Cost after CSE: 196 add/sub, 255 mul, 3 div, 0 neg, 1 libm (455 operations); straight-line, no branches.
 /// Rust: `roll_criterion::hurwitz_delta4`, bit-identical.
 ROLL_CRITERION_API double rc_hurwitz_delta4(const struct rc_derivatives *k, double p0,
     double delta_e, double delta_r)
@@ -1070,35 +1199,36 @@ ROLL_CRITERION_API double rc_hurwitz_delta4(const struct rc_derivatives *k, doub
     const double t4 = k->m_q * k->n_r;
     const double t5 = t4 + t0 * t1;
     const double t6 = k->m_alpha * k->n_r;
-    const double t7 = p0 * t1;
-    const double t8 = k->n_beta + k->y_beta * k->n_r;
-    const double t9 = p0 * k->m_q;
-    const double t10 = k->y_beta * t0;
-    const double t11 = t9 + t10;
-    const double t12 = p0 * k->n_r;
-    const double t13 = k->m_alpha + p0 * t0;
-    const double t14 = k->z_alpha * k->m_q - t13;
-    const double t15 = k->z_alpha * t10 + p0 * t13;
-    const double t16 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t9 - k->y_beta * k->m_alpha;
-    const double t17 = 1.0 / (k->z_alpha * (k->y_beta * t5 + k->m_q * k->n_beta) + p0 * (p0 * t5 +
-        k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * t6 + k->m_alpha * k->n_beta));
-    const double t18 = (t2 * (k->z_alpha * t1 + t12) + t3 * t14) * t17;
-    const double t19 = (t3 * t15 - t2 * (k->z_alpha * t8 + p0 * t12)) * t17;
-    const double t20 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t7)) - t3 *
-        t16) * t17;
-    const double t21 = t17 * (k->n_delta_a * t14);
-    const double t22 = t17 * (k->n_delta_a * t15);
-    const double t23 = t17 * (k->n_delta_a * t16);
-    const double t24 = k->l_r - k->e * t19;
-    const double t25 = t20 * t24 + (delta_r * k->l_delta_r - k->l_beta * t18 + p0 * k->l_p);
-    const double t26 = k->e * 0.5 * (t22 * t23);
-    const double t27 = k->l_delta_a - k->l_beta * t21 - t22 * (k->e * t20) - t23 * t24;
-    const double t28 = t25 * 2.0 / (t27 * (1.0 + sqrt(1.0 - t25 * (t26 + t26) / (t27 * t27) *
-        4.0)));
-    const double t29 = t17 * (k->n_delta_a * t11) * t28 - (t2 * (t7 - t8) + t3 * t11) * t17;
-    const double t30 = t21 * t28 - t18;
-    const double t31 = t19 - t22 * t28;
-    const double t32 = t20 + t23 * t28;
+    const double t7 = k->z_alpha * (k->y_beta * t5 + k->m_q * k->n_beta) + p0 * (p0 * t5 +
+        k->m_alpha * t1);
+    const double t8 = p0 * t1;
+    const double t9 = k->n_beta + k->y_beta * k->n_r;
+    const double t10 = p0 * k->m_q;
+    const double t11 = k->y_beta * t0;
+    const double t12 = t10 + t11;
+    const double t13 = p0 * k->n_r;
+    const double t14 = k->m_alpha + p0 * t0;
+    const double t15 = k->z_alpha * k->m_q - t14;
+    const double t16 = k->z_alpha * t11 + p0 * t14;
+    const double t17 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t10 - k->y_beta * k->m_alpha;
+    const double t18 = 1.0 / (t7 - (p0 * (k->n_beta * t0) + k->y_beta * t6 + k->m_alpha *
+        k->n_beta));
+    const double t19 = (t2 * (k->z_alpha * t1 + t13) + t3 * t15) * t18;
+    const double t20 = (t3 * t16 - t2 * (k->z_alpha * t9 + p0 * t13)) * t18;
+    const double t21 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t8)) - t3 *
+        t17) * t18;
+    const double t22 = t18 * (k->n_delta_a * t15);
+    const double t23 = t18 * (k->n_delta_a * t16);
+    const double t24 = t18 * (k->n_delta_a * t17);
+    const double t25 = k->l_r - k->e * t20;
+    const double t26 = t21 * t25 + (delta_r * k->l_delta_r - k->l_beta * t19 + p0 * k->l_p);
+    const double t27 = k->l_delta_a - k->l_beta * t22 - t23 * (k->e * t21) - t24 * t25;
+    const double t28 = t26 * 2.0 / (t27 * (1.0 + sqrt(1.0 - t26 * (k->e * 0.5 * (t23 * t24) * 2.0) /
+        (t27 * t27) * 4.0)));
+    const double t29 = t18 * (k->n_delta_a * t12) * t28 - (t2 * (t8 - t9) + t3 * t12) * t18;
+    const double t30 = t22 * t28 - t19;
+    const double t31 = t20 - t23 * t28;
+    const double t32 = t21 + t24 * t28;
     const double t33 = k->m_q + k->n_r;
     const double t34 = k->l_p + t33;
     const double t35 = k->y_beta + t34;
@@ -1123,75 +1253,97 @@ ROLL_CRITERION_API double rc_hurwitz_delta4(const struct rc_derivatives *k, doub
     const double t53 = k->n_beta * t29;
     const double t54 = k->c * k->d;
     const double t55 = k->y_beta + k->n_r;
-    const double t56 = k->l_p + k->n_r;
-    const double t57 = k->y_beta * t56;
-    const double t58 = k->d * t31;
-    const double t59 = k->n_p - t58;
-    const double t60 = k->l_r * t59;
-    const double t61 = k->l_p * k->n_r;
-    const double t62 = k->y_beta + k->l_p;
-    const double t63 = k->l_beta * t30;
-    const double t64 = k->n_p + k->n_r * t29;
-    const double t65 = t64 - t58;
-    const double t66 = k->l_beta * t65;
-    const double t67 = k->z_alpha * (k->d * (t31 * t51 - t41) + (t49 + (t48 - (k->n_beta + t4)) -
-        t46 - t45 - t42)) + (k->e * (t31 * (t31 * (k->d * t52) + (t53 - 2.0 * (t32 * (p0 * t54)) -
-        k->n_p * t52)) + t32 * (p0 * (k->c * k->n_p) - k->m_alpha * t30 - t32 * (k->c * t55))) +
-        (k->m_q * (t60 + (t48 - t47 - t61) - t57) + (p0 * (t63 + t32 * (k->l_r * t54) - p0 * (t56 +
-        k->c * (k->d * t62))) + (k->y_beta * (t60 + (k->m_alpha - t61)) + (t66 + (k->l_p *
-        (k->m_alpha - k->n_beta) + (t6 - t29 * (k->l_r * k->n_beta))))))));
-    const double t68 = k->y_beta * k->l_p;
-    const double t69 = k->z_alpha + k->y_beta;
-    const double t70 = t29 * (k->e * k->m_alpha);
-    const double t71 = t31 * (k->d * k->e);
-    const double t72 = k->e * k->n_p;
-    const double t73 = t72 + k->d * k->l_r;
-    const double t74 = t31 * (t73 - t71);
-    const double t75 = t31 * t59;
-    const double t76 = t58 - k->n_p;
-    const double t77 = t61 + k->l_r * t76;
-    const double t78 = k->l_beta * (t58 - t64);
-    const double t79 = k->n_beta * (k->l_p + t29 * t38);
-    const double t80 = k->c * (k->e * (t8 * t43));
-    const double t81 = p0 * (p0 * (t40 * t54 + (k->d * (k->c * (k->z_alpha * t62 + (t68 - t48)) +
-        (k->m_alpha + t39)) + (k->c * (k->e * t43 - k->n_beta) + (t46 + (t4 + k->n_p * t51))))) +
-        (t32 * (k->c * (k->d * (k->e * (t31 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) - (k->l_beta +
-        k->l_r * t69)) + (k->e * (t53 - k->n_p * t69) - k->l_beta)) - t70) + t30 * (k->d *
-        (k->m_alpha * t51) + (k->n_beta * t38 - k->l_beta * t33)))) + (k->z_alpha * (k->m_q * (t74 +
-        (t57 + (t61 + (k->n_beta - t48 - t49)))) + (k->y_beta * (k->e * (t44 + t75) + t77) + (t78 +
-        (t79 + t43 * (k->n_r * (k->c * k->e)))))) + (k->m_q * (k->y_beta * (t74 + (t61 - t49)) +
-        (t78 + t79)) + (k->m_alpha * (k->e * (t30 * (t32 * t55) + t31 * t76) + (t60 + (t48 -
-        k->n_beta - t61) - t57)) + t80)));
-    const double t82 = k->l_r - 2.0 * t37;
-    const double t83 = k->l_p + k->l_r * t29;
-    const double t84 = k->n_beta * t51 + k->l_beta * k->n_r;
-    const double t85 = p0 * (p0 * (p0 * (k->c * (k->d * (t63 + t32 * t82) + t32 * t72) - p0 *
-        (k->l_p * t54)) + (k->d * (t31 * (t31 * (k->e * k->m_q) + (t70 - k->l_r * k->m_q + k->c *
-        k->l_beta)) + (k->c * (k->z_alpha * (t48 - t68)) - k->m_alpha * t83)) + (k->c * (k->l_p *
-        k->n_beta - k->l_beta * k->n_p - k->e * (t32 * (k->n_r * t32 + k->n_beta * t30))) + k->m_q *
-        (k->n_p * t38 - t61)))) + (t32 * (k->c * (k->z_alpha * (k->d * (k->l_beta + k->y_beta * t82)
-        + k->e * (k->y_beta * k->n_p - t53)) + t84) + k->e * (k->m_alpha * t65)) + t30 * (k->d *
-        (k->m_alpha * (k->l_beta + k->y_beta * t38)) + k->m_q * t84))) + (k->z_alpha * (k->m_q *
-        (k->y_beta * (t31 * (t71 - t73) + (t49 - t61)) + (t66 + k->n_beta * (t29 * t51 - k->l_p))) -
-        t80) + k->m_alpha * (k->y_beta * (t77 + k->e * (t75 - t32 * (k->n_r * t30))) + (t78 +
-        k->n_beta * (t83 - k->e * (t30 * t32 + t29 * t31)))));
-    const double t86 = t50 * t85;
-    const double t87 = t67 * t81;
-    return t67 * (t86 - t87) - t85 * t85 - t36 * (t36 * (t81 * t81) + (t50 * (t87 - t86) + 2.0 *
-        (t81 * t85)));
+    const double t56 = t31 * (t31 * (k->d * t52) + (t53 - 2.0 * (t32 * (p0 * t54)) - k->n_p * t52));
+    const double t57 = k->l_p + k->n_r;
+    const double t58 = k->y_beta * t57;
+    const double t59 = k->d * t31;
+    const double t60 = k->n_p - t59;
+    const double t61 = k->l_r * t60;
+    const double t62 = k->l_p * k->n_r;
+    const double t63 = k->y_beta + k->l_p;
+    const double t64 = k->l_beta * t30;
+    const double t65 = k->n_p + k->n_r * t29;
+    const double t66 = t65 - t59;
+    const double t67 = k->l_beta * t66;
+    const double t68 = k->y_beta * (t61 + (k->m_alpha - t62)) + (t67 + (k->l_p * (k->m_alpha -
+        k->n_beta) + (t6 - t29 * (k->l_r * k->n_beta))));
+    const double t69 = k->m_q * (t61 + (t48 - t47 - t62) - t58) + (p0 * (t64 + t32 * (k->l_r * t54)
+        - p0 * (t57 + k->c * (k->d * t63))) + t68);
+    const double t70 = k->z_alpha * (k->d * (t31 * t51 - t41) + (t49 + (t48 - (k->n_beta + t4)) -
+        t46 - t45 - t42));
+    const double t71 = t70 + (k->e * (t56 + t32 * (p0 * (k->c * k->n_p) - k->m_alpha * t30 - t32 *
+        (k->c * t55))) + t69);
+    const double t72 = k->y_beta * k->l_p;
+    const double t73 = k->d * (k->c * (k->z_alpha * t63 + (t72 - t48)) + (k->m_alpha + t39));
+    const double t74 = k->z_alpha + k->y_beta;
+    const double t75 = k->d * (k->e * (t31 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) - (k->l_beta +
+        k->l_r * t74));
+    const double t76 = t29 * (k->e * k->m_alpha);
+    const double t77 = t30 * (k->d * (k->m_alpha * t51) + (k->n_beta * t38 - k->l_beta * t33));
+    const double t78 = p0 * (t40 * t54 + (t73 + (k->c * (k->e * t43 - k->n_beta) + (t46 + (t4 +
+        k->n_p * t51)))));
+    const double t79 = t31 * (k->d * k->e);
+    const double t80 = k->e * k->n_p;
+    const double t81 = t80 + k->d * k->l_r;
+    const double t82 = t31 * (t81 - t79);
+    const double t83 = t31 * t60;
+    const double t84 = t59 - k->n_p;
+    const double t85 = t62 + k->l_r * t84;
+    const double t86 = k->l_beta * (t59 - t65);
+    const double t87 = k->n_beta * (k->l_p + t29 * t38);
+    const double t88 = k->y_beta * (k->e * (t44 + t83) + t85) + (t86 + (t87 + t43 * (k->n_r * (k->c
+        * k->e))));
+    const double t89 = k->c * (k->e * (t9 * t43));
+    const double t90 = k->m_alpha * (k->e * (t30 * (t32 * t55) + t31 * t84) + (t61 + (t48 -
+        k->n_beta - t62) - t58)) + t89;
+    const double t91 = k->z_alpha * (k->m_q * (t82 + (t58 + (t62 + (k->n_beta - t48 - t49)))) +
+        t88);
+    const double t92 = p0 * (t78 + (t32 * (k->c * (t75 + (k->e * (t53 - k->n_p * t74) - k->l_beta))
+        - t76) + t77));
+    const double t93 = t92 + (t91 + (k->m_q * (k->y_beta * (t82 + (t62 - t49)) + (t86 + t87)) +
+        t90));
+    const double t94 = k->l_r - 2.0 * t37;
+    const double t95 = k->l_p + k->l_r * t29;
+    const double t96 = t31 * (t31 * (k->e * k->m_q) + (t76 - k->l_r * k->m_q + k->c * k->l_beta));
+    const double t97 = k->c * (k->l_p * k->n_beta - k->l_beta * k->n_p - k->e * (t32 * (k->n_r * t32
+        + k->n_beta * t30)));
+    const double t98 = k->d * (t96 + (k->c * (k->z_alpha * (t48 - t72)) - k->m_alpha * t95)) + (t97
+        + k->m_q * (k->n_p * t38 - t62));
+    const double t99 = k->n_beta * t51 + k->l_beta * k->n_r;
+    const double t100 = k->c * (k->z_alpha * (k->d * (k->l_beta + k->y_beta * t94) + k->e *
+        (k->y_beta * k->n_p - t53)) + t99);
+    const double t101 = t32 * (t100 + k->e * (k->m_alpha * t66)) + t30 * (k->d * (k->m_alpha *
+        (k->l_beta + k->y_beta * t38)) + k->m_q * t99);
+    const double t102 = k->y_beta * (t85 + k->e * (t83 - t32 * (k->n_r * t30))) + (t86 + k->n_beta *
+        (t95 - k->e * (t30 * t32 + t29 * t31)));
+    const double t103 = k->z_alpha * (k->m_q * (k->y_beta * (t31 * (t79 - t81) + (t49 - t62)) + (t67
+        + k->n_beta * (t29 * t51 - k->l_p))) - t89);
+    const double t104 = p0 * (p0 * (p0 * (k->c * (k->d * (t64 + t32 * t94) + t32 * t80) - p0 *
+        (k->l_p * t54)) + t98) + t101);
+    const double t105 = t104 + (t103 + k->m_alpha * t102);
+    const double t106 = t50 * t105;
+    const double t107 = t71 * t93;
+    return t71 * (t106 - t107) - t105 * t105 - t36 * (t36 * (t93 * t93) + (t50 * (t107 - t106) + 2.0
+        * (t93 * t105)));
 }
 
-/// `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` at the trim of `p0`, rad^2/s^2: at a zero of
-/// [`hurwitz_delta4`] the square of the frequency of the pair on the imaginary axis, positive
-/// at a Hopf point and negative at a neutral saddle (from the even and odd parts of
-/// `p(i omega) = 0` with `w^2` eliminated).
+/// `omega^2` at the trim of `p0`, rad^2/s^2, in the coefficients of
+/// [`characteristic_coefficients`]: at a zero of [`hurwitz_delta4`] the square of the
+/// frequency of the pair on the imaginary axis, positive at a Hopf point and negative
+/// at a neutral saddle (from the even and odd parts of `p(i omega) = 0` with `w^2`
+/// eliminated).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// omega^2 = (-c5 + c1*c4) / (-c3 + c1*c2)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 193 add/sub, 246 mul, 4 div, 0 neg, 1 libm (444 operations); straight-line, no branches.
+/// Cost after CSE: 192 add/sub, 247 mul, 4 div, 0 neg, 1 libm (444 operations); straight-line, no branches.
 /// Rust: `roll_criterion::hopf_omega_squared`, bit-identical.
 ROLL_CRITERION_API double rc_hopf_omega_squared(const struct rc_derivatives *k, double p0,
     double delta_e, double delta_r)
@@ -1203,35 +1355,36 @@ ROLL_CRITERION_API double rc_hopf_omega_squared(const struct rc_derivatives *k, 
     const double t4 = k->m_q * k->n_r;
     const double t5 = t4 + t0 * t1;
     const double t6 = k->m_alpha * k->n_r;
-    const double t7 = p0 * t1;
-    const double t8 = k->n_beta + k->y_beta * k->n_r;
-    const double t9 = p0 * k->m_q;
-    const double t10 = k->y_beta * t0;
-    const double t11 = t9 + t10;
-    const double t12 = p0 * k->n_r;
-    const double t13 = k->m_alpha + p0 * t0;
-    const double t14 = k->z_alpha * k->m_q - t13;
-    const double t15 = k->z_alpha * t10 + p0 * t13;
-    const double t16 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t9 - k->y_beta * k->m_alpha;
-    const double t17 = 1.0 / (k->z_alpha * (k->y_beta * t5 + k->m_q * k->n_beta) + p0 * (p0 * t5 +
-        k->m_alpha * t1) - (p0 * (k->n_beta * t0) + k->y_beta * t6 + k->m_alpha * k->n_beta));
-    const double t18 = (t2 * (k->z_alpha * t1 + t12) + t3 * t14) * t17;
-    const double t19 = (t3 * t15 - t2 * (k->z_alpha * t8 + p0 * t12)) * t17;
-    const double t20 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t7)) - t3 *
-        t16) * t17;
-    const double t21 = t17 * (k->n_delta_a * t14);
-    const double t22 = t17 * (k->n_delta_a * t15);
-    const double t23 = t17 * (k->n_delta_a * t16);
-    const double t24 = k->l_r - k->e * t19;
-    const double t25 = t20 * t24 + (delta_r * k->l_delta_r - k->l_beta * t18 + p0 * k->l_p);
-    const double t26 = k->e * 0.5 * (t22 * t23);
-    const double t27 = k->l_delta_a - k->l_beta * t21 - t22 * (k->e * t20) - t23 * t24;
-    const double t28 = t25 * 2.0 / (t27 * (1.0 + sqrt(1.0 - t25 * (t26 + t26) / (t27 * t27) *
-        4.0)));
-    const double t29 = t17 * (k->n_delta_a * t11) * t28 - (t2 * (t7 - t8) + t3 * t11) * t17;
-    const double t30 = t21 * t28 - t18;
-    const double t31 = t19 - t22 * t28;
-    const double t32 = t20 + t23 * t28;
+    const double t7 = k->z_alpha * (k->y_beta * t5 + k->m_q * k->n_beta) + p0 * (p0 * t5 +
+        k->m_alpha * t1);
+    const double t8 = p0 * t1;
+    const double t9 = k->n_beta + k->y_beta * k->n_r;
+    const double t10 = p0 * k->m_q;
+    const double t11 = k->y_beta * t0;
+    const double t12 = t10 + t11;
+    const double t13 = p0 * k->n_r;
+    const double t14 = k->m_alpha + p0 * t0;
+    const double t15 = k->z_alpha * k->m_q - t14;
+    const double t16 = k->z_alpha * t11 + p0 * t14;
+    const double t17 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t10 - k->y_beta * k->m_alpha;
+    const double t18 = 1.0 / (t7 - (p0 * (k->n_beta * t0) + k->y_beta * t6 + k->m_alpha *
+        k->n_beta));
+    const double t19 = (t2 * (k->z_alpha * t1 + t13) + t3 * t15) * t18;
+    const double t20 = (t3 * t16 - t2 * (k->z_alpha * t9 + p0 * t13)) * t18;
+    const double t21 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t8)) - t3 *
+        t17) * t18;
+    const double t22 = t18 * (k->n_delta_a * t15);
+    const double t23 = t18 * (k->n_delta_a * t16);
+    const double t24 = t18 * (k->n_delta_a * t17);
+    const double t25 = k->l_r - k->e * t20;
+    const double t26 = t21 * t25 + (delta_r * k->l_delta_r - k->l_beta * t19 + p0 * k->l_p);
+    const double t27 = k->l_delta_a - k->l_beta * t22 - t23 * (k->e * t21) - t24 * t25;
+    const double t28 = t26 * 2.0 / (t27 * (1.0 + sqrt(1.0 - t26 * (k->e * 0.5 * (t23 * t24) * 2.0) /
+        (t27 * t27) * 4.0)));
+    const double t29 = t18 * (k->n_delta_a * t12) * t28 - (t2 * (t8 - t9) + t3 * t12) * t18;
+    const double t30 = t22 * t28 - t19;
+    const double t31 = t20 - t23 * t28;
+    const double t32 = t21 + t24 * t28;
     const double t33 = k->m_q + k->n_r;
     const double t34 = k->l_p + t33;
     const double t35 = k->y_beta + t34;
@@ -1254,78 +1407,276 @@ ROLL_CRITERION_API double rc_hopf_omega_squared(const struct rc_derivatives *k, 
     const double t52 = k->n_beta * t29;
     const double t53 = k->c * k->d;
     const double t54 = k->y_beta + k->n_r;
-    const double t55 = k->l_p + k->n_r;
-    const double t56 = k->y_beta * t55;
-    const double t57 = k->d * t31;
-    const double t58 = k->n_p - t57;
-    const double t59 = k->l_r * t58;
-    const double t60 = k->l_p * k->n_r;
-    const double t61 = k->y_beta + k->l_p;
-    const double t62 = k->l_beta * t30;
-    const double t63 = k->n_p + k->n_r * t29;
-    const double t64 = t63 - t57;
-    const double t65 = k->l_beta * t64;
-    const double t66 = k->y_beta * k->l_p;
-    const double t67 = k->z_alpha + k->y_beta;
-    const double t68 = t29 * (k->e * k->m_alpha);
-    const double t69 = t31 * (k->d * k->e);
-    const double t70 = k->e * k->n_p;
-    const double t71 = t70 + k->d * k->l_r;
-    const double t72 = t31 * (t71 - t69);
-    const double t73 = t31 * t58;
-    const double t74 = t57 - k->n_p;
-    const double t75 = t60 + k->l_r * t74;
-    const double t76 = k->l_beta * (t57 - t63);
-    const double t77 = k->n_beta * (k->l_p + t29 * t38);
-    const double t78 = k->c * (k->e * (t8 * t43));
-    const double t79 = k->l_r - 2.0 * t37;
-    const double t80 = k->l_p + k->l_r * t29;
-    const double t81 = k->n_beta * t50 + k->l_beta * k->n_r;
-    return (p0 * (p0 * (p0 * (k->c * (k->d * (t62 + t32 * t79) + t32 * t70) - p0 * (k->l_p * t53)) +
-        (k->d * (t31 * (t31 * (k->e * k->m_q) + (t68 - k->l_r * k->m_q + k->c * k->l_beta)) + (k->c
-        * (k->z_alpha * (t48 - t66)) - k->m_alpha * t80)) + (k->c * (k->l_p * k->n_beta - k->l_beta
-        * k->n_p - k->e * (t32 * (k->n_r * t32 + k->n_beta * t30))) + k->m_q * (k->n_p * t38 -
-        t60)))) + (t32 * (k->c * (k->z_alpha * (k->d * (k->l_beta + k->y_beta * t79) + k->e *
-        (k->y_beta * k->n_p - t52)) + t81) + k->e * (k->m_alpha * t64)) + t30 * (k->d * (k->m_alpha
-        * (k->l_beta + k->y_beta * t38)) + k->m_q * t81))) + (k->z_alpha * (k->m_q * (k->y_beta *
-        (t31 * (t69 - t71) + (t49 - t60)) + (t65 + k->n_beta * (t29 * t50 - k->l_p))) - t78) +
-        k->m_alpha * (k->y_beta * (t75 + k->e * (t73 - t32 * (k->n_r * t30))) + (t76 + k->n_beta *
-        (t80 - k->e * (t30 * t32 + t29 * t31))))) + t36 * (p0 * (p0 * (t40 * t53 + (k->d * (k->c *
-        (k->z_alpha * t61 + (t66 - t48)) + (k->m_alpha + t39)) + (k->c * (k->e * t43 - k->n_beta) +
-        (t46 + (t4 + k->n_p * t50))))) + (t32 * (k->c * (k->d * (k->e * (t31 * (k->y_beta * 2.0 +
-        k->z_alpha * 2.0)) - (k->l_beta + k->l_r * t67)) + (k->e * (t52 - k->n_p * t67) -
-        k->l_beta)) - t68) + t30 * (k->d * (k->m_alpha * t50) + (k->n_beta * t38 - k->l_beta *
-        t33)))) + (k->z_alpha * (k->m_q * (t72 + (t56 + (t60 + (k->n_beta - t48 - t49)))) +
-        (k->y_beta * (k->e * (t44 + t73) + t75) + (t76 + (t77 + t43 * (k->n_r * (k->c * k->e)))))) +
-        (k->m_q * (k->y_beta * (t72 + (t60 - t49)) + (t76 + t77)) + (k->m_alpha * (k->e * (t30 *
-        (t32 * t54) + t31 * t74) + (t59 + (t48 - k->n_beta - t60) - t56)) + t78))))) / (k->z_alpha *
-        (k->d * (t31 * t50 - t41) + (t49 + (t48 - (k->n_beta + t4)) - t46 - t45 - t42)) + (k->e *
-        (t31 * (t31 * (k->d * t51) + (t52 - 2.0 * (t32 * (p0 * t53)) - k->n_p * t51)) + t32 * (p0 *
-        (k->c * k->n_p) - k->m_alpha * t30 - t32 * (k->c * t54))) + (k->m_q * (t59 + (t48 - t47 -
-        t60) - t56) + (p0 * (t62 + t32 * (k->l_r * t53) - p0 * (t55 + k->c * (k->d * t61))) +
-        (k->y_beta * (t59 + (k->m_alpha - t60)) + (t65 + (k->l_p * (k->m_alpha - k->n_beta) + (t6 -
-        t29 * (k->l_r * k->n_beta)))))))) + t36 * (k->z_alpha * t35 + (k->d * (t39 + t41) + (t42 +
-        (t45 + (t46 + (t4 + (t47 - k->m_alpha) - t48 - t49)))))));
+    const double t55 = t31 * (t31 * (k->d * t51) + (t52 - 2.0 * (t32 * (p0 * t53)) - k->n_p * t51));
+    const double t56 = k->l_p + k->n_r;
+    const double t57 = k->y_beta * t56;
+    const double t58 = k->d * t31;
+    const double t59 = k->n_p - t58;
+    const double t60 = k->l_r * t59;
+    const double t61 = k->l_p * k->n_r;
+    const double t62 = k->y_beta + k->l_p;
+    const double t63 = k->l_beta * t30;
+    const double t64 = k->n_p + k->n_r * t29;
+    const double t65 = t64 - t58;
+    const double t66 = k->l_beta * t65;
+    const double t67 = k->y_beta * (t60 + (k->m_alpha - t61)) + (t66 + (k->l_p * (k->m_alpha -
+        k->n_beta) + (t6 - t29 * (k->l_r * k->n_beta))));
+    const double t68 = k->m_q * (t60 + (t48 - t47 - t61) - t57) + (p0 * (t63 + t32 * (k->l_r * t53)
+        - p0 * (t56 + k->c * (k->d * t62))) + t67);
+    const double t69 = k->z_alpha * (k->d * (t31 * t50 - t41) + (t49 + (t48 - (k->n_beta + t4)) -
+        t46 - t45 - t42));
+    const double t70 = k->y_beta * k->l_p;
+    const double t71 = k->d * (k->c * (k->z_alpha * t62 + (t70 - t48)) + (k->m_alpha + t39));
+    const double t72 = k->z_alpha + k->y_beta;
+    const double t73 = k->d * (k->e * (t31 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) - (k->l_beta +
+        k->l_r * t72));
+    const double t74 = t29 * (k->e * k->m_alpha);
+    const double t75 = t30 * (k->d * (k->m_alpha * t50) + (k->n_beta * t38 - k->l_beta * t33));
+    const double t76 = p0 * (t40 * t53 + (t71 + (k->c * (k->e * t43 - k->n_beta) + (t46 + (t4 +
+        k->n_p * t50)))));
+    const double t77 = t31 * (k->d * k->e);
+    const double t78 = k->e * k->n_p;
+    const double t79 = t78 + k->d * k->l_r;
+    const double t80 = t31 * (t79 - t77);
+    const double t81 = t31 * t59;
+    const double t82 = t58 - k->n_p;
+    const double t83 = t61 + k->l_r * t82;
+    const double t84 = k->l_beta * (t58 - t64);
+    const double t85 = k->n_beta * (k->l_p + t29 * t38);
+    const double t86 = k->y_beta * (k->e * (t44 + t81) + t83) + (t84 + (t85 + t43 * (k->n_r * (k->c
+        * k->e))));
+    const double t87 = k->c * (k->e * (t9 * t43));
+    const double t88 = k->m_alpha * (k->e * (t30 * (t32 * t54) + t31 * t82) + (t60 + (t48 -
+        k->n_beta - t61) - t57)) + t87;
+    const double t89 = k->z_alpha * (k->m_q * (t80 + (t57 + (t61 + (k->n_beta - t48 - t49)))) +
+        t86);
+    const double t90 = p0 * (t76 + (t32 * (k->c * (t73 + (k->e * (t52 - k->n_p * t72) - k->l_beta))
+        - t74) + t75));
+    const double t91 = k->l_r - 2.0 * t37;
+    const double t92 = k->l_p + k->l_r * t29;
+    const double t93 = t31 * (t31 * (k->e * k->m_q) + (t74 - k->l_r * k->m_q + k->c * k->l_beta));
+    const double t94 = k->c * (k->l_p * k->n_beta - k->l_beta * k->n_p - k->e * (t32 * (k->n_r * t32
+        + k->n_beta * t30)));
+    const double t95 = k->d * (t93 + (k->c * (k->z_alpha * (t48 - t70)) - k->m_alpha * t92)) + (t94
+        + k->m_q * (k->n_p * t38 - t61));
+    const double t96 = k->n_beta * t50 + k->l_beta * k->n_r;
+    const double t97 = k->c * (k->z_alpha * (k->d * (k->l_beta + k->y_beta * t91) + k->e *
+        (k->y_beta * k->n_p - t52)) + t96);
+    const double t98 = t32 * (t97 + k->e * (k->m_alpha * t65)) + t30 * (k->d * (k->m_alpha *
+        (k->l_beta + k->y_beta * t38)) + k->m_q * t96);
+    const double t99 = k->y_beta * (t83 + k->e * (t81 - t32 * (k->n_r * t30))) + (t84 + k->n_beta *
+        (t92 - k->e * (t30 * t32 + t29 * t31)));
+    const double t100 = k->z_alpha * (k->m_q * (k->y_beta * (t31 * (t77 - t79) + (t49 - t61)) + (t66
+        + k->n_beta * (t29 * t50 - k->l_p))) - t87);
+    const double t101 = p0 * (p0 * (p0 * (k->c * (k->d * (t63 + t32 * t91) + t32 * t78) - p0 *
+        (k->l_p * t53)) + t95) + t98);
+    const double t102 = t36 * (t90 + (t89 + (k->m_q * (k->y_beta * (t80 + (t61 - t49)) + (t84 +
+        t85)) + t88)));
+    const double t103 = t36 * (k->z_alpha * t35 + (k->d * (t39 + t41) + (t42 + (t45 + (t46 + (t4 +
+        (t47 - k->m_alpha) - t48 - t49))))));
+    const double t104 = t69 + (k->e * (t55 + t32 * (p0 * (k->c * k->n_p) - k->m_alpha * t30 - t32 *
+        (k->c * t54))) + t68) + t103;
+    return (t101 + (t100 + k->m_alpha * t99) + t102) / t104;
+}
+
+/// det K (Eq. 27) of one aircraft and control setting, prepared for many roll rates (issue 11):
+/// `Prepared::new(k, delta_e, delta_r)` computes once everything of `det_k` that does not
+/// depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch
+/// of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is
+/// the roll-rate-dependent part of one straight-line program (model/src/emit/stage.rs), with
+/// 41 fields; per call 135 operations against 69 for `Prepared::new`.
+struct rc_Prepared {
+    double f0;
+    double f1;
+    double f2;
+    double f3;
+    double f4;
+    double f5;
+    double f6;
+    double f7;
+    double f8;
+    double f9;
+    double f10;
+    double f11;
+    double f12;
+    double f13;
+    double f14;
+    double f15;
+    double f16;
+    double f17;
+    double f18;
+    double f19;
+    double f20;
+    double f21;
+    double f22;
+    double f23;
+    double f24;
+    double f25;
+    double f26;
+    double f27;
+    double f28;
+    double f29;
+    double f30;
+    double f31;
+    double f32;
+    double f33;
+    double f34;
+    double f35;
+    double f36;
+    double f37;
+    double f38;
+    double f39;
+    double f40;
+};
+
+/// Prepares det K for an aircraft `k` and the controls: computes once everything of
+/// [`det_k`](Self::det_k) that does not depend on the roll rate (the coefficients of the
+/// polynomials in P0 of the trim numerators, det A, the trim condition and K0, g, h, d).
+///
+/// Arguments:
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 18 add/sub, 51 mul, 0 div, 0 neg, 0 libm (69 operations); straight-line, no branches.
+/// Rust: `roll_criterion::Prepared::new`, bit-identical.
+ROLL_CRITERION_API struct rc_Prepared rc_prepared_new(const struct rc_derivatives *k,
+    double delta_e, double delta_r)
+{
+    const double t0 = k->n_beta + k->y_beta * k->n_r;
+    const double t1 = k->m_delta_e * (delta_e * t0);
+    const double t2 = k->m_q + k->c * k->y_beta;
+    const double t3 = delta_e * (k->d * k->m_delta_e);
+    const double t4 = t3 + k->m_q * k->n_p;
+    const double t5 = k->z_alpha * t4;
+    const double t6 = delta_e * (k->m_delta_e * k->n_r);
+    const double t7 = k->m_alpha * k->n_p;
+    const double t8 = k->z_alpha * k->m_q;
+    const double t9 = k->m_alpha - t8;
+    const double t10 = k->n_delta_r * (delta_r * t9);
+    const double t11 = k->n_delta_a * t9;
+    const double t12 = k->m_alpha + k->y_beta * (k->c * k->z_alpha);
+    const double t13 = k->d * k->z_alpha;
+    struct rc_Prepared result;
+    result.f0 = k->c;
+    result.f1 = k->d;
+    result.f2 = k->e;
+    result.f3 = k->l_p;
+    result.f4 = k->l_r;
+    result.f5 = k->l_beta;
+    result.f6 = k->l_delta_a;
+    result.f7 = k->m_q;
+    result.f8 = k->n_p;
+    result.f9 = k->n_r;
+    result.f10 = t0;
+    result.f11 = t1;
+    result.f12 = t2;
+    result.f13 = k->n_delta_r * (delta_r * t2);
+    result.f14 = k->n_p * t2 + t3;
+    result.f15 = k->n_delta_a * t2;
+    result.f16 = t4;
+    result.f17 = t7 - t6 - t5;
+    result.f18 = t10;
+    result.f19 = delta_r * (k->c * k->n_delta_r);
+    result.f20 = k->c * k->n_p;
+    result.f21 = t11;
+    result.f22 = k->c * k->n_delta_a;
+    result.f23 = k->n_p * t12 - t6;
+    result.f24 = k->n_delta_r * (delta_r * t12);
+    result.f25 = k->z_alpha * t1;
+    result.f26 = k->n_delta_a * t12;
+    result.f27 = k->y_beta * (t7 - t5) + delta_e * (k->m_delta_e * k->n_beta);
+    result.f28 = delta_r * (k->m_q * k->n_delta_r);
+    result.f29 = k->y_beta * t10;
+    result.f30 = k->m_q * k->n_delta_a;
+    result.f31 = k->y_beta * t11;
+    result.f32 = k->z_alpha * (k->m_q * t0) - k->m_alpha * t0;
+    result.f33 = k->c * (k->y_beta * t13 - k->n_beta) + (k->m_q * k->n_r + k->d * k->m_alpha);
+    result.f34 = k->c * k->d;
+    result.f35 = delta_r * k->l_delta_r;
+    result.f36 = k->e * k->z_alpha;
+    result.f37 = k->l_beta + k->y_beta * k->l_r;
+    result.f38 = k->e * k->y_beta;
+    result.f39 = t8 - k->m_alpha;
+    result.f40 = k->n_r + t13;
+    return result;
+}
+
+/// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4: the value of the free
+/// function `det_k(k, p0, delta_e, delta_r)` on the same trim branch (element 0 of
+/// `trim`, with aileron yaw too), computed from the prepared fields. Not bit-identical to
+/// `det_k` (other operations), equal to it within rounding away from roots and poles.
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+///
+/// Cost after CSE: 48 add/sub, 84 mul, 1 div, 0 neg, 2 libm (135 operations); straight-line, no branches.
+/// Rust: `roll_criterion::Prepared::det_k`, bit-identical.
+ROLL_CRITERION_API double rc_prepared_det_k(const struct rc_Prepared *self, double p0)
+{
+    const double t0 = p0 * (self->f19 + p0 * self->f20);
+    const double t1 = self->f18 + p0 * (self->f17 + t0);
+    const double t2 = p0 * p0;
+    const double t3 = self->f22 * t2;
+    const double t4 = self->f21 + t3;
+    const double t5 = p0 * (self->f24 + p0 * (t0 + self->f23)) - self->f25;
+    const double t6 = p0 * (t3 + self->f26);
+    const double t7 = self->f29 + p0 * (self->f27 - p0 * (self->f28 + p0 * self->f16));
+    const double t8 = self->f31 - t2 * self->f30;
+    const double t9 = self->f32 + t2 * (self->f33 + t2 * self->f34);
+    const double t10 = t9 * t9;
+    const double t11 = t10 * (self->f35 + p0 * self->f3) + self->f4 * (t7 * t9) - self->f2 * (t5 *
+        t7) + self->f5 * (t1 * t9);
+    const double t12 = self->f6 * t10 + self->f4 * (t8 * t9) - self->f2 * (t5 * t8 + t6 * t7) +
+        self->f5 * (t4 * t9);
+    const double t13 = t12 + copysign(sqrt(t12 * t12 + self->f2 * (t6 * t8) * t11 * 4.0), t12);
+    const double t14 = t11 * 2.0;
+    const double t15 = (self->f11 - p0 * (self->f13 + p0 * self->f14)) * t13 + p0 * self->f15 * t14;
+    const double t16 = t1 * t13 - t4 * t14;
+    const double t17 = t5 * t13 - t6 * t14;
+    const double t18 = t7 * t13 - t8 * t14;
+    const double t19 = t9 * t13;
+    const double t20 = self->f0 * t18 + self->f7 * t16 + t15 * (p0 * self->f0);
+    const double t21 = self->f8 * t19 - self->f1 * t17 - t16 * (p0 * self->f1) + self->f9 * t15;
+    const double t22 = p0 * self->f2;
+    const double t23 = (t19 * (p0 * self->f4) + t18 * self->f36 - t17 * t22) * (t21 * (p0 *
+        self->f12) - t20 * (self->f10 - self->f1 * t2));
+    const double t24 = t23 + (t19 * self->f37 - t18 * t22 - t17 * self->f38) * (t21 * (self->f39 -
+        self->f0 * t2) + t20 * (p0 * self->f40));
+    return t9 - t24 / (self->f3 * (t19 * t19) - self->f2 * (t16 * t18) + self->f4 * (t15 * t19) -
+        self->f2 * (t15 * t17));
+}
+
+/// det K at `n` roll rates: `out[i] = rc_prepared_det_k(self, p0[i])` for i < n (the slice form
+/// of the Rust crate's `Prepared::det_k_into`); `p0` and `out` hold at least n doubles.
+/// No allocation; the loop body is the straight-line det_k.
+ROLL_CRITERION_API void rc_prepared_det_k_into(const struct rc_Prepared *self, const double *p0,
+    double *out, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        out[i] = rc_prepared_det_k(self, p0[i]);
+    }
 }
 
 // Aircraft A: every constant folded exactly, then rounded once to double.
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  25      42       3       2       0      72
-//   zero_sideslip_trim                     5      16       1       4       0      26
+//   trim                                  23      42       3       3       0      71
+//   zero_sideslip_trim                     4      16       1       4       0      25
 //   jacobian5                              1       6       0       5       0      12
-//   residual_denominator                  25      41       1       0       0      67
-//   stiffness                             38      65       2       0       0     105
-//   det_k                                 40      68       1       0       0     109
-//   det_j5                                44      63       1       0       0     108
-//   zero_sideslip_det_k                   17      36       1       0       0      54
+//   residual_denominator                  23      41       1       1       0      66
+//   stiffness                             36      65       2       1       0     104
+//   det_k                                 38      68       1       1       0     108
+//   det_j5                                42      63       1       1       0     107
+//   zero_sideslip_det_k                   16      36       1       0       0      53
 //   divergence_biquadratic                 0       0       0       0       0       0
-//   divergence_roll_rates                  2       0       2       0       3       7
-//   jump_polynomial                      196     254       0       0       0     450
-//   zero_sideslip_jump_polynomial         21      30       0       0       0      51
-//   characteristic_coefficients           74      96       1       0       0     171
-//   hurwitz_delta4                        80     106       1       0       0     187
-//   hopf_omega_squared                    76      98       2       0       0     176
+//   divergence_roll_rates                  1       1       2       2       4      10
+//   jump_polynomial                      176     258       0       0       0     434
+//   zero_sideslip_jump_polynomial         17      26       0       0       0      43
+//   characteristic_coefficients           72      96       1       1       0     170
+//   hurwitz_delta4                        78     106       1       1       0     186
+//   hopf_omega_squared                    74      98       2       1       0     175
+//   hopf_polynomial                       80     156       0       1       0     237
 
 /// The data of Aircraft A (Table A.1), for the parametric functions.
 static const struct rc_derivatives rc_aircraft_a_derivatives = {
@@ -1349,22 +1700,32 @@ static const struct rc_derivatives rc_aircraft_a_derivatives = {
     0.0, // l_delta_r
 };
 
-/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
-/// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
-/// equation), and the aileron from the roll equation, a quadratic in delta_a
-/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the
-/// trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),
-/// element 1 the other root; both by the cancellation-free quadratic formula. NaN where
-/// the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw
-/// (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the
-/// divergence roll rates). The other functions of `p0` use element 0.
+/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = [alpha0, beta0, Q0, R0]` solves
+/// `A x0 + b = 0` (Cramer's rule, one division by det A), affine in delta_a (aileron yaw
+/// `n_delta_a` enters b); the aileron then solves the roll equation `p_dot = 0` along it,
+/// a quadratic `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element
+/// 0 is the trim that continues the trim without aileron yaw (the root that tends to
+/// `-g0/g1`), element 1 the other root; both by the cancellation-free quadratic formula.
+/// NaN where the two trims of `p0` are complex; element 1 is infinite or NaN without
+/// aileron yaw (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0
+/// (the divergence roll rates). The other functions of `p0` use element 0.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A = [[z_alpha, -P0, 1, 0],
+///      [P0, y_beta, 0, -1],
+///      [m_alpha, 0, m_q, C*P0],
+///      [0, n_beta, -D*P0, n_r]]
+/// b = [0, 0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
+/// p_dot = l_p*P0 + l_r*R0 + l_beta*beta0 + l_delta_a*delta_a + l_delta_r*delta_r - E*Q0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 42 mul, 3 div, 2 neg, 0 libm (72 operations); straight-line, no branches.
+/// Cost after CSE: 23 add/sub, 42 mul, 3 div, 3 neg, 0 libm (71 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::trim`, bit-identical.
 ROLL_CRITERION_API struct rc_Trim_array2 rc_aircraft_a_trim(double p0, double delta_e,
     double delta_r)
@@ -1379,12 +1740,12 @@ ROLL_CRITERION_API struct rc_Trim_array2 rc_aircraft_a_trim(double p0, double de
     const double t7 = p0 * 0.2608;
     const double t8 = p0 * t0 - 13.52504;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
-        (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+        50.4558736781056 - p0 * (t0 * 3.716));
     const double t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
     const double t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
     const double t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9;
-    const double t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232) - t2 * (p0 * 3.716 -
-        (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
+    const double t13 = (delta_r * (-(p0 * t5 + 1.0592979372)) - t2 * (p0 * 3.716 - (3.0076 * (t1 *
+        0.0558) + p0 * t4))) * t9;
     struct rc_Trim_array2 result;
     result.v[0].alpha = t10;
     result.v[0].beta = t11;
@@ -1401,35 +1762,61 @@ ROLL_CRITERION_API struct rc_Trim_array2 rc_aircraft_a_trim(double p0, double de
 }
 
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the
-/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the
-/// rudder from the roll and yaw equations together (with aileron yaw and roll due to
-/// rudder both controls enter both; the rudder is the schedule of the aileron-rudder
-/// interconnect, Fig. 9). Angles in rad, rates in rad/s.
+/// rudder freed; `[alpha0, Q0, R0]` solves `A1 x + b1 = 0` (the alpha, beta and q
+/// equations), the aileron and the rudder the roll and yaw equations together (with
+/// aileron yaw and roll due to rudder both controls enter both; the rudder is the
+/// schedule of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A1 = [[z_alpha, 1, 0],
+///       [P0, 0, -1],
+///       [m_alpha, m_q, C*P0]]
+/// b1 = [0, 0, m_delta_e*delta_e]
+/// delta_a = (-l_p*n_delta_r*P0 - l_r*n_delta_r*R0 + n_p*l_delta_r*P0 + n_r*l_delta_r*R0
+///                - D*l_delta_r*P0*Q0 + E*n_delta_r*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// delta_r = (l_p*n_delta_a*P0 + l_r*n_delta_a*R0 - l_delta_a*n_p*P0 - l_delta_a*n_r*R0
+///                + D*l_delta_a*P0*Q0 - E*n_delta_a*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 5 add/sub, 16 mul, 1 div, 4 neg, 0 libm (26 operations); straight-line, no branches.
+/// Cost after CSE: 4 add/sub, 16 mul, 1 div, 4 neg, 0 libm (25 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::zero_sideslip_trim`, bit-identical.
 ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_a_zero_sideslip_trim(double p0,
     double delta_e)
 {
+    // exact: 25/8182
+    const double K0 = 0.0030554876558298704;
     const double t0 = delta_e * 33.268;
-    const double t1 = 1.0 / (5.458794 - (p0 * (p0 * 0.959) - 13.52504));
+    const double t1 = 1.0 / (18.983834 - p0 * (p0 * 0.959));
     const double t2 = t0 * 3.0076 * t1;
     const double t3 = p0 * t0 * t1;
     struct rc_ZeroSideslipTrim result;
     result.alpha = -(t0 * t1);
     result.q = -t2;
     result.r = -t3;
-    result.delta_a = -(0.0030554876558298704 * (t3 * (1.5207 + t2 * 0.705) + p0 * 21.7529));
-    result.delta_r = 0.0030554876558298704 * (t3 * 85.354624 + p0 * t2 * 257.24208);
+    result.delta_a = -(K0 * (t3 * (1.5207 + t2 * 0.705) + p0 * 21.7529));
+    result.delta_r = K0 * (t3 * 85.354624 + p0 * t2 * 257.24208);
     return result;
 }
 
 /// The 5x5 Jacobian of the PSS model (Appendix A.2) at the state
-/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s.
+/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s;
+/// below with `(alpha0, beta0, P0, Q0, R0) = (alpha, beta, p, q, r)`.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// J5 = [[z_alpha, -P0, -beta0, 1, 0],
+///       [P0, y_beta, alpha0, 0, -1],
+///       [0, l_beta, l_p, -E*R0, l_r - E*Q0],
+///       [m_alpha, 0, C*R0, m_q, C*P0],
+///       [0, n_beta, n_p - D*Q0, -D*P0, n_r]]
+/// ```
 ///
 /// Arguments:
 /// - `alpha`: angle of attack, rad
@@ -1472,15 +1859,20 @@ ROLL_CRITERION_API struct rc_matrix5x5 rc_aircraft_a_jacobian5(double alpha, dou
     return result;
 }
 
-/// The static-residual denominator (Eq. 22) at the trim of `p0`:
-/// `d = l_p + l_r alpha0 - E Q0 alpha0 - E R0 beta0`, 1/s. det K has poles where d = 0 (Fig. 8).
+/// The static-residual denominator d (Eq. 22) at the trim of `p0`, 1/s. det K has
+/// poles where d = 0 (Fig. 8).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 41 mul, 1 div, 0 neg, 0 libm (67 operations); straight-line, no branches.
+/// Cost after CSE: 23 add/sub, 41 mul, 1 div, 1 neg, 0 libm (66 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::residual_denominator`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_a_residual_denominator(double p0, double delta_e,
     double delta_r)
@@ -1495,23 +1887,36 @@ ROLL_CRITERION_API double rc_aircraft_a_residual_denominator(double p0, double d
     const double t7 = p0 * 0.2608;
     const double t8 = p0 * t0 - 13.52504;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
-        (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
-    return (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9 * (1.5207 - (t2 * (-11.220010120064 -
-        p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9 * 0.705) + (-21.7529 - 0.705 * ((delta_r
-        * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9 * ((delta_r * (-0.3046007052 - p0 * t5 -
-        0.754697232) - t2 * (p0 * 3.716 - (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9)));
+        50.4558736781056 - p0 * (t0 * 3.716));
+    const double t10 = 1.5207 - (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 *
+        t8)) * t9 * 0.705;
+    const double t11 = (delta_r * (-(p0 * t5 + 1.0592979372)) - t2 * (p0 * 3.716 - (3.0076 * (t1 *
+        0.0558) + p0 * t4))) * t9;
+    const double t12 = -21.7529 - 0.705 * ((delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) *
+        t9 * t11);
+    return (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9 * t10 + t12;
 }
 
-/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of `p0`:
-/// `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in Eqs 13-14,
-/// g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual (Eqs 22-25). 1/s^2.
+/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of
+/// `p0`: `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in
+/// Eqs 13-14, g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual
+/// (Eqs 22-25). 1/s^2.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 38 add/sub, 65 mul, 2 div, 0 neg, 0 libm (105 operations); straight-line, no branches.
+/// Cost after CSE: 36 add/sub, 65 mul, 2 div, 1 neg, 0 libm (104 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::stiffness`, bit-identical.
 ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_a_stiffness(double p0, double delta_e,
     double delta_r)
@@ -1526,12 +1931,12 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_a_stiffness(double p0, double
     const double t7 = p0 * 0.2608;
     const double t8 = p0 * t0 - 13.52504;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
-        (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+        50.4558736781056 - p0 * (t0 * 3.716));
     const double t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
     const double t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
     const double t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9;
-    const double t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232) - t2 * (p0 * 3.716 -
-        (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
+    const double t13 = (delta_r * (-(p0 * t5 + 1.0592979372)) - t2 * (p0 * 3.716 - (3.0076 * (t1 *
+        0.0558) + p0 * t4))) * t9;
     const double t14 = 1.5207 - t12 * 0.705;
     const double t15 = 1.0 / (t10 * t14 + (-21.7529 - 0.705 * (t11 * t13)));
     const double t16 = p0 * t14 - t13 * 2.120358;
@@ -1549,15 +1954,25 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_a_stiffness(double p0, double
 
 /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the
 /// saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.
-/// Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared
-/// from g, h and d, on the trim branch of [`trim`].
+/// Evaluated as `det K0 - h^T adj(K0) g / d` (the matrix determinant lemma on
+/// `K = K0 - g h^T / d`) with the trim's denominator det A cleared from g, h and d, on
+/// the trim branch of [`trim`].
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 40 add/sub, 68 mul, 1 div, 0 neg, 0 libm (109 operations); straight-line, no branches.
+/// Cost after CSE: 38 add/sub, 68 mul, 1 div, 1 neg, 0 libm (108 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::det_k`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_a_det_k(double p0, double delta_e, double delta_r)
 {
@@ -1566,7 +1981,7 @@ ROLL_CRITERION_API double rc_aircraft_a_det_k(double p0, double delta_e, double 
     const double t2 = delta_e * 33.268;
     const double t3 = 0.473352 + t0 * t1;
     const double t4 = p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
-        (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864);
+        50.4558736781056 - p0 * (t0 * 3.716);
     const double t5 = p0 * t1;
     const double t6 = p0 * 1.815;
     const double t7 = t0 * 0.0558;
@@ -1575,8 +1990,8 @@ ROLL_CRITERION_API double rc_aircraft_a_det_k(double p0, double delta_e, double 
     const double t10 = p0 * t0 - 13.52504;
     const double t11 = delta_r * (5.458794 - t10) - t2 * (t1 * 3.0076 + t9);
     const double t12 = t2 * (-11.220010120064 - p0 * t9) - delta_r * (3.0076 * t7 + p0 * t10);
-    const double t13 = delta_r * (-0.3046007052 - p0 * t6 - 0.754697232) - t2 * (p0 * 3.716 -
-        (3.0076 * (t1 * 0.0558) + p0 * t5));
+    const double t13 = delta_r * (-(p0 * t6 + 1.0592979372)) - t2 * (p0 * 3.716 - (3.0076 * (t1 *
+        0.0558) + p0 * t5));
     const double t14 = 1.815 * t11 - 0.959 * t13 - t0 * t8;
     const double t15 = 0.786 * t12 + t1 * t11 + t8 * 0.2608;
     const double t16 = p0 * 0.705;
@@ -1585,9 +2000,11 @@ ROLL_CRITERION_API double rc_aircraft_a_det_k(double p0, double delta_e, double 
     const double t19 = p0 * 1.8685122;
     const double t20 = p0 * 2.6247736;
     const double t21 = 3.73055264 - 0.786 * t17;
+    const double t22 = (t12 * 0.039339 - (t4 * 110.53485506 + t13 * t16)) * (t14 * t20 - t15 * t18);
+    const double t23 = 1.5207 * (t4 * t8) - (21.7529 * (t4 * t4) + 0.705 * (t11 * t13)) - 0.705 *
+        (t8 * t12);
     return t18 * t21 + t19 * t20 - ((t4 * (p0 * 1.5207) - t13 * 2.120358 - t12 * t16) * (t14 * t21 +
-        t15 * t19) + (t12 * 0.039339 - (t4 * 110.53485506 + t13 * t16)) * (t14 * t20 - t15 * t18)) /
-        (1.5207 * (t4 * t8) - (21.7529 * (t4 * t4) + 0.705 * (t11 * t13)) - 0.705 * (t8 * t12));
+        t15 * t19) + t22) / t23;
 }
 
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -1598,10 +2015,26 @@ ROLL_CRITERION_API double rc_aircraft_a_det_k(double p0, double delta_e, double 
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 44 add/sub, 63 mul, 1 div, 0 neg, 0 libm (108 operations); straight-line, no branches.
+/// Cost after CSE: 42 add/sub, 63 mul, 1 div, 1 neg, 0 libm (107 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::det_j5`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_a_det_j5(double p0, double delta_e, double delta_r)
 {
+    // exact: 295.719190228139814032
+    const double K0 = 295.71919022813984;
+    // exact: -272.793225401958092944
+    const double K1 = -272.79322540195807;
+    // exact: 9.8286324216101328
+    const double K2 = 9.828632421610132;
+    // exact: 1133.0355257374320864
+    const double K3 = 1133.0355257374322;
+    // exact: -1649.32301698305663144
+    const double K4 = -1649.3230169830567;
+    // exact: 7.58579274212467008
+    const double K5 = 7.58579274212467;
+    // exact: 35.571390943064448
+    const double K6 = 35.57139094306445;
+    // exact: -1540.544555557906743104
+    const double K7 = -1540.5445555579067;
     const double t0 = p0 * 0.959;
     const double t1 = p0 * 0.786;
     const double t2 = delta_e * 33.268;
@@ -1612,35 +2045,38 @@ ROLL_CRITERION_API double rc_aircraft_a_det_j5(double p0, double delta_e, double
     const double t7 = p0 * 0.2608;
     const double t8 = p0 * t0 - 13.52504;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
-        (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+        50.4558736781056 - p0 * (t0 * 3.716));
     const double t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
     const double t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
     const double t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9;
-    const double t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232) - t2 * (p0 * 3.716 -
-        (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
-    return p0 * (p0 * (p0 * (t13 * (t12 * 1.06282134 - 1.1462641218) + t11 * 83.2543383 - p0 *
-        16.3967704446) + (t12 * (t12 * 1.00574595 + (81.084922887 + t10 * 7.4946304152)) + (t13 *
-        (t11 * 2.51236902 - t13 * 0.176325576) + (295.71919022813984 - t10 * 266.561825136888)))) +
-        (t13 * (-272.79322540195807 - t12 * 9.828632421610132 - t10 * 10.042969019112) + t11 * (t12
-        * 5.17310107716816 - 1133.0355257374322))) + (t12 * (t12 * 0.586988765940636 +
-        (-1649.3230169830567 - t10 * 49.73346863652)) + (-1540.5445555579067 - t10 *
-        439.5600225423592 - t13 * (t13 * 7.58579274212467 + t11 * 35.57139094306445)));
+    const double t13 = (delta_r * (-(p0 * t5 + 1.0592979372)) - t2 * (p0 * 3.716 - (3.0076 * (t1 *
+        0.0558) + p0 * t4))) * t9;
+    const double t14 = t13 * (t11 * 2.51236902 - t13 * 0.176325576) + (K0 - t10 * 266.561825136888);
+    const double t15 = p0 * (t13 * (t12 * 1.06282134 - 1.1462641218) + t11 * 83.2543383 - p0 *
+        16.3967704446);
+    const double t16 = t13 * (K1 - t12 * K2 - t10 * 10.042969019112) + t11 * (t12 * 5.17310107716816
+        - K3);
+    const double t17 = t12 * (t12 * 0.586988765940636 + (K4 - t10 * 49.73346863652));
+    const double t18 = p0 * (p0 * (t15 + (t12 * (t12 * 1.00574595 + (81.084922887 + t10 *
+        7.4946304152)) + t14)) + t16);
+    return t18 + (t17 + (K7 - t10 * 439.5600225423592 - t13 * (t13 * K5 + t11 * K6)));
 }
 
 /// det K (Eq. 27) at the zero-sideslip trim of `p0` (section V.D, Fig. 11), 1/s^4: its
-/// zeros mark the departure (transcritical point) of the zero-sideslip roll.
+/// zeros mark the departure (transcritical point) of the zero-sideslip roll. K0, g, h
+/// and d are those of [`det_k`] with `beta0 = 0`.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 17 add/sub, 36 mul, 1 div, 0 neg, 0 libm (54 operations); straight-line, no branches.
+/// Cost after CSE: 16 add/sub, 36 mul, 1 div, 0 neg, 0 libm (53 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::zero_sideslip_det_k`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_a_zero_sideslip_det_k(double p0, double delta_e)
 {
     const double t0 = p0 * 0.959;
     const double t1 = delta_e * 33.268;
-    const double t2 = 5.458794 - (p0 * t0 - 13.52504);
+    const double t2 = 18.983834 - p0 * t0;
     const double t3 = t1 * 3.0076;
     const double t4 = p0 * t1;
     const double t5 = 0.959 * t4 + t0 * t1;
@@ -1651,13 +2087,21 @@ ROLL_CRITERION_API double rc_aircraft_a_zero_sideslip_det_k(double p0, double de
     const double t10 = p0 * 1.8685122;
     const double t11 = p0 * 2.6247736;
     const double t12 = 3.73055264 - 0.786 * t8;
-    return t9 * t12 + t10 * t11 + ((t2 * (p0 * 1.5207) + t4 * 2.120358 + t3 * t7) * (t5 * t12 - t6 *
-        t10) + (t4 * t7 - t2 * 110.53485506 - t3 * 0.039339) * (t6 * t9 + t5 * t11)) / (t2 * t2 *
-        21.7529 + 1.5207 * (t1 * t2) + 0.705 * (t1 * t3));
+    const double t13 = (t2 * (p0 * 1.5207) + t4 * 2.120358 + t3 * t7) * (t5 * t12 - t6 * t10);
+    const double t14 = t13 + (t4 * t7 - t2 * 110.53485506 - t3 * 0.039339) * (t6 * t9 + t5 * t11);
+    return t9 * t12 + t10 * t11 + t14 / (t2 * t2 * 21.7529 + 1.5207 * (t1 * t2) + 0.705 * (t1 *
+        t3));
 }
 
-/// Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive
-/// roots are the pitch-yaw divergence roll rates of Table 1.
+/// Coefficients [c0, c2, c4] of `det A = c4 P0^4 + c2 P0^2 + c0` (Eq. 5); its
+/// positive roots are the pitch-yaw divergence roll rates of Table 1.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c0 = -m_alpha*n_beta + z_alpha*m_q*n_beta - y_beta*m_alpha*n_r + z_alpha*y_beta*m_q*n_r
+/// c2 = -C*n_beta + D*m_alpha + m_q*n_r + C*D*z_alpha*y_beta
+/// c4 = C*D
+/// ```
 ///
 /// Cost after CSE: 0 add/sub, 0 mul, 0 div, 0 neg, 0 libm (0 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::divergence_biquadratic`, bit-identical.
@@ -1670,18 +2114,25 @@ ROLL_CRITERION_API struct rc_array3 rc_aircraft_a_divergence_biquadratic(void)
     return result;
 }
 
-/// The divergence roll rates P1, P2 of Eq. 5 (Table 1), rad/s:
-/// `P = sqrt((-c2 -+ sqrt(c2^2 - 4 c4 c0)) / (2 c4))`, ascending when c4 = C D > 0.
-/// NaN for a root that does not exist (negative discriminant or P0^2 < 0), without a branch.
+/// The divergence roll rates P1 <= P2 of Eq. 5 (Table 1), rad/s, the positive roots of
+/// `det A = c4 P0^4 + c2 P0^2 + c0` ([`divergence_biquadratic`]), by the cancellation-free
+/// quadratic formula in `P0^2`: `q = -(c2 + copysign(sqrt(c2^2 - 4 c4 c0), c2)) / 2`,
+/// `P1 = sqrt(c0 / q)` (the root of smaller magnitude), `P2 = sqrt(q / c4)`. Both are
+/// accurate to a few ulps of well-conditioned coefficients even when one root is tiny
+/// against the other (the textbook `(-c2 -+ sqrt(...)) / (2 c4)` loses the small one to
+/// cancellation); `c4 = 0` gives `P1 = sqrt(-c0 / c2)`. NaN for a root that does not
+/// exist (negative discriminant or `P0^2 < 0`), without a branch.
 ///
-/// Cost after CSE: 2 add/sub, 0 mul, 2 div, 0 neg, 3 libm (7 operations); straight-line, no branches.
+/// Cost after CSE: 1 add/sub, 1 mul, 2 div, 2 neg, 4 libm (10 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::divergence_roll_rates`, bit-identical.
 ROLL_CRITERION_API struct rc_array2 rc_aircraft_a_divergence_roll_rates(void)
 {
-    const double t0 = sqrt(-28.72000847425926);
+    // exact: -28.7200084742592588633040084736
+    const double K0 = -28.72000847425926;
+    const double t0 = 0.5 * (copysign(sqrt(K0), -13.59447201192208) - 13.59447201192208);
     struct rc_array2 result;
-    result.v[0] = sqrt((13.59447201192208 - t0) / 1.507548);
-    result.v[1] = sqrt((t0 + 13.59447201192208) / 1.507548);
+    result.v[0] = sqrt(-(70.82019204602176 / t0));
+    result.v[1] = sqrt(-(t0 / 0.753774));
     return result;
 }
 
@@ -1694,21 +2145,59 @@ ROLL_CRITERION_API struct rc_array2 rc_aircraft_a_divergence_roll_rates(void)
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 196 add/sub, 254 mul, 0 div, 0 neg, 0 libm (450 operations); straight-line, no branches.
+/// Cost after CSE: 176 add/sub, 258 mul, 0 div, 0 neg, 0 libm (434 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::jump_polynomial`, bit-identical.
 ROLL_CRITERION_API struct rc_array13 rc_aircraft_a_jump_polynomial(double delta_e, double delta_r)
 {
+    // exact: 373.267296674289152
+    const double K0 = 373.2672966742891;
+    // exact: 119.23551520615616
+    const double K1 = 119.23551520615617;
+    // exact: -294746421981588840321233983493776448072450637941/38146972656250000000000000000000000000000
+    const double K2 = -7726600.604394162;
+    // exact: 678945685146805839769413528011793521305764875811/152587890625000000000000000000000000000000
+    const double K3 = 4449538.442178107;
+    // exact: 504.060968370333668198835106927296
+    const double K4 = 504.0609683703337;
+    // exact: -9.3162390330219775915896
+    const double K5 = -9.316239033021978;
+    // exact: 272.793225401958092944
+    const double K6 = 272.79322540195807;
+    // exact: 671897324447018729226979579906638297269953501527/610351562500000000000000000000000000000000
+    const double K7 = 1100836.5763739955;
+    // exact: 7.58579274212467008
+    const double K8 = 7.58579274212467;
+    // exact: 1649.32301698305663144
+    const double K9 = 1649.3230169830567;
+    // exact: 9.8286324216101328
+    const double K10 = 9.828632421610132;
+    // exact: 1133.0355257374320864
+    const double K11 = 1133.0355257374322;
+    // exact: 35.571390943064448
+    const double K12 = 35.57139094306445;
+    // exact: 539.355050538846092944
+    const double K13 = 539.3550505388461;
+    // exact: 11716.74300149464349152964902828466268191232
+    const double K14 = 11716.743001494644;
+    // exact: 85.304859579584448
+    const double K15 = 85.30485957958444;
+    // exact: 364670412208808341191561700839765278336107284713/2441406250000000000000000000000000000000000
+    const double K16 = 149369.0008407279;
+    // exact: 17.62876176123667008
+    const double K17 = 17.62876176123667;
+    // exact: 2782.35854272048871784
+    const double K18 = 2782.358542720489;
     const double t0 = delta_e * 124.10802522752;
     const double t1 = delta_r * 1.8685122;
     const double t2 = delta_e * 26.148648;
     const double t3 = delta_r * 18.983834;
     const double t4 = delta_e * 87.3209681248;
     const double t5 = delta_r * 0.959;
-    const double t6 = delta_e * 373.2672966742891;
+    const double t6 = delta_e * K0;
     const double t7 = delta_r * 13.36409670728;
     const double t8 = delta_e * 8.6762944;
     const double t9 = delta_r * 1.0592979372;
-    const double t10 = delta_e * 119.23551520615617;
+    const double t10 = delta_e * K1;
     const double t11 = delta_r * 1.815;
     const double t12 = t9 * 70.82019204602176;
     const double t13 = t10 * 70.82019204602176;
@@ -1721,127 +2210,126 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_a_jump_polynomial(double delta_
     const double t20 = t11 * 0.753774;
     const double t21 = t2 * 0.753774;
     const double t22 = t9 * t9;
-    const double t23 = t9 * t10;
-    const double t24 = t9 * t11;
-    const double t25 = t2 * t9;
-    const double t26 = t23 + t23;
-    const double t27 = t10 * t11;
-    const double t28 = t2 * t10;
-    const double t29 = t24 + (t24 + t10 * t10);
-    const double t30 = t2 * t11;
-    const double t31 = t27 + (t27 - t25) - t25;
-    const double t32 = t11 * t11 - t28 - t28;
-    const double t33 = t30 + t30;
-    const double t34 = t2 * t2;
-    const double t35 = t6 * 70.82019204602176;
-    const double t36 = t7 * 70.82019204602176;
-    const double t37 = t5 * 70.82019204602176;
-    const double t38 = t6 * 13.59447201192208 - t8 * 70.82019204602176;
-    const double t39 = t37 + t7 * 13.59447201192208;
-    const double t40 = t5 * 13.59447201192208;
-    const double t41 = t8 * 13.59447201192208 - t6 * 0.753774;
-    const double t42 = t40 + t7 * 0.753774;
-    const double t43 = t8 * 0.753774;
-    const double t44 = t5 * 0.753774;
-    const double t45 = t6 * t9;
-    const double t46 = t2 * t6;
-    const double t47 = t6 * t10 - t7 * t9;
-    const double t48 = t2 * t7;
-    const double t49 = t6 * t11 - t7 * t10 + t8 * t9;
-    const double t50 = t2 * t8;
-    const double t51 = t5 * t9;
-    const double t52 = t8 * t10 - (t46 + t7 * t11) + t51;
-    const double t53 = t5 * t10;
-    const double t54 = t48 + t8 * t11 + t53;
-    const double t55 = t5 * t11;
-    const double t56 = t55 - t50;
-    const double t57 = t2 * t5;
-    const double t58 = t6 * t6;
-    const double t59 = t6 * t7;
-    const double t60 = t6 * t8;
-    const double t61 = t5 * t6;
-    const double t62 = t59 + t59;
-    const double t63 = t7 * t8;
-    const double t64 = t5 * t7;
-    const double t65 = t60 + (t60 + t7 * t7);
-    const double t66 = t5 * t8;
-    const double t67 = t61 + (t61 - t63 - t63);
-    const double t68 = t8 * t8 - t64 - t64;
-    const double t69 = t66 + t66;
-    const double t70 = t5 * t5;
-    const double t71 = t3 * 70.82019204602176;
-    const double t72 = t4 * 70.82019204602176;
-    const double t73 = t37 + t3 * 13.59447201192208;
-    const double t74 = t4 * 13.59447201192208;
-    const double t75 = t40 + t3 * 0.753774;
-    const double t76 = t4 * 0.753774;
-    const double t77 = t3 * t9;
-    const double t78 = t4 * t9 - t3 * t10;
-    const double t79 = t51 + (t4 * t10 - t3 * t11);
-    const double t80 = t53 + (t2 * t3 + t4 * t11);
-    const double t81 = t55 - t2 * t4;
-    const double t82 = t0 * 70.82019204602176;
-    const double t83 = t1 * 70.82019204602176;
-    const double t84 = t14 + t0 * 13.59447201192208;
-    const double t85 = t1 * 13.59447201192208;
-    const double t86 = t17 + t0 * 0.753774;
-    const double t87 = t1 * 0.753774;
-    const double t88 = t0 * t6;
-    const double t89 = t1 * t6 - t0 * t7;
-    const double t90 = t0 * t8 - t1 * t7 - t46;
-    const double t91 = t48 + (t0 * t5 + t1 * t8);
-    const double t92 = t1 * t5 - t50;
+    const double t23 = t2 * t9;
+    const double t24 = t9 * t10 * 2.0;
+    const double t25 = t2 * t10;
+    const double t26 = t10 * t10 + t9 * t11 * 2.0;
+    const double t27 = t2 * t11;
+    const double t28 = 2.0 * (t10 * t11) - t23 * 2.0;
+    const double t29 = t11 * t11 - 2.0 * t25;
+    const double t30 = 2.0 * t27;
+    const double t31 = t2 * t2;
+    const double t32 = t6 * 70.82019204602176;
+    const double t33 = t7 * 70.82019204602176;
+    const double t34 = t5 * 70.82019204602176;
+    const double t35 = t6 * 13.59447201192208 - t8 * 70.82019204602176;
+    const double t36 = t34 + t7 * 13.59447201192208;
+    const double t37 = t5 * 13.59447201192208;
+    const double t38 = t8 * 13.59447201192208 - t6 * 0.753774;
+    const double t39 = t37 + t7 * 0.753774;
+    const double t40 = t8 * 0.753774;
+    const double t41 = t5 * 0.753774;
+    const double t42 = t6 * t9;
+    const double t43 = t2 * t6;
+    const double t44 = t6 * t10 - t7 * t9;
+    const double t45 = t2 * t7;
+    const double t46 = t6 * t11 - t7 * t10 + t8 * t9;
+    const double t47 = t2 * t8;
+    const double t48 = t5 * t9;
+    const double t49 = t8 * t10 - (t43 + t7 * t11) + t48;
+    const double t50 = t5 * t10;
+    const double t51 = t45 + t8 * t11 + t50;
+    const double t52 = t5 * t11;
+    const double t53 = t52 - t47;
+    const double t54 = t2 * t5;
+    const double t55 = t12 * 1.1462641218 - t15 * K6 - (t28 * K8 + t24 * 0.176325576) + (t36 * K9 +
+        t33 * 81.084922887);
+    const double t56 = t13 * 1.1462641218 - t16 * K6 - K7 - (t29 * K8 + t26 * 0.176325576) + (t35 *
+        81.084922887 - t38 * K9);
+    const double t57 = t6 * t6;
+    const double t58 = t5 * t6;
+    const double t59 = 2.0 * (t6 * t7);
+    const double t60 = t5 * t7;
+    const double t61 = t7 * t7 + 2.0 * (t6 * t8);
+    const double t62 = t5 * t8;
+    const double t63 = 2.0 * t58 - 2.0 * (t7 * t8);
+    const double t64 = t8 * t8 - 2.0 * t60;
+    const double t65 = 2.0 * t62;
+    const double t66 = t5 * t5;
+    const double t67 = K3 + t13 * K6 - (t26 * K8 + t22 * 0.176325576) - (t35 * K9 + t32 *
+        81.084922887) - t44 * K10;
+    const double t68 = t3 * 70.82019204602176;
+    const double t69 = t4 * 70.82019204602176;
+    const double t70 = t34 + t3 * 13.59447201192208;
+    const double t71 = t4 * 13.59447201192208;
+    const double t72 = t37 + t3 * 0.753774;
+    const double t73 = t4 * 0.753774;
+    const double t74 = t3 * t9;
+    const double t75 = t4 * t9 - t3 * t10;
+    const double t76 = t48 + (t4 * t10 - t3 * t11);
+    const double t77 = t50 + (t2 * t3 + t4 * t11);
+    const double t78 = t52 - t2 * t4;
+    const double t79 = t55 + (t42 * 1.06282134 - t46 * K10) + (t63 * 0.586988765940636 - t59 *
+        1.00574595) + (t70 * K11 + t68 * 83.2543383);
+    const double t80 = t56 + (t44 * 1.06282134 - t49 * K10) + (t64 * 0.586988765940636 + t61 *
+        1.00574595) - (t71 * K11 + t69 * 83.2543383);
+    const double t81 = t12 * K6 - t24 * K8 - t33 * K9 - t42 * K10 - t59 * 0.586988765940636 - t68 *
+        K11 - t75 * K12;
+    const double t82 = t67 + (t61 * 0.586988765940636 + t57 * 1.00574595) + t69 * K11 - (t76 * K12 +
+        t74 * 2.51236902);
+    const double t83 = t0 * 70.82019204602176;
+    const double t84 = t1 * 70.82019204602176;
+    const double t85 = t14 + t0 * 13.59447201192208;
+    const double t86 = t1 * 13.59447201192208;
+    const double t87 = t17 + t0 * 0.753774;
+    const double t88 = t1 * 0.753774;
+    const double t89 = t79 + (t75 * 2.51236902 - t77 * K12) + (t58 - (t3 * t8 + t4 * t7)) *
+        5.17310107716816;
+    const double t90 = t80 + (t76 * 2.51236902 - t78 * K12) + (t4 * t8 - t3 * t5 - t60) *
+        5.17310107716816;
+    const double t91 = t19 * 1.1462641218 - t21 * K13 - K14 - t31 * 0.176325576 - t40 * 81.084922887
+        + t53 * 1.06282134 + t66 * 1.00574595;
+    const double t92 = t82 + (t3 * t7 + t4 * t6) * 5.17310107716816 + (t83 * 266.561825136888 - t85
+        * 439.5600225423592);
+    const double t93 = t0 * t6;
+    const double t94 = t1 * t6 - t0 * t7;
+    const double t95 = t0 * t8 - t1 * t7 - t43;
+    const double t96 = t45 + (t0 * t5 + t1 * t8);
+    const double t97 = t1 * t5 - t47;
+    const double t98 = t89 + (t84 * 266.561825136888 - t86 * 439.5600225423592) - (t0 * t11 + t1 *
+        t10 - t23) * 10.042969019112;
+    const double t99 = t90 + (t87 * 439.5600225423592 - t85 * 266.561825136888) - (t1 * t11 - t0 *
+        t2 - t25) * 10.042969019112;
+    const double t100 = t30 * K8 - t28 * 0.176325576 - t18 * K6 - t15 * 1.1462641218 - t39 * K9 -
+        t36 * 81.084922887 + t46 * 1.06282134;
+    const double t101 = t100 - t51 * K10 + t65 * 0.586988765940636 + t63 * 1.00574595 - t72 * K11 -
+        t70 * 83.2543383 + t54 * K15;
+    const double t102 = t101 + t77 * 2.51236902 + (t62 + t4 * t5) * 5.17310107716816 + t88 *
+        439.5600225423592 - t86 * 266.561825136888;
+    const double t103 = K16 + t19 * K6 - t16 * 1.1462641218 - t31 * K17 - t29 * 0.176325576 + t40 *
+        K9 + t38 * 81.084922887 + t49 * 1.06282134;
+    const double t104 = t103 - t53 * K10 + t66 * 5.760089843108796 + t64 * 1.00574595 + t73 * K11 +
+        t71 * 83.2543383 + t78 * 2.51236902;
+    const double t105 = t20 * K6 - t18 * 1.1462641218 + t30 * 0.176325576 + t41 * K18 + t39 *
+        81.084922887 - t54 * 0.1783670135898672;
     struct rc_array13 result;
-    result.v[0] = -7726600.604394162 - t22 * 7.58579274212467 + t35 * 1649.3230169830567 + t58 *
-        0.586988765940636 + t77 * 35.57139094306445 + t82 * 439.5600225423592 - t88 *
-        49.73346863652;
-    result.v[1] = t12 * 272.79322540195807 - t26 * 7.58579274212467 - t36 * 1649.3230169830567 - t45
-        * 9.828632421610132 - t62 * 0.586988765940636 - t71 * 1133.0355257374322 - t78 *
-        35.57139094306445 - t3 * t6 * 5.17310107716816 + t83 * 439.5600225423592 - t0 * t9 *
-        10.042969019112 - t89 * 49.73346863652;
-    result.v[2] = 4449538.442178107 + t13 * 272.79322540195807 - (t29 * 7.58579274212467 + t22 *
-        0.176325576) - (t38 * 1649.3230169830567 + t35 * 81.084922887) - t47 * 9.828632421610132 +
-        (t65 * 0.586988765940636 + t58 * 1.00574595) + t72 * 1133.0355257374322 - (t79 *
-        35.57139094306445 + t77 * 2.51236902) + (t3 * t7 + t4 * t6) * 5.17310107716816 + (t82 *
-        266.561825136888 - t84 * 439.5600225423592) - (t0 * t10 + t1 * t9) * 10.042969019112 + (t88
-        * 7.4946304152 - t90 * 49.73346863652);
-    result.v[3] = t12 * 1.1462641218 - t15 * 272.79322540195807 - (t31 * 7.58579274212467 + t26 *
-        0.176325576) + (t39 * 1649.3230169830567 + t36 * 81.084922887) + (t45 * 1.06282134 - t49 *
-        9.828632421610132) + (t67 * 0.586988765940636 - t62 * 1.00574595) + (t73 *
-        1133.0355257374322 + t71 * 83.2543383) + (t78 * 2.51236902 - t80 * 35.57139094306445) + (t61
-        - (t3 * t8 + t4 * t7)) * 5.17310107716816 + (t83 * 266.561825136888 - t85 *
-        439.5600225423592) - (t0 * t11 + t1 * t10 - t25) * 10.042969019112 + (t89 * 7.4946304152 -
-        t91 * 49.73346863652);
-    result.v[4] = t13 * 1.1462641218 - t16 * 272.79322540195807 - 1100836.5763739955 - (t32 *
-        7.58579274212467 + t29 * 0.176325576) + (t38 * 81.084922887 - t41 * 1649.3230169830567) +
-        (t47 * 1.06282134 - t52 * 9.828632421610132) + (t68 * 0.586988765940636 + t65 * 1.00574595)
-        - (t74 * 1133.0355257374322 + t72 * 83.2543383) + (t79 * 2.51236902 - t81 *
-        35.57139094306445) + (t4 * t8 - t3 * t5 - t64) * 5.17310107716816 + (t86 * 439.5600225423592
-        - t84 * 266.561825136888) - (t1 * t11 - t0 * t2 - t28) * 10.042969019112 + (t90 *
-        7.4946304152 - t92 * 49.73346863652);
-    result.v[5] = t33 * 7.58579274212467 - t31 * 0.176325576 - (t18 * 272.79322540195807 + t15 *
-        1.1462641218) - (t42 * 1649.3230169830567 + t39 * 81.084922887) + (t49 * 1.06282134 - t54 *
-        9.828632421610132) + (t69 * 0.586988765940636 + t67 * 1.00574595) - (t75 *
-        1133.0355257374322 + t73 * 83.2543383) + (t57 * 35.57139094306445 + t80 * 2.51236902) + (t66
-        + t4 * t5) * 5.17310107716816 + (t87 * 439.5600225423592 - t85 * 266.561825136888) + (t30 +
-        t1 * t2) * 10.042969019112 + (t57 * 49.73346863652 + t91 * 7.4946304152);
-    result.v[6] = 149369.0008407279 + (t19 * 272.79322540195807 - t16 * 1.1462641218) - (t34 *
-        7.58579274212467 + t32 * 0.176325576) + (t43 * 1649.3230169830567 + t41 * 81.084922887) +
-        (t52 * 1.06282134 - t56 * 9.828632421610132) + (t70 * 0.586988765940636 + t68 * 1.00574595)
-        + (t76 * 1133.0355257374322 + t74 * 83.2543383) + t81 * 2.51236902 + t70 * 5.17310107716816
-        + (t86 * 266.561825136888 - t21 * 439.5600225423592) - t34 * 10.042969019112 + t92 *
-        7.4946304152;
-    result.v[7] = t20 * 272.79322540195807 - t18 * 1.1462641218 + t33 * 0.176325576 + (t44 *
-        1649.3230169830567 + t42 * 81.084922887) + (t57 * 9.828632421610132 + t54 * 1.06282134) +
-        t69 * 1.00574595 + (t44 * 1133.0355257374322 + t75 * 83.2543383) - t57 * 2.51236902 + t87 *
-        266.561825136888 - t57 * 7.4946304152;
-    result.v[8] = t19 * 1.1462641218 - t21 * 272.79322540195807 - 11716.743001494644 - t34 *
-        0.176325576 - t43 * 81.084922887 + t56 * 1.06282134 + t70 * 1.00574595 - t76 * 83.2543383 -
-        t21 * 266.561825136888;
-    result.v[9] = t20 * 1.1462641218 - t44 * 81.084922887 - t57 * 1.06282134 - t44 * 83.2543383;
-    result.v[10] = 504.0609683703337 - t21 * 1.1462641218;
+    result.v[0] = K2 - t22 * K8 + t32 * K9 + t57 * 0.586988765940636 + t74 * K12 + t83 *
+        439.5600225423592 - t93 * 49.73346863652;
+    result.v[1] = t81 - t3 * t6 * 5.17310107716816 + t84 * 439.5600225423592 - t0 * t9 *
+        10.042969019112 - t94 * 49.73346863652;
+    result.v[2] = t92 - (t0 * t10 + t1 * t9) * 10.042969019112 + (t93 * 7.4946304152 - t95 *
+        49.73346863652);
+    result.v[3] = t98 + (t94 * 7.4946304152 - t96 * 49.73346863652);
+    result.v[4] = t99 + (t95 * 7.4946304152 - t97 * 49.73346863652);
+    result.v[5] = t102 + (t27 + t1 * t2) * 10.042969019112 + t96 * 7.4946304152;
+    result.v[6] = t104 + t87 * 266.561825136888 - t21 * 439.5600225423592 + t97 * 7.4946304152;
+    result.v[7] = t105 + t51 * 1.06282134 + t65 * 1.00574595 + t72 * 83.2543383 + t88 *
+        266.561825136888;
+    result.v[8] = t91 - t73 * 83.2543383;
+    result.v[9] = t20 * 1.1462641218 - t41 * 164.339261187 - t54 * 1.06282134;
+    result.v[10] = K4 - t21 * 1.1462641218;
     result.v[11] = 0.0;
-    result.v[12] = -9.316239033021978;
+    result.v[12] = K5;
     return result;
 }
 
@@ -1851,10 +2339,28 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_a_jump_polynomial(double delta_
 /// Arguments:
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 21 add/sub, 30 mul, 0 div, 0 neg, 0 libm (51 operations); straight-line, no branches.
+/// Cost after CSE: 17 add/sub, 26 mul, 0 div, 0 neg, 0 libm (43 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::zero_sideslip_jump_polynomial`, bit-identical.
 ROLL_CRITERION_API struct rc_array9 rc_aircraft_a_zero_sideslip_jump_polynomial(double delta_e)
 {
+    // exact: 868.990024503966852203963792
+    const double K0 = 868.9900245039669;
+    // exact: -15.0797982392601726
+    const double K1 = -15.079798239260173;
+    // exact: 1649.32301698305663144
+    const double K2 = 1649.3230169830567;
+    // exact: 555190.618316798815405681800173421824
+    const double K3 = 555190.6183167988;
+    // exact: 539.355050538846092944
+    const double K4 = 539.3550505388461;
+    // exact: 18093.404852109689311653247387584
+    const double K5 = 18093.40485210969;
+    // exact: 162665.800262590001173522804241097792
+    const double K6 = 162665.80026259;
+    // exact: 17.62876176123667008
+    const double K7 = 17.62876176123667;
+    // exact: 2.3340020064101328
+    const double K8 = 2.334002006410133;
     const double t0 = delta_e * 33.268;
     const double t1 = delta_e * 100.0568368;
     const double t2 = t0 * 18.983834;
@@ -1865,36 +2371,66 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_a_zero_sideslip_jump_polynomial(
     const double t7 = t0 * t1;
     const double t8 = t1 * t1;
     struct rc_array9 result;
-    result.v[0] = t5 * 1649.3230169830567 - 555190.6183167988 + t8 * 0.586988765940636 + t2 *
-        439.5600225423592 - t7 * 49.73346863652;
+    result.v[0] = t5 * K2 - K3 + t8 * 0.586988765940636 + t2 * 439.5600225423592 - t7 *
+        49.73346863652;
     result.v[1] = 0.0;
-    result.v[2] = 162665.80026259 + t2 * 272.79322540195807 - t4 * 7.58579274212467 - (t6 *
-        1649.3230169830567 + t5 * 81.084922887) - t7 * 9.828632421610132 + t8 * 1.00574595 + (t2 *
-        266.561825136888 - t3 * 439.5600225423592) - t4 * 10.042969019112 + t7 * 7.4946304152;
+    result.v[2] = K6 + t2 * K4 - t4 * K7 - t6 * K2 - t5 * 81.084922887 - t7 * K8 + t8 * 1.00574595 -
+        t3 * 439.5600225423592;
     result.v[3] = 0.0;
-    result.v[4] = t2 * 1.1462641218 - t3 * 272.79322540195807 - 18093.40485210969 - t4 * 0.176325576
-        + t6 * 81.084922887 + t7 * 1.06282134 - t3 * 266.561825136888;
+    result.v[4] = t2 * 1.1462641218 - t3 * K4 - K5 - t4 * 0.176325576 + t6 * 81.084922887 + t7 *
+        1.06282134;
     result.v[5] = 0.0;
-    result.v[6] = 868.9900245039669 - t3 * 1.1462641218;
+    result.v[6] = K0 - t3 * 1.1462641218;
     result.v[7] = 0.0;
-    result.v[8] = -15.079798239260173;
+    result.v[8] = K1;
     return result;
 }
 
 /// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
 /// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
-/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10).
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3
+/// to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c1 = -z_alpha - y_beta - l_p - m_q - n_r
+/// c2 = -m_alpha + n_beta + z_alpha*y_beta + z_alpha*l_p + z_alpha*m_q + z_alpha*n_r + y_beta*l_p
+///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha0 + m_q*n_r
+///          + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 74 add/sub, 96 mul, 1 div, 0 neg, 0 libm (171 operations); straight-line, no branches.
+/// Cost after CSE: 72 add/sub, 96 mul, 1 div, 1 neg, 0 libm (170 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::characteristic_coefficients`, bit-identical.
 ROLL_CRITERION_API struct rc_array5 rc_aircraft_a_characteristic_coefficients(double p0,
     double delta_e, double delta_r)
 {
+    // exact: 192.68735381072212
+    const double K0 = 192.68735381072213;
+    // exact: 441.680209183658616
+    const double K1 = 441.68020918365863;
+    // exact: 592.9168745384313456
+    const double K2 = 592.9168745384313;
+    // exact: 295.719190228139814032
+    const double K3 = 295.71919022813984;
+    // exact: 272.793225401958092944
+    const double K4 = 272.79322540195807;
+    // exact: 9.8286324216101328
+    const double K5 = 9.828632421610132;
+    // exact: 1133.0355257374320864
+    const double K6 = 1133.0355257374322;
+    // exact: 1649.32301698305663144
+    const double K7 = 1649.3230169830567;
+    // exact: 7.58579274212467008
+    const double K8 = 7.58579274212467;
+    // exact: 35.571390943064448
+    const double K9 = 35.57139094306445;
+    // exact: 1540.544555557906743104
+    const double K10 = 1540.5445555579067;
     const double t0 = p0 * 0.959;
     const double t1 = p0 * 0.786;
     const double t2 = delta_e * 33.268;
@@ -1905,51 +2441,84 @@ ROLL_CRITERION_API struct rc_array5 rc_aircraft_a_characteristic_coefficients(do
     const double t7 = p0 * 0.2608;
     const double t8 = p0 * t0 - 13.52504;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
-        (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+        50.4558736781056 - p0 * (t0 * 3.716));
     const double t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
     const double t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
     const double t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9;
-    const double t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232) - t2 * (p0 * 3.716 -
-        (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
+    const double t13 = (delta_r * (-(p0 * t5 + 1.0592979372)) - t2 * (p0 * 3.716 - (3.0076 * (t1 *
+        0.0558) + p0 * t4))) * t9;
     const double t14 = t12 * (1.1952702 - t12 * 0.55413);
     const double t15 = t13 * t13 * 0.676095;
     const double t16 = p0 * p0;
     const double t17 = t13 * (1.1462641218 - t12 * 1.06282134);
+    const double t18 = t13 * (t13 * 2.247474999 + t11 * 9.5351532) + (551.318118699284 + t10 *
+        555.8106088);
+    const double t19 = t13 * (K0 - t12 * 3.255846892956 + t10 * 12.04752222) + t11 *
+        (-207.455111534192 - t12 * 10.1144104152);
+    const double t20 = t13 * (t13 * 3.165989810886 + t11 * 3.01882950312) + (K2 + t10 *
+        2208.42906185688);
+    const double t21 = p0 * (p0 * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 *
+        83.2543383))) + t19);
+    const double t22 = t13 * (t13 * 0.176325576 - t11 * 2.51236902) + (t10 * 266.561825136888 - K3);
+    const double t23 = t12 * (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595) + t22;
+    const double t24 = t13 * (K4 + t12 * K5 + t10 * 10.042969019112) + t11 * (K6 - t12 *
+        5.17310107716816);
+    const double t25 = t13 * (t13 * K8 + t11 * K9) + (K10 + t10 * 439.5600225423592);
+    const double t26 = p0 * (p0 * (p0 * (p0 * 16.3967704446 + (t17 - t11 * 83.2543383)) + t23) +
+        t24);
     struct rc_array5 result;
     result.v[0] = 26.8921;
     result.v[1] = t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774);
     result.v[2] = p0 * (p0 * 42.5345817162 + (t17 - t11 * 110.45)) + (t12 * (92.64470614368 + t10 *
-        2.61978 - t12 * 2.703267792) + (t13 * (t13 * 2.247474999 + t11 * 9.5351532) +
-        (551.318118699284 + t10 * 555.8106088)));
-    result.v[3] = p0 * (p0 * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 * 83.2543383)))
-        + (t13 * (192.68735381072213 - t12 * 3.255846892956 + t10 * 12.04752222) + t11 *
-        (-207.455111534192 - t12 * 10.1144104152))) + (t12 * (441.68020918365863 + t10 *
-        12.634151028 - t12 * 10.6686289158804) + (t13 * (t13 * 3.165989810886 + t11 * 3.01882950312)
-        + (592.9168745384313 + t10 * 2208.42906185688)));
-    result.v[4] = p0 * (p0 * (p0 * (p0 * 16.3967704446 + (t17 - t11 * 83.2543383)) + (t12 *
-        (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595) + (t13 * (t13 * 0.176325576 - t11 *
-        2.51236902) + (t10 * 266.561825136888 - 295.71919022813984)))) + (t13 * (272.79322540195807
-        + t12 * 9.828632421610132 + t10 * 10.042969019112) + t11 * (1133.0355257374322 - t12 *
-        5.17310107716816))) + (t12 * (1649.3230169830567 + t10 * 49.73346863652 - t12 *
-        0.586988765940636) + (t13 * (t13 * 7.58579274212467 + t11 * 35.57139094306445) +
-        (1540.5445555579067 + t10 * 439.5600225423592)));
+        2.61978 - t12 * 2.703267792) + t18);
+    result.v[3] = t21 + (t12 * (K1 + t10 * 12.634151028 - t12 * 10.6686289158804) + t20);
+    result.v[4] = t26 + (t12 * (K7 + t10 * 49.73346863652 - t12 * 0.586988765940636) + t25);
     return result;
 }
 
 /// The fourth Hurwitz determinant of J5 at the trim of `p0`,
-/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`, 1/s^10.
-/// By Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
-/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle (`+-lambda`).
+/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`
+/// (expanded below) in the coefficients of [`characteristic_coefficients`], 1/s^10. By
+/// Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
+/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle
+/// (`+-lambda`).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// Delta4 = -c5^2 + 2*c1*c4*c5 + c2*c3*c5 - c3^2*c4 - c1^2*c4^2 - c1*c2^2*c5 + c1*c2*c3*c4
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 80 add/sub, 106 mul, 1 div, 0 neg, 0 libm (187 operations); straight-line, no branches.
+/// Cost after CSE: 78 add/sub, 106 mul, 1 div, 1 neg, 0 libm (186 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::hurwitz_delta4`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_a_hurwitz_delta4(double p0, double delta_e, double delta_r)
 {
+    // exact: 192.68735381072212
+    const double K0 = 192.68735381072213;
+    // exact: 441.680209183658616
+    const double K1 = 441.68020918365863;
+    // exact: 592.9168745384313456
+    const double K2 = 592.9168745384313;
+    // exact: 295.719190228139814032
+    const double K3 = 295.71919022813984;
+    // exact: 272.793225401958092944
+    const double K4 = 272.79322540195807;
+    // exact: 9.8286324216101328
+    const double K5 = 9.828632421610132;
+    // exact: 1133.0355257374320864
+    const double K6 = 1133.0355257374322;
+    // exact: 1649.32301698305663144
+    const double K7 = 1649.3230169830567;
+    // exact: 7.58579274212467008
+    const double K8 = 7.58579274212467;
+    // exact: 35.571390943064448
+    const double K9 = 35.57139094306445;
+    // exact: 1540.544555557906743104
+    const double K10 = 1540.5445555579067;
     const double t0 = p0 * 0.959;
     const double t1 = p0 * 0.786;
     const double t2 = delta_e * 33.268;
@@ -1960,53 +2529,85 @@ ROLL_CRITERION_API double rc_aircraft_a_hurwitz_delta4(double p0, double delta_e
     const double t7 = p0 * 0.2608;
     const double t8 = p0 * t0 - 13.52504;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
-        (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+        50.4558736781056 - p0 * (t0 * 3.716));
     const double t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
     const double t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
     const double t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9;
-    const double t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232) - t2 * (p0 * 3.716 -
-        (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
+    const double t13 = (delta_r * (-(p0 * t5 + 1.0592979372)) - t2 * (p0 * 3.716 - (3.0076 * (t1 *
+        0.0558) + p0 * t4))) * t9;
     const double t14 = t12 * (1.1952702 - t12 * 0.55413);
     const double t15 = t13 * t13 * 0.676095;
     const double t16 = p0 * p0;
     const double t17 = t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774);
     const double t18 = t13 * (1.1462641218 - t12 * 1.06282134);
-    const double t19 = p0 * (p0 * 42.5345817162 + (t18 - t11 * 110.45)) + (t12 * (92.64470614368 +
-        t10 * 2.61978 - t12 * 2.703267792) + (t13 * (t13 * 2.247474999 + t11 * 9.5351532) +
-        (551.318118699284 + t10 * 555.8106088)));
-    const double t20 = p0 * (p0 * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 *
-        83.2543383))) + (t13 * (192.68735381072213 - t12 * 3.255846892956 + t10 * 12.04752222) + t11
-        * (-207.455111534192 - t12 * 10.1144104152))) + (t12 * (441.68020918365863 + t10 *
-        12.634151028 - t12 * 10.6686289158804) + (t13 * (t13 * 3.165989810886 + t11 * 3.01882950312)
-        + (592.9168745384313 + t10 * 2208.42906185688)));
-    const double t21 = p0 * (p0 * (p0 * (p0 * 16.3967704446 + (t18 - t11 * 83.2543383)) + (t12 *
-        (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595) + (t13 * (t13 * 0.176325576 - t11 *
-        2.51236902) + (t10 * 266.561825136888 - 295.71919022813984)))) + (t13 * (272.79322540195807
-        + t12 * 9.828632421610132 + t10 * 10.042969019112) + t11 * (1133.0355257374322 - t12 *
-        5.17310107716816))) + (t12 * (1649.3230169830567 + t10 * 49.73346863652 - t12 *
-        0.586988765940636) + (t13 * (t13 * 7.58579274212467 + t11 * 35.57139094306445) +
-        (1540.5445555579067 + t10 * 439.5600225423592)));
-    const double t22 = t17 * t21;
-    const double t23 = t19 * t20;
-    return 26.8921 * (t17 * (t23 - t22) + 2.0 * (t20 * t21) - 26.8921 * (t20 * t20)) + (t19 * (t22 -
-        t23) - t21 * t21);
+    const double t19 = t13 * (t13 * 2.247474999 + t11 * 9.5351532) + (551.318118699284 + t10 *
+        555.8106088);
+    const double t20 = p0 * (p0 * 42.5345817162 + (t18 - t11 * 110.45)) + (t12 * (92.64470614368 +
+        t10 * 2.61978 - t12 * 2.703267792) + t19);
+    const double t21 = t13 * (K0 - t12 * 3.255846892956 + t10 * 12.04752222) + t11 *
+        (-207.455111534192 - t12 * 10.1144104152);
+    const double t22 = t13 * (t13 * 3.165989810886 + t11 * 3.01882950312) + (K2 + t10 *
+        2208.42906185688);
+    const double t23 = p0 * (p0 * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 *
+        83.2543383))) + t21);
+    const double t24 = t23 + (t12 * (K1 + t10 * 12.634151028 - t12 * 10.6686289158804) + t22);
+    const double t25 = t13 * (t13 * 0.176325576 - t11 * 2.51236902) + (t10 * 266.561825136888 - K3);
+    const double t26 = t12 * (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595) + t25;
+    const double t27 = t13 * (K4 + t12 * K5 + t10 * 10.042969019112) + t11 * (K6 - t12 *
+        5.17310107716816);
+    const double t28 = t13 * (t13 * K8 + t11 * K9) + (K10 + t10 * 439.5600225423592);
+    const double t29 = p0 * (p0 * (p0 * (p0 * 16.3967704446 + (t18 - t11 * 83.2543383)) + t26) +
+        t27);
+    const double t30 = t29 + (t12 * (K7 + t10 * 49.73346863652 - t12 * 0.586988765940636) + t28);
+    const double t31 = t17 * t30;
+    const double t32 = t20 * t24;
+    return 26.8921 * (t17 * (t32 - t31) + 2.0 * (t24 * t30) - 26.8921 * (t24 * t24)) + (t20 * (t31 -
+        t32) - t30 * t30);
 }
 
-/// `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` at the trim of `p0`, rad^2/s^2: at a zero of
-/// [`hurwitz_delta4`] the square of the frequency of the pair on the imaginary axis, positive
-/// at a Hopf point and negative at a neutral saddle (from the even and odd parts of
-/// `p(i omega) = 0` with `w^2` eliminated).
+/// `omega^2` at the trim of `p0`, rad^2/s^2, in the coefficients of
+/// [`characteristic_coefficients`]: at a zero of [`hurwitz_delta4`] the square of the
+/// frequency of the pair on the imaginary axis, positive at a Hopf point and negative
+/// at a neutral saddle (from the even and odd parts of `p(i omega) = 0` with `w^2`
+/// eliminated).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// omega^2 = (-c5 + c1*c4) / (-c3 + c1*c2)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 76 add/sub, 98 mul, 2 div, 0 neg, 0 libm (176 operations); straight-line, no branches.
+/// Cost after CSE: 74 add/sub, 98 mul, 2 div, 1 neg, 0 libm (175 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_a::hopf_omega_squared`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_a_hopf_omega_squared(double p0, double delta_e,
     double delta_r)
 {
+    // exact: 192.68735381072212
+    const double K0 = 192.68735381072213;
+    // exact: 441.680209183658616
+    const double K1 = 441.68020918365863;
+    // exact: 592.9168745384313456
+    const double K2 = 592.9168745384313;
+    // exact: 295.719190228139814032
+    const double K3 = 295.71919022813984;
+    // exact: 272.793225401958092944
+    const double K4 = 272.79322540195807;
+    // exact: 9.8286324216101328
+    const double K5 = 9.828632421610132;
+    // exact: 1133.0355257374320864
+    const double K6 = 1133.0355257374322;
+    // exact: 1649.32301698305663144
+    const double K7 = 1649.3230169830567;
+    // exact: 7.58579274212467008
+    const double K8 = 7.58579274212467;
+    // exact: 35.571390943064448
+    const double K9 = 35.57139094306445;
+    // exact: 1540.544555557906743104
+    const double K10 = 1540.5445555579067;
     const double t0 = p0 * 0.959;
     const double t1 = p0 * 0.786;
     const double t2 = delta_e * 33.268;
@@ -2017,51 +2618,167 @@ ROLL_CRITERION_API double rc_aircraft_a_hopf_omega_squared(double p0, double del
     const double t7 = p0 * 0.2608;
     const double t8 = p0 * t0 - 13.52504;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
-        (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+        50.4558736781056 - p0 * (t0 * 3.716));
     const double t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
     const double t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
     const double t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9;
-    const double t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232) - t2 * (p0 * 3.716 -
-        (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
+    const double t13 = (delta_r * (-(p0 * t5 + 1.0592979372)) - t2 * (p0 * 3.716 - (3.0076 * (t1 *
+        0.0558) + p0 * t4))) * t9;
     const double t14 = t12 * (1.1952702 - t12 * 0.55413);
     const double t15 = t13 * t13 * 0.676095;
     const double t16 = p0 * p0;
     const double t17 = t13 * (1.1462641218 - t12 * 1.06282134);
-    return (26.8921 * (p0 * (p0 * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 *
-        83.2543383))) + (t13 * (192.68735381072213 - t12 * 3.255846892956 + t10 * 12.04752222) + t11
-        * (-207.455111534192 - t12 * 10.1144104152))) + (t12 * (441.68020918365863 + t10 *
-        12.634151028 - t12 * 10.6686289158804) + (t13 * (t13 * 3.165989810886 + t11 * 3.01882950312)
-        + (592.9168745384313 + t10 * 2208.42906185688)))) - (p0 * (p0 * (p0 * (p0 * 16.3967704446 +
-        (t17 - t11 * 83.2543383)) + (t12 * (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595) +
-        (t13 * (t13 * 0.176325576 - t11 * 2.51236902) + (t10 * 266.561825136888 -
-        295.71919022813984)))) + (t13 * (272.79322540195807 + t12 * 9.828632421610132 + t10 *
-        10.042969019112) + t11 * (1133.0355257374322 - t12 * 5.17310107716816))) + (t12 *
-        (1649.3230169830567 + t10 * 49.73346863652 - t12 * 0.586988765940636) + (t13 * (t13 *
-        7.58579274212467 + t11 * 35.57139094306445) + (1540.5445555579067 + t10 *
-        439.5600225423592))))) / (26.8921 * (t14 + (136.03372548 + t15 + t10 * 110.45 + t16 *
-        1.753774)) - (p0 * (p0 * 42.5345817162 + (t17 - t11 * 110.45)) + (t12 * (92.64470614368 +
-        t10 * 2.61978 - t12 * 2.703267792) + (t13 * (t13 * 2.247474999 + t11 * 9.5351532) +
-        (551.318118699284 + t10 * 555.8106088)))));
+    const double t18 = t13 * (t13 * 2.247474999 + t11 * 9.5351532) + (551.318118699284 + t10 *
+        555.8106088);
+    const double t19 = t13 * (K0 - t12 * 3.255846892956 + t10 * 12.04752222) + t11 *
+        (-207.455111534192 - t12 * 10.1144104152);
+    const double t20 = t13 * (t13 * 3.165989810886 + t11 * 3.01882950312) + (K2 + t10 *
+        2208.42906185688);
+    const double t21 = p0 * (p0 * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 *
+        83.2543383))) + t19);
+    const double t22 = t13 * (t13 * 0.176325576 - t11 * 2.51236902) + (t10 * 266.561825136888 - K3);
+    const double t23 = t12 * (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595) + t22;
+    const double t24 = t13 * (K4 + t12 * K5 + t10 * 10.042969019112) + t11 * (K6 - t12 *
+        5.17310107716816);
+    const double t25 = t13 * (t13 * K8 + t11 * K9) + (K10 + t10 * 439.5600225423592);
+    const double t26 = p0 * (p0 * (p0 * (p0 * 16.3967704446 + (t17 - t11 * 83.2543383)) + t23) +
+        t24);
+    const double t27 = 26.8921 * (t21 + (t12 * (K1 + t10 * 12.634151028 - t12 * 10.6686289158804) +
+        t20));
+    const double t28 = p0 * (p0 * 42.5345817162 + (t17 - t11 * 110.45)) + (t12 * (92.64470614368 +
+        t10 * 2.61978 - t12 * 2.703267792) + t18);
+    const double t29 = t27 - (t26 + (t12 * (K7 + t10 * 49.73346863652 - t12 * 0.586988765940636) +
+        t25));
+    return t29 / (26.8921 * (t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774)) - t28);
+}
+
+/// The Hopf polynomial `det(A)^10 Delta4` (issue 10) of this aircraft at the trim of `p0`
+/// (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
+/// [`hurwitz_delta4`], so its sign is that of Delta4 wherever det A != 0. Its real roots
+/// are the Hopf points (where [`hopf_omega_squared`] > 0), the neutral saddles (omega^2 < 0)
+/// and the roots of det A (the divergence roll rates).
+///
+/// At delta_r = 0 a polynomial of degree 48 in P0 and 6 in delta_e (154 terms,
+/// `model::specialise::hopf::hopf_polynomial`), evaluated here as the derivation builds
+/// it: the trim numerators N and det A by Cramer's rule, the cleared characteristic
+/// coefficients `C_k = det(A)^k c_k(N / det A)` as polynomials in N and det A (exact folded
+/// constants, no division) and Orlando's `Delta4(C_1, ..., C_5)`. Its expanded form in P0
+/// cancels far beyond double precision near the Hopf points; this form does not.
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 80 add/sub, 156 mul, 0 div, 1 neg, 0 libm (237 operations); straight-line, no branches.
+/// Rust: `roll_criterion::aircraft_a::hopf_polynomial`, bit-identical.
+ROLL_CRITERION_API double rc_aircraft_a_hopf_polynomial(double p0, double delta_e, double delta_r)
+{
+    // exact: 592.9168745384313456
+    const double K0 = 592.9168745384313;
+    // exact: 192.68735381072212
+    const double K1 = 192.68735381072213;
+    // exact: 441.680209183658616
+    const double K2 = 441.68020918365863;
+    // exact: 295.719190228139814032
+    const double K3 = 295.71919022813984;
+    // exact: 1540.544555557906743104
+    const double K4 = 1540.5445555579067;
+    // exact: 272.793225401958092944
+    const double K5 = 272.79322540195807;
+    // exact: 7.58579274212467008
+    const double K6 = 7.58579274212467;
+    // exact: 1649.32301698305663144
+    const double K7 = 1649.3230169830567;
+    // exact: 9.8286324216101328
+    const double K8 = 9.828632421610132;
+    // exact: 1133.0355257374320864
+    const double K9 = 1133.0355257374322;
+    // exact: 35.571390943064448
+    const double K10 = 35.57139094306445;
+    const double t0 = p0 * 0.959;
+    const double t1 = p0 * 0.786;
+    const double t2 = delta_e * 33.268;
+    const double t3 = 0.473352 + t0 * t1;
+    const double t4 = p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076 +
+        50.4558736781056 - p0 * (t0 * 3.716);
+    const double t5 = p0 * t1;
+    const double t6 = p0 * 1.815;
+    const double t7 = t0 * 0.0558;
+    const double t8 = t2 * (t5 - 3.73055264) - delta_r * (t6 + t7);
+    const double t9 = p0 * 0.2608;
+    const double t10 = p0 * t0 - 13.52504;
+    const double t11 = delta_r * (5.458794 - t10) - t2 * (t1 * 3.0076 + t9);
+    const double t12 = t2 * (-11.220010120064 - p0 * t9) - delta_r * (3.0076 * t7 + p0 * t10);
+    const double t13 = delta_r * (-(p0 * t6 + 1.0592979372)) - t2 * (p0 * 3.716 - (3.0076 * (t1 *
+        0.0558) + p0 * t5));
+    const double t14 = t4 * 26.8921;
+    const double t15 = t4 * t4;
+    const double t16 = p0 * p0;
+    const double t17 = t4 * t12;
+    const double t18 = t4 * t8;
+    const double t19 = t15 * (136.03372548 + t16 * 1.753774) + t13 * t13 * 0.676095 + t17 *
+        1.1952702 - t12 * t12 * 0.55413 + t18 * 110.45;
+    const double t20 = t4 * t15;
+    const double t21 = t13 * t15;
+    const double t22 = t12 * t15;
+    const double t23 = t20 * (551.318118699284 + t16 * 42.5345817162) + t21 * (p0 * 1.1462641218) +
+        t13 * (t4 * t13) * 2.247474999;
+    const double t24 = t11 * t15;
+    const double t25 = t23 + t22 * 92.64470614368 - t13 * t17 * (p0 * 1.06282134) - t12 * t17 *
+        2.703267792 - t24 * (p0 * 110.45);
+    const double t26 = t8 * t15;
+    const double t27 = t25 + t13 * (t4 * t11) * 9.5351532 + t26 * 555.8106088 + t12 * t18 * 2.61978;
+    const double t28 = t15 * t15;
+    const double t29 = t13 * t20;
+    const double t30 = t28 * (t16 * (t16 * 0.753774 + 81.79006438806556) + K0) + t29 * (p0 * K1);
+    const double t31 = t12 * t20;
+    const double t32 = t30 + t13 * t21 * (3.165989810886 + t16 * 0.676095) + t31 * (K2 + t16 *
+        1.1952702) - t13 * t22 * (p0 * 3.255846892956);
+    const double t33 = t11 * t20;
+    const double t34 = t32 + t12 * t22 * (-10.6686289158804 - t16 * 0.55413) - t33 * (p0 *
+        207.455111534192) + t13 * t24 * 3.01882950312;
+    const double t35 = t8 * t20;
+    const double t36 = t16 * 83.2543383;
+    const double t37 = t34 - t12 * t24 * (p0 * 10.1144104152) + t35 * (2208.42906185688 + t36) + t13
+        * t26 * (p0 * 12.04752222);
+    const double t38 = t37 + t12 * t26 * 12.634151028;
+    const double t39 = t4 * t28 * (t16 * (t16 * 16.3967704446 - K3) + K4) + t13 * t28 * (p0 * (t16 *
+        1.1462641218 + K5));
+    const double t40 = t39 + t13 * t29 * (K6 + t16 * 0.176325576) + t12 * t28 * (K7 - t16 *
+        81.084922887);
+    const double t41 = t40 + t13 * t31 * (p0 * (K8 - t16 * 1.06282134)) + t12 * t31 *
+        (-0.586988765940636 - t16 * 1.00574595);
+    const double t42 = t41 + t11 * t28 * (p0 * (K9 - t36)) + t13 * t33 * (K10 - t16 * 2.51236902) -
+        t12 * t33 * (p0 * 5.17310107716816);
+    const double t43 = t42 + t8 * t28 * (439.5600225423592 + t16 * 266.561825136888) + t13 * t35 *
+        (p0 * 10.042969019112);
+    const double t44 = t43 + t12 * t35 * (49.73346863652 - t16 * 7.4946304152);
+    const double t45 = t19 * t44;
+    const double t46 = t27 * t38;
+    return t14 * (t19 * (t46 - t45) + t38 * t44 * 2.0 - t14 * (t38 * t38)) + (t27 * (t45 - t46) -
+        t44 * t44);
 }
 
 // Aircraft B: every constant folded exactly, then rounded once to double.
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  25      42       3       2       0      72
-//   zero_sideslip_trim                     5      16       1       4       0      26
+//   trim                                  23      42       3       3       0      71
+//   zero_sideslip_trim                     4      16       1       4       0      25
 //   jacobian5                              1       6       0       5       0      12
-//   residual_denominator                  25      41       1       0       0      67
-//   stiffness                             38      65       2       0       0     105
-//   det_k                                 40      68       1       0       0     109
-//   det_j5                                44      63       1       0       0     108
-//   zero_sideslip_det_k                   17      36       1       0       0      54
+//   residual_denominator                  23      41       1       1       0      66
+//   stiffness                             36      65       2       1       0     104
+//   det_k                                 38      68       1       1       0     108
+//   det_j5                                42      63       1       1       0     107
+//   zero_sideslip_det_k                   16      36       1       0       0      53
 //   divergence_biquadratic                 0       0       0       0       0       0
-//   divergence_roll_rates                  2       0       2       0       3       7
-//   jump_polynomial                      196     254       0       0       0     450
-//   zero_sideslip_jump_polynomial         21      30       0       0       0      51
-//   characteristic_coefficients           74      96       1       0       0     171
-//   hurwitz_delta4                        80     106       1       0       0     187
-//   hopf_omega_squared                    76      98       2       0       0     176
+//   divergence_roll_rates                  1       1       2       2       4      10
+//   jump_polynomial                      176     258       0       0       0     434
+//   zero_sideslip_jump_polynomial         17      26       0       0       0      43
+//   characteristic_coefficients           72      96       1       1       0     170
+//   hurwitz_delta4                        78     106       1       1       0     186
+//   hopf_omega_squared                    74      98       2       1       0     175
+//   hopf_polynomial                       80     156       0       1       0     237
 
 /// The data of Aircraft B (Table A.1), for the parametric functions.
 static const struct rc_derivatives rc_aircraft_b_derivatives = {
@@ -2085,22 +2802,32 @@ static const struct rc_derivatives rc_aircraft_b_derivatives = {
     0.0, // l_delta_r
 };
 
-/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
-/// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
-/// equation), and the aileron from the roll equation, a quadratic in delta_a
-/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the
-/// trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),
-/// element 1 the other root; both by the cancellation-free quadratic formula. NaN where
-/// the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw
-/// (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the
-/// divergence roll rates). The other functions of `p0` use element 0.
+/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = [alpha0, beta0, Q0, R0]` solves
+/// `A x0 + b = 0` (Cramer's rule, one division by det A), affine in delta_a (aileron yaw
+/// `n_delta_a` enters b); the aileron then solves the roll equation `p_dot = 0` along it,
+/// a quadratic `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element
+/// 0 is the trim that continues the trim without aileron yaw (the root that tends to
+/// `-g0/g1`), element 1 the other root; both by the cancellation-free quadratic formula.
+/// NaN where the two trims of `p0` are complex; element 1 is infinite or NaN without
+/// aileron yaw (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0
+/// (the divergence roll rates). The other functions of `p0` use element 0.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A = [[z_alpha, -P0, 1, 0],
+///      [P0, y_beta, 0, -1],
+///      [m_alpha, 0, m_q, C*P0],
+///      [0, n_beta, -D*P0, n_r]]
+/// b = [0, 0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
+/// p_dot = l_p*P0 + l_r*R0 + l_beta*beta0 + l_delta_a*delta_a + l_delta_r*delta_r - E*Q0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 42 mul, 3 div, 2 neg, 0 libm (72 operations); straight-line, no branches.
+/// Cost after CSE: 23 add/sub, 42 mul, 3 div, 3 neg, 0 libm (71 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::trim`, bit-identical.
 ROLL_CRITERION_API struct rc_Trim_array2 rc_aircraft_b_trim(double p0, double delta_e,
     double delta_r)
@@ -2115,12 +2842,12 @@ ROLL_CRITERION_API struct rc_Trim_array2 rc_aircraft_b_trim(double p0, double de
     const double t7 = p0 * 0.235;
     const double t8 = p0 * t0 - 23.18;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 +
-        (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+        132.4982708 - p0 * (t0 * 5.67));
     const double t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
     const double t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
     const double t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    const double t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328) - t2 * (p0 * 5.67 - (1.329 *
-        (t1 * 0.196) + p0 * t4))) * t9;
+    const double t13 = (delta_r * (-(p0 * t5 + 4.755313976)) - t2 * (p0 * 5.67 - (1.329 * (t1 *
+        0.196) + p0 * t4))) * t9;
     struct rc_Trim_array2 result;
     result.v[0].alpha = t10;
     result.v[0].beta = t11;
@@ -2137,35 +2864,61 @@ ROLL_CRITERION_API struct rc_Trim_array2 rc_aircraft_b_trim(double p0, double de
 }
 
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the
-/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the
-/// rudder from the roll and yaw equations together (with aileron yaw and roll due to
-/// rudder both controls enter both; the rudder is the schedule of the aileron-rudder
-/// interconnect, Fig. 9). Angles in rad, rates in rad/s.
+/// rudder freed; `[alpha0, Q0, R0]` solves `A1 x + b1 = 0` (the alpha, beta and q
+/// equations), the aileron and the rudder the roll and yaw equations together (with
+/// aileron yaw and roll due to rudder both controls enter both; the rudder is the
+/// schedule of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A1 = [[z_alpha, 1, 0],
+///       [P0, 0, -1],
+///       [m_alpha, m_q, C*P0]]
+/// b1 = [0, 0, m_delta_e*delta_e]
+/// delta_a = (-l_p*n_delta_r*P0 - l_r*n_delta_r*R0 + n_p*l_delta_r*P0 + n_r*l_delta_r*R0
+///                - D*l_delta_r*P0*Q0 + E*n_delta_r*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// delta_r = (l_p*n_delta_a*P0 + l_r*n_delta_a*R0 - l_delta_a*n_p*P0 - l_delta_a*n_r*R0
+///                + D*l_delta_a*P0*Q0 - E*n_delta_a*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 5 add/sub, 16 mul, 1 div, 4 neg, 0 libm (26 operations); straight-line, no branches.
+/// Cost after CSE: 4 add/sub, 16 mul, 1 div, 4 neg, 0 libm (25 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::zero_sideslip_trim`, bit-identical.
 ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_b_zero_sideslip_trim(double p0,
     double delta_e)
 {
+    // exact: 100/4583
+    const double K0 = 0.02181976871045167;
     const double t0 = delta_e * 28.37;
-    const double t1 = 1.0 / (1.081806 - (p0 * (p0 * 0.949) - 23.18));
+    const double t1 = 1.0 / (24.261806 - p0 * (p0 * 0.949));
     const double t2 = t0 * 1.329 * t1;
     const double t3 = p0 * t0 * t1;
     struct rc_ZeroSideslipTrim result;
     result.alpha = -(t0 * t1);
     result.q = -t2;
     result.r = -t3;
-    result.delta_a = -(0.02181976871045167 * (t3 * (0.126 + t2 * 0.727) + p0 * 3.933));
-    result.delta_r = 0.02181976871045167 * (t3 * 10.77005 + p0 * t2 * 32.81428);
+    result.delta_a = -(K0 * (t3 * (0.126 + t2 * 0.727) + p0 * 3.933));
+    result.delta_r = K0 * (t3 * 10.77005 + p0 * t2 * 32.81428);
     return result;
 }
 
 /// The 5x5 Jacobian of the PSS model (Appendix A.2) at the state
-/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s.
+/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s;
+/// below with `(alpha0, beta0, P0, Q0, R0) = (alpha, beta, p, q, r)`.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// J5 = [[z_alpha, -P0, -beta0, 1, 0],
+///       [P0, y_beta, alpha0, 0, -1],
+///       [0, l_beta, l_p, -E*R0, l_r - E*Q0],
+///       [m_alpha, 0, C*R0, m_q, C*P0],
+///       [0, n_beta, n_p - D*Q0, -D*P0, n_r]]
+/// ```
 ///
 /// Arguments:
 /// - `alpha`: angle of attack, rad
@@ -2208,15 +2961,20 @@ ROLL_CRITERION_API struct rc_matrix5x5 rc_aircraft_b_jacobian5(double alpha, dou
     return result;
 }
 
-/// The static-residual denominator (Eq. 22) at the trim of `p0`:
-/// `d = l_p + l_r alpha0 - E Q0 alpha0 - E R0 beta0`, 1/s. det K has poles where d = 0 (Fig. 8).
+/// The static-residual denominator d (Eq. 22) at the trim of `p0`, 1/s. det K has
+/// poles where d = 0 (Fig. 8).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 41 mul, 1 div, 0 neg, 0 libm (67 operations); straight-line, no branches.
+/// Cost after CSE: 23 add/sub, 41 mul, 1 div, 1 neg, 0 libm (66 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::residual_denominator`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_b_residual_denominator(double p0, double delta_e,
     double delta_r)
@@ -2231,23 +2989,36 @@ ROLL_CRITERION_API double rc_aircraft_b_residual_denominator(double p0, double d
     const double t7 = p0 * 0.235;
     const double t8 = p0 * t0 - 23.18;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 +
-        (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
-    return (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9 * (0.126 - (t2 * (-7.59664374 - p0 * t7)
-        - delta_r * (1.329 * t6 + p0 * t8)) * t9 * 0.727) + (-3.933 - 0.727 * ((delta_r * (1.081806
-        - t8) - t2 * (t1 * 1.329 + t7)) * t9 * ((delta_r * (-0.212033976 - p0 * t5 - 4.54328) - t2 *
-        (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t4))) * t9)));
+        132.4982708 - p0 * (t0 * 5.67));
+    const double t10 = 0.126 - (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) *
+        t9 * 0.727;
+    const double t11 = (delta_r * (-(p0 * t5 + 4.755313976)) - t2 * (p0 * 5.67 - (1.329 * (t1 *
+        0.196) + p0 * t4))) * t9;
+    const double t12 = -3.933 - 0.727 * ((delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9 *
+        t11);
+    return (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9 * t10 + t12;
 }
 
-/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of `p0`:
-/// `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in Eqs 13-14,
-/// g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual (Eqs 22-25). 1/s^2.
+/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of
+/// `p0`: `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in
+/// Eqs 13-14, g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual
+/// (Eqs 22-25). 1/s^2.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 38 add/sub, 65 mul, 2 div, 0 neg, 0 libm (105 operations); straight-line, no branches.
+/// Cost after CSE: 36 add/sub, 65 mul, 2 div, 1 neg, 0 libm (104 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::stiffness`, bit-identical.
 ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_b_stiffness(double p0, double delta_e,
     double delta_r)
@@ -2262,12 +3033,12 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_b_stiffness(double p0, double
     const double t7 = p0 * 0.235;
     const double t8 = p0 * t0 - 23.18;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 +
-        (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+        132.4982708 - p0 * (t0 * 5.67));
     const double t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
     const double t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
     const double t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    const double t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328) - t2 * (p0 * 5.67 - (1.329 *
-        (t1 * 0.196) + p0 * t4))) * t9;
+    const double t13 = (delta_r * (-(p0 * t5 + 4.755313976)) - t2 * (p0 * 5.67 - (1.329 * (t1 *
+        0.196) + p0 * t4))) * t9;
     const double t14 = 0.126 - t12 * 0.727;
     const double t15 = 1.0 / (t10 * t14 + (-3.933 - 0.727 * (t11 * t13)));
     const double t16 = p0 * t14 - t13 * 0.966183;
@@ -2285,15 +3056,25 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_b_stiffness(double p0, double
 
 /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the
 /// saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.
-/// Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared
-/// from g, h and d, on the trim branch of [`trim`].
+/// Evaluated as `det K0 - h^T adj(K0) g / d` (the matrix determinant lemma on
+/// `K = K0 - g h^T / d`) with the trim's denominator det A cleared from g, h and d, on
+/// the trim branch of [`trim`].
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 40 add/sub, 68 mul, 1 div, 0 neg, 0 libm (109 operations); straight-line, no branches.
+/// Cost after CSE: 38 add/sub, 68 mul, 1 div, 1 neg, 0 libm (108 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::det_k`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_b_det_k(double p0, double delta_e, double delta_r)
 {
@@ -2301,8 +3082,8 @@ ROLL_CRITERION_API double rc_aircraft_b_det_k(double p0, double delta_e, double 
     const double t1 = p0 * 0.716;
     const double t2 = delta_e * 28.37;
     const double t3 = 0.19129 + t0 * t1;
-    const double t4 = p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + (1.0676708 -
-        p0 * (t0 * 5.67) + 131.4306);
+    const double t4 = p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708 -
+        p0 * (t0 * 5.67);
     const double t5 = p0 * t1;
     const double t6 = p0 * 0.814;
     const double t7 = t0 * 0.196;
@@ -2311,8 +3092,8 @@ ROLL_CRITERION_API double rc_aircraft_b_det_k(double p0, double delta_e, double 
     const double t10 = p0 * t0 - 23.18;
     const double t11 = delta_r * (1.081806 - t10) - t2 * (t1 * 1.329 + t9);
     const double t12 = t2 * (-7.59664374 - p0 * t9) - delta_r * (1.329 * t7 + p0 * t10);
-    const double t13 = delta_r * (-0.212033976 - p0 * t6 - 4.54328) - t2 * (p0 * 5.67 - (1.329 * (t1
-        * 0.196) + p0 * t5));
+    const double t13 = delta_r * (-(p0 * t6 + 4.755313976)) - t2 * (p0 * 5.67 - (1.329 * (t1 *
+        0.196) + p0 * t5));
     const double t14 = 0.814 * t11 - 0.949 * t13 - t0 * t8;
     const double t15 = 0.716 * t12 + t1 * t11 + t8 * 0.235;
     const double t16 = p0 * 0.727;
@@ -2321,9 +3102,11 @@ ROLL_CRITERION_API double rc_aircraft_b_det_k(double p0, double delta_e, double 
     const double t19 = p0 * 1.000004;
     const double t20 = p0 * 1.186564;
     const double t21 = 5.71606 - 0.716 * t17;
-    return t18 * t21 + t19 * t20 - ((t4 * (p0 * 0.126) - t13 * 0.966183 - t12 * t16) * (t14 * t21 +
-        t15 * t19) + (t12 * 0.142492 - (t4 * 10.014696 + t13 * t16)) * (t14 * t20 - t15 * t18)) /
-        (0.126 * (t4 * t8) - (3.933 * (t4 * t4) + 0.727 * (t11 * t13)) - 0.727 * (t8 * t12));
+    const double t22 = (t4 * (p0 * 0.126) - t13 * 0.966183 - t12 * t16) * (t14 * t21 + t15 * t19);
+    const double t23 = 0.126 * (t4 * t8) - (3.933 * (t4 * t4) + 0.727 * (t11 * t13)) - 0.727 * (t8 *
+        t12);
+    return t18 * t21 + t19 * t20 - (t22 + (t12 * 0.142492 - (t4 * 10.014696 + t13 * t16)) * (t14 *
+        t20 - t15 * t18)) / t23;
 }
 
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -2334,10 +3117,18 @@ ROLL_CRITERION_API double rc_aircraft_b_det_k(double p0, double delta_e, double 
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 44 add/sub, 63 mul, 1 div, 0 neg, 0 libm (108 operations); straight-line, no branches.
+/// Cost after CSE: 42 add/sub, 63 mul, 1 div, 1 neg, 0 libm (107 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::det_j5`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_b_det_j5(double p0, double delta_e, double delta_r)
 {
+    // exact: 84.989869664563152
+    const double K0 = 84.98986966456316;
+    // exact: -10.593548621132256
+    const double K1 = -10.593548621132255;
+    // exact: -173.969821834698816
+    const double K2 = -173.96982183469882;
+    // exact: -545.43606531754788
+    const double K3 = -545.4360653175479;
     const double t0 = p0 * 0.949;
     const double t1 = p0 * 0.716;
     const double t2 = delta_e * 28.37;
@@ -2348,35 +3139,39 @@ ROLL_CRITERION_API double rc_aircraft_b_det_j5(double p0, double delta_e, double
     const double t7 = p0 * 0.235;
     const double t8 = p0 * t0 - 23.18;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 +
-        (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+        132.4982708 - p0 * (t0 * 5.67));
     const double t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
     const double t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
     const double t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    const double t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328) - t2 * (p0 * 5.67 - (1.329 *
-        (t1 * 0.196) + p0 * t4))) * t9;
-    return p0 * (p0 * (p0 * (t13 * (t12 * 0.987969736 - 0.085614984) + t11 * 6.78804516 - p0 *
-        2.672410572) + (t12 * (t12 * 0.423713048 + (6.714609336 + t10 * 12.06593176)) + (t13 * (t11
-        * 3.91186341 - t13 * 0.162131905) + (84.98986966456316 - t10 * 11.11251889764)))) + (t13 *
-        (-10.593548621132255 - t12 * 15.720444861287776 - t10 * 9.15905357189) + t11 * (t12 *
-        5.72030388496 - 164.88325852848))) + (t12 * (t12 * 2.475293094555232 + (-173.96982183469882
-        - t10 * 100.00934789454)) + (-545.4360653175479 - t10 * 39.62510941338 - t13 * (t13 *
-        5.24109923903202 + t11 * 96.3262428716)));
+    const double t13 = (delta_r * (-(p0 * t5 + 4.755313976)) - t2 * (p0 * 5.67 - (1.329 * (t1 *
+        0.196) + p0 * t4))) * t9;
+    const double t14 = t13 * (t11 * 3.91186341 - t13 * 0.162131905) + (K0 - t10 * 11.11251889764);
+    const double t15 = p0 * (t13 * (t12 * 0.987969736 - 0.085614984) + t11 * 6.78804516 - p0 *
+        2.672410572);
+    const double t16 = t13 * (K1 - t12 * 15.720444861287776 - t10 * 9.15905357189) + t11 * (t12 *
+        5.72030388496 - 164.88325852848);
+    const double t17 = K3 - t10 * 39.62510941338 - t13 * (t13 * 5.24109923903202 + t11 *
+        96.3262428716);
+    const double t18 = p0 * (p0 * (t15 + (t12 * (t12 * 0.423713048 + (6.714609336 + t10 *
+        12.06593176)) + t14)) + t16);
+    return t18 + (t12 * (t12 * 2.475293094555232 + (K2 - t10 * 100.00934789454)) + t17);
 }
 
 /// det K (Eq. 27) at the zero-sideslip trim of `p0` (section V.D, Fig. 11), 1/s^4: its
-/// zeros mark the departure (transcritical point) of the zero-sideslip roll.
+/// zeros mark the departure (transcritical point) of the zero-sideslip roll. K0, g, h
+/// and d are those of [`det_k`] with `beta0 = 0`.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 17 add/sub, 36 mul, 1 div, 0 neg, 0 libm (54 operations); straight-line, no branches.
+/// Cost after CSE: 16 add/sub, 36 mul, 1 div, 0 neg, 0 libm (53 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::zero_sideslip_det_k`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_b_zero_sideslip_det_k(double p0, double delta_e)
 {
     const double t0 = p0 * 0.949;
     const double t1 = delta_e * 28.37;
-    const double t2 = 1.081806 - (p0 * t0 - 23.18);
+    const double t2 = 24.261806 - p0 * t0;
     const double t3 = t1 * 1.329;
     const double t4 = p0 * t1;
     const double t5 = 0.949 * t4 + t0 * t1;
@@ -2387,13 +3182,20 @@ ROLL_CRITERION_API double rc_aircraft_b_zero_sideslip_det_k(double p0, double de
     const double t10 = p0 * 1.000004;
     const double t11 = p0 * 1.186564;
     const double t12 = 5.71606 - 0.716 * t8;
-    return t9 * t12 + t10 * t11 + ((t2 * (p0 * 0.126) + t4 * 0.966183 + t3 * t7) * (t5 * t12 - t6 *
-        t10) + (t4 * t7 - t2 * 10.014696 - t3 * 0.142492) * (t6 * t9 + t5 * t11)) / (t2 * t2 * 3.933
-        + 0.126 * (t1 * t2) + 0.727 * (t1 * t3));
+    const double t13 = (t2 * (p0 * 0.126) + t4 * 0.966183 + t3 * t7) * (t5 * t12 - t6 * t10);
+    const double t14 = t13 + (t4 * t7 - t2 * 10.014696 - t3 * 0.142492) * (t6 * t9 + t5 * t11);
+    return t9 * t12 + t10 * t11 + t14 / (t2 * t2 * 3.933 + 0.126 * (t1 * t2) + 0.727 * (t1 * t3));
 }
 
-/// Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive
-/// roots are the pitch-yaw divergence roll rates of Table 1.
+/// Coefficients [c0, c2, c4] of `det A = c4 P0^4 + c2 P0^2 + c0` (Eq. 5); its
+/// positive roots are the pitch-yaw divergence roll rates of Table 1.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c0 = -m_alpha*n_beta + z_alpha*m_q*n_beta - y_beta*m_alpha*n_r + z_alpha*y_beta*m_q*n_r
+/// c2 = -C*n_beta + D*m_alpha + m_q*n_r + C*D*z_alpha*y_beta
+/// c4 = C*D
+/// ```
 ///
 /// Cost after CSE: 0 add/sub, 0 mul, 0 div, 0 neg, 0 libm (0 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::divergence_biquadratic`, bit-identical.
@@ -2406,18 +3208,25 @@ ROLL_CRITERION_API struct rc_array3 rc_aircraft_b_divergence_biquadratic(void)
     return result;
 }
 
-/// The divergence roll rates P1, P2 of Eq. 5 (Table 1), rad/s:
-/// `P = sqrt((-c2 -+ sqrt(c2^2 - 4 c4 c0)) / (2 c4))`, ascending when c4 = C D > 0.
-/// NaN for a root that does not exist (negative discriminant or P0^2 < 0), without a branch.
+/// The divergence roll rates P1 <= P2 of Eq. 5 (Table 1), rad/s, the positive roots of
+/// `det A = c4 P0^4 + c2 P0^2 + c0` ([`divergence_biquadratic`]), by the cancellation-free
+/// quadratic formula in `P0^2`: `q = -(c2 + copysign(sqrt(c2^2 - 4 c4 c0), c2)) / 2`,
+/// `P1 = sqrt(c0 / q)` (the root of smaller magnitude), `P2 = sqrt(q / c4)`. Both are
+/// accurate to a few ulps of well-conditioned coefficients even when one root is tiny
+/// against the other (the textbook `(-c2 -+ sqrt(...)) / (2 c4)` loses the small one to
+/// cancellation); `c4 = 0` gives `P1 = sqrt(-c0 / c2)`. NaN for a root that does not
+/// exist (negative discriminant or `P0^2 < 0`), without a branch.
 ///
-/// Cost after CSE: 2 add/sub, 0 mul, 2 div, 0 neg, 3 libm (7 operations); straight-line, no branches.
+/// Cost after CSE: 1 add/sub, 1 mul, 2 div, 2 neg, 4 libm (10 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::divergence_roll_rates`, bit-identical.
 ROLL_CRITERION_API struct rc_array2 rc_aircraft_b_divergence_roll_rates(void)
 {
-    const double t0 = sqrt(90.03862732686056);
+    // exact: 90.038627326860557391585536
+    const double K0 = 90.03862732686056;
+    const double t0 = 0.5 * (copysign(sqrt(K0), -21.609425289744) - 21.609425289744);
     struct rc_array2 result;
-    result.v[0] = sqrt((21.609425289744 - t0) / 1.358968);
-    result.v[1] = sqrt((t0 + 21.609425289744) / 1.358968);
+    result.v[0] = sqrt(-(138.68193880436 / t0));
+    result.v[1] = sqrt(-(t0 / 0.679484));
     return result;
 }
 
@@ -2430,10 +3239,32 @@ ROLL_CRITERION_API struct rc_array2 rc_aircraft_b_divergence_roll_rates(void)
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 196 add/sub, 254 mul, 0 div, 0 neg, 0 libm (450 operations); straight-line, no branches.
+/// Cost after CSE: 176 add/sub, 258 mul, 0 div, 0 neg, 0 libm (434 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::jump_polynomial`, bit-identical.
 ROLL_CRITERION_API struct rc_array13 rc_aircraft_b_jump_polynomial(double delta_e, double delta_r)
 {
+    // exact: -10490197.386819397709989335197972131025859648
+    const double K0 = -10490197.386819398;
+    // exact: 4903748.9378829206247597401314006874722987776
+    const double K1 = 4903748.937882921;
+    // exact: 117.719087613062805165537236736
+    const double K2 = 117.71908761306281;
+    // exact: -1.233847969195142538432
+    const double K3 = -1.2338479691951425;
+    // exact: 10.593548621132256
+    const double K4 = 10.593548621132255;
+    // exact: 918295.21028008206691980371556923883838639104
+    const double K5 = 918295.2102800821;
+    // exact: 173.969821834698816
+    const double K6 = 173.96982183469882;
+    // exact: 21.706067518772256
+    const double K7 = 21.706067518772254;
+    // exact: 4499.265787898939326940650849946059776
+    const double K8 = 4499.265787898939;
+    // exact: 87740.159898100445660062789882475330881769472
+    const double K9 = 87740.15989810045;
+    // exact: 338.853080363178816
+    const double K10 = 338.85308036317883;
     const double t0 = delta_e * 162.1646222;
     const double t1 = delta_r * 1.000004;
     const double t2 = delta_e * 20.31292;
@@ -2457,125 +3288,134 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_b_jump_polynomial(double delta_
     const double t20 = t11 * 0.679484;
     const double t21 = t2 * 0.679484;
     const double t22 = t9 * t9;
-    const double t23 = t9 * t10;
-    const double t24 = t9 * t11;
-    const double t25 = t2 * t9;
-    const double t26 = t23 + t23;
-    const double t27 = t10 * t11;
-    const double t28 = t2 * t10;
-    const double t29 = t24 + (t24 + t10 * t10);
-    const double t30 = t2 * t11;
-    const double t31 = t27 + (t27 - t25) - t25;
-    const double t32 = t11 * t11 - t28 - t28;
-    const double t33 = t30 + t30;
-    const double t34 = t2 * t2;
-    const double t35 = t6 * 138.68193880436;
-    const double t36 = t7 * 138.68193880436;
-    const double t37 = t5 * 138.68193880436;
-    const double t38 = t6 * 21.609425289744 - t8 * 138.68193880436;
-    const double t39 = t37 + t7 * 21.609425289744;
-    const double t40 = t5 * 21.609425289744;
-    const double t41 = t8 * 21.609425289744 - t6 * 0.679484;
-    const double t42 = t40 + t7 * 0.679484;
-    const double t43 = t8 * 0.679484;
-    const double t44 = t5 * 0.679484;
-    const double t45 = t6 * t9;
-    const double t46 = t2 * t6;
-    const double t47 = t6 * t10 - t7 * t9;
-    const double t48 = t2 * t7;
-    const double t49 = t6 * t11 - t7 * t10 + t8 * t9;
-    const double t50 = t2 * t8;
-    const double t51 = t5 * t9;
-    const double t52 = t8 * t10 - (t46 + t7 * t11) + t51;
-    const double t53 = t5 * t10;
-    const double t54 = t48 + t8 * t11 + t53;
-    const double t55 = t5 * t11;
-    const double t56 = t55 - t50;
-    const double t57 = t2 * t5;
-    const double t58 = t6 * t6;
-    const double t59 = t6 * t7;
-    const double t60 = t6 * t8;
-    const double t61 = t5 * t6;
-    const double t62 = t59 + t59;
-    const double t63 = t7 * t8;
-    const double t64 = t5 * t7;
-    const double t65 = t60 + (t60 + t7 * t7);
-    const double t66 = t5 * t8;
-    const double t67 = t61 + (t61 - t63 - t63);
-    const double t68 = t8 * t8 - t64 - t64;
-    const double t69 = t66 + t66;
-    const double t70 = t5 * t5;
-    const double t71 = t3 * 138.68193880436;
-    const double t72 = t4 * 138.68193880436;
-    const double t73 = t37 + t3 * 21.609425289744;
-    const double t74 = t4 * 21.609425289744;
-    const double t75 = t40 + t3 * 0.679484;
-    const double t76 = t4 * 0.679484;
+    const double t23 = t2 * t9;
+    const double t24 = t9 * t10 * 2.0;
+    const double t25 = t2 * t10;
+    const double t26 = t10 * t10 + t9 * t11 * 2.0;
+    const double t27 = t2 * t11;
+    const double t28 = 2.0 * (t10 * t11) - t23 * 2.0;
+    const double t29 = t11 * t11 - 2.0 * t25;
+    const double t30 = 2.0 * t27;
+    const double t31 = t2 * t2;
+    const double t32 = t6 * 138.68193880436;
+    const double t33 = t7 * 138.68193880436;
+    const double t34 = t5 * 138.68193880436;
+    const double t35 = t6 * 21.609425289744 - t8 * 138.68193880436;
+    const double t36 = t34 + t7 * 21.609425289744;
+    const double t37 = t5 * 21.609425289744;
+    const double t38 = t8 * 21.609425289744 - t6 * 0.679484;
+    const double t39 = t37 + t7 * 0.679484;
+    const double t40 = t8 * 0.679484;
+    const double t41 = t5 * 0.679484;
+    const double t42 = t6 * t9;
+    const double t43 = t2 * t6;
+    const double t44 = t6 * t10 - t7 * t9;
+    const double t45 = t2 * t7;
+    const double t46 = t6 * t11 - t7 * t10 + t8 * t9;
+    const double t47 = t2 * t8;
+    const double t48 = t5 * t9;
+    const double t49 = t8 * t10 - (t43 + t7 * t11) + t48;
+    const double t50 = t5 * t10;
+    const double t51 = t45 + t8 * t11 + t50;
+    const double t52 = t5 * t11;
+    const double t53 = t52 - t47;
+    const double t54 = t2 * t5;
+    const double t55 = t12 * 0.085614984 - t15 * K4 - (t28 * 5.24109923903202 + t24 * 0.162131905) +
+        (t36 * K6 + t33 * 6.714609336);
+    const double t56 = t13 * 0.085614984 - t16 * K4 - K5 - (t29 * 5.24109923903202 + t26 *
+        0.162131905) + (t35 * 6.714609336 - t38 * K6);
+    const double t57 = t6 * t6;
+    const double t58 = t5 * t6;
+    const double t59 = 2.0 * (t6 * t7);
+    const double t60 = t5 * t7;
+    const double t61 = t7 * t7 + 2.0 * (t6 * t8);
+    const double t62 = t5 * t8;
+    const double t63 = 2.0 * t58 - 2.0 * (t7 * t8);
+    const double t64 = t8 * t8 - 2.0 * t60;
+    const double t65 = 2.0 * t62;
+    const double t66 = t5 * t5;
+    const double t67 = K1 + t13 * K4 - (t26 * 5.24109923903202 + t22 * 0.162131905) - (t35 * K6 +
+        t32 * 6.714609336) - t44 * 15.720444861287776;
+    const double t68 = t3 * 138.68193880436;
+    const double t69 = t4 * 138.68193880436;
+    const double t70 = t34 + t3 * 21.609425289744;
+    const double t71 = t4 * 21.609425289744;
+    const double t72 = t37 + t3 * 0.679484;
+    const double t73 = t4 * 0.679484;
+    const double t74 = t12 * K4 - t24 * 5.24109923903202 - t33 * K6 - t42 * 15.720444861287776 - t59
+        * 2.475293094555232;
+    const double t75 = t55 + (t42 * 0.987969736 - t46 * 15.720444861287776) + (t63 *
+        2.475293094555232 - t59 * 0.423713048);
+    const double t76 = t56 + (t44 * 0.987969736 - t49 * 15.720444861287776) + (t64 *
+        2.475293094555232 + t61 * 0.423713048);
     const double t77 = t3 * t9;
     const double t78 = t4 * t9 - t3 * t10;
-    const double t79 = t51 + (t4 * t10 - t3 * t11);
-    const double t80 = t53 + (t2 * t3 + t4 * t11);
-    const double t81 = t55 - t2 * t4;
-    const double t82 = t0 * 138.68193880436;
-    const double t83 = t1 * 138.68193880436;
-    const double t84 = t14 + t0 * 21.609425289744;
-    const double t85 = t1 * 21.609425289744;
-    const double t86 = t17 + t0 * 0.679484;
-    const double t87 = t1 * 0.679484;
-    const double t88 = t0 * t6;
-    const double t89 = t1 * t6 - t0 * t7;
-    const double t90 = t0 * t8 - t1 * t7 - t46;
-    const double t91 = t48 + (t0 * t5 + t1 * t8);
-    const double t92 = t1 * t5 - t50;
+    const double t79 = t48 + (t4 * t10 - t3 * t11);
+    const double t80 = t50 + (t2 * t3 + t4 * t11);
+    const double t81 = t52 - t2 * t4;
+    const double t82 = t67 + (t61 * 2.475293094555232 + t57 * 0.423713048) + t69 * 164.88325852848 -
+        (t79 * 96.3262428716 + t77 * 3.91186341);
+    const double t83 = t75 + (t70 * 164.88325852848 + t68 * 6.78804516) + (t78 * 3.91186341 - t80 *
+        96.3262428716);
+    const double t84 = t76 - (t71 * 164.88325852848 + t69 * 6.78804516) + (t79 * 3.91186341 - t81 *
+        96.3262428716);
+    const double t85 = t0 * 138.68193880436;
+    const double t86 = t1 * 138.68193880436;
+    const double t87 = t14 + t0 * 21.609425289744;
+    const double t88 = t1 * 21.609425289744;
+    const double t89 = t17 + t0 * 0.679484;
+    const double t90 = t1 * 0.679484;
+    const double t91 = t19 * 0.085614984 - t21 * K7 - K8 - t31 * 0.162131905 - t40 * 6.714609336 +
+        t53 * 0.987969736 + t66 * 0.423713048;
+    const double t92 = t74 - t68 * 164.88325852848 - t78 * 96.3262428716 - t3 * t6 * 5.72030388496 +
+        t86 * 39.62510941338;
+    const double t93 = t82 + (t3 * t7 + t4 * t6) * 5.72030388496 + (t85 * 11.11251889764 - t87 *
+        39.62510941338);
+    const double t94 = t83 + (t58 - (t3 * t8 + t4 * t7)) * 5.72030388496 + (t86 * 11.11251889764 -
+        t88 * 39.62510941338);
+    const double t95 = t84 + (t4 * t8 - t3 * t5 - t60) * 5.72030388496 + (t89 * 39.62510941338 - t87
+        * 11.11251889764);
+    const double t96 = t0 * t6;
+    const double t97 = t1 * t6 - t0 * t7;
+    const double t98 = t0 * t8 - t1 * t7 - t43;
+    const double t99 = t45 + (t0 * t5 + t1 * t8);
+    const double t100 = t1 * t5 - t47;
+    const double t101 = K0 - t22 * 5.24109923903202 + t32 * K6 + t57 * 2.475293094555232 + t77 *
+        96.3262428716 + t85 * 39.62510941338;
+    const double t102 = t30 * 5.24109923903202 - t28 * 0.162131905 - t18 * K4 - t15 * 0.085614984 -
+        t39 * K6 - t36 * 6.714609336;
+    const double t103 = t102 + t46 * 0.987969736 - t51 * 15.720444861287776 + t65 *
+        2.475293094555232 + t63 * 0.423713048;
+    const double t104 = t103 - t72 * 164.88325852848 - t70 * 6.78804516 + t54 * 196.33559076614 +
+        t80 * 3.91186341;
+    const double t105 = t104 + (t62 + t4 * t5) * 5.72030388496 + t90 * 39.62510941338 - t88 *
+        11.11251889764 + (t27 + t1 * t2) * 9.15905357189;
+    const double t106 = K9 + t19 * K4 - t16 * 0.085614984 - t31 * 14.40015281092202 - t29 *
+        0.162131905 + t40 * K6 + t38 * 6.714609336;
+    const double t107 = t106 + t49 * 0.987969736 - t53 * 15.720444861287776 + t66 *
+        8.195596979515232 + t64 * 0.423713048;
+    const double t108 = t107 + t73 * 164.88325852848 + t71 * 6.78804516 + t81 * 3.91186341 + t89 *
+        11.11251889764 - t21 * 39.62510941338;
+    const double t109 = t20 * K4 - t18 * 0.085614984 + t30 * 0.162131905 + t41 * K10 + t39 *
+        6.714609336 - t54 * 0.257350308712224;
     struct rc_array13 result;
-    result.v[0] = -10490197.386819398 - t22 * 5.24109923903202 + t35 * 173.96982183469882 + t58 *
-        2.475293094555232 + t77 * 96.3262428716 + t82 * 39.62510941338 - t88 * 100.00934789454;
-    result.v[1] = t12 * 10.593548621132255 - t26 * 5.24109923903202 - t36 * 173.96982183469882 - t45
-        * 15.720444861287776 - t62 * 2.475293094555232 - t71 * 164.88325852848 - t78 * 96.3262428716
-        - t3 * t6 * 5.72030388496 + t83 * 39.62510941338 - t0 * t9 * 9.15905357189 - t89 *
-        100.00934789454;
-    result.v[2] = 4903748.937882921 + t13 * 10.593548621132255 - (t29 * 5.24109923903202 + t22 *
-        0.162131905) - (t38 * 173.96982183469882 + t35 * 6.714609336) - t47 * 15.720444861287776 +
-        (t65 * 2.475293094555232 + t58 * 0.423713048) + t72 * 164.88325852848 - (t79 * 96.3262428716
-        + t77 * 3.91186341) + (t3 * t7 + t4 * t6) * 5.72030388496 + (t82 * 11.11251889764 - t84 *
-        39.62510941338) - (t0 * t10 + t1 * t9) * 9.15905357189 + (t88 * 12.06593176 - t90 *
+    result.v[0] = t101 - t96 * 100.00934789454;
+    result.v[1] = t92 - t0 * t9 * 9.15905357189 - t97 * 100.00934789454;
+    result.v[2] = t93 - (t0 * t10 + t1 * t9) * 9.15905357189 + (t96 * 12.06593176 - t98 *
         100.00934789454);
-    result.v[3] = t12 * 0.085614984 - t15 * 10.593548621132255 - (t31 * 5.24109923903202 + t26 *
-        0.162131905) + (t39 * 173.96982183469882 + t36 * 6.714609336) + (t45 * 0.987969736 - t49 *
-        15.720444861287776) + (t67 * 2.475293094555232 - t62 * 0.423713048) + (t73 * 164.88325852848
-        + t71 * 6.78804516) + (t78 * 3.91186341 - t80 * 96.3262428716) + (t61 - (t3 * t8 + t4 * t7))
-        * 5.72030388496 + (t83 * 11.11251889764 - t85 * 39.62510941338) - (t0 * t11 + t1 * t10 -
-        t25) * 9.15905357189 + (t89 * 12.06593176 - t91 * 100.00934789454);
-    result.v[4] = t13 * 0.085614984 - t16 * 10.593548621132255 - 918295.2102800821 - (t32 *
-        5.24109923903202 + t29 * 0.162131905) + (t38 * 6.714609336 - t41 * 173.96982183469882) +
-        (t47 * 0.987969736 - t52 * 15.720444861287776) + (t68 * 2.475293094555232 + t65 *
-        0.423713048) - (t74 * 164.88325852848 + t72 * 6.78804516) + (t79 * 3.91186341 - t81 *
-        96.3262428716) + (t4 * t8 - t3 * t5 - t64) * 5.72030388496 + (t86 * 39.62510941338 - t84 *
-        11.11251889764) - (t1 * t11 - t0 * t2 - t28) * 9.15905357189 + (t90 * 12.06593176 - t92 *
+    result.v[3] = t94 - (t0 * t11 + t1 * t10 - t23) * 9.15905357189 + (t97 * 12.06593176 - t99 *
         100.00934789454);
-    result.v[5] = t33 * 5.24109923903202 - t31 * 0.162131905 - (t18 * 10.593548621132255 + t15 *
-        0.085614984) - (t42 * 173.96982183469882 + t39 * 6.714609336) + (t49 * 0.987969736 - t54 *
-        15.720444861287776) + (t69 * 2.475293094555232 + t67 * 0.423713048) - (t75 * 164.88325852848
-        + t73 * 6.78804516) + (t57 * 96.3262428716 + t80 * 3.91186341) + (t66 + t4 * t5) *
-        5.72030388496 + (t87 * 39.62510941338 - t85 * 11.11251889764) + (t30 + t1 * t2) *
-        9.15905357189 + (t57 * 100.00934789454 + t91 * 12.06593176);
-    result.v[6] = 87740.15989810045 + (t19 * 10.593548621132255 - t16 * 0.085614984) - (t34 *
-        5.24109923903202 + t32 * 0.162131905) + (t43 * 173.96982183469882 + t41 * 6.714609336) +
-        (t52 * 0.987969736 - t56 * 15.720444861287776) + (t70 * 2.475293094555232 + t68 *
-        0.423713048) + (t76 * 164.88325852848 + t74 * 6.78804516) + t81 * 3.91186341 + t70 *
-        5.72030388496 + (t86 * 11.11251889764 - t21 * 39.62510941338) - t34 * 9.15905357189 + t92 *
-        12.06593176;
-    result.v[7] = t20 * 10.593548621132255 - t18 * 0.085614984 + t33 * 0.162131905 + (t44 *
-        173.96982183469882 + t42 * 6.714609336) + (t57 * 15.720444861287776 + t54 * 0.987969736) +
-        t69 * 0.423713048 + (t44 * 164.88325852848 + t75 * 6.78804516) - t57 * 3.91186341 + t87 *
-        11.11251889764 - t57 * 12.06593176;
-    result.v[8] = t19 * 0.085614984 - t21 * 10.593548621132255 - 4499.265787898939 - t34 *
-        0.162131905 - t43 * 6.714609336 + t56 * 0.987969736 + t70 * 0.423713048 - t76 * 6.78804516 -
-        t21 * 11.11251889764;
-    result.v[9] = t20 * 0.085614984 - t44 * 6.714609336 - t57 * 0.987969736 - t44 * 6.78804516;
-    result.v[10] = 117.71908761306281 - t21 * 0.085614984;
+    result.v[4] = t95 - (t1 * t11 - t0 * t2 - t25) * 9.15905357189 + (t98 * 12.06593176 - t100 *
+        100.00934789454);
+    result.v[5] = t105 + t99 * 12.06593176;
+    result.v[6] = t108 + t100 * 12.06593176;
+    result.v[7] = t109 + t51 * 0.987969736 + t65 * 0.423713048 + t72 * 6.78804516 + t90 *
+        11.11251889764;
+    result.v[8] = t91 - t73 * 6.78804516;
+    result.v[9] = t20 * 0.085614984 - t41 * 13.502654496 - t54 * 0.987969736;
+    result.v[10] = K2 - t21 * 0.085614984;
     result.v[11] = 0.0;
-    result.v[12] = -1.2338479691951425;
+    result.v[12] = K3;
     return result;
 }
 
@@ -2585,10 +3425,22 @@ ROLL_CRITERION_API struct rc_array13 rc_aircraft_b_jump_polynomial(double delta_
 /// Arguments:
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 21 add/sub, 30 mul, 0 div, 0 neg, 0 libm (51 operations); straight-line, no branches.
+/// Cost after CSE: 17 add/sub, 26 mul, 0 div, 0 neg, 0 libm (43 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::zero_sideslip_jump_polynomial`, bit-identical.
 ROLL_CRITERION_API struct rc_array9 rc_aircraft_b_zero_sideslip_jump_polynomial(double delta_e)
 {
+    // exact: 199.603549611479573990352
+    const double K0 = 199.60354961147956;
+    // exact: 173.969821834698816
+    const double K1 = 173.96982183469882;
+    // exact: 321062.88396664785760334010273168
+    const double K2 = 321062.88396664785;
+    // exact: 21.706067518772256
+    const double K3 = 21.706067518772254;
+    // exact: 5977.985949682195657082299776
+    const double K4 = 5977.9859496821955;
+    // exact: 75144.766586162654990745072516672
+    const double K5 = 75144.76658616266;
     const double t0 = delta_e * 28.37;
     const double t1 = delta_e * 37.70373;
     const double t2 = t0 * 24.261806;
@@ -2598,18 +3450,18 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_b_zero_sideslip_jump_polynomial(
     const double t6 = t1 * 0.949;
     const double t7 = t0 * t1;
     const double t8 = t1 * t1;
+    const double t9 = K5 + t2 * K3 - t4 * 14.40015281092202 - t6 * K1 - t5 * 6.714609336 - t7 *
+        3.654513101287776 + t8 * 0.423713048;
     struct rc_array9 result;
-    result.v[0] = t5 * 173.96982183469882 - 321062.88396664785 + t8 * 2.475293094555232 + t2 *
-        39.62510941338 - t7 * 100.00934789454;
+    result.v[0] = t5 * K1 - K2 + t8 * 2.475293094555232 + t2 * 39.62510941338 - t7 *
+        100.00934789454;
     result.v[1] = 0.0;
-    result.v[2] = 75144.76658616266 + t2 * 10.593548621132255 - t4 * 5.24109923903202 - (t6 *
-        173.96982183469882 + t5 * 6.714609336) - t7 * 15.720444861287776 + t8 * 0.423713048 + (t2 *
-        11.11251889764 - t3 * 39.62510941338) - t4 * 9.15905357189 + t7 * 12.06593176;
+    result.v[2] = t9 - t3 * 39.62510941338;
     result.v[3] = 0.0;
-    result.v[4] = t2 * 0.085614984 - t3 * 10.593548621132255 - 5977.9859496821955 - t4 * 0.162131905
-        + t6 * 6.714609336 + t7 * 0.987969736 - t3 * 11.11251889764;
+    result.v[4] = t2 * 0.085614984 - t3 * K3 - K4 - t4 * 0.162131905 + t6 * 6.714609336 + t7 *
+        0.987969736;
     result.v[5] = 0.0;
-    result.v[6] = 199.60354961147956 - t3 * 0.085614984;
+    result.v[6] = K0 - t3 * 0.085614984;
     result.v[7] = 0.0;
     result.v[8] = -2.406775633553772;
     return result;
@@ -2617,18 +3469,35 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_b_zero_sideslip_jump_polynomial(
 
 /// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
 /// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
-/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10).
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3
+/// to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c1 = -z_alpha - y_beta - l_p - m_q - n_r
+/// c2 = -m_alpha + n_beta + z_alpha*y_beta + z_alpha*l_p + z_alpha*m_q + z_alpha*n_r + y_beta*l_p
+///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha0 + m_q*n_r
+///          + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 74 add/sub, 96 mul, 1 div, 0 neg, 0 libm (171 operations); straight-line, no branches.
+/// Cost after CSE: 72 add/sub, 96 mul, 1 div, 1 neg, 0 libm (170 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::characteristic_coefficients`, bit-identical.
 ROLL_CRITERION_API struct rc_array5 rc_aircraft_b_characteristic_coefficients(double p0,
     double delta_e, double delta_r)
 {
+    // exact: 84.989869664563152
+    const double K0 = 84.98986966456316;
+    // exact: 10.593548621132256
+    const double K1 = 10.593548621132255;
+    // exact: 173.969821834698816
+    const double K2 = 173.96982183469882;
+    // exact: 545.43606531754788
+    const double K3 = 545.4360653175479;
     const double t0 = p0 * 0.949;
     const double t1 = p0 * 0.716;
     const double t2 = delta_e * 28.37;
@@ -2639,50 +3508,69 @@ ROLL_CRITERION_API struct rc_array5 rc_aircraft_b_characteristic_coefficients(do
     const double t7 = p0 * 0.235;
     const double t8 = p0 * t0 - 23.18;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 +
-        (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+        132.4982708 - p0 * (t0 * 5.67));
     const double t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
     const double t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
     const double t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    const double t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328) - t2 * (p0 * 5.67 - (1.329 *
-        (t1 * 0.196) + p0 * t4))) * t9;
+    const double t13 = (delta_r * (-(p0 * t5 + 4.755313976)) - t2 * (p0 * 5.67 - (1.329 * (t1 *
+        0.196) + p0 * t4))) * t9;
     const double t14 = t12 * (0.090216 - t12 * 0.520532);
     const double t15 = t13 * t13 * 0.689923;
     const double t16 = p0 * p0;
     const double t17 = t13 * (0.085614984 - t12 * 0.987969736);
+    const double t18 = t13 * (t13 * 1.21426448 + t11 * 16.85186) + (144.241950533 + t10 * 23.0418);
+    const double t19 = t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341) + t11 *
+        (-7.67388312 - t12 * 16.18802176);
+    const double t20 = t13 * (t13 * 4.338828467857 + t11 * 7.26315166) + (227.986032885638 + t10 *
+        245.87545383);
+    const double t21 = p0 * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 *
+        6.78804516))) + t19);
+    const double t22 = t13 * (t13 * 0.162131905 - t11 * 3.91186341) + (t10 * 11.11251889764 - K0);
+    const double t23 = t12 * (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048) + t22;
+    const double t24 = t13 * (K1 + t12 * 15.720444861287776 + t10 * 9.15905357189) + t11 *
+        (164.88325852848 - t12 * 5.72030388496);
+    const double t25 = t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716) + (K3 + t10 *
+        39.62510941338);
+    const double t26 = p0 * (p0 * (p0 * (p0 * 2.672410572 + (t17 - t11 * 6.78804516)) + t23) + t24);
     struct rc_array5 result;
     result.v[0] = 6.507;
     result.v[1] = t14 + (41.025041 + t15 + t10 * 9.99 + t16 * 1.679484);
     result.v[2] = p0 * (p0 * 8.690623672 + (t17 - t11 * 9.99)) + (t12 * (7.363855224 + t10 * 4.12209
-        - t12 * 1.217524348) + (t13 * (t13 * 1.21426448 + t11 * 16.85186) + (144.241950533 + t10 *
-        23.0418)));
-    result.v[3] = p0 * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 * 6.78804516))) +
-        (t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341) + t11 * (-7.67388312 - t12 *
-        16.18802176))) + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 * 12.847684415688) + (t13
-        * (t13 * 4.338828467857 + t11 * 7.26315166) + (227.986032885638 + t10 * 245.87545383)));
-    result.v[4] = p0 * (p0 * (p0 * (p0 * 2.672410572 + (t17 - t11 * 6.78804516)) + (t12 *
-        (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048) + (t13 * (t13 * 0.162131905 - t11 *
-        3.91186341) + (t10 * 11.11251889764 - 84.98986966456316)))) + (t13 * (10.593548621132255 +
-        t12 * 15.720444861287776 + t10 * 9.15905357189) + t11 * (164.88325852848 - t12 *
-        5.72030388496))) + (t12 * (173.96982183469882 + t10 * 100.00934789454 - t12 *
-        2.475293094555232) + (t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716) +
-        (545.4360653175479 + t10 * 39.62510941338)));
+        - t12 * 1.217524348) + t18);
+    result.v[3] = t21 + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 * 12.847684415688) + t20);
+    result.v[4] = t26 + (t12 * (K2 + t10 * 100.00934789454 - t12 * 2.475293094555232) + t25);
     return result;
 }
 
 /// The fourth Hurwitz determinant of J5 at the trim of `p0`,
-/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`, 1/s^10.
-/// By Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
-/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle (`+-lambda`).
+/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`
+/// (expanded below) in the coefficients of [`characteristic_coefficients`], 1/s^10. By
+/// Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
+/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle
+/// (`+-lambda`).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// Delta4 = -c5^2 + 2*c1*c4*c5 + c2*c3*c5 - c3^2*c4 - c1^2*c4^2 - c1*c2^2*c5 + c1*c2*c3*c4
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 80 add/sub, 106 mul, 1 div, 0 neg, 0 libm (187 operations); straight-line, no branches.
+/// Cost after CSE: 78 add/sub, 106 mul, 1 div, 1 neg, 0 libm (186 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::hurwitz_delta4`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_b_hurwitz_delta4(double p0, double delta_e, double delta_r)
 {
+    // exact: 84.989869664563152
+    const double K0 = 84.98986966456316;
+    // exact: 10.593548621132256
+    const double K1 = 10.593548621132255;
+    // exact: 173.969821834698816
+    const double K2 = 173.96982183469882;
+    // exact: 545.43606531754788
+    const double K3 = 545.4360653175479;
     const double t0 = p0 * 0.949;
     const double t1 = p0 * 0.716;
     const double t2 = delta_e * 28.37;
@@ -2693,53 +3581,71 @@ ROLL_CRITERION_API double rc_aircraft_b_hurwitz_delta4(double p0, double delta_e
     const double t7 = p0 * 0.235;
     const double t8 = p0 * t0 - 23.18;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 +
-        (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+        132.4982708 - p0 * (t0 * 5.67));
     const double t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
     const double t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
     const double t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    const double t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328) - t2 * (p0 * 5.67 - (1.329 *
-        (t1 * 0.196) + p0 * t4))) * t9;
+    const double t13 = (delta_r * (-(p0 * t5 + 4.755313976)) - t2 * (p0 * 5.67 - (1.329 * (t1 *
+        0.196) + p0 * t4))) * t9;
     const double t14 = t12 * (0.090216 - t12 * 0.520532);
     const double t15 = t13 * t13 * 0.689923;
     const double t16 = p0 * p0;
     const double t17 = t14 + (41.025041 + t15 + t10 * 9.99 + t16 * 1.679484);
     const double t18 = t13 * (0.085614984 - t12 * 0.987969736);
-    const double t19 = p0 * (p0 * 8.690623672 + (t18 - t11 * 9.99)) + (t12 * (7.363855224 + t10 *
-        4.12209 - t12 * 1.217524348) + (t13 * (t13 * 1.21426448 + t11 * 16.85186) + (144.241950533 +
-        t10 * 23.0418)));
-    const double t20 = p0 * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 *
-        6.78804516))) + (t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341) + t11 *
-        (-7.67388312 - t12 * 16.18802176))) + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 *
-        12.847684415688) + (t13 * (t13 * 4.338828467857 + t11 * 7.26315166) + (227.986032885638 +
-        t10 * 245.87545383)));
-    const double t21 = p0 * (p0 * (p0 * (p0 * 2.672410572 + (t18 - t11 * 6.78804516)) + (t12 *
-        (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048) + (t13 * (t13 * 0.162131905 - t11 *
-        3.91186341) + (t10 * 11.11251889764 - 84.98986966456316)))) + (t13 * (10.593548621132255 +
-        t12 * 15.720444861287776 + t10 * 9.15905357189) + t11 * (164.88325852848 - t12 *
-        5.72030388496))) + (t12 * (173.96982183469882 + t10 * 100.00934789454 - t12 *
-        2.475293094555232) + (t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716) +
-        (545.4360653175479 + t10 * 39.62510941338)));
-    const double t22 = t17 * t21;
-    const double t23 = t19 * t20;
-    return 6.507 * (t17 * (t23 - t22) + 2.0 * (t20 * t21) - 6.507 * (t20 * t20)) + (t19 * (t22 -
-        t23) - t21 * t21);
+    const double t19 = t13 * (t13 * 1.21426448 + t11 * 16.85186) + (144.241950533 + t10 * 23.0418);
+    const double t20 = p0 * (p0 * 8.690623672 + (t18 - t11 * 9.99)) + (t12 * (7.363855224 + t10 *
+        4.12209 - t12 * 1.217524348) + t19);
+    const double t21 = t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341) + t11 *
+        (-7.67388312 - t12 * 16.18802176);
+    const double t22 = t13 * (t13 * 4.338828467857 + t11 * 7.26315166) + (227.986032885638 + t10 *
+        245.87545383);
+    const double t23 = p0 * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 *
+        6.78804516))) + t21);
+    const double t24 = t23 + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 * 12.847684415688) +
+        t22);
+    const double t25 = t13 * (t13 * 0.162131905 - t11 * 3.91186341) + (t10 * 11.11251889764 - K0);
+    const double t26 = t12 * (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048) + t25;
+    const double t27 = t13 * (K1 + t12 * 15.720444861287776 + t10 * 9.15905357189) + t11 *
+        (164.88325852848 - t12 * 5.72030388496);
+    const double t28 = t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716) + (K3 + t10 *
+        39.62510941338);
+    const double t29 = p0 * (p0 * (p0 * (p0 * 2.672410572 + (t18 - t11 * 6.78804516)) + t26) + t27);
+    const double t30 = t29 + (t12 * (K2 + t10 * 100.00934789454 - t12 * 2.475293094555232) + t28);
+    const double t31 = t17 * t30;
+    const double t32 = t20 * t24;
+    return 6.507 * (t17 * (t32 - t31) + 2.0 * (t24 * t30) - 6.507 * (t24 * t24)) + (t20 * (t31 -
+        t32) - t30 * t30);
 }
 
-/// `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` at the trim of `p0`, rad^2/s^2: at a zero of
-/// [`hurwitz_delta4`] the square of the frequency of the pair on the imaginary axis, positive
-/// at a Hopf point and negative at a neutral saddle (from the even and odd parts of
-/// `p(i omega) = 0` with `w^2` eliminated).
+/// `omega^2` at the trim of `p0`, rad^2/s^2, in the coefficients of
+/// [`characteristic_coefficients`]: at a zero of [`hurwitz_delta4`] the square of the
+/// frequency of the pair on the imaginary axis, positive at a Hopf point and negative
+/// at a neutral saddle (from the even and odd parts of `p(i omega) = 0` with `w^2`
+/// eliminated).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// omega^2 = (-c5 + c1*c4) / (-c3 + c1*c2)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 76 add/sub, 98 mul, 2 div, 0 neg, 0 libm (176 operations); straight-line, no branches.
+/// Cost after CSE: 74 add/sub, 98 mul, 2 div, 1 neg, 0 libm (175 operations); straight-line, no branches.
 /// Rust: `roll_criterion::aircraft_b::hopf_omega_squared`, bit-identical.
 ROLL_CRITERION_API double rc_aircraft_b_hopf_omega_squared(double p0, double delta_e,
     double delta_r)
 {
+    // exact: 84.989869664563152
+    const double K0 = 84.98986966456316;
+    // exact: 10.593548621132256
+    const double K1 = 10.593548621132255;
+    // exact: 173.969821834698816
+    const double K2 = 173.96982183469882;
+    // exact: 545.43606531754788
+    const double K3 = 545.4360653175479;
     const double t0 = p0 * 0.949;
     const double t1 = p0 * 0.716;
     const double t2 = delta_e * 28.37;
@@ -2750,30 +3656,133 @@ ROLL_CRITERION_API double rc_aircraft_b_hopf_omega_squared(double p0, double del
     const double t7 = p0 * 0.235;
     const double t8 = p0 * t0 - 23.18;
     const double t9 = 1.0 / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 +
-        (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+        132.4982708 - p0 * (t0 * 5.67));
     const double t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
     const double t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
     const double t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    const double t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328) - t2 * (p0 * 5.67 - (1.329 *
-        (t1 * 0.196) + p0 * t4))) * t9;
+    const double t13 = (delta_r * (-(p0 * t5 + 4.755313976)) - t2 * (p0 * 5.67 - (1.329 * (t1 *
+        0.196) + p0 * t4))) * t9;
     const double t14 = t12 * (0.090216 - t12 * 0.520532);
     const double t15 = t13 * t13 * 0.689923;
     const double t16 = p0 * p0;
     const double t17 = t13 * (0.085614984 - t12 * 0.987969736);
-    return (6.507 * (p0 * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 *
-        6.78804516))) + (t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341) + t11 *
-        (-7.67388312 - t12 * 16.18802176))) + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 *
-        12.847684415688) + (t13 * (t13 * 4.338828467857 + t11 * 7.26315166) + (227.986032885638 +
-        t10 * 245.87545383)))) - (p0 * (p0 * (p0 * (p0 * 2.672410572 + (t17 - t11 * 6.78804516)) +
-        (t12 * (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048) + (t13 * (t13 * 0.162131905 -
-        t11 * 3.91186341) + (t10 * 11.11251889764 - 84.98986966456316)))) + (t13 *
-        (10.593548621132255 + t12 * 15.720444861287776 + t10 * 9.15905357189) + t11 *
-        (164.88325852848 - t12 * 5.72030388496))) + (t12 * (173.96982183469882 + t10 *
-        100.00934789454 - t12 * 2.475293094555232) + (t13 * (t13 * 5.24109923903202 + t11 *
-        96.3262428716) + (545.4360653175479 + t10 * 39.62510941338))))) / (6.507 * (t14 + (41.025041
-        + t15 + t10 * 9.99 + t16 * 1.679484)) - (p0 * (p0 * 8.690623672 + (t17 - t11 * 9.99)) + (t12
-        * (7.363855224 + t10 * 4.12209 - t12 * 1.217524348) + (t13 * (t13 * 1.21426448 + t11 *
-        16.85186) + (144.241950533 + t10 * 23.0418)))));
+    const double t18 = t13 * (t13 * 1.21426448 + t11 * 16.85186) + (144.241950533 + t10 * 23.0418);
+    const double t19 = t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341) + t11 *
+        (-7.67388312 - t12 * 16.18802176);
+    const double t20 = t13 * (t13 * 4.338828467857 + t11 * 7.26315166) + (227.986032885638 + t10 *
+        245.87545383);
+    const double t21 = p0 * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 *
+        6.78804516))) + t19);
+    const double t22 = t13 * (t13 * 0.162131905 - t11 * 3.91186341) + (t10 * 11.11251889764 - K0);
+    const double t23 = t12 * (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048) + t22;
+    const double t24 = t13 * (K1 + t12 * 15.720444861287776 + t10 * 9.15905357189) + t11 *
+        (164.88325852848 - t12 * 5.72030388496);
+    const double t25 = t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716) + (K3 + t10 *
+        39.62510941338);
+    const double t26 = p0 * (p0 * (p0 * (p0 * 2.672410572 + (t17 - t11 * 6.78804516)) + t23) + t24);
+    const double t27 = 6.507 * (t21 + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 *
+        12.847684415688) + t20));
+    const double t28 = p0 * (p0 * 8.690623672 + (t17 - t11 * 9.99)) + (t12 * (7.363855224 + t10 *
+        4.12209 - t12 * 1.217524348) + t18);
+    const double t29 = t27 - (t26 + (t12 * (K2 + t10 * 100.00934789454 - t12 * 2.475293094555232) +
+        t25));
+    return t29 / (6.507 * (t14 + (41.025041 + t15 + t10 * 9.99 + t16 * 1.679484)) - t28);
+}
+
+/// The Hopf polynomial `det(A)^10 Delta4` (issue 10) of this aircraft at the trim of `p0`
+/// (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
+/// [`hurwitz_delta4`], so its sign is that of Delta4 wherever det A != 0. Its real roots
+/// are the Hopf points (where [`hopf_omega_squared`] > 0), the neutral saddles (omega^2 < 0)
+/// and the roots of det A (the divergence roll rates).
+///
+/// At delta_r = 0 a polynomial of degree 48 in P0 and 6 in delta_e (154 terms,
+/// `model::specialise::hopf::hopf_polynomial`), evaluated here as the derivation builds
+/// it: the trim numerators N and det A by Cramer's rule, the cleared characteristic
+/// coefficients `C_k = det(A)^k c_k(N / det A)` as polynomials in N and det A (exact folded
+/// constants, no division) and Orlando's `Delta4(C_1, ..., C_5)`. Its expanded form in P0
+/// cancels far beyond double precision near the Hopf points; this form does not.
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 80 add/sub, 156 mul, 0 div, 1 neg, 0 libm (237 operations); straight-line, no branches.
+/// Rust: `roll_criterion::aircraft_b::hopf_polynomial`, bit-identical.
+ROLL_CRITERION_API double rc_aircraft_b_hopf_polynomial(double p0, double delta_e, double delta_r)
+{
+    // exact: 84.989869664563152
+    const double K0 = 84.98986966456316;
+    // exact: 545.43606531754788
+    const double K1 = 545.4360653175479;
+    // exact: 10.593548621132256
+    const double K2 = 10.593548621132255;
+    // exact: 173.969821834698816
+    const double K3 = 173.96982183469882;
+    const double t0 = p0 * 0.949;
+    const double t1 = p0 * 0.716;
+    const double t2 = delta_e * 28.37;
+    const double t3 = 0.19129 + t0 * t1;
+    const double t4 = p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708 -
+        p0 * (t0 * 5.67);
+    const double t5 = p0 * t1;
+    const double t6 = p0 * 0.814;
+    const double t7 = t0 * 0.196;
+    const double t8 = t2 * (t5 - 5.71606) - delta_r * (t6 + t7);
+    const double t9 = p0 * 0.235;
+    const double t10 = p0 * t0 - 23.18;
+    const double t11 = delta_r * (1.081806 - t10) - t2 * (t1 * 1.329 + t9);
+    const double t12 = t2 * (-7.59664374 - p0 * t9) - delta_r * (1.329 * t7 + p0 * t10);
+    const double t13 = delta_r * (-(p0 * t6 + 4.755313976)) - t2 * (p0 * 5.67 - (1.329 * (t1 *
+        0.196) + p0 * t5));
+    const double t14 = t4 * 6.507;
+    const double t15 = t4 * t4;
+    const double t16 = p0 * p0;
+    const double t17 = t4 * t12;
+    const double t18 = t4 * t8;
+    const double t19 = t15 * (41.025041 + t16 * 1.679484) + t13 * t13 * 0.689923 + t17 * 0.090216 -
+        t12 * t12 * 0.520532 + t18 * 9.99;
+    const double t20 = t4 * t15;
+    const double t21 = t13 * t15;
+    const double t22 = t12 * t15;
+    const double t23 = t20 * (144.241950533 + t16 * 8.690623672) + t21 * (p0 * 0.085614984) + t13 *
+        (t4 * t13) * 1.21426448 + t22 * 7.363855224;
+    const double t24 = t11 * t15;
+    const double t25 = t8 * t15;
+    const double t26 = t23 - t13 * t17 * (p0 * 0.987969736) - t12 * t17 * 1.217524348 - t24 * (p0 *
+        9.99) + t13 * (t4 * t11) * 16.85186;
+    const double t27 = t26 + t25 * 23.0418 + t12 * t18 * 4.12209;
+    const double t28 = t15 * t15;
+    const double t29 = t13 * t20;
+    const double t30 = t28 * (t16 * (t16 * 0.679484 - 13.408282167444) + 227.986032885638) + t29 *
+        (p0 * 16.3991180106);
+    const double t31 = t12 * t20;
+    const double t32 = t30 + t13 * t21 * (4.338828467857 + t16 * 0.689923) + t31 * (17.555232456144
+        + t16 * 0.090216);
+    const double t33 = t11 * t20;
+    const double t34 = t32 - t13 * t22 * (p0 * 1.5066538474) + t12 * t22 * (-12.847684415688 - t16 *
+        0.520532) - t33 * (p0 * 7.67388312);
+    const double t35 = t8 * t20;
+    const double t36 = t16 * 6.78804516;
+    const double t37 = t34 + t13 * t24 * 7.26315166 - t12 * t24 * (p0 * 16.18802176) + t35 *
+        (245.87545383 + t36);
+    const double t38 = t37 + t13 * t25 * (p0 * 20.76372341) + t12 * t25 * 8.83363887;
+    const double t39 = t4 * t28 * (t16 * (t16 * 2.672410572 - K0) + K1) + t13 * t28 * (p0 * (t16 *
+        0.085614984 + K2));
+    const double t40 = t39 + t13 * t29 * (5.24109923903202 + t16 * 0.162131905) + t12 * t28 * (K3 -
+        t16 * 6.714609336);
+    const double t41 = t40 + t13 * t31 * (p0 * (15.720444861287776 - t16 * 0.987969736)) + t12 * t31
+        * (-2.475293094555232 - t16 * 0.423713048);
+    const double t42 = t41 + t11 * t28 * (p0 * (164.88325852848 - t36)) + t13 * t33 * (96.3262428716
+        - t16 * 3.91186341);
+    const double t43 = t42 - t12 * t33 * (p0 * 5.72030388496) + t8 * t28 * (39.62510941338 + t16 *
+        11.11251889764);
+    const double t44 = t43 + t13 * t35 * (p0 * 9.15905357189) + t12 * t35 * (100.00934789454 - t16 *
+        12.06593176);
+    const double t45 = t19 * t44;
+    const double t46 = t27 * t38;
+    return t14 * (t19 * (t46 - t45) + t38 * t44 * 2.0 - t14 * (t38 * t38)) + (t27 * (t45 - t46) -
+        t44 * t44);
 }
 
 #ifdef __cplusplus

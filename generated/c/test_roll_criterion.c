@@ -7,7 +7,7 @@
 // It prints the number of checks and exits 1 on any failure.
 // `./a.out --bits FILE` reads records "<aircraft index> <hex bits of each column>",
 // columns alpha, beta, delta_e, delta_r, p, p0, q, r,
-// and writes the 164 results of each record as doubles in host byte order: the C half
+// and writes the 169 results of each record as doubles in host byte order: the C half
 // of the workspace's bit-identity check (tests/tests/c_header.rs).
 
 #include "roll_criterion.h"
@@ -122,7 +122,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[9] = {-436338.60286608565, 0.0, 163145.05708902073, 0.0, -18393.1308629075, 0.0, 867.7134758782962, 0.0, -15.079798239260171};
-        static const double tol[9] = {1.88472810540428e-9, 0.0, 7.255866596954734e-10, 0.0, 6.206144990103373e-11, 0.0, 1.6488910045070711e-12, 0.0, 1.3393551369542831e-14};
+        static const double tol[9] = {1.88472810540428e-9, 0.0, 7.38041753978393e-10, 0.0, 6.44522995407095e-11, 0.0, 1.7814566749293201e-12, 0.0, 1.3393551369542831e-14};
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, 0.03490658503988659);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, 0.03490658503988659)", got, want, tol, 9);
@@ -150,14 +150,14 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[10] = {-0.06082818036915503, -0.02258882623335746, -0.19424124839494938, -0.02915363368075617, -0.025757273203972076, -0.06082818036915503, -0.02258882623335746, -0.19424124839494938, -0.02915363368075617, 0.0};
-        static const double tol[10] = {1.8239508564094464e-16, 8.066816961603556e-17, 5.733439695025788e-16, 9.734878504783477e-17, 8.028046919782094e-17, 1.8239508564094464e-16, 8.066816961603556e-17, 5.733439695025788e-16, 9.734878504783477e-17, -2.0};
+        static const double tol[10] = {1.860186377538159e-16, 8.201379245940226e-17, 5.849149762589337e-16, 9.908547534961053e-17, 8.074411095109e-17, 1.860186377538159e-16, 8.201379245940226e-17, 5.849149762589337e-16, 9.908547534961053e-17, -2.0};
         const struct rc_Trim_array2 r = rc_aircraft_a_trim(0.5, 0.03490658503988659, 0.0);
         const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
         check("rc_aircraft_a_trim(0.5, 0.03490658503988659, 0.0)", got, want, tol, 10);
     }
     {
         static const double want[5] = {-0.06195406887351482, -0.18633305754398316, -0.03097703443675741, -0.033389226559441, 0.08130770219589172};
-        static const double tol[5] = {1.06750067097443e-16, 4.0381000209592335e-16, 6.02533169219804e-17, 3.7438065612839895e-17, 2.809411592418978e-16};
+        static const double tol[5] = {9.69997918302256e-17, 3.7448507420224035e-16, 5.53781792883717e-17, 3.7411499782926225e-17, 2.681450266848351e-16};
         const struct rc_ZeroSideslipTrim r = rc_aircraft_a_zero_sideslip_trim(0.5, 0.03490658503988659);
         const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_aircraft_a_zero_sideslip_trim(0.5, 0.03490658503988659)", got, want, tol, 5);
@@ -171,35 +171,35 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {-21.85419550496811};
-        static const double tol[1] = {1.491240432179108e-14};
+        static const double tol[1] = {1.4918962390534002e-14};
         const double r = rc_aircraft_a_residual_denominator(0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_aircraft_a_residual_denominator(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[4] = {18.744741221495342, 0.8526917617412597, -1.3051565070711664, 2.6367386258706924};
-        static const double tol[4] = {1.2716712830423891e-14, 2.7276468718027983e-15, 9.217433039404652e-16, 7.814155133699807e-15};
+        static const double tol[4] = {1.2716956970944048e-14, 2.7572359001384733e-15, 9.22239190491237e-16, 7.867886319928304e-15};
         const struct rc_matrix2x2 r = rc_aircraft_a_stiffness(0.5, 0.03490658503988659, 0.0);
         const double got[4] = {r.m[0][0], r.m[0][1], r.m[1][0], r.m[1][1]};
         check("rc_aircraft_a_stiffness(0.5, 0.03490658503988659, 0.0)", got, want, tol, 4);
     }
     {
         static const double want[1] = {50.53787941202994};
-        static const double tol[1] = {2.569278017693219e-13};
+        static const double tol[1] = {2.5994842533055637e-13};
         const double r = rc_aircraft_a_det_k(0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_aircraft_a_det_k(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[1] = {-1104.4646970770052};
-        static const double tol[1] = {3.092743799617738e-12};
+        static const double tol[1] = {3.1149180688193666e-12};
         const double r = rc_aircraft_a_det_j5(0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_aircraft_a_det_j5(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[1] = {51.661290093381794};
-        static const double tol[1] = {2.146167787858728e-13};
+        static const double tol[1] = {2.071653239783216e-13};
         const double r = rc_aircraft_a_zero_sideslip_det_k(0.5, 0.03490658503988659);
         const double got[1] = {r};
         check("rc_aircraft_a_zero_sideslip_det_k(0.5, 0.03490658503988659)", got, want, tol, 1);
@@ -220,38 +220,52 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[13] = {-6072534.371792697, 0.0, 4470456.805973914, 0.0, -1202125.360279915, 0.0, 163282.62472875317, 0.0, -12280.241004889926, 0.0, 503.27232173558883, 0.0, -9.316239033021978};
-        static const double tol[13] = {1.2472315302383017e-8, 0.0, 1.300559001746149e-8, 0.0, 3.355543977908827e-9, 0.0, 4.452482497733285e-10, 0.0, 2.2063866947127186e-11, 0.0, 2.2472361081202572e-13, 0.0, 2.0686206154745207e-15};
+        static const double tol[13] = {1.2472315302383017e-8, 0.0, 1.3005562381657151e-8, 0.0, 3.3555651283984355e-9, 0.0, 6.118455277770417e-10, 0.0, 1.9622164170777113e-11, 0.0, 2.2472361081202572e-13, 0.0, 2.0686206154745207e-15};
         const struct rc_array13 r = rc_aircraft_a_jump_polynomial(0.03490658503988659, 0.0);
         const double got[13] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8], r.v[9], r.v[10], r.v[11], r.v[12]};
         check("rc_aircraft_a_jump_polynomial(0.03490658503988659, 0.0)", got, want, tol, 13);
     }
     {
         static const double want[9] = {-436338.6028660856, 0.0, 163145.0570890207, 0.0, -18393.1308629075, 0.0, 867.7134758782962, 0.0, -15.079798239260173};
-        static const double tol[9] = {6.739207282309441e-10, 0.0, 3.595691955440422e-10, 0.0, 2.5562434086057606e-11, 0.0, 3.873263470258263e-13, 0.0, 3.348387842385708e-15};
+        static const double tol[9] = {6.739207282309441e-10, 0.0, 3.2747065435589987e-10, 0.0, 2.1807918607971437e-11, 0.0, 3.873263470258263e-13, 0.0, 3.348387842385708e-15};
         const struct rc_array9 r = rc_aircraft_a_zero_sideslip_jump_polynomial(0.03490658503988659);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_aircraft_a_zero_sideslip_jump_polynomial(0.03490658503988659)", got, want, tol, 9);
     }
     {
         static const double want[5] = {26.8921, 129.50119318085413, 511.31229230147534, 391.2201083555913, 1104.4646970770052};
-        static const double tol[5] = {5.971245720104434e-15, 1.7109876772377132e-13, 7.782760589743801e-13, 1.3605243420618254e-12, 3.092743799617738e-12};
+        static const double tol[5] = {5.971245720104434e-15, 1.7151537888508277e-13, 7.814508533613968e-13, 1.3740734110825313e-12, 3.1149180688193666e-12};
         const struct rc_array5 r = rc_aircraft_a_characteristic_coefficients(0.5, 0.03490658503988659, 0.0);
         const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
         check("rc_aircraft_a_characteristic_coefficients(0.5, 0.03490658503988659, 0.0)", got, want, tol, 5);
     }
     {
         static const double want[1] = {80713292.94884312};
-        static const double tol[1] = {8.22069492654615e-6};
+        static const double tol[1] = {8.276437533928296e-6};
         const double r = rc_aircraft_a_hurwitz_delta4(0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_aircraft_a_hurwitz_delta4(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[1] = {3.169129455570604};
-        static const double tol[1] = {2.4425530933700254e-14};
+        static const double tol[1] = {2.4570959454757764e-14};
         const double r = rc_aircraft_a_hopf_omega_squared(0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_aircraft_a_hopf_omega_squared(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {1.577493276490262e26};
+        static const double tol[1] = {66129593039545.48};
+        const double r = rc_aircraft_a_hopf_polynomial(0.5, 0.03490658503988659, 0.0);
+        const double got[1] = {r};
+        check("rc_aircraft_a_hopf_polynomial(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
+        const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_a_derivatives, 0.03490658503988659, 0.0);
+        static const double want[1] = {50.53787941202994};
+        static const double tol[1] = {6.347172986106123e-13};
+        const double got[1] = {rc_prepared_det_k(&prepared, 0.5)};
+        check("rc_prepared_det_k(&prepared, 0.5) with prepared = rc_prepared_new(&rc_aircraft_a_derivatives, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[10] = {0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, -0.1255202853445439, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -332,7 +346,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[9] = {-726111.4451475191, 0.0, 161906.2487207257, 0.0, -17649.888301265964, 0.0, 870.8185457188207, 0.0, -15.079798239260171};
-        static const double tol[9] = {2.25137093625319e-9, 0.0, 7.491062151707824e-10, 0.0, 6.233692366245626e-11, 0.0, 1.6503158437260429e-12, 0.0, 1.3393551369542831e-14};
+        static const double tol[9] = {2.25137093625319e-9, 0.0, 7.615613094537017e-10, 0.0, 6.472777330213203e-11, 0.0, 1.782881514148292e-12, 0.0, 1.3393551369542831e-14};
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, -0.05);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, -0.05)", got, want, tol, 9);
@@ -360,14 +374,14 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[10] = {0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, -0.1255202853445439, 0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, 0.0};
-        static const double tol[10] = {3.3647602538508114e-16, 5.062140387643495e-16, 1.4651925655055977e-15, 4.85023363546011e-16, 3.9650023656935233e-16, 3.3647602538508114e-16, 5.062140387643495e-16, 1.4651925655055977e-15, 4.85023363546011e-16, -2.0};
+        static const double tol[10] = {3.3850863417160144e-16, 5.092077650680634e-16, 1.475197683886764e-15, 4.8734895552118355e-16, 3.9752148710942774e-16, 3.3850863417160144e-16, 5.092077650680634e-16, 1.475197683886764e-15, 4.8734895552118355e-16, -2.0};
         const struct rc_Trim_array2 r = rc_aircraft_a_trim(1.3, -0.05, 0.01);
         const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
         check("rc_aircraft_a_trim(1.3, -0.05, 0.01)", got, want, tol, 10);
     }
     {
         static const double want[5] = {0.09580073263313676, 0.28813028346742214, 0.12454095242307779, -0.08590405404454084, -0.32689180403895063};
-        static const double tol[5] = {1.7143087326111228e-16, 6.435510443390434e-16, 2.505137818172154e-16, 9.716196289301435e-17, 1.1512097492624396e-15};
+        static const double tol[5] = {1.5684655454744786e-16, 5.996872473758263e-16, 2.3155416748945167e-16, 9.707386742274965e-17, 1.1014450541087435e-15};
         const struct rc_ZeroSideslipTrim r = rc_aircraft_a_zero_sideslip_trim(1.3, -0.05);
         const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_aircraft_a_zero_sideslip_trim(1.3, -0.05)", got, want, tol, 5);
@@ -381,35 +395,35 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {-21.661980214063963};
-        static const double tol[1] = {1.513321442374313e-14};
+        static const double tol[1] = {1.5136701395445085e-14};
         const double r = rc_aircraft_a_residual_denominator(1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_aircraft_a_residual_denominator(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[4] = {17.36446452863008, 2.32416400101525, -3.4414105798232604, 4.687615737090511};
-        static const double tol[4] = {1.3144798324282876e-14, 1.2227524982953375e-14, 2.550945016119519e-15, 1.9446718717785036e-14};
+        static const double tol[4] = {1.3145477328956998e-14, 1.2279615759039103e-14, 2.551988387965336e-15, 1.950561948020837e-14};
         const struct rc_matrix2x2 r = rc_aircraft_a_stiffness(1.3, -0.05, 0.01);
         const double got[4] = {r.m[0][0], r.m[0][1], r.m[1][0], r.m[1][1]};
         check("rc_aircraft_a_stiffness(1.3, -0.05, 0.01)", got, want, tol, 4);
     }
     {
         static const double want[1] = {89.39633977289456};
-        static const double tol[1] = {5.863286064174625e-13};
+        static const double tol[1] = {5.893646062700799e-13};
         const double r = rc_aircraft_a_det_k(1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_aircraft_a_det_k(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[1] = {-1936.5017433701814};
-        static const double tol[1] = {7.591516747854355e-12};
+        static const double tol[1] = {7.617153701827872e-12};
         const double r = rc_aircraft_a_det_j5(1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_aircraft_a_det_j5(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[1] = {76.50642099402414};
-        static const double tol[1] = {2.9774514194076096e-13};
+        static const double tol[1] = {2.8556803434380457e-13};
         const double r = rc_aircraft_a_zero_sideslip_det_k(1.3, -0.05);
         const double got[1] = {r};
         check("rc_aircraft_a_zero_sideslip_det_k(1.3, -0.05)", got, want, tol, 1);
@@ -430,38 +444,52 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[13] = {-10105309.611862797, -30094.336528271233, 4419691.538175438, 10288.608322993507, -954452.7733354439, -1292.4536417941827, 129331.53834779882, 68.56270259797137, -10911.126778022603, -1.158950025759256, 505.1906214627855, 0.0, -9.316239033021978};
-        static const double tol[13] = {1.768764470040638e-8, 9.30916008550757e-11, 1.385496457108239e-8, 3.527373095958219e-11, 3.1381420090340707e-9, 4.442287642312626e-12, 4.0699568593400003e-10, 1.9964972028899137e-13, 2.1430166668016428e-11, 2.131996335827093e-15, 2.2560387078214954e-13, 0.0, 2.0686206154745207e-15};
+        static const double tol[13] = {1.768764470040638e-8, 9.309246377676857e-11, 1.385490786785487e-8, 3.5275271692124324e-11, 3.1381854020592542e-9, 5.311430525374162e-12, 5.626408561190876e-10, 1.7609648668714058e-13, 1.871575540187174e-11, 2.1419195142406165e-15, 2.2560387078214954e-13, 0.0, 2.0686206154745207e-15};
         const struct rc_array13 r = rc_aircraft_a_jump_polynomial(-0.05, 0.01);
         const double got[13] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8], r.v[9], r.v[10], r.v[11], r.v[12]};
         check("rc_aircraft_a_jump_polynomial(-0.05, 0.01)", got, want, tol, 13);
     }
     {
         static const double want[9] = {-726111.445147519, 0.0, 161906.2487207257, 0.0, -17649.888301265964, 0.0, 870.8185457188207, 0.0, -15.079798239260173};
-        static const double tol[9] = {9.89603666895846e-10, 0.0, 3.752780002787478e-10, 0.0, 2.5639403640611728e-11, 0.0, 3.88751186244798e-13, 0.0, 3.348387842385708e-15};
+        static const double tol[9] = {9.89603666895846e-10, 0.0, 3.2276581317884694e-10, 0.0, 2.14370880225819e-11, 0.0, 3.88751186244798e-13, 0.0, 3.348387842385708e-15};
         const struct rc_array9 r = rc_aircraft_a_zero_sideslip_jump_polynomial(-0.05);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_aircraft_a_zero_sideslip_jump_polynomial(-0.05)", got, want, tol, 9);
     }
     {
         static const double want[5] = {26.8921, 148.15999841915024, 686.665693127369, 1084.1105341327814, 1936.5017433701814};
-        static const double tol[5] = {5.971245720104434e-15, 2.0344344223093683e-13, 1.1972212798501006e-12, 3.1736254082481744e-12, 7.591516747854355e-12};
+        static const double tol[5] = {5.971245720104434e-15, 2.03680206889412e-13, 1.1997218781926085e-12, 3.1842901888672803e-12, 7.617153701827872e-12};
         const struct rc_array5 r = rc_aircraft_a_characteristic_coefficients(1.3, -0.05, 0.01);
         const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
         check("rc_aircraft_a_characteristic_coefficients(1.3, -0.05, 0.01)", got, want, tol, 5);
     }
     {
         static const double want[1] = {767921374.3230036};
-        static const double tol[1] = {3.622056316301993e-5};
+        static const double tol[1] = {3.631080068749414e-5};
         const double r = rc_aircraft_a_hurwitz_delta4(1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_aircraft_a_hurwitz_delta4(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[1] = {8.253562456657566};
-        static const double tol[1] = {5.872485335698718e-14};
+        static const double tol[1] = {5.884179218073e-14};
         const double r = rc_aircraft_a_hopf_omega_squared(1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_aircraft_a_hopf_omega_squared(1.3, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {7.4968151701613135e25};
+        static const double tol[1] = {13103246234276.348};
+        const double r = rc_aircraft_a_hopf_polynomial(1.3, -0.05, 0.01);
+        const double got[1] = {r};
+        check("rc_aircraft_a_hopf_polynomial(1.3, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
+        const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_a_derivatives, -0.05, 0.01);
+        static const double want[1] = {89.39633977289456};
+        static const double tol[1] = {1.9763791272630523e-12};
+        const double got[1] = {rc_prepared_det_k(&prepared, 1.3)};
+        check("rc_prepared_det_k(&prepared, 1.3) with prepared = rc_prepared_new(&rc_aircraft_a_derivatives, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[10] = {0.005590298225498764, -0.01615283065336472, -0.022761054157733485, 0.014597558602929725, -0.15732122985399027, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -542,7 +570,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[9] = {-555190.6183167989, 0.0, 162665.80026259003, 0.0, -18093.404852109692, 0.0, 868.9900245039669, 0.0, -15.079798239260171};
-        static const double tol[9] = {1.7094277841961963e-9, 0.0, 6.730521078452188e-10, 0.0, 6.014785860535407e-11, 0.0, 1.6474737508307981e-12, 0.0, 1.3393551369542831e-14};
+        static const double tol[9] = {1.7094277841961963e-9, 0.0, 6.855072021281382e-10, 0.0, 6.253870824502983e-11, 0.0, 1.7800394212530471e-12, 0.0, 1.3393551369542831e-14};
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, 0.0);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, 0.0)", got, want, tol, 9);
@@ -570,7 +598,7 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[10] = {0.005590298225498764, -0.01615283065336472, -0.022761054157733482, 0.014597558602929725, -0.15732122985399027, 0.005590298225498764, -0.01615283065336472, -0.022761054157733482, 0.014597558602929725, 0.0};
-        static const double tol[10] = {7.42935114772493e-17, 2.1922447544029468e-16, 3.235112727675879e-16, 1.9951536450857543e-16, 3.5932235909586705e-16, 7.42935114772493e-17, 2.1922447544029468e-16, 3.235112727675879e-16, 1.9951536450857543e-16, -2.0};
+        static const double tol[10] = {7.334684892771997e-17, 2.1648915091347743e-16, 3.196569099608501e-16, 1.9400673885801738e-16, 3.583732585650205e-16, 7.334684892771997e-17, 2.1648915091347743e-16, 3.196569099608501e-16, 1.9400673885801738e-16, -2.0};
         const struct rc_Trim_array2 r = rc_aircraft_a_trim(2.45, 0.0, -0.02);
         const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
         check("rc_aircraft_a_trim(2.45, 0.0, -0.02)", got, want, tol, 10);
@@ -591,28 +619,28 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[1] = {-21.744142895242707};
-        static const double tol[1] = {1.4614187639580412e-14};
+        static const double tol[1] = {1.4612626787703455e-14};
         const double r = rc_aircraft_a_residual_denominator(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_a_residual_denominator(2.45, 0.0, -0.02)", got, want, tol, 1);
     }
     {
         static const double want[4] = {13.217742263174989, 4.864888118037834, -6.422531760767105, -1.2291242968129097};
-        static const double tol[4] = {1.4087968234736073e-14, 7.891691647393712e-15, 4.431083905648794e-15, 8.761495577987651e-15};
+        static const double tol[4] = {1.4085778206195156e-14, 7.828232365395571e-15, 4.4295760142427405e-15, 8.718014846849453e-15};
         const struct rc_matrix2x2 r = rc_aircraft_a_stiffness(2.45, 0.0, -0.02);
         const double got[4] = {r.m[0][0], r.m[0][1], r.m[1][0], r.m[1][1]};
         check("rc_aircraft_a_stiffness(2.45, 0.0, -0.02)", got, want, tol, 4);
     }
     {
         static const double want[1] = {14.99865028599726};
-        static const double tol[1] = {1.7859379467820362e-13};
+        static const double tol[1] = {1.777970855211409e-13};
         const double r = rc_aircraft_a_det_k(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_a_det_k(2.45, 0.0, -0.02)", got, want, tol, 1);
     }
     {
         static const double want[1] = {-326.1327950544973};
-        static const double tol[1] = {6.5328339337160764e-12};
+        static const double tol[1] = {6.507938740377347e-12};
         const double r = rc_aircraft_a_det_j5(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_a_det_j5(2.45, 0.0, -0.02)", got, want, tol, 1);
@@ -640,38 +668,52 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[13] = {-7726600.321669337, 60113.281072129226, 4449539.997388378, -20500.5075950257, -1100836.6821532228, 2580.28642724187, 149368.98281357132, -137.66407907349014, -11716.741891536114, 2.3445519476396917, 504.0609683703337, 0.0, -9.316239033021978};
-        static const double tol[13] = {1.2009550114276024e-8, 1.8575410641529935e-10, 1.1855956667840131e-8, 7.025792196953297e-11, 2.933218742693814e-9, 8.852130453576126e-12, 3.9799900538833414e-10, 3.982794030121338e-13, 2.0813117552041245e-11, 4.234403122930533e-15, 2.238480371598389e-13, 0.0, 2.0686206154745207e-15};
+        static const double tol[13] = {1.2009550114276024e-8, 1.8575410641529935e-10, 1.1855956662414984e-8, 7.025792196953297e-11, 2.933218726615232e-9, 1.0594294601244257e-11, 5.638319019512936e-10, 3.516161754405296e-13, 1.8211478227726543e-11, 4.2483315700128504e-15, 2.238480371598389e-13, 0.0, 2.0686206154745207e-15};
         const struct rc_array13 r = rc_aircraft_a_jump_polynomial(0.0, -0.02);
         const double got[13] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8], r.v[9], r.v[10], r.v[11], r.v[12]};
         check("rc_aircraft_a_jump_polynomial(0.0, -0.02)", got, want, tol, 13);
     }
     {
         static const double want[9] = {-555190.6183167988, 0.0, 162665.80026259, 0.0, -18093.40485210969, 0.0, 868.9900245039669, 0.0, -15.079798239260173};
-        static const double tol[9] = {6.163854075111872e-10, 0.0, 3.250715701870876e-10, 0.0, 2.410525759281204e-11, 0.0, 3.859090933495532e-13, 0.0, 3.348387842385708e-15};
+        static const double tol[9] = {6.163854075111872e-10, 0.0, 2.8895250683296675e-10, 0.0, 2.00877146606767e-11, 0.0, 3.859090933495532e-13, 0.0, 3.348387842385708e-15};
         const struct rc_array9 r = rc_aircraft_a_zero_sideslip_jump_polynomial(0.0);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_aircraft_a_zero_sideslip_jump_polynomial(0.0)", got, want, tol, 9);
     }
     {
         static const double want[5] = {26.8921, 147.15085373678386, 812.0397546562365, 1131.032360356705, 326.1327950544973};
-        static const double tol[5] = {5.971245720104434e-15, 1.7201762637228648e-13, 1.0377896835775604e-12, 2.2914722884695003e-12, 6.5328339337160764e-12};
+        static const double tol[5] = {5.971245720104434e-15, 1.7190825452878782e-13, 1.036148487024956e-12, 2.283180910945251e-12, 6.507938740377347e-12};
         const struct rc_array5 r = rc_aircraft_a_characteristic_coefficients(2.45, 0.0, -0.02);
         const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
         check("rc_aircraft_a_characteristic_coefficients(2.45, 0.0, -0.02)", got, want, tol, 5);
     }
     {
         static const double want[1] = {1832318526.1174512};
-        static const double tol[1] = {3.49662534472452e-5};
+        static const double tol[1] = {3.488841948601968e-5};
         const double r = rc_aircraft_a_hurwitz_delta4(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_a_hurwitz_delta4(2.45, 0.0, -0.02)", got, want, tol, 1);
     }
     {
         static const double want[1] = {9.566999293543777};
-        static const double tol[1] = {5.491100279086769e-14};
+        static const double tol[1] = {5.481825447367021e-14};
         const double r = rc_aircraft_a_hopf_omega_squared(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_a_hopf_omega_squared(2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {2.544317957272215e21};
+        static const double tol[1] = {914194377.9458133};
+        const double r = rc_aircraft_a_hopf_polynomial(2.45, 0.0, -0.02);
+        const double got[1] = {r};
+        check("rc_aircraft_a_hopf_polynomial(2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
+        const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_a_derivatives, 0.0, -0.02);
+        static const double want[1] = {14.99865028599726};
+        static const double tol[1] = {5.471760992726734e-13};
+        const double got[1] = {rc_prepared_det_k(&prepared, 2.45)};
+        check("rc_prepared_det_k(&prepared, 2.45) with prepared = rc_prepared_new(&rc_aircraft_a_derivatives, 0.0, -0.02)", got, want, tol, 1);
     }
 }
 
@@ -933,6 +975,23 @@ static void outputs_aircraft_a(const double *x, double *o)
         const double r = rc_aircraft_a_hopf_omega_squared(x[5], x[2], x[3]);
         o[163] = r;
     }
+    {
+        const double r = rc_aircraft_a_hopf_polynomial(x[5], x[2], x[3]);
+        o[164] = r;
+    }
+    {
+        const struct rc_Prepared p = rc_prepared_new(k, x[2], x[3]);
+        double in[3];
+        double r[3];
+        in[0] = x[5];
+        in[1] = x[5] * 0.5;
+        in[2] = x[5] + 1.0;
+        rc_prepared_det_k_into(&p, in, r, 3);
+        o[165] = rc_prepared_det_k(&p, x[5]);
+        o[166] = r[0];
+        o[167] = r[1];
+        o[168] = r[2];
+    }
 }
 
 /* Every function with the data of Aircraft B, at 3 points. */
@@ -1003,7 +1062,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[2] = {2.986459766822404, 4.783697032651333};
-        static const double tol[2] = {4.5326847985646695e-14, 3.348316209217092e-14};
+        static const double tol[2] = {2.2264688179189073e-14, 3.348316209217092e-14};
         const struct rc_array2 r = rc_divergence_roll_rates(&rc_aircraft_b_derivatives);
         const double got[2] = {r.v[0], r.v[1]};
         check("rc_divergence_roll_rates(&rc_aircraft_b_derivatives)", got, want, tol, 2);
@@ -1017,7 +1076,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[9] = {-314681.8319805522, 0.0, 75179.20449165539, 0.0, -5986.813048021561, 0.0, 199.523089118097, 0.0, -2.4067756335537713};
-        static const double tol[9] = {9.461388965751303e-10, 0.0, 3.044988262469305e-10, 0.0, 1.979332503019222e-11, 0.0, 3.734498957505117e-13, 0.0, 2.1376461787825567e-15};
+        static const double tol[9] = {9.461388965751303e-10, 0.0, 3.100758617639003e-10, 0.0, 2.0662338929054867e-11, 0.0, 4.0077505743979713e-13, 0.0, 2.1376461787825567e-15};
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, 0.03490658503988659);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, 0.03490658503988659)", got, want, tol, 9);
@@ -1045,14 +1104,14 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[10] = {-0.04112860174591951, -0.004406825842779853, -0.05686332464171695, -0.019700563007774903, -0.04201991042752198, -0.04112860174591951, -0.004406825842779853, -0.05686332464171695, -0.019700563007774903, 0.0};
-        static const double tol[10] = {1.1465382014899896e-16, 1.470628100293585e-17, 1.5707845624589236e-16, 6.114536290948603e-17, 7.897750012301334e-17, 1.1465382014899896e-16, 1.470628100293585e-17, 1.5707845624589236e-16, 6.114536290948603e-17, -2.0};
+        static const double tol[10] = {1.1487552692323643e-16, 1.4730036324068934e-17, 1.5738498220942047e-16, 6.125156025366266e-17, 7.89831618477091e-17, 1.1487552692323643e-16, 1.4730036324068934e-17, 1.5738498220942047e-16, 6.125156025366266e-17, -2.0};
         const struct rc_Trim_array2 r = rc_aircraft_b_trim(0.5, 0.03490658503988659, 0.0);
         const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
         check("rc_aircraft_b_trim(0.5, 0.03490658503988659, 0.0)", got, want, tol, 10);
     }
     {
         static const double want[5] = {-0.04122031714474068, -0.05478180148536036, -0.02061015857237034, -0.04298314876226451, 0.02445527219626604};
-        static const double tol[5] = {7.317139655065778e-17, 1.2157279295162086e-16, 4.1162072792973107e-17, 4.793010022157918e-17, 8.470166649030653e-17};
+        static const double tol[5] = {6.44307882776323e-17, 1.0995652455677002e-16, 3.6791768656460366e-17, 4.7910489376772086e-17, 7.951602093286945e-17};
         const struct rc_ZeroSideslipTrim r = rc_aircraft_b_zero_sideslip_trim(0.5, 0.03490658503988659);
         const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_aircraft_b_zero_sideslip_trim(0.5, 0.03490658503988659)", got, want, tol, 5);
@@ -1066,35 +1125,35 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {-3.939945561209858};
-        static const double tol[1] = {2.6507541102050766e-15};
+        static const double tol[1] = {2.6508010562758857e-15};
         const double r = rc_aircraft_b_residual_denominator(0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_aircraft_b_residual_denominator(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[4] = {24.025458563129693, 0.4119846851841602, -0.5919276155504513, 5.404981391251224};
-        static const double tol[4] = {1.622185202959553e-14, 9.12536841847763e-16, 4.0473265945589284e-16, 4.5980371636577995e-15};
+        static const double tol[4] = {1.622185979468352e-14, 9.131113888976224e-16, 4.0474279894550284e-16, 4.598751802001777e-15};
         const struct rc_matrix2x2 r = rc_aircraft_b_stiffness(0.5, 0.03490658503988659, 0.0);
         const double got[4] = {r.m[0][0], r.m[0][1], r.m[1][0], r.m[1][1]};
         check("rc_aircraft_b_stiffness(0.5, 0.03490658503988659, 0.0)", got, want, tol, 4);
     }
     {
         static const double want[1] = {130.1010215623377};
-        static const double tol[1] = {2.3825149001788303e-13};
+        static const double tol[1] = {2.383035771597146e-13};
         const double r = rc_aircraft_b_det_k(0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_aircraft_b_det_k(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[1] = {-512.5909424134005};
-        static const double tol[1] = {6.772249417146711e-13};
+        static const double tol[1] = {6.77290934355008e-13};
         const double r = rc_aircraft_b_det_j5(0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_aircraft_b_det_j5(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[1] = {130.28109824428327};
-        static const double tol[1] = {2.329308992166661e-13};
+        static const double tol[1] = {2.3099612582268e-13};
         const double r = rc_aircraft_b_zero_sideslip_det_k(0.5, 0.03490658503988659);
         const double got[1] = {r};
         check("rc_aircraft_b_zero_sideslip_det_k(0.5, 0.03490658503988659)", got, want, tol, 1);
@@ -1108,45 +1167,59 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[2] = {2.986459766822404, 4.783697032651333};
-        static const double tol[2] = {7.237616454324177e-15, 8.407664936257246e-15};
+        static const double tol[2] = {6.575155751812422e-15, 1.0532053171649465e-14};
         const struct rc_array2 r = rc_aircraft_b_divergence_roll_rates();
         const double got[2] = {r.v[0], r.v[1]};
         check("rc_aircraft_b_divergence_roll_rates()", got, want, tol, 2);
     }
     {
         static const double want[13] = {-10281707.093445428, 0.0, 4908209.542665367, 0.0, -926323.2942028707, 0.0, 88435.33930025333, 0.0, -4514.821966270685, 0.0, 117.67783905836728, 0.0, -1.2338479691951425};
-        static const double tol[13] = {1.638063061356642e-8, 0.0, 1.3198497839823166e-8, 0.0, 2.4803873548280414e-9, 0.0, 2.3620811791811927e-10, 0.0, 8.02901836781083e-12, 0.0, 5.232357169751083e-14, 0.0, 2.739692848574876e-16};
+        static const double tol[13] = {1.638063061356642e-8, 0.0, 1.3198466409479419e-8, 0.0, 2.4804002003525534e-9, 0.0, 3.33638860444668e-10, 0.0, 7.034848163526554e-12, 0.0, 5.232357169751083e-14, 0.0, 2.739692848574876e-16};
         const struct rc_array13 r = rc_aircraft_b_jump_polynomial(0.03490658503988659, 0.0);
         const double got[13] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8], r.v[9], r.v[10], r.v[11], r.v[12]};
         check("rc_aircraft_b_jump_polynomial(0.03490658503988659, 0.0)", got, want, tol, 13);
     }
     {
         static const double want[9] = {-314681.83198055223, 0.0, 75179.2044916554, 0.0, -5986.813048021562, 0.0, 199.52308911809703, 0.0, -2.406775633553772};
-        static const double tol[9] = {3.5999928928934296e-10, 0.0, 1.517146724887395e-10, 0.0, 8.014441534071384e-12, 0.0, 8.873111172255573e-14, 0.0, 5.344115446956393e-16};
+        static const double tol[9] = {3.5999928928934296e-10, 0.0, 1.3518296850898687e-10, 0.0, 6.696696592945912e-12, 0.0, 8.873111172255573e-14, 0.0, 5.344115446956393e-16};
         const struct rc_array9 r = rc_aircraft_b_zero_sideslip_jump_polynomial(0.03490658503988659);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_aircraft_b_zero_sideslip_jump_polynomial(0.03490658503988659)", got, want, tol, 9);
     }
     {
         static const double want[5] = {6.507, 41.027491946596605, 145.0764494050307, 213.33657981853113, 512.5909424134005};
-        static const double tol[5] = {1.4448442442471786e-15, 4.709620217757568e-14, 1.6626620052311831e-13, 2.8658564206883664e-13, 6.772249417146711e-13};
+        static const double tol[5] = {1.4448442442471786e-15, 4.7098465714472364e-14, 1.6627375872610347e-13, 2.866473677106398e-13, 6.77290934355008e-13};
         const struct rc_array5 r = rc_aircraft_b_characteristic_coefficients(0.5, 0.03490658503988659, 0.0);
         const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
         check("rc_aircraft_b_characteristic_coefficients(0.5, 0.03490658503988659, 0.0)", got, want, tol, 5);
     }
     {
         static const double want[1] = {442459.82445614086};
-        static const double tol[1] = {7.916501174042561e-8};
+        static const double tol[1] = {7.917295847935834e-8};
         const double r = rc_aircraft_b_hurwitz_delta4(0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_aircraft_b_hurwitz_delta4(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[1] = {7.1834785482532135};
-        static const double tol[1] = {6.554469341108535e-14};
+        static const double tol[1] = {6.55498434867957e-14};
         const double r = rc_aircraft_b_hopf_omega_squared(0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_aircraft_b_hopf_omega_squared(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {7.850434222707481e26};
+        static const double tol[1] = {625557103490999.6};
+        const double r = rc_aircraft_b_hopf_polynomial(0.5, 0.03490658503988659, 0.0);
+        const double got[1] = {r};
+        check("rc_aircraft_b_hopf_polynomial(0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
+    }
+    {
+        const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_b_derivatives, 0.03490658503988659, 0.0);
+        static const double want[1] = {130.1010215623377};
+        static const double tol[1] = {2.601320019528821e-13};
+        const double got[1] = {rc_prepared_det_k(&prepared, 0.5)};
+        check("rc_prepared_det_k(&prepared, 0.5) with prepared = rc_prepared_new(&rc_aircraft_b_derivatives, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[10] = {0.06127401382437423, 0.02319501480715936, 0.11158668362190052, 0.07510999506948327, -0.11654478563509404, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -1213,7 +1286,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[2] = {2.986459766822404, 4.783697032651333};
-        static const double tol[2] = {4.5326847985646695e-14, 3.348316209217092e-14};
+        static const double tol[2] = {2.2264688179189073e-14, 3.348316209217092e-14};
         const struct rc_array2 r = rc_divergence_roll_rates(&rc_aircraft_b_derivatives);
         const double got[2] = {r.v[0], r.v[1]};
         check("rc_divergence_roll_rates(&rc_aircraft_b_derivatives)", got, want, tol, 2);
@@ -1227,7 +1300,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[9] = {-330642.2753089567, 0.0, 75032.19613495831, 0.0, -5961.409641328351, 0.0, 199.71880077868852, 0.0, -2.4067756335537713};
-        static const double tol[9] = {9.65652547545681e-10, 0.0, 3.0542036265037686e-10, 0.0, 1.9807261073833485e-11, 0.0, 3.735397029574162e-13, 0.0, 2.1376461787825567e-15};
+        static const double tol[9] = {9.65652547545681e-10, 0.0, 3.109973981673467e-10, 0.0, 2.0676274972696136e-11, 0.0, 4.008648646467016e-13, 0.0, 2.1376461787825567e-15};
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, -0.05);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, -0.05)", got, want, tol, 9);
@@ -1255,14 +1328,14 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[10] = {0.061274013824374224, 0.02319501480715936, 0.11158668362190051, 0.07510999506948327, -0.11654478563509404, 0.061274013824374224, 0.02319501480715936, 0.11158668362190051, 0.07510999506948327, 0.0};
-        static const double tol[10] = {2.2090603624145868e-16, 8.976413110798022e-17, 3.777948014941962e-16, 3.1038329419458586e-16, 2.275324708897782e-16, 2.2090603624145868e-16, 8.976413110798022e-17, 3.777948014941962e-16, 3.1038329419458586e-16, -2.0};
+        static const double tol[10] = {2.1852292655115782e-16, 8.886201516839043e-17, 3.7345489799431966e-16, 3.0742820178808555e-16, 2.273277636528239e-16, 2.1852292655115782e-16, 8.886201516839043e-17, 3.7345489799431966e-16, 3.0742820178808555e-16, -2.0};
         const struct rc_Trim_array2 r = rc_aircraft_b_trim(1.3, -0.05, 0.01);
         const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
         check("rc_aircraft_b_trim(1.3, -0.05, 0.01)", got, want, tol, 10);
     }
     {
         static const double want[5] = {0.06260483054194202, 0.08320181979024094, 0.08138627970452463, -0.11144595678592584, -0.09657002959131956};
-        static const double tol[5] = {1.1448067113576891e-16, 1.890938423481723e-16, 1.6689625679980885e-16, 1.2441327991530734e-16, 3.396395178988751e-16};
+        static const double tol[5] = {1.0124331260195144e-16, 1.715013928567289e-16, 1.4968769070584616e-16, 1.2436596856187425e-16, 3.1922045288015834e-16};
         const struct rc_ZeroSideslipTrim r = rc_aircraft_b_zero_sideslip_trim(1.3, -0.05);
         const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_aircraft_b_zero_sideslip_trim(1.3, -0.05)", got, want, tol, 5);
@@ -1276,35 +1349,35 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {-3.9315168008869477};
-        static const double tol[1] = {2.6627210969646958e-15};
+        static const double tol[1] = {2.6623217340725184e-15};
         const double r = rc_aircraft_b_residual_denominator(1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_aircraft_b_residual_denominator(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[4] = {22.658459283120376, 1.6278317370127682, -1.5421137396084084, 4.802836874048213};
-        static const double tol[4] = {1.6547435438666125e-14, 3.6562471050411335e-15, 1.0535623032021963e-15, 6.119060431916604e-15};
+        static const double tol[4] = {1.654718545902167e-14, 3.639508752687535e-15, 1.0533408879593258e-15, 6.107385731794757e-15};
         const struct rc_matrix2x2 r = rc_aircraft_b_stiffness(1.3, -0.05, 0.01);
         const double got[4] = {r.m[0][0], r.m[0][1], r.m[1][0], r.m[1][1]};
         check("rc_aircraft_b_stiffness(1.3, -0.05, 0.01)", got, want, tol, 4);
     }
     {
         static const double want[1] = {111.33518544150859};
-        static const double tol[1] = {2.6946837463461395e-13};
+        static const double tol[1] = {2.686244892233407e-13};
         const double r = rc_aircraft_b_det_k(1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_aircraft_b_det_k(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[1] = {-437.7161520931549};
-        static const double tol[1] = {9.843326701581016e-13};
+        static const double tol[1] = {9.830420662746644e-13};
         const double r = rc_aircraft_b_det_j5(1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_aircraft_b_det_j5(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[1] = {109.03116808767453};
-        static const double tol[1] = {2.293568837781325e-13};
+        static const double tol[1] = {2.2622756691077784e-13};
         const double r = rc_aircraft_b_zero_sideslip_det_k(1.3, -0.05);
         const double got[1] = {r};
         check("rc_aircraft_b_zero_sideslip_det_k(1.3, -0.05)", got, want, tol, 1);
@@ -1318,45 +1391,59 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[2] = {2.986459766822404, 4.783697032651333};
-        static const double tol[2] = {7.237616454324177e-15, 8.407664936257246e-15};
+        static const double tol[2] = {6.575155751812422e-15, 1.0532053171649465e-14};
         const struct rc_array2 r = rc_aircraft_b_divergence_roll_rates();
         const double got[2] = {r.v[0], r.v[1]};
         check("rc_aircraft_b_divergence_roll_rates()", got, want, tol, 2);
     }
     {
         static const double want[13] = {-10803187.016078338, -11262.450620072934, 4894941.875320336, 2692.958867742927, -905791.0800453507, -214.91012839017114, 86700.3258332049, 6.932612404427446, -4477.835101510167, -0.07707314612444367, 117.7781718154395, 0.0, -1.2338479691951425};
-        static const double tol[13] = {1.7034911879679187e-8, 3.412445394420415e-11, 1.3269433882523985e-8, 9.248367492237994e-12, 2.461324164506391e-9, 7.57985963831444e-13, 2.3430800932384956e-10, 2.1789716049077705e-14, 8.016152820541177e-12, 1.6544840731307302e-16, 5.236961190097366e-14, 0.0, 2.739692848574876e-16};
+        static const double tol[13] = {1.7034911879679187e-8, 3.412803132647043e-11, 1.3269369367637338e-8, 9.249620917280654e-12, 2.4613505215140567e-9, 8.966437358287036e-13, 3.311903663443885e-10, 1.8966420800676386e-14, 7.013359484863371e-12, 1.6777312550578916e-16, 5.236961190097366e-14, 0.0, 2.739692848574876e-16};
         const struct rc_array13 r = rc_aircraft_b_jump_polynomial(-0.05, 0.01);
         const double got[13] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8], r.v[9], r.v[10], r.v[11], r.v[12]};
         check("rc_aircraft_b_jump_polynomial(-0.05, 0.01)", got, want, tol, 13);
     }
     {
         static const double want[9] = {-330642.27530895674, 0.0, 75032.19613495833, 0.0, -5961.409641328352, 0.0, 199.71880077868857, 0.0, -2.406775633553772};
-        static const double tol[9] = {3.770248975903081e-10, 0.0, 1.5232698035695536e-10, 0.0, 8.021496880350507e-12, 0.0, 8.882091892946022e-14, 0.0, 5.344115446956393e-16};
+        static const double tol[9] = {3.770248975903081e-10, 0.0, 1.348612071769137e-10, 0.0, 6.687833209747638e-12, 0.0, 8.882091892946022e-14, 0.0, 5.344115446956393e-16};
         const struct rc_array9 r = rc_aircraft_b_zero_sideslip_jump_polynomial(-0.05);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_aircraft_b_zero_sideslip_jump_polynomial(-0.05)", got, want, tol, 9);
     }
     {
         static const double want[5] = {6.507, 44.4829740208118, 160.90827109491394, 226.36774160804893, 437.7161520931549};
-        static const double tol[5] = {1.4448442442471786e-15, 5.166437446440774e-14, 1.8909529624886992e-13, 3.8553909730494255e-13, 9.843326701581016e-13};
+        static const double tol[5] = {1.4448442442471786e-15, 5.163986940342187e-14, 1.8899116935209936e-13, 3.8475488173886293e-13, 9.830420662746644e-13};
         const struct rc_array5 r = rc_aircraft_b_characteristic_coefficients(1.3, -0.05, 0.01);
         const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
         check("rc_aircraft_b_characteristic_coefficients(1.3, -0.05, 0.01)", got, want, tol, 5);
     }
     {
         static const double want[1] = {1107486.9121202745};
-        static const double tol[1] = {1.1565350807093328e-7};
+        static const double tol[1] = {1.1552647697658917e-7};
         const double r = rc_aircraft_b_hurwitz_delta4(1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_aircraft_b_hurwitz_delta4(1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[1] = {8.053828258092345};
-        static const double tol[1] = {7.859288356113616e-14};
+        static const double tol[1] = {7.852663047563641e-14};
         const double r = rc_aircraft_b_hopf_omega_squared(1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_aircraft_b_hopf_omega_squared(1.3, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {1.6556093987867826e26};
+        static const double tol[1] = {80453920434786.98};
+        const double r = rc_aircraft_b_hopf_polynomial(1.3, -0.05, 0.01);
+        const double got[1] = {r};
+        check("rc_aircraft_b_hopf_polynomial(1.3, -0.05, 0.01)", got, want, tol, 1);
+    }
+    {
+        const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_b_derivatives, -0.05, 0.01);
+        static const double want[1] = {111.33518544150859};
+        static const double tol[1] = {4.866661875874968e-13};
+        const double got[1] = {rc_prepared_det_k(&prepared, 1.3)};
+        check("rc_prepared_det_k(&prepared, 1.3) with prepared = rc_prepared_new(&rc_aircraft_b_derivatives, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[10] = {0.001464739718743919, -0.011099354722233735, -0.025246779983261986, 0.005764085836480414, -0.2078144310521549, 0.0, 0.0, 0.0, 0.0, 0.0};
@@ -1423,7 +1510,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[2] = {2.986459766822404, 4.783697032651333};
-        static const double tol[2] = {4.5326847985646695e-14, 3.348316209217092e-14};
+        static const double tol[2] = {2.2264688179189073e-14, 3.348316209217092e-14};
         const struct rc_array2 r = rc_divergence_roll_rates(&rc_aircraft_b_derivatives);
         const double got[2] = {r.v[0], r.v[1]};
         check("rc_divergence_roll_rates(&rc_aircraft_b_derivatives)", got, want, tol, 2);
@@ -1437,7 +1524,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[9] = {-321062.88396664785, 0.0, 75144.76658616264, 0.0, -5977.985949682195, 0.0, 199.60354961147954, 0.0, -2.4067756335537713};
-        static const double tol[9] = {9.36884367604285e-10, 0.0, 3.022503714047748e-10, 0.0, 1.972801618259351e-11, 0.0, 3.733605666581857e-13, 0.0, 2.1376461787825567e-15};
+        static const double tol[9] = {9.36884367604285e-10, 0.0, 3.078274069217446e-10, 0.0, 2.059703008145616e-11, 0.0, 4.0068572834747113e-13, 0.0, 2.1376461787825567e-15};
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, 0.0);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, 0.0)", got, want, tol, 9);
@@ -1465,7 +1552,7 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[10] = {0.001464739718743919, -0.011099354722233737, -0.025246779983261986, 0.005764085836480415, -0.2078144310521549, 0.001464739718743919, -0.011099354722233737, -0.025246779983261986, 0.005764085836480415, 0.0};
-        static const double tol[10] = {1.5201158010961836e-17, 1.171541029696021e-16, 2.7366734706120234e-16, 6.003802783651317e-17, 3.9707749466287693e-16, 1.5201158010961836e-17, 1.171541029696021e-16, 2.7366734706120234e-16, 6.003802783651317e-17, -2.0};
+        static const double tol[10] = {1.4562615520922536e-17, 1.1231542104443225e-16, 2.6266119931379844e-16, 5.684845102053345e-17, 3.960117084297252e-16, 1.4562615520922536e-17, 1.1231542104443225e-16, 2.6266119931379844e-16, 5.684845102053345e-17, -2.0};
         const struct rc_Trim_array2 r = rc_aircraft_b_trim(2.45, 0.0, -0.02);
         const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
         check("rc_aircraft_b_trim(2.45, 0.0, -0.02)", got, want, tol, 10);
@@ -1486,28 +1573,28 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[1] = {-3.9327420466240475};
-        static const double tol[1] = {2.6234756567094468e-15};
+        static const double tol[1] = {2.62332574633367e-15};
         const double r = rc_aircraft_b_residual_denominator(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_b_residual_denominator(2.45, 0.0, -0.02)", got, want, tol, 1);
     }
     {
         static const double want[4] = {18.563848178799546, 2.4956821019235074, -2.9037888503816838, 1.3234017870828543};
-        static const double tol[4] = {1.7450557977748662e-14, 2.2634706397787754e-15, 1.9879354666433232e-15, 6.070919154573622e-15};
+        static const double tol[4] = {1.7449706646612986e-14, 2.2418876287324664e-15, 1.9862586412587872e-15, 6.028724563495561e-15};
         const struct rc_matrix2x2 r = rc_aircraft_b_stiffness(2.45, 0.0, -0.02);
         const double got[4] = {r.m[0][0], r.m[0][1], r.m[1][0], r.m[1][1]};
         check("rc_aircraft_b_stiffness(2.45, 0.0, -0.02)", got, want, tol, 4);
     }
     {
         static const double want[1] = {31.814363716620715};
-        static const double tol[1] = {1.8319083132624117e-13};
+        static const double tol[1] = {1.8104385067402808e-13};
         const double r = rc_aircraft_b_det_k(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_b_det_k(2.45, 0.0, -0.02)", got, want, tol, 1);
     }
     {
         static const double want[1] = {-125.1176858749448};
-        static const double tol[1] = {1.5487450707436792e-12};
+        static const double tol[1] = {1.5437747648557952e-12};
         const double r = rc_aircraft_b_det_j5(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_b_det_j5(2.45, 0.0, -0.02)", got, want, tol, 1);
@@ -1528,45 +1615,59 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[2] = {2.986459766822404, 4.783697032651333};
-        static const double tol[2] = {7.237616454324177e-15, 8.407664936257246e-15};
+        static const double tol[2] = {6.575155751812422e-15, 1.0532053171649465e-14};
         const struct rc_array2 r = rc_aircraft_b_divergence_roll_rates();
         const double got[2] = {r.v[0], r.v[1]};
         check("rc_aircraft_b_divergence_roll_rates()", got, want, tol, 2);
     }
     {
         static const double want[13] = {-10490192.98886623, 21911.690754314783, 4903752.706249545, -5245.962304126404, -918295.4279367061, 428.119090363085, 87740.15076819426, -14.482433515350923, -4499.2653299832655, 0.1731913463979772, 117.71908761306281, 0.0, -1.2338479691951425};
-        static const double tol[13] = {1.6305046225509718e-8, 6.643205429600792e-11, 1.3066224422383411e-8, 1.7924395638660547e-11, 2.4468312868289184e-9, 1.4725298666385053e-12, 2.3378678358884464e-10, 4.23499837935398e-14, 7.992301961324657e-12, 3.0975255700459356e-16, 5.227777660235536e-14, 0.0, 2.739692848574876e-16};
+        static const double tol[13] = {1.6305046225509718e-8, 6.643205429600792e-11, 1.3066224312166907e-8, 1.7924395638660547e-11, 2.4468312812498056e-9, 1.7636615928293761e-12, 3.3119792613785545e-10, 3.726483421902733e-14, 6.993264368675632e-12, 3.1017314186571535e-16, 5.227777660235536e-14, 0.0, 2.739692848574876e-16};
         const struct rc_array13 r = rc_aircraft_b_jump_polynomial(0.0, -0.02);
         const double got[13] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8], r.v[9], r.v[10], r.v[11], r.v[12]};
         check("rc_aircraft_b_jump_polynomial(0.0, -0.02)", got, want, tol, 13);
     }
     {
         static const double want[9] = {-321062.88396664785, 0.0, 75144.76658616266, 0.0, -5977.9859496821955, 0.0, 199.60354961147956, 0.0, -2.406775633553772};
-        static const double tol[9] = {3.5645140613232743e-10, 0.0, 1.5016941007927362e-10, 0.0, 7.964277170667427e-12, 0.0, 8.864178263022973e-14, 0.0, 5.344115446956393e-16};
+        static const double tol[9] = {3.5645140613232743e-10, 0.0, 1.3348392007046545e-10, 0.0, 6.636897642222856e-12, 0.0, 8.864178263022973e-14, 0.0, 5.344115446956393e-16};
         const struct rc_array9 r = rc_aircraft_b_zero_sideslip_jump_polynomial(0.0);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_aircraft_b_zero_sideslip_jump_polynomial(0.0)", got, want, tol, 9);
     }
     {
         static const double want[5] = {6.507, 51.1181899317175, 196.52651300623458, 172.36700211022463, 125.1176858749448};
-        static const double tol[5] = {1.4448442442471786e-15, 5.694095038830932e-14, 2.2384437257353e-13, 3.934107289869611e-13, 1.5487450707436792e-12};
+        static const double tol[5] = {1.4448442442471786e-15, 5.693326376951173e-14, 2.2362728892248456e-13, 3.92798682022681e-13, 1.5437747648557952e-12};
         const struct rc_array5 r = rc_aircraft_b_characteristic_coefficients(2.45, 0.0, -0.02);
         const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
         check("rc_aircraft_b_characteristic_coefficients(2.45, 0.0, -0.02)", got, want, tol, 5);
     }
     {
         static const double want[1] = {2746904.159969923};
-        static const double tol[1] = {1.5512684435125215e-7};
+        static const double tol[1] = {1.548787809317888e-7};
         const double r = rc_aircraft_b_hurwitz_delta4(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_b_hurwitz_delta4(2.45, 0.0, -0.02)", got, want, tol, 1);
     }
     {
         static const double want[1] = {7.321658338036845};
-        static const double tol[1] = {7.864654231937969e-14};
+        static const double tol[1] = {7.856639132676037e-14};
         const double r = rc_aircraft_b_hopf_omega_squared(2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_aircraft_b_hopf_omega_squared(2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
+        static const double want[1] = {4.821887749484026e21};
+        static const double tol[1] = {3377486181.2090454};
+        const double r = rc_aircraft_b_hopf_polynomial(2.45, 0.0, -0.02);
+        const double got[1] = {r};
+        check("rc_aircraft_b_hopf_polynomial(2.45, 0.0, -0.02)", got, want, tol, 1);
+    }
+    {
+        const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_b_derivatives, 0.0, -0.02);
+        static const double want[1] = {31.81436371662072};
+        static const double tol[1] = {5.22004221691308e-13};
+        const double got[1] = {rc_prepared_det_k(&prepared, 2.45)};
+        check("rc_prepared_det_k(&prepared, 2.45) with prepared = rc_prepared_new(&rc_aircraft_b_derivatives, 0.0, -0.02)", got, want, tol, 1);
     }
 }
 
@@ -1828,15 +1929,32 @@ static void outputs_aircraft_b(const double *x, double *o)
         const double r = rc_aircraft_b_hopf_omega_squared(x[5], x[2], x[3]);
         o[163] = r;
     }
+    {
+        const double r = rc_aircraft_b_hopf_polynomial(x[5], x[2], x[3]);
+        o[164] = r;
+    }
+    {
+        const struct rc_Prepared p = rc_prepared_new(k, x[2], x[3]);
+        double in[3];
+        double r[3];
+        in[0] = x[5];
+        in[1] = x[5] * 0.5;
+        in[2] = x[5] + 1.0;
+        rc_prepared_det_k_into(&p, in, r, 3);
+        o[165] = rc_prepared_det_k(&p, x[5]);
+        o[166] = r[0];
+        o[167] = r[1];
+        o[168] = r[2];
+    }
 }
 
-/* The --bits mode: one record per line, 8 columns, 164 outputs. */
+/* The --bits mode: one record per line, 8 columns, 169 outputs. */
 static int bits(const char *path)
 {
     FILE *in = fopen(path, "r");
     unsigned aircraft;
     double x[8];
-    double o[164];
+    double o[169];
     if (!in) {
         perror(path);
         return 2;

@@ -4,21 +4,22 @@
 // inputs: Aircraft A (model::aircraft); model 0.1.0; inputs hash 049bd51c1eb422b6 (model::emit::inputs_hash).
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  25      42       3       2       0      72
-//   zero_sideslip_trim                     5      16       1       4       0      26
+//   trim                                  23      42       3       3       0      71
+//   zero_sideslip_trim                     4      16       1       4       0      25
 //   jacobian5                              1       6       0       5       0      12
-//   residual_denominator                  25      41       1       0       0      67
-//   stiffness                             38      65       2       0       0     105
-//   det_k                                 40      68       1       0       0     109
-//   det_j5                                44      63       1       0       0     108
-//   zero_sideslip_det_k                   17      36       1       0       0      54
+//   residual_denominator                  23      41       1       1       0      66
+//   stiffness                             36      65       2       1       0     104
+//   det_k                                 38      68       1       1       0     108
+//   det_j5                                42      63       1       1       0     107
+//   zero_sideslip_det_k                   16      36       1       0       0      53
 //   divergence_biquadratic                 0       0       0       0       0       0
-//   divergence_roll_rates                  2       0       2       0       3       7
-//   jump_polynomial                      196     254       0       0       0     450
-//   zero_sideslip_jump_polynomial         21      30       0       0       0      51
-//   characteristic_coefficients           74      96       1       0       0     171
-//   hurwitz_delta4                        80     106       1       0       0     187
-//   hopf_omega_squared                    76      98       2       0       0     176
+//   divergence_roll_rates                  1       1       2       2       4      10
+//   jump_polynomial                      176     258       0       0       0     434
+//   zero_sideslip_jump_polynomial         17      26       0       0       0      43
+//   characteristic_coefficients           72      96       1       1       0     170
+//   hurwitz_delta4                        78     106       1       1       0     186
+//   hopf_omega_squared                    74      98       2       1       0     175
+//   hopf_polynomial                       80     156       0       1       0     237
 
 //! The criterion for Aircraft A of Table A.1: every constant folded exactly, then rounded once to f64.
 use super::{Trim, ZeroSideslipTrim};
@@ -44,22 +45,32 @@ pub const DERIVATIVES: super::Derivatives = super::Derivatives {
     l_delta_r: 0.0,
 };
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
-/// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
-/// equation), and the aileron from the roll equation, a quadratic in delta_a
-/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the
-/// trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),
-/// element 1 the other root; both by the cancellation-free quadratic formula. NaN where
-/// the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw
-/// (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the
-/// divergence roll rates). The other functions of `p0` use element 0.
+/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = [alpha0, beta0, Q0, R0]` solves
+/// `A x0 + b = 0` (Cramer's rule, one division by det A), affine in delta_a (aileron yaw
+/// `n_delta_a` enters b); the aileron then solves the roll equation `p_dot = 0` along it,
+/// a quadratic `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element
+/// 0 is the trim that continues the trim without aileron yaw (the root that tends to
+/// `-g0/g1`), element 1 the other root; both by the cancellation-free quadratic formula.
+/// NaN where the two trims of `p0` are complex; element 1 is infinite or NaN without
+/// aileron yaw (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0
+/// (the divergence roll rates). The other functions of `p0` use element 0.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A = [[z_alpha, -P0, 1, 0],
+///      [P0, y_beta, 0, -1],
+///      [m_alpha, 0, m_q, C*P0],
+///      [0, n_beta, -D*P0, n_r]]
+/// b = [0, 0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
+/// p_dot = l_p*P0 + l_r*R0 + l_beta*beta0 + l_delta_a*delta_a + l_delta_r*delta_r - E*Q0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 42 mul, 3 div, 2 neg, 0 libm (72 operations); straight-line, no branches.
+/// Cost after CSE: 23 add/sub, 42 mul, 3 div, 3 neg, 0 libm (71 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn trim(p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
@@ -74,12 +85,12 @@ pub fn trim(p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
     let t8 = p0 * t0 - 13.52504;
     let t9 = 1.0
         / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076
-            + (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+            + 50.4558736781056 - p0 * (t0 * 3.716));
     let t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
     let t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
     let t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8))
         * t9;
-    let t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232)
+    let t13 = (delta_r * (-(p0 * t5 + 1.0592979372))
         - t2 * (p0 * 3.716 - (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
     [
         Trim {
@@ -101,34 +112,60 @@ pub fn trim(p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the
-/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the
-/// rudder from the roll and yaw equations together (with aileron yaw and roll due to
-/// rudder both controls enter both; the rudder is the schedule of the aileron-rudder
-/// interconnect, Fig. 9). Angles in rad, rates in rad/s.
+/// rudder freed; `[alpha0, Q0, R0]` solves `A1 x + b1 = 0` (the alpha, beta and q
+/// equations), the aileron and the rudder the roll and yaw equations together (with
+/// aileron yaw and roll due to rudder both controls enter both; the rudder is the
+/// schedule of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A1 = [[z_alpha, 1, 0],
+///       [P0, 0, -1],
+///       [m_alpha, m_q, C*P0]]
+/// b1 = [0, 0, m_delta_e*delta_e]
+/// delta_a = (-l_p*n_delta_r*P0 - l_r*n_delta_r*R0 + n_p*l_delta_r*P0 + n_r*l_delta_r*R0
+///                - D*l_delta_r*P0*Q0 + E*n_delta_r*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// delta_r = (l_p*n_delta_a*P0 + l_r*n_delta_a*R0 - l_delta_a*n_p*P0 - l_delta_a*n_r*R0
+///                + D*l_delta_a*P0*Q0 - E*n_delta_a*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 5 add/sub, 16 mul, 1 div, 4 neg, 0 libm (26 operations); straight-line, no branches.
+/// Cost after CSE: 4 add/sub, 16 mul, 1 div, 4 neg, 0 libm (25 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn zero_sideslip_trim(p0: f64, delta_e: f64) -> ZeroSideslipTrim {
+    /// exact: 25/8182
+    const K0: f64 = 0.0030554876558298704;
     let t0 = delta_e * 33.268;
-    let t1 = 1.0 / (5.458794 - (p0 * (p0 * 0.959) - 13.52504));
+    let t1 = 1.0 / (18.983834 - p0 * (p0 * 0.959));
     let t2 = t0 * 3.0076 * t1;
     let t3 = p0 * t0 * t1;
     ZeroSideslipTrim {
         alpha: -(t0 * t1),
         q: -t2,
         r: -t3,
-        delta_a: -(0.0030554876558298704 * (t3 * (1.5207 + t2 * 0.705) + p0 * 21.7529)),
-        delta_r: 0.0030554876558298704 * (t3 * 85.354624 + p0 * t2 * 257.24208),
+        delta_a: -(K0 * (t3 * (1.5207 + t2 * 0.705) + p0 * 21.7529)),
+        delta_r: K0 * (t3 * 85.354624 + p0 * t2 * 257.24208),
     }
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The 5x5 Jacobian of the PSS model (Appendix A.2) at the state
-/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s.
+/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s;
+/// below with `(alpha0, beta0, P0, Q0, R0) = (alpha, beta, p, q, r)`.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// J5 = [[z_alpha, -P0, -beta0, 1, 0],
+///       [P0, y_beta, alpha0, 0, -1],
+///       [0, l_beta, l_p, -E*R0, l_r - E*Q0],
+///       [m_alpha, 0, C*R0, m_q, C*P0],
+///       [0, n_beta, n_p - D*Q0, -D*P0, n_r]]
+/// ```
 ///
 /// Arguments:
 /// - `alpha`: angle of attack, rad
@@ -150,15 +187,20 @@ pub fn jacobian5(alpha: f64, beta: f64, p: f64, q: f64, r: f64) -> [[f64; 5]; 5]
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// The static-residual denominator (Eq. 22) at the trim of `p0`:
-/// `d = l_p + l_r alpha0 - E Q0 alpha0 - E R0 beta0`, 1/s. det K has poles where d = 0 (Fig. 8).
+/// The static-residual denominator d (Eq. 22) at the trim of `p0`, 1/s. det K has
+/// poles where d = 0 (Fig. 8).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 41 mul, 1 div, 0 neg, 0 libm (67 operations); straight-line, no branches.
+/// Cost after CSE: 23 add/sub, 41 mul, 1 div, 1 neg, 0 libm (66 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn residual_denominator(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
@@ -173,28 +215,37 @@ pub fn residual_denominator(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t8 = p0 * t0 - 13.52504;
     let t9 = 1.0
         / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076
-            + (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
-    (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9
-        * (1.5207
-            - (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8))
-                * t9 * 0.705)
-        + (-21.7529
-            - 0.705
-                * ((delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9
-                    * ((delta_r * (-0.3046007052 - p0 * t5 - 0.754697232)
-                        - t2 * (p0 * 3.716 - (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9)))
+            + 50.4558736781056 - p0 * (t0 * 3.716));
+    let t10 = 1.5207
+        - (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8)) * t9
+            * 0.705;
+    let t11 = (delta_r * (-(p0 * t5 + 1.0592979372))
+        - t2 * (p0 * 3.716 - (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
+    let t12 = -21.7529
+        - 0.705 * ((delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9 * t11);
+    (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9 * t10 + t12
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of `p0`:
-/// `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in Eqs 13-14,
-/// g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual (Eqs 22-25). 1/s^2.
+/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of
+/// `p0`: `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in
+/// Eqs 13-14, g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual
+/// (Eqs 22-25). 1/s^2.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 38 add/sub, 65 mul, 2 div, 0 neg, 0 libm (105 operations); straight-line, no branches.
+/// Cost after CSE: 36 add/sub, 65 mul, 2 div, 1 neg, 0 libm (104 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn stiffness(p0: f64, delta_e: f64, delta_r: f64) -> [[f64; 2]; 2] {
@@ -209,12 +260,12 @@ pub fn stiffness(p0: f64, delta_e: f64, delta_r: f64) -> [[f64; 2]; 2] {
     let t8 = p0 * t0 - 13.52504;
     let t9 = 1.0
         / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076
-            + (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+            + 50.4558736781056 - p0 * (t0 * 3.716));
     let t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
     let t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
     let t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8))
         * t9;
-    let t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232)
+    let t13 = (delta_r * (-(p0 * t5 + 1.0592979372))
         - t2 * (p0 * 3.716 - (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
     let t14 = 1.5207 - t12 * 0.705;
     let t15 = 1.0 / (t10 * t14 + (-21.7529 - 0.705 * (t11 * t13)));
@@ -231,15 +282,25 @@ pub fn stiffness(p0: f64, delta_e: f64, delta_r: f64) -> [[f64; 2]; 2] {
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the
 /// saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.
-/// Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared
-/// from g, h and d, on the trim branch of [`trim`].
+/// Evaluated as `det K0 - h^T adj(K0) g / d` (the matrix determinant lemma on
+/// `K = K0 - g h^T / d`) with the trim's denominator det A cleared from g, h and d, on
+/// the trim branch of [`trim`].
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 40 add/sub, 68 mul, 1 div, 0 neg, 0 libm (109 operations); straight-line, no branches.
+/// Cost after CSE: 38 add/sub, 68 mul, 1 div, 1 neg, 0 libm (108 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn det_k(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
@@ -248,7 +309,7 @@ pub fn det_k(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t2 = delta_e * 33.268;
     let t3 = 0.473352 + t0 * t1;
     let t4 = p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076
-        + (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864);
+        + 50.4558736781056 - p0 * (t0 * 3.716);
     let t5 = p0 * t1;
     let t6 = p0 * 1.815;
     let t7 = t0 * 0.0558;
@@ -257,7 +318,7 @@ pub fn det_k(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t10 = p0 * t0 - 13.52504;
     let t11 = delta_r * (5.458794 - t10) - t2 * (t1 * 3.0076 + t9);
     let t12 = t2 * (-11.220010120064 - p0 * t9) - delta_r * (3.0076 * t7 + p0 * t10);
-    let t13 = delta_r * (-0.3046007052 - p0 * t6 - 0.754697232)
+    let t13 = delta_r * (-(p0 * t6 + 1.0592979372))
         - t2 * (p0 * 3.716 - (3.0076 * (t1 * 0.0558) + p0 * t5));
     let t14 = 1.815 * t11 - 0.959 * t13 - t0 * t8;
     let t15 = 0.786 * t12 + t1 * t11 + t8 * 0.2608;
@@ -267,12 +328,13 @@ pub fn det_k(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t19 = p0 * 1.8685122;
     let t20 = p0 * 2.6247736;
     let t21 = 3.73055264 - 0.786 * t17;
+    let t22 = (t12 * 0.039339 - (t4 * 110.53485506 + t13 * t16))
+        * (t14 * t20 - t15 * t18);
+    let t23 = 1.5207 * (t4 * t8) - (21.7529 * (t4 * t4) + 0.705 * (t11 * t13))
+        - 0.705 * (t8 * t12);
     t18 * t21 + t19 * t20
         - ((t4 * (p0 * 1.5207) - t13 * 2.120358 - t12 * t16) * (t14 * t21 + t15 * t19)
-            + (t12 * 0.039339 - (t4 * 110.53485506 + t13 * t16))
-                * (t14 * t20 - t15 * t18))
-            / (1.5207 * (t4 * t8) - (21.7529 * (t4 * t4) + 0.705 * (t11 * t13))
-                - 0.705 * (t8 * t12))
+            + t22) / t23
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -283,10 +345,26 @@ pub fn det_k(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 44 add/sub, 63 mul, 1 div, 0 neg, 0 libm (108 operations); straight-line, no branches.
+/// Cost after CSE: 42 add/sub, 63 mul, 1 div, 1 neg, 0 libm (107 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn det_j5(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
+    /// exact: 295.719190228139814032
+    const K0: f64 = 295.71919022813984;
+    /// exact: -272.793225401958092944
+    const K1: f64 = -272.79322540195807;
+    /// exact: 9.8286324216101328
+    const K2: f64 = 9.828632421610132;
+    /// exact: 1133.0355257374320864
+    const K3: f64 = 1133.0355257374322;
+    /// exact: -1649.32301698305663144
+    const K4: f64 = -1649.3230169830567;
+    /// exact: 7.58579274212467008
+    const K5: f64 = 7.58579274212467;
+    /// exact: 35.571390943064448
+    const K6: f64 = 35.57139094306445;
+    /// exact: -1540.544555557906743104
+    const K7: f64 = -1540.5445555579067;
     let t0 = p0 * 0.959;
     let t1 = p0 * 0.786;
     let t2 = delta_e * 33.268;
@@ -298,43 +376,44 @@ pub fn det_j5(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t8 = p0 * t0 - 13.52504;
     let t9 = 1.0
         / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076
-            + (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+            + 50.4558736781056 - p0 * (t0 * 3.716));
     let t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
     let t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
     let t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8))
         * t9;
-    let t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232)
+    let t13 = (delta_r * (-(p0 * t5 + 1.0592979372))
         - t2 * (p0 * 3.716 - (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
-    p0
+    let t14 = t13 * (t11 * 2.51236902 - t13 * 0.176325576)
+        + (K0 - t10 * 266.561825136888);
+    let t15 = p0
+        * (t13 * (t12 * 1.06282134 - 1.1462641218) + t11 * 83.2543383
+            - p0 * 16.3967704446);
+    let t16 = t13 * (K1 - t12 * K2 - t10 * 10.042969019112)
+        + t11 * (t12 * 5.17310107716816 - K3);
+    let t17 = t12 * (t12 * 0.586988765940636 + (K4 - t10 * 49.73346863652));
+    let t18 = p0
         * (p0
-            * (p0
-                * (t13 * (t12 * 1.06282134 - 1.1462641218) + t11 * 83.2543383
-                    - p0 * 16.3967704446)
-                + (t12 * (t12 * 1.00574595 + (81.084922887 + t10 * 7.4946304152))
-                    + (t13 * (t11 * 2.51236902 - t13 * 0.176325576)
-                        + (295.71919022813984 - t10 * 266.561825136888))))
-            + (t13
-                * (-272.79322540195807 - t12 * 9.828632421610132 - t10 * 10.042969019112)
-                + t11 * (t12 * 5.17310107716816 - 1133.0355257374322)))
-        + (t12 * (t12 * 0.586988765940636 + (-1649.3230169830567 - t10 * 49.73346863652))
-            + (-1540.5445555579067 - t10 * 439.5600225423592
-                - t13 * (t13 * 7.58579274212467 + t11 * 35.57139094306445)))
+            * (t15
+                + (t12 * (t12 * 1.00574595 + (81.084922887 + t10 * 7.4946304152)) + t14))
+            + t16);
+    t18 + (t17 + (K7 - t10 * 439.5600225423592 - t13 * (t13 * K5 + t11 * K6)))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// det K (Eq. 27) at the zero-sideslip trim of `p0` (section V.D, Fig. 11), 1/s^4: its
-/// zeros mark the departure (transcritical point) of the zero-sideslip roll.
+/// zeros mark the departure (transcritical point) of the zero-sideslip roll. K0, g, h
+/// and d are those of [`det_k`] with `beta0 = 0`.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 17 add/sub, 36 mul, 1 div, 0 neg, 0 libm (54 operations); straight-line, no branches.
+/// Cost after CSE: 16 add/sub, 36 mul, 1 div, 0 neg, 0 libm (53 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn zero_sideslip_det_k(p0: f64, delta_e: f64) -> f64 {
     let t0 = p0 * 0.959;
     let t1 = delta_e * 33.268;
-    let t2 = 5.458794 - (p0 * t0 - 13.52504);
+    let t2 = 18.983834 - p0 * t0;
     let t3 = t1 * 3.0076;
     let t4 = p0 * t1;
     let t5 = 0.959 * t4 + t0 * t1;
@@ -345,14 +424,21 @@ pub fn zero_sideslip_det_k(p0: f64, delta_e: f64) -> f64 {
     let t10 = p0 * 1.8685122;
     let t11 = p0 * 2.6247736;
     let t12 = 3.73055264 - 0.786 * t8;
+    let t13 = (t2 * (p0 * 1.5207) + t4 * 2.120358 + t3 * t7) * (t5 * t12 - t6 * t10);
+    let t14 = t13 + (t4 * t7 - t2 * 110.53485506 - t3 * 0.039339) * (t6 * t9 + t5 * t11);
     t9 * t12 + t10 * t11
-        + ((t2 * (p0 * 1.5207) + t4 * 2.120358 + t3 * t7) * (t5 * t12 - t6 * t10)
-            + (t4 * t7 - t2 * 110.53485506 - t3 * 0.039339) * (t6 * t9 + t5 * t11))
-            / (t2 * t2 * 21.7529 + 1.5207 * (t1 * t2) + 0.705 * (t1 * t3))
+        + t14 / (t2 * t2 * 21.7529 + 1.5207 * (t1 * t2) + 0.705 * (t1 * t3))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive
-/// roots are the pitch-yaw divergence roll rates of Table 1.
+/// Coefficients [c0, c2, c4] of `det A = c4 P0^4 + c2 P0^2 + c0` (Eq. 5); its
+/// positive roots are the pitch-yaw divergence roll rates of Table 1.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c0 = -m_alpha*n_beta + z_alpha*m_q*n_beta - y_beta*m_alpha*n_r + z_alpha*y_beta*m_q*n_r
+/// c2 = -C*n_beta + D*m_alpha + m_q*n_r + C*D*z_alpha*y_beta
+/// c4 = C*D
+/// ```
 ///
 /// Cost after CSE: 0 add/sub, 0 mul, 0 div, 0 neg, 0 libm (0 operations); straight-line, no branches.
 #[must_use]
@@ -361,19 +447,23 @@ pub fn divergence_biquadratic() -> [f64; 3] {
     [70.82019204602176, -13.59447201192208, 0.753774]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// The divergence roll rates P1, P2 of Eq. 5 (Table 1), rad/s:
-/// `P = sqrt((-c2 -+ sqrt(c2^2 - 4 c4 c0)) / (2 c4))`, ascending when c4 = C D > 0.
-/// NaN for a root that does not exist (negative discriminant or P0^2 < 0), without a branch.
+/// The divergence roll rates P1 <= P2 of Eq. 5 (Table 1), rad/s, the positive roots of
+/// `det A = c4 P0^4 + c2 P0^2 + c0` ([`divergence_biquadratic`]), by the cancellation-free
+/// quadratic formula in `P0^2`: `q = -(c2 + copysign(sqrt(c2^2 - 4 c4 c0), c2)) / 2`,
+/// `P1 = sqrt(c0 / q)` (the root of smaller magnitude), `P2 = sqrt(q / c4)`. Both are
+/// accurate to a few ulps of well-conditioned coefficients even when one root is tiny
+/// against the other (the textbook `(-c2 -+ sqrt(...)) / (2 c4)` loses the small one to
+/// cancellation); `c4 = 0` gives `P1 = sqrt(-c0 / c2)`. NaN for a root that does not
+/// exist (negative discriminant or `P0^2 < 0`), without a branch.
 ///
-/// Cost after CSE: 2 add/sub, 0 mul, 2 div, 0 neg, 3 libm (7 operations); straight-line, no branches.
+/// Cost after CSE: 1 add/sub, 1 mul, 2 div, 2 neg, 4 libm (10 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn divergence_roll_rates() -> [f64; 2] {
-    let t0 = libm::sqrt(-28.72000847425926);
-    [
-        libm::sqrt((13.59447201192208 - t0) / 1.507548),
-        libm::sqrt((t0 + 13.59447201192208) / 1.507548),
-    ]
+    /// exact: -28.7200084742592588633040084736
+    const K0: f64 = -28.72000847425926;
+    let t0 = 0.5 * (libm::sqrt(K0).copysign(-13.59447201192208) - 13.59447201192208);
+    [libm::sqrt(-(70.82019204602176 / t0)), libm::sqrt(-(t0 / 0.753774))]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Coefficients of P0^0 ..= P0^12 of the jump polynomial `det J5 * det(A)^2` (step 8).
@@ -385,21 +475,59 @@ pub fn divergence_roll_rates() -> [f64; 2] {
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 196 add/sub, 254 mul, 0 div, 0 neg, 0 libm (450 operations); straight-line, no branches.
+/// Cost after CSE: 176 add/sub, 258 mul, 0 div, 0 neg, 0 libm (434 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn jump_polynomial(delta_e: f64, delta_r: f64) -> [f64; 13] {
+    /// exact: 373.267296674289152
+    const K0: f64 = 373.2672966742891;
+    /// exact: 119.23551520615616
+    const K1: f64 = 119.23551520615617;
+    /// exact: -294746421981588840321233983493776448072450637941/38146972656250000000000000000000000000000
+    const K2: f64 = -7726600.604394162;
+    /// exact: 678945685146805839769413528011793521305764875811/152587890625000000000000000000000000000000
+    const K3: f64 = 4449538.442178107;
+    /// exact: 504.060968370333668198835106927296
+    const K4: f64 = 504.0609683703337;
+    /// exact: -9.3162390330219775915896
+    const K5: f64 = -9.316239033021978;
+    /// exact: 272.793225401958092944
+    const K6: f64 = 272.79322540195807;
+    /// exact: 671897324447018729226979579906638297269953501527/610351562500000000000000000000000000000000
+    const K7: f64 = 1100836.5763739955;
+    /// exact: 7.58579274212467008
+    const K8: f64 = 7.58579274212467;
+    /// exact: 1649.32301698305663144
+    const K9: f64 = 1649.3230169830567;
+    /// exact: 9.8286324216101328
+    const K10: f64 = 9.828632421610132;
+    /// exact: 1133.0355257374320864
+    const K11: f64 = 1133.0355257374322;
+    /// exact: 35.571390943064448
+    const K12: f64 = 35.57139094306445;
+    /// exact: 539.355050538846092944
+    const K13: f64 = 539.3550505388461;
+    /// exact: 11716.74300149464349152964902828466268191232
+    const K14: f64 = 11716.743001494644;
+    /// exact: 85.304859579584448
+    const K15: f64 = 85.30485957958444;
+    /// exact: 364670412208808341191561700839765278336107284713/2441406250000000000000000000000000000000000
+    const K16: f64 = 149369.0008407279;
+    /// exact: 17.62876176123667008
+    const K17: f64 = 17.62876176123667;
+    /// exact: 2782.35854272048871784
+    const K18: f64 = 2782.358542720489;
     let t0 = delta_e * 124.10802522752;
     let t1 = delta_r * 1.8685122;
     let t2 = delta_e * 26.148648;
     let t3 = delta_r * 18.983834;
     let t4 = delta_e * 87.3209681248;
     let t5 = delta_r * 0.959;
-    let t6 = delta_e * 373.2672966742891;
+    let t6 = delta_e * K0;
     let t7 = delta_r * 13.36409670728;
     let t8 = delta_e * 8.6762944;
     let t9 = delta_r * 1.0592979372;
-    let t10 = delta_e * 119.23551520615617;
+    let t10 = delta_e * K1;
     let t11 = delta_r * 1.815;
     let t12 = t9 * 70.82019204602176;
     let t13 = t10 * 70.82019204602176;
@@ -412,147 +540,126 @@ pub fn jump_polynomial(delta_e: f64, delta_r: f64) -> [f64; 13] {
     let t20 = t11 * 0.753774;
     let t21 = t2 * 0.753774;
     let t22 = t9 * t9;
-    let t23 = t9 * t10;
-    let t24 = t9 * t11;
-    let t25 = t2 * t9;
-    let t26 = t23 + t23;
-    let t27 = t10 * t11;
-    let t28 = t2 * t10;
-    let t29 = t24 + (t24 + t10 * t10);
-    let t30 = t2 * t11;
-    let t31 = t27 + (t27 - t25) - t25;
-    let t32 = t11 * t11 - t28 - t28;
-    let t33 = t30 + t30;
-    let t34 = t2 * t2;
-    let t35 = t6 * 70.82019204602176;
-    let t36 = t7 * 70.82019204602176;
-    let t37 = t5 * 70.82019204602176;
-    let t38 = t6 * 13.59447201192208 - t8 * 70.82019204602176;
-    let t39 = t37 + t7 * 13.59447201192208;
-    let t40 = t5 * 13.59447201192208;
-    let t41 = t8 * 13.59447201192208 - t6 * 0.753774;
-    let t42 = t40 + t7 * 0.753774;
-    let t43 = t8 * 0.753774;
-    let t44 = t5 * 0.753774;
-    let t45 = t6 * t9;
-    let t46 = t2 * t6;
-    let t47 = t6 * t10 - t7 * t9;
-    let t48 = t2 * t7;
-    let t49 = t6 * t11 - t7 * t10 + t8 * t9;
-    let t50 = t2 * t8;
-    let t51 = t5 * t9;
-    let t52 = t8 * t10 - (t46 + t7 * t11) + t51;
-    let t53 = t5 * t10;
-    let t54 = t48 + t8 * t11 + t53;
-    let t55 = t5 * t11;
-    let t56 = t55 - t50;
-    let t57 = t2 * t5;
-    let t58 = t6 * t6;
-    let t59 = t6 * t7;
-    let t60 = t6 * t8;
-    let t61 = t5 * t6;
-    let t62 = t59 + t59;
-    let t63 = t7 * t8;
-    let t64 = t5 * t7;
-    let t65 = t60 + (t60 + t7 * t7);
-    let t66 = t5 * t8;
-    let t67 = t61 + (t61 - t63 - t63);
-    let t68 = t8 * t8 - t64 - t64;
-    let t69 = t66 + t66;
-    let t70 = t5 * t5;
-    let t71 = t3 * 70.82019204602176;
-    let t72 = t4 * 70.82019204602176;
-    let t73 = t37 + t3 * 13.59447201192208;
-    let t74 = t4 * 13.59447201192208;
-    let t75 = t40 + t3 * 0.753774;
-    let t76 = t4 * 0.753774;
-    let t77 = t3 * t9;
-    let t78 = t4 * t9 - t3 * t10;
-    let t79 = t51 + (t4 * t10 - t3 * t11);
-    let t80 = t53 + (t2 * t3 + t4 * t11);
-    let t81 = t55 - t2 * t4;
-    let t82 = t0 * 70.82019204602176;
-    let t83 = t1 * 70.82019204602176;
-    let t84 = t14 + t0 * 13.59447201192208;
-    let t85 = t1 * 13.59447201192208;
-    let t86 = t17 + t0 * 0.753774;
-    let t87 = t1 * 0.753774;
-    let t88 = t0 * t6;
-    let t89 = t1 * t6 - t0 * t7;
-    let t90 = t0 * t8 - t1 * t7 - t46;
-    let t91 = t48 + (t0 * t5 + t1 * t8);
-    let t92 = t1 * t5 - t50;
+    let t23 = t2 * t9;
+    let t24 = t9 * t10 * 2.0;
+    let t25 = t2 * t10;
+    let t26 = t10 * t10 + t9 * t11 * 2.0;
+    let t27 = t2 * t11;
+    let t28 = 2.0 * (t10 * t11) - t23 * 2.0;
+    let t29 = t11 * t11 - 2.0 * t25;
+    let t30 = 2.0 * t27;
+    let t31 = t2 * t2;
+    let t32 = t6 * 70.82019204602176;
+    let t33 = t7 * 70.82019204602176;
+    let t34 = t5 * 70.82019204602176;
+    let t35 = t6 * 13.59447201192208 - t8 * 70.82019204602176;
+    let t36 = t34 + t7 * 13.59447201192208;
+    let t37 = t5 * 13.59447201192208;
+    let t38 = t8 * 13.59447201192208 - t6 * 0.753774;
+    let t39 = t37 + t7 * 0.753774;
+    let t40 = t8 * 0.753774;
+    let t41 = t5 * 0.753774;
+    let t42 = t6 * t9;
+    let t43 = t2 * t6;
+    let t44 = t6 * t10 - t7 * t9;
+    let t45 = t2 * t7;
+    let t46 = t6 * t11 - t7 * t10 + t8 * t9;
+    let t47 = t2 * t8;
+    let t48 = t5 * t9;
+    let t49 = t8 * t10 - (t43 + t7 * t11) + t48;
+    let t50 = t5 * t10;
+    let t51 = t45 + t8 * t11 + t50;
+    let t52 = t5 * t11;
+    let t53 = t52 - t47;
+    let t54 = t2 * t5;
+    let t55 = t12 * 1.1462641218 - t15 * K6 - (t28 * K8 + t24 * 0.176325576)
+        + (t36 * K9 + t33 * 81.084922887);
+    let t56 = t13 * 1.1462641218 - t16 * K6 - K7 - (t29 * K8 + t26 * 0.176325576)
+        + (t35 * 81.084922887 - t38 * K9);
+    let t57 = t6 * t6;
+    let t58 = t5 * t6;
+    let t59 = 2.0 * (t6 * t7);
+    let t60 = t5 * t7;
+    let t61 = t7 * t7 + 2.0 * (t6 * t8);
+    let t62 = t5 * t8;
+    let t63 = 2.0 * t58 - 2.0 * (t7 * t8);
+    let t64 = t8 * t8 - 2.0 * t60;
+    let t65 = 2.0 * t62;
+    let t66 = t5 * t5;
+    let t67 = K3 + t13 * K6 - (t26 * K8 + t22 * 0.176325576)
+        - (t35 * K9 + t32 * 81.084922887) - t44 * K10;
+    let t68 = t3 * 70.82019204602176;
+    let t69 = t4 * 70.82019204602176;
+    let t70 = t34 + t3 * 13.59447201192208;
+    let t71 = t4 * 13.59447201192208;
+    let t72 = t37 + t3 * 0.753774;
+    let t73 = t4 * 0.753774;
+    let t74 = t3 * t9;
+    let t75 = t4 * t9 - t3 * t10;
+    let t76 = t48 + (t4 * t10 - t3 * t11);
+    let t77 = t50 + (t2 * t3 + t4 * t11);
+    let t78 = t52 - t2 * t4;
+    let t79 = t55 + (t42 * 1.06282134 - t46 * K10)
+        + (t63 * 0.586988765940636 - t59 * 1.00574595) + (t70 * K11 + t68 * 83.2543383);
+    let t80 = t56 + (t44 * 1.06282134 - t49 * K10)
+        + (t64 * 0.586988765940636 + t61 * 1.00574595) - (t71 * K11 + t69 * 83.2543383);
+    let t81 = t12 * K6 - t24 * K8 - t33 * K9 - t42 * K10 - t59 * 0.586988765940636
+        - t68 * K11 - t75 * K12;
+    let t82 = t67 + (t61 * 0.586988765940636 + t57 * 1.00574595) + t69 * K11
+        - (t76 * K12 + t74 * 2.51236902);
+    let t83 = t0 * 70.82019204602176;
+    let t84 = t1 * 70.82019204602176;
+    let t85 = t14 + t0 * 13.59447201192208;
+    let t86 = t1 * 13.59447201192208;
+    let t87 = t17 + t0 * 0.753774;
+    let t88 = t1 * 0.753774;
+    let t89 = t79 + (t75 * 2.51236902 - t77 * K12)
+        + (t58 - (t3 * t8 + t4 * t7)) * 5.17310107716816;
+    let t90 = t80 + (t76 * 2.51236902 - t78 * K12)
+        + (t4 * t8 - t3 * t5 - t60) * 5.17310107716816;
+    let t91 = t19 * 1.1462641218 - t21 * K13 - K14 - t31 * 0.176325576
+        - t40 * 81.084922887 + t53 * 1.06282134 + t66 * 1.00574595;
+    let t92 = t82 + (t3 * t7 + t4 * t6) * 5.17310107716816
+        + (t83 * 266.561825136888 - t85 * 439.5600225423592);
+    let t93 = t0 * t6;
+    let t94 = t1 * t6 - t0 * t7;
+    let t95 = t0 * t8 - t1 * t7 - t43;
+    let t96 = t45 + (t0 * t5 + t1 * t8);
+    let t97 = t1 * t5 - t47;
+    let t98 = t89 + (t84 * 266.561825136888 - t86 * 439.5600225423592)
+        - (t0 * t11 + t1 * t10 - t23) * 10.042969019112;
+    let t99 = t90 + (t87 * 439.5600225423592 - t85 * 266.561825136888)
+        - (t1 * t11 - t0 * t2 - t25) * 10.042969019112;
+    let t100 = t30 * K8 - t28 * 0.176325576 - t18 * K6 - t15 * 1.1462641218 - t39 * K9
+        - t36 * 81.084922887 + t46 * 1.06282134;
+    let t101 = t100 - t51 * K10 + t65 * 0.586988765940636 + t63 * 1.00574595 - t72 * K11
+        - t70 * 83.2543383 + t54 * K15;
+    let t102 = t101 + t77 * 2.51236902 + (t62 + t4 * t5) * 5.17310107716816
+        + t88 * 439.5600225423592 - t86 * 266.561825136888;
+    let t103 = K16 + t19 * K6 - t16 * 1.1462641218 - t31 * K17 - t29 * 0.176325576
+        + t40 * K9 + t38 * 81.084922887 + t49 * 1.06282134;
+    let t104 = t103 - t53 * K10 + t66 * 5.760089843108796 + t64 * 1.00574595 + t73 * K11
+        + t71 * 83.2543383 + t78 * 2.51236902;
+    let t105 = t20 * K6 - t18 * 1.1462641218 + t30 * 0.176325576 + t41 * K18
+        + t39 * 81.084922887 - t54 * 0.1783670135898672;
     [
-        -7726600.604394162 - t22 * 7.58579274212467 + t35 * 1649.3230169830567
-            + t58 * 0.586988765940636 + t77 * 35.57139094306445 + t82 * 439.5600225423592
-            - t88 * 49.73346863652,
-        t12 * 272.79322540195807 - t26 * 7.58579274212467 - t36 * 1649.3230169830567
-            - t45 * 9.828632421610132 - t62 * 0.586988765940636
-            - t71 * 1133.0355257374322 - t78 * 35.57139094306445
-            - t3 * t6 * 5.17310107716816 + t83 * 439.5600225423592
-            - t0 * t9 * 10.042969019112 - t89 * 49.73346863652,
-        4449538.442178107 + t13 * 272.79322540195807
-            - (t29 * 7.58579274212467 + t22 * 0.176325576)
-            - (t38 * 1649.3230169830567 + t35 * 81.084922887) - t47 * 9.828632421610132
-            + (t65 * 0.586988765940636 + t58 * 1.00574595) + t72 * 1133.0355257374322
-            - (t79 * 35.57139094306445 + t77 * 2.51236902)
-            + (t3 * t7 + t4 * t6) * 5.17310107716816
-            + (t82 * 266.561825136888 - t84 * 439.5600225423592)
-            - (t0 * t10 + t1 * t9) * 10.042969019112
-            + (t88 * 7.4946304152 - t90 * 49.73346863652),
-        t12 * 1.1462641218 - t15 * 272.79322540195807
-            - (t31 * 7.58579274212467 + t26 * 0.176325576)
-            + (t39 * 1649.3230169830567 + t36 * 81.084922887)
-            + (t45 * 1.06282134 - t49 * 9.828632421610132)
-            + (t67 * 0.586988765940636 - t62 * 1.00574595)
-            + (t73 * 1133.0355257374322 + t71 * 83.2543383)
-            + (t78 * 2.51236902 - t80 * 35.57139094306445)
-            + (t61 - (t3 * t8 + t4 * t7)) * 5.17310107716816
-            + (t83 * 266.561825136888 - t85 * 439.5600225423592)
-            - (t0 * t11 + t1 * t10 - t25) * 10.042969019112
-            + (t89 * 7.4946304152 - t91 * 49.73346863652),
-        t13 * 1.1462641218 - t16 * 272.79322540195807 - 1100836.5763739955
-            - (t32 * 7.58579274212467 + t29 * 0.176325576)
-            + (t38 * 81.084922887 - t41 * 1649.3230169830567)
-            + (t47 * 1.06282134 - t52 * 9.828632421610132)
-            + (t68 * 0.586988765940636 + t65 * 1.00574595)
-            - (t74 * 1133.0355257374322 + t72 * 83.2543383)
-            + (t79 * 2.51236902 - t81 * 35.57139094306445)
-            + (t4 * t8 - t3 * t5 - t64) * 5.17310107716816
-            + (t86 * 439.5600225423592 - t84 * 266.561825136888)
-            - (t1 * t11 - t0 * t2 - t28) * 10.042969019112
-            + (t90 * 7.4946304152 - t92 * 49.73346863652),
-        t33 * 7.58579274212467 - t31 * 0.176325576
-            - (t18 * 272.79322540195807 + t15 * 1.1462641218)
-            - (t42 * 1649.3230169830567 + t39 * 81.084922887)
-            + (t49 * 1.06282134 - t54 * 9.828632421610132)
-            + (t69 * 0.586988765940636 + t67 * 1.00574595)
-            - (t75 * 1133.0355257374322 + t73 * 83.2543383)
-            + (t57 * 35.57139094306445 + t80 * 2.51236902)
-            + (t66 + t4 * t5) * 5.17310107716816
-            + (t87 * 439.5600225423592 - t85 * 266.561825136888)
-            + (t30 + t1 * t2) * 10.042969019112
-            + (t57 * 49.73346863652 + t91 * 7.4946304152),
-        149369.0008407279 + (t19 * 272.79322540195807 - t16 * 1.1462641218)
-            - (t34 * 7.58579274212467 + t32 * 0.176325576)
-            + (t43 * 1649.3230169830567 + t41 * 81.084922887)
-            + (t52 * 1.06282134 - t56 * 9.828632421610132)
-            + (t70 * 0.586988765940636 + t68 * 1.00574595)
-            + (t76 * 1133.0355257374322 + t74 * 83.2543383) + t81 * 2.51236902
-            + t70 * 5.17310107716816 + (t86 * 266.561825136888 - t21 * 439.5600225423592)
-            - t34 * 10.042969019112 + t92 * 7.4946304152,
-        t20 * 272.79322540195807 - t18 * 1.1462641218 + t33 * 0.176325576
-            + (t44 * 1649.3230169830567 + t42 * 81.084922887)
-            + (t57 * 9.828632421610132 + t54 * 1.06282134) + t69 * 1.00574595
-            + (t44 * 1133.0355257374322 + t75 * 83.2543383) - t57 * 2.51236902
-            + t87 * 266.561825136888 - t57 * 7.4946304152,
-        t19 * 1.1462641218 - t21 * 272.79322540195807 - 11716.743001494644
-            - t34 * 0.176325576 - t43 * 81.084922887 + t56 * 1.06282134
-            + t70 * 1.00574595 - t76 * 83.2543383 - t21 * 266.561825136888,
-        t20 * 1.1462641218 - t44 * 81.084922887 - t57 * 1.06282134 - t44 * 83.2543383,
-        504.0609683703337 - t21 * 1.1462641218,
+        K2 - t22 * K8 + t32 * K9 + t57 * 0.586988765940636 + t74 * K12
+            + t83 * 439.5600225423592 - t93 * 49.73346863652,
+        t81 - t3 * t6 * 5.17310107716816 + t84 * 439.5600225423592
+            - t0 * t9 * 10.042969019112 - t94 * 49.73346863652,
+        t92 - (t0 * t10 + t1 * t9) * 10.042969019112
+            + (t93 * 7.4946304152 - t95 * 49.73346863652),
+        t98 + (t94 * 7.4946304152 - t96 * 49.73346863652),
+        t99 + (t95 * 7.4946304152 - t97 * 49.73346863652),
+        t102 + (t27 + t1 * t2) * 10.042969019112 + t96 * 7.4946304152,
+        t104 + t87 * 266.561825136888 - t21 * 439.5600225423592 + t97 * 7.4946304152,
+        t105 + t51 * 1.06282134 + t65 * 1.00574595 + t72 * 83.2543383
+            + t88 * 266.561825136888,
+        t91 - t73 * 83.2543383,
+        t20 * 1.1462641218 - t41 * 164.339261187 - t54 * 1.06282134,
+        K4 - t21 * 1.1462641218,
         0.0,
-        -9.316239033021978,
+        K5,
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
@@ -562,10 +669,28 @@ pub fn jump_polynomial(delta_e: f64, delta_r: f64) -> [f64; 13] {
 /// Arguments:
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 21 add/sub, 30 mul, 0 div, 0 neg, 0 libm (51 operations); straight-line, no branches.
+/// Cost after CSE: 17 add/sub, 26 mul, 0 div, 0 neg, 0 libm (43 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn zero_sideslip_jump_polynomial(delta_e: f64) -> [f64; 9] {
+    /// exact: 868.990024503966852203963792
+    const K0: f64 = 868.9900245039669;
+    /// exact: -15.0797982392601726
+    const K1: f64 = -15.079798239260173;
+    /// exact: 1649.32301698305663144
+    const K2: f64 = 1649.3230169830567;
+    /// exact: 555190.618316798815405681800173421824
+    const K3: f64 = 555190.6183167988;
+    /// exact: 539.355050538846092944
+    const K4: f64 = 539.3550505388461;
+    /// exact: 18093.404852109689311653247387584
+    const K5: f64 = 18093.40485210969;
+    /// exact: 162665.800262590001173522804241097792
+    const K6: f64 = 162665.80026259;
+    /// exact: 17.62876176123667008
+    const K7: f64 = 17.62876176123667;
+    /// exact: 2.3340020064101328
+    const K8: f64 = 2.334002006410133;
     let t0 = delta_e * 33.268;
     let t1 = delta_e * 100.0568368;
     let t2 = t0 * 18.983834;
@@ -576,37 +701,65 @@ pub fn zero_sideslip_jump_polynomial(delta_e: f64) -> [f64; 9] {
     let t7 = t0 * t1;
     let t8 = t1 * t1;
     [
-        t5 * 1649.3230169830567 - 555190.6183167988 + t8 * 0.586988765940636
-            + t2 * 439.5600225423592 - t7 * 49.73346863652,
+        t5 * K2 - K3 + t8 * 0.586988765940636 + t2 * 439.5600225423592
+            - t7 * 49.73346863652,
         0.0,
-        162665.80026259 + t2 * 272.79322540195807 - t4 * 7.58579274212467
-            - (t6 * 1649.3230169830567 + t5 * 81.084922887) - t7 * 9.828632421610132
-            + t8 * 1.00574595 + (t2 * 266.561825136888 - t3 * 439.5600225423592)
-            - t4 * 10.042969019112 + t7 * 7.4946304152,
+        K6 + t2 * K4 - t4 * K7 - t6 * K2 - t5 * 81.084922887 - t7 * K8 + t8 * 1.00574595
+            - t3 * 439.5600225423592,
         0.0,
-        t2 * 1.1462641218 - t3 * 272.79322540195807 - 18093.40485210969
-            - t4 * 0.176325576 + t6 * 81.084922887 + t7 * 1.06282134
-            - t3 * 266.561825136888,
+        t2 * 1.1462641218 - t3 * K4 - K5 - t4 * 0.176325576 + t6 * 81.084922887
+            + t7 * 1.06282134,
         0.0,
-        868.9900245039669 - t3 * 1.1462641218,
+        K0 - t3 * 1.1462641218,
         0.0,
-        -15.079798239260173,
+        K1,
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
 /// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
-/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10).
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3
+/// to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c1 = -z_alpha - y_beta - l_p - m_q - n_r
+/// c2 = -m_alpha + n_beta + z_alpha*y_beta + z_alpha*l_p + z_alpha*m_q + z_alpha*n_r + y_beta*l_p
+///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha0 + m_q*n_r
+///          + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 74 add/sub, 96 mul, 1 div, 0 neg, 0 libm (171 operations); straight-line, no branches.
+/// Cost after CSE: 72 add/sub, 96 mul, 1 div, 1 neg, 0 libm (170 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn characteristic_coefficients(p0: f64, delta_e: f64, delta_r: f64) -> [f64; 5] {
+    /// exact: 192.68735381072212
+    const K0: f64 = 192.68735381072213;
+    /// exact: 441.680209183658616
+    const K1: f64 = 441.68020918365863;
+    /// exact: 592.9168745384313456
+    const K2: f64 = 592.9168745384313;
+    /// exact: 295.719190228139814032
+    const K3: f64 = 295.71919022813984;
+    /// exact: 272.793225401958092944
+    const K4: f64 = 272.79322540195807;
+    /// exact: 9.8286324216101328
+    const K5: f64 = 9.828632421610132;
+    /// exact: 1133.0355257374320864
+    const K6: f64 = 1133.0355257374322;
+    /// exact: 1649.32301698305663144
+    const K7: f64 = 1649.3230169830567;
+    /// exact: 7.58579274212467008
+    const K8: f64 = 7.58579274212467;
+    /// exact: 35.571390943064448
+    const K9: f64 = 35.57139094306445;
+    /// exact: 1540.544555557906743104
+    const K10: f64 = 1540.5445555579067;
     let t0 = p0 * 0.959;
     let t1 = p0 * 0.786;
     let t2 = delta_e * 33.268;
@@ -618,63 +771,87 @@ pub fn characteristic_coefficients(p0: f64, delta_e: f64, delta_r: f64) -> [f64;
     let t8 = p0 * t0 - 13.52504;
     let t9 = 1.0
         / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076
-            + (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+            + 50.4558736781056 - p0 * (t0 * 3.716));
     let t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
     let t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
     let t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8))
         * t9;
-    let t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232)
+    let t13 = (delta_r * (-(p0 * t5 + 1.0592979372))
         - t2 * (p0 * 3.716 - (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
     let t14 = t12 * (1.1952702 - t12 * 0.55413);
     let t15 = t13 * t13 * 0.676095;
     let t16 = p0 * p0;
     let t17 = t13 * (1.1462641218 - t12 * 1.06282134);
+    let t18 = t13 * (t13 * 2.247474999 + t11 * 9.5351532)
+        + (551.318118699284 + t10 * 555.8106088);
+    let t19 = t13 * (K0 - t12 * 3.255846892956 + t10 * 12.04752222)
+        + t11 * (-207.455111534192 - t12 * 10.1144104152);
+    let t20 = t13 * (t13 * 3.165989810886 + t11 * 3.01882950312)
+        + (K2 + t10 * 2208.42906185688);
+    let t21 = p0
+        * (p0 * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 * 83.2543383)))
+            + t19);
+    let t22 = t13 * (t13 * 0.176325576 - t11 * 2.51236902)
+        + (t10 * 266.561825136888 - K3);
+    let t23 = t12 * (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595) + t22;
+    let t24 = t13 * (K4 + t12 * K5 + t10 * 10.042969019112)
+        + t11 * (K6 - t12 * 5.17310107716816);
+    let t25 = t13 * (t13 * K8 + t11 * K9) + (K10 + t10 * 439.5600225423592);
+    let t26 = p0
+        * (p0 * (p0 * (p0 * 16.3967704446 + (t17 - t11 * 83.2543383)) + t23) + t24);
     [
         26.8921,
         t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774),
         p0 * (p0 * 42.5345817162 + (t17 - t11 * 110.45))
-            + (t12 * (92.64470614368 + t10 * 2.61978 - t12 * 2.703267792)
-                + (t13 * (t13 * 2.247474999 + t11 * 9.5351532)
-                    + (551.318118699284 + t10 * 555.8106088))),
-        p0
-            * (p0
-                * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 * 83.2543383)))
-                + (t13 * (192.68735381072213 - t12 * 3.255846892956 + t10 * 12.04752222)
-                    + t11 * (-207.455111534192 - t12 * 10.1144104152)))
-            + (t12 * (441.68020918365863 + t10 * 12.634151028 - t12 * 10.6686289158804)
-                + (t13 * (t13 * 3.165989810886 + t11 * 3.01882950312)
-                    + (592.9168745384313 + t10 * 2208.42906185688))),
-        p0
-            * (p0
-                * (p0 * (p0 * 16.3967704446 + (t17 - t11 * 83.2543383))
-                    + (t12 * (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595)
-                        + (t13 * (t13 * 0.176325576 - t11 * 2.51236902)
-                            + (t10 * 266.561825136888 - 295.71919022813984))))
-                + (t13
-                    * (272.79322540195807 + t12 * 9.828632421610132
-                        + t10 * 10.042969019112)
-                    + t11 * (1133.0355257374322 - t12 * 5.17310107716816)))
-            + (t12
-                * (1649.3230169830567 + t10 * 49.73346863652 - t12 * 0.586988765940636)
-                + (t13 * (t13 * 7.58579274212467 + t11 * 35.57139094306445)
-                    + (1540.5445555579067 + t10 * 439.5600225423592))),
+            + (t12 * (92.64470614368 + t10 * 2.61978 - t12 * 2.703267792) + t18),
+        t21 + (t12 * (K1 + t10 * 12.634151028 - t12 * 10.6686289158804) + t20),
+        t26 + (t12 * (K7 + t10 * 49.73346863652 - t12 * 0.586988765940636) + t25),
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The fourth Hurwitz determinant of J5 at the trim of `p0`,
-/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`, 1/s^10.
-/// By Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
-/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle (`+-lambda`).
+/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`
+/// (expanded below) in the coefficients of [`characteristic_coefficients`], 1/s^10. By
+/// Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
+/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle
+/// (`+-lambda`).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// Delta4 = -c5^2 + 2*c1*c4*c5 + c2*c3*c5 - c3^2*c4 - c1^2*c4^2 - c1*c2^2*c5 + c1*c2*c3*c4
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 80 add/sub, 106 mul, 1 div, 0 neg, 0 libm (187 operations); straight-line, no branches.
+/// Cost after CSE: 78 add/sub, 106 mul, 1 div, 1 neg, 0 libm (186 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn hurwitz_delta4(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
+    /// exact: 192.68735381072212
+    const K0: f64 = 192.68735381072213;
+    /// exact: 441.680209183658616
+    const K1: f64 = 441.68020918365863;
+    /// exact: 592.9168745384313456
+    const K2: f64 = 592.9168745384313;
+    /// exact: 295.719190228139814032
+    const K3: f64 = 295.71919022813984;
+    /// exact: 272.793225401958092944
+    const K4: f64 = 272.79322540195807;
+    /// exact: 9.8286324216101328
+    const K5: f64 = 9.828632421610132;
+    /// exact: 1133.0355257374320864
+    const K6: f64 = 1133.0355257374322;
+    /// exact: 1649.32301698305663144
+    const K7: f64 = 1649.3230169830567;
+    /// exact: 7.58579274212467008
+    const K8: f64 = 7.58579274212467;
+    /// exact: 35.571390943064448
+    const K9: f64 = 35.57139094306445;
+    /// exact: 1540.544555557906743104
+    const K10: f64 = 1540.5445555579067;
     let t0 = p0 * 0.959;
     let t1 = p0 * 0.786;
     let t2 = delta_e * 33.268;
@@ -686,61 +863,87 @@ pub fn hurwitz_delta4(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t8 = p0 * t0 - 13.52504;
     let t9 = 1.0
         / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076
-            + (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+            + 50.4558736781056 - p0 * (t0 * 3.716));
     let t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
     let t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
     let t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8))
         * t9;
-    let t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232)
+    let t13 = (delta_r * (-(p0 * t5 + 1.0592979372))
         - t2 * (p0 * 3.716 - (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
     let t14 = t12 * (1.1952702 - t12 * 0.55413);
     let t15 = t13 * t13 * 0.676095;
     let t16 = p0 * p0;
     let t17 = t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774);
     let t18 = t13 * (1.1462641218 - t12 * 1.06282134);
-    let t19 = p0 * (p0 * 42.5345817162 + (t18 - t11 * 110.45))
-        + (t12 * (92.64470614368 + t10 * 2.61978 - t12 * 2.703267792)
-            + (t13 * (t13 * 2.247474999 + t11 * 9.5351532)
-                + (551.318118699284 + t10 * 555.8106088)));
-    let t20 = p0
+    let t19 = t13 * (t13 * 2.247474999 + t11 * 9.5351532)
+        + (551.318118699284 + t10 * 555.8106088);
+    let t20 = p0 * (p0 * 42.5345817162 + (t18 - t11 * 110.45))
+        + (t12 * (92.64470614368 + t10 * 2.61978 - t12 * 2.703267792) + t19);
+    let t21 = t13 * (K0 - t12 * 3.255846892956 + t10 * 12.04752222)
+        + t11 * (-207.455111534192 - t12 * 10.1144104152);
+    let t22 = t13 * (t13 * 3.165989810886 + t11 * 3.01882950312)
+        + (K2 + t10 * 2208.42906185688);
+    let t23 = p0
         * (p0 * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 * 83.2543383)))
-            + (t13 * (192.68735381072213 - t12 * 3.255846892956 + t10 * 12.04752222)
-                + t11 * (-207.455111534192 - t12 * 10.1144104152)))
-        + (t12 * (441.68020918365863 + t10 * 12.634151028 - t12 * 10.6686289158804)
-            + (t13 * (t13 * 3.165989810886 + t11 * 3.01882950312)
-                + (592.9168745384313 + t10 * 2208.42906185688)));
-    let t21 = p0
-        * (p0
-            * (p0 * (p0 * 16.3967704446 + (t18 - t11 * 83.2543383))
-                + (t12 * (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595)
-                    + (t13 * (t13 * 0.176325576 - t11 * 2.51236902)
-                        + (t10 * 266.561825136888 - 295.71919022813984))))
-            + (t13
-                * (272.79322540195807 + t12 * 9.828632421610132 + t10 * 10.042969019112)
-                + t11 * (1133.0355257374322 - t12 * 5.17310107716816)))
-        + (t12 * (1649.3230169830567 + t10 * 49.73346863652 - t12 * 0.586988765940636)
-            + (t13 * (t13 * 7.58579274212467 + t11 * 35.57139094306445)
-                + (1540.5445555579067 + t10 * 439.5600225423592)));
-    let t22 = t17 * t21;
-    let t23 = t19 * t20;
-    26.8921 * (t17 * (t23 - t22) + 2.0 * (t20 * t21) - 26.8921 * (t20 * t20))
-        + (t19 * (t22 - t23) - t21 * t21)
+            + t21);
+    let t24 = t23 + (t12 * (K1 + t10 * 12.634151028 - t12 * 10.6686289158804) + t22);
+    let t25 = t13 * (t13 * 0.176325576 - t11 * 2.51236902)
+        + (t10 * 266.561825136888 - K3);
+    let t26 = t12 * (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595) + t25;
+    let t27 = t13 * (K4 + t12 * K5 + t10 * 10.042969019112)
+        + t11 * (K6 - t12 * 5.17310107716816);
+    let t28 = t13 * (t13 * K8 + t11 * K9) + (K10 + t10 * 439.5600225423592);
+    let t29 = p0
+        * (p0 * (p0 * (p0 * 16.3967704446 + (t18 - t11 * 83.2543383)) + t26) + t27);
+    let t30 = t29 + (t12 * (K7 + t10 * 49.73346863652 - t12 * 0.586988765940636) + t28);
+    let t31 = t17 * t30;
+    let t32 = t20 * t24;
+    26.8921 * (t17 * (t32 - t31) + 2.0 * (t24 * t30) - 26.8921 * (t24 * t24))
+        + (t20 * (t31 - t32) - t30 * t30)
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` at the trim of `p0`, rad^2/s^2: at a zero of
-/// [`hurwitz_delta4`] the square of the frequency of the pair on the imaginary axis, positive
-/// at a Hopf point and negative at a neutral saddle (from the even and odd parts of
-/// `p(i omega) = 0` with `w^2` eliminated).
+/// `omega^2` at the trim of `p0`, rad^2/s^2, in the coefficients of
+/// [`characteristic_coefficients`]: at a zero of [`hurwitz_delta4`] the square of the
+/// frequency of the pair on the imaginary axis, positive at a Hopf point and negative
+/// at a neutral saddle (from the even and odd parts of `p(i omega) = 0` with `w^2`
+/// eliminated).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// omega^2 = (-c5 + c1*c4) / (-c3 + c1*c2)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 76 add/sub, 98 mul, 2 div, 0 neg, 0 libm (176 operations); straight-line, no branches.
+/// Cost after CSE: 74 add/sub, 98 mul, 2 div, 1 neg, 0 libm (175 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn hopf_omega_squared(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
+    /// exact: 192.68735381072212
+    const K0: f64 = 192.68735381072213;
+    /// exact: 441.680209183658616
+    const K1: f64 = 441.68020918365863;
+    /// exact: 592.9168745384313456
+    const K2: f64 = 592.9168745384313;
+    /// exact: 295.719190228139814032
+    const K3: f64 = 295.71919022813984;
+    /// exact: 272.793225401958092944
+    const K4: f64 = 272.79322540195807;
+    /// exact: 9.8286324216101328
+    const K5: f64 = 9.828632421610132;
+    /// exact: 1133.0355257374320864
+    const K6: f64 = 1133.0355257374322;
+    /// exact: 1649.32301698305663144
+    const K7: f64 = 1649.3230169830567;
+    /// exact: 7.58579274212467008
+    const K8: f64 = 7.58579274212467;
+    /// exact: 35.571390943064448
+    const K9: f64 = 35.57139094306445;
+    /// exact: 1540.544555557906743104
+    const K10: f64 = 1540.5445555579067;
     let t0 = p0 * 0.959;
     let t1 = p0 * 0.786;
     let t2 = delta_e * 33.268;
@@ -752,43 +955,148 @@ pub fn hopf_omega_squared(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t8 = p0 * t0 - 13.52504;
     let t9 = 1.0
         / (p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076
-            + (0.1968250381056 - p0 * (t0 * 3.716) + 50.25904864));
+            + 50.4558736781056 - p0 * (t0 * 3.716));
     let t10 = (t2 * (t4 - 3.73055264) - delta_r * (t5 + t6)) * t9;
     let t11 = (delta_r * (5.458794 - t8) - t2 * (t1 * 3.0076 + t7)) * t9;
     let t12 = (t2 * (-11.220010120064 - p0 * t7) - delta_r * (3.0076 * t6 + p0 * t8))
         * t9;
-    let t13 = (delta_r * (-0.3046007052 - p0 * t5 - 0.754697232)
+    let t13 = (delta_r * (-(p0 * t5 + 1.0592979372))
         - t2 * (p0 * 3.716 - (3.0076 * (t1 * 0.0558) + p0 * t4))) * t9;
     let t14 = t12 * (1.1952702 - t12 * 0.55413);
     let t15 = t13 * t13 * 0.676095;
     let t16 = p0 * p0;
     let t17 = t13 * (1.1462641218 - t12 * 1.06282134);
-    (26.8921
-        * (p0
-            * (p0
-                * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 * 83.2543383)))
-                + (t13 * (192.68735381072213 - t12 * 3.255846892956 + t10 * 12.04752222)
-                    + t11 * (-207.455111534192 - t12 * 10.1144104152)))
-            + (t12 * (441.68020918365863 + t10 * 12.634151028 - t12 * 10.6686289158804)
-                + (t13 * (t13 * 3.165989810886 + t11 * 3.01882950312)
-                    + (592.9168745384313 + t10 * 2208.42906185688))))
-        - (p0
-            * (p0
-                * (p0 * (p0 * 16.3967704446 + (t17 - t11 * 83.2543383))
-                    + (t12 * (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595)
-                        + (t13 * (t13 * 0.176325576 - t11 * 2.51236902)
-                            + (t10 * 266.561825136888 - 295.71919022813984))))
-                + (t13
-                    * (272.79322540195807 + t12 * 9.828632421610132
-                        + t10 * 10.042969019112)
-                    + t11 * (1133.0355257374322 - t12 * 5.17310107716816)))
-            + (t12
-                * (1649.3230169830567 + t10 * 49.73346863652 - t12 * 0.586988765940636)
-                + (t13 * (t13 * 7.58579274212467 + t11 * 35.57139094306445)
-                    + (1540.5445555579067 + t10 * 439.5600225423592)))))
-        / (26.8921 * (t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774))
-            - (p0 * (p0 * 42.5345817162 + (t17 - t11 * 110.45))
-                + (t12 * (92.64470614368 + t10 * 2.61978 - t12 * 2.703267792)
-                    + (t13 * (t13 * 2.247474999 + t11 * 9.5351532)
-                        + (551.318118699284 + t10 * 555.8106088)))))
+    let t18 = t13 * (t13 * 2.247474999 + t11 * 9.5351532)
+        + (551.318118699284 + t10 * 555.8106088);
+    let t19 = t13 * (K0 - t12 * 3.255846892956 + t10 * 12.04752222)
+        + t11 * (-207.455111534192 - t12 * 10.1144104152);
+    let t20 = t13 * (t13 * 3.165989810886 + t11 * 3.01882950312)
+        + (K2 + t10 * 2208.42906185688);
+    let t21 = p0
+        * (p0 * (t16 * 0.753774 + (t14 + (t15 + 81.79006438806556 + t10 * 83.2543383)))
+            + t19);
+    let t22 = t13 * (t13 * 0.176325576 - t11 * 2.51236902)
+        + (t10 * 266.561825136888 - K3);
+    let t23 = t12 * (-81.084922887 - t10 * 7.4946304152 - t12 * 1.00574595) + t22;
+    let t24 = t13 * (K4 + t12 * K5 + t10 * 10.042969019112)
+        + t11 * (K6 - t12 * 5.17310107716816);
+    let t25 = t13 * (t13 * K8 + t11 * K9) + (K10 + t10 * 439.5600225423592);
+    let t26 = p0
+        * (p0 * (p0 * (p0 * 16.3967704446 + (t17 - t11 * 83.2543383)) + t23) + t24);
+    let t27 = 26.8921
+        * (t21 + (t12 * (K1 + t10 * 12.634151028 - t12 * 10.6686289158804) + t20));
+    let t28 = p0 * (p0 * 42.5345817162 + (t17 - t11 * 110.45))
+        + (t12 * (92.64470614368 + t10 * 2.61978 - t12 * 2.703267792) + t18);
+    let t29 = t27
+        - (t26 + (t12 * (K7 + t10 * 49.73346863652 - t12 * 0.586988765940636) + t25));
+    t29 / (26.8921 * (t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774)) - t28)
+}
+#[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
+/// The Hopf polynomial `det(A)^10 Delta4` (issue 10) of this aircraft at the trim of `p0`
+/// (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
+/// [`hurwitz_delta4`], so its sign is that of Delta4 wherever det A != 0. Its real roots
+/// are the Hopf points (where [`hopf_omega_squared`] > 0), the neutral saddles (omega^2 < 0)
+/// and the roots of det A (the divergence roll rates).
+///
+/// At delta_r = 0 a polynomial of degree 48 in P0 and 6 in delta_e (154 terms,
+/// `model::specialise::hopf::hopf_polynomial`), evaluated here as the derivation builds
+/// it: the trim numerators N and det A by Cramer's rule, the cleared characteristic
+/// coefficients `C_k = det(A)^k c_k(N / det A)` as polynomials in N and det A (exact folded
+/// constants, no division) and Orlando's `Delta4(C_1, ..., C_5)`. Its expanded form in P0
+/// cancels far beyond double precision near the Hopf points; this form does not.
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 80 add/sub, 156 mul, 0 div, 1 neg, 0 libm (237 operations); straight-line, no branches.
+#[must_use]
+#[inline]
+pub fn hopf_polynomial(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
+    /// exact: 592.9168745384313456
+    const K0: f64 = 592.9168745384313;
+    /// exact: 192.68735381072212
+    const K1: f64 = 192.68735381072213;
+    /// exact: 441.680209183658616
+    const K2: f64 = 441.68020918365863;
+    /// exact: 295.719190228139814032
+    const K3: f64 = 295.71919022813984;
+    /// exact: 1540.544555557906743104
+    const K4: f64 = 1540.5445555579067;
+    /// exact: 272.793225401958092944
+    const K5: f64 = 272.79322540195807;
+    /// exact: 7.58579274212467008
+    const K6: f64 = 7.58579274212467;
+    /// exact: 1649.32301698305663144
+    const K7: f64 = 1649.3230169830567;
+    /// exact: 9.8286324216101328
+    const K8: f64 = 9.828632421610132;
+    /// exact: 1133.0355257374320864
+    const K9: f64 = 1133.0355257374322;
+    /// exact: 35.571390943064448
+    const K10: f64 = 35.57139094306445;
+    let t0 = p0 * 0.959;
+    let t1 = p0 * 0.786;
+    let t2 = delta_e * 33.268;
+    let t3 = 0.473352 + t0 * t1;
+    let t4 = p0 * (p0 * t3 - t1 * 13.52504) - (-6.74454 - t3 * 0.0558) * 3.0076
+        + 50.4558736781056 - p0 * (t0 * 3.716);
+    let t5 = p0 * t1;
+    let t6 = p0 * 1.815;
+    let t7 = t0 * 0.0558;
+    let t8 = t2 * (t5 - 3.73055264) - delta_r * (t6 + t7);
+    let t9 = p0 * 0.2608;
+    let t10 = p0 * t0 - 13.52504;
+    let t11 = delta_r * (5.458794 - t10) - t2 * (t1 * 3.0076 + t9);
+    let t12 = t2 * (-11.220010120064 - p0 * t9) - delta_r * (3.0076 * t7 + p0 * t10);
+    let t13 = delta_r * (-(p0 * t6 + 1.0592979372))
+        - t2 * (p0 * 3.716 - (3.0076 * (t1 * 0.0558) + p0 * t5));
+    let t14 = t4 * 26.8921;
+    let t15 = t4 * t4;
+    let t16 = p0 * p0;
+    let t17 = t4 * t12;
+    let t18 = t4 * t8;
+    let t19 = t15 * (136.03372548 + t16 * 1.753774) + t13 * t13 * 0.676095
+        + t17 * 1.1952702 - t12 * t12 * 0.55413 + t18 * 110.45;
+    let t20 = t4 * t15;
+    let t21 = t13 * t15;
+    let t22 = t12 * t15;
+    let t23 = t20 * (551.318118699284 + t16 * 42.5345817162) + t21 * (p0 * 1.1462641218)
+        + t13 * (t4 * t13) * 2.247474999;
+    let t24 = t11 * t15;
+    let t25 = t23 + t22 * 92.64470614368 - t13 * t17 * (p0 * 1.06282134)
+        - t12 * t17 * 2.703267792 - t24 * (p0 * 110.45);
+    let t26 = t8 * t15;
+    let t27 = t25 + t13 * (t4 * t11) * 9.5351532 + t26 * 555.8106088
+        + t12 * t18 * 2.61978;
+    let t28 = t15 * t15;
+    let t29 = t13 * t20;
+    let t30 = t28 * (t16 * (t16 * 0.753774 + 81.79006438806556) + K0) + t29 * (p0 * K1);
+    let t31 = t12 * t20;
+    let t32 = t30 + t13 * t21 * (3.165989810886 + t16 * 0.676095)
+        + t31 * (K2 + t16 * 1.1952702) - t13 * t22 * (p0 * 3.255846892956);
+    let t33 = t11 * t20;
+    let t34 = t32 + t12 * t22 * (-10.6686289158804 - t16 * 0.55413)
+        - t33 * (p0 * 207.455111534192) + t13 * t24 * 3.01882950312;
+    let t35 = t8 * t20;
+    let t36 = t16 * 83.2543383;
+    let t37 = t34 - t12 * t24 * (p0 * 10.1144104152) + t35 * (2208.42906185688 + t36)
+        + t13 * t26 * (p0 * 12.04752222);
+    let t38 = t37 + t12 * t26 * 12.634151028;
+    let t39 = t4 * t28 * (t16 * (t16 * 16.3967704446 - K3) + K4)
+        + t13 * t28 * (p0 * (t16 * 1.1462641218 + K5));
+    let t40 = t39 + t13 * t29 * (K6 + t16 * 0.176325576)
+        + t12 * t28 * (K7 - t16 * 81.084922887);
+    let t41 = t40 + t13 * t31 * (p0 * (K8 - t16 * 1.06282134))
+        + t12 * t31 * (-0.586988765940636 - t16 * 1.00574595);
+    let t42 = t41 + t11 * t28 * (p0 * (K9 - t36)) + t13 * t33 * (K10 - t16 * 2.51236902)
+        - t12 * t33 * (p0 * 5.17310107716816);
+    let t43 = t42 + t8 * t28 * (439.5600225423592 + t16 * 266.561825136888)
+        + t13 * t35 * (p0 * 10.042969019112);
+    let t44 = t43 + t12 * t35 * (49.73346863652 - t16 * 7.4946304152);
+    let t45 = t19 * t44;
+    let t46 = t27 * t38;
+    t14 * (t19 * (t46 - t45) + t38 * t44 * 2.0 - t14 * (t38 * t38))
+        + (t27 * (t45 - t46) - t44 * t44)
 }

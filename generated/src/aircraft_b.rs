@@ -4,21 +4,22 @@
 // inputs: Aircraft B (model::aircraft); model 0.1.0; inputs hash fb6bd2ac94d7acf6 (model::emit::inputs_hash).
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  25      42       3       2       0      72
-//   zero_sideslip_trim                     5      16       1       4       0      26
+//   trim                                  23      42       3       3       0      71
+//   zero_sideslip_trim                     4      16       1       4       0      25
 //   jacobian5                              1       6       0       5       0      12
-//   residual_denominator                  25      41       1       0       0      67
-//   stiffness                             38      65       2       0       0     105
-//   det_k                                 40      68       1       0       0     109
-//   det_j5                                44      63       1       0       0     108
-//   zero_sideslip_det_k                   17      36       1       0       0      54
+//   residual_denominator                  23      41       1       1       0      66
+//   stiffness                             36      65       2       1       0     104
+//   det_k                                 38      68       1       1       0     108
+//   det_j5                                42      63       1       1       0     107
+//   zero_sideslip_det_k                   16      36       1       0       0      53
 //   divergence_biquadratic                 0       0       0       0       0       0
-//   divergence_roll_rates                  2       0       2       0       3       7
-//   jump_polynomial                      196     254       0       0       0     450
-//   zero_sideslip_jump_polynomial         21      30       0       0       0      51
-//   characteristic_coefficients           74      96       1       0       0     171
-//   hurwitz_delta4                        80     106       1       0       0     187
-//   hopf_omega_squared                    76      98       2       0       0     176
+//   divergence_roll_rates                  1       1       2       2       4      10
+//   jump_polynomial                      176     258       0       0       0     434
+//   zero_sideslip_jump_polynomial         17      26       0       0       0      43
+//   characteristic_coefficients           72      96       1       1       0     170
+//   hurwitz_delta4                        78     106       1       1       0     186
+//   hopf_omega_squared                    74      98       2       1       0     175
+//   hopf_polynomial                       80     156       0       1       0     237
 
 //! The criterion for Aircraft B of Table A.1: every constant folded exactly, then rounded once to f64.
 use super::{Trim, ZeroSideslipTrim};
@@ -44,22 +45,32 @@ pub const DERIVATIVES: super::Derivatives = super::Derivatives {
     l_delta_r: 0.0,
 };
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
-/// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
-/// equation), and the aileron from the roll equation, a quadratic in delta_a
-/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the
-/// trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),
-/// element 1 the other root; both by the cancellation-free quadratic formula. NaN where
-/// the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw
-/// (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the
-/// divergence roll rates). The other functions of `p0` use element 0.
+/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = [alpha0, beta0, Q0, R0]` solves
+/// `A x0 + b = 0` (Cramer's rule, one division by det A), affine in delta_a (aileron yaw
+/// `n_delta_a` enters b); the aileron then solves the roll equation `p_dot = 0` along it,
+/// a quadratic `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element
+/// 0 is the trim that continues the trim without aileron yaw (the root that tends to
+/// `-g0/g1`), element 1 the other root; both by the cancellation-free quadratic formula.
+/// NaN where the two trims of `p0` are complex; element 1 is infinite or NaN without
+/// aileron yaw (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0
+/// (the divergence roll rates). The other functions of `p0` use element 0.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A = [[z_alpha, -P0, 1, 0],
+///      [P0, y_beta, 0, -1],
+///      [m_alpha, 0, m_q, C*P0],
+///      [0, n_beta, -D*P0, n_r]]
+/// b = [0, 0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
+/// p_dot = l_p*P0 + l_r*R0 + l_beta*beta0 + l_delta_a*delta_a + l_delta_r*delta_r - E*Q0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 42 mul, 3 div, 2 neg, 0 libm (72 operations); straight-line, no branches.
+/// Cost after CSE: 23 add/sub, 42 mul, 3 div, 3 neg, 0 libm (71 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn trim(p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
@@ -73,12 +84,12 @@ pub fn trim(p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
     let t7 = p0 * 0.235;
     let t8 = p0 * t0 - 23.18;
     let t9 = 1.0
-        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329
-            + (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708
+            - p0 * (t0 * 5.67));
     let t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
     let t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
     let t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    let t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328)
+    let t13 = (delta_r * (-(p0 * t5 + 4.755313976))
         - t2 * (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t4))) * t9;
     [
         Trim {
@@ -100,34 +111,60 @@ pub fn trim(p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the
-/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the
-/// rudder from the roll and yaw equations together (with aileron yaw and roll due to
-/// rudder both controls enter both; the rudder is the schedule of the aileron-rudder
-/// interconnect, Fig. 9). Angles in rad, rates in rad/s.
+/// rudder freed; `[alpha0, Q0, R0]` solves `A1 x + b1 = 0` (the alpha, beta and q
+/// equations), the aileron and the rudder the roll and yaw equations together (with
+/// aileron yaw and roll due to rudder both controls enter both; the rudder is the
+/// schedule of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A1 = [[z_alpha, 1, 0],
+///       [P0, 0, -1],
+///       [m_alpha, m_q, C*P0]]
+/// b1 = [0, 0, m_delta_e*delta_e]
+/// delta_a = (-l_p*n_delta_r*P0 - l_r*n_delta_r*R0 + n_p*l_delta_r*P0 + n_r*l_delta_r*R0
+///                - D*l_delta_r*P0*Q0 + E*n_delta_r*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// delta_r = (l_p*n_delta_a*P0 + l_r*n_delta_a*R0 - l_delta_a*n_p*P0 - l_delta_a*n_r*R0
+///                + D*l_delta_a*P0*Q0 - E*n_delta_a*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 5 add/sub, 16 mul, 1 div, 4 neg, 0 libm (26 operations); straight-line, no branches.
+/// Cost after CSE: 4 add/sub, 16 mul, 1 div, 4 neg, 0 libm (25 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn zero_sideslip_trim(p0: f64, delta_e: f64) -> ZeroSideslipTrim {
+    /// exact: 100/4583
+    const K0: f64 = 0.02181976871045167;
     let t0 = delta_e * 28.37;
-    let t1 = 1.0 / (1.081806 - (p0 * (p0 * 0.949) - 23.18));
+    let t1 = 1.0 / (24.261806 - p0 * (p0 * 0.949));
     let t2 = t0 * 1.329 * t1;
     let t3 = p0 * t0 * t1;
     ZeroSideslipTrim {
         alpha: -(t0 * t1),
         q: -t2,
         r: -t3,
-        delta_a: -(0.02181976871045167 * (t3 * (0.126 + t2 * 0.727) + p0 * 3.933)),
-        delta_r: 0.02181976871045167 * (t3 * 10.77005 + p0 * t2 * 32.81428),
+        delta_a: -(K0 * (t3 * (0.126 + t2 * 0.727) + p0 * 3.933)),
+        delta_r: K0 * (t3 * 10.77005 + p0 * t2 * 32.81428),
     }
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The 5x5 Jacobian of the PSS model (Appendix A.2) at the state
-/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s.
+/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s;
+/// below with `(alpha0, beta0, P0, Q0, R0) = (alpha, beta, p, q, r)`.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// J5 = [[z_alpha, -P0, -beta0, 1, 0],
+///       [P0, y_beta, alpha0, 0, -1],
+///       [0, l_beta, l_p, -E*R0, l_r - E*Q0],
+///       [m_alpha, 0, C*R0, m_q, C*P0],
+///       [0, n_beta, n_p - D*Q0, -D*P0, n_r]]
+/// ```
 ///
 /// Arguments:
 /// - `alpha`: angle of attack, rad
@@ -149,15 +186,20 @@ pub fn jacobian5(alpha: f64, beta: f64, p: f64, q: f64, r: f64) -> [[f64; 5]; 5]
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// The static-residual denominator (Eq. 22) at the trim of `p0`:
-/// `d = l_p + l_r alpha0 - E Q0 alpha0 - E R0 beta0`, 1/s. det K has poles where d = 0 (Fig. 8).
+/// The static-residual denominator d (Eq. 22) at the trim of `p0`, 1/s. det K has
+/// poles where d = 0 (Fig. 8).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 25 add/sub, 41 mul, 1 div, 0 neg, 0 libm (67 operations); straight-line, no branches.
+/// Cost after CSE: 23 add/sub, 41 mul, 1 div, 1 neg, 0 libm (66 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn residual_denominator(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
@@ -171,29 +213,37 @@ pub fn residual_denominator(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t7 = p0 * 0.235;
     let t8 = p0 * t0 - 23.18;
     let t9 = 1.0
-        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329
-            + (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
-    (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9
-        * (0.126
-            - (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9
-                * 0.727)
-        + (-3.933
-            - 0.727
-                * ((delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9
-                    * ((delta_r * (-0.212033976 - p0 * t5 - 4.54328)
-                        - t2 * (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t4))) * t9)))
+        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708
+            - p0 * (t0 * 5.67));
+    let t10 = 0.126
+        - (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9 * 0.727;
+    let t11 = (delta_r * (-(p0 * t5 + 4.755313976))
+        - t2 * (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t4))) * t9;
+    let t12 = -3.933
+        - 0.727 * ((delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9 * t11);
+    (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9 * t10 + t12
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of `p0`:
-/// `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in Eqs 13-14,
-/// g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual (Eqs 22-25). 1/s^2.
+/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of
+/// `p0`: `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in
+/// Eqs 13-14, g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual
+/// (Eqs 22-25). 1/s^2.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 38 add/sub, 65 mul, 2 div, 0 neg, 0 libm (105 operations); straight-line, no branches.
+/// Cost after CSE: 36 add/sub, 65 mul, 2 div, 1 neg, 0 libm (104 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn stiffness(p0: f64, delta_e: f64, delta_r: f64) -> [[f64; 2]; 2] {
@@ -207,12 +257,12 @@ pub fn stiffness(p0: f64, delta_e: f64, delta_r: f64) -> [[f64; 2]; 2] {
     let t7 = p0 * 0.235;
     let t8 = p0 * t0 - 23.18;
     let t9 = 1.0
-        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329
-            + (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708
+            - p0 * (t0 * 5.67));
     let t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
     let t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
     let t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    let t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328)
+    let t13 = (delta_r * (-(p0 * t5 + 4.755313976))
         - t2 * (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t4))) * t9;
     let t14 = 0.126 - t12 * 0.727;
     let t15 = 1.0 / (t10 * t14 + (-3.933 - 0.727 * (t11 * t13)));
@@ -229,15 +279,25 @@ pub fn stiffness(p0: f64, delta_e: f64, delta_r: f64) -> [[f64; 2]; 2] {
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the
 /// saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.
-/// Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared
-/// from g, h and d, on the trim branch of [`trim`].
+/// Evaluated as `det K0 - h^T adj(K0) g / d` (the matrix determinant lemma on
+/// `K = K0 - g h^T / d`) with the trim's denominator det A cleared from g, h and d, on
+/// the trim branch of [`trim`].
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 40 add/sub, 68 mul, 1 div, 0 neg, 0 libm (109 operations); straight-line, no branches.
+/// Cost after CSE: 38 add/sub, 68 mul, 1 div, 1 neg, 0 libm (108 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn det_k(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
@@ -245,8 +305,8 @@ pub fn det_k(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t1 = p0 * 0.716;
     let t2 = delta_e * 28.37;
     let t3 = 0.19129 + t0 * t1;
-    let t4 = p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329
-        + (1.0676708 - p0 * (t0 * 5.67) + 131.4306);
+    let t4 = p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708
+        - p0 * (t0 * 5.67);
     let t5 = p0 * t1;
     let t6 = p0 * 0.814;
     let t7 = t0 * 0.196;
@@ -255,7 +315,7 @@ pub fn det_k(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t10 = p0 * t0 - 23.18;
     let t11 = delta_r * (1.081806 - t10) - t2 * (t1 * 1.329 + t9);
     let t12 = t2 * (-7.59664374 - p0 * t9) - delta_r * (1.329 * t7 + p0 * t10);
-    let t13 = delta_r * (-0.212033976 - p0 * t6 - 4.54328)
+    let t13 = delta_r * (-(p0 * t6 + 4.755313976))
         - t2 * (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t5));
     let t14 = 0.814 * t11 - 0.949 * t13 - t0 * t8;
     let t15 = 0.716 * t12 + t1 * t11 + t8 * 0.235;
@@ -265,11 +325,13 @@ pub fn det_k(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t19 = p0 * 1.000004;
     let t20 = p0 * 1.186564;
     let t21 = 5.71606 - 0.716 * t17;
+    let t22 = (t4 * (p0 * 0.126) - t13 * 0.966183 - t12 * t16) * (t14 * t21 + t15 * t19);
+    let t23 = 0.126 * (t4 * t8) - (3.933 * (t4 * t4) + 0.727 * (t11 * t13))
+        - 0.727 * (t8 * t12);
     t18 * t21 + t19 * t20
-        - ((t4 * (p0 * 0.126) - t13 * 0.966183 - t12 * t16) * (t14 * t21 + t15 * t19)
+        - (t22
             + (t12 * 0.142492 - (t4 * 10.014696 + t13 * t16)) * (t14 * t20 - t15 * t18))
-            / (0.126 * (t4 * t8) - (3.933 * (t4 * t4) + 0.727 * (t11 * t13))
-                - 0.727 * (t8 * t12))
+            / t23
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -280,10 +342,18 @@ pub fn det_k(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 44 add/sub, 63 mul, 1 div, 0 neg, 0 libm (108 operations); straight-line, no branches.
+/// Cost after CSE: 42 add/sub, 63 mul, 1 div, 1 neg, 0 libm (107 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn det_j5(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
+    /// exact: 84.989869664563152
+    const K0: f64 = 84.98986966456316;
+    /// exact: -10.593548621132256
+    const K1: f64 = -10.593548621132255;
+    /// exact: -173.969821834698816
+    const K2: f64 = -173.96982183469882;
+    /// exact: -545.43606531754788
+    const K3: f64 = -545.4360653175479;
     let t0 = p0 * 0.949;
     let t1 = p0 * 0.716;
     let t2 = delta_e * 28.37;
@@ -294,44 +364,44 @@ pub fn det_j5(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t7 = p0 * 0.235;
     let t8 = p0 * t0 - 23.18;
     let t9 = 1.0
-        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329
-            + (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708
+            - p0 * (t0 * 5.67));
     let t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
     let t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
     let t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    let t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328)
+    let t13 = (delta_r * (-(p0 * t5 + 4.755313976))
         - t2 * (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t4))) * t9;
-    p0
+    let t14 = t13 * (t11 * 3.91186341 - t13 * 0.162131905) + (K0 - t10 * 11.11251889764);
+    let t15 = p0
+        * (t13 * (t12 * 0.987969736 - 0.085614984) + t11 * 6.78804516
+            - p0 * 2.672410572);
+    let t16 = t13 * (K1 - t12 * 15.720444861287776 - t10 * 9.15905357189)
+        + t11 * (t12 * 5.72030388496 - 164.88325852848);
+    let t17 = K3 - t10 * 39.62510941338
+        - t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716);
+    let t18 = p0
         * (p0
-            * (p0
-                * (t13 * (t12 * 0.987969736 - 0.085614984) + t11 * 6.78804516
-                    - p0 * 2.672410572)
-                + (t12 * (t12 * 0.423713048 + (6.714609336 + t10 * 12.06593176))
-                    + (t13 * (t11 * 3.91186341 - t13 * 0.162131905)
-                        + (84.98986966456316 - t10 * 11.11251889764))))
-            + (t13
-                * (-10.593548621132255 - t12 * 15.720444861287776 - t10 * 9.15905357189)
-                + t11 * (t12 * 5.72030388496 - 164.88325852848)))
-        + (t12
-            * (t12 * 2.475293094555232 + (-173.96982183469882 - t10 * 100.00934789454))
-            + (-545.4360653175479 - t10 * 39.62510941338
-                - t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716)))
+            * (t15
+                + (t12 * (t12 * 0.423713048 + (6.714609336 + t10 * 12.06593176)) + t14))
+            + t16);
+    t18 + (t12 * (t12 * 2.475293094555232 + (K2 - t10 * 100.00934789454)) + t17)
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// det K (Eq. 27) at the zero-sideslip trim of `p0` (section V.D, Fig. 11), 1/s^4: its
-/// zeros mark the departure (transcritical point) of the zero-sideslip roll.
+/// zeros mark the departure (transcritical point) of the zero-sideslip roll. K0, g, h
+/// and d are those of [`det_k`] with `beta0 = 0`.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 17 add/sub, 36 mul, 1 div, 0 neg, 0 libm (54 operations); straight-line, no branches.
+/// Cost after CSE: 16 add/sub, 36 mul, 1 div, 0 neg, 0 libm (53 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn zero_sideslip_det_k(p0: f64, delta_e: f64) -> f64 {
     let t0 = p0 * 0.949;
     let t1 = delta_e * 28.37;
-    let t2 = 1.081806 - (p0 * t0 - 23.18);
+    let t2 = 24.261806 - p0 * t0;
     let t3 = t1 * 1.329;
     let t4 = p0 * t1;
     let t5 = 0.949 * t4 + t0 * t1;
@@ -342,14 +412,21 @@ pub fn zero_sideslip_det_k(p0: f64, delta_e: f64) -> f64 {
     let t10 = p0 * 1.000004;
     let t11 = p0 * 1.186564;
     let t12 = 5.71606 - 0.716 * t8;
+    let t13 = (t2 * (p0 * 0.126) + t4 * 0.966183 + t3 * t7) * (t5 * t12 - t6 * t10);
+    let t14 = t13 + (t4 * t7 - t2 * 10.014696 - t3 * 0.142492) * (t6 * t9 + t5 * t11);
     t9 * t12 + t10 * t11
-        + ((t2 * (p0 * 0.126) + t4 * 0.966183 + t3 * t7) * (t5 * t12 - t6 * t10)
-            + (t4 * t7 - t2 * 10.014696 - t3 * 0.142492) * (t6 * t9 + t5 * t11))
-            / (t2 * t2 * 3.933 + 0.126 * (t1 * t2) + 0.727 * (t1 * t3))
+        + t14 / (t2 * t2 * 3.933 + 0.126 * (t1 * t2) + 0.727 * (t1 * t3))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive
-/// roots are the pitch-yaw divergence roll rates of Table 1.
+/// Coefficients [c0, c2, c4] of `det A = c4 P0^4 + c2 P0^2 + c0` (Eq. 5); its
+/// positive roots are the pitch-yaw divergence roll rates of Table 1.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c0 = -m_alpha*n_beta + z_alpha*m_q*n_beta - y_beta*m_alpha*n_r + z_alpha*y_beta*m_q*n_r
+/// c2 = -C*n_beta + D*m_alpha + m_q*n_r + C*D*z_alpha*y_beta
+/// c4 = C*D
+/// ```
 ///
 /// Cost after CSE: 0 add/sub, 0 mul, 0 div, 0 neg, 0 libm (0 operations); straight-line, no branches.
 #[must_use]
@@ -358,19 +435,23 @@ pub fn divergence_biquadratic() -> [f64; 3] {
     [138.68193880436, -21.609425289744, 0.679484]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// The divergence roll rates P1, P2 of Eq. 5 (Table 1), rad/s:
-/// `P = sqrt((-c2 -+ sqrt(c2^2 - 4 c4 c0)) / (2 c4))`, ascending when c4 = C D > 0.
-/// NaN for a root that does not exist (negative discriminant or P0^2 < 0), without a branch.
+/// The divergence roll rates P1 <= P2 of Eq. 5 (Table 1), rad/s, the positive roots of
+/// `det A = c4 P0^4 + c2 P0^2 + c0` ([`divergence_biquadratic`]), by the cancellation-free
+/// quadratic formula in `P0^2`: `q = -(c2 + copysign(sqrt(c2^2 - 4 c4 c0), c2)) / 2`,
+/// `P1 = sqrt(c0 / q)` (the root of smaller magnitude), `P2 = sqrt(q / c4)`. Both are
+/// accurate to a few ulps of well-conditioned coefficients even when one root is tiny
+/// against the other (the textbook `(-c2 -+ sqrt(...)) / (2 c4)` loses the small one to
+/// cancellation); `c4 = 0` gives `P1 = sqrt(-c0 / c2)`. NaN for a root that does not
+/// exist (negative discriminant or `P0^2 < 0`), without a branch.
 ///
-/// Cost after CSE: 2 add/sub, 0 mul, 2 div, 0 neg, 3 libm (7 operations); straight-line, no branches.
+/// Cost after CSE: 1 add/sub, 1 mul, 2 div, 2 neg, 4 libm (10 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn divergence_roll_rates() -> [f64; 2] {
-    let t0 = libm::sqrt(90.03862732686056);
-    [
-        libm::sqrt((21.609425289744 - t0) / 1.358968),
-        libm::sqrt((t0 + 21.609425289744) / 1.358968),
-    ]
+    /// exact: 90.038627326860557391585536
+    const K0: f64 = 90.03862732686056;
+    let t0 = 0.5 * (libm::sqrt(K0).copysign(-21.609425289744) - 21.609425289744);
+    [libm::sqrt(-(138.68193880436 / t0)), libm::sqrt(-(t0 / 0.679484))]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Coefficients of P0^0 ..= P0^12 of the jump polynomial `det J5 * det(A)^2` (step 8).
@@ -382,10 +463,32 @@ pub fn divergence_roll_rates() -> [f64; 2] {
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 196 add/sub, 254 mul, 0 div, 0 neg, 0 libm (450 operations); straight-line, no branches.
+/// Cost after CSE: 176 add/sub, 258 mul, 0 div, 0 neg, 0 libm (434 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn jump_polynomial(delta_e: f64, delta_r: f64) -> [f64; 13] {
+    /// exact: -10490197.386819397709989335197972131025859648
+    const K0: f64 = -10490197.386819398;
+    /// exact: 4903748.9378829206247597401314006874722987776
+    const K1: f64 = 4903748.937882921;
+    /// exact: 117.719087613062805165537236736
+    const K2: f64 = 117.71908761306281;
+    /// exact: -1.233847969195142538432
+    const K3: f64 = -1.2338479691951425;
+    /// exact: 10.593548621132256
+    const K4: f64 = 10.593548621132255;
+    /// exact: 918295.21028008206691980371556923883838639104
+    const K5: f64 = 918295.2102800821;
+    /// exact: 173.969821834698816
+    const K6: f64 = 173.96982183469882;
+    /// exact: 21.706067518772256
+    const K7: f64 = 21.706067518772254;
+    /// exact: 4499.265787898939326940650849946059776
+    const K8: f64 = 4499.265787898939;
+    /// exact: 87740.159898100445660062789882475330881769472
+    const K9: f64 = 87740.15989810045;
+    /// exact: 338.853080363178816
+    const K10: f64 = 338.85308036317883;
     let t0 = delta_e * 162.1646222;
     let t1 = delta_r * 1.000004;
     let t2 = delta_e * 20.31292;
@@ -409,145 +512,134 @@ pub fn jump_polynomial(delta_e: f64, delta_r: f64) -> [f64; 13] {
     let t20 = t11 * 0.679484;
     let t21 = t2 * 0.679484;
     let t22 = t9 * t9;
-    let t23 = t9 * t10;
-    let t24 = t9 * t11;
-    let t25 = t2 * t9;
-    let t26 = t23 + t23;
-    let t27 = t10 * t11;
-    let t28 = t2 * t10;
-    let t29 = t24 + (t24 + t10 * t10);
-    let t30 = t2 * t11;
-    let t31 = t27 + (t27 - t25) - t25;
-    let t32 = t11 * t11 - t28 - t28;
-    let t33 = t30 + t30;
-    let t34 = t2 * t2;
-    let t35 = t6 * 138.68193880436;
-    let t36 = t7 * 138.68193880436;
-    let t37 = t5 * 138.68193880436;
-    let t38 = t6 * 21.609425289744 - t8 * 138.68193880436;
-    let t39 = t37 + t7 * 21.609425289744;
-    let t40 = t5 * 21.609425289744;
-    let t41 = t8 * 21.609425289744 - t6 * 0.679484;
-    let t42 = t40 + t7 * 0.679484;
-    let t43 = t8 * 0.679484;
-    let t44 = t5 * 0.679484;
-    let t45 = t6 * t9;
-    let t46 = t2 * t6;
-    let t47 = t6 * t10 - t7 * t9;
-    let t48 = t2 * t7;
-    let t49 = t6 * t11 - t7 * t10 + t8 * t9;
-    let t50 = t2 * t8;
-    let t51 = t5 * t9;
-    let t52 = t8 * t10 - (t46 + t7 * t11) + t51;
-    let t53 = t5 * t10;
-    let t54 = t48 + t8 * t11 + t53;
-    let t55 = t5 * t11;
-    let t56 = t55 - t50;
-    let t57 = t2 * t5;
-    let t58 = t6 * t6;
-    let t59 = t6 * t7;
-    let t60 = t6 * t8;
-    let t61 = t5 * t6;
-    let t62 = t59 + t59;
-    let t63 = t7 * t8;
-    let t64 = t5 * t7;
-    let t65 = t60 + (t60 + t7 * t7);
-    let t66 = t5 * t8;
-    let t67 = t61 + (t61 - t63 - t63);
-    let t68 = t8 * t8 - t64 - t64;
-    let t69 = t66 + t66;
-    let t70 = t5 * t5;
-    let t71 = t3 * 138.68193880436;
-    let t72 = t4 * 138.68193880436;
-    let t73 = t37 + t3 * 21.609425289744;
-    let t74 = t4 * 21.609425289744;
-    let t75 = t40 + t3 * 0.679484;
-    let t76 = t4 * 0.679484;
+    let t23 = t2 * t9;
+    let t24 = t9 * t10 * 2.0;
+    let t25 = t2 * t10;
+    let t26 = t10 * t10 + t9 * t11 * 2.0;
+    let t27 = t2 * t11;
+    let t28 = 2.0 * (t10 * t11) - t23 * 2.0;
+    let t29 = t11 * t11 - 2.0 * t25;
+    let t30 = 2.0 * t27;
+    let t31 = t2 * t2;
+    let t32 = t6 * 138.68193880436;
+    let t33 = t7 * 138.68193880436;
+    let t34 = t5 * 138.68193880436;
+    let t35 = t6 * 21.609425289744 - t8 * 138.68193880436;
+    let t36 = t34 + t7 * 21.609425289744;
+    let t37 = t5 * 21.609425289744;
+    let t38 = t8 * 21.609425289744 - t6 * 0.679484;
+    let t39 = t37 + t7 * 0.679484;
+    let t40 = t8 * 0.679484;
+    let t41 = t5 * 0.679484;
+    let t42 = t6 * t9;
+    let t43 = t2 * t6;
+    let t44 = t6 * t10 - t7 * t9;
+    let t45 = t2 * t7;
+    let t46 = t6 * t11 - t7 * t10 + t8 * t9;
+    let t47 = t2 * t8;
+    let t48 = t5 * t9;
+    let t49 = t8 * t10 - (t43 + t7 * t11) + t48;
+    let t50 = t5 * t10;
+    let t51 = t45 + t8 * t11 + t50;
+    let t52 = t5 * t11;
+    let t53 = t52 - t47;
+    let t54 = t2 * t5;
+    let t55 = t12 * 0.085614984 - t15 * K4 - (t28 * 5.24109923903202 + t24 * 0.162131905)
+        + (t36 * K6 + t33 * 6.714609336);
+    let t56 = t13 * 0.085614984 - t16 * K4 - K5
+        - (t29 * 5.24109923903202 + t26 * 0.162131905) + (t35 * 6.714609336 - t38 * K6);
+    let t57 = t6 * t6;
+    let t58 = t5 * t6;
+    let t59 = 2.0 * (t6 * t7);
+    let t60 = t5 * t7;
+    let t61 = t7 * t7 + 2.0 * (t6 * t8);
+    let t62 = t5 * t8;
+    let t63 = 2.0 * t58 - 2.0 * (t7 * t8);
+    let t64 = t8 * t8 - 2.0 * t60;
+    let t65 = 2.0 * t62;
+    let t66 = t5 * t5;
+    let t67 = K1 + t13 * K4 - (t26 * 5.24109923903202 + t22 * 0.162131905)
+        - (t35 * K6 + t32 * 6.714609336) - t44 * 15.720444861287776;
+    let t68 = t3 * 138.68193880436;
+    let t69 = t4 * 138.68193880436;
+    let t70 = t34 + t3 * 21.609425289744;
+    let t71 = t4 * 21.609425289744;
+    let t72 = t37 + t3 * 0.679484;
+    let t73 = t4 * 0.679484;
+    let t74 = t12 * K4 - t24 * 5.24109923903202 - t33 * K6 - t42 * 15.720444861287776
+        - t59 * 2.475293094555232;
+    let t75 = t55 + (t42 * 0.987969736 - t46 * 15.720444861287776)
+        + (t63 * 2.475293094555232 - t59 * 0.423713048);
+    let t76 = t56 + (t44 * 0.987969736 - t49 * 15.720444861287776)
+        + (t64 * 2.475293094555232 + t61 * 0.423713048);
     let t77 = t3 * t9;
     let t78 = t4 * t9 - t3 * t10;
-    let t79 = t51 + (t4 * t10 - t3 * t11);
-    let t80 = t53 + (t2 * t3 + t4 * t11);
-    let t81 = t55 - t2 * t4;
-    let t82 = t0 * 138.68193880436;
-    let t83 = t1 * 138.68193880436;
-    let t84 = t14 + t0 * 21.609425289744;
-    let t85 = t1 * 21.609425289744;
-    let t86 = t17 + t0 * 0.679484;
-    let t87 = t1 * 0.679484;
-    let t88 = t0 * t6;
-    let t89 = t1 * t6 - t0 * t7;
-    let t90 = t0 * t8 - t1 * t7 - t46;
-    let t91 = t48 + (t0 * t5 + t1 * t8);
-    let t92 = t1 * t5 - t50;
+    let t79 = t48 + (t4 * t10 - t3 * t11);
+    let t80 = t50 + (t2 * t3 + t4 * t11);
+    let t81 = t52 - t2 * t4;
+    let t82 = t67 + (t61 * 2.475293094555232 + t57 * 0.423713048) + t69 * 164.88325852848
+        - (t79 * 96.3262428716 + t77 * 3.91186341);
+    let t83 = t75 + (t70 * 164.88325852848 + t68 * 6.78804516)
+        + (t78 * 3.91186341 - t80 * 96.3262428716);
+    let t84 = t76 - (t71 * 164.88325852848 + t69 * 6.78804516)
+        + (t79 * 3.91186341 - t81 * 96.3262428716);
+    let t85 = t0 * 138.68193880436;
+    let t86 = t1 * 138.68193880436;
+    let t87 = t14 + t0 * 21.609425289744;
+    let t88 = t1 * 21.609425289744;
+    let t89 = t17 + t0 * 0.679484;
+    let t90 = t1 * 0.679484;
+    let t91 = t19 * 0.085614984 - t21 * K7 - K8 - t31 * 0.162131905 - t40 * 6.714609336
+        + t53 * 0.987969736 + t66 * 0.423713048;
+    let t92 = t74 - t68 * 164.88325852848 - t78 * 96.3262428716 - t3 * t6 * 5.72030388496
+        + t86 * 39.62510941338;
+    let t93 = t82 + (t3 * t7 + t4 * t6) * 5.72030388496
+        + (t85 * 11.11251889764 - t87 * 39.62510941338);
+    let t94 = t83 + (t58 - (t3 * t8 + t4 * t7)) * 5.72030388496
+        + (t86 * 11.11251889764 - t88 * 39.62510941338);
+    let t95 = t84 + (t4 * t8 - t3 * t5 - t60) * 5.72030388496
+        + (t89 * 39.62510941338 - t87 * 11.11251889764);
+    let t96 = t0 * t6;
+    let t97 = t1 * t6 - t0 * t7;
+    let t98 = t0 * t8 - t1 * t7 - t43;
+    let t99 = t45 + (t0 * t5 + t1 * t8);
+    let t100 = t1 * t5 - t47;
+    let t101 = K0 - t22 * 5.24109923903202 + t32 * K6 + t57 * 2.475293094555232
+        + t77 * 96.3262428716 + t85 * 39.62510941338;
+    let t102 = t30 * 5.24109923903202 - t28 * 0.162131905 - t18 * K4 - t15 * 0.085614984
+        - t39 * K6 - t36 * 6.714609336;
+    let t103 = t102 + t46 * 0.987969736 - t51 * 15.720444861287776
+        + t65 * 2.475293094555232 + t63 * 0.423713048;
+    let t104 = t103 - t72 * 164.88325852848 - t70 * 6.78804516 + t54 * 196.33559076614
+        + t80 * 3.91186341;
+    let t105 = t104 + (t62 + t4 * t5) * 5.72030388496 + t90 * 39.62510941338
+        - t88 * 11.11251889764 + (t27 + t1 * t2) * 9.15905357189;
+    let t106 = K9 + t19 * K4 - t16 * 0.085614984 - t31 * 14.40015281092202
+        - t29 * 0.162131905 + t40 * K6 + t38 * 6.714609336;
+    let t107 = t106 + t49 * 0.987969736 - t53 * 15.720444861287776
+        + t66 * 8.195596979515232 + t64 * 0.423713048;
+    let t108 = t107 + t73 * 164.88325852848 + t71 * 6.78804516 + t81 * 3.91186341
+        + t89 * 11.11251889764 - t21 * 39.62510941338;
+    let t109 = t20 * K4 - t18 * 0.085614984 + t30 * 0.162131905 + t41 * K10
+        + t39 * 6.714609336 - t54 * 0.257350308712224;
     [
-        -10490197.386819398 - t22 * 5.24109923903202 + t35 * 173.96982183469882
-            + t58 * 2.475293094555232 + t77 * 96.3262428716 + t82 * 39.62510941338
-            - t88 * 100.00934789454,
-        t12 * 10.593548621132255 - t26 * 5.24109923903202 - t36 * 173.96982183469882
-            - t45 * 15.720444861287776 - t62 * 2.475293094555232 - t71 * 164.88325852848
-            - t78 * 96.3262428716 - t3 * t6 * 5.72030388496 + t83 * 39.62510941338
-            - t0 * t9 * 9.15905357189 - t89 * 100.00934789454,
-        4903748.937882921 + t13 * 10.593548621132255
-            - (t29 * 5.24109923903202 + t22 * 0.162131905)
-            - (t38 * 173.96982183469882 + t35 * 6.714609336) - t47 * 15.720444861287776
-            + (t65 * 2.475293094555232 + t58 * 0.423713048) + t72 * 164.88325852848
-            - (t79 * 96.3262428716 + t77 * 3.91186341)
-            + (t3 * t7 + t4 * t6) * 5.72030388496
-            + (t82 * 11.11251889764 - t84 * 39.62510941338)
-            - (t0 * t10 + t1 * t9) * 9.15905357189
-            + (t88 * 12.06593176 - t90 * 100.00934789454),
-        t12 * 0.085614984 - t15 * 10.593548621132255
-            - (t31 * 5.24109923903202 + t26 * 0.162131905)
-            + (t39 * 173.96982183469882 + t36 * 6.714609336)
-            + (t45 * 0.987969736 - t49 * 15.720444861287776)
-            + (t67 * 2.475293094555232 - t62 * 0.423713048)
-            + (t73 * 164.88325852848 + t71 * 6.78804516)
-            + (t78 * 3.91186341 - t80 * 96.3262428716)
-            + (t61 - (t3 * t8 + t4 * t7)) * 5.72030388496
-            + (t83 * 11.11251889764 - t85 * 39.62510941338)
-            - (t0 * t11 + t1 * t10 - t25) * 9.15905357189
-            + (t89 * 12.06593176 - t91 * 100.00934789454),
-        t13 * 0.085614984 - t16 * 10.593548621132255 - 918295.2102800821
-            - (t32 * 5.24109923903202 + t29 * 0.162131905)
-            + (t38 * 6.714609336 - t41 * 173.96982183469882)
-            + (t47 * 0.987969736 - t52 * 15.720444861287776)
-            + (t68 * 2.475293094555232 + t65 * 0.423713048)
-            - (t74 * 164.88325852848 + t72 * 6.78804516)
-            + (t79 * 3.91186341 - t81 * 96.3262428716)
-            + (t4 * t8 - t3 * t5 - t64) * 5.72030388496
-            + (t86 * 39.62510941338 - t84 * 11.11251889764)
-            - (t1 * t11 - t0 * t2 - t28) * 9.15905357189
-            + (t90 * 12.06593176 - t92 * 100.00934789454),
-        t33 * 5.24109923903202 - t31 * 0.162131905
-            - (t18 * 10.593548621132255 + t15 * 0.085614984)
-            - (t42 * 173.96982183469882 + t39 * 6.714609336)
-            + (t49 * 0.987969736 - t54 * 15.720444861287776)
-            + (t69 * 2.475293094555232 + t67 * 0.423713048)
-            - (t75 * 164.88325852848 + t73 * 6.78804516)
-            + (t57 * 96.3262428716 + t80 * 3.91186341) + (t66 + t4 * t5) * 5.72030388496
-            + (t87 * 39.62510941338 - t85 * 11.11251889764)
-            + (t30 + t1 * t2) * 9.15905357189
-            + (t57 * 100.00934789454 + t91 * 12.06593176),
-        87740.15989810045 + (t19 * 10.593548621132255 - t16 * 0.085614984)
-            - (t34 * 5.24109923903202 + t32 * 0.162131905)
-            + (t43 * 173.96982183469882 + t41 * 6.714609336)
-            + (t52 * 0.987969736 - t56 * 15.720444861287776)
-            + (t70 * 2.475293094555232 + t68 * 0.423713048)
-            + (t76 * 164.88325852848 + t74 * 6.78804516) + t81 * 3.91186341
-            + t70 * 5.72030388496 + (t86 * 11.11251889764 - t21 * 39.62510941338)
-            - t34 * 9.15905357189 + t92 * 12.06593176,
-        t20 * 10.593548621132255 - t18 * 0.085614984 + t33 * 0.162131905
-            + (t44 * 173.96982183469882 + t42 * 6.714609336)
-            + (t57 * 15.720444861287776 + t54 * 0.987969736) + t69 * 0.423713048
-            + (t44 * 164.88325852848 + t75 * 6.78804516) - t57 * 3.91186341
-            + t87 * 11.11251889764 - t57 * 12.06593176,
-        t19 * 0.085614984 - t21 * 10.593548621132255 - 4499.265787898939
-            - t34 * 0.162131905 - t43 * 6.714609336 + t56 * 0.987969736
-            + t70 * 0.423713048 - t76 * 6.78804516 - t21 * 11.11251889764,
-        t20 * 0.085614984 - t44 * 6.714609336 - t57 * 0.987969736 - t44 * 6.78804516,
-        117.71908761306281 - t21 * 0.085614984,
+        t101 - t96 * 100.00934789454,
+        t92 - t0 * t9 * 9.15905357189 - t97 * 100.00934789454,
+        t93 - (t0 * t10 + t1 * t9) * 9.15905357189
+            + (t96 * 12.06593176 - t98 * 100.00934789454),
+        t94 - (t0 * t11 + t1 * t10 - t23) * 9.15905357189
+            + (t97 * 12.06593176 - t99 * 100.00934789454),
+        t95 - (t1 * t11 - t0 * t2 - t25) * 9.15905357189
+            + (t98 * 12.06593176 - t100 * 100.00934789454),
+        t105 + t99 * 12.06593176,
+        t108 + t100 * 12.06593176,
+        t109 + t51 * 0.987969736 + t65 * 0.423713048 + t72 * 6.78804516
+            + t90 * 11.11251889764,
+        t91 - t73 * 6.78804516,
+        t20 * 0.085614984 - t41 * 13.502654496 - t54 * 0.987969736,
+        K2 - t21 * 0.085614984,
         0.0,
-        -1.2338479691951425,
+        K3,
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
@@ -557,10 +649,22 @@ pub fn jump_polynomial(delta_e: f64, delta_r: f64) -> [f64; 13] {
 /// Arguments:
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 21 add/sub, 30 mul, 0 div, 0 neg, 0 libm (51 operations); straight-line, no branches.
+/// Cost after CSE: 17 add/sub, 26 mul, 0 div, 0 neg, 0 libm (43 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn zero_sideslip_jump_polynomial(delta_e: f64) -> [f64; 9] {
+    /// exact: 199.603549611479573990352
+    const K0: f64 = 199.60354961147956;
+    /// exact: 173.969821834698816
+    const K1: f64 = 173.96982183469882;
+    /// exact: 321062.88396664785760334010273168
+    const K2: f64 = 321062.88396664785;
+    /// exact: 21.706067518772256
+    const K3: f64 = 21.706067518772254;
+    /// exact: 5977.985949682195657082299776
+    const K4: f64 = 5977.9859496821955;
+    /// exact: 75144.766586162654990745072516672
+    const K5: f64 = 75144.76658616266;
     let t0 = delta_e * 28.37;
     let t1 = delta_e * 37.70373;
     let t2 = t0 * 24.261806;
@@ -570,20 +674,18 @@ pub fn zero_sideslip_jump_polynomial(delta_e: f64) -> [f64; 9] {
     let t6 = t1 * 0.949;
     let t7 = t0 * t1;
     let t8 = t1 * t1;
+    let t9 = K5 + t2 * K3 - t4 * 14.40015281092202 - t6 * K1 - t5 * 6.714609336
+        - t7 * 3.654513101287776 + t8 * 0.423713048;
     [
-        t5 * 173.96982183469882 - 321062.88396664785 + t8 * 2.475293094555232
-            + t2 * 39.62510941338 - t7 * 100.00934789454,
+        t5 * K1 - K2 + t8 * 2.475293094555232 + t2 * 39.62510941338
+            - t7 * 100.00934789454,
         0.0,
-        75144.76658616266 + t2 * 10.593548621132255 - t4 * 5.24109923903202
-            - (t6 * 173.96982183469882 + t5 * 6.714609336) - t7 * 15.720444861287776
-            + t8 * 0.423713048 + (t2 * 11.11251889764 - t3 * 39.62510941338)
-            - t4 * 9.15905357189 + t7 * 12.06593176,
+        t9 - t3 * 39.62510941338,
         0.0,
-        t2 * 0.085614984 - t3 * 10.593548621132255 - 5977.9859496821955
-            - t4 * 0.162131905 + t6 * 6.714609336 + t7 * 0.987969736
-            - t3 * 11.11251889764,
+        t2 * 0.085614984 - t3 * K3 - K4 - t4 * 0.162131905 + t6 * 6.714609336
+            + t7 * 0.987969736,
         0.0,
-        199.60354961147956 - t3 * 0.085614984,
+        K0 - t3 * 0.085614984,
         0.0,
         -2.406775633553772,
     ]
@@ -591,17 +693,34 @@ pub fn zero_sideslip_jump_polynomial(delta_e: f64) -> [f64; 9] {
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
 /// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
-/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10).
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3
+/// to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c1 = -z_alpha - y_beta - l_p - m_q - n_r
+/// c2 = -m_alpha + n_beta + z_alpha*y_beta + z_alpha*l_p + z_alpha*m_q + z_alpha*n_r + y_beta*l_p
+///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha0 + m_q*n_r
+///          + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 74 add/sub, 96 mul, 1 div, 0 neg, 0 libm (171 operations); straight-line, no branches.
+/// Cost after CSE: 72 add/sub, 96 mul, 1 div, 1 neg, 0 libm (170 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn characteristic_coefficients(p0: f64, delta_e: f64, delta_r: f64) -> [f64; 5] {
+    /// exact: 84.989869664563152
+    const K0: f64 = 84.98986966456316;
+    /// exact: 10.593548621132256
+    const K1: f64 = 10.593548621132255;
+    /// exact: 173.969821834698816
+    const K2: f64 = 173.96982183469882;
+    /// exact: 545.43606531754788
+    const K3: f64 = 545.4360653175479;
     let t0 = p0 * 0.949;
     let t1 = p0 * 0.716;
     let t2 = delta_e * 28.37;
@@ -612,62 +731,73 @@ pub fn characteristic_coefficients(p0: f64, delta_e: f64, delta_r: f64) -> [f64;
     let t7 = p0 * 0.235;
     let t8 = p0 * t0 - 23.18;
     let t9 = 1.0
-        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329
-            + (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708
+            - p0 * (t0 * 5.67));
     let t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
     let t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
     let t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    let t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328)
+    let t13 = (delta_r * (-(p0 * t5 + 4.755313976))
         - t2 * (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t4))) * t9;
     let t14 = t12 * (0.090216 - t12 * 0.520532);
     let t15 = t13 * t13 * 0.689923;
     let t16 = p0 * p0;
     let t17 = t13 * (0.085614984 - t12 * 0.987969736);
+    let t18 = t13 * (t13 * 1.21426448 + t11 * 16.85186)
+        + (144.241950533 + t10 * 23.0418);
+    let t19 = t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341)
+        + t11 * (-7.67388312 - t12 * 16.18802176);
+    let t20 = t13 * (t13 * 4.338828467857 + t11 * 7.26315166)
+        + (227.986032885638 + t10 * 245.87545383);
+    let t21 = p0
+        * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 * 6.78804516)))
+            + t19);
+    let t22 = t13 * (t13 * 0.162131905 - t11 * 3.91186341) + (t10 * 11.11251889764 - K0);
+    let t23 = t12 * (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048) + t22;
+    let t24 = t13 * (K1 + t12 * 15.720444861287776 + t10 * 9.15905357189)
+        + t11 * (164.88325852848 - t12 * 5.72030388496);
+    let t25 = t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716)
+        + (K3 + t10 * 39.62510941338);
+    let t26 = p0
+        * (p0 * (p0 * (p0 * 2.672410572 + (t17 - t11 * 6.78804516)) + t23) + t24);
     [
         6.507,
         t14 + (41.025041 + t15 + t10 * 9.99 + t16 * 1.679484),
         p0 * (p0 * 8.690623672 + (t17 - t11 * 9.99))
-            + (t12 * (7.363855224 + t10 * 4.12209 - t12 * 1.217524348)
-                + (t13 * (t13 * 1.21426448 + t11 * 16.85186)
-                    + (144.241950533 + t10 * 23.0418))),
-        p0
-            * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 * 6.78804516)))
-                + (t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341)
-                    + t11 * (-7.67388312 - t12 * 16.18802176)))
-            + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 * 12.847684415688)
-                + (t13 * (t13 * 4.338828467857 + t11 * 7.26315166)
-                    + (227.986032885638 + t10 * 245.87545383))),
-        p0
-            * (p0
-                * (p0 * (p0 * 2.672410572 + (t17 - t11 * 6.78804516))
-                    + (t12 * (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048)
-                        + (t13 * (t13 * 0.162131905 - t11 * 3.91186341)
-                            + (t10 * 11.11251889764 - 84.98986966456316))))
-                + (t13
-                    * (10.593548621132255 + t12 * 15.720444861287776
-                        + t10 * 9.15905357189)
-                    + t11 * (164.88325852848 - t12 * 5.72030388496)))
-            + (t12
-                * (173.96982183469882 + t10 * 100.00934789454 - t12 * 2.475293094555232)
-                + (t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716)
-                    + (545.4360653175479 + t10 * 39.62510941338))),
+            + (t12 * (7.363855224 + t10 * 4.12209 - t12 * 1.217524348) + t18),
+        t21 + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 * 12.847684415688) + t20),
+        t26 + (t12 * (K2 + t10 * 100.00934789454 - t12 * 2.475293094555232) + t25),
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The fourth Hurwitz determinant of J5 at the trim of `p0`,
-/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`, 1/s^10.
-/// By Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
-/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle (`+-lambda`).
+/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`
+/// (expanded below) in the coefficients of [`characteristic_coefficients`], 1/s^10. By
+/// Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
+/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle
+/// (`+-lambda`).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// Delta4 = -c5^2 + 2*c1*c4*c5 + c2*c3*c5 - c3^2*c4 - c1^2*c4^2 - c1*c2^2*c5 + c1*c2*c3*c4
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 80 add/sub, 106 mul, 1 div, 0 neg, 0 libm (187 operations); straight-line, no branches.
+/// Cost after CSE: 78 add/sub, 106 mul, 1 div, 1 neg, 0 libm (186 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn hurwitz_delta4(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
+    /// exact: 84.989869664563152
+    const K0: f64 = 84.98986966456316;
+    /// exact: 10.593548621132256
+    const K1: f64 = 10.593548621132255;
+    /// exact: 173.969821834698816
+    const K2: f64 = 173.96982183469882;
+    /// exact: 545.43606531754788
+    const K3: f64 = 545.4360653175479;
     let t0 = p0 * 0.949;
     let t1 = p0 * 0.716;
     let t2 = delta_e * 28.37;
@@ -678,61 +808,74 @@ pub fn hurwitz_delta4(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t7 = p0 * 0.235;
     let t8 = p0 * t0 - 23.18;
     let t9 = 1.0
-        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329
-            + (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708
+            - p0 * (t0 * 5.67));
     let t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
     let t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
     let t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    let t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328)
+    let t13 = (delta_r * (-(p0 * t5 + 4.755313976))
         - t2 * (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t4))) * t9;
     let t14 = t12 * (0.090216 - t12 * 0.520532);
     let t15 = t13 * t13 * 0.689923;
     let t16 = p0 * p0;
     let t17 = t14 + (41.025041 + t15 + t10 * 9.99 + t16 * 1.679484);
     let t18 = t13 * (0.085614984 - t12 * 0.987969736);
-    let t19 = p0 * (p0 * 8.690623672 + (t18 - t11 * 9.99))
-        + (t12 * (7.363855224 + t10 * 4.12209 - t12 * 1.217524348)
-            + (t13 * (t13 * 1.21426448 + t11 * 16.85186)
-                + (144.241950533 + t10 * 23.0418)));
-    let t20 = p0
+    let t19 = t13 * (t13 * 1.21426448 + t11 * 16.85186)
+        + (144.241950533 + t10 * 23.0418);
+    let t20 = p0 * (p0 * 8.690623672 + (t18 - t11 * 9.99))
+        + (t12 * (7.363855224 + t10 * 4.12209 - t12 * 1.217524348) + t19);
+    let t21 = t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341)
+        + t11 * (-7.67388312 - t12 * 16.18802176);
+    let t22 = t13 * (t13 * 4.338828467857 + t11 * 7.26315166)
+        + (227.986032885638 + t10 * 245.87545383);
+    let t23 = p0
         * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 * 6.78804516)))
-            + (t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341)
-                + t11 * (-7.67388312 - t12 * 16.18802176)))
-        + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 * 12.847684415688)
-            + (t13 * (t13 * 4.338828467857 + t11 * 7.26315166)
-                + (227.986032885638 + t10 * 245.87545383)));
-    let t21 = p0
-        * (p0
-            * (p0 * (p0 * 2.672410572 + (t18 - t11 * 6.78804516))
-                + (t12 * (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048)
-                    + (t13 * (t13 * 0.162131905 - t11 * 3.91186341)
-                        + (t10 * 11.11251889764 - 84.98986966456316))))
-            + (t13
-                * (10.593548621132255 + t12 * 15.720444861287776 + t10 * 9.15905357189)
-                + t11 * (164.88325852848 - t12 * 5.72030388496)))
-        + (t12 * (173.96982183469882 + t10 * 100.00934789454 - t12 * 2.475293094555232)
-            + (t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716)
-                + (545.4360653175479 + t10 * 39.62510941338)));
-    let t22 = t17 * t21;
-    let t23 = t19 * t20;
-    6.507 * (t17 * (t23 - t22) + 2.0 * (t20 * t21) - 6.507 * (t20 * t20))
-        + (t19 * (t22 - t23) - t21 * t21)
+            + t21);
+    let t24 = t23
+        + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 * 12.847684415688) + t22);
+    let t25 = t13 * (t13 * 0.162131905 - t11 * 3.91186341) + (t10 * 11.11251889764 - K0);
+    let t26 = t12 * (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048) + t25;
+    let t27 = t13 * (K1 + t12 * 15.720444861287776 + t10 * 9.15905357189)
+        + t11 * (164.88325852848 - t12 * 5.72030388496);
+    let t28 = t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716)
+        + (K3 + t10 * 39.62510941338);
+    let t29 = p0
+        * (p0 * (p0 * (p0 * 2.672410572 + (t18 - t11 * 6.78804516)) + t26) + t27);
+    let t30 = t29 + (t12 * (K2 + t10 * 100.00934789454 - t12 * 2.475293094555232) + t28);
+    let t31 = t17 * t30;
+    let t32 = t20 * t24;
+    6.507 * (t17 * (t32 - t31) + 2.0 * (t24 * t30) - 6.507 * (t24 * t24))
+        + (t20 * (t31 - t32) - t30 * t30)
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` at the trim of `p0`, rad^2/s^2: at a zero of
-/// [`hurwitz_delta4`] the square of the frequency of the pair on the imaginary axis, positive
-/// at a Hopf point and negative at a neutral saddle (from the even and odd parts of
-/// `p(i omega) = 0` with `w^2` eliminated).
+/// `omega^2` at the trim of `p0`, rad^2/s^2, in the coefficients of
+/// [`characteristic_coefficients`]: at a zero of [`hurwitz_delta4`] the square of the
+/// frequency of the pair on the imaginary axis, positive at a Hopf point and negative
+/// at a neutral saddle (from the even and odd parts of `p(i omega) = 0` with `w^2`
+/// eliminated).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// omega^2 = (-c5 + c1*c4) / (-c3 + c1*c2)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 76 add/sub, 98 mul, 2 div, 0 neg, 0 libm (176 operations); straight-line, no branches.
+/// Cost after CSE: 74 add/sub, 98 mul, 2 div, 1 neg, 0 libm (175 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn hopf_omega_squared(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
+    /// exact: 84.989869664563152
+    const K0: f64 = 84.98986966456316;
+    /// exact: 10.593548621132256
+    const K1: f64 = 10.593548621132255;
+    /// exact: 173.969821834698816
+    const K2: f64 = 173.96982183469882;
+    /// exact: 545.43606531754788
+    const K3: f64 = 545.4360653175479;
     let t0 = p0 * 0.949;
     let t1 = p0 * 0.716;
     let t2 = delta_e * 28.37;
@@ -743,42 +886,137 @@ pub fn hopf_omega_squared(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t7 = p0 * 0.235;
     let t8 = p0 * t0 - 23.18;
     let t9 = 1.0
-        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329
-            + (1.0676708 - p0 * (t0 * 5.67) + 131.4306));
+        / (p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708
+            - p0 * (t0 * 5.67));
     let t10 = (t2 * (t4 - 5.71606) - delta_r * (t5 + t6)) * t9;
     let t11 = (delta_r * (1.081806 - t8) - t2 * (t1 * 1.329 + t7)) * t9;
     let t12 = (t2 * (-7.59664374 - p0 * t7) - delta_r * (1.329 * t6 + p0 * t8)) * t9;
-    let t13 = (delta_r * (-0.212033976 - p0 * t5 - 4.54328)
+    let t13 = (delta_r * (-(p0 * t5 + 4.755313976))
         - t2 * (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t4))) * t9;
     let t14 = t12 * (0.090216 - t12 * 0.520532);
     let t15 = t13 * t13 * 0.689923;
     let t16 = p0 * p0;
     let t17 = t13 * (0.085614984 - t12 * 0.987969736);
-    (6.507
-        * (p0
-            * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 * 6.78804516)))
-                + (t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341)
-                    + t11 * (-7.67388312 - t12 * 16.18802176)))
+    let t18 = t13 * (t13 * 1.21426448 + t11 * 16.85186)
+        + (144.241950533 + t10 * 23.0418);
+    let t19 = t13 * (16.3991180106 - t12 * 1.5066538474 + t10 * 20.76372341)
+        + t11 * (-7.67388312 - t12 * 16.18802176);
+    let t20 = t13 * (t13 * 4.338828467857 + t11 * 7.26315166)
+        + (227.986032885638 + t10 * 245.87545383);
+    let t21 = p0
+        * (p0 * (t16 * 0.679484 + (t14 + (t15 - 13.408282167444 + t10 * 6.78804516)))
+            + t19);
+    let t22 = t13 * (t13 * 0.162131905 - t11 * 3.91186341) + (t10 * 11.11251889764 - K0);
+    let t23 = t12 * (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048) + t22;
+    let t24 = t13 * (K1 + t12 * 15.720444861287776 + t10 * 9.15905357189)
+        + t11 * (164.88325852848 - t12 * 5.72030388496);
+    let t25 = t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716)
+        + (K3 + t10 * 39.62510941338);
+    let t26 = p0
+        * (p0 * (p0 * (p0 * 2.672410572 + (t17 - t11 * 6.78804516)) + t23) + t24);
+    let t27 = 6.507
+        * (t21
             + (t12 * (17.555232456144 + t10 * 8.83363887 - t12 * 12.847684415688)
-                + (t13 * (t13 * 4.338828467857 + t11 * 7.26315166)
-                    + (227.986032885638 + t10 * 245.87545383))))
-        - (p0
-            * (p0
-                * (p0 * (p0 * 2.672410572 + (t17 - t11 * 6.78804516))
-                    + (t12 * (-6.714609336 - t10 * 12.06593176 - t12 * 0.423713048)
-                        + (t13 * (t13 * 0.162131905 - t11 * 3.91186341)
-                            + (t10 * 11.11251889764 - 84.98986966456316))))
-                + (t13
-                    * (10.593548621132255 + t12 * 15.720444861287776
-                        + t10 * 9.15905357189)
-                    + t11 * (164.88325852848 - t12 * 5.72030388496)))
-            + (t12
-                * (173.96982183469882 + t10 * 100.00934789454 - t12 * 2.475293094555232)
-                + (t13 * (t13 * 5.24109923903202 + t11 * 96.3262428716)
-                    + (545.4360653175479 + t10 * 39.62510941338)))))
-        / (6.507 * (t14 + (41.025041 + t15 + t10 * 9.99 + t16 * 1.679484))
-            - (p0 * (p0 * 8.690623672 + (t17 - t11 * 9.99))
-                + (t12 * (7.363855224 + t10 * 4.12209 - t12 * 1.217524348)
-                    + (t13 * (t13 * 1.21426448 + t11 * 16.85186)
-                        + (144.241950533 + t10 * 23.0418)))))
+                + t20));
+    let t28 = p0 * (p0 * 8.690623672 + (t17 - t11 * 9.99))
+        + (t12 * (7.363855224 + t10 * 4.12209 - t12 * 1.217524348) + t18);
+    let t29 = t27
+        - (t26 + (t12 * (K2 + t10 * 100.00934789454 - t12 * 2.475293094555232) + t25));
+    t29 / (6.507 * (t14 + (41.025041 + t15 + t10 * 9.99 + t16 * 1.679484)) - t28)
+}
+#[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
+/// The Hopf polynomial `det(A)^10 Delta4` (issue 10) of this aircraft at the trim of `p0`
+/// (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
+/// [`hurwitz_delta4`], so its sign is that of Delta4 wherever det A != 0. Its real roots
+/// are the Hopf points (where [`hopf_omega_squared`] > 0), the neutral saddles (omega^2 < 0)
+/// and the roots of det A (the divergence roll rates).
+///
+/// At delta_r = 0 a polynomial of degree 48 in P0 and 6 in delta_e (154 terms,
+/// `model::specialise::hopf::hopf_polynomial`), evaluated here as the derivation builds
+/// it: the trim numerators N and det A by Cramer's rule, the cleared characteristic
+/// coefficients `C_k = det(A)^k c_k(N / det A)` as polynomials in N and det A (exact folded
+/// constants, no division) and Orlando's `Delta4(C_1, ..., C_5)`. Its expanded form in P0
+/// cancels far beyond double precision near the Hopf points; this form does not.
+///
+/// Arguments:
+/// - `p0`: trim roll rate P0, rad/s
+/// - `delta_e`: elevator deflection, rad
+/// - `delta_r`: rudder deflection, rad
+///
+/// Cost after CSE: 80 add/sub, 156 mul, 0 div, 1 neg, 0 libm (237 operations); straight-line, no branches.
+#[must_use]
+#[inline]
+pub fn hopf_polynomial(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
+    /// exact: 84.989869664563152
+    const K0: f64 = 84.98986966456316;
+    /// exact: 545.43606531754788
+    const K1: f64 = 545.4360653175479;
+    /// exact: 10.593548621132256
+    const K2: f64 = 10.593548621132255;
+    /// exact: 173.969821834698816
+    const K3: f64 = 173.96982183469882;
+    let t0 = p0 * 0.949;
+    let t1 = p0 * 0.716;
+    let t2 = delta_e * 28.37;
+    let t3 = 0.19129 + t0 * t1;
+    let t4 = p0 * (p0 * t3 - t1 * 23.18) - (-4.61538 - t3 * 0.196) * 1.329 + 132.4982708
+        - p0 * (t0 * 5.67);
+    let t5 = p0 * t1;
+    let t6 = p0 * 0.814;
+    let t7 = t0 * 0.196;
+    let t8 = t2 * (t5 - 5.71606) - delta_r * (t6 + t7);
+    let t9 = p0 * 0.235;
+    let t10 = p0 * t0 - 23.18;
+    let t11 = delta_r * (1.081806 - t10) - t2 * (t1 * 1.329 + t9);
+    let t12 = t2 * (-7.59664374 - p0 * t9) - delta_r * (1.329 * t7 + p0 * t10);
+    let t13 = delta_r * (-(p0 * t6 + 4.755313976))
+        - t2 * (p0 * 5.67 - (1.329 * (t1 * 0.196) + p0 * t5));
+    let t14 = t4 * 6.507;
+    let t15 = t4 * t4;
+    let t16 = p0 * p0;
+    let t17 = t4 * t12;
+    let t18 = t4 * t8;
+    let t19 = t15 * (41.025041 + t16 * 1.679484) + t13 * t13 * 0.689923 + t17 * 0.090216
+        - t12 * t12 * 0.520532 + t18 * 9.99;
+    let t20 = t4 * t15;
+    let t21 = t13 * t15;
+    let t22 = t12 * t15;
+    let t23 = t20 * (144.241950533 + t16 * 8.690623672) + t21 * (p0 * 0.085614984)
+        + t13 * (t4 * t13) * 1.21426448 + t22 * 7.363855224;
+    let t24 = t11 * t15;
+    let t25 = t8 * t15;
+    let t26 = t23 - t13 * t17 * (p0 * 0.987969736) - t12 * t17 * 1.217524348
+        - t24 * (p0 * 9.99) + t13 * (t4 * t11) * 16.85186;
+    let t27 = t26 + t25 * 23.0418 + t12 * t18 * 4.12209;
+    let t28 = t15 * t15;
+    let t29 = t13 * t20;
+    let t30 = t28 * (t16 * (t16 * 0.679484 - 13.408282167444) + 227.986032885638)
+        + t29 * (p0 * 16.3991180106);
+    let t31 = t12 * t20;
+    let t32 = t30 + t13 * t21 * (4.338828467857 + t16 * 0.689923)
+        + t31 * (17.555232456144 + t16 * 0.090216);
+    let t33 = t11 * t20;
+    let t34 = t32 - t13 * t22 * (p0 * 1.5066538474)
+        + t12 * t22 * (-12.847684415688 - t16 * 0.520532) - t33 * (p0 * 7.67388312);
+    let t35 = t8 * t20;
+    let t36 = t16 * 6.78804516;
+    let t37 = t34 + t13 * t24 * 7.26315166 - t12 * t24 * (p0 * 16.18802176)
+        + t35 * (245.87545383 + t36);
+    let t38 = t37 + t13 * t25 * (p0 * 20.76372341) + t12 * t25 * 8.83363887;
+    let t39 = t4 * t28 * (t16 * (t16 * 2.672410572 - K0) + K1)
+        + t13 * t28 * (p0 * (t16 * 0.085614984 + K2));
+    let t40 = t39 + t13 * t29 * (5.24109923903202 + t16 * 0.162131905)
+        + t12 * t28 * (K3 - t16 * 6.714609336);
+    let t41 = t40 + t13 * t31 * (p0 * (15.720444861287776 - t16 * 0.987969736))
+        + t12 * t31 * (-2.475293094555232 - t16 * 0.423713048);
+    let t42 = t41 + t11 * t28 * (p0 * (164.88325852848 - t36))
+        + t13 * t33 * (96.3262428716 - t16 * 3.91186341);
+    let t43 = t42 - t12 * t33 * (p0 * 5.72030388496)
+        + t8 * t28 * (39.62510941338 + t16 * 11.11251889764);
+    let t44 = t43 + t13 * t35 * (p0 * 9.15905357189)
+        + t12 * t35 * (100.00934789454 - t16 * 12.06593176);
+    let t45 = t19 * t44;
+    let t46 = t27 * t38;
+    t14 * (t19 * (t46 - t45) + t38 * t44 * 2.0 - t14 * (t38 * t38))
+        + (t27 * (t45 - t46) - t44 * t44)
 }

@@ -4,21 +4,23 @@
 // inputs: symbolic parameters; model 0.1.0; inputs hash 8c423ec7eeabf9cd (model::emit::inputs_hash).
 // Operation counts after common-subexpression elimination:
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  42      84       4       2       1     133
+//   trim                                  41      85       4       2       1     133
 //   zero_sideslip_trim                     9      23       2       1       0      35
 //   jacobian5                              2       6       0       4       0      12
-//   residual_denominator                  41      83       3       0       1     128
-//   stiffness                             61     110       4       0       1     176
-//   det_k                                 62     117       4       0       1     184
-//   det_j5                                90     163       3       0       1     257
+//   residual_denominator                  40      84       3       0       1     128
+//   stiffness                             60     111       4       0       1     176
+//   det_k                                 61     118       4       0       1     184
+//   det_j5                                89     164       3       0       1     257
 //   zero_sideslip_det_k                   23      44       1       0       0      68
 //   divergence_biquadratic                 5      10       0       0       0      15
-//   divergence_roll_rates                  8      14       2       1       3      28
-//   jump_polynomial                      291     433       0       1       1     726
-//   zero_sideslip_jump_polynomial         57     116       0       0       0     173
-//   characteristic_coefficients          191     244       3       1       1     440
-//   hurwitz_delta4                       197     254       3       0       1     455
-//   hopf_omega_squared                   193     246       4       0       1     444
+//   divergence_roll_rates                  7      14       2       2       4      29
+//   jump_polynomial                      272     452       0       1       1     726
+//   zero_sideslip_jump_polynomial         56     117       0       0       0     173
+//   characteristic_coefficients          190     245       3       1       1     440
+//   hurwitz_delta4                       196     255       3       0       1     455
+//   hopf_omega_squared                   192     247       4       0       1     444
+//   Prepared::new                         18      51       0       0       0      69
+//   Prepared::det_k                       48      84       1       0       2     135
 
 //! Closed-form roll-coupling jump criterion (Mahale & Ananthkrishnan, AIAA 2006-6267),
 //! generated from the model equations by exact symbolic derivation.
@@ -107,22 +109,32 @@ pub struct ZeroSideslipTrim {
     pub delta_r: f64,
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`
-/// for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw
-/// equation), and the aileron from the roll equation, a quadratic in delta_a
-/// `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the
-/// trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),
-/// element 1 the other root; both by the cancellation-free quadratic formula. NaN where
-/// the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw
-/// (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the
-/// divergence roll rates). The other functions of `p0` use element 0.
+/// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = [alpha0, beta0, Q0, R0]` solves
+/// `A x0 + b = 0` (Cramer's rule, one division by det A), affine in delta_a (aileron yaw
+/// `n_delta_a` enters b); the aileron then solves the roll equation `p_dot = 0` along it,
+/// a quadratic `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element
+/// 0 is the trim that continues the trim without aileron yaw (the root that tends to
+/// `-g0/g1`), element 1 the other root; both by the cancellation-free quadratic formula.
+/// NaN where the two trims of `p0` are complex; element 1 is infinite or NaN without
+/// aileron yaw (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0
+/// (the divergence roll rates). The other functions of `p0` use element 0.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A = [[z_alpha, -P0, 1, 0],
+///      [P0, y_beta, 0, -1],
+///      [m_alpha, 0, m_q, C*P0],
+///      [0, n_beta, -D*P0, n_r]]
+/// b = [0, 0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
+/// p_dot = l_p*P0 + l_r*R0 + l_beta*beta0 + l_delta_a*delta_a + l_delta_r*delta_r - E*Q0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 42 add/sub, 84 mul, 4 div, 2 neg, 1 libm (133 operations); straight-line, no branches.
+/// Cost after CSE: 41 add/sub, 85 mul, 4 div, 2 neg, 1 libm (133 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn trim(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
@@ -131,61 +143,75 @@ pub fn trim(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> [Trim; 2] {
     let t2 = delta_e * k.m_delta_e;
     let t3 = delta_r * k.n_delta_r + p0 * k.n_p;
     let t4 = k.m_q * k.n_r + t0 * t1;
-    let t5 = p0 * t1;
-    let t6 = k.n_beta + k.y_beta * k.n_r;
-    let t7 = p0 * k.m_q;
-    let t8 = k.y_beta * t0;
-    let t9 = t7 + t8;
-    let t10 = p0 * k.n_r;
-    let t11 = k.m_alpha + p0 * t0;
-    let t12 = k.z_alpha * k.m_q - t11;
-    let t13 = k.z_alpha * t8 + p0 * t11;
-    let t14 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t7 - k.y_beta * k.m_alpha;
-    let t15 = 1.0
-        / (k.z_alpha * (k.y_beta * t4 + k.m_q * k.n_beta)
-            + p0 * (p0 * t4 + k.m_alpha * t1)
+    let t5 = k.z_alpha * (k.y_beta * t4 + k.m_q * k.n_beta)
+        + p0 * (p0 * t4 + k.m_alpha * t1);
+    let t6 = p0 * t1;
+    let t7 = k.n_beta + k.y_beta * k.n_r;
+    let t8 = p0 * k.m_q;
+    let t9 = k.y_beta * t0;
+    let t10 = t8 + t9;
+    let t11 = p0 * k.n_r;
+    let t12 = k.m_alpha + p0 * t0;
+    let t13 = k.z_alpha * k.m_q - t12;
+    let t14 = k.z_alpha * t9 + p0 * t12;
+    let t15 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t8 - k.y_beta * k.m_alpha;
+    let t16 = 1.0
+        / (t5
             - (p0 * (k.n_beta * t0) + k.y_beta * (k.m_alpha * k.n_r)
                 + k.m_alpha * k.n_beta));
-    let t16 = (t2 * (t5 - t6) + t3 * t9) * t15;
-    let t17 = (t2 * (k.z_alpha * t1 + t10) + t3 * t12) * t15;
-    let t18 = (t3 * t13 - t2 * (k.z_alpha * t6 + p0 * t10)) * t15;
-    let t19 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t5)) - t3 * t14)
-        * t15;
-    let t20 = t15 * (k.n_delta_a * t9);
-    let t21 = t15 * (k.n_delta_a * t12);
-    let t22 = t15 * (k.n_delta_a * t13);
-    let t23 = t15 * (k.n_delta_a * t14);
-    let t24 = k.l_r - k.e * t18;
-    let t25 = t19 * t24 + (delta_r * k.l_delta_r - k.l_beta * t17 + p0 * k.l_p);
-    let t26 = k.e * 0.5 * (t22 * t23);
-    let t27 = k.l_delta_a - k.l_beta * t21 - t22 * (k.e * t19) - t23 * t24;
-    let t28 = t26 + t26;
-    let t29 = t27 * (1.0 + libm::sqrt(1.0 - t25 * t28 / (t27 * t27) * 4.0));
-    let t30 = t25 * 2.0 / t29;
+    let t17 = (t2 * (t6 - t7) + t3 * t10) * t16;
+    let t18 = (t2 * (k.z_alpha * t1 + t11) + t3 * t13) * t16;
+    let t19 = (t3 * t14 - t2 * (k.z_alpha * t7 + p0 * t11)) * t16;
+    let t20 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t6)) - t3 * t15)
+        * t16;
+    let t21 = t16 * (k.n_delta_a * t10);
+    let t22 = t16 * (k.n_delta_a * t13);
+    let t23 = t16 * (k.n_delta_a * t14);
+    let t24 = t16 * (k.n_delta_a * t15);
+    let t25 = k.l_r - k.e * t19;
+    let t26 = t20 * t25 + (delta_r * k.l_delta_r - k.l_beta * t18 + p0 * k.l_p);
+    let t27 = k.l_delta_a - k.l_beta * t22 - t23 * (k.e * t20) - t24 * t25;
+    let t28 = k.e * 0.5 * (t23 * t24) * 2.0;
+    let t29 = t27 * (1.0 + libm::sqrt(1.0 - t26 * t28 / (t27 * t27) * 4.0));
+    let t30 = t26 * 2.0 / t29;
     let t31 = t29 / (t28 * 2.0);
     [
         Trim {
-            alpha: t20 * t30 - t16,
-            beta: t21 * t30 - t17,
-            q: t18 - t22 * t30,
-            r: t19 + t23 * t30,
+            alpha: t21 * t30 - t17,
+            beta: t22 * t30 - t18,
+            q: t19 - t23 * t30,
+            r: t20 + t24 * t30,
             delta_a: -t30,
         },
         Trim {
-            alpha: t20 * t31 - t16,
-            beta: t21 * t31 - t17,
-            q: t18 - t22 * t31,
-            r: t19 + t23 * t31,
+            alpha: t21 * t31 - t17,
+            beta: t22 * t31 - t18,
+            q: t19 - t23 * t31,
+            r: t20 + t24 * t31,
             delta_a: -t31,
         },
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the
-/// rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the
-/// rudder from the roll and yaw equations together (with aileron yaw and roll due to
-/// rudder both controls enter both; the rudder is the schedule of the aileron-rudder
-/// interconnect, Fig. 9). Angles in rad, rates in rad/s.
+/// rudder freed; `[alpha0, Q0, R0]` solves `A1 x + b1 = 0` (the alpha, beta and q
+/// equations), the aileron and the rudder the roll and yaw equations together (with
+/// aileron yaw and roll due to rudder both controls enter both; the rudder is the
+/// schedule of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// A1 = [[z_alpha, 1, 0],
+///       [P0, 0, -1],
+///       [m_alpha, m_q, C*P0]]
+/// b1 = [0, 0, m_delta_e*delta_e]
+/// delta_a = (-l_p*n_delta_r*P0 - l_r*n_delta_r*R0 + n_p*l_delta_r*P0 + n_r*l_delta_r*R0
+///                - D*l_delta_r*P0*Q0 + E*n_delta_r*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// delta_r = (l_p*n_delta_a*P0 + l_r*n_delta_a*R0 - l_delta_a*n_p*P0 - l_delta_a*n_r*R0
+///                + D*l_delta_a*P0*Q0 - E*n_delta_a*Q0*R0)
+///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -212,7 +238,17 @@ pub fn zero_sideslip_trim(k: &Derivatives, p0: f64, delta_e: f64) -> ZeroSidesli
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The 5x5 Jacobian of the PSS model (Appendix A.2) at the state
-/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s.
+/// x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s;
+/// below with `(alpha0, beta0, P0, Q0, R0) = (alpha, beta, p, q, r)`.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// J5 = [[z_alpha, -P0, -beta0, 1, 0],
+///       [P0, y_beta, alpha0, 0, -1],
+///       [0, l_beta, l_p, -E*R0, l_r - E*Q0],
+///       [m_alpha, 0, C*R0, m_q, C*P0],
+///       [0, n_beta, n_p - D*Q0, -D*P0, n_r]]
+/// ```
 ///
 /// Arguments:
 /// - `alpha`: angle of attack, rad
@@ -241,15 +277,20 @@ pub fn jacobian5(
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// The static-residual denominator (Eq. 22) at the trim of `p0`:
-/// `d = l_p + l_r alpha0 - E Q0 alpha0 - E R0 beta0`, 1/s. det K has poles where d = 0 (Fig. 8).
+/// The static-residual denominator d (Eq. 22) at the trim of `p0`, 1/s. det K has
+/// poles where d = 0 (Fig. 8).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 41 add/sub, 83 mul, 3 div, 0 neg, 1 libm (128 operations); straight-line, no branches.
+/// Cost after CSE: 40 add/sub, 84 mul, 3 div, 0 neg, 1 libm (128 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn residual_denominator(
@@ -263,49 +304,63 @@ pub fn residual_denominator(
     let t2 = delta_e * k.m_delta_e;
     let t3 = delta_r * k.n_delta_r + p0 * k.n_p;
     let t4 = k.m_q * k.n_r + t0 * t1;
-    let t5 = p0 * t1;
-    let t6 = k.n_beta + k.y_beta * k.n_r;
-    let t7 = p0 * k.m_q;
-    let t8 = k.y_beta * t0;
-    let t9 = t7 + t8;
-    let t10 = p0 * k.n_r;
-    let t11 = k.m_alpha + p0 * t0;
-    let t12 = k.z_alpha * k.m_q - t11;
-    let t13 = k.z_alpha * t8 + p0 * t11;
-    let t14 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t7 - k.y_beta * k.m_alpha;
-    let t15 = 1.0
-        / (k.z_alpha * (k.y_beta * t4 + k.m_q * k.n_beta)
-            + p0 * (p0 * t4 + k.m_alpha * t1)
+    let t5 = k.z_alpha * (k.y_beta * t4 + k.m_q * k.n_beta)
+        + p0 * (p0 * t4 + k.m_alpha * t1);
+    let t6 = p0 * t1;
+    let t7 = k.n_beta + k.y_beta * k.n_r;
+    let t8 = p0 * k.m_q;
+    let t9 = k.y_beta * t0;
+    let t10 = t8 + t9;
+    let t11 = p0 * k.n_r;
+    let t12 = k.m_alpha + p0 * t0;
+    let t13 = k.z_alpha * k.m_q - t12;
+    let t14 = k.z_alpha * t9 + p0 * t12;
+    let t15 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t8 - k.y_beta * k.m_alpha;
+    let t16 = 1.0
+        / (t5
             - (p0 * (k.n_beta * t0) + k.y_beta * (k.m_alpha * k.n_r)
                 + k.m_alpha * k.n_beta));
-    let t16 = (t2 * (k.z_alpha * t1 + t10) + t3 * t12) * t15;
-    let t17 = (t3 * t13 - t2 * (k.z_alpha * t6 + p0 * t10)) * t15;
-    let t18 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t5)) - t3 * t14)
-        * t15;
-    let t19 = t15 * (k.n_delta_a * t12);
-    let t20 = t15 * (k.n_delta_a * t13);
-    let t21 = t15 * (k.n_delta_a * t14);
-    let t22 = k.l_r - k.e * t17;
-    let t23 = t18 * t22 + (delta_r * k.l_delta_r - k.l_beta * t16 + p0 * k.l_p);
-    let t24 = k.e * 0.5 * (t20 * t21);
-    let t25 = k.l_delta_a - k.l_beta * t19 - t20 * (k.e * t18) - t21 * t22;
-    let t26 = t23 * 2.0
-        / (t25 * (1.0 + libm::sqrt(1.0 - t23 * (t24 + t24) / (t25 * t25) * 4.0)));
-    let t27 = t15 * (k.n_delta_a * t9) * t26 - (t2 * (t5 - t6) + t3 * t9) * t15;
+    let t17 = (t2 * (k.z_alpha * t1 + t11) + t3 * t13) * t16;
+    let t18 = (t3 * t14 - t2 * (k.z_alpha * t7 + p0 * t11)) * t16;
+    let t19 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t6)) - t3 * t15)
+        * t16;
+    let t20 = t16 * (k.n_delta_a * t13);
+    let t21 = t16 * (k.n_delta_a * t14);
+    let t22 = t16 * (k.n_delta_a * t15);
+    let t23 = k.l_r - k.e * t18;
+    let t24 = t19 * t23 + (delta_r * k.l_delta_r - k.l_beta * t17 + p0 * k.l_p);
+    let t25 = k.l_delta_a - k.l_beta * t20 - t21 * (k.e * t19) - t22 * t23;
+    let t26 = t24 * 2.0
+        / (t25
+            * (1.0
+                + libm::sqrt(
+                    1.0 - t24 * (k.e * 0.5 * (t21 * t22) * 2.0) / (t25 * t25) * 4.0,
+                )));
+    let t27 = t16 * (k.n_delta_a * t10) * t26 - (t2 * (t6 - t7) + t3 * t10) * t16;
     k.l_p + k.l_r * t27
-        - k.e * ((t19 * t26 - t16) * (t18 + t21 * t26) + t27 * (t17 - t20 * t26))
+        - k.e * ((t20 * t26 - t17) * (t19 + t22 * t26) + t27 * (t18 - t21 * t26))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of `p0`:
-/// `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in Eqs 13-14,
-/// g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual (Eqs 22-25). 1/s^2.
+/// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of
+/// `p0`: `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in
+/// Eqs 13-14, g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual
+/// (Eqs 22-25). 1/s^2.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 61 add/sub, 110 mul, 4 div, 0 neg, 1 libm (176 operations); straight-line, no branches.
+/// Cost after CSE: 60 add/sub, 111 mul, 4 div, 0 neg, 1 libm (176 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn stiffness(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> [[f64; 2]; 2] {
@@ -314,66 +369,80 @@ pub fn stiffness(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> [[f64;
     let t2 = delta_e * k.m_delta_e;
     let t3 = delta_r * k.n_delta_r + p0 * k.n_p;
     let t4 = k.m_q * k.n_r + t0 * t1;
-    let t5 = p0 * t1;
-    let t6 = k.n_beta + k.y_beta * k.n_r;
-    let t7 = p0 * k.m_q;
-    let t8 = k.y_beta * t0;
-    let t9 = t7 + t8;
-    let t10 = p0 * k.n_r;
-    let t11 = k.z_alpha * k.m_q;
-    let t12 = k.m_alpha + p0 * t0;
-    let t13 = t11 - t12;
-    let t14 = k.z_alpha * t8 + p0 * t12;
-    let t15 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t7 - k.y_beta * k.m_alpha;
-    let t16 = 1.0
-        / (k.z_alpha * (k.y_beta * t4 + k.m_q * k.n_beta)
-            + p0 * (p0 * t4 + k.m_alpha * t1)
+    let t5 = k.z_alpha * (k.y_beta * t4 + k.m_q * k.n_beta)
+        + p0 * (p0 * t4 + k.m_alpha * t1);
+    let t6 = p0 * t1;
+    let t7 = k.n_beta + k.y_beta * k.n_r;
+    let t8 = p0 * k.m_q;
+    let t9 = k.y_beta * t0;
+    let t10 = t8 + t9;
+    let t11 = p0 * k.n_r;
+    let t12 = k.z_alpha * k.m_q;
+    let t13 = k.m_alpha + p0 * t0;
+    let t14 = t12 - t13;
+    let t15 = k.z_alpha * t9 + p0 * t13;
+    let t16 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t8 - k.y_beta * k.m_alpha;
+    let t17 = 1.0
+        / (t5
             - (p0 * (k.n_beta * t0) + k.y_beta * (k.m_alpha * k.n_r)
                 + k.m_alpha * k.n_beta));
-    let t17 = (t2 * (k.z_alpha * t1 + t10) + t3 * t13) * t16;
-    let t18 = (t3 * t14 - t2 * (k.z_alpha * t6 + p0 * t10)) * t16;
-    let t19 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t5)) - t3 * t15)
-        * t16;
-    let t20 = t16 * (k.n_delta_a * t13);
-    let t21 = t16 * (k.n_delta_a * t14);
-    let t22 = t16 * (k.n_delta_a * t15);
-    let t23 = k.l_r - k.e * t18;
-    let t24 = t19 * t23 + (delta_r * k.l_delta_r - k.l_beta * t17 + p0 * k.l_p);
-    let t25 = k.e * 0.5 * (t21 * t22);
-    let t26 = k.l_delta_a - k.l_beta * t20 - t21 * (k.e * t19) - t22 * t23;
-    let t27 = t24 * 2.0
-        / (t26 * (1.0 + libm::sqrt(1.0 - t24 * (t25 + t25) / (t26 * t26) * 4.0)));
-    let t28 = t16 * (k.n_delta_a * t9) * t27 - (t2 * (t5 - t6) + t3 * t9) * t16;
-    let t29 = t20 * t27 - t17;
-    let t30 = t21 * t27;
-    let t31 = t18 - t30;
-    let t32 = t19 + t22 * t27;
+    let t18 = (t2 * (k.z_alpha * t1 + t11) + t3 * t14) * t17;
+    let t19 = (t3 * t15 - t2 * (k.z_alpha * t7 + p0 * t11)) * t17;
+    let t20 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t6)) - t3 * t16)
+        * t17;
+    let t21 = t17 * (k.n_delta_a * t14);
+    let t22 = t17 * (k.n_delta_a * t15);
+    let t23 = t17 * (k.n_delta_a * t16);
+    let t24 = k.l_r - k.e * t19;
+    let t25 = t20 * t24 + (delta_r * k.l_delta_r - k.l_beta * t18 + p0 * k.l_p);
+    let t26 = k.l_delta_a - k.l_beta * t21 - t22 * (k.e * t20) - t23 * t24;
+    let t27 = t25 * 2.0
+        / (t26
+            * (1.0
+                + libm::sqrt(
+                    1.0 - t25 * (k.e * 0.5 * (t22 * t23) * 2.0) / (t26 * t26) * 4.0,
+                )));
+    let t28 = t17 * (k.n_delta_a * t10) * t27 - (t2 * (t6 - t7) + t3 * t10) * t17;
+    let t29 = t21 * t27 - t18;
+    let t30 = t22 * t27;
+    let t31 = t19 - t30;
+    let t32 = t20 + t23 * t27;
     let t33 = 1.0 / (k.l_p + k.l_r * t28 - k.e * (t29 * t32 + t28 * t31));
     let t34 = k.e * (k.z_alpha * t32 - p0 * t31) + p0 * k.l_r;
     let t35 = k.l_beta + k.y_beta * k.l_r - k.e * (p0 * t32 + k.y_beta * t31);
     let t36 = t33 * (k.c * (t32 + p0 * t28) + k.m_q * t29);
     let t37 = p0 * p0;
-    let t38 = t33 * (k.d * (t30 - t18 - p0 * t29) + (k.n_p + k.n_r * t28));
+    let t38 = t33 * (k.d * (t30 - t19 - p0 * t29) + (k.n_p + k.n_r * t28));
     [
         [
-            t11 - k.m_alpha - k.c * t37 + t34 * t36,
+            t12 - k.m_alpha - k.c * t37 + t34 * t36,
             t35 * t36 - p0 * (k.m_q + k.c * k.y_beta),
         ],
-        [p0 * (k.n_r + k.d * k.z_alpha) - t34 * t38, t6 - k.d * t37 - t35 * t38],
+        [p0 * (k.n_r + k.d * k.z_alpha) - t34 * t38, t7 - k.d * t37 - t35 * t38],
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the
 /// saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.
-/// Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared
-/// from g, h and d, on the trim branch of [`trim`].
+/// Evaluated as `det K0 - h^T adj(K0) g / d` (the matrix determinant lemma on
+/// `K = K0 - g h^T / d`) with the trim's denominator det A cleared from g, h and d, on
+/// the trim branch of [`trim`].
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
+///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
+/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
+/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 62 add/sub, 117 mul, 4 div, 0 neg, 1 libm (184 operations); straight-line, no branches.
+/// Cost after CSE: 61 add/sub, 118 mul, 4 div, 0 neg, 1 libm (184 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn det_k(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f64 {
@@ -385,59 +454,58 @@ pub fn det_k(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t5 = t3 + t4;
     let t6 = k.m_q * k.n_r + t0 * t1;
     let t7 = k.z_alpha * (k.y_beta * t6 + k.m_q * k.n_beta)
-        + p0 * (p0 * t6 + k.m_alpha * t1)
+        + p0 * (p0 * t6 + k.m_alpha * t1);
+    let t8 = t7
         - (p0 * (k.n_beta * t0) + k.y_beta * (k.m_alpha * k.n_r) + k.m_alpha * k.n_beta);
-    let t8 = p0 * t1;
-    let t9 = k.n_beta + k.y_beta * k.n_r;
-    let t10 = p0 * k.m_q;
-    let t11 = k.y_beta * t0;
-    let t12 = p0 * k.n_r;
-    let t13 = t2 * (k.z_alpha * t1 + t12);
-    let t14 = k.z_alpha * k.m_q;
-    let t15 = k.m_alpha + p0 * t0;
-    let t16 = t14 - t15;
-    let t17 = t2 * (k.z_alpha * t9 + p0 * t12);
-    let t18 = k.z_alpha * t11 + p0 * t15;
-    let t19 = t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t8));
-    let t20 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t10 - k.y_beta * k.m_alpha;
-    let t21 = 1.0 / t7;
-    let t22 = (t19 - t5 * t20) * t21;
-    let t23 = t21 * (k.n_delta_a * t18);
-    let t24 = t21 * (k.n_delta_a * t20);
-    let t25 = k.l_r - k.e * ((t5 * t18 - t17) * t21);
-    let t26 = t22 * t25
-        + (delta_r * k.l_delta_r - k.l_beta * ((t13 + t5 * t16) * t21) + p0 * k.l_p);
-    let t27 = k.e * 0.5 * (t23 * t24);
-    let t28 = k.l_delta_a - k.l_beta * (t21 * (k.n_delta_a * t16)) - t23 * (k.e * t22)
-        - t24 * t25;
-    let t29 = t4
-        + (t3
-            - k.n_delta_a
-                * (t26 * 2.0
-                    / (t28
-                        * (1.0
-                            + libm::sqrt(
-                                1.0 - t26 * (t27 + t27) / (t28 * t28) * 4.0,
-                            )))));
-    let t30 = t2 * (t8 - t9) + (t10 + t11) * t29;
-    let t31 = t13 + t16 * t29;
-    let t32 = t18 * t29 - t17;
-    let t33 = t19 - t20 * t29;
-    let t34 = k.m_q * t31 - k.c * t33 + t0 * t30;
-    let t35 = k.n_p * t7 - k.d * t32 + t1 * t31 - k.n_r * t30;
-    let t36 = p0 * k.e;
-    let t37 = p0 * p0;
-    let t38 = t14 - k.m_alpha - k.c * t37;
-    let t39 = p0 * (k.m_q + k.c * k.y_beta);
-    let t40 = p0 * (k.n_r + k.d * k.z_alpha);
-    let t41 = t9 - k.d * t37;
-    t38 * t41 + t39 * t40
-        - ((t7 * (p0 * k.l_r) + t33 * (k.e * k.z_alpha) - t32 * t36)
-            * (t34 * t41 + t35 * t39)
-            + (t7 * (k.l_beta + k.y_beta * k.l_r) - t33 * t36 - t32 * (k.e * k.y_beta))
-                * (t35 * t38 - t34 * t40))
-            / (k.l_p * (t7 * t7) + k.e * (t31 * t33) - k.l_r * (t7 * t30)
-                + k.e * (t30 * t32))
+    let t9 = p0 * t1;
+    let t10 = k.n_beta + k.y_beta * k.n_r;
+    let t11 = p0 * k.m_q;
+    let t12 = k.y_beta * t0;
+    let t13 = p0 * k.n_r;
+    let t14 = t2 * (k.z_alpha * t1 + t13);
+    let t15 = k.z_alpha * k.m_q;
+    let t16 = k.m_alpha + p0 * t0;
+    let t17 = t15 - t16;
+    let t18 = t2 * (k.z_alpha * t10 + p0 * t13);
+    let t19 = k.z_alpha * t12 + p0 * t16;
+    let t20 = t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t9));
+    let t21 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t11 - k.y_beta * k.m_alpha;
+    let t22 = 1.0 / t8;
+    let t23 = (t20 - t5 * t21) * t22;
+    let t24 = t22 * (k.n_delta_a * t19);
+    let t25 = t22 * (k.n_delta_a * t21);
+    let t26 = k.l_r - k.e * ((t5 * t19 - t18) * t22);
+    let t27 = t23 * t26
+        + (delta_r * k.l_delta_r - k.l_beta * ((t14 + t5 * t17) * t22) + p0 * k.l_p);
+    let t28 = k.l_delta_a - k.l_beta * (t22 * (k.n_delta_a * t17)) - t24 * (k.e * t23)
+        - t25 * t26;
+    let t29 = t27 * 2.0
+        / (t28
+            * (1.0
+                + libm::sqrt(
+                    1.0 - t27 * (k.e * 0.5 * (t24 * t25) * 2.0) / (t28 * t28) * 4.0,
+                )));
+    let t30 = t4 + (t3 - k.n_delta_a * t29);
+    let t31 = t2 * (t9 - t10) + (t11 + t12) * t30;
+    let t32 = t14 + t17 * t30;
+    let t33 = t19 * t30 - t18;
+    let t34 = t20 - t21 * t30;
+    let t35 = k.m_q * t32 - k.c * t34 + t0 * t31;
+    let t36 = k.n_p * t8 - k.d * t33 + t1 * t32 - k.n_r * t31;
+    let t37 = p0 * k.e;
+    let t38 = p0 * p0;
+    let t39 = t15 - k.m_alpha - k.c * t38;
+    let t40 = p0 * (k.m_q + k.c * k.y_beta);
+    let t41 = p0 * (k.n_r + k.d * k.z_alpha);
+    let t42 = t10 - k.d * t38;
+    let t43 = (t8 * (k.l_beta + k.y_beta * k.l_r) - t34 * t37 - t33 * (k.e * k.y_beta))
+        * (t36 * t39 - t35 * t41);
+    let t44 = (t8 * (p0 * k.l_r) + t34 * (k.e * k.z_alpha) - t33 * t37)
+        * (t35 * t42 + t36 * t40) + t43;
+    t39 * t42 + t40 * t41
+        - t44
+            / (k.l_p * (t8 * t8) + k.e * (t32 * t34) - k.l_r * (t8 * t31)
+                + k.e * (t31 * t33))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -448,7 +516,7 @@ pub fn det_k(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f64 {
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 90 add/sub, 163 mul, 3 div, 0 neg, 1 libm (257 operations); straight-line, no branches.
+/// Cost after CSE: 89 add/sub, 164 mul, 3 div, 0 neg, 1 libm (257 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn det_j5(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f64 {
@@ -457,88 +525,90 @@ pub fn det_j5(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     let t2 = delta_e * k.m_delta_e;
     let t3 = delta_r * k.n_delta_r + p0 * k.n_p;
     let t4 = k.m_q * k.n_r + t0 * t1;
-    let t5 = p0 * t1;
-    let t6 = k.n_beta + k.y_beta * k.n_r;
-    let t7 = p0 * k.m_q;
-    let t8 = k.y_beta * t0;
-    let t9 = t7 + t8;
-    let t10 = p0 * k.n_r;
-    let t11 = k.m_alpha + p0 * t0;
-    let t12 = k.z_alpha * k.m_q - t11;
-    let t13 = k.z_alpha * t8 + p0 * t11;
-    let t14 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t7 - k.y_beta * k.m_alpha;
-    let t15 = 1.0
-        / (k.z_alpha * (k.y_beta * t4 + k.m_q * k.n_beta)
-            + p0 * (p0 * t4 + k.m_alpha * t1)
+    let t5 = k.z_alpha * (k.y_beta * t4 + k.m_q * k.n_beta)
+        + p0 * (p0 * t4 + k.m_alpha * t1);
+    let t6 = p0 * t1;
+    let t7 = k.n_beta + k.y_beta * k.n_r;
+    let t8 = p0 * k.m_q;
+    let t9 = k.y_beta * t0;
+    let t10 = t8 + t9;
+    let t11 = p0 * k.n_r;
+    let t12 = k.m_alpha + p0 * t0;
+    let t13 = k.z_alpha * k.m_q - t12;
+    let t14 = k.z_alpha * t9 + p0 * t12;
+    let t15 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t8 - k.y_beta * k.m_alpha;
+    let t16 = 1.0
+        / (t5
             - (p0 * (k.n_beta * t0) + k.y_beta * (k.m_alpha * k.n_r)
                 + k.m_alpha * k.n_beta));
-    let t16 = (t2 * (k.z_alpha * t1 + t10) + t3 * t12) * t15;
-    let t17 = (t3 * t13 - t2 * (k.z_alpha * t6 + p0 * t10)) * t15;
-    let t18 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t5)) - t3 * t14)
-        * t15;
-    let t19 = t15 * (k.n_delta_a * t12);
-    let t20 = t15 * (k.n_delta_a * t13);
-    let t21 = t15 * (k.n_delta_a * t14);
-    let t22 = k.l_r - k.e * t17;
-    let t23 = t18 * t22 + (delta_r * k.l_delta_r - k.l_beta * t16 + p0 * k.l_p);
-    let t24 = k.e * 0.5 * (t20 * t21);
-    let t25 = k.l_delta_a - k.l_beta * t19 - t20 * (k.e * t18) - t21 * t22;
-    let t26 = t23 * 2.0
-        / (t25 * (1.0 + libm::sqrt(1.0 - t23 * (t24 + t24) / (t25 * t25) * 4.0)));
-    let t27 = t15 * (k.n_delta_a * t9) * t26 - (t2 * (t5 - t6) + t3 * t9) * t15;
-    let t28 = t19 * t26 - t16;
-    let t29 = t17 - t20 * t26;
-    let t30 = t18 + t21 * t26;
+    let t17 = (t2 * (k.z_alpha * t1 + t11) + t3 * t13) * t16;
+    let t18 = (t3 * t14 - t2 * (k.z_alpha * t7 + p0 * t11)) * t16;
+    let t19 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t6)) - t3 * t15)
+        * t16;
+    let t20 = t16 * (k.n_delta_a * t13);
+    let t21 = t16 * (k.n_delta_a * t14);
+    let t22 = t16 * (k.n_delta_a * t15);
+    let t23 = k.l_r - k.e * t18;
+    let t24 = t19 * t23 + (delta_r * k.l_delta_r - k.l_beta * t17 + p0 * k.l_p);
+    let t25 = k.l_delta_a - k.l_beta * t20 - t21 * (k.e * t19) - t22 * t23;
+    let t26 = t24 * 2.0
+        / (t25
+            * (1.0
+                + libm::sqrt(
+                    1.0 - t24 * (k.e * 0.5 * (t21 * t22) * 2.0) / (t25 * t25) * 4.0,
+                )));
+    let t27 = t16 * (k.n_delta_a * t10) * t26 - (t2 * (t6 - t7) + t3 * t10) * t16;
+    let t28 = t20 * t26 - t17;
+    let t29 = t18 - t21 * t26;
+    let t30 = t19 + t22 * t26;
     let t31 = k.e * t29;
     let t32 = 2.0 * t31 - k.l_r;
     let t33 = k.e * k.n_p;
     let t34 = k.l_p + k.l_r * t27;
-    let t35 = t31 - k.l_r;
-    let t36 = k.l_p * k.n_r;
-    let t37 = k.l_r - t31;
-    let t38 = k.n_beta * t37 - k.l_beta * k.n_r;
-    let t39 = k.n_p + k.n_r * t27;
-    let t40 = k.d * t29;
-    let t41 = t40 - t39;
-    p0
-        * (p0
-            * (p0
-                * (p0 * (k.l_p * (k.c * k.d))
-                    + k.c * (k.d * (t30 * t32 - k.l_beta * t28) - t30 * t33))
-                + (k.d
-                    * (t29
-                        * (k.l_r * k.m_q - t27 * (k.e * k.m_alpha) - k.c * k.l_beta
-                            - t29 * (k.e * k.m_q))
-                        + (k.c * (k.z_alpha * (k.y_beta * k.l_p - k.l_beta * t27))
-                            + k.m_alpha * t34))
-                    + (k.c
-                        * (k.e * (t30 * (k.n_r * t30 + k.n_beta * t28))
-                            + (k.l_beta * k.n_p - k.l_p * k.n_beta))
-                        + k.m_q * (k.n_p * t35 + t36))))
-            + (t30
-                * (k.c
-                    * (k.z_alpha
-                        * (k.d * (k.y_beta * t32 - k.l_beta)
-                            + k.e * (k.n_beta * t27 - k.y_beta * k.n_p)) + t38)
-                    + k.e * (k.m_alpha * t41))
-                + t28 * (k.d * (k.m_alpha * (k.y_beta * t35 - k.l_beta)) + k.m_q * t38)))
-        + (k.z_alpha
-            * (k.m_q
-                * (k.y_beta
-                    * (t29 * (t33 + k.d * k.l_r - t29 * (k.d * k.e))
-                        + (t36 - k.l_r * k.n_p))
-                    + (k.l_beta * t41 + k.n_beta * (k.l_p + t27 * t37)))
-                + k.c * (k.e * (t6 * (t30 * t30))))
-            + k.m_alpha
-                * (k.y_beta
-                    * (k.e * (t29 * (t40 - k.n_p) + t30 * (k.n_r * t28))
-                        + (k.l_r * (k.n_p - t40) - t36))
-                    + (k.n_beta * (k.e * (t28 * t30 + t27 * t29) - t34)
-                        + k.l_beta * (t39 - t40))))
+    let t35 = t29
+        * (k.l_r * k.m_q - t27 * (k.e * k.m_alpha) - k.c * k.l_beta
+            - t29 * (k.e * k.m_q));
+    let t36 = t31 - k.l_r;
+    let t37 = k.l_p * k.n_r;
+    let t38 = k.c
+        * (k.e * (t30 * (k.n_r * t30 + k.n_beta * t28))
+            + (k.l_beta * k.n_p - k.l_p * k.n_beta));
+    let t39 = k.d
+        * (t35
+            + (k.c * (k.z_alpha * (k.y_beta * k.l_p - k.l_beta * t27))
+                + k.m_alpha * t34));
+    let t40 = p0
+        * (p0 * (k.l_p * (k.c * k.d))
+            + k.c * (k.d * (t30 * t32 - k.l_beta * t28) - t30 * t33));
+    let t41 = k.l_r - t31;
+    let t42 = k.n_beta * t41 - k.l_beta * k.n_r;
+    let t43 = k.n_p + k.n_r * t27;
+    let t44 = k.d * t29;
+    let t45 = t44 - t43;
+    let t46 = k.c
+        * (k.z_alpha
+            * (k.d * (k.y_beta * t32 - k.l_beta)
+                + k.e * (k.n_beta * t27 - k.y_beta * k.n_p)) + t42);
+    let t47 = t30 * (t46 + k.e * (k.m_alpha * t45))
+        + t28 * (k.d * (k.m_alpha * (k.y_beta * t36 - k.l_beta)) + k.m_q * t42);
+    let t48 = k.y_beta
+        * (t29 * (t33 + k.d * k.l_r - t29 * (k.d * k.e)) + (t37 - k.l_r * k.n_p));
+    let t49 = k.m_q * (t48 + (k.l_beta * t45 + k.n_beta * (k.l_p + t27 * t41)))
+        + k.c * (k.e * (t7 * (t30 * t30)));
+    let t50 = k.y_beta
+        * (k.e * (t29 * (t44 - k.n_p) + t30 * (k.n_r * t28))
+            + (k.l_r * (k.n_p - t44) - t37));
+    let t51 = k.z_alpha * t49
+        + k.m_alpha
+            * (t50
+                + (k.n_beta * (k.e * (t28 * t30 + t27 * t29) - t34)
+                    + k.l_beta * (t43 - t44)));
+    p0 * (p0 * (t40 + (t39 + (t38 + k.m_q * (k.n_p * t36 + t37)))) + t47) + t51
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// det K (Eq. 27) at the zero-sideslip trim of `p0` (section V.D, Fig. 11), 1/s^4: its
-/// zeros mark the departure (transcritical point) of the zero-sideslip roll.
+/// zeros mark the departure (transcritical point) of the zero-sideslip roll. K0, g, h
+/// and d are those of [`det_k`] with `beta0 = 0`.
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
@@ -562,15 +632,23 @@ pub fn zero_sideslip_det_k(k: &Derivatives, p0: f64, delta_e: f64) -> f64 {
     let t11 = p0 * (k.m_q + k.c * k.y_beta);
     let t12 = p0 * (k.n_r + k.d * k.z_alpha);
     let t13 = k.n_beta + k.y_beta * k.n_r - k.d * t9;
+    let t14 = (t3 * (k.l_beta + k.y_beta * k.l_r) - t5 * t8 + t4 * (k.e * k.y_beta))
+        * (t7 * t10 + t6 * t12);
+    let t15 = (t3 * (p0 * k.l_r) + t5 * (k.e * k.z_alpha) + t4 * t8)
+        * (t7 * t11 - t6 * t13) + t14;
     t10 * t13 + t11 * t12
-        - ((t3 * (p0 * k.l_r) + t5 * (k.e * k.z_alpha) + t4 * t8) * (t7 * t11 - t6 * t13)
-            + (t3 * (k.l_beta + k.y_beta * k.l_r) - t5 * t8 + t4 * (k.e * k.y_beta))
-                * (t7 * t10 + t6 * t12))
-            / (k.l_p * (t3 * t3) + k.l_r * (t1 * t3) + k.e * (t1 * t4))
+        - t15 / (k.l_p * (t3 * t3) + k.l_r * (t1 * t3) + k.e * (t1 * t4))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive
-/// roots are the pitch-yaw divergence roll rates of Table 1.
+/// Coefficients [c0, c2, c4] of `det A = c4 P0^4 + c2 P0^2 + c0` (Eq. 5); its
+/// positive roots are the pitch-yaw divergence roll rates of Table 1.
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c0 = -m_alpha*n_beta + z_alpha*m_q*n_beta - y_beta*m_alpha*n_r + z_alpha*y_beta*m_q*n_r
+/// c2 = -C*n_beta + D*m_alpha + m_q*n_r + C*D*z_alpha*y_beta
+/// c4 = C*D
+/// ```
 ///
 /// Cost after CSE: 5 add/sub, 10 mul, 0 div, 0 neg, 0 libm (15 operations); straight-line, no branches.
 #[must_use]
@@ -585,23 +663,26 @@ pub fn divergence_biquadratic(k: &Derivatives) -> [f64; 3] {
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// The divergence roll rates P1, P2 of Eq. 5 (Table 1), rad/s:
-/// `P = sqrt((-c2 -+ sqrt(c2^2 - 4 c4 c0)) / (2 c4))`, ascending when c4 = C D > 0.
-/// NaN for a root that does not exist (negative discriminant or P0^2 < 0), without a branch.
+/// The divergence roll rates P1 <= P2 of Eq. 5 (Table 1), rad/s, the positive roots of
+/// `det A = c4 P0^4 + c2 P0^2 + c0` ([`divergence_biquadratic`]), by the cancellation-free
+/// quadratic formula in `P0^2`: `q = -(c2 + copysign(sqrt(c2^2 - 4 c4 c0), c2)) / 2`,
+/// `P1 = sqrt(c0 / q)` (the root of smaller magnitude), `P2 = sqrt(q / c4)`. Both are
+/// accurate to a few ulps of well-conditioned coefficients even when one root is tiny
+/// against the other (the textbook `(-c2 -+ sqrt(...)) / (2 c4)` loses the small one to
+/// cancellation); `c4 = 0` gives `P1 = sqrt(-c0 / c2)`. NaN for a root that does not
+/// exist (negative discriminant or `P0^2 < 0`), without a branch.
 ///
-/// Cost after CSE: 8 add/sub, 14 mul, 2 div, 1 neg, 3 libm (28 operations); straight-line, no branches.
+/// Cost after CSE: 7 add/sub, 14 mul, 2 div, 2 neg, 4 libm (29 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn divergence_roll_rates(k: &Derivatives) -> [f64; 2] {
     let t0 = k.n_beta + k.y_beta * k.n_r;
-    let t1 = k.c * (k.y_beta * (k.d * k.z_alpha) - k.n_beta)
+    let t1 = k.z_alpha * (k.m_q * t0) - k.m_alpha * t0;
+    let t2 = k.c * (k.y_beta * (k.d * k.z_alpha) - k.n_beta)
         + (k.m_q * k.n_r + k.d * k.m_alpha);
-    let t2 = k.c * k.d;
-    let t3 = libm::sqrt(
-        t1 * t1 - 4.0 * ((k.z_alpha * (k.m_q * t0) - k.m_alpha * t0) * t2),
-    );
-    let t4 = t2 * 2.0;
-    [libm::sqrt(-((t1 + t3) / t4)), libm::sqrt((t3 - t1) / t4)]
+    let t3 = k.c * k.d;
+    let t4 = 0.5 * (t2 + libm::sqrt(t2 * t2 - 4.0 * (t1 * t3)).copysign(t2));
+    [libm::sqrt(-(t1 / t4)), libm::sqrt(-(t4 / t3))]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Coefficients of P0^0 ..= P0^12 of the jump polynomial `det J5 * det(A)^2` (step 8).
@@ -613,7 +694,7 @@ pub fn divergence_roll_rates(k: &Derivatives) -> [f64; 2] {
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 291 add/sub, 433 mul, 0 div, 1 neg, 1 libm (726 operations); straight-line, no branches.
+/// Cost after CSE: 272 add/sub, 452 mul, 0 div, 1 neg, 1 libm (726 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn jump_polynomial(k: &Derivatives, delta_e: f64, delta_r: f64) -> [f64; 13] {
@@ -648,195 +729,188 @@ pub fn jump_polynomial(k: &Derivatives, delta_e: f64, delta_r: f64) -> [f64; 13]
     let t28 = k.c * (t26 - k.n_beta) + (k.m_q * k.n_r + t27);
     let t29 = k.c * k.d;
     let t30 = t25 * t25;
-    let t31 = t25 * t28;
-    let t32 = t25 * t29;
-    let t33 = t31 + t31;
-    let t34 = t28 * t29;
-    let t35 = t32 + (t32 + t28 * t28);
-    let t36 = t34 + t34;
-    let t37 = t29 * t29;
-    let t38 = k.l_r * k.n_p;
-    let t39 = k.l_p * k.n_r;
-    let t40 = k.l_beta * k.n_p;
-    let t41 = k.l_p * k.n_beta;
-    let t42 = k.z_alpha * (k.m_q * (k.y_beta * (t39 - t38) + (t41 - t40)))
-        + k.m_alpha * (k.y_beta * (t38 - t39) + (t40 - t41));
-    let t43 = k.l_r * k.m_q;
-    let t44 = k.c * k.l_beta;
-    let t45 = k.l_p * t28 + k.n_p * (t44 - t43);
-    let t46 = k.l_p * t29;
-    let t47 = t21 * t25;
-    let t48 = t22 * t25;
-    let t49 = t21 * t28 - t23 * t25;
-    let t50 = t22 * t28 - t9 * t25;
-    let t51 = t21 * t29 - t23 * t28;
-    let t52 = t22 * t29 - t9 * t28;
-    let t53 = t23 * t29;
-    let t54 = t9 * t29;
-    let t55 = k.l_beta + k.y_beta * k.l_r;
-    let t56 = k.l_beta * k.n_r;
-    let t57 = k.l_r * k.n_beta;
-    let t58 = t57 - t56;
-    let t59 = k.c * (t58 - k.z_alpha * (k.d * t55 + k.n_p * (k.e * k.y_beta)))
+    let t31 = t25 * t28 * 2.0;
+    let t32 = t28 * t28 + t25 * t29 * 2.0;
+    let t33 = 2.0 * (t28 * t29);
+    let t34 = t29 * t29;
+    let t35 = k.l_r * k.n_p;
+    let t36 = k.l_p * k.n_r;
+    let t37 = k.l_beta * k.n_p;
+    let t38 = k.l_p * k.n_beta;
+    let t39 = k.z_alpha * (k.m_q * (k.y_beta * (t36 - t35) + (t38 - t37)))
+        + k.m_alpha * (k.y_beta * (t35 - t36) + (t37 - t38));
+    let t40 = k.l_r * k.m_q;
+    let t41 = k.c * k.l_beta;
+    let t42 = k.l_p * t28 + k.n_p * (t41 - t40);
+    let t43 = k.l_p * t29;
+    let t44 = t21 * t25;
+    let t45 = t22 * t25;
+    let t46 = t21 * t28 - t23 * t25;
+    let t47 = t22 * t28 - t9 * t25;
+    let t48 = t21 * t29 - t23 * t28;
+    let t49 = t22 * t29 - t9 * t28;
+    let t50 = t23 * t29;
+    let t51 = t9 * t29;
+    let t52 = k.l_beta + k.y_beta * k.l_r;
+    let t53 = k.l_beta * k.n_r;
+    let t54 = k.l_r * k.n_beta;
+    let t55 = t54 - t53;
+    let t56 = k.c * (t55 - k.z_alpha * (k.d * t52 + k.n_p * (k.e * k.y_beta)))
         - k.n_p * (k.e * k.m_alpha);
-    let t60 = k.c * (k.e * k.n_p + k.d * k.l_r);
-    let t61 = t21 * t21;
-    let t62 = t21 * t22;
-    let t63 = t21 * t23;
-    let t64 = t9 * t21;
-    let t65 = t62 + t62;
-    let t66 = t22 * t23;
-    let t67 = t9 * t22;
-    let t68 = t22 * t22 - t63 - t63;
-    let t69 = t9 * t23;
-    let t70 = t64 + (t66 + (t64 + t66));
-    let t71 = t23 * t23 - t67 - t67;
-    let t72 = t69 + t69;
-    let t73 = t9 * t9;
-    let t74 = k.c * (k.e * (k.z_alpha * t0));
-    let t75 = k.c * k.e;
-    let t76 = k.n_r * t75;
-    let t77 = t16 * t25;
-    let t78 = t19 * t25;
-    let t79 = t14 * t25;
-    let t80 = t15 * t25;
-    let t81 = t20 * t25 - t16 * t28;
-    let t82 = t79 + t19 * t28;
-    let t83 = t14 * t28;
-    let t84 = t15 * t28;
-    let t85 = t80 + t20 * t28 - t16 * t29;
-    let t86 = t83 + t19 * t29;
-    let t87 = t84 + t20 * t29;
-    let t88 = t14 * t29;
-    let t89 = t15 * t29;
-    let t90 = k.m_alpha * t55;
-    let t91 = k.d * (k.z_alpha * (k.m_q * t55) - t90)
+    let t57 = k.c * (k.e * k.n_p + k.d * k.l_r);
+    let t58 = t21 * t21;
+    let t59 = 2.0 * (t21 * t22);
+    let t60 = t22 * t22 - 2.0 * (t21 * t23);
+    let t61 = 2.0 * (t9 * t21) + 2.0 * (t22 * t23);
+    let t62 = t23 * t23 - 2.0 * (t9 * t22);
+    let t63 = 2.0 * (t9 * t23);
+    let t64 = t9 * t9;
+    let t65 = k.c * (k.e * (k.z_alpha * t0));
+    let t66 = k.c * k.e;
+    let t67 = k.n_r * t66;
+    let t68 = t16 * t25;
+    let t69 = t19 * t25;
+    let t70 = t14 * t25;
+    let t71 = t15 * t25;
+    let t72 = t20 * t25 - t16 * t28;
+    let t73 = t70 + t19 * t28;
+    let t74 = t14 * t28;
+    let t75 = t15 * t28;
+    let t76 = t71 + t20 * t28 - t16 * t29;
+    let t77 = t74 + t19 * t29;
+    let t78 = t75 + t20 * t29;
+    let t79 = t14 * t29;
+    let t80 = t15 * t29;
+    let t81 = k.m_alpha * t52;
+    let t82 = k.d * (k.z_alpha * (k.m_q * t52) - t81)
         + k.e * (k.y_beta * (k.n_p * (t6 - k.m_alpha)));
-    let t92 = k.d * (t43 - t44) + k.n_p * (k.e * k.m_q);
-    let t93 = t16 * t21;
-    let t94 = t19 * t21 - t16 * t22;
-    let t95 = t16 * t23 + t19 * t22 + t20 * t21;
-    let t96 = t14 * t21;
-    let t97 = t9 * t16 - t19 * t23 + t20 * t22 + t96;
-    let t98 = t14 * t22;
-    let t99 = t14 * t23;
-    let t100 = t15 * t21;
-    let t101 = t98 - (t9 * t19 + t20 * t23) + t100;
-    let t102 = t15 * t22;
-    let t103 = t102 - (t9 * t20 + t99);
-    let t104 = t9 * t14 + t15 * t23;
-    let t105 = t9 * t15;
-    let t106 = k.e * (t27 + k.c * (t26 * 2.0 - k.n_beta));
-    let t107 = 2.0 * (k.e * t29);
-    let t108 = t16 * t16;
-    let t109 = t16 * t19;
-    let t110 = t16 * t20;
-    let t111 = t14 * t16;
-    let t112 = t15 * t16;
-    let t113 = t109 + t109;
-    let t114 = t19 * t20;
-    let t115 = t14 * t19;
-    let t116 = t15 * t19;
-    let t117 = t19 * t19 - t110 - t110;
-    let t118 = t14 * t20;
-    let t119 = t15 * t20;
-    let t120 = t114 + (t114 - t111) - t111;
-    let t121 = t14 * t14;
-    let t122 = t14 * t15;
-    let t123 = t115 + (t115 - t112 + t20 * t20) - t112;
-    let t124 = t116 + (t118 + (t116 + t118));
-    let t125 = t119 + (t119 + t121);
-    let t126 = t122 + t122;
-    let t127 = t15 * t15;
-    let t128 = k.d * (k.e * (k.y_beta * t7));
-    let t129 = k.d * k.e;
-    let t130 = k.m_q * t129;
-    let t131 = t8 * t25;
-    let t132 = t13 * t25;
-    let t133 = t79 + t8 * t28;
-    let t134 = t80 + t13 * t28;
-    let t135 = t83 + t8 * t29;
-    let t136 = t84 + t13 * t29;
-    let t137 = k.m_q * t58;
-    let t138 = t137 - k.d * t90;
-    let t139 = k.l_beta * t29;
-    let t140 = t8 * t21;
-    let t141 = t8 * t22 + t13 * t21;
-    let t142 = t96 + (t13 * t22 - t8 * t23);
-    let t143 = t100 + (t98 - (t8 * t9 + t13 * t23));
-    let t144 = t102 - (t99 + t9 * t13);
-    let t145 = k.e * t24;
-    let t146 = k.n_beta * t75;
-    let t147 = k.e * (k.m_alpha * (k.d * k.y_beta) - k.m_q * k.n_beta);
-    let t148 = t1 * t25;
-    let t149 = t3 * t25;
-    let t150 = t1 * t28 - t5 * t25;
-    let t151 = t3 * t28;
-    let t152 = t1 * t29 - t5 * t28;
-    let t153 = t3 * t29;
-    let t154 = t5 * t29;
-    let t155 = k.z_alpha * t137 + k.m_alpha * (t56 - t57);
-    let t156 = k.d * (k.l_r * k.m_alpha - k.l_beta * t17);
+    let t83 = k.d * (t40 - t41) + k.n_p * (k.e * k.m_q);
+    let t84 = t16 * t21;
+    let t85 = t19 * t21 - t16 * t22;
+    let t86 = t16 * t23 + t19 * t22 + t20 * t21;
+    let t87 = t14 * t21;
+    let t88 = t9 * t16 - t19 * t23 + t20 * t22 + t87;
+    let t89 = t14 * t22;
+    let t90 = t14 * t23;
+    let t91 = t15 * t21;
+    let t92 = t89 - (t9 * t19 + t20 * t23) + t91;
+    let t93 = t15 * t22;
+    let t94 = t93 - (t9 * t20 + t90);
+    let t95 = t9 * t14 + t15 * t23;
+    let t96 = t9 * t15;
+    let t97 = k.e * (t27 + k.c * (t26 * 2.0 - k.n_beta));
+    let t98 = 2.0 * (k.e * t29);
+    let t99 = t32 * t39 + t31 * t42 + t30 * t43 + (t47 * t56 - t45 * t57)
+        + (t62 * t65 + t60 * t67) + (t76 * t82 + t72 * t83);
+    let t100 = t33 * t39 + t32 * t42 + t31 * t43 + (t49 * t56 - t47 * t57)
+        + (t64 * t65 + t62 * t67) + (t78 * t82 + t76 * t83);
+    let t101 = t34 * t39 + t33 * t42 + t32 * t43 - (t51 * t56 + t49 * t57) + t64 * t67
+        + (t80 * t82 + t78 * t83);
+    let t102 = t16 * t16;
+    let t103 = t14 * t16;
+    let t104 = t15 * t16;
+    let t105 = 2.0 * (t16 * t19);
+    let t106 = t14 * t19;
+    let t107 = t15 * t19;
+    let t108 = t19 * t19 - 2.0 * (t16 * t20);
+    let t109 = t14 * t20;
+    let t110 = t15 * t20;
+    let t111 = 2.0 * (t19 * t20) - 2.0 * t103;
+    let t112 = t14 * t14;
+    let t113 = t20 * t20 + (2.0 * t106 - 2.0 * t104);
+    let t114 = 2.0 * t107 + 2.0 * t109;
+    let t115 = t112 + 2.0 * t110;
+    let t116 = 2.0 * (t14 * t15);
+    let t117 = t15 * t15;
+    let t118 = k.d * (k.e * (k.y_beta * t7));
+    let t119 = k.d * k.e;
+    let t120 = k.m_q * t119;
+    let t121 = t31 * t39 + t30 * t42 + t45 * t56 + (t60 * t65 + t58 * t67)
+        + (t72 * t82 - t68 * t83) + t85 * t97;
+    let t122 = t46 * t56 - t44 * t57 + (t59 * t67 - t61 * t65) + (t73 * t82 + t69 * t83)
+        + (t86 * t97 - t84 * t98);
+    let t123 = t48 * t56 - t46 * t57 + (t63 * t65 - t61 * t67) + (t77 * t82 + t73 * t83)
+        + (t92 * t97 + t86 * t98);
+    let t124 = t8 * t25;
+    let t125 = t13 * t25;
+    let t126 = t70 + t8 * t28;
+    let t127 = t71 + t13 * t28;
+    let t128 = t74 + t8 * t29;
+    let t129 = t75 + t13 * t29;
+    let t130 = k.m_q * t55;
+    let t131 = t130 - k.d * t81;
+    let t132 = k.l_beta * t29;
+    let t133 = t63 * t67 - (t50 * t56 + t48 * t57) + (t79 * t82 + t77 * t83)
+        + (t92 * t98 - t95 * t97) + (t116 * t118 - t114 * t120);
+    let t134 = t8 * t21;
+    let t135 = t8 * t22 + t13 * t21;
+    let t136 = t87 + (t13 * t22 - t8 * t23);
+    let t137 = t91 + (t89 - (t8 * t9 + t13 * t23));
+    let t138 = t93 - (t90 + t9 * t13);
+    let t139 = k.e * t24;
+    let t140 = k.n_beta * t66;
+    let t141 = k.e * (k.m_alpha * (k.d * k.y_beta) - k.m_q * k.n_beta);
+    let t142 = t122 + (t111 * t118 + t105 * t120) + (t126 * t131 - t124 * t132)
+        + (t137 * t139 + t135 * t140);
+    let t143 = t99 + (t88 * t97 + t85 * t98) + (t113 * t118 - t108 * t120)
+        + (t127 * t131 - t125 * t132) + (t138 * t139 + t136 * t140);
+    let t144 = t123 + (t114 * t118 - t111 * t120) + (t128 * t131 - t126 * t132)
+        + (t137 * t140 - t95 * t139);
+    let t145 = t100 + (t94 * t97 + t88 * t98) + (t115 * t118 - t113 * t120)
+        + (t129 * t131 - t127 * t132) + (t138 * t140 - t96 * t139);
+    let t146 = t1 * t25;
+    let t147 = t3 * t25;
+    let t148 = t1 * t28 - t5 * t25;
+    let t149 = t3 * t28;
+    let t150 = t1 * t29 - t5 * t28;
+    let t151 = t3 * t29;
+    let t152 = t5 * t29;
+    let t153 = k.z_alpha * t130 + k.m_alpha * (t53 - t54);
+    let t154 = k.d * (k.l_r * k.m_alpha - k.l_beta * t17);
+    let t155 = t121 + (t108 * t118 - t102 * t120) + t125 * t131
+        + (t136 * t139 + t134 * t140) + (t8 * t19 - t13 * t16) * t141;
+    let t156 = t101 + (t94 * t98 - t96 * t97) + (t117 * t118 - t115 * t120)
+        + (t80 * t131 - t129 * t132) - t96 * t140 + t117 * t141;
     let t157 = k.e * (k.n_beta * t17 - k.m_alpha * k.n_r);
-    let t158 = t1 * t16;
-    let t159 = t1 * t19 + t3 * t16;
-    let t160 = t1 * t20 - t3 * t19 + t5 * t16;
-    let t161 = t1 * t14 - t3 * t20 - t5 * t19;
-    let t162 = t1 * t15 - t3 * t14 - t5 * t20;
-    let t163 = t3 * t15 + t5 * t14;
-    let t164 = t5 * t15;
-    let t165 = k.e * (k.n_beta * t7);
-    let t166 = k.m_alpha * t129;
-    let t167 = 1.0 + libm::sqrt(-(k.n_delta_a * k.n_delta_a));
+    let t158 = t44 * t56 + t59 * t65 + t69 * t82 - t84 * t97 - t105 * t118 + t124 * t131
+        + t135 * t139 - t8 * t16 * t141 - t147 * t153;
+    let t159 = t143 + (t106 + (t8 * t14 + t13 * t20) - t104) * t141
+        + (t150 * t153 + t148 * t154);
+    let t160 = t1 * t16;
+    let t161 = t1 * t19 + t3 * t16;
+    let t162 = t1 * t20 - t3 * t19 + t5 * t16;
+    let t163 = t1 * t14 - t3 * t20 - t5 * t19;
+    let t164 = t1 * t15 - t3 * t14 - t5 * t20;
+    let t165 = t3 * t15 + t5 * t14;
+    let t166 = t5 * t15;
+    let t167 = k.e * (k.n_beta * t7);
+    let t168 = k.m_alpha * t119;
+    let t169 = t142 + (t8 * t20 + t13 * t19 - t103) * t141 - (t149 * t153 + t147 * t154)
+        - (t1 * t23 + t3 * t22 + t5 * t21) * t157;
+    let t170 = t144 + (t107 + (t109 + (t8 * t15 + t13 * t14))) * t141
+        - (t151 * t153 + t149 * t154) + (t3 * t9 + t5 * t23) * t157;
+    let t171 = 1.0 + libm::sqrt(-(k.n_delta_a * k.n_delta_a));
+    let t172 = t145 + (t110 + (t112 + t13 * t15)) * t141 + (t150 * t154 - t152 * t153)
+        + t5 * t9 * t157 - (t166 * t167 + t164 * t168);
     [
-        (t30 * t42 + t61 * t74 - t77 * t91 + t108 * t128 + t140 * t145 + t148 * t155
-            - t158 * t165) * t167,
-        (t47 * t59 + t65 * t74 + t78 * t91 - t93 * t106 - t113 * t128 + t131 * t138
-            + t141 * t145 - t8 * t16 * t147 - t149 * t155 + t1 * t21 * t157
-            + t159 * t165) * t167,
-        (t33 * t42 + t30 * t45 + t48 * t59 + (t68 * t74 + t61 * t76)
-            + (t81 * t91 - t77 * t92) + t94 * t106 + (t117 * t128 - t108 * t130)
-            + t132 * t138 + (t142 * t145 + t140 * t146) + (t8 * t19 - t13 * t16) * t147
-            + (t150 * t155 + t148 * t156) + (t1 * t22 - t3 * t21) * t157
-            + (t160 * t165 + t158 * t166)) * t167,
-        (t49 * t59 - t47 * t60 + (t65 * t76 - t70 * t74) + (t82 * t91 + t78 * t92)
-            + (t95 * t106 - t93 * t107) + (t120 * t128 + t113 * t130)
-            + (t133 * t138 - t131 * t139) + (t143 * t145 + t141 * t146)
-            + (t8 * t20 + t13 * t19 - t111) * t147 - (t151 * t155 + t149 * t156)
-            - (t1 * t23 + t3 * t22 + t5 * t21) * t157 + (t161 * t165 - t159 * t166))
-            * t167,
-        (t35 * t42 + t33 * t45 + t30 * t46 + (t50 * t59 - t48 * t60)
-            + (t71 * t74 + t68 * t76) + (t85 * t91 + t81 * t92)
-            + (t97 * t106 + t94 * t107) + (t123 * t128 - t117 * t130)
-            + (t134 * t138 - t132 * t139) + (t144 * t145 + t142 * t146)
-            + (t115 + (t8 * t14 + t13 * t20) - t112) * t147 + (t152 * t155 + t150 * t156)
-            + (t3 * t23 - t1 * t9 - t5 * t22) * t157 + (t162 * t165 - t160 * t166))
-            * t167,
-        (t51 * t59 - t49 * t60 + (t72 * t74 - t70 * t76) + (t86 * t91 + t82 * t92)
-            + (t101 * t106 + t95 * t107) + (t124 * t128 - t120 * t130)
-            + (t135 * t138 - t133 * t139) + (t143 * t146 - t104 * t145)
-            + (t116 + (t118 + (t8 * t15 + t13 * t14))) * t147
-            - (t153 * t155 + t151 * t156) + (t3 * t9 + t5 * t23) * t157
-            - (t163 * t165 + t161 * t166)) * t167,
-        (t36 * t42 + t35 * t45 + t33 * t46 + (t52 * t59 - t50 * t60)
-            + (t73 * t74 + t71 * t76) + (t87 * t91 + t85 * t92)
-            + (t103 * t106 + t97 * t107) + (t125 * t128 - t123 * t130)
-            + (t136 * t138 - t134 * t139) + (t144 * t146 - t105 * t145)
-            + (t119 + (t121 + t13 * t15)) * t147 + (t152 * t156 - t154 * t155)
-            + t5 * t9 * t157 - (t164 * t165 + t162 * t166)) * t167,
-        (t72 * t76 - (t53 * t59 + t51 * t60) + (t88 * t91 + t86 * t92)
-            + (t101 * t107 - t104 * t106) + (t126 * t128 - t124 * t130)
-            + (t88 * t138 - t135 * t139) - t104 * t146 + t126 * t147 - t153 * t156
-            + t163 * t166) * t167,
-        (t37 * t42 + t36 * t45 + t35 * t46 - (t54 * t59 + t52 * t60) + t73 * t76
-            + (t89 * t91 + t87 * t92) + (t103 * t107 - t105 * t106)
-            + (t127 * t128 - t125 * t130) + (t89 * t138 - t136 * t139) - t105 * t146
-            + t127 * t147 - t154 * t156 + t164 * t166) * t167,
-        (t53 * t60 + t88 * t92 - t104 * t107 - t126 * t130 - t88 * t139) * t167,
-        (t37 * t45 + t36 * t46 + t54 * t60 + t89 * t92 - t105 * t107 - t127 * t130
-            - t89 * t139) * t167,
+        (t30 * t39 + t58 * t65 - t68 * t82 + t102 * t118 + t134 * t139 + t146 * t153
+            - t160 * t167) * t171,
+        (t158 + t1 * t21 * t157 + t161 * t167) * t171,
+        (t155 + (t148 * t153 + t146 * t154) + (t1 * t22 - t3 * t21) * t157
+            + (t162 * t167 + t160 * t168)) * t171,
+        (t169 + (t163 * t167 - t161 * t168)) * t171,
+        (t159 + (t3 * t23 - t1 * t9 - t5 * t22) * t157 + (t164 * t167 - t162 * t168))
+            * t171,
+        (t170 - (t165 * t167 + t163 * t168)) * t171,
+        t172 * t171,
+        (t133 + (t79 * t131 - t128 * t132) - t95 * t140 + t116 * t141 - t151 * t154
+            + t165 * t168) * t171,
+        (t156 - t152 * t154 + t166 * t168) * t171,
+        (t50 * t57 + t79 * t83 - t95 * t98 - t116 * t120 - t79 * t132) * t171,
+        (t34 * t42 + t33 * t43 + t51 * t57 + t80 * t83 - t96 * t98 - t117 * t120
+            - t80 * t132) * t171,
         0.0,
-        t37 * t46 * t167,
+        t34 * t43 * t171,
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
@@ -846,7 +920,7 @@ pub fn jump_polynomial(k: &Derivatives, delta_e: f64, delta_r: f64) -> [f64; 13]
 /// Arguments:
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 57 add/sub, 116 mul, 0 div, 0 neg, 0 libm (173 operations); straight-line, no branches.
+/// Cost after CSE: 56 add/sub, 117 mul, 0 div, 0 neg, 0 libm (173 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn zero_sideslip_jump_polynomial(k: &Derivatives, delta_e: f64) -> [f64; 9] {
@@ -855,77 +929,85 @@ pub fn zero_sideslip_jump_polynomial(k: &Derivatives, delta_e: f64) -> [f64; 9] 
     let t2 = k.z_alpha * k.m_q;
     let t3 = t2 - k.m_alpha;
     let t4 = t3 * t3;
-    let t5 = k.c * t3;
-    let t6 = t5 + t5;
-    let t7 = k.c * k.c;
-    let t8 = k.l_r * k.n_p;
-    let t9 = k.l_p * k.n_r;
-    let t10 = k.l_beta * k.n_p;
-    let t11 = k.l_p * k.n_beta;
-    let t12 = k.z_alpha * (k.m_q * (k.y_beta * (t9 - t8) + (t11 - t10)))
-        + k.m_alpha * (k.y_beta * (t8 - t9) + (t10 - t11));
-    let t13 = k.y_beta * (k.d * k.z_alpha);
-    let t14 = k.d * k.m_alpha;
-    let t15 = k.l_r * k.m_q;
-    let t16 = k.c * k.l_beta;
-    let t17 = k.l_p * (k.c * (t13 - k.n_beta) + (k.m_q * k.n_r + t14))
-        + k.n_p * (t16 - t15);
-    let t18 = k.c * k.d;
-    let t19 = k.l_p * t18;
-    let t20 = t0 * t3;
-    let t21 = k.c * t0;
-    let t22 = k.l_beta + k.y_beta * k.l_r;
-    let t23 = k.l_beta * k.n_r;
-    let t24 = k.l_r * k.n_beta;
-    let t25 = t24 - t23;
-    let t26 = k.c * (t25 - k.z_alpha * (k.d * t22 + k.n_p * (k.e * k.y_beta)))
+    let t5 = k.c * t3 * 2.0;
+    let t6 = k.c * k.c;
+    let t7 = k.l_r * k.n_p;
+    let t8 = k.l_p * k.n_r;
+    let t9 = k.l_beta * k.n_p;
+    let t10 = k.l_p * k.n_beta;
+    let t11 = k.z_alpha * (k.m_q * (k.y_beta * (t8 - t7) + (t10 - t9)))
+        + k.m_alpha * (k.y_beta * (t7 - t8) + (t9 - t10));
+    let t12 = k.y_beta * (k.d * k.z_alpha);
+    let t13 = k.d * k.m_alpha;
+    let t14 = k.l_r * k.m_q;
+    let t15 = k.c * k.l_beta;
+    let t16 = k.l_p * (k.c * (t12 - k.n_beta) + (k.m_q * k.n_r + t13))
+        + k.n_p * (t15 - t14);
+    let t17 = k.c * k.d;
+    let t18 = k.l_p * t17;
+    let t19 = t0 * t3;
+    let t20 = k.c * t0;
+    let t21 = k.l_beta + k.y_beta * k.l_r;
+    let t22 = k.l_beta * k.n_r;
+    let t23 = k.l_r * k.n_beta;
+    let t24 = t23 - t22;
+    let t25 = k.c * (t24 - k.z_alpha * (k.d * t21 + k.n_p * (k.e * k.y_beta)))
         - k.n_p * (k.e * k.m_alpha);
-    let t27 = k.c * (k.e * k.n_p + k.d * k.l_r);
-    let t28 = t0 * t0;
-    let t29 = t1 * t3;
-    let t30 = k.c * t1;
-    let t31 = k.d * (k.z_alpha * (k.m_q * t22) - k.m_alpha * t22)
+    let t26 = k.c * (k.e * k.n_p + k.d * k.l_r);
+    let t27 = t0 * t0;
+    let t28 = t1 * t3;
+    let t29 = k.c * t1;
+    let t30 = k.d * (k.z_alpha * (k.m_q * t21) - k.m_alpha * t21)
         + k.e * (k.y_beta * (k.n_p * t3));
-    let t32 = k.d * (t15 - t16) + k.n_p * (k.e * k.m_q);
+    let t31 = k.d * (t14 - t15) + k.n_p * (k.e * k.m_q);
+    let t32 = t4 * t16 - t5 * t11 + t19 * t25
+        + t27 * (k.c * (k.e * (k.z_alpha * (k.n_beta + k.y_beta * k.n_r))));
     let t33 = t0 * t1;
-    let t34 = t1 * t1;
-    let t35 = k.m_alpha - t2;
-    let t36 = k.d * k.e;
-    let t37 = k.z_alpha * (k.m_q * t25) + k.m_alpha * (t23 - t24);
-    let t38 = k.c * k.z_alpha;
-    let t39 = k.d * (k.l_r * k.m_alpha - k.l_beta * t38);
+    let t34 = t6 * t11 - t5 * t16 + t4 * t18 - (t20 * t25 + t19 * t26)
+        + t27 * (k.n_r * (k.c * k.e)) + t29 * t31;
+    let t35 = t1 * t1;
+    let t36 = k.m_alpha - t2;
+    let t37 = k.d * k.e;
+    let t38 = k.z_alpha * (k.m_q * t24) + k.m_alpha * (t22 - t23);
+    let t39 = k.c * k.z_alpha;
+    let t40 = k.d * (k.l_r * k.m_alpha - k.l_beta * t39);
+    let t41 = t32 + (t29 * t30 - t28 * t31)
+        - t33 * (k.e * (t13 + k.c * (t12 * 2.0 - k.n_beta))) - t35 * (k.m_q * t37);
     [
-        t4 * t12 - t29 * t31 + t34 * (k.d * (k.e * (k.y_beta * t35))) + t20 * t37
-            - t33 * (k.e * (k.n_beta * t35)),
+        t4 * t11 - t28 * t30 + t35 * (k.d * (k.e * (k.y_beta * t36))) + t19 * t38
+            - t33 * (k.e * (k.n_beta * t36)),
         0.0,
-        t4 * t17 - t6 * t12 + t20 * t26
-            + t28 * (k.c * (k.e * (k.z_alpha * (k.n_beta + k.y_beta * k.n_r))))
-            + (t30 * t31 - t29 * t32)
-            - t33 * (k.e * (t14 + k.c * (t13 * 2.0 - k.n_beta))) - t34 * (k.m_q * t36)
-            + (t20 * t39 - t21 * t37)
-            + t28 * (k.e * (k.n_beta * t38 - k.m_alpha * k.n_r))
-            + t33 * (k.m_alpha * t36),
+        t41 + (t19 * t40 - t20 * t38)
+            + t27 * (k.e * (k.n_beta * t39 - k.m_alpha * k.n_r))
+            + t33 * (k.m_alpha * t37),
         0.0,
-        t7 * t12 - t6 * t17 + t4 * t19 - (t21 * t26 + t20 * t27)
-            + t28 * (k.n_r * (k.c * k.e)) + t30 * t32 - t33 * (2.0 * (k.e * t18))
-            - t21 * t39,
+        t34 - t33 * (2.0 * (k.e * t17)) - t20 * t40,
         0.0,
-        t7 * t17 - t6 * t19 + t21 * t27,
+        t6 * t16 - t5 * t18 + t20 * t26,
         0.0,
-        t7 * t19,
+        t6 * t18,
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
 /// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
-/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10).
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3
+/// to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// c1 = -z_alpha - y_beta - l_p - m_q - n_r
+/// c2 = -m_alpha + n_beta + z_alpha*y_beta + z_alpha*l_p + z_alpha*m_q + z_alpha*n_r + y_beta*l_p
+///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha0 + m_q*n_r
+///          + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 191 add/sub, 244 mul, 3 div, 1 neg, 1 libm (440 operations); straight-line, no branches.
+/// Cost after CSE: 190 add/sub, 245 mul, 3 div, 1 neg, 1 libm (440 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn characteristic_coefficients(
@@ -941,37 +1023,39 @@ pub fn characteristic_coefficients(
     let t4 = k.m_q * k.n_r;
     let t5 = t4 + t0 * t1;
     let t6 = k.m_alpha * k.n_r;
-    let t7 = p0 * t1;
-    let t8 = k.n_beta + k.y_beta * k.n_r;
-    let t9 = p0 * k.m_q;
-    let t10 = k.y_beta * t0;
-    let t11 = t9 + t10;
-    let t12 = p0 * k.n_r;
-    let t13 = k.m_alpha + p0 * t0;
-    let t14 = k.z_alpha * k.m_q - t13;
-    let t15 = k.z_alpha * t10 + p0 * t13;
-    let t16 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t9 - k.y_beta * k.m_alpha;
-    let t17 = 1.0
-        / (k.z_alpha * (k.y_beta * t5 + k.m_q * k.n_beta)
-            + p0 * (p0 * t5 + k.m_alpha * t1)
-            - (p0 * (k.n_beta * t0) + k.y_beta * t6 + k.m_alpha * k.n_beta));
-    let t18 = (t2 * (k.z_alpha * t1 + t12) + t3 * t14) * t17;
-    let t19 = (t3 * t15 - t2 * (k.z_alpha * t8 + p0 * t12)) * t17;
-    let t20 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t7)) - t3 * t16)
-        * t17;
-    let t21 = t17 * (k.n_delta_a * t14);
-    let t22 = t17 * (k.n_delta_a * t15);
-    let t23 = t17 * (k.n_delta_a * t16);
-    let t24 = k.l_r - k.e * t19;
-    let t25 = t20 * t24 + (delta_r * k.l_delta_r - k.l_beta * t18 + p0 * k.l_p);
-    let t26 = k.e * 0.5 * (t22 * t23);
-    let t27 = k.l_delta_a - k.l_beta * t21 - t22 * (k.e * t20) - t23 * t24;
-    let t28 = t25 * 2.0
-        / (t27 * (1.0 + libm::sqrt(1.0 - t25 * (t26 + t26) / (t27 * t27) * 4.0)));
-    let t29 = t17 * (k.n_delta_a * t11) * t28 - (t2 * (t7 - t8) + t3 * t11) * t17;
-    let t30 = t21 * t28 - t18;
-    let t31 = t19 - t22 * t28;
-    let t32 = t20 + t23 * t28;
+    let t7 = k.z_alpha * (k.y_beta * t5 + k.m_q * k.n_beta)
+        + p0 * (p0 * t5 + k.m_alpha * t1);
+    let t8 = p0 * t1;
+    let t9 = k.n_beta + k.y_beta * k.n_r;
+    let t10 = p0 * k.m_q;
+    let t11 = k.y_beta * t0;
+    let t12 = t10 + t11;
+    let t13 = p0 * k.n_r;
+    let t14 = k.m_alpha + p0 * t0;
+    let t15 = k.z_alpha * k.m_q - t14;
+    let t16 = k.z_alpha * t11 + p0 * t14;
+    let t17 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t10 - k.y_beta * k.m_alpha;
+    let t18 = 1.0 / (t7 - (p0 * (k.n_beta * t0) + k.y_beta * t6 + k.m_alpha * k.n_beta));
+    let t19 = (t2 * (k.z_alpha * t1 + t13) + t3 * t15) * t18;
+    let t20 = (t3 * t16 - t2 * (k.z_alpha * t9 + p0 * t13)) * t18;
+    let t21 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t8)) - t3 * t17)
+        * t18;
+    let t22 = t18 * (k.n_delta_a * t15);
+    let t23 = t18 * (k.n_delta_a * t16);
+    let t24 = t18 * (k.n_delta_a * t17);
+    let t25 = k.l_r - k.e * t20;
+    let t26 = t21 * t25 + (delta_r * k.l_delta_r - k.l_beta * t19 + p0 * k.l_p);
+    let t27 = k.l_delta_a - k.l_beta * t22 - t23 * (k.e * t21) - t24 * t25;
+    let t28 = t26 * 2.0
+        / (t27
+            * (1.0
+                + libm::sqrt(
+                    1.0 - t26 * (k.e * 0.5 * (t23 * t24) * 2.0) / (t27 * t27) * 4.0,
+                )));
+    let t29 = t18 * (k.n_delta_a * t12) * t28 - (t2 * (t8 - t9) + t3 * t12) * t18;
+    let t30 = t22 * t28 - t19;
+    let t31 = t20 - t23 * t28;
+    let t32 = t21 + t24 * t28;
     let t33 = k.m_q + k.n_r;
     let t34 = k.l_p + t33;
     let t35 = k.y_beta + t34;
@@ -993,116 +1077,112 @@ pub fn characteristic_coefficients(
     let t51 = k.n_beta * t29;
     let t52 = k.c * k.d;
     let t53 = k.y_beta + k.n_r;
-    let t54 = k.l_p + k.n_r;
-    let t55 = k.y_beta * t54;
-    let t56 = k.d * t31;
-    let t57 = k.n_p - t56;
-    let t58 = k.l_r * t57;
-    let t59 = k.l_p * k.n_r;
-    let t60 = k.y_beta + k.l_p;
-    let t61 = k.l_beta * t30;
-    let t62 = k.n_p + k.n_r * t29;
-    let t63 = t62 - t56;
-    let t64 = k.l_beta * t63;
-    let t65 = k.y_beta * k.l_p;
-    let t66 = k.z_alpha + k.y_beta;
-    let t67 = t29 * (k.e * k.m_alpha);
-    let t68 = t31 * (k.d * k.e);
-    let t69 = k.e * k.n_p;
-    let t70 = t69 + k.d * k.l_r;
-    let t71 = t31 * (t70 - t68);
-    let t72 = t31 * t57;
-    let t73 = t56 - k.n_p;
-    let t74 = t59 + k.l_r * t73;
-    let t75 = k.l_beta * (t56 - t62);
-    let t76 = k.n_beta * (k.l_p + t29 * t37);
-    let t77 = k.c * (k.e * (t8 * t42));
-    let t78 = k.l_r - 2.0 * t36;
-    let t79 = k.l_p + k.l_r * t29;
-    let t80 = k.n_beta * t49 + k.l_beta * k.n_r;
+    let t54 = t31 * (t31 * (k.d * t50) + (t51 - 2.0 * (t32 * (p0 * t52)) - k.n_p * t50));
+    let t55 = k.l_p + k.n_r;
+    let t56 = k.y_beta * t55;
+    let t57 = k.d * t31;
+    let t58 = k.n_p - t57;
+    let t59 = k.l_r * t58;
+    let t60 = k.l_p * k.n_r;
+    let t61 = k.y_beta + k.l_p;
+    let t62 = k.l_beta * t30;
+    let t63 = k.n_p + k.n_r * t29;
+    let t64 = t63 - t57;
+    let t65 = k.l_beta * t64;
+    let t66 = k.y_beta * (t59 + (k.m_alpha - t60))
+        + (t65 + (k.l_p * (k.m_alpha - k.n_beta) + (t6 - t29 * (k.l_r * k.n_beta))));
+    let t67 = k.m_q * (t59 + (t47 - t46 - t60) - t56)
+        + (p0 * (t62 + t32 * (k.l_r * t52) - p0 * (t55 + k.c * (k.d * t61))) + t66);
+    let t68 = k.z_alpha
+        * (k.d * (t31 * t49 - t40) + (t48 + (t47 - (k.n_beta + t4)) - t45 - t44 - t41));
+    let t69 = k.y_beta * k.l_p;
+    let t70 = k.d * (k.c * (k.z_alpha * t61 + (t69 - t47)) + (k.m_alpha + t38));
+    let t71 = k.z_alpha + k.y_beta;
+    let t72 = k.d
+        * (k.e * (t31 * (k.y_beta * 2.0 + k.z_alpha * 2.0)) - (k.l_beta + k.l_r * t71));
+    let t73 = t29 * (k.e * k.m_alpha);
+    let t74 = t30 * (k.d * (k.m_alpha * t49) + (k.n_beta * t37 - k.l_beta * t33));
+    let t75 = p0
+        * (t39 * t52
+            + (t70 + (k.c * (k.e * t42 - k.n_beta) + (t45 + (t4 + k.n_p * t49)))));
+    let t76 = t31 * (k.d * k.e);
+    let t77 = k.e * k.n_p;
+    let t78 = t77 + k.d * k.l_r;
+    let t79 = t31 * (t78 - t76);
+    let t80 = t31 * t58;
+    let t81 = t57 - k.n_p;
+    let t82 = t60 + k.l_r * t81;
+    let t83 = k.l_beta * (t57 - t63);
+    let t84 = k.n_beta * (k.l_p + t29 * t37);
+    let t85 = k.y_beta * (k.e * (t43 + t80) + t82)
+        + (t83 + (t84 + t42 * (k.n_r * (k.c * k.e))));
+    let t86 = k.c * (k.e * (t9 * t42));
+    let t87 = k.m_alpha
+        * (k.e * (t30 * (t32 * t53) + t31 * t81) + (t59 + (t47 - k.n_beta - t60) - t56))
+        + t86;
+    let t88 = k.z_alpha * (k.m_q * (t79 + (t56 + (t60 + (k.n_beta - t47 - t48)))) + t85);
+    let t89 = p0
+        * (t75
+            + (t32 * (k.c * (t72 + (k.e * (t51 - k.n_p * t71) - k.l_beta)) - t73)
+                + t74));
+    let t90 = k.l_r - 2.0 * t36;
+    let t91 = k.l_p + k.l_r * t29;
+    let t92 = t31 * (t31 * (k.e * k.m_q) + (t73 - k.l_r * k.m_q + k.c * k.l_beta));
+    let t93 = k.c
+        * (k.l_p * k.n_beta - k.l_beta * k.n_p
+            - k.e * (t32 * (k.n_r * t32 + k.n_beta * t30)));
+    let t94 = k.d * (t92 + (k.c * (k.z_alpha * (t47 - t69)) - k.m_alpha * t91))
+        + (t93 + k.m_q * (k.n_p * t37 - t60));
+    let t95 = k.n_beta * t49 + k.l_beta * k.n_r;
+    let t96 = k.c
+        * (k.z_alpha
+            * (k.d * (k.l_beta + k.y_beta * t90) + k.e * (k.y_beta * k.n_p - t51))
+            + t95);
+    let t97 = t32 * (t96 + k.e * (k.m_alpha * t64))
+        + t30 * (k.d * (k.m_alpha * (k.l_beta + k.y_beta * t37)) + k.m_q * t95);
+    let t98 = k.y_beta * (t82 + k.e * (t80 - t32 * (k.n_r * t30)))
+        + (t83 + k.n_beta * (t91 - k.e * (t30 * t32 + t29 * t31)));
+    let t99 = k.z_alpha
+        * (k.m_q
+            * (k.y_beta * (t31 * (t76 - t78) + (t48 - t60))
+                + (t65 + k.n_beta * (t29 * t49 - k.l_p))) - t86);
+    let t100 = p0
+        * (p0
+            * (p0 * (k.c * (k.d * (t62 + t32 * t90) + t32 * t77) - p0 * (k.l_p * t52))
+                + t94) + t97);
     [
         -(k.z_alpha + t35),
         k.z_alpha * t35
             + (k.d * (t38 + t40)
                 + (t41 + (t44 + (t45 + (t4 + (t46 - k.m_alpha) - t47 - t48))))),
-        k.z_alpha
-            * (k.d * (t31 * t49 - t40)
-                + (t48 + (t47 - (k.n_beta + t4)) - t45 - t44 - t41))
+        t68
             + (k.e
-                * (t31
-                    * (t31 * (k.d * t50)
-                        + (t51 - 2.0 * (t32 * (p0 * t52)) - k.n_p * t50))
+                * (t54
                     + t32 * (p0 * (k.c * k.n_p) - k.m_alpha * t30 - t32 * (k.c * t53)))
-                + (k.m_q * (t58 + (t47 - t46 - t59) - t55)
-                    + (p0 * (t61 + t32 * (k.l_r * t52) - p0 * (t54 + k.c * (k.d * t60)))
-                        + (k.y_beta * (t58 + (k.m_alpha - t59))
-                            + (t64
-                                + (k.l_p * (k.m_alpha - k.n_beta)
-                                    + (t6 - t29 * (k.l_r * k.n_beta)))))))),
-        p0
-            * (p0
-                * (t39 * t52
-                    + (k.d * (k.c * (k.z_alpha * t60 + (t65 - t47)) + (k.m_alpha + t38))
-                        + (k.c * (k.e * t42 - k.n_beta) + (t45 + (t4 + k.n_p * t49)))))
-                + (t32
-                    * (k.c
-                        * (k.d
-                            * (k.e * (t31 * (k.y_beta * 2.0 + k.z_alpha * 2.0))
-                                - (k.l_beta + k.l_r * t66))
-                            + (k.e * (t51 - k.n_p * t66) - k.l_beta)) - t67)
-                    + t30
-                        * (k.d * (k.m_alpha * t49) + (k.n_beta * t37 - k.l_beta * t33))))
-            + (k.z_alpha
-                * (k.m_q * (t71 + (t55 + (t59 + (k.n_beta - t47 - t48))))
-                    + (k.y_beta * (k.e * (t43 + t72) + t74)
-                        + (t75 + (t76 + t42 * (k.n_r * (k.c * k.e))))))
-                + (k.m_q * (k.y_beta * (t71 + (t59 - t48)) + (t75 + t76))
-                    + (k.m_alpha
-                        * (k.e * (t30 * (t32 * t53) + t31 * t73)
-                            + (t58 + (t47 - k.n_beta - t59) - t55)) + t77))),
-        p0
-            * (p0
-                * (p0
-                    * (k.c * (k.d * (t61 + t32 * t78) + t32 * t69) - p0 * (k.l_p * t52))
-                    + (k.d
-                        * (t31
-                            * (t31 * (k.e * k.m_q)
-                                + (t67 - k.l_r * k.m_q + k.c * k.l_beta))
-                            + (k.c * (k.z_alpha * (t47 - t65)) - k.m_alpha * t79))
-                        + (k.c
-                            * (k.l_p * k.n_beta - k.l_beta * k.n_p
-                                - k.e * (t32 * (k.n_r * t32 + k.n_beta * t30)))
-                            + k.m_q * (k.n_p * t37 - t59))))
-                + (t32
-                    * (k.c
-                        * (k.z_alpha
-                            * (k.d * (k.l_beta + k.y_beta * t78)
-                                + k.e * (k.y_beta * k.n_p - t51)) + t80)
-                        + k.e * (k.m_alpha * t63))
-                    + t30
-                        * (k.d * (k.m_alpha * (k.l_beta + k.y_beta * t37))
-                            + k.m_q * t80)))
-            + (k.z_alpha
-                * (k.m_q
-                    * (k.y_beta * (t31 * (t68 - t70) + (t48 - t59))
-                        + (t64 + k.n_beta * (t29 * t49 - k.l_p))) - t77)
-                + k.m_alpha
-                    * (k.y_beta * (t74 + k.e * (t72 - t32 * (k.n_r * t30)))
-                        + (t75 + k.n_beta * (t79 - k.e * (t30 * t32 + t29 * t31))))),
+                + t67),
+        t89 + (t88 + (k.m_q * (k.y_beta * (t79 + (t60 - t48)) + (t83 + t84)) + t87)),
+        t100 + (t99 + k.m_alpha * t98),
     ]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// The fourth Hurwitz determinant of J5 at the trim of `p0`,
-/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`, 1/s^10.
-/// By Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
-/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle (`+-lambda`).
+/// `Delta4 = det [[c1, c3, c5, 0], [1, c2, c4, 0], [0, c1, c3, c5], [0, 1, c2, c4]]`
+/// (expanded below) in the coefficients of [`characteristic_coefficients`], 1/s^10. By
+/// Orlando's formula it is, up to sign, the product of `l_i + l_j` over the ten
+/// eigenvalue pairs: zero at a Hopf point (pair `+-i omega`) or a neutral saddle
+/// (`+-lambda`).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// Delta4 = -c5^2 + 2*c1*c4*c5 + c2*c3*c5 - c3^2*c4 - c1^2*c4^2 - c1*c2^2*c5 + c1*c2*c3*c4
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 197 add/sub, 254 mul, 3 div, 0 neg, 1 libm (455 operations); straight-line, no branches.
+/// Cost after CSE: 196 add/sub, 255 mul, 3 div, 0 neg, 1 libm (455 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn hurwitz_delta4(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f64 {
@@ -1113,37 +1193,39 @@ pub fn hurwitz_delta4(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f
     let t4 = k.m_q * k.n_r;
     let t5 = t4 + t0 * t1;
     let t6 = k.m_alpha * k.n_r;
-    let t7 = p0 * t1;
-    let t8 = k.n_beta + k.y_beta * k.n_r;
-    let t9 = p0 * k.m_q;
-    let t10 = k.y_beta * t0;
-    let t11 = t9 + t10;
-    let t12 = p0 * k.n_r;
-    let t13 = k.m_alpha + p0 * t0;
-    let t14 = k.z_alpha * k.m_q - t13;
-    let t15 = k.z_alpha * t10 + p0 * t13;
-    let t16 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t9 - k.y_beta * k.m_alpha;
-    let t17 = 1.0
-        / (k.z_alpha * (k.y_beta * t5 + k.m_q * k.n_beta)
-            + p0 * (p0 * t5 + k.m_alpha * t1)
-            - (p0 * (k.n_beta * t0) + k.y_beta * t6 + k.m_alpha * k.n_beta));
-    let t18 = (t2 * (k.z_alpha * t1 + t12) + t3 * t14) * t17;
-    let t19 = (t3 * t15 - t2 * (k.z_alpha * t8 + p0 * t12)) * t17;
-    let t20 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t7)) - t3 * t16)
-        * t17;
-    let t21 = t17 * (k.n_delta_a * t14);
-    let t22 = t17 * (k.n_delta_a * t15);
-    let t23 = t17 * (k.n_delta_a * t16);
-    let t24 = k.l_r - k.e * t19;
-    let t25 = t20 * t24 + (delta_r * k.l_delta_r - k.l_beta * t18 + p0 * k.l_p);
-    let t26 = k.e * 0.5 * (t22 * t23);
-    let t27 = k.l_delta_a - k.l_beta * t21 - t22 * (k.e * t20) - t23 * t24;
-    let t28 = t25 * 2.0
-        / (t27 * (1.0 + libm::sqrt(1.0 - t25 * (t26 + t26) / (t27 * t27) * 4.0)));
-    let t29 = t17 * (k.n_delta_a * t11) * t28 - (t2 * (t7 - t8) + t3 * t11) * t17;
-    let t30 = t21 * t28 - t18;
-    let t31 = t19 - t22 * t28;
-    let t32 = t20 + t23 * t28;
+    let t7 = k.z_alpha * (k.y_beta * t5 + k.m_q * k.n_beta)
+        + p0 * (p0 * t5 + k.m_alpha * t1);
+    let t8 = p0 * t1;
+    let t9 = k.n_beta + k.y_beta * k.n_r;
+    let t10 = p0 * k.m_q;
+    let t11 = k.y_beta * t0;
+    let t12 = t10 + t11;
+    let t13 = p0 * k.n_r;
+    let t14 = k.m_alpha + p0 * t0;
+    let t15 = k.z_alpha * k.m_q - t14;
+    let t16 = k.z_alpha * t11 + p0 * t14;
+    let t17 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t10 - k.y_beta * k.m_alpha;
+    let t18 = 1.0 / (t7 - (p0 * (k.n_beta * t0) + k.y_beta * t6 + k.m_alpha * k.n_beta));
+    let t19 = (t2 * (k.z_alpha * t1 + t13) + t3 * t15) * t18;
+    let t20 = (t3 * t16 - t2 * (k.z_alpha * t9 + p0 * t13)) * t18;
+    let t21 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t8)) - t3 * t17)
+        * t18;
+    let t22 = t18 * (k.n_delta_a * t15);
+    let t23 = t18 * (k.n_delta_a * t16);
+    let t24 = t18 * (k.n_delta_a * t17);
+    let t25 = k.l_r - k.e * t20;
+    let t26 = t21 * t25 + (delta_r * k.l_delta_r - k.l_beta * t19 + p0 * k.l_p);
+    let t27 = k.l_delta_a - k.l_beta * t22 - t23 * (k.e * t21) - t24 * t25;
+    let t28 = t26 * 2.0
+        / (t27
+            * (1.0
+                + libm::sqrt(
+                    1.0 - t26 * (k.e * 0.5 * (t23 * t24) * 2.0) / (t27 * t27) * 4.0,
+                )));
+    let t29 = t18 * (k.n_delta_a * t12) * t28 - (t2 * (t8 - t9) + t3 * t12) * t18;
+    let t30 = t22 * t28 - t19;
+    let t31 = t20 - t23 * t28;
+    let t32 = t21 + t24 * t28;
     let t33 = k.m_q + k.n_r;
     let t34 = k.l_p + t33;
     let t35 = k.y_beta + t34;
@@ -1169,106 +1251,108 @@ pub fn hurwitz_delta4(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f
     let t53 = k.n_beta * t29;
     let t54 = k.c * k.d;
     let t55 = k.y_beta + k.n_r;
-    let t56 = k.l_p + k.n_r;
-    let t57 = k.y_beta * t56;
-    let t58 = k.d * t31;
-    let t59 = k.n_p - t58;
-    let t60 = k.l_r * t59;
-    let t61 = k.l_p * k.n_r;
-    let t62 = k.y_beta + k.l_p;
-    let t63 = k.l_beta * t30;
-    let t64 = k.n_p + k.n_r * t29;
-    let t65 = t64 - t58;
-    let t66 = k.l_beta * t65;
-    let t67 = k.z_alpha
-        * (k.d * (t31 * t51 - t41) + (t49 + (t48 - (k.n_beta + t4)) - t46 - t45 - t42))
-        + (k.e
-            * (t31 * (t31 * (k.d * t52) + (t53 - 2.0 * (t32 * (p0 * t54)) - k.n_p * t52))
-                + t32 * (p0 * (k.c * k.n_p) - k.m_alpha * t30 - t32 * (k.c * t55)))
-            + (k.m_q * (t60 + (t48 - t47 - t61) - t57)
-                + (p0 * (t63 + t32 * (k.l_r * t54) - p0 * (t56 + k.c * (k.d * t62)))
-                    + (k.y_beta * (t60 + (k.m_alpha - t61))
-                        + (t66
-                            + (k.l_p * (k.m_alpha - k.n_beta)
-                                + (t6 - t29 * (k.l_r * k.n_beta))))))));
-    let t68 = k.y_beta * k.l_p;
-    let t69 = k.z_alpha + k.y_beta;
-    let t70 = t29 * (k.e * k.m_alpha);
-    let t71 = t31 * (k.d * k.e);
-    let t72 = k.e * k.n_p;
-    let t73 = t72 + k.d * k.l_r;
-    let t74 = t31 * (t73 - t71);
-    let t75 = t31 * t59;
-    let t76 = t58 - k.n_p;
-    let t77 = t61 + k.l_r * t76;
-    let t78 = k.l_beta * (t58 - t64);
-    let t79 = k.n_beta * (k.l_p + t29 * t38);
-    let t80 = k.c * (k.e * (t8 * t43));
-    let t81 = p0
+    let t56 = t31 * (t31 * (k.d * t52) + (t53 - 2.0 * (t32 * (p0 * t54)) - k.n_p * t52));
+    let t57 = k.l_p + k.n_r;
+    let t58 = k.y_beta * t57;
+    let t59 = k.d * t31;
+    let t60 = k.n_p - t59;
+    let t61 = k.l_r * t60;
+    let t62 = k.l_p * k.n_r;
+    let t63 = k.y_beta + k.l_p;
+    let t64 = k.l_beta * t30;
+    let t65 = k.n_p + k.n_r * t29;
+    let t66 = t65 - t59;
+    let t67 = k.l_beta * t66;
+    let t68 = k.y_beta * (t61 + (k.m_alpha - t62))
+        + (t67 + (k.l_p * (k.m_alpha - k.n_beta) + (t6 - t29 * (k.l_r * k.n_beta))));
+    let t69 = k.m_q * (t61 + (t48 - t47 - t62) - t58)
+        + (p0 * (t64 + t32 * (k.l_r * t54) - p0 * (t57 + k.c * (k.d * t63))) + t68);
+    let t70 = k.z_alpha
+        * (k.d * (t31 * t51 - t41) + (t49 + (t48 - (k.n_beta + t4)) - t46 - t45 - t42));
+    let t71 = t70
+        + (k.e * (t56 + t32 * (p0 * (k.c * k.n_p) - k.m_alpha * t30 - t32 * (k.c * t55)))
+            + t69);
+    let t72 = k.y_beta * k.l_p;
+    let t73 = k.d * (k.c * (k.z_alpha * t63 + (t72 - t48)) + (k.m_alpha + t39));
+    let t74 = k.z_alpha + k.y_beta;
+    let t75 = k.d
+        * (k.e * (t31 * (k.y_beta * 2.0 + k.z_alpha * 2.0)) - (k.l_beta + k.l_r * t74));
+    let t76 = t29 * (k.e * k.m_alpha);
+    let t77 = t30 * (k.d * (k.m_alpha * t51) + (k.n_beta * t38 - k.l_beta * t33));
+    let t78 = p0
+        * (t40 * t54
+            + (t73 + (k.c * (k.e * t43 - k.n_beta) + (t46 + (t4 + k.n_p * t51)))));
+    let t79 = t31 * (k.d * k.e);
+    let t80 = k.e * k.n_p;
+    let t81 = t80 + k.d * k.l_r;
+    let t82 = t31 * (t81 - t79);
+    let t83 = t31 * t60;
+    let t84 = t59 - k.n_p;
+    let t85 = t62 + k.l_r * t84;
+    let t86 = k.l_beta * (t59 - t65);
+    let t87 = k.n_beta * (k.l_p + t29 * t38);
+    let t88 = k.y_beta * (k.e * (t44 + t83) + t85)
+        + (t86 + (t87 + t43 * (k.n_r * (k.c * k.e))));
+    let t89 = k.c * (k.e * (t9 * t43));
+    let t90 = k.m_alpha
+        * (k.e * (t30 * (t32 * t55) + t31 * t84) + (t61 + (t48 - k.n_beta - t62) - t58))
+        + t89;
+    let t91 = k.z_alpha * (k.m_q * (t82 + (t58 + (t62 + (k.n_beta - t48 - t49)))) + t88);
+    let t92 = p0
+        * (t78
+            + (t32 * (k.c * (t75 + (k.e * (t53 - k.n_p * t74) - k.l_beta)) - t76)
+                + t77));
+    let t93 = t92
+        + (t91 + (k.m_q * (k.y_beta * (t82 + (t62 - t49)) + (t86 + t87)) + t90));
+    let t94 = k.l_r - 2.0 * t37;
+    let t95 = k.l_p + k.l_r * t29;
+    let t96 = t31 * (t31 * (k.e * k.m_q) + (t76 - k.l_r * k.m_q + k.c * k.l_beta));
+    let t97 = k.c
+        * (k.l_p * k.n_beta - k.l_beta * k.n_p
+            - k.e * (t32 * (k.n_r * t32 + k.n_beta * t30)));
+    let t98 = k.d * (t96 + (k.c * (k.z_alpha * (t48 - t72)) - k.m_alpha * t95))
+        + (t97 + k.m_q * (k.n_p * t38 - t62));
+    let t99 = k.n_beta * t51 + k.l_beta * k.n_r;
+    let t100 = k.c
+        * (k.z_alpha
+            * (k.d * (k.l_beta + k.y_beta * t94) + k.e * (k.y_beta * k.n_p - t53))
+            + t99);
+    let t101 = t32 * (t100 + k.e * (k.m_alpha * t66))
+        + t30 * (k.d * (k.m_alpha * (k.l_beta + k.y_beta * t38)) + k.m_q * t99);
+    let t102 = k.y_beta * (t85 + k.e * (t83 - t32 * (k.n_r * t30)))
+        + (t86 + k.n_beta * (t95 - k.e * (t30 * t32 + t29 * t31)));
+    let t103 = k.z_alpha
+        * (k.m_q
+            * (k.y_beta * (t31 * (t79 - t81) + (t49 - t62))
+                + (t67 + k.n_beta * (t29 * t51 - k.l_p))) - t89);
+    let t104 = p0
         * (p0
-            * (t40 * t54
-                + (k.d * (k.c * (k.z_alpha * t62 + (t68 - t48)) + (k.m_alpha + t39))
-                    + (k.c * (k.e * t43 - k.n_beta) + (t46 + (t4 + k.n_p * t51)))))
-            + (t32
-                * (k.c
-                    * (k.d
-                        * (k.e * (t31 * (k.y_beta * 2.0 + k.z_alpha * 2.0))
-                            - (k.l_beta + k.l_r * t69))
-                        + (k.e * (t53 - k.n_p * t69) - k.l_beta)) - t70)
-                + t30 * (k.d * (k.m_alpha * t51) + (k.n_beta * t38 - k.l_beta * t33))))
-        + (k.z_alpha
-            * (k.m_q * (t74 + (t57 + (t61 + (k.n_beta - t48 - t49))))
-                + (k.y_beta * (k.e * (t44 + t75) + t77)
-                    + (t78 + (t79 + t43 * (k.n_r * (k.c * k.e))))))
-            + (k.m_q * (k.y_beta * (t74 + (t61 - t49)) + (t78 + t79))
-                + (k.m_alpha
-                    * (k.e * (t30 * (t32 * t55) + t31 * t76)
-                        + (t60 + (t48 - k.n_beta - t61) - t57)) + t80)));
-    let t82 = k.l_r - 2.0 * t37;
-    let t83 = k.l_p + k.l_r * t29;
-    let t84 = k.n_beta * t51 + k.l_beta * k.n_r;
-    let t85 = p0
-        * (p0
-            * (p0 * (k.c * (k.d * (t63 + t32 * t82) + t32 * t72) - p0 * (k.l_p * t54))
-                + (k.d
-                    * (t31
-                        * (t31 * (k.e * k.m_q) + (t70 - k.l_r * k.m_q + k.c * k.l_beta))
-                        + (k.c * (k.z_alpha * (t48 - t68)) - k.m_alpha * t83))
-                    + (k.c
-                        * (k.l_p * k.n_beta - k.l_beta * k.n_p
-                            - k.e * (t32 * (k.n_r * t32 + k.n_beta * t30)))
-                        + k.m_q * (k.n_p * t38 - t61))))
-            + (t32
-                * (k.c
-                    * (k.z_alpha
-                        * (k.d * (k.l_beta + k.y_beta * t82)
-                            + k.e * (k.y_beta * k.n_p - t53)) + t84)
-                    + k.e * (k.m_alpha * t65))
-                + t30 * (k.d * (k.m_alpha * (k.l_beta + k.y_beta * t38)) + k.m_q * t84)))
-        + (k.z_alpha
-            * (k.m_q
-                * (k.y_beta * (t31 * (t71 - t73) + (t49 - t61))
-                    + (t66 + k.n_beta * (t29 * t51 - k.l_p))) - t80)
-            + k.m_alpha
-                * (k.y_beta * (t77 + k.e * (t75 - t32 * (k.n_r * t30)))
-                    + (t78 + k.n_beta * (t83 - k.e * (t30 * t32 + t29 * t31)))));
-    let t86 = t50 * t85;
-    let t87 = t67 * t81;
-    t67 * (t86 - t87) - t85 * t85
-        - t36 * (t36 * (t81 * t81) + (t50 * (t87 - t86) + 2.0 * (t81 * t85)))
+            * (p0 * (k.c * (k.d * (t64 + t32 * t94) + t32 * t80) - p0 * (k.l_p * t54))
+                + t98) + t101);
+    let t105 = t104 + (t103 + k.m_alpha * t102);
+    let t106 = t50 * t105;
+    let t107 = t71 * t93;
+    t71 * (t106 - t107) - t105 * t105
+        - t36 * (t36 * (t93 * t93) + (t50 * (t107 - t106) + 2.0 * (t93 * t105)))
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` at the trim of `p0`, rad^2/s^2: at a zero of
-/// [`hurwitz_delta4`] the square of the frequency of the pair on the imaginary axis, positive
-/// at a Hopf point and negative at a neutral saddle (from the even and odd parts of
-/// `p(i omega) = 0` with `w^2` eliminated).
+/// `omega^2` at the trim of `p0`, rad^2/s^2, in the coefficients of
+/// [`characteristic_coefficients`]: at a zero of [`hurwitz_delta4`] the square of the
+/// frequency of the pair on the imaginary axis, positive at a Hopf point and negative
+/// at a neutral saddle (from the even and odd parts of `p(i omega) = 0` with `w^2`
+/// eliminated).
+///
+/// Formulas, printed from the derivation (model/src/derivation.rs):
+/// ```text
+/// omega^2 = (-c5 + c1*c4) / (-c3 + c1*c2)
+/// ```
 ///
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 193 add/sub, 246 mul, 4 div, 0 neg, 1 libm (444 operations); straight-line, no branches.
+/// Cost after CSE: 192 add/sub, 247 mul, 4 div, 0 neg, 1 libm (444 operations); straight-line, no branches.
 #[must_use]
 #[inline]
 pub fn hopf_omega_squared(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) -> f64 {
@@ -1279,37 +1363,39 @@ pub fn hopf_omega_squared(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) 
     let t4 = k.m_q * k.n_r;
     let t5 = t4 + t0 * t1;
     let t6 = k.m_alpha * k.n_r;
-    let t7 = p0 * t1;
-    let t8 = k.n_beta + k.y_beta * k.n_r;
-    let t9 = p0 * k.m_q;
-    let t10 = k.y_beta * t0;
-    let t11 = t9 + t10;
-    let t12 = p0 * k.n_r;
-    let t13 = k.m_alpha + p0 * t0;
-    let t14 = k.z_alpha * k.m_q - t13;
-    let t15 = k.z_alpha * t10 + p0 * t13;
-    let t16 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t9 - k.y_beta * k.m_alpha;
-    let t17 = 1.0
-        / (k.z_alpha * (k.y_beta * t5 + k.m_q * k.n_beta)
-            + p0 * (p0 * t5 + k.m_alpha * t1)
-            - (p0 * (k.n_beta * t0) + k.y_beta * t6 + k.m_alpha * k.n_beta));
-    let t18 = (t2 * (k.z_alpha * t1 + t12) + t3 * t14) * t17;
-    let t19 = (t3 * t15 - t2 * (k.z_alpha * t8 + p0 * t12)) * t17;
-    let t20 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t7)) - t3 * t16)
-        * t17;
-    let t21 = t17 * (k.n_delta_a * t14);
-    let t22 = t17 * (k.n_delta_a * t15);
-    let t23 = t17 * (k.n_delta_a * t16);
-    let t24 = k.l_r - k.e * t19;
-    let t25 = t20 * t24 + (delta_r * k.l_delta_r - k.l_beta * t18 + p0 * k.l_p);
-    let t26 = k.e * 0.5 * (t22 * t23);
-    let t27 = k.l_delta_a - k.l_beta * t21 - t22 * (k.e * t20) - t23 * t24;
-    let t28 = t25 * 2.0
-        / (t27 * (1.0 + libm::sqrt(1.0 - t25 * (t26 + t26) / (t27 * t27) * 4.0)));
-    let t29 = t17 * (k.n_delta_a * t11) * t28 - (t2 * (t7 - t8) + t3 * t11) * t17;
-    let t30 = t21 * t28 - t18;
-    let t31 = t19 - t22 * t28;
-    let t32 = t20 + t23 * t28;
+    let t7 = k.z_alpha * (k.y_beta * t5 + k.m_q * k.n_beta)
+        + p0 * (p0 * t5 + k.m_alpha * t1);
+    let t8 = p0 * t1;
+    let t9 = k.n_beta + k.y_beta * k.n_r;
+    let t10 = p0 * k.m_q;
+    let t11 = k.y_beta * t0;
+    let t12 = t10 + t11;
+    let t13 = p0 * k.n_r;
+    let t14 = k.m_alpha + p0 * t0;
+    let t15 = k.z_alpha * k.m_q - t14;
+    let t16 = k.z_alpha * t11 + p0 * t14;
+    let t17 = k.z_alpha * (k.y_beta * k.m_q) + p0 * t10 - k.y_beta * k.m_alpha;
+    let t18 = 1.0 / (t7 - (p0 * (k.n_beta * t0) + k.y_beta * t6 + k.m_alpha * k.n_beta));
+    let t19 = (t2 * (k.z_alpha * t1 + t13) + t3 * t15) * t18;
+    let t20 = (t3 * t16 - t2 * (k.z_alpha * t9 + p0 * t13)) * t18;
+    let t21 = (t2 * (p0 * k.n_beta - (k.z_alpha * (k.y_beta * t1) + p0 * t8)) - t3 * t17)
+        * t18;
+    let t22 = t18 * (k.n_delta_a * t15);
+    let t23 = t18 * (k.n_delta_a * t16);
+    let t24 = t18 * (k.n_delta_a * t17);
+    let t25 = k.l_r - k.e * t20;
+    let t26 = t21 * t25 + (delta_r * k.l_delta_r - k.l_beta * t19 + p0 * k.l_p);
+    let t27 = k.l_delta_a - k.l_beta * t22 - t23 * (k.e * t21) - t24 * t25;
+    let t28 = t26 * 2.0
+        / (t27
+            * (1.0
+                + libm::sqrt(
+                    1.0 - t26 * (k.e * 0.5 * (t23 * t24) * 2.0) / (t27 * t27) * 4.0,
+                )));
+    let t29 = t18 * (k.n_delta_a * t12) * t28 - (t2 * (t8 - t9) + t3 * t12) * t18;
+    let t30 = t22 * t28 - t19;
+    let t31 = t20 - t23 * t28;
+    let t32 = t21 + t24 * t28;
     let t33 = k.m_q + k.n_r;
     let t34 = k.l_p + t33;
     let t35 = k.y_beta + t34;
@@ -1332,99 +1418,270 @@ pub fn hopf_omega_squared(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) 
     let t52 = k.n_beta * t29;
     let t53 = k.c * k.d;
     let t54 = k.y_beta + k.n_r;
-    let t55 = k.l_p + k.n_r;
-    let t56 = k.y_beta * t55;
-    let t57 = k.d * t31;
-    let t58 = k.n_p - t57;
-    let t59 = k.l_r * t58;
-    let t60 = k.l_p * k.n_r;
-    let t61 = k.y_beta + k.l_p;
-    let t62 = k.l_beta * t30;
-    let t63 = k.n_p + k.n_r * t29;
-    let t64 = t63 - t57;
-    let t65 = k.l_beta * t64;
-    let t66 = k.y_beta * k.l_p;
-    let t67 = k.z_alpha + k.y_beta;
-    let t68 = t29 * (k.e * k.m_alpha);
-    let t69 = t31 * (k.d * k.e);
-    let t70 = k.e * k.n_p;
-    let t71 = t70 + k.d * k.l_r;
-    let t72 = t31 * (t71 - t69);
-    let t73 = t31 * t58;
-    let t74 = t57 - k.n_p;
-    let t75 = t60 + k.l_r * t74;
-    let t76 = k.l_beta * (t57 - t63);
-    let t77 = k.n_beta * (k.l_p + t29 * t38);
-    let t78 = k.c * (k.e * (t8 * t43));
-    let t79 = k.l_r - 2.0 * t37;
-    let t80 = k.l_p + k.l_r * t29;
-    let t81 = k.n_beta * t50 + k.l_beta * k.n_r;
-    (p0
+    let t55 = t31 * (t31 * (k.d * t51) + (t52 - 2.0 * (t32 * (p0 * t53)) - k.n_p * t51));
+    let t56 = k.l_p + k.n_r;
+    let t57 = k.y_beta * t56;
+    let t58 = k.d * t31;
+    let t59 = k.n_p - t58;
+    let t60 = k.l_r * t59;
+    let t61 = k.l_p * k.n_r;
+    let t62 = k.y_beta + k.l_p;
+    let t63 = k.l_beta * t30;
+    let t64 = k.n_p + k.n_r * t29;
+    let t65 = t64 - t58;
+    let t66 = k.l_beta * t65;
+    let t67 = k.y_beta * (t60 + (k.m_alpha - t61))
+        + (t66 + (k.l_p * (k.m_alpha - k.n_beta) + (t6 - t29 * (k.l_r * k.n_beta))));
+    let t68 = k.m_q * (t60 + (t48 - t47 - t61) - t57)
+        + (p0 * (t63 + t32 * (k.l_r * t53) - p0 * (t56 + k.c * (k.d * t62))) + t67);
+    let t69 = k.z_alpha
+        * (k.d * (t31 * t50 - t41) + (t49 + (t48 - (k.n_beta + t4)) - t46 - t45 - t42));
+    let t70 = k.y_beta * k.l_p;
+    let t71 = k.d * (k.c * (k.z_alpha * t62 + (t70 - t48)) + (k.m_alpha + t39));
+    let t72 = k.z_alpha + k.y_beta;
+    let t73 = k.d
+        * (k.e * (t31 * (k.y_beta * 2.0 + k.z_alpha * 2.0)) - (k.l_beta + k.l_r * t72));
+    let t74 = t29 * (k.e * k.m_alpha);
+    let t75 = t30 * (k.d * (k.m_alpha * t50) + (k.n_beta * t38 - k.l_beta * t33));
+    let t76 = p0
+        * (t40 * t53
+            + (t71 + (k.c * (k.e * t43 - k.n_beta) + (t46 + (t4 + k.n_p * t50)))));
+    let t77 = t31 * (k.d * k.e);
+    let t78 = k.e * k.n_p;
+    let t79 = t78 + k.d * k.l_r;
+    let t80 = t31 * (t79 - t77);
+    let t81 = t31 * t59;
+    let t82 = t58 - k.n_p;
+    let t83 = t61 + k.l_r * t82;
+    let t84 = k.l_beta * (t58 - t64);
+    let t85 = k.n_beta * (k.l_p + t29 * t38);
+    let t86 = k.y_beta * (k.e * (t44 + t81) + t83)
+        + (t84 + (t85 + t43 * (k.n_r * (k.c * k.e))));
+    let t87 = k.c * (k.e * (t9 * t43));
+    let t88 = k.m_alpha
+        * (k.e * (t30 * (t32 * t54) + t31 * t82) + (t60 + (t48 - k.n_beta - t61) - t57))
+        + t87;
+    let t89 = k.z_alpha * (k.m_q * (t80 + (t57 + (t61 + (k.n_beta - t48 - t49)))) + t86);
+    let t90 = p0
+        * (t76
+            + (t32 * (k.c * (t73 + (k.e * (t52 - k.n_p * t72) - k.l_beta)) - t74)
+                + t75));
+    let t91 = k.l_r - 2.0 * t37;
+    let t92 = k.l_p + k.l_r * t29;
+    let t93 = t31 * (t31 * (k.e * k.m_q) + (t74 - k.l_r * k.m_q + k.c * k.l_beta));
+    let t94 = k.c
+        * (k.l_p * k.n_beta - k.l_beta * k.n_p
+            - k.e * (t32 * (k.n_r * t32 + k.n_beta * t30)));
+    let t95 = k.d * (t93 + (k.c * (k.z_alpha * (t48 - t70)) - k.m_alpha * t92))
+        + (t94 + k.m_q * (k.n_p * t38 - t61));
+    let t96 = k.n_beta * t50 + k.l_beta * k.n_r;
+    let t97 = k.c
+        * (k.z_alpha
+            * (k.d * (k.l_beta + k.y_beta * t91) + k.e * (k.y_beta * k.n_p - t52))
+            + t96);
+    let t98 = t32 * (t97 + k.e * (k.m_alpha * t65))
+        + t30 * (k.d * (k.m_alpha * (k.l_beta + k.y_beta * t38)) + k.m_q * t96);
+    let t99 = k.y_beta * (t83 + k.e * (t81 - t32 * (k.n_r * t30)))
+        + (t84 + k.n_beta * (t92 - k.e * (t30 * t32 + t29 * t31)));
+    let t100 = k.z_alpha
+        * (k.m_q
+            * (k.y_beta * (t31 * (t77 - t79) + (t49 - t61))
+                + (t66 + k.n_beta * (t29 * t50 - k.l_p))) - t87);
+    let t101 = p0
         * (p0
-            * (p0 * (k.c * (k.d * (t62 + t32 * t79) + t32 * t70) - p0 * (k.l_p * t53))
-                + (k.d
-                    * (t31
-                        * (t31 * (k.e * k.m_q) + (t68 - k.l_r * k.m_q + k.c * k.l_beta))
-                        + (k.c * (k.z_alpha * (t48 - t66)) - k.m_alpha * t80))
-                    + (k.c
-                        * (k.l_p * k.n_beta - k.l_beta * k.n_p
-                            - k.e * (t32 * (k.n_r * t32 + k.n_beta * t30)))
-                        + k.m_q * (k.n_p * t38 - t60))))
-            + (t32
-                * (k.c
-                    * (k.z_alpha
-                        * (k.d * (k.l_beta + k.y_beta * t79)
-                            + k.e * (k.y_beta * k.n_p - t52)) + t81)
-                    + k.e * (k.m_alpha * t64))
-                + t30 * (k.d * (k.m_alpha * (k.l_beta + k.y_beta * t38)) + k.m_q * t81)))
-        + (k.z_alpha
-            * (k.m_q
-                * (k.y_beta * (t31 * (t69 - t71) + (t49 - t60))
-                    + (t65 + k.n_beta * (t29 * t50 - k.l_p))) - t78)
-            + k.m_alpha
-                * (k.y_beta * (t75 + k.e * (t73 - t32 * (k.n_r * t30)))
-                    + (t76 + k.n_beta * (t80 - k.e * (t30 * t32 + t29 * t31)))))
-        + t36
-            * (p0
-                * (p0
-                    * (t40 * t53
-                        + (k.d
-                            * (k.c * (k.z_alpha * t61 + (t66 - t48)) + (k.m_alpha + t39))
-                            + (k.c * (k.e * t43 - k.n_beta)
-                                + (t46 + (t4 + k.n_p * t50)))))
-                    + (t32
-                        * (k.c
-                            * (k.d
-                                * (k.e * (t31 * (k.y_beta * 2.0 + k.z_alpha * 2.0))
-                                    - (k.l_beta + k.l_r * t67))
-                                + (k.e * (t52 - k.n_p * t67) - k.l_beta)) - t68)
-                        + t30
-                            * (k.d * (k.m_alpha * t50)
-                                + (k.n_beta * t38 - k.l_beta * t33))))
-                + (k.z_alpha
-                    * (k.m_q * (t72 + (t56 + (t60 + (k.n_beta - t48 - t49))))
-                        + (k.y_beta * (k.e * (t44 + t73) + t75)
-                            + (t76 + (t77 + t43 * (k.n_r * (k.c * k.e))))))
-                    + (k.m_q * (k.y_beta * (t72 + (t60 - t49)) + (t76 + t77))
-                        + (k.m_alpha
-                            * (k.e * (t30 * (t32 * t54) + t31 * t74)
-                                + (t59 + (t48 - k.n_beta - t60) - t56)) + t78)))))
-        / (k.z_alpha
-            * (k.d * (t31 * t50 - t41)
-                + (t49 + (t48 - (k.n_beta + t4)) - t46 - t45 - t42))
-            + (k.e
-                * (t31
-                    * (t31 * (k.d * t51)
-                        + (t52 - 2.0 * (t32 * (p0 * t53)) - k.n_p * t51))
-                    + t32 * (p0 * (k.c * k.n_p) - k.m_alpha * t30 - t32 * (k.c * t54)))
-                + (k.m_q * (t59 + (t48 - t47 - t60) - t56)
-                    + (p0 * (t62 + t32 * (k.l_r * t53) - p0 * (t55 + k.c * (k.d * t61)))
-                        + (k.y_beta * (t59 + (k.m_alpha - t60))
-                            + (t65
-                                + (k.l_p * (k.m_alpha - k.n_beta)
-                                    + (t6 - t29 * (k.l_r * k.n_beta))))))))
-            + t36
-                * (k.z_alpha * t35
-                    + (k.d * (t39 + t41)
-                        + (t42 + (t45 + (t46 + (t4 + (t47 - k.m_alpha) - t48 - t49)))))))
+            * (p0 * (k.c * (k.d * (t63 + t32 * t91) + t32 * t78) - p0 * (k.l_p * t53))
+                + t95) + t98);
+    let t102 = t36
+        * (t90 + (t89 + (k.m_q * (k.y_beta * (t80 + (t61 - t49)) + (t84 + t85)) + t88)));
+    let t103 = t36
+        * (k.z_alpha * t35
+            + (k.d * (t39 + t41)
+                + (t42 + (t45 + (t46 + (t4 + (t47 - k.m_alpha) - t48 - t49))))));
+    let t104 = t69
+        + (k.e * (t55 + t32 * (p0 * (k.c * k.n_p) - k.m_alpha * t30 - t32 * (k.c * t54)))
+            + t68) + t103;
+    (t101 + (t100 + k.m_alpha * t99) + t102) / t104
+}
+/// det K (Eq. 27) of one aircraft and control setting, prepared for many roll rates (issue 11):
+/// `Prepared::new(k, delta_e, delta_r)` computes once everything of `det_k` that does not
+/// depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch
+/// of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is
+/// the roll-rate-dependent part of one straight-line program (model/src/emit/stage.rs), with
+/// 41 fields; per call 135 operations against 69 for `Prepared::new`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Prepared {
+    f0: f64,
+    f1: f64,
+    f2: f64,
+    f3: f64,
+    f4: f64,
+    f5: f64,
+    f6: f64,
+    f7: f64,
+    f8: f64,
+    f9: f64,
+    f10: f64,
+    f11: f64,
+    f12: f64,
+    f13: f64,
+    f14: f64,
+    f15: f64,
+    f16: f64,
+    f17: f64,
+    f18: f64,
+    f19: f64,
+    f20: f64,
+    f21: f64,
+    f22: f64,
+    f23: f64,
+    f24: f64,
+    f25: f64,
+    f26: f64,
+    f27: f64,
+    f28: f64,
+    f29: f64,
+    f30: f64,
+    f31: f64,
+    f32: f64,
+    f33: f64,
+    f34: f64,
+    f35: f64,
+    f36: f64,
+    f37: f64,
+    f38: f64,
+    f39: f64,
+    f40: f64,
+}
+impl Prepared {
+    #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
+    /// Prepares det K for an aircraft `k` and the controls: computes once everything of
+    /// [`det_k`](Self::det_k) that does not depend on the roll rate (the coefficients of the
+    /// polynomials in P0 of the trim numerators, det A, the trim condition and K0, g, h, d).
+    ///
+    /// Arguments:
+    /// - `delta_e`: elevator deflection, rad
+    /// - `delta_r`: rudder deflection, rad
+    ///
+    /// Cost after CSE: 18 add/sub, 51 mul, 0 div, 0 neg, 0 libm (69 operations); straight-line, no branches.
+    #[must_use]
+    #[inline]
+    pub fn new(k: &Derivatives, delta_e: f64, delta_r: f64) -> Prepared {
+        let t0 = k.n_beta + k.y_beta * k.n_r;
+        let t1 = k.m_delta_e * (delta_e * t0);
+        let t2 = k.m_q + k.c * k.y_beta;
+        let t3 = delta_e * (k.d * k.m_delta_e);
+        let t4 = t3 + k.m_q * k.n_p;
+        let t5 = k.z_alpha * t4;
+        let t6 = delta_e * (k.m_delta_e * k.n_r);
+        let t7 = k.m_alpha * k.n_p;
+        let t8 = k.z_alpha * k.m_q;
+        let t9 = k.m_alpha - t8;
+        let t10 = k.n_delta_r * (delta_r * t9);
+        let t11 = k.n_delta_a * t9;
+        let t12 = k.m_alpha + k.y_beta * (k.c * k.z_alpha);
+        let t13 = k.d * k.z_alpha;
+        Prepared {
+            f0: k.c,
+            f1: k.d,
+            f2: k.e,
+            f3: k.l_p,
+            f4: k.l_r,
+            f5: k.l_beta,
+            f6: k.l_delta_a,
+            f7: k.m_q,
+            f8: k.n_p,
+            f9: k.n_r,
+            f10: t0,
+            f11: t1,
+            f12: t2,
+            f13: k.n_delta_r * (delta_r * t2),
+            f14: k.n_p * t2 + t3,
+            f15: k.n_delta_a * t2,
+            f16: t4,
+            f17: t7 - t6 - t5,
+            f18: t10,
+            f19: delta_r * (k.c * k.n_delta_r),
+            f20: k.c * k.n_p,
+            f21: t11,
+            f22: k.c * k.n_delta_a,
+            f23: k.n_p * t12 - t6,
+            f24: k.n_delta_r * (delta_r * t12),
+            f25: k.z_alpha * t1,
+            f26: k.n_delta_a * t12,
+            f27: k.y_beta * (t7 - t5) + delta_e * (k.m_delta_e * k.n_beta),
+            f28: delta_r * (k.m_q * k.n_delta_r),
+            f29: k.y_beta * t10,
+            f30: k.m_q * k.n_delta_a,
+            f31: k.y_beta * t11,
+            f32: k.z_alpha * (k.m_q * t0) - k.m_alpha * t0,
+            f33: k.c * (k.y_beta * t13 - k.n_beta) + (k.m_q * k.n_r + k.d * k.m_alpha),
+            f34: k.c * k.d,
+            f35: delta_r * k.l_delta_r,
+            f36: k.e * k.z_alpha,
+            f37: k.l_beta + k.y_beta * k.l_r,
+            f38: k.e * k.y_beta,
+            f39: t8 - k.m_alpha,
+            f40: k.n_r + t13,
+        }
+    }
+    #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
+    /// The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4: the value of the free
+    /// function `det_k(k, p0, delta_e, delta_r)` on the same trim branch (element 0 of
+    /// `trim`, with aileron yaw too), computed from the prepared fields. Not bit-identical to
+    /// `det_k` (other operations), equal to it within rounding away from roots and poles.
+    ///
+    /// Arguments:
+    /// - `p0`: trim roll rate P0, rad/s
+    ///
+    /// Cost after CSE: 48 add/sub, 84 mul, 1 div, 0 neg, 2 libm (135 operations); straight-line, no branches.
+    #[must_use]
+    #[inline]
+    pub fn det_k(&self, p0: f64) -> f64 {
+        let t0 = p0 * (self.f19 + p0 * self.f20);
+        let t1 = self.f18 + p0 * (self.f17 + t0);
+        let t2 = p0 * p0;
+        let t3 = self.f22 * t2;
+        let t4 = self.f21 + t3;
+        let t5 = p0 * (self.f24 + p0 * (t0 + self.f23)) - self.f25;
+        let t6 = p0 * (t3 + self.f26);
+        let t7 = self.f29 + p0 * (self.f27 - p0 * (self.f28 + p0 * self.f16));
+        let t8 = self.f31 - t2 * self.f30;
+        let t9 = self.f32 + t2 * (self.f33 + t2 * self.f34);
+        let t10 = t9 * t9;
+        let t11 = t10 * (self.f35 + p0 * self.f3) + self.f4 * (t7 * t9)
+            - self.f2 * (t5 * t7) + self.f5 * (t1 * t9);
+        let t12 = self.f6 * t10 + self.f4 * (t8 * t9) - self.f2 * (t5 * t8 + t6 * t7)
+            + self.f5 * (t4 * t9);
+        let t13 = t12
+            + libm::sqrt(t12 * t12 + self.f2 * (t6 * t8) * t11 * 4.0).copysign(t12);
+        let t14 = t11 * 2.0;
+        let t15 = (self.f11 - p0 * (self.f13 + p0 * self.f14)) * t13
+            + p0 * self.f15 * t14;
+        let t16 = t1 * t13 - t4 * t14;
+        let t17 = t5 * t13 - t6 * t14;
+        let t18 = t7 * t13 - t8 * t14;
+        let t19 = t9 * t13;
+        let t20 = self.f0 * t18 + self.f7 * t16 + t15 * (p0 * self.f0);
+        let t21 = self.f8 * t19 - self.f1 * t17 - t16 * (p0 * self.f1) + self.f9 * t15;
+        let t22 = p0 * self.f2;
+        let t23 = (t19 * (p0 * self.f4) + t18 * self.f36 - t17 * t22)
+            * (t21 * (p0 * self.f12) - t20 * (self.f10 - self.f1 * t2));
+        let t24 = t23
+            + (t19 * self.f37 - t18 * t22 - t17 * self.f38)
+                * (t21 * (self.f39 - self.f0 * t2) + t20 * (p0 * self.f40));
+        t9
+            - t24
+                / (self.f3 * (t19 * t19) - self.f2 * (t16 * t18) + self.f4 * (t15 * t19)
+                    - self.f2 * (t15 * t17))
+    }
+    /// det K at each roll rate of `p0`, written to `out`: element i of `out` is
+    /// `self.det_k(p0[i])` for i below the shorter length; the rest of `out` is not touched.
+    /// No allocation, no panic; the loop body is `det_k`, straight-line.
+    #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
+    #[inline]
+    pub fn det_k_into(&self, p0: &[f64], out: &mut [f64]) {
+        for (o, p) in core::iter::zip(out, p0) {
+            *o = self.det_k(*p);
+        }
+    }
 }

@@ -25,13 +25,11 @@ mod departure;
 pub mod fast;
 mod primary;
 pub use crate::specialise::{
-    cancel, exact_f64, in_aileron, in_aileron_all, parametric, quadratic_roots, specialisation,
-    univariate, InAileron,
+    cancel, exact_f64, in_aileron, in_aileron_all, parametric, parametric_characteristic,
+    quadratic_roots, specialisation, univariate, InAileron,
 };
 use crate::specialise::{on_trim, OnTrim};
-pub use departure::{
-    omega_at, parametric_characteristic, FirstDeparture, HopfPoint, HopfPolys, Landing,
-};
+pub use departure::{omega_at, FirstDeparture, HopfPoint, HopfPolys, Landing};
 pub use primary::Outcome;
 
 /// A trim on the unconstrained roll (delta_r = 0) at which something happens: a jump point (a

@@ -24,6 +24,8 @@ use num_rational::BigRational;
 use num_traits::Zero;
 use std::sync::OnceLock;
 
+pub mod hopf;
+
 /// The symbol values of an aircraft's data (every [`Param`], exact), without any control.
 pub fn aircraft_values(aircraft: &Aircraft) -> Vec<(Sym, Q)> {
     let s = symbols();
@@ -54,6 +56,13 @@ pub fn parametric() -> &'static Derivation {
     P.get_or_init(Derivation::parametric)
 }
 
+/// The characteristic coefficients `c1..c5` of J5 at the trim of the parametric derivation
+/// ([`crate::derivation::hopf::characteristic_coefficients`]), in the trim symbols; computed once.
+pub fn parametric_characteristic() -> &'static [Poly; 5] {
+    static C: OnceLock<[Poly; 5]> = OnceLock::new();
+    C.get_or_init(|| crate::derivation::hopf::characteristic_coefficients(&parametric().jacobian))
+}
+
 /// A polynomial in `x` alone as a dense univariate polynomial. Panics if another symbol occurs
 /// (the specialised derivation leaves only P0 by construction).
 pub fn univariate(p: &Poly, x: Sym) -> UPoly {
@@ -61,6 +70,17 @@ pub fn univariate(p: &Poly, x: Sym) -> UPoly {
         .univariate_coeffs(x)
         .expect("specialised criterion polynomials are univariate in P0");
     UPoly::new(c.iter().map(Q::to_big).collect())
+}
+
+/// A dense univariate polynomial in P0 as a [`Poly`] (the inverse of [`univariate`] in P0).
+pub fn from_univariate(u: &UPoly) -> Poly {
+    let s = symbols();
+    Poly::from_terms(u.coeffs().iter().enumerate().map(|(i, c)| {
+        (
+            crate::algebra::Mono::var(s.p0, i as u32),
+            Q::from_big(c.clone()),
+        )
+    }))
 }
 
 /// Cancels every common factor of `num / den` exactly; returns the reduced pair.

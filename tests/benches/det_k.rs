@@ -1,7 +1,9 @@
-//! Issue 3's speed targets, measured in one run: the generated parametric det K (trim
-//! included) against numeric routes in Rust with nalgebra (LU trim + Schur-complement K,
-//! LU trim + 5x5 determinant, LU trim + eigenvalues of J5), all for aircraft B at a P0 that
-//! varies so that nothing is constant-folded.
+//! Issues 3 and 11's speed targets, measured in one run: the generated parametric det K (trim
+//! included), the prepared det K (`Prepared::det_k` per call, and the slice form
+//! `Prepared::det_k_into`), CasADi's generated C for the same det K (tests/oracle/casadi_det_k.py,
+//! compiled at -O2 by tests/build.rs; left out without a C compiler) and numeric routes in Rust
+//! with nalgebra (LU trim + Schur-complement K, LU trim + 5x5 determinant, LU trim + eigenvalues
+//! of J5), all for aircraft B over the same 1000 roll rates, so that nothing is constant-folded.
 //!
 //! Run with `cargo bench -p paper-tests --bench det_k`.
 
@@ -86,6 +88,39 @@ fn run(b: divan::Bencher, route: impl Fn(&gen::Derivatives, f64) -> f64) {
 #[divan::bench]
 fn generated_det_k(b: divan::Bencher) {
     run(b, |k, p| gen::det_k(k, p, DE, 0.0));
+}
+
+#[divan::bench]
+fn prepared_det_k(b: divan::Bencher) {
+    let k = gen::aircraft_b::DERIVATIVES;
+    let prepared = gen::Prepared::new(divan::black_box(&k), DE, 0.0);
+    run(b, |_, p| prepared.det_k(p));
+}
+
+/// The slice form over the same 1000 roll rates, summed as the others are.
+#[divan::bench]
+fn prepared_det_k_into(b: divan::Bencher) {
+    let k = gen::aircraft_b::DERIVATIVES;
+    let prepared = gen::Prepared::new(divan::black_box(&k), DE, 0.0);
+    let ps = p0s();
+    let mut out = vec![0.0; N];
+    b.counter(divan::counter::ItemsCount::new(N))
+        .bench_local(|| {
+            prepared.det_k_into(divan::black_box(&ps), &mut out);
+            divan::black_box(&out).iter().sum::<f64>()
+        });
+}
+
+#[divan::bench]
+fn casadi_generated_c_det_k(b: divan::Bencher) {
+    let k = model::aircraft::Aircraft::b().values_f64();
+    if paper_tests::casadi_det_k(&k, 1.0, DE, 0.0).is_none() {
+        eprintln!("SKIPPED casadi_generated_c_det_k: CasADi's C was not compiled (no C compiler)");
+        return;
+    }
+    run(b, |_, p| {
+        paper_tests::casadi_det_k(divan::black_box(&k), p, DE, 0.0).unwrap_or(f64::NAN)
+    });
 }
 
 #[divan::bench]

@@ -259,3 +259,54 @@ impl Lcg {
         lo + (hi - lo) * self.next_f64()
     }
 }
+
+/// det K by CasADi's generated C (`tests/oracle/casadi_det_k.c`, written by
+/// `tests/oracle/casadi_det_k.py` from the model typed in there): `None` when the build had no C
+/// compiler (`tests/build.rs`).
+pub fn casadi_det_k(k: &Params, p0: f64, de: f64, dr: f64) -> Option<f64> {
+    casadi::det_k(k, p0, de, dr)
+}
+
+#[cfg(casadi)]
+mod casadi {
+    use super::Params;
+
+    extern "C" {
+        /// CasADi's calling convention: input and output pointer arrays, integer and real work
+        /// arrays (none needed here: `casadi_det_k_work` reports zero sizes), memory slot.
+        fn casadi_det_k(
+            arg: *const *const f64,
+            res: *const *mut f64,
+            iw: *mut i64,
+            w: *mut f64,
+            mem: std::os::raw::c_int,
+        ) -> std::os::raw::c_int;
+    }
+
+    pub fn det_k(k: &Params, p0: f64, de: f64, dr: f64) -> Option<f64> {
+        let mut out = f64::NAN;
+        let args = [&p0 as *const f64, &de, &dr, k.as_ptr()];
+        let res = [&mut out as *mut f64];
+        // SAFETY: the four inputs point to 1, 1, 1 and 18 doubles as the generated function's
+        // sparsity says, the output to one double; it needs no work arrays (sizes 0).
+        let status = unsafe {
+            casadi_det_k(
+                args.as_ptr(),
+                res.as_ptr(),
+                std::ptr::null_mut(),
+                std::ptr::null_mut(),
+                0,
+            )
+        };
+        (status == 0).then_some(out)
+    }
+}
+
+#[cfg(not(casadi))]
+mod casadi {
+    use super::Params;
+
+    pub fn det_k(_: &Params, _: f64, _: f64, _: f64) -> Option<f64> {
+        None
+    }
+}

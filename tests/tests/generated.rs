@@ -47,6 +47,26 @@ impl<'ast> Visit<'ast> for StraightLine {
         syn::visit::visit_item_fn(self, f);
     }
 
+    fn visit_impl_item_fn(&mut self, f: &'ast syn::ImplItemFn) {
+        self.fn_name = f.sig.ident.to_string();
+        if self.fn_name == "det_k_into" {
+            // The slice form: one loop over the shorter slice whose body is the straight-line
+            // det_k; exactly this, nothing else.
+            let want: syn::Block = syn::parse_quote!({
+                for (o, p) in core::iter::zip(out, p0) {
+                    *o = self.det_k(*p);
+                }
+            });
+            let text = |b: &syn::Block| quote::ToTokens::to_token_stream(b).to_string();
+            if text(&f.block) != text(&want) {
+                self.violations
+                    .push("det_k_into: not the one-loop slice form".into());
+            }
+            return;
+        }
+        syn::visit::visit_impl_item_fn(self, f);
+    }
+
     fn visit_expr(&mut self, e: &'ast syn::Expr) {
         use syn::Expr::*;
         let bad = match e {
@@ -62,6 +82,8 @@ impl<'ast> Visit<'ast> for StraightLine {
                 };
                 path != "libm::sqrt"
             }
+            // core's f64::copysign, exact and branch-free.
+            MethodCall(m) => m.method != "copysign" || m.args.len() != 1,
             Lit(_) | Paren(_) | Path(_) | Field(_) | Struct(_) | Array(_) | Block(_) => false,
             other => {
                 self.violations
@@ -289,4 +311,401 @@ fn emitted_jump_polynomial_has_the_jump_points_of_analyze() {
             );
         }
     }
+}
+
+/// An exact rational.
+type Exact = num_rational::BigRational;
+
+fn exact(x: f64) -> Exact {
+    Exact::from_float(x).expect("finite")
+}
+
+/// det A(P0) of Eq. 2, `[[z_alpha, -P0, 1, 0], [P0, y_beta, 0, -1], [m_alpha, 0, m_q, C P0],
+/// [0, n_beta, -D P0, n_r]]`, typed in here from the paper and expanded exactly (Laplace).
+fn exact_det_a(k: &gen::Derivatives, p0: i64) -> Exact {
+    let p = Exact::from_integer(p0.into());
+    let z = Exact::from_integer(0.into());
+    let one = Exact::from_integer(1.into());
+    let m = vec![
+        vec![exact(k.z_alpha), -p.clone(), one.clone(), z.clone()],
+        vec![p.clone(), exact(k.y_beta), z.clone(), -one],
+        vec![exact(k.m_alpha), z.clone(), exact(k.m_q), exact(k.c) * &p],
+        vec![z, exact(k.n_beta), -(exact(k.d) * &p), exact(k.n_r)],
+    ];
+    fn det(m: &[Vec<Exact>]) -> Exact {
+        if m.len() == 1 {
+            return m[0][0].clone();
+        }
+        let mut acc = Exact::from_integer(0.into());
+        for (j, a) in m[0].iter().enumerate() {
+            let minor: Vec<Vec<Exact>> = m[1..]
+                .iter()
+                .map(|row| {
+                    row.iter()
+                        .enumerate()
+                        .filter(|(c, _)| *c != j)
+                        .map(|(_, v)| v.clone())
+                        .collect()
+                })
+                .collect();
+            let t = a * det(&minor);
+            acc = if j % 2 == 0 { acc + t } else { acc - t };
+        }
+        acc
+    }
+    det(&m)
+}
+
+/// Whether the exact `f(x) = c4 x^2 + c2 x + c0` changes sign between `(p (1 - rel))^2` and
+/// `(p (1 + rel))^2`: then a root of det A in P0 lies within `rel` of `p`.
+fn brackets_a_root(c: &[Exact; 3], p: f64, rel: f64) -> bool {
+    let f = |scale: f64| {
+        let x = exact(p) * (Exact::from_integer(1.into()) + exact(scale));
+        let x2 = &x * &x;
+        &c[2] * &x2 * &x2 + &c[1] * &x2 + &c[0]
+    };
+    let (lo, hi) = (f(-rel), f(rel));
+    let zero = Exact::from_integer(0.into());
+    (lo < zero) != (hi < zero)
+}
+
+/// Eq. 5's divergence roll rates when the two roots of det A in P0^2 lie ten orders of magnitude
+/// apart (aircraft A with C = 1e-9, Iz nearly Ix): both are within 1e-14 of the exact roots
+/// of det A, computed here in rational arithmetic from the matrix of Eq. 2; the textbook
+/// quadratic formula on the same coefficients loses the smaller root to cancellation (the test
+/// shows it is off by more than 1e-11), so this test fails on the textbook form.
+#[test]
+fn divergence_roll_rates_keep_the_small_root_when_the_roots_are_far_apart() {
+    let mut k = gen::aircraft_a::DERIVATIVES;
+    k.c = 1e-9;
+    // det A is c4 P0^4 + c2 P0^2 + c0 exactly: three values give the coefficients, a fourth
+    // checks that there is nothing else.
+    let d: Vec<Exact> = (0..4).map(|p| exact_det_a(&k, p)).collect();
+    let a = &d[1] - &d[0];
+    let b = &d[2] - &d[0];
+    let c4 = (&b - &a * Exact::from_integer(4.into())) / Exact::from_integer(12.into());
+    let c2 = &a - &c4;
+    let c = [d[0].clone(), c2, c4];
+    assert_eq!(
+        d[3],
+        &c[2] * Exact::from_integer(81.into()) + &c[1] * Exact::from_integer(9.into()) + &c[0],
+        "det A is a biquadratic in P0"
+    );
+    let [p1, p2] = gen::divergence_roll_rates(&k);
+    assert!(p1 > 2.0 && p1 < 3.0 && p2 > 1e5, "{p1} {p2}");
+    for p in [p1, p2] {
+        assert!(
+            brackets_a_root(&c, p, 1e-14),
+            "{p} is not within 1e-14 of a root of det A"
+        );
+    }
+    // The textbook formula on the generated coefficients misses the small root by far more.
+    let [c0, c2, c4] = gen::divergence_biquadratic(&k);
+    let textbook = ((-c2 - (c2 * c2 - 4.0 * c4 * c0).sqrt()) / (2.0 * c4)).sqrt();
+    assert!(
+        !brackets_a_root(&c, textbook, 1e-11),
+        "the case has no cancellation: textbook {textbook} is within 1e-11 of the root"
+    );
+}
+
+/// The expressions of a function body as prettyplease prints them, on one line: the value of
+/// every `let` and `const`, and every element of the returned value (array elements, struct
+/// fields, recursively).
+fn body_expressions(block: &syn::Block, out: &mut Vec<String>) {
+    fn one_line(e: &syn::Expr) -> String {
+        let file: syn::File = syn::parse_quote!(fn f() { let x = #e; });
+        let text = prettyplease::unparse(&file);
+        let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
+        text["fn f() { let x = ".len()..text.len() - "; }".len()].to_string()
+    }
+    fn returned(e: &syn::Expr, out: &mut Vec<String>) {
+        match e {
+            syn::Expr::Array(a) => a.elems.iter().for_each(|x| returned(x, out)),
+            syn::Expr::Struct(s) => s.fields.iter().for_each(|f| returned(&f.expr, out)),
+            other => out.push(one_line(other)),
+        }
+    }
+    for stmt in &block.stmts {
+        match stmt {
+            syn::Stmt::Local(l) => {
+                if let Some(init) = &l.init {
+                    out.push(one_line(&init.expr));
+                }
+            }
+            syn::Stmt::Item(syn::Item::Const(c)) => out.push(one_line(&c.expr)),
+            syn::Stmt::Expr(e, None) => returned(e, out),
+            _ => {}
+        }
+    }
+}
+
+/// Issue 12: no expression of the generated crate is longer than the emitter's cap, so that a
+/// reviewer can follow each against the derivation (the split into temporaries is checked to
+/// change no bit by the C cross-check and the emitter's own tests).
+#[test]
+fn generated_expressions_are_within_the_width_cap() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src");
+    let cap = model::emit::program::MAX_WIDTH;
+    for name in ["lib.rs", "aircraft_a.rs", "aircraft_b.rs"] {
+        let file = syn::parse_file(&std::fs::read_to_string(dir.join(name)).unwrap()).unwrap();
+        let mut exprs = Vec::new();
+        for item in &file.items {
+            match item {
+                syn::Item::Fn(f) => body_expressions(&f.block, &mut exprs),
+                syn::Item::Impl(i) => {
+                    for it in &i.items {
+                        if let syn::ImplItem::Fn(f) = it {
+                            body_expressions(&f.block, &mut exprs);
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+        let widest = exprs.iter().max_by_key(|e| e.len()).unwrap();
+        println!(
+            "{name}: {} expressions, widest {} characters",
+            exprs.len(),
+            widest.len()
+        );
+        assert!(exprs.len() > 100, "{name}: expressions not found");
+        assert!(
+            widest.len() <= cap,
+            "{name}: an expression of {} characters (cap {cap}): {widest}",
+            widest.len()
+        );
+    }
+}
+
+/// The exact value a named constant's comment states: a decimal (`-81.084922887`) or `p/q`.
+fn stated_exact(text: &str) -> Exact {
+    if let Some((p, q)) = text.split_once('/') {
+        return Exact::new(p.parse().unwrap(), q.parse().unwrap());
+    }
+    let (int, frac) = text.split_once('.').unwrap_or((text, ""));
+    let digits: num_bigint::BigInt = format!("{int}{frac}").parse().unwrap();
+    Exact::new(digits, num_bigint::BigInt::from(10).pow(frac.len() as u32))
+}
+
+/// `(exact value, literal)` of every named constant of a generated file: a comment line
+/// `exact: X` (`///` in Rust, `//` in C) followed by `const ... KN ... = LITERAL;`.
+fn named_constants(text: &str) -> Vec<(Exact, f64)> {
+    let lines: Vec<&str> = text.lines().map(str::trim).collect();
+    lines
+        .windows(2)
+        .filter_map(|w| {
+            let exact = w[0]
+                .trim_start_matches('/')
+                .trim()
+                .strip_prefix("exact: ")?;
+            let lit = w[1]
+                .strip_prefix("const ")?
+                .split(" = ")
+                .nth(1)?
+                .trim_end_matches(';');
+            Some((stated_exact(exact), lit.parse().expect("a double literal")))
+        })
+        .collect()
+}
+
+/// Issue 12: every folded constant that is not written exactly carries its exact rational, and
+/// its literal is that rational rounded once to the nearest double; the constants written inline
+/// are the data of Table A.1 and small integers, whose literals are exact (checked in the
+/// emitter, `model::emit::program`).
+#[test]
+fn named_constants_are_their_exact_rationals_rounded_once() {
+    use num_traits::ToPrimitive;
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated");
+    for name in [
+        "src/lib.rs",
+        "src/aircraft_a.rs",
+        "src/aircraft_b.rs",
+        "c/roll_criterion.h",
+    ] {
+        let text = std::fs::read_to_string(root.join(name)).unwrap();
+        let constants = named_constants(&text);
+        let declared = text.matches("const K").count() + text.matches("const double K").count();
+        assert_eq!(
+            constants.len(),
+            declared,
+            "{name}: a named constant without its exact value"
+        );
+        for (exact, lit) in &constants {
+            assert_eq!(
+                exact.to_f64().unwrap().to_bits(),
+                lit.to_bits(),
+                "{name}: {exact} -> {lit:?}"
+            );
+            assert_ne!(
+                &Exact::from_float(*lit).unwrap(),
+                exact,
+                "{name}: {lit:?} is exact, not named"
+            );
+        }
+        println!("{name}: {} named constants", constants.len());
+        if name != "src/lib.rs" {
+            assert!(constants.len() > 20, "{name}: too few named constants");
+        }
+    }
+}
+
+/// The `name = formula` items of the ```text blocks of a doc comment (continuation lines
+/// joined).
+fn doc_formulas(attrs: &[syn::Attribute]) -> Vec<(String, String)> {
+    let lines: Vec<String> = attrs
+        .iter()
+        .filter_map(|a| match &a.meta {
+            syn::Meta::NameValue(nv) if nv.path.is_ident("doc") => match &nv.value {
+                syn::Expr::Lit(syn::ExprLit {
+                    lit: syn::Lit::Str(s),
+                    ..
+                }) => Some(
+                    s.value()
+                        .strip_prefix(' ')
+                        .unwrap_or(&s.value())
+                        .to_string(),
+                ),
+                _ => None,
+            },
+            _ => None,
+        })
+        .collect();
+    let mut out: Vec<(String, String)> = Vec::new();
+    let mut inside = false;
+    for l in lines {
+        if l.starts_with("```") {
+            inside = l == "```text";
+            continue;
+        }
+        if !inside {
+            continue;
+        }
+        if l.starts_with(' ') {
+            let last = out.last_mut().expect("a continuation follows a formula");
+            last.1.push(' ');
+            last.1.push_str(l.trim());
+        } else {
+            let (name, rhs) = l.split_once(" = ").expect("name = formula");
+            out.push((name.to_string(), rhs.to_string()));
+        }
+    }
+    out
+}
+
+/// A formula's polynomials: one, the entries of `[a, b]` or `[[a, b], [c, d]]` row by row, or the
+/// numerator and denominator of `(num) / (den)`.
+fn parse_formula(rhs: &str) -> Vec<model::algebra::Poly> {
+    use model::emit::paper::parse;
+    if let Some(inner) = rhs.strip_prefix("[[") {
+        let inner = inner.strip_suffix("]]").expect("a matrix");
+        return inner
+            .split("], [")
+            .flat_map(|row| row.split(", ").map(parse).collect::<Vec<_>>())
+            .collect();
+    }
+    if let Some(inner) = rhs.strip_prefix('[') {
+        return inner
+            .strip_suffix(']')
+            .unwrap()
+            .split(", ")
+            .map(parse)
+            .collect();
+    }
+    if let Some((num, den)) = rhs.split_once(") / (") {
+        let num = num.strip_prefix('(').unwrap();
+        let den = den.strip_suffix(')').unwrap();
+        return vec![parse(num), parse(den)];
+    }
+    vec![parse(rhs)]
+}
+
+/// Issue 12: every formula in the generated crate's doc comments is the derivation's (parsed
+/// back with the paper-formula parser of `model::emit::paper` and compared exactly), and where
+/// the paper prints the same quantity correctly, the paper's (Eqs 2, 16 and 22): no formula of
+/// the docs is typed by hand.
+#[test]
+fn doc_formulas_are_the_derivations_and_the_papers() {
+    use model::derivation::hopf::{characteristic_coefficients, orlando};
+    use model::emit::paper::{self, parse};
+    let par = model::derivation::Derivation::parametric();
+    let matrix = |m: &model::algebra::Matrix| -> Vec<model::algebra::Poly> {
+        (0..m.rows())
+            .flat_map(|i| (0..m.cols()).map(move |j| m.get(i, j).clone()))
+            .collect()
+    };
+    let coeffs = characteristic_coefficients(&par.jacobian);
+    let o = orlando();
+    let stiffness = |name: &str| match name {
+        "K0" => Some(par.k0.iter().flatten().cloned().collect()),
+        "g" => Some(par.g.to_vec()),
+        "h" => Some(par.h.to_vec()),
+        "d" => Some(vec![par.d.clone()]),
+        _ => None,
+    };
+    let expected = |f: &str, name: &str| -> Option<Vec<model::algebra::Poly>> {
+        match (f, name) {
+            ("trim", "A") => Some(matrix(&par.a)),
+            ("trim", "b") => Some(par.a_rhs.clone()),
+            ("trim", "p_dot") => Some(vec![par.roll_at_trim.clone()]),
+            ("zero_sideslip_trim", "A1") => Some(matrix(&par.zs_a)),
+            ("zero_sideslip_trim", "b1") => Some(par.zs_rhs.clone()),
+            ("zero_sideslip_trim", "delta_a") => {
+                Some(vec![par.zs_delta_a.num.clone(), par.zs_delta_a.den.clone()])
+            }
+            ("zero_sideslip_trim", "delta_r") => {
+                Some(vec![par.zs_delta_r.num.clone(), par.zs_delta_r.den.clone()])
+            }
+            ("jacobian5", "J5") => Some(matrix(&par.jacobian)),
+            ("residual_denominator" | "stiffness" | "det_k", n) => stiffness(n),
+            ("divergence_biquadratic", "c0") => Some(vec![par.biquadratic[0].clone()]),
+            ("divergence_biquadratic", "c2") => Some(vec![par.biquadratic[1].clone()]),
+            ("divergence_biquadratic", "c4") => Some(vec![par.biquadratic[2].clone()]),
+            ("characteristic_coefficients", "c1") => Some(vec![coeffs[0].clone()]),
+            ("characteristic_coefficients", "c2") => Some(vec![coeffs[1].clone()]),
+            ("hurwitz_delta4", "Delta4") => Some(vec![o.delta4.clone()]),
+            ("hopf_omega_squared", "omega^2") => {
+                Some(vec![o.omega_sq.num.clone(), o.omega_sq.den.clone()])
+            }
+            _ => None,
+        }
+    };
+    // The paper's printed formulas where they agree with the derivation.
+    let papers: Vec<(&str, &str, Vec<model::algebra::Poly>)> = vec![
+        (
+            "trim",
+            "A",
+            paper::EQ2_A.iter().flatten().map(|e| parse(e)).collect(),
+        ),
+        ("residual_denominator", "d", vec![parse(paper::EQ22_D)]),
+        (
+            "stiffness",
+            "h",
+            paper::EQ22_H.iter().map(|e| parse(e)).collect(),
+        ),
+        (
+            "stiffness",
+            "K0",
+            paper::EQ16_K0.iter().flatten().map(|e| parse(e)).collect(),
+        ),
+    ];
+    let lib = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src/lib.rs"),
+    )
+    .unwrap();
+    let file = syn::parse_file(&lib).unwrap();
+    let mut seen = Vec::new();
+    for item in &file.items {
+        let syn::Item::Fn(f) = item else { continue };
+        let name = f.sig.ident.to_string();
+        for (symbol, rhs) in doc_formulas(&f.attrs) {
+            let want = expected(&name, &symbol)
+                .unwrap_or_else(|| panic!("{name}: no derivation result called {symbol}"));
+            assert_eq!(parse_formula(&rhs), want, "{name}: {symbol} = {rhs}");
+            if let Some((_, _, p)) = papers.iter().find(|(f, s, _)| *f == name && *s == symbol) {
+                assert_eq!(&want, p, "{name}: {symbol} differs from the paper's print");
+            }
+            seen.push(format!("{name}.{symbol}"));
+        }
+    }
+    assert_eq!(seen.len(), 24, "formulas found: {seen:?}");
 }

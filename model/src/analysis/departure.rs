@@ -8,20 +8,19 @@
 //! [`crate::derivation::hopf::orlando`]) tells them apart.
 
 use super::{
-    aileron_of_root, exact_f64, in_aileron, specialisation, strip, univariate, CriterionPolys,
-    InAileron, JumpPoint,
+    aileron_of_root, exact_f64, in_aileron, parametric_characteristic, specialisation, strip,
+    univariate, CriterionPolys, InAileron, JumpPoint,
 };
 use crate::aircraft::Aircraft;
 use crate::algebra::{Poly, Sym, Q};
 use crate::derivation::eliminate_aileron;
-use crate::derivation::hopf::{
-    characteristic_coefficients, cleared_coefficients, hopf_at, orlando, Orlando,
-};
+use crate::derivation::hopf::{cleared_coefficients, hopf_at, orlando, Orlando};
 use crate::equations::symbols;
 use crate::roots::{positive_roots, real_roots, UPoly};
+use crate::specialise::from_univariate;
+use crate::specialise::hopf::{dense_hopf, weighted_integer};
 use nalgebra::{Complex, Matrix5, Vector5};
 use serde::Serialize;
-use std::sync::OnceLock;
 
 /// A Hopf point of the unconstrained roll: a trim where a complex pair of J5 crosses the
 /// imaginary axis.
@@ -81,12 +80,6 @@ pub struct FirstDeparture {
     pub lands_at: Option<Vec<Landing>>,
 }
 
-/// The parametric characteristic coefficients `c1..c5` of J5 at the trim (trim symbols).
-pub fn parametric_characteristic() -> &'static [Poly; 5] {
-    static C: OnceLock<[Poly; 5]> = OnceLock::new();
-    C.get_or_init(|| characteristic_coefficients(&super::parametric().jacobian))
-}
-
 /// The Hopf part of the closed form specialised to one aircraft.
 #[derive(Clone, Debug)]
 pub struct HopfPolys {
@@ -117,7 +110,7 @@ impl HopfPolys {
             .clone()
             .map(|ck| ck.subs_values(&values));
         // Integer coefficients for the exact polynomials; `c` itself stays for f64 evaluation.
-        let ci = weighted_integer(&c);
+        let (ci, _) = weighted_integer(&c);
         let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
         // Without aileron yaw everything is univariate in P0: dense arithmetic is much faster.
         let (hopf_at, hopf) = match dense_hopf(&ci, &t4, &cp.trim, &cp.det_a) {
@@ -289,93 +282,6 @@ pub fn resultant_in_aileron(g: &Poly, f: &Poly) -> UPoly {
         res = q;
     }
     res
-}
-
-/// `den^10 Delta4(c(num / den))` in dense univariate arithmetic, when the trim numerators `num`
-/// and `den` are polynomials in P0 alone (no aileron yaw, or the zero-sideslip trim): the same
-/// polynomial as [`hopf_at`] of [`cleared_coefficients`], each `C_k = den^k c_k(num / den)`
-/// built term by term from tables of powers. `None` when delta_a occurs.
-fn dense_hopf(c: &[Poly; 5], t: &[Sym], num: &[Poly], den: &Poly) -> Option<UPoly> {
-    let s = symbols();
-    if num.iter().chain([den]).any(|p| p.contains(s.delta_a)) {
-        return None;
-    }
-    let u = |p: &Poly| univariate(p, s.p0);
-    let int = |n: i64| num_rational::BigRational::from_integer(n.into());
-    let powers = |p: &UPoly| {
-        let mut v = vec![UPoly::constant(int(1))];
-        for e in 0..5 {
-            let next = v[e].mul(p);
-            v.push(next);
-        }
-        v
-    };
-    let npow: Vec<Vec<UPoly>> = num.iter().map(|n| powers(&u(n))).collect();
-    let dpow = powers(&u(den));
-    let x_pow = |a: u32, q: &Q| {
-        let mut v = vec![int(0); a as usize + 1];
-        v[a as usize] = q.to_big();
-        UPoly::new(v)
-    };
-    let cleared: Vec<UPoly> = (0..5)
-        .map(|k| {
-            c[k].terms().iter().fold(UPoly::zero(), |acc, (m, q)| {
-                let mut term = x_pow(m.exp(s.p0), q);
-                let mut j = 0usize;
-                for (i, ti) in t.iter().enumerate() {
-                    let e = m.exp(*ti) as usize;
-                    j += e;
-                    if e > 0 {
-                        term = term.mul(&npow[i][e]);
-                    }
-                }
-                acc.add(&term.mul(&dpow[k + 1 - j]))
-            })
-        })
-        .collect();
-    let hs = crate::derivation::hopf::hopf_symbols();
-    let d4 = orlando()
-        .delta4
-        .terms()
-        .iter()
-        .fold(UPoly::zero(), |acc, (m, q)| {
-            let term = hs.c.iter().enumerate().fold(x_pow(0, q), |t, (k, ck)| {
-                (0..m.exp(*ck)).fold(t, |t, _| t.mul(&cleared[k]))
-            });
-            acc.add(&term)
-        });
-    Some(d4)
-}
-
-/// A polynomial in P0 as a [`Poly`].
-fn from_univariate(u: &UPoly) -> Poly {
-    let s = symbols();
-    Poly::from_terms(u.coeffs().iter().enumerate().map(|(i, c)| {
-        (
-            crate::algebra::Mono::var(s.p0, i as u32),
-            Q::from_big(c.clone()),
-        )
-    }))
-}
-
-/// `mu^k c_k` with `mu` the least common multiple of every coefficient's denominator, so that
-/// each has integer coefficients (exact arithmetic then never reduces fractions) while Delta4
-/// weighted-homogeneous of weight 10 in the `c_k`, changes by the positive constant `mu^10` only
-/// (no root moves). Only for the exact polynomials: the scaled values overflow f64.
-fn weighted_integer(c: &[Poly; 5]) -> [Poly; 5] {
-    use num_integer::Integer;
-    let mut mu = num_bigint::BigInt::from(1);
-    for ck in c {
-        for (_, q) in ck.terms() {
-            mu = mu.lcm(q.to_big().denom());
-        }
-    }
-    let m = Q::from_big(num_rational::BigRational::from_integer(mu));
-    let mut scale = Q::ONE;
-    std::array::from_fn(|k| {
-        scale = &scale * &m;
-        c[k].scale(&scale)
-    })
 }
 
 /// `den^10 Delta4` at the zero-sideslip trim (beta0 = 0 already substituted into `c`).

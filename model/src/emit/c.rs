@@ -7,10 +7,10 @@
 //! whatever [`super::functions::functions`], [`super::functions::structs`] and [`Param::ALL`]
 //! hold is printed.
 
-use super::functions::Function;
-use super::program::{inputs_used, program, Expr};
+use super::functions::{Function, Prepared};
+use super::program::{exact_text, inputs_used, program, Expr};
 use super::shape::{access, c_struct, c_type, shapes, C_PREFIX};
-use super::{cost_doc, doc_lines, op_count_lines, Builtin, COMMAND};
+use super::{cost_doc, doc_lines, op_count_lines, prepared_doc, Builtin, COMMAND};
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::Q;
 use std::fmt::Write;
@@ -42,12 +42,13 @@ pub fn double_literal(q: &Q) -> String {
     }
 }
 
-/// The C name of a generated function: `rc_det_k`, or `rc_aircraft_a_det_k` for the function
-/// of a built-in aircraft module.
+/// The C name of a generated function: `rc_det_k`, `rc_aircraft_a_det_k` for the function of a
+/// built-in aircraft module, `rc_prepared_det_k` for `Prepared::det_k`.
 pub fn c_name(module: Option<&str>, f: &Function) -> String {
-    match module {
-        Some(m) => format!("{C_PREFIX}{m}_{}", f.name),
-        None => format!("{C_PREFIX}{}", f.name),
+    match (module, f.owner) {
+        (_, Some(owner)) => format!("{C_PREFIX}{}_{}", owner.to_lowercase(), f.name),
+        (Some(m), None) => format!("{C_PREFIX}{m}_{}", f.name),
+        (None, None) => format!("{C_PREFIX}{}", f.name),
     }
 }
 
@@ -59,6 +60,7 @@ pub fn data_name(module: &str) -> String {
 fn expr(e: &Expr, out: &mut String) {
     match e {
         Expr::Const(q) => out.push_str(&double_literal(q)),
+        Expr::Named(n) => write!(out, "K{n}").expect("write to String"),
         Expr::Input(name) => out.push_str(&name.replacen('.', "->", 1)),
         Expr::Temp(n) => write!(out, "t{n}").expect("write to String"),
         Expr::Binary(op, a, b) => {
@@ -73,6 +75,13 @@ fn expr(e: &Expr, out: &mut String) {
         Expr::Sqrt(a) => {
             out.push_str("sqrt(");
             expr(a, out);
+            out.push(')');
+        }
+        Expr::CopySign(a, b) => {
+            out.push_str("copysign(");
+            expr(a, out);
+            out.push_str(", ");
+            expr(b, out);
             out.push(')');
         }
         Expr::Paren(a) => {
@@ -130,9 +139,10 @@ pub fn function(f: &Function, module: Option<&str>) -> String {
     let ids: Vec<_> = f.outputs.iter().map(|(_, id)| *id).collect();
     let p = program(&f.dag, &ids);
     let used = inputs_used(&f.dag, &ids);
-    let rust_path = match module {
-        Some(m) => format!("roll_criterion::{m}::{}", f.name),
-        None => format!("roll_criterion::{}", f.name),
+    let rust_path = match (module, f.owner) {
+        (_, Some(owner)) => format!("roll_criterion::{owner}::{}", f.name),
+        (Some(m), None) => format!("roll_criterion::{m}::{}", f.name),
+        (None, None) => format!("roll_criterion::{}", f.name),
     };
     let mut tail = cost_doc(f);
     tail.push(format!("Rust: `{rust_path}`, bit-identical."));
@@ -143,6 +153,9 @@ pub fn function(f: &Function, module: Option<&str>) -> String {
     }
     let mut params = Vec::new();
     let mut unused = Vec::new();
+    if let (true, Some(owner)) = (f.takes_self(), f.owner) {
+        params.push(format!("const struct {C_PREFIX}{owner} *self"));
+    }
     if f.takes_derivatives {
         params.push(format!("const struct {C_PREFIX}derivatives *k"));
         if !used.iter().any(|u| u.starts_with("k.")) {
@@ -172,6 +185,10 @@ pub fn function(f: &Function, module: Option<&str>) -> String {
     out.push_str("{\n");
     for u in unused {
         writeln!(out, "    (void){u};").expect("write to String");
+    }
+    for (n, q) in p.constants.iter().enumerate() {
+        writeln!(out, "    // exact: {}", exact_text(q)).expect("write to String");
+        writeln!(out, "    const double K{n} = {};", double_literal(q)).expect("write to String");
     }
     for (n, e) in p.temps.iter().enumerate() {
         let mut s = format!("const double t{n} = ");
@@ -243,8 +260,47 @@ fn op_counts(out: &mut String, fs: &[Function]) {
     }
 }
 
+/// `struct rc_Prepared` and its functions: `rc_prepared_new`, `rc_prepared_det_k` and the slice
+/// form `rc_prepared_det_k_into` (a loop over `rc_prepared_det_k`; `n` elements of `p0` and
+/// `out`, which the caller provides).
+fn prepared_section(p: &Prepared) -> String {
+    let owner = p.new.owner.expect("Prepared::new has an owner");
+    let mut out = String::new();
+    for l in prepared_doc(p) {
+        out.push_str(&comment(&l));
+        out.push('\n');
+    }
+    writeln!(out, "struct {C_PREFIX}{owner} {{").expect("write to String");
+    for (field, _) in &p.new.outputs {
+        writeln!(out, "    double {field};").expect("write to String");
+    }
+    out.push_str("};\n\n");
+    out.push_str(&function(&p.new, None));
+    out.push('\n');
+    out.push_str(&function(&p.det_k, None));
+    out.push('\n');
+    let name = c_name(None, &p.det_k);
+    for l in [
+        format!(
+            "det K at `n` roll rates: `out[i] = {name}(self, p0[i])` for i < n (the slice form"
+        ),
+        "of the Rust crate's `Prepared::det_k_into`); `p0` and `out` hold at least n doubles."
+            .into(),
+        "No allocation; the loop body is the straight-line det_k.".into(),
+    ] {
+        out.push_str(&comment(&l));
+        out.push('\n');
+    }
+    writeln!(
+        out,
+        "{API} void {name}_into(const struct {C_PREFIX}{owner} *self, const double *p0,\n    double *out, size_t n)\n{{\n    size_t i;\n    for (i = 0; i < n; i++) {{\n        out[i] = {name}(self, p0[i]);\n    }}\n}}"
+    )
+    .expect("write to String");
+    out
+}
+
 /// The text of `generated/c/roll_criterion.h`.
-pub fn header(param: &[Function], builtins: &[Builtin]) -> String {
+pub fn header(param: &[Function], prepared: &Prepared, builtins: &[Builtin]) -> String {
     let mut out = format!(
         "// @generated by `{COMMAND}`. Do not edit.\n\
          // Header-only C99 library: the roll-coupling jump criterion (AIAA 2006-6267), the same\n\
@@ -261,18 +317,27 @@ pub fn header(param: &[Function], builtins: &[Builtin]) -> String {
         env!("CARGO_PKG_VERSION"),
         super::inputs_hash(&builtins.iter().map(|b| &b.aircraft).collect::<Vec<_>>())
     );
-    op_counts(&mut out, param);
+    let counted: Vec<Function> = param
+        .iter()
+        .cloned()
+        .chain([prepared.new.clone(), prepared.det_k.clone()])
+        .collect();
+    op_counts(&mut out, &counted);
     out.push_str(
         "//\n\
-         // Use: `#include \"roll_criterion.h\"` and link with -lm (for sqrt). Every function is\n\
-         // straight-line double arithmetic: no allocation, no recursion, no loops or branches, one\n\
-         // return, nothing from the C library but sqrt. Results are bit-identical to the Rust crate\n\
-         // when FLT_EVAL_METHOD == 0 and floating-point contraction is off (gcc/clang:\n\
-         // -ffp-contract=off); otherwise they differ by rounding only.\n\
+         // Use: `#include \"roll_criterion.h\"` and link with -lm (for sqrt and copysign). Every\n\
+         // function is straight-line double arithmetic: no allocation, no recursion, no loops or\n\
+         // branches, one return, nothing from the C library but sqrt and copysign (C99). A named\n\
+         // constant KN is a folded exact rational rounded once; its comment gives the exact value.\n\
+         // Results are bit-identical to the Rust crate when FLT_EVAL_METHOD == 0 and\n\
+         // floating-point contraction is off (gcc/clang: -ffp-contract=off); otherwise they\n\
+         // differ by rounding only.\n\
          // Define ROLL_CRITERION_API before the include to choose the linkage of the functions\n\
          // (default: static inline); the built-in aircraft data are static const objects.\n\n",
     );
-    out.push_str("#ifndef ROLL_CRITERION_H\n#define ROLL_CRITERION_H\n\n#include <math.h>\n\n");
+    out.push_str(
+        "#ifndef ROLL_CRITERION_H\n#define ROLL_CRITERION_H\n\n#include <math.h>\n#include <stddef.h>\n\n",
+    );
     writeln!(out, "#ifndef {API}\n#define {API} static inline\n#endif\n").expect("write to String");
     out.push_str("#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n");
     out.push_str(&derivatives_struct());
@@ -287,6 +352,8 @@ pub fn header(param: &[Function], builtins: &[Builtin]) -> String {
         out.push('\n');
         out.push_str(&function(f, None));
     }
+    out.push('\n');
+    out.push_str(&prepared_section(prepared));
     for b in builtins {
         writeln!(
             out,
@@ -381,6 +448,7 @@ mod tests {
                 (String::new(), m),
             ],
             ret: Ret::Array(4),
+            owner: None,
         };
         let text = function(&f, Some("aircraft_z"));
         for want in [

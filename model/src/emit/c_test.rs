@@ -9,10 +9,10 @@
 //! writes every output's double in host byte order, for the workspace's bit-identity check.
 
 use super::c::{c_name, data_name, double_literal, HEADER};
-use super::cross::{arg_columns, calls, columns, Call};
-use super::functions::Function;
+use super::cross::{arg_columns, calls, columns, Call, INTO_INPUTS, INTO_LEN};
+use super::functions::{Function, Prepared};
 use super::reference::{evaluate, Reference};
-use super::shape::{access, c_type};
+use super::shape::{access, c_type, C_PREFIX};
 use super::{Builtin, COMMAND};
 use crate::aircraft::Param;
 use crate::algebra::Q;
@@ -106,8 +106,41 @@ fn check_block(call: &Call, b: &Builtin, point: usize) -> String {
     out
 }
 
-/// The self-test of one aircraft: all its calls at all points.
-fn self_test_fn(param: &[Function], b: &Builtin) -> String {
+/// The block that checks `Prepared::det_k` with the data of `b` at one point, against the
+/// reference of the whole (unstaged) program: the two stages perform exactly its operations.
+fn prepared_block(p: &Prepared, b: &Builtin, point: usize) -> String {
+    let input = |name: &str| -> f64 {
+        match Param::ALL
+            .iter()
+            .find(|q| format!("k.{}", q.key().to_lowercase()) == name)
+        {
+            Some(q) => Q::from_big(b.aircraft.exact(*q).clone()).to_f64(),
+            None => sample(name, point),
+        }
+    };
+    let ids: Vec<_> = p.full.outputs.iter().map(|(_, id)| *id).collect();
+    let (want, tol) = match &evaluate(&p.full.dag, &ids, &input)[0] {
+        Reference::Value(q, e) => (double_literal(q), lit(2.0 * e)),
+        Reference::Nan => ("0.0".into(), "-1.0".into()),
+        Reference::Unknown => ("0.0".into(), "-2.0".into()),
+    };
+    let new_args: Vec<String> = std::iter::once(format!("&{}", data_name(b.module)))
+        .chain(p.new.args.iter().map(|a| lit(sample(a.name, point))))
+        .collect();
+    let new = format!("{}({})", c_name(None, &p.new), new_args.join(", "));
+    let call = format!(
+        "{}(&prepared, {})",
+        c_name(None, &p.det_k),
+        lit(sample("p0", point))
+    );
+    format!(
+        "    {{\n        const struct {C_PREFIX}{} prepared = {new};\n        static const double want[1] = {{{want}}};\n        static const double tol[1] = {{{tol}}};\n        const double got[1] = {{{call}}};\n        check(\"{call} with prepared = {new}\", got, want, tol, 1);\n    }}\n",
+        p.new.owner.expect("Prepared::new has an owner")
+    )
+}
+
+/// The self-test of one aircraft: all its calls at all points, then the prepared det K.
+fn self_test_fn(param: &[Function], prepared: &Prepared, b: &Builtin) -> String {
     let mut out = format!(
         "/* Every function with the data of {}, at {POINTS} points. */\nstatic void self_test_{}(void)\n{{\n",
         b.aircraft.name, b.module
@@ -116,13 +149,14 @@ fn self_test_fn(param: &[Function], b: &Builtin) -> String {
         for call in calls(param, b) {
             out.push_str(&check_block(&call, b, point));
         }
+        out.push_str(&prepared_block(prepared, b, point));
     }
     out.push_str("}\n\n");
     out
 }
 
 /// The `--bits` function of one aircraft: every output of a record, in record order.
-fn bits_fn(param: &[Function], b: &Builtin, columns: &[&str]) -> String {
+fn bits_fn(param: &[Function], prepared: &Prepared, b: &Builtin, columns: &[&str]) -> String {
     let mut out = format!(
         "/* Every output for {}, in record order. */\nstatic void outputs_{}(const double *x, double *o)\n{{\n    const struct rc_derivatives *k = &{};\n",
         b.aircraft.name,
@@ -154,7 +188,32 @@ fn bits_fn(param: &[Function], b: &Builtin, columns: &[&str]) -> String {
         }
         out.push_str("    }\n");
     }
-    out.push_str("}\n\n");
+    // The prepared det K with the aircraft's data, and its slice form.
+    let x = |f: &Function| -> Vec<String> {
+        arg_columns(f, columns)
+            .iter()
+            .map(|c| format!("x[{c}]"))
+            .collect()
+    };
+    let p0 = x(&prepared.det_k).remove(0);
+    let det_k = c_name(None, &prepared.det_k);
+    writeln!(
+        out,
+        "    {{\n        const struct {C_PREFIX}{} p = {}(k, {});\n        double in[{INTO_LEN}];\n        double r[{INTO_LEN}];",
+        prepared.new.owner.expect("Prepared::new has an owner"),
+        c_name(None, &prepared.new),
+        x(&prepared.new).join(", ")
+    )
+    .unwrap();
+    for (i, e) in INTO_INPUTS.iter().enumerate() {
+        writeln!(out, "        in[{i}] = {};", e.replace("p0", &p0)).unwrap();
+    }
+    writeln!(out, "        {det_k}_into(&p, in, r, {INTO_LEN});").unwrap();
+    writeln!(out, "        o[{slot}] = {det_k}(&p, {p0});").unwrap();
+    for i in 0..INTO_LEN {
+        writeln!(out, "        o[{}] = r[{i}];", slot + 1 + i).unwrap();
+    }
+    out.push_str("    }\n}\n\n");
     out
 }
 
@@ -190,13 +249,15 @@ static void check(const char *call, const double *got, const double *want, const
 "#;
 
 /// The text of `generated/c/test_roll_criterion.c`.
-pub fn self_test(param: &[Function], builtins: &[Builtin]) -> String {
+pub fn self_test(param: &[Function], prepared: &Prepared, builtins: &[Builtin]) -> String {
     let columns = columns(param, builtins);
     let n_out: usize = builtins.first().map_or(0, |b| {
         calls(param, b)
             .iter()
             .map(|c| c.f.outputs.len())
             .sum::<usize>()
+            + 1
+            + INTO_LEN
     });
     let mut out = format!(
         "// @generated by `{COMMAND}`. Do not edit.\n\
@@ -215,8 +276,8 @@ pub fn self_test(param: &[Function], builtins: &[Builtin]) -> String {
     );
     out.push_str(PRELUDE);
     for b in builtins {
-        out.push_str(&self_test_fn(param, b));
-        out.push_str(&bits_fn(param, b, &columns));
+        out.push_str(&self_test_fn(param, prepared, b));
+        out.push_str(&bits_fn(param, prepared, b, &columns));
     }
     let nc = columns.len();
     writeln!(

@@ -4,13 +4,14 @@
 //! generated function takes (sorted, so the columns do not depend on the order of the
 //! functions). For each record, both sides compute every output of every function in the same
 //! order: the parametric functions with the aircraft's data, then the aircraft's own functions
-//! with the data folded in. `test_roll_criterion --bits` prints the C results
+//! with the data folded in, then `Prepared::det_k` and `Prepared::det_k_into` of the
+//! parametric `Prepared` with the aircraft's data. `test_roll_criterion --bits` prints the C results
 //! ([`super::c_test`]); `tests/tests/c_header/calls.rs`, written here, computes the Rust ones.
 //! Both are generated from the same function list, so a new function is cross-checked without
 //! an edit.
 
 use super::c::{c_name, data_name};
-use super::functions::Function;
+use super::functions::{Function, Prepared};
 use super::rust::pretty;
 use super::shape::access;
 use super::{Builtin, COMMAND};
@@ -65,6 +66,29 @@ pub fn arg_columns(f: &Function, columns: &[&str]) -> Vec<usize> {
         .collect()
 }
 
+/// How many roll rates the cross-check passes to `det_k_into`: `p0`, `p0 * 0.5`, `p0 + 1.0` of
+/// the record ([`INTO_INPUTS`], the same arithmetic in both languages).
+pub const INTO_LEN: usize = 3;
+
+/// The roll rates of `det_k_into` as expressions of the record's `p0`, in Rust and C alike.
+pub const INTO_INPUTS: [&str; INTO_LEN] = ["p0", "p0 * 0.5", "p0 + 1.0"];
+
+/// The labels of the prepared outputs of a record for aircraft `b` (after its calls).
+pub fn prepared_labels(p: &Prepared, b: &Builtin) -> Vec<String> {
+    let new = format!("{}(&{})", c_name(None, &p.new), data_name(b.module));
+    let det_k = c_name(None, &p.det_k);
+    let mut out = vec![format!("{det_k}(&{new})")];
+    out.extend((0..INTO_LEN).map(|i| format!("{det_k}_into(&{new})[{i}]")));
+    out
+}
+
+/// The labels of every output of a record for aircraft `b`, in record order.
+pub fn record_labels(param: &[Function], prepared: &Prepared, b: &Builtin) -> Vec<String> {
+    let mut out: Vec<String> = calls(param, b).iter().flat_map(|c| labels(c, b)).collect();
+    out.extend(prepared_labels(prepared, b));
+    out
+}
+
 /// The C-style label of each output of a call, for failure messages.
 pub fn labels(call: &Call, b: &Builtin) -> Vec<String> {
     let name = c_name(call.module, call.f);
@@ -79,7 +103,13 @@ pub fn labels(call: &Call, b: &Builtin) -> Vec<String> {
         .collect()
 }
 
-fn record_fn(param: &[Function], b: &Builtin, columns: &[&str], n_out: usize) -> TokenStream {
+fn record_fn(
+    param: &[Function],
+    prepared: &Prepared,
+    b: &Builtin,
+    columns: &[&str],
+    n_out: usize,
+) -> TokenStream {
     let name = Ident::new(b.module, Span::call_site());
     let mut lets = Vec::new();
     let mut outs = Vec::new();
@@ -107,6 +137,38 @@ fn record_fn(param: &[Function], b: &Builtin, columns: &[&str], n_out: usize) ->
             outs.push(e);
         }
     }
+    // The prepared det K with this aircraft's data.
+    let col = |f: &Function| -> Vec<TokenStream> {
+        arg_columns(f, columns)
+            .iter()
+            .map(|c| {
+                let c = Literal::usize_unsuffixed(*c);
+                quote!(x[#c])
+            })
+            .collect()
+    };
+    let new_args = col(&prepared.new);
+    let p0 = col(&prepared.det_k);
+    let p0 = &p0[0];
+    let into: Vec<TokenStream> = INTO_INPUTS
+        .iter()
+        .map(|e| {
+            e.replace("p0", &p0.to_string())
+                .parse()
+                .expect("an expression")
+        })
+        .collect();
+    let n_into = Literal::usize_unsuffixed(INTO_LEN);
+    lets.push(quote! {
+        let prepared = rc::Prepared::new(k, #(#new_args),*);
+        let mut into = [0.0; #n_into];
+        prepared.det_k_into(&[#(#into),*], &mut into);
+    });
+    outs.push(quote!(prepared.det_k(#p0)));
+    for i in 0..INTO_LEN {
+        let i = Literal::usize_unsuffixed(i);
+        outs.push(quote!(into[#i]));
+    }
     assert_eq!(outs.len(), n_out, "every aircraft has the same outputs");
     let (nc, no) = (
         Literal::usize_unsuffixed(columns.len()),
@@ -124,11 +186,15 @@ fn record_fn(param: &[Function], b: &Builtin, columns: &[&str], n_out: usize) ->
 }
 
 /// The text of `tests/tests/c_header/calls.rs`.
-pub fn rust_calls(param: &[Function], builtins: &[Builtin]) -> Result<String, syn::Error> {
+pub fn rust_calls(
+    param: &[Function],
+    prepared: &Prepared,
+    builtins: &[Builtin],
+) -> Result<String, syn::Error> {
     let columns = columns(param, builtins);
     let labels: Vec<Vec<String>> = builtins
         .iter()
-        .map(|b| calls(param, b).iter().flat_map(|c| labels(c, b)).collect())
+        .map(|b| record_labels(param, prepared, b))
         .collect();
     let n_out = labels.first().map_or(0, Vec::len);
     let (nc, no, na) = (
@@ -139,7 +205,7 @@ pub fn rust_calls(param: &[Function], builtins: &[Builtin]) -> Result<String, sy
     let modules: Vec<&str> = builtins.iter().map(|b| b.module).collect();
     let fns = builtins
         .iter()
-        .map(|b| record_fn(param, b, &columns, n_out));
+        .map(|b| record_fn(param, prepared, b, &columns, n_out));
     let arms = builtins.iter().enumerate().map(|(i, b)| {
         let i = Literal::usize_unsuffixed(i);
         let m = Ident::new(b.module, Span::call_site());

@@ -13,8 +13,42 @@
 use crate::algebra::{Poly, Sym, Q};
 use rustc_hash::FxHashMap;
 
+/// The factors of a monomial, symbol and exponent.
+type Factors = Vec<(Sym, u32)>;
+
 /// Terms of a polynomial as (factors, coefficient), the input of the Horner scheme.
-type Terms = Vec<(Vec<(Sym, u32)>, Q)>;
+type Terms<C> = Vec<(Factors, C)>;
+
+/// A coefficient of the Horner scheme: an exact constant, or a node (a polynomial in other
+/// symbols, [`Dag::poly_over`]).
+trait Coefficient: Sized {
+    /// The coefficient as a node.
+    fn node(self, dag: &mut Dag) -> Id;
+    /// The sum of coefficients of one monomial, as a node.
+    fn sum(dag: &mut Dag, cs: Vec<Self>) -> Id;
+}
+
+impl Coefficient for Q {
+    fn node(self, dag: &mut Dag) -> Id {
+        dag.constant(self)
+    }
+    fn sum(dag: &mut Dag, cs: Vec<Q>) -> Id {
+        // Exact: the constants of one monomial add in rational arithmetic.
+        let total = cs.iter().fold(Q::ZERO, |acc, c| &acc + c);
+        dag.constant(total)
+    }
+}
+
+impl Coefficient for Id {
+    fn node(self, _: &mut Dag) -> Id {
+        self
+    }
+    fn sum(dag: &mut Dag, cs: Vec<Id>) -> Id {
+        let mut it = cs.into_iter();
+        let first = it.next().unwrap_or_else(|| dag.constant(Q::ZERO));
+        it.fold(first, |acc, c| dag.add(acc, c))
+    }
+}
 
 /// Index of a node in a [`Dag`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -39,6 +73,27 @@ pub enum Node {
     Neg(Id),
     /// sqrt(a) (libm; NaN for negative a, which is how "no root" is signalled without a branch)
     Sqrt(Id),
+    /// copysign(a, b): the magnitude of a with the sign of b (IEEE 754 `copySign`, C99
+    /// `copysign`, core's `f64::copysign`); exact, and how the stable quadratic formula picks
+    /// the root without cancellation without a branch.
+    CopySign(Id, Id),
+}
+
+impl Node {
+    /// The same operation on the children `f` gives for this node's children (a leaf as it is):
+    /// how passes that copy a DAG node for node rebuild a node.
+    pub fn map_children(&self, f: impl Fn(Id) -> Id) -> Node {
+        match *self {
+            Node::Const(_) | Node::Input(_) => self.clone(),
+            Node::Add(a, b) => Node::Add(f(a), f(b)),
+            Node::Sub(a, b) => Node::Sub(f(a), f(b)),
+            Node::Mul(a, b) => Node::Mul(f(a), f(b)),
+            Node::Div(a, b) => Node::Div(f(a), f(b)),
+            Node::Neg(a) => Node::Neg(f(a)),
+            Node::Sqrt(a) => Node::Sqrt(f(a)),
+            Node::CopySign(a, b) => Node::CopySign(f(a), f(b)),
+        }
+    }
 }
 
 /// Operation counts after common-subexpression elimination.
@@ -90,6 +145,21 @@ impl Dag {
     /// Node by id.
     pub fn node(&self, id: Id) -> &Node {
         &self.nodes[id.0 as usize]
+    }
+
+    /// A DAG with the given inputs (in this order) and no node yet: the start of a pass that
+    /// rebuilds a DAG ([`Dag::push`]).
+    pub fn with_inputs(inputs: &[String]) -> Dag {
+        Dag {
+            inputs: inputs.to_vec(),
+            ..Dag::default()
+        }
+    }
+
+    /// Adds a node exactly as given (hash-consed, not folded): for passes that copy nodes of
+    /// another DAG whose children they have already copied.
+    pub fn push(&mut self, n: Node) -> Id {
+        self.add_node(n)
     }
 
     fn add_node(&mut self, n: Node) -> Id {
@@ -253,10 +323,19 @@ impl Dag {
         self.add_node(Node::Sqrt(a))
     }
 
+    /// copysign(a, b). Folded only when both are constants: the sign of a rational zero is +.
+    pub fn copysign(&mut self, a: Id, b: Id) -> Id {
+        if let (Some(x), Some(y)) = (self.as_const(a).cloned(), self.as_const(b).cloned()) {
+            let m = if x.is_negative() { -&x } else { x };
+            return self.constant(if y.is_negative() { -&m } else { m });
+        }
+        self.add_node(Node::CopySign(a, b))
+    }
+
     /// Builds a polynomial with a greedy multivariate Horner scheme: factor out the symbol that
     /// occurs in most terms, recurse on its coefficients. `leaf` maps each symbol to a node.
     pub fn poly(&mut self, p: &Poly, leaf: &dyn Fn(Sym) -> Id) -> Id {
-        let terms: Terms = p
+        let terms: Terms<Q> = p
             .terms()
             .iter()
             .map(|(m, c)| (m.factors(), c.clone()))
@@ -264,7 +343,35 @@ impl Dag {
         self.horner(terms, leaf)
     }
 
-    fn horner(&mut self, terms: Terms, leaf: &dyn Fn(Sym) -> Id) -> Id {
+    /// Builds a polynomial as a Horner scheme in the symbols `outer` only, each coefficient (a
+    /// polynomial in the other symbols) one node built by [`Dag::poly`]: the operations that
+    /// involve `outer` are then only those of the scheme, and everything else is a coefficient
+    /// that does not depend on them (what [`super::stage`] computes once per aircraft).
+    pub fn poly_over(&mut self, p: &Poly, outer: &[Sym], leaf: &dyn Fn(Sym) -> Id) -> Id {
+        let mut groups: Vec<(Vec<(Sym, u32)>, Poly)> = Vec::new();
+        for (m, c) in p.terms() {
+            let (out, rest): (Factors, Factors) = m
+                .factors()
+                .into_iter()
+                .partition(|(s, _)| outer.contains(s));
+            let mut r = crate::algebra::Mono::ONE;
+            for (s, e) in rest {
+                r.set(s, e);
+            }
+            let term = Poly::term(r, c.clone());
+            match groups.iter_mut().find(|(f, _)| *f == out) {
+                Some((_, q)) => *q = &*q + &term,
+                None => groups.push((out, term)),
+            }
+        }
+        let terms: Terms<Id> = groups
+            .into_iter()
+            .map(|(f, q)| (f, self.poly(&q, leaf)))
+            .collect();
+        self.horner(terms, leaf)
+    }
+
+    fn horner<C: Coefficient>(&mut self, terms: Terms<C>, leaf: &dyn Fn(Sym) -> Id) -> Id {
         if terms.is_empty() {
             return self.constant(Q::ZERO);
         }
@@ -279,8 +386,7 @@ impl Dag {
             }
         }
         if count.is_empty() {
-            let sum = terms.iter().fold(Q::ZERO, |acc, (_, c)| &acc + c);
-            return self.constant(sum);
+            return C::sum(self, terms.into_iter().map(|(_, c)| c).collect());
         }
         count.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
         let (v, n) = count[0];
@@ -288,7 +394,7 @@ impl Dag {
             // No symbol is shared: a sum of monomials.
             let mut acc: Option<Id> = None;
             for (f, c) in terms {
-                let t = self.monomial(&f, &c, leaf);
+                let t = self.monomial(&f, c, leaf);
                 acc = Some(match acc {
                     None => t,
                     Some(a) => self.add(a, t),
@@ -297,8 +403,8 @@ impl Dag {
             return acc.unwrap_or_else(|| self.constant(Q::ZERO));
         }
         if terms.len() == 1 {
-            let (f, c) = &terms[0];
-            return self.monomial(f, c, leaf);
+            let (f, c) = terms.into_iter().next().expect("one term");
+            return self.monomial(&f, c, leaf);
         }
         // Split by the power of v: p = sum_k v^k c_k, then Horner in v.
         let max = terms
@@ -306,7 +412,7 @@ impl Dag {
             .map(|(f, _)| f.iter().find(|(s, _)| *s == v).map_or(0, |(_, e)| *e))
             .max()
             .unwrap_or(0);
-        let mut by_power: Vec<Terms> = vec![Vec::new(); max as usize + 1];
+        let mut by_power: Vec<Terms<C>> = (0..=max).map(|_| Vec::new()).collect();
         for (f, c) in terms {
             let e = f.iter().find(|(s, _)| *s == v).map_or(0, |(_, e)| *e);
             let rest: Vec<(Sym, u32)> = f.into_iter().filter(|(s, _)| *s != v).collect();
@@ -358,7 +464,7 @@ impl Dag {
         }
     }
 
-    fn monomial(&mut self, f: &[(Sym, u32)], c: &Q, leaf: &dyn Fn(Sym) -> Id) -> Id {
+    fn monomial<C: Coefficient>(&mut self, f: &[(Sym, u32)], c: C, leaf: &dyn Fn(Sym) -> Id) -> Id {
         let mut acc: Option<Id> = None;
         for (s, e) in f {
             let x = leaf(*s);
@@ -368,7 +474,7 @@ impl Dag {
                 Some(a) => self.mul(a, p),
             });
         }
-        let k = self.constant(c.clone());
+        let k = c.node(self);
         match acc {
             None => k,
             Some(a) => self.mul(k, a),
@@ -393,7 +499,11 @@ impl Dag {
     pub fn children(&self, id: Id) -> Vec<Id> {
         match *self.node(id) {
             Node::Const(_) | Node::Input(_) => vec![],
-            Node::Add(a, b) | Node::Sub(a, b) | Node::Mul(a, b) | Node::Div(a, b) => vec![a, b],
+            Node::Add(a, b)
+            | Node::Sub(a, b)
+            | Node::Mul(a, b)
+            | Node::Div(a, b)
+            | Node::CopySign(a, b) => vec![a, b],
             Node::Neg(a) | Node::Sqrt(a) => vec![a],
         }
     }
@@ -411,7 +521,7 @@ impl Dag {
                 Node::Mul(..) => c.mul += 1,
                 Node::Div(..) => c.div += 1,
                 Node::Neg(_) => c.neg += 1,
-                Node::Sqrt(_) => c.libm += 1,
+                Node::Sqrt(_) | Node::CopySign(..) => c.libm += 1,
                 Node::Const(_) | Node::Input(_) => {}
             }
         }
@@ -432,6 +542,7 @@ impl Dag {
                 Node::Div(a, b) => g(a) / g(b),
                 Node::Neg(a) => -g(a),
                 Node::Sqrt(a) => g(a).sqrt(),
+                Node::CopySign(a, b) => g(a).copysign(g(b)),
             };
         }
         outputs.iter().map(|o| v[o.0 as usize]).collect()

@@ -5,12 +5,17 @@
 //! that det K costs one trim, one reciprocal of d and a 2x2 determinant.
 
 use super::expr::{Dag, Id};
+use super::formulas::{block, Formula};
+use super::linear::merge_like_terms;
 use crate::aircraft::Param;
 use crate::algebra::{Matrix, Poly, Sym, Q};
 use crate::derivation::{clear_trim, Clearing, Derivation, TRIM_DEGREE};
 use crate::equations::symbols;
 
 mod hopf;
+mod prepared;
+pub(crate) use hopf::polynomial as hopf_polynomial;
+pub use prepared::{prepared, Prepared};
 
 /// How a generated function returns its outputs.
 #[derive(Clone, Debug, PartialEq)]
@@ -54,6 +59,17 @@ pub struct Function {
     pub outputs: Vec<(String, Id)>,
     /// Return shape.
     pub ret: Ret,
+    /// The type whose `impl` block holds the function (`Some("Prepared")` for `Prepared::new`
+    /// and `Prepared::det_k`), or `None` for a free function. A function whose program reads
+    /// fields `self.fN` takes `&self`.
+    pub owner: Option<&'static str>,
+}
+
+impl Function {
+    /// Whether the function reads the fields of its owner (a method taking `&self`).
+    pub fn takes_self(&self) -> bool {
+        self.dag.inputs().iter().any(|i| i.starts_with("self."))
+    }
 }
 
 /// A struct the functions return: name, doc, fields (name, doc).
@@ -112,6 +128,9 @@ const DR: Arg = Arg {
 struct Ctx {
     dag: Dag,
     bound: Vec<(Sym, Id)>,
+    /// Symbols every polynomial is built as a Horner scheme in first ([`Dag::poly_over`]):
+    /// empty for the greedy scheme; the late symbols for a program split by [`super::stage`].
+    outer: Vec<Sym>,
 }
 
 impl Ctx {
@@ -140,7 +159,11 @@ impl Ctx {
                 bound.push((s.param(p), id));
             }
         }
-        Ctx { dag, bound }
+        Ctx {
+            dag,
+            bound,
+            outer: Vec::new(),
+        }
     }
 
     fn poly(&mut self, p: &Poly) -> Id {
@@ -155,7 +178,11 @@ impl Ctx {
                 .map(|(_, id)| *id)
                 .unwrap_or_else(|| panic!("symbol {x} is not bound in this function"))
         };
-        self.dag.poly(p, &leaf)
+        if self.outer.is_empty() {
+            self.dag.poly(p, &leaf)
+        } else {
+            self.dag.poly_over(p, &self.outer.clone(), &leaf)
+        }
     }
 
     fn bind(&mut self, s: Sym, id: Id) {
@@ -252,19 +279,34 @@ impl Ctx {
     /// h^ = h det A and d^ = d det(A)^2 are polynomials in N and det A.
     fn det_k_one_division(&mut self, d: &Derivation, a: &Matrix, rhs: &[Poly], t: &[Sym]) -> Id {
         let (num, det) = self.cramer_numerators(a, rhs);
+        self.det_k_cleared(d, t, &num, det, None)
+    }
+
+    /// det K from the trim numerators `num` over `det` (the second half of
+    /// [`Ctx::det_k_one_division`]); `det_k0` is det K0 when the caller has it already, else it
+    /// is built from K0's entries.
+    fn det_k_cleared(
+        &mut self,
+        d: &Derivation,
+        t: &[Sym],
+        num: &[Id],
+        det: Id,
+        det_k0: Option<Id>,
+    ) -> Id {
         let g = [
-            self.cleared(&d.g[0], t, &num, det, 1),
-            self.cleared(&d.g[1], t, &num, det, 1),
+            self.cleared(&d.g[0], t, num, det, 1),
+            self.cleared(&d.g[1], t, num, det, 1),
         ];
         let h = [
-            self.cleared(&d.h[0], t, &num, det, 1),
-            self.cleared(&d.h[1], t, &num, det, 1),
+            self.cleared(&d.h[0], t, num, det, 1),
+            self.cleared(&d.h[1], t, num, det, 1),
         ];
-        let dd = self.cleared(&d.d, t, &num, det, 2);
+        let dd = self.cleared(&d.d, t, num, det, 2);
         let k0: Vec<Vec<Id>> = (0..2)
             .map(|i| (0..2).map(|j| self.poly(&d.k0[i][j])).collect())
             .collect();
-        let det_k0 = self.det2([[k0[0][0], k0[0][1]], [k0[1][0], k0[1][1]]]);
+        let det_k0 =
+            det_k0.unwrap_or_else(|| self.det2([[k0[0][0], k0[0][1]], [k0[1][0], k0[1][1]]]));
         // adj(K0) g^ = [K0_11 g0 - K0_01 g1, K0_00 g1 - K0_10 g0]
         let a0 = {
             let x = self.dag.mul(k0[1][1], g[0]);
@@ -383,10 +425,9 @@ impl Ctx {
         [x[0], x[1], x[2]]
     }
 
-    /// Coefficients of a polynomial in P0 as nodes (ascending powers).
-    fn in_p0(&mut self, p: &Poly) -> Vec<Id> {
-        let s = symbols();
-        p.coeffs(s.p0).iter().map(|c| self.poly(c)).collect()
+    /// Coefficients of a polynomial in `x` as nodes (ascending powers).
+    fn in_var(&mut self, p: &Poly, x: Sym) -> Vec<Id> {
+        p.coeffs(x).iter().map(|c| self.poly(c)).collect()
     }
 
     /// Product of two polynomials in P0 given by coefficient nodes.
@@ -405,9 +446,10 @@ impl Ctx {
     /// `f(t = num / den) * den^k` as coefficient nodes in P0, with k = [`TRIM_DEGREE`] (step 8
     /// of the derivation, [`clear_trim`] by univariate convolutions).
     fn homogenize(&mut self, f: &Poly, t: &[Sym], num: &[Poly], den: &Poly) -> Vec<Id> {
-        let num: Vec<Vec<Id>> = num.iter().map(|n| self.in_p0(n)).collect();
-        let den = self.in_p0(den);
-        clear_trim(&mut InP0(self), f, t, &num, &den, TRIM_DEGREE)
+        let p0 = symbols().p0;
+        let num: Vec<Vec<Id>> = num.iter().map(|n| self.in_var(n, p0)).collect();
+        let den = self.in_var(den, p0);
+        clear_trim(&mut InVar(self, p0), f, t, &num, &den, TRIM_DEGREE)
     }
     /// det K from the bound trim: K = K0 - g h^T / d (Eqs 16, 27-31), then the 2x2 determinant.
     fn stiffness(&mut self, d: &Derivation) -> [[Id; 2]; 2] {
@@ -443,14 +485,22 @@ impl Ctx {
         outputs: Vec<(String, Id)>,
         ret: Ret,
     ) -> Function {
+        // Like terms merged exactly before anything is printed or counted.
+        let ids: Vec<Id> = outputs.iter().map(|(_, id)| *id).collect();
+        let (dag, ids) = merge_like_terms(&self.dag, &ids);
         Function {
             name,
             doc,
             takes_derivatives: takes,
             args,
-            dag: self.dag,
-            outputs,
+            dag,
+            outputs: outputs
+                .into_iter()
+                .zip(ids)
+                .map(|((n, _), id)| (n, id))
+                .collect(),
             ret,
+            owner: None,
         }
     }
 }
@@ -474,14 +524,14 @@ impl Clearing for Nodes<'_> {
     }
 }
 
-/// Polynomials in P0 as coefficient nodes (ascending powers), the ring of step 8 for the jump
-/// polynomials.
-struct InP0<'a>(&'a mut Ctx);
+/// Polynomials in one symbol as coefficient nodes (ascending powers): the ring of step 8 for the
+/// jump polynomials (in P0) and for the trim condition in delta_a.
+struct InVar<'a>(&'a mut Ctx, Sym);
 
-impl Clearing for InP0<'_> {
+impl Clearing for InVar<'_> {
     type Value = Vec<Id>;
     fn lift(&mut self, p: &Poly) -> Vec<Id> {
-        self.0.in_p0(p)
+        self.0.in_var(p, self.1)
     }
     fn add(&mut self, a: &Vec<Id>, b: &Vec<Id>) -> Vec<Id> {
         let zero = self.0.dag.constant(Q::ZERO);
@@ -501,9 +551,32 @@ fn lines(v: &[&str]) -> Vec<String> {
     v.iter().map(|s| s.to_string()).collect()
 }
 
+/// K0, g, h and d of Eqs 16, 22 and 27-31, the quantities det K is built from.
+fn stiffness_formulas(par: &Derivation) -> [(&'static str, Formula<'_>); 4] {
+    [
+        (
+            "K0",
+            Formula::Matrix(par.k0.iter().map(|r| r.iter().collect()).collect()),
+        ),
+        ("g", Formula::Vector(par.g.iter().collect())),
+        ("h", Formula::Vector(par.h.iter().collect())),
+        ("d", Formula::Poly(&par.d)),
+    ]
+}
+
+/// Prose lines followed by the block of formulas they name.
+fn with_formulas(v: &[&str], items: &[(&str, Formula)]) -> Vec<String> {
+    let mut out = lines(v);
+    out.extend(block(items));
+    out
+}
+
 /// All generated functions for a derivation (parametric when `takes_derivatives`).
 pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
     let s = symbols();
+    // The documented formulas are the parametric derivation's (the same polynomials as `d`'s
+    // before the data are folded in).
+    let par = crate::specialise::parametric();
     let t = takes_derivatives;
     let mut out = Vec::new();
     let trim_args = vec![P0, DE, DR];
@@ -526,17 +599,24 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         }
         out.push(c.finish(
             "trim",
-            lines(&[
-                "Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = -adj(A) (b u + b1 P0) / det A`",
-                "for x = [alpha, beta, q, r], affine in delta_a (aileron yaw `n_delta_a` enters the yaw",
-                "equation), and the aileron from the roll equation, a quadratic in delta_a",
-                "`g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element 0 is the",
-                "trim that continues the trim without aileron yaw (the root that tends to `-g0/g1`),",
-                "element 1 the other root; both by the cancellation-free quadratic formula. NaN where",
-                "the two trims of `p0` are complex; element 1 is infinite or NaN without aileron yaw",
-                "(a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0 (the",
-                "divergence roll rates). The other functions of `p0` use element 0.",
-            ]),
+            with_formulas(
+                &[
+                    "Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = [alpha0, beta0, Q0, R0]` solves",
+                    "`A x0 + b = 0` (Cramer's rule, one division by det A), affine in delta_a (aileron yaw",
+                    "`n_delta_a` enters b); the aileron then solves the roll equation `p_dot = 0` along it,",
+                    "a quadratic `g2 delta_a^2 + g1 delta_a + g0 = 0` (`g2 = 0` without aileron yaw). Element",
+                    "0 is the trim that continues the trim without aileron yaw (the root that tends to",
+                    "`-g0/g1`), element 1 the other root; both by the cancellation-free quadratic formula.",
+                    "NaN where the two trims of `p0` are complex; element 1 is infinite or NaN without",
+                    "aileron yaw (a single trim). Angles in rad, rates in rad/s. Non-finite where det A = 0",
+                    "(the divergence roll rates). The other functions of `p0` use element 0.",
+                ],
+                &[
+                    ("A", Formula::matrix(&par.a)),
+                    ("b", Formula::Vector(par.a_rhs.iter().collect())),
+                    ("p_dot", Formula::Poly(&par.roll_at_trim)),
+                ],
+            ),
             t,
             trim_args.clone(),
             outputs,
@@ -566,13 +646,21 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         ];
         out.push(c.finish(
             "zero_sideslip_trim",
-            lines(&[
-                "Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the",
-                "rudder freed; [alpha, q, r] from the alpha, beta and q equations, the aileron and the",
-                "rudder from the roll and yaw equations together (with aileron yaw and roll due to",
-                "rudder both controls enter both; the rudder is the schedule of the aileron-rudder",
-                "interconnect, Fig. 9). Angles in rad, rates in rad/s.",
-            ]),
+            with_formulas(
+                &[
+                    "Trim of the zero-sideslip roll at roll rate `p0` (Eqs 32-35): beta = 0 with the",
+                    "rudder freed; `[alpha0, Q0, R0]` solves `A1 x + b1 = 0` (the alpha, beta and q",
+                    "equations), the aileron and the rudder the roll and yaw equations together (with",
+                    "aileron yaw and roll due to rudder both controls enter both; the rudder is the",
+                    "schedule of the aileron-rudder interconnect, Fig. 9). Angles in rad, rates in rad/s.",
+                ],
+                &[
+                    ("A1", Formula::matrix(&par.zs_a)),
+                    ("b1", Formula::Vector(par.zs_rhs.iter().collect())),
+                    ("delta_a", Formula::Ratio(&par.zs_delta_a)),
+                    ("delta_r", Formula::Ratio(&par.zs_delta_r)),
+                ],
+            ),
             t,
             args,
             outputs,
@@ -613,10 +701,14 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         }
         out.push(c.finish(
             "jacobian5",
-            lines(&[
-                "The 5x5 Jacobian of the PSS model (Appendix A.2) at the state",
-                "x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s.",
-            ]),
+            with_formulas(
+                &[
+                    "The 5x5 Jacobian of the PSS model (Appendix A.2) at the state",
+                    "x = [alpha, beta, p, q, r]: the linearized Eqs 6-10, row i = d(x_i dot)/dx, 1/s;",
+                    "below with `(alpha0, beta0, P0, Q0, R0) = (alpha, beta, p, q, r)`.",
+                ],
+                &[("J5", Formula::matrix(&par.jacobian))],
+            ),
             t,
             args,
             outputs,
@@ -630,10 +722,13 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         let dd = c.poly(&d.d);
         out.push(c.finish(
             "residual_denominator",
-            lines(&[
-                "The static-residual denominator (Eq. 22) at the trim of `p0`:",
-                "`d = l_p + l_r alpha0 - E Q0 alpha0 - E R0 beta0`, 1/s. det K has poles where d = 0 (Fig. 8).",
-            ]),
+            with_formulas(
+                &[
+                    "The static-residual denominator d (Eq. 22) at the trim of `p0`, 1/s. det K has",
+                    "poles where d = 0 (Fig. 8).",
+                ],
+                &[("d", Formula::Poly(&par.d))],
+            ),
             t,
             trim_args.clone(),
             vec![(String::new(), dd)],
@@ -648,11 +743,15 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         let outputs = k.iter().flatten().map(|id| (String::new(), *id)).collect();
         out.push(c.finish(
             "stiffness",
-            lines(&[
-                "The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of `p0`:",
-                "`K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in Eqs 13-14,",
-                "g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual (Eqs 22-25). 1/s^2.",
-            ]),
+            with_formulas(
+                &[
+                    "The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of",
+                    "`p0`: `K = K0 - g h^T / d` where K0 holds the coefficients of [alpha, beta] in",
+                    "Eqs 13-14, g those of p and `p_s = -(h . [alpha, beta]) / d` is the static residual",
+                    "(Eqs 22-25). 1/s^2.",
+                ],
+                &stiffness_formulas(par),
+            ),
             t,
             trim_args.clone(),
             outputs,
@@ -668,12 +767,16 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         let det = c.det_k_one_division(d, &d.a, &d.a_rhs, &trims);
         out.push(c.finish(
             "det_k",
-            lines(&[
-                "The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the",
-                "saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.",
-                "Evaluated as `det K0 - h^T adj(K0) g / d` with the trim's denominator det A cleared",
-                "from g, h and d, on the trim branch of [`trim`].",
-            ]),
+            with_formulas(
+                &[
+                    "The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4. Its zeros are the",
+                    "saddle-node (jump) points of the PSS equilibria (Figs 7-8); `det J5 = d det K`.",
+                    "Evaluated as `det K0 - h^T adj(K0) g / d` (the matrix determinant lemma on",
+                    "`K = K0 - g h^T / d`) with the trim's denominator det A cleared from g, h and d, on",
+                    "the trim branch of [`trim`].",
+                ],
+                &stiffness_formulas(par),
+            ),
             t,
             trim_args.clone(),
             vec![(String::new(), det)],
@@ -708,7 +811,8 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
             "zero_sideslip_det_k",
             lines(&[
                 "det K (Eq. 27) at the zero-sideslip trim of `p0` (section V.D, Fig. 11), 1/s^4: its",
-                "zeros mark the departure (transcritical point) of the zero-sideslip roll.",
+                "zeros mark the departure (transcritical point) of the zero-sideslip roll. K0, g, h",
+                "and d are those of [`det_k`] with `beta0 = 0`.",
             ]),
             t,
             args,
@@ -726,10 +830,17 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
             .collect();
         out.push(c.finish(
             "divergence_biquadratic",
-            lines(&[
-                "Coefficients [c0, c2, c4] of det A = c4 P0^4 + c2 P0^2 + c0 (Eq. 5); its positive",
-                "roots are the pitch-yaw divergence roll rates of Table 1.",
-            ]),
+            with_formulas(
+                &[
+                    "Coefficients [c0, c2, c4] of `det A = c4 P0^4 + c2 P0^2 + c0` (Eq. 5); its",
+                    "positive roots are the pitch-yaw divergence roll rates of Table 1.",
+                ],
+                &[
+                    ("c0", Formula::Poly(&par.biquadratic[0])),
+                    ("c2", Formula::Poly(&par.biquadratic[1])),
+                    ("c4", Formula::Poly(&par.biquadratic[2])),
+                ],
+            ),
             t,
             vec![],
             outs,
@@ -740,27 +851,35 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         let mut c = Ctx::new(t, &[]);
         let [c0, c2, c4] = [0, 1, 2].map(|i| c.poly(&d.biquadratic[i]));
         let dag = &mut c.dag;
+        // The cancellation-free quadratic formula in x = P0^2: q = -(c2 + sign(c2) sqrt(disc)) / 2
+        // adds two numbers of the same sign, and the roots are c0 / q (the smaller in
+        // magnitude) and q / c4 (the larger), each a single rounding of well-conditioned parts.
         let four = dag.constant(Q::int(4));
-        let two = dag.constant(Q::int(2));
+        let half = dag.constant(Q::ratio(1, 2));
         let c2sq = dag.mul(c2, c2);
         let c4c0 = dag.mul(c4, c0);
         let f = dag.mul(four, c4c0);
         let disc = dag.sub(c2sq, f);
         let sq = dag.sqrt(disc);
-        let nc2 = dag.neg(c2);
-        let den = dag.mul(two, c4);
-        let lo = dag.sub(nc2, sq);
-        let hi = dag.add(nc2, sq);
-        let x1 = dag.div(lo, den);
-        let x2 = dag.div(hi, den);
-        let p1 = dag.sqrt(x1);
-        let p2 = dag.sqrt(x2);
+        let signed = dag.copysign(sq, c2);
+        let sum = dag.add(c2, signed);
+        let half_sum = dag.mul(sum, half);
+        let q = dag.neg(half_sum);
+        let small = dag.div(c0, q);
+        let large = dag.div(q, c4);
+        let p1 = dag.sqrt(small);
+        let p2 = dag.sqrt(large);
         out.push(c.finish(
             "divergence_roll_rates",
             lines(&[
-                "The divergence roll rates P1, P2 of Eq. 5 (Table 1), rad/s:",
-                "`P = sqrt((-c2 -+ sqrt(c2^2 - 4 c4 c0)) / (2 c4))`, ascending when c4 = C D > 0.",
-                "NaN for a root that does not exist (negative discriminant or P0^2 < 0), without a branch.",
+                "The divergence roll rates P1 <= P2 of Eq. 5 (Table 1), rad/s, the positive roots of",
+                "`det A = c4 P0^4 + c2 P0^2 + c0` ([`divergence_biquadratic`]), by the cancellation-free",
+                "quadratic formula in `P0^2`: `q = -(c2 + copysign(sqrt(c2^2 - 4 c4 c0), c2)) / 2`,",
+                "`P1 = sqrt(c0 / q)` (the root of smaller magnitude), `P2 = sqrt(q / c4)`. Both are",
+                "accurate to a few ulps of well-conditioned coefficients even when one root is tiny",
+                "against the other (the textbook `(-c2 -+ sqrt(...)) / (2 c4)` loses the small one to",
+                "cancellation); `c4 = 0` gives `P1 = sqrt(-c0 / c2)`. NaN for a root that does not",
+                "exist (negative discriminant or `P0^2 < 0`), without a branch.",
             ]),
             t,
             vec![],

@@ -10,19 +10,22 @@ pub mod c;
 pub mod c_test;
 pub mod cross;
 pub mod expr;
+pub mod formulas;
 pub mod functions;
 pub mod latex;
+pub mod linear;
 pub mod paper;
 pub mod program;
 pub mod reference;
 pub mod rust;
 pub mod shape;
+pub mod stage;
 
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::Q;
 use crate::derivation::Derivation;
 use expr::OpCount;
-use functions::{functions, structs, Function};
+use functions::{functions, structs, Function, Prepared};
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
 use std::path::{Path, PathBuf};
@@ -64,7 +67,11 @@ pub fn parametric_functions() -> Vec<Function> {
 
 /// The functions with an aircraft's data folded in exactly, then rounded once to f64.
 pub fn specialised_functions(ac: &Aircraft) -> Vec<Function> {
-    functions(&Derivation::derive(&aircraft_values(ac)), false)
+    let d = Derivation::derive(&aircraft_values(ac));
+    let mut fs = functions(&d, false);
+    // Only per aircraft: the parametric Hopf polynomial is out of reach (functions/hopf.rs).
+    fs.push(functions::hopf_polynomial(ac, &d));
+    fs
 }
 
 /// Operation counts per function, as the header lines of a generated file.
@@ -75,9 +82,13 @@ pub fn op_count_lines(fs: &[Function]) -> Vec<String> {
     )];
     for f in fs {
         let c = op_count(f);
+        let name = match f.owner {
+            Some(owner) => format!("{owner}::{}", f.name),
+            None => f.name.to_string(),
+        };
         lines.push(format!(
             "{:<32} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7}",
-            f.name,
+            name,
             c.add,
             c.mul,
             c.div,
@@ -163,8 +174,8 @@ fn fn_items(fs: &[Function], attrs: &TokenStream) -> TokenStream {
     out
 }
 
-/// The items the proc-macro expands to: the structs and the functions, parametric (`None`)
-/// or specialised to an aircraft.
+/// The items the proc-macro expands to: the structs and the functions, parametric (`None`,
+/// with [`Prepared`]) or specialised to an aircraft.
 pub fn macro_items(aircraft: Option<&Aircraft>) -> TokenStream {
     let fs = match aircraft {
         None => parametric_functions(),
@@ -172,7 +183,76 @@ pub fn macro_items(aircraft: Option<&Aircraft>) -> TokenStream {
     };
     let mut out = struct_items(aircraft.is_none());
     out.extend(fn_items(&fs, &TokenStream::new()));
+    if aircraft.is_none() {
+        out.extend(prepared_items(&prepared(), &TokenStream::new()));
+    }
     out
+}
+
+/// The prepared det K of the parametric derivation (issue 11).
+pub fn prepared() -> Prepared {
+    functions::prepared(crate::specialise::parametric())
+}
+
+/// `struct Prepared` and its `impl`: `new`, `det_k` and the slice form `det_k_into`, each with
+/// `attrs` (the no-panic proof).
+fn prepared_items(p: &Prepared, attrs: &TokenStream) -> TokenStream {
+    let fields = p
+        .new
+        .outputs
+        .iter()
+        .map(|(n, _)| Ident::new(n, Span::call_site()));
+    let new = rust::function(&p.new, &cost_doc(&p.new));
+    let det_k = rust::function(&p.det_k, &cost_doc(&p.det_k));
+    let doc = prepared_doc(p).into_iter().map(|l| format!(" {l}"));
+    let into_doc = det_k_into_doc().into_iter().map(|l| format!(" {l}"));
+    quote! {
+        #(#[doc = #doc])*
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        pub struct Prepared { #(#fields: f64,)* }
+
+        impl Prepared {
+            #attrs
+            #new
+            #attrs
+            #det_k
+            #(#[doc = #into_doc])*
+            #attrs
+            #[inline]
+            pub fn det_k_into(&self, p0: &[f64], out: &mut [f64]) {
+                for (o, p) in core::iter::zip(out, p0) {
+                    *o = self.det_k(*p);
+                }
+            }
+        }
+    }
+}
+
+/// The doc of the `Prepared` type, in every language.
+pub fn prepared_doc(p: &Prepared) -> Vec<String> {
+    vec![
+        "det K (Eq. 27) of one aircraft and control setting, prepared for many roll rates (issue 11):".into(),
+        "`Prepared::new(k, delta_e, delta_r)` computes once everything of `det_k` that does not".into(),
+        "depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch".into(),
+        "of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is".into(),
+        "the roll-rate-dependent part of one straight-line program (model/src/emit/stage.rs), with".into(),
+        format!(
+            "{} fields; per call {} operations against {} for `Prepared::new`.",
+            p.new.outputs.len(),
+            op_count(&p.det_k).total(),
+            op_count(&p.new).total()
+        ),
+    ]
+}
+
+/// The doc of the slice form, in every language.
+pub fn det_k_into_doc() -> Vec<String> {
+    vec![
+        "det K at each roll rate of `p0`, written to `out`: element i of `out` is".into(),
+        "`self.det_k(p0[i])` for i below the shorter length; the rest of `out` is not touched."
+            .into(),
+        "No allocation, no panic; the loop body is `det_k`, straight-line.".into(),
+    ]
 }
 
 fn derivatives_const(ac: &Aircraft) -> TokenStream {
@@ -278,6 +358,8 @@ pub fn generate() -> Result<Vec<Output>, EmitError> {
         .map(|b| Ident::new(b.module, Span::call_site()));
     let structs = struct_items(true);
     let fns = fn_items(&param, &attrs);
+    let prepared = prepared();
+    let prepared_tokens = prepared_items(&prepared, &attrs);
     let example = "```\n\
         use roll_criterion::{aircraft_a, det_k};\n\n\
         let de = 2f64.to_radians();\n\
@@ -306,10 +388,16 @@ pub fn generate() -> Result<Vec<Output>, EmitError> {
         #(pub mod #mods;)*
         #structs
         #fns
+        #prepared_tokens
     };
+    let counted: Vec<Function> = param
+        .iter()
+        .cloned()
+        .chain([prepared.new.clone(), prepared.det_k.clone()])
+        .collect();
     let mut text = header(
         "Parametric functions.",
-        &param,
+        &counted,
         "symbolic parameters",
         &inputs_hash(&[]),
     );
@@ -365,15 +453,15 @@ pub fn generate() -> Result<Vec<Output>, EmitError> {
     });
     outputs.push(Output {
         path: format!("generated/c/{}", c::HEADER).into(),
-        contents: c::header(&param, &builtins),
+        contents: c::header(&param, &prepared, &builtins),
     });
     outputs.push(Output {
         path: "generated/c/test_roll_criterion.c".into(),
-        contents: c_test::self_test(&param, &builtins),
+        contents: c_test::self_test(&param, &prepared, &builtins),
     });
     outputs.push(Output {
         path: "tests/tests/c_header/calls.rs".into(),
-        contents: cross::rust_calls(&param, &builtins)?,
+        contents: cross::rust_calls(&param, &prepared, &builtins)?,
     });
     outputs.push(Output {
         path: "docs/formulas.tex".into(),

@@ -4,7 +4,9 @@
 //!
 //! Nothing is derived from these strings: `docs/formulas.tex` ([`super::latex`]) compares them with
 //! the derivation and states agreement or typesets the difference, and
-//! `tests/tests/latex.rs` pins each difference exactly.
+//! `tests/tests/latex.rs` pins each difference exactly. [`print()`] is the parser's inverse: it
+//! writes the derivation's polynomials in the same notation for the generated code's doc
+//! comments, where `tests/tests/generated.rs` reads them back with [`parse`].
 //!
 //! ```
 //! use model::emit::paper::parse;
@@ -13,7 +15,8 @@
 //! assert_eq!(parse("(m_q + C*y_beta)*P0"), parse("P0*m_q + C*P0*y_beta"));
 //! ```
 
-use crate::algebra::{Poly, Sym};
+use crate::algebra::{Poly, Sym, Q};
+use crate::derivation::hopf::hopf_symbols;
 use crate::equations::{symbols, Symbols};
 
 /// Eq. 5 multiplied by `C D` (with `m'_alpha = m_alpha/C`, `m'_q = m_q/C`,
@@ -87,7 +90,9 @@ pub const EQ34_A1: [[&str; 4]; 4] = [
 /// Eq. 34: `b1 u` as printed.
 pub const EQ34_RHS: [&str; 4] = ["0", "0", "m_delta_e*delta_e", "0"];
 
-/// Parses a printed formula written with `+ - * ^ ( )`, integers and the model's symbol names.
+/// Parses a printed formula written with `+ - * / ^ ( )`, integers and the model's symbol names
+/// (and the Hopf symbols `c1..c5`, `s`, `w` of [`crate::derivation::hopf::hopf_symbols`]); `/`
+/// divides by a constant only.
 ///
 /// Panics on a malformed string or an unknown name: the strings are constants of this module,
 /// so that is a bug here, caught by the tests.
@@ -115,7 +120,7 @@ fn lex(src: &str) -> Vec<String> {
             }
             out.push(cs[start..i].iter().collect());
         } else {
-            assert!("+-*^()".contains(c), "unexpected {c:?} in {src:?}");
+            assert!("+-*/^()".contains(c), "unexpected {c:?} in {src:?}");
             out.push(c.to_string());
             i += 1;
         }
@@ -144,9 +149,16 @@ fn parse_sum(s: &Symbols, t: &[String], pos: &mut usize) -> Poly {
 
 fn parse_product(s: &Symbols, t: &[String], pos: &mut usize) -> Poly {
     let mut acc = parse_power(s, t, pos);
-    while *pos < t.len() && t[*pos] == "*" {
+    while *pos < t.len() && (t[*pos] == "*" || t[*pos] == "/") {
+        let divide = t[*pos] == "/";
         *pos += 1;
-        acc = &acc * &parse_power(s, t, pos);
+        let factor = parse_power(s, t, pos);
+        acc = if divide {
+            let c = factor.as_constant().expect("division by a constant");
+            acc.scale(&Q::ONE.div(&c))
+        } else {
+            &acc * &factor
+        };
     }
     acc
 }
@@ -174,10 +186,78 @@ fn parse_power(s: &Symbols, t: &[String], pos: &mut usize) -> Poly {
 }
 
 fn lookup(s: &Symbols, name: &str) -> Sym {
+    let h = hopf_symbols();
     display_order(s)
         .into_iter()
+        .chain(h.c)
+        .chain([h.s, h.w])
         .find(|x| x.name() == name)
         .unwrap_or_else(|| panic!("unknown symbol {name:?}"))
+}
+
+/// Writes a polynomial in the notation [`parse`] reads: terms by total degree, then with more of
+/// the earlier symbols of the display order (parameters in Table A.1 order, controls, P0, trims)
+/// first; factors in display order; `*` between factors, `^` for powers, an integer
+/// coefficient before the factors and a fractional one as `p/q*...`.
+///
+/// ```
+/// use model::emit::paper::{parse, print};
+///
+/// let d = parse("l_p + l_r*alpha0 - E*Q0*alpha0 - E*R0*beta0");
+/// assert_eq!(print(&d), "l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0");
+/// assert_eq!(parse(&print(&d)), d);
+/// ```
+pub fn print(p: &Poly) -> String {
+    let s = symbols();
+    let h = hopf_symbols();
+    let order: Vec<Sym> = display_order(s)
+        .into_iter()
+        .chain(h.c)
+        .chain([h.s, h.w])
+        .collect();
+    let mut terms = p.terms().to_vec();
+    terms.sort_by_cached_key(|(m, _)| {
+        (
+            m.total_degree(),
+            order
+                .iter()
+                .map(|x| std::cmp::Reverse(m.exp(*x)))
+                .collect::<Vec<_>>(),
+        )
+    });
+    if terms.is_empty() {
+        return "0".into();
+    }
+    let mut out = String::new();
+    for (i, (m, c)) in terms.iter().enumerate() {
+        let sign = if c.is_negative() { "-" } else { "+" };
+        if i == 0 {
+            if c.is_negative() {
+                out.push('-');
+            }
+        } else {
+            out.push_str(&format!(" {sign} "));
+        }
+        let mut factors: Vec<String> = Vec::new();
+        let a = c.abs();
+        if !a.is_one() || m.total_degree() == 0 {
+            let b = a.to_big();
+            factors.push(if b.is_integer() {
+                b.numer().to_string()
+            } else {
+                format!("{}/{}", b.numer(), b.denom())
+            });
+        }
+        for x in &order {
+            match m.exp(*x) {
+                0 => {}
+                1 => factors.push(x.name().to_string()),
+                e => factors.push(format!("{}^{e}", x.name())),
+            }
+        }
+        out.push_str(&factors.join("*"));
+    }
+    out
 }
 
 /// Every symbol of the model in display order: parameters (Table A.1 order), controls, P0,

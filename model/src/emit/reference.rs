@@ -6,9 +6,11 @@
 //! and would fail on a target that rounds differently), but the exact value of the program's
 //! mathematics and a first-order forward error bound in units of `u = 2^-53`. Each operation
 //! adds `u |v|` (IEEE rounding) and propagates its operands' errors (`|a| e_b + |b| e_a` for a
-//! product, `(e_a + |v| e_b) / (|b| - e_b)` for a quotient, `e_a / sqrt(a)` for a root). Where
-//! the bound cannot be given (a divisor or a root's argument within its error of zero, or an
-//! overflow) the value is [`Reference::Unknown`] and is not checked.
+//! product, `(e_a + |v| e_b) / (|b| - e_b)` for a quotient, `e_a / sqrt(a)` for a root; a
+//! `copysign` is exact and keeps the bound of its magnitude). Where the bound cannot be given (a
+//! divisor or a root's argument within its error of zero, a `copysign` whose sign source is
+//! within its error of zero, or an overflow) the value is [`Reference::Unknown`] and is not
+//! checked.
 
 use super::expr::{Dag, Id, Node};
 use crate::algebra::Q;
@@ -108,6 +110,18 @@ pub fn evaluate(dag: &Dag, outputs: &[Id], input: &dyn Fn(&str) -> f64) -> Vec<R
                     }
                 }
                 other => other.clone(),
+            },
+            // Exact: the magnitude keeps its bound (| |x| - |y| | <= |x - y|); the sign is taken
+            // only where it is certain, away from zero by more than the sign's own bound.
+            Node::CopySign(a, b) => match (g(a), g(b)) {
+                (Reference::Nan, _) => Reference::Nan,
+                (Reference::Value(x, ex), Reference::Value(y, ey))
+                    if !y.is_zero() && y.to_f64().abs() > *ey =>
+                {
+                    let m = if x.is_negative() { -x } else { x.clone() };
+                    Reference::Value(if y.is_negative() { -&m } else { m }, *ex)
+                }
+                _ => Reference::Unknown,
             },
         };
     }

@@ -1,13 +1,13 @@
 //! Rust code for the generated functions, through quote/proc-macro2 and prettyplease.
 //!
-//! The statements, temporaries and parentheses come from [`super::program`], shared with the C
-//! printer so that both evaluate the same operations in the same order. Constants are exact
-//! rationals rounded once to the nearest f64 and printed as the shortest literal that
-//! round-trips.
+//! The statements, temporaries, named constants and parentheses come from [`super::program`],
+//! shared with the C printer so that both evaluate the same operations in the same order.
+//! Constants are exact rationals rounded once to the nearest f64 and printed as the shortest
+//! literal that round-trips; a named constant's doc comment gives its exact value.
 
 use super::expr::{Dag, Id};
 use super::functions::{Function, Ret};
-use super::program::{program, Expr, Op};
+use super::program::{exact_text, program, Expr, Op};
 use crate::algebra::Q;
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};
@@ -54,6 +54,10 @@ fn input_tokens(name: &str) -> TokenStream {
 fn tokens(e: &Expr) -> TokenStream {
     match e {
         Expr::Const(q) => float_literal(q),
+        Expr::Named(n) => {
+            let k = format_ident!("K{}", n);
+            quote!(#k)
+        }
         Expr::Input(name) => input_tokens(name),
         Expr::Temp(n) => {
             let t = format_ident!("t{}", n);
@@ -76,6 +80,21 @@ fn tokens(e: &Expr) -> TokenStream {
             let x = tokens(a);
             quote!(libm::sqrt(#x))
         }
+        Expr::CopySign(a, b) => {
+            // core's `f64::copysign` (the `llvm.copysign` intrinsic: inlined, cannot unwind, so the
+            // no-panic proof holds even where the arguments are constants), a method call: its
+            // receiver is parenthesized unless it is an atom.
+            let atom = match &**a {
+                Expr::Const(q) => !q.is_negative(),
+                Expr::Named(_) | Expr::Input(_) | Expr::Temp(_) => true,
+                Expr::Sqrt(_) | Expr::CopySign(..) | Expr::Paren(_) => true,
+                Expr::Binary(..) | Expr::Neg(_) => false,
+            };
+            let x = tokens(a);
+            let x = if atom { x } else { quote!((#x)) };
+            let y = tokens(b);
+            quote!(#x.copysign(#y))
+        }
         Expr::Paren(a) => {
             let x = tokens(a);
             quote!((#x))
@@ -83,19 +102,22 @@ fn tokens(e: &Expr) -> TokenStream {
     }
 }
 
-/// The body statements and the tokens of each output, for a function's DAG.
+/// The body statements and the tokens of each output, for a function's DAG: the named
+/// constants (`const KN: f64`, their exact value in a doc comment), then the temporaries.
 pub fn body(dag: &Dag, outputs: &[Id]) -> (Vec<TokenStream>, Vec<TokenStream>) {
     let p = program(dag, outputs);
-    let stmts = p
-        .temps
-        .iter()
-        .enumerate()
-        .map(|(n, e)| {
-            let name = format_ident!("t{}", n);
-            let e = tokens(e);
-            quote!(let #name = #e;)
-        })
-        .collect();
+    let constants = p.constants.iter().enumerate().map(|(n, q)| {
+        let name = format_ident!("K{}", n);
+        let doc = format!(" exact: {}", exact_text(q));
+        let v = float_literal(q);
+        quote!(#[doc = #doc] const #name: f64 = #v;)
+    });
+    let temps = p.temps.iter().enumerate().map(|(n, e)| {
+        let name = format_ident!("t{}", n);
+        let e = tokens(e);
+        quote!(let #name = #e;)
+    });
+    let stmts = constants.chain(temps).collect();
     (stmts, p.outputs.iter().map(tokens).collect())
 }
 
@@ -105,6 +127,9 @@ pub fn function(f: &Function, header_doc: &[String]) -> TokenStream {
     let (stmts, outs) = body(&f.dag, &ids);
     let name = Ident::new(f.name, Span::call_site());
     let mut args = Vec::new();
+    if f.takes_self() {
+        args.push(quote!(&self));
+    }
     if f.takes_derivatives {
         args.push(quote!(k: &Derivatives));
     }

@@ -16,7 +16,7 @@ pub const COLUMNS: [&str; 8] = [
 /// The built-in aircraft, by their index in a record.
 pub const AIRCRAFT: [&str; 2] = ["aircraft_a", "aircraft_b"];
 /// What each output is, per aircraft (C names).
-pub const LABELS: [[&str; 164]; 2] = [
+pub const LABELS: [[&str; 169]; 2] = [
     [
         "rc_trim(&rc_aircraft_a_derivatives).v[0].alpha",
         "rc_trim(&rc_aircraft_a_derivatives).v[0].beta",
@@ -182,6 +182,11 @@ pub const LABELS: [[&str; 164]; 2] = [
         "rc_aircraft_a_characteristic_coefficients().v[4]",
         "rc_aircraft_a_hurwitz_delta4()",
         "rc_aircraft_a_hopf_omega_squared()",
+        "rc_aircraft_a_hopf_polynomial()",
+        "rc_prepared_det_k(&rc_prepared_new(&rc_aircraft_a_derivatives))",
+        "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_a_derivatives))[0]",
+        "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_a_derivatives))[1]",
+        "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_a_derivatives))[2]",
     ],
     [
         "rc_trim(&rc_aircraft_b_derivatives).v[0].alpha",
@@ -348,10 +353,15 @@ pub const LABELS: [[&str; 164]; 2] = [
         "rc_aircraft_b_characteristic_coefficients().v[4]",
         "rc_aircraft_b_hurwitz_delta4()",
         "rc_aircraft_b_hopf_omega_squared()",
+        "rc_aircraft_b_hopf_polynomial()",
+        "rc_prepared_det_k(&rc_prepared_new(&rc_aircraft_b_derivatives))",
+        "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_b_derivatives))[0]",
+        "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_b_derivatives))[1]",
+        "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_b_derivatives))[2]",
     ],
 ];
 /// Every output for the aircraft with index `aircraft`, in record order.
-pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 164] {
+pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 169] {
     match aircraft {
         0 => aircraft_a(x),
         1 => aircraft_b(x),
@@ -359,7 +369,7 @@ pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 164] {
     }
 }
 /// Every output for Aircraft A, in record order.
-fn aircraft_a(x: &[f64; 8]) -> [f64; 164] {
+fn aircraft_a(x: &[f64; 8]) -> [f64; 169] {
     let k = &rc::aircraft_a::DERIVATIVES;
     let r0 = rc::trim(k, x[5], x[2], x[3]);
     let r1 = rc::zero_sideslip_trim(k, x[5], x[2]);
@@ -391,6 +401,10 @@ fn aircraft_a(x: &[f64; 8]) -> [f64; 164] {
     let r27 = rc::aircraft_a::characteristic_coefficients(x[5], x[2], x[3]);
     let r28 = rc::aircraft_a::hurwitz_delta4(x[5], x[2], x[3]);
     let r29 = rc::aircraft_a::hopf_omega_squared(x[5], x[2], x[3]);
+    let r30 = rc::aircraft_a::hopf_polynomial(x[5], x[2], x[3]);
+    let prepared = rc::Prepared::new(k, x[2], x[3]);
+    let mut into = [0.0; 3];
+    prepared.det_k_into(&[x[5], x[5] * 0.5, x[5] + 1.0], &mut into);
     [
         r0[0].alpha,
         r0[0].beta,
@@ -556,10 +570,15 @@ fn aircraft_a(x: &[f64; 8]) -> [f64; 164] {
         r27[4],
         r28,
         r29,
+        r30,
+        prepared.det_k(x[5]),
+        into[0],
+        into[1],
+        into[2],
     ]
 }
 /// Every output for Aircraft B, in record order.
-fn aircraft_b(x: &[f64; 8]) -> [f64; 164] {
+fn aircraft_b(x: &[f64; 8]) -> [f64; 169] {
     let k = &rc::aircraft_b::DERIVATIVES;
     let r0 = rc::trim(k, x[5], x[2], x[3]);
     let r1 = rc::zero_sideslip_trim(k, x[5], x[2]);
@@ -591,6 +610,10 @@ fn aircraft_b(x: &[f64; 8]) -> [f64; 164] {
     let r27 = rc::aircraft_b::characteristic_coefficients(x[5], x[2], x[3]);
     let r28 = rc::aircraft_b::hurwitz_delta4(x[5], x[2], x[3]);
     let r29 = rc::aircraft_b::hopf_omega_squared(x[5], x[2], x[3]);
+    let r30 = rc::aircraft_b::hopf_polynomial(x[5], x[2], x[3]);
+    let prepared = rc::Prepared::new(k, x[2], x[3]);
+    let mut into = [0.0; 3];
+    prepared.det_k_into(&[x[5], x[5] * 0.5, x[5] + 1.0], &mut into);
     [
         r0[0].alpha,
         r0[0].beta,
@@ -756,5 +779,10 @@ fn aircraft_b(x: &[f64; 8]) -> [f64; 164] {
         r27[4],
         r28,
         r29,
+        r30,
+        prepared.det_k(x[5]),
+        into[0],
+        into[1],
+        into[2],
     ]
 }

@@ -3,7 +3,8 @@
 //! ([`crate::derivation::TrimGroups`]) made once, so that enclosing one aircraft's polynomials
 //! is a pass over a few hundred terms.
 
-use super::dense::{IPoly, IPoly2};
+use super::dense::{Dense, Dense2};
+use super::num::Num;
 use crate::algebra::{Poly, Sym, MAX_SYMS};
 use crate::derivation::{Derivation, TrimGroups, TRIM_DEGREE};
 use crate::equations::symbols;
@@ -15,21 +16,21 @@ const POWERS: usize = 8;
 
 /// The enclosures of the valued symbols (parameters, delta_e, delta_r) and their powers.
 #[derive(Clone, Debug)]
-pub struct Table {
-    powers: Vec<[I; POWERS + 1]>,
+pub struct Table<T> {
+    powers: Vec<[T; POWERS + 1]>,
 }
 
-impl Table {
+impl<T: Num> Table<T> {
     /// The table of `values`, indexed by symbol (`None`: no value, the whole line).
-    pub fn new(values: &[Option<I>; MAX_SYMS]) -> Table {
+    pub fn new(values: &[Option<T>; MAX_SYMS]) -> Table<T> {
         let powers = values
             .iter()
             .map(|v| {
-                let x = v.unwrap_or_else(I::entire);
-                let mut p = [I::point(1.0); POWERS + 1];
+                let x = v.unwrap_or_else(|| T::constant(I::entire()));
+                let mut p = [T::constant(I::point(1.0)); POWERS + 1];
                 for e in 1..=POWERS {
                     p[e] = if e % 2 == 0 {
-                        p[e / 2].sqr()
+                        p[e / 2].powi(2)
                     } else {
                         p[e - 1] * x
                     };
@@ -40,7 +41,7 @@ impl Table {
         Table { powers }
     }
 
-    fn pow(&self, sym: u8, e: u8) -> I {
+    fn pow(&self, sym: u8, e: u8) -> T {
         let p = &self.powers[sym as usize];
         match p.get(e as usize) {
             Some(v) => *v,
@@ -107,19 +108,20 @@ impl Compiled {
         }
     }
 
-    fn term_value(t: &Term, table: &Table) -> I {
+    fn term_value<T: Num>(t: &Term, table: &Table<T>) -> T {
         t.factors
             .iter()
-            .fold(t.coef, |v, (sym, e)| v * table.pow(*sym, *e))
+            .fold(T::constant(t.coef), |v, (sym, e)| v * table.pow(*sym, *e))
     }
 
     /// The enclosure as a polynomial in P0 and delta_a.
-    pub fn lift(&self, table: &Table) -> IPoly2 {
-        let mut grid = vec![vec![I::point(0.0); self.p0_degree + 1]; self.da_degree + 1];
+    pub fn lift<T: Num>(&self, table: &Table<T>) -> Dense2<T> {
+        let zero = T::constant(I::point(0.0));
+        let mut grid = vec![vec![zero; self.p0_degree + 1]; self.da_degree + 1];
         for t in &self.terms {
             grid[t.da][t.p0] = grid[t.da][t.p0] + Compiled::term_value(t, table);
         }
-        IPoly2::new(grid.into_iter().map(IPoly::new).collect())
+        Dense2::new(grid.into_iter().map(Dense::new).collect())
     }
 
     /// The highest power of P0.

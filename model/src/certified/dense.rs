@@ -1,36 +1,40 @@
-//! Dense polynomials in P0, and in P0 and delta_a, with interval coefficients: the criterion
-//! polynomials of one aircraft enclosed in f64.
+//! Dense polynomials in P0, and in P0 and delta_a, with enclosed coefficients ([`Num`]): the
+//! criterion polynomials of one aircraft (or of a box of aircraft) enclosed in f64.
 //!
-//! Every operation is a finite sequence of interval additions and multiplications (and, for
-//! [`IPoly::div_exact`], divisions by an interval that excludes zero), so each coefficient of a
+//! Every operation is a finite sequence of additions and multiplications of enclosures (and,
+//! for [`Dense::div_exact`], divisions by one that excludes zero), so each coefficient of a
 //! result encloses the exact coefficient that the same operations give on the exact inputs.
 
+use super::num::Num;
 use crate::interval::I;
 use crate::roots::F64Poly;
 
-/// A polynomial in one variable with interval coefficients, ascending; trailing coefficients
-/// that are exactly `[0, 0]` are dropped, so the degree is exact whenever the leading
-/// coefficient excludes zero.
+/// A polynomial in one variable with enclosed coefficients, ascending; trailing coefficients
+/// that are exact zeros are dropped, so the degree is exact whenever the leading coefficient
+/// cannot vanish.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct IPoly(pub Vec<I>);
+pub struct Dense<T>(pub Vec<T>);
 
-impl IPoly {
+/// A polynomial with interval coefficients.
+pub type IPoly = Dense<I>;
+
+impl<T: Num> Dense<T> {
     /// The zero polynomial.
-    pub fn zero() -> IPoly {
-        IPoly(Vec::new())
+    pub fn zero() -> Dense<T> {
+        Dense(Vec::new())
     }
 
     /// The constant `c`.
-    pub fn constant(c: I) -> IPoly {
-        IPoly(vec![c]).trimmed()
+    pub fn constant(c: T) -> Dense<T> {
+        Dense(vec![c]).trimmed()
     }
 
     /// From ascending coefficients.
-    pub fn new(c: Vec<I>) -> IPoly {
-        IPoly(c).trimmed()
+    pub fn new(c: Vec<T>) -> Dense<T> {
+        Dense(c).trimmed()
     }
 
-    fn trimmed(mut self) -> IPoly {
+    fn trimmed(mut self) -> Dense<T> {
         while self.0.last().is_some_and(|c| c.is_exact_zero()) {
             self.0.pop();
         }
@@ -49,15 +53,15 @@ impl IPoly {
     }
 
     /// The coefficients.
-    pub fn coeffs(&self) -> &[I] {
+    pub fn coeffs(&self) -> &[T] {
         &self.0
     }
 
     /// `self + o`.
-    pub fn add(&self, o: &IPoly) -> IPoly {
+    pub fn add(&self, o: &Dense<T>) -> Dense<T> {
         let n = self.0.len().max(o.0.len());
-        let zero = I::point(0.0);
-        IPoly::new(
+        let zero = T::constant(I::point(0.0));
+        Dense::new(
             (0..n)
                 .map(|i| {
                     let a = self.0.get(i).copied().unwrap_or(zero);
@@ -69,21 +73,21 @@ impl IPoly {
     }
 
     /// `-self`.
-    pub fn neg(&self) -> IPoly {
-        IPoly(self.0.iter().map(|c| -*c).collect())
+    pub fn neg(&self) -> Dense<T> {
+        Dense(self.0.iter().map(|c| -*c).collect())
     }
 
     /// `self - o`.
-    pub fn sub(&self, o: &IPoly) -> IPoly {
+    pub fn sub(&self, o: &Dense<T>) -> Dense<T> {
         self.add(&o.neg())
     }
 
     /// `self * o`.
-    pub fn mul(&self, o: &IPoly) -> IPoly {
+    pub fn mul(&self, o: &Dense<T>) -> Dense<T> {
         if self.is_zero() || o.is_zero() {
-            return IPoly::zero();
+            return Dense::zero();
         }
-        let mut r = vec![I::point(0.0); self.0.len() + o.0.len() - 1];
+        let mut r = vec![T::constant(I::point(0.0)); self.0.len() + o.0.len() - 1];
         for (i, a) in self.0.iter().enumerate() {
             if a.is_exact_zero() {
                 continue;
@@ -92,39 +96,105 @@ impl IPoly {
                 r[i + j] = r[i + j] + *a * *b;
             }
         }
-        IPoly::new(r)
+        Dense::new(r)
     }
 
     /// `c * self`.
-    pub fn scale(&self, c: I) -> IPoly {
-        IPoly::new(self.0.iter().map(|a| *a * c).collect())
+    pub fn scale(&self, c: T) -> Dense<T> {
+        Dense::new(self.0.iter().map(|a| *a * c).collect())
     }
 
     /// `self^k`.
-    pub fn pow(&self, k: u32) -> IPoly {
-        (0..k).fold(IPoly::constant(I::point(1.0)), |acc, _| acc.mul(self))
+    pub fn pow(&self, k: u32) -> Dense<T> {
+        (0..k).fold(Dense::constant(T::constant(I::point(1.0))), |acc, _| {
+            acc.mul(self)
+        })
     }
 
     /// The value at `x` by Horner's scheme (an enclosure of the range over `x`).
-    pub fn eval(&self, x: I) -> I {
+    pub fn eval(&self, x: T) -> T {
         self.0
             .iter()
             .rev()
-            .fold(I::point(0.0), |acc, c| acc * x + *c)
+            .fold(T::constant(I::point(0.0)), |acc, c| acc * x + *c)
     }
 
     /// The derivative.
-    pub fn derivative(&self) -> IPoly {
-        IPoly::new(
+    pub fn derivative(&self) -> Dense<T> {
+        Dense::new(
             self.0
                 .iter()
                 .enumerate()
                 .skip(1)
-                .map(|(i, c)| *c * I::point(i as f64))
+                .map(|(i, c)| *c * T::constant(I::point(i as f64)))
                 .collect(),
         )
     }
 
+    /// `self / d` for a `d` that divides `self` exactly in exact arithmetic: an enclosure of the
+    /// exact quotient, or `None` when the division cannot be certified (`d`'s leading and
+    /// constant coefficients may both vanish) or the enclosure of the remainder excludes zero
+    /// (then `d` does not divide `self`, and the caller's structural claim fails for these data).
+    ///
+    /// Long division from the top determines the high coefficients of the quotient well and
+    /// passes its rounding errors down to the low ones; division from the bottom (as of power
+    /// series, when `d(0) != 0`) does the opposite. For an exact division both compute the same
+    /// exact quotient, so both enclosures hold and their intersection is kept.
+    pub fn div_exact(&self, d: &Dense<T>) -> Option<Dense<T>> {
+        let (Some(n), Some(m)) = (self.degree(), d.degree()) else {
+            return d.degree().map(|_| Dense::zero());
+        };
+        if n < m {
+            return self.0.iter().all(|c| c.may_vanish()).then(Dense::zero);
+        }
+        let top = self.div_from_top(d, n, m);
+        let bottom = self.div_from_bottom(d, n, m);
+        match (top, bottom) {
+            (Some(a), Some(b)) => {
+                let q: Option<Vec<T>> = a.iter().zip(&b).map(|(x, y)| x.meet(*y)).collect();
+                q.map(Dense::new)
+            }
+            (Some(a), None) | (None, Some(a)) => Some(Dense::new(a)),
+            (None, None) => None,
+        }
+    }
+
+    fn div_from_top(&self, d: &Dense<T>, n: usize, m: usize) -> Option<Vec<T>> {
+        let lead = d.0[m];
+        if lead.may_vanish() {
+            return None;
+        }
+        let mut r = self.0.clone();
+        let mut q = vec![T::constant(I::point(0.0)); n - m + 1];
+        for k in (0..=n - m).rev() {
+            let c = r[k + m].div(lead)?;
+            q[k] = c;
+            for (j, dj) in d.0.iter().enumerate() {
+                r[k + j] = r[k + j] - c * *dj;
+            }
+        }
+        r[..m].iter().all(|c| c.may_vanish()).then_some(q)
+    }
+
+    fn div_from_bottom(&self, d: &Dense<T>, n: usize, m: usize) -> Option<Vec<T>> {
+        let d0 = d.0[0];
+        if d0.may_vanish() {
+            return None;
+        }
+        let mut r = self.0.clone();
+        let mut q = vec![T::constant(I::point(0.0)); n - m + 1];
+        for k in 0..=n - m {
+            let c = r[k].div(d0)?;
+            q[k] = c;
+            for (j, dj) in d.0.iter().enumerate() {
+                r[k + j] = r[k + j] - c * *dj;
+            }
+        }
+        r[n - m + 1..].iter().all(|c| c.may_vanish()).then_some(q)
+    }
+}
+
+impl IPoly {
     /// The polynomial with every coefficient whose index has the other parity than the degree
     /// set to an exact zero.
     ///
@@ -156,93 +226,31 @@ impl IPoly {
     pub fn mid(&self) -> F64Poly {
         F64Poly(self.0.iter().map(|c| c.mid()).collect())
     }
-
-    /// `self / d` for a `d` that divides `self` exactly in exact arithmetic: an enclosure of the
-    /// exact quotient, or `None` when the division cannot be certified (`d`'s leading and
-    /// constant coefficients may both vanish) or the enclosure of the remainder excludes zero
-    /// (then `d` does not divide `self`, and the caller's structural claim fails for these data).
-    ///
-    /// Long division from the top determines the high coefficients of the quotient well and
-    /// passes its rounding errors down to the low ones; division from the bottom (as of power
-    /// series, when `d(0) != 0`) does the opposite. For an exact division both compute the same
-    /// exact quotient, so both enclosures hold and their intersection is kept.
-    pub fn div_exact(&self, d: &IPoly) -> Option<IPoly> {
-        let (Some(n), Some(m)) = (self.degree(), d.degree()) else {
-            return d.degree().map(|_| IPoly::zero());
-        };
-        if n < m {
-            return self.0.iter().all(|c| c.contains_zero()).then(IPoly::zero);
-        }
-        let top = self.div_from_top(d, n, m);
-        let bottom = self.div_from_bottom(d, n, m);
-        match (top, bottom) {
-            (Some(a), Some(b)) => {
-                let q: Option<Vec<I>> = a.iter().zip(&b).map(|(x, y)| x.intersect(*y)).collect();
-                q.map(IPoly::new)
-            }
-            (Some(a), None) | (None, Some(a)) => Some(IPoly::new(a)),
-            (None, None) => None,
-        }
-    }
-
-    fn div_from_top(&self, d: &IPoly, n: usize, m: usize) -> Option<Vec<I>> {
-        let lead = d.0[m];
-        if lead.contains_zero() {
-            return None;
-        }
-        let mut r = self.0.clone();
-        let mut q = vec![I::point(0.0); n - m + 1];
-        for k in (0..=n - m).rev() {
-            let c = r[k + m].checked_div(lead)?;
-            q[k] = c;
-            for (j, dj) in d.0.iter().enumerate() {
-                r[k + j] = r[k + j] - c * *dj;
-            }
-        }
-        r[..m].iter().all(|c| c.contains_zero()).then_some(q)
-    }
-
-    fn div_from_bottom(&self, d: &IPoly, n: usize, m: usize) -> Option<Vec<I>> {
-        let d0 = d.0[0];
-        if d0.contains_zero() {
-            return None;
-        }
-        let mut r = self.0.clone();
-        let mut q = vec![I::point(0.0); n - m + 1];
-        for k in 0..=n - m {
-            let c = r[k].checked_div(d0)?;
-            q[k] = c;
-            for (j, dj) in d.0.iter().enumerate() {
-                r[k + j] = r[k + j] - c * *dj;
-            }
-        }
-        r[n - m + 1..]
-            .iter()
-            .all(|c| c.contains_zero())
-            .then_some(q)
-    }
 }
 
 /// A polynomial in P0 and delta_a: `self.0[i]` (a polynomial in P0) multiplies `delta_a^i`.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct IPoly2(pub Vec<IPoly>);
+pub struct Dense2<T>(pub Vec<Dense<T>>);
 
-impl IPoly2 {
+/// A polynomial in P0 and delta_a with interval coefficients.
+pub type IPoly2 = Dense2<I>;
+
+impl<T: Num> Dense2<T> {
     /// The zero polynomial.
-    pub fn zero() -> IPoly2 {
-        IPoly2(Vec::new())
+    pub fn zero() -> Dense2<T> {
+        Dense2(Vec::new())
     }
 
-    fn trimmed(mut self) -> IPoly2 {
-        while self.0.last().is_some_and(IPoly::is_zero) {
+    fn trimmed(mut self) -> Dense2<T> {
+        while self.0.last().is_some_and(Dense::is_zero) {
             self.0.pop();
         }
         self
     }
 
     /// From the coefficients of `delta_a^0, delta_a^1, ...`.
-    pub fn new(c: Vec<IPoly>) -> IPoly2 {
-        IPoly2(c).trimmed()
+    pub fn new(c: Vec<Dense<T>>) -> Dense2<T> {
+        Dense2(c).trimmed()
     }
 
     /// The degree in delta_a (`None` for the zero polynomial).
@@ -251,34 +259,34 @@ impl IPoly2 {
     }
 
     /// The coefficient of `delta_a^i` (zero beyond the degree).
-    pub fn coeff(&self, i: usize) -> IPoly {
-        self.0.get(i).cloned().unwrap_or_default()
+    pub fn coeff(&self, i: usize) -> Dense<T> {
+        self.0.get(i).cloned().unwrap_or_else(Dense::zero)
     }
 
     /// `self + o`.
-    pub fn add(&self, o: &IPoly2) -> IPoly2 {
+    pub fn add(&self, o: &Dense2<T>) -> Dense2<T> {
         let n = self.0.len().max(o.0.len());
-        IPoly2::new((0..n).map(|i| self.coeff(i).add(&o.coeff(i))).collect())
+        Dense2::new((0..n).map(|i| self.coeff(i).add(&o.coeff(i))).collect())
     }
 
     /// `self * o`.
-    pub fn mul(&self, o: &IPoly2) -> IPoly2 {
+    pub fn mul(&self, o: &Dense2<T>) -> Dense2<T> {
         if self.0.is_empty() || o.0.is_empty() {
-            return IPoly2::zero();
+            return Dense2::zero();
         }
-        let mut r = vec![IPoly::zero(); self.0.len() + o.0.len() - 1];
+        let mut r = vec![Dense::zero(); self.0.len() + o.0.len() - 1];
         for (i, a) in self.0.iter().enumerate() {
             for (j, b) in o.0.iter().enumerate() {
                 r[i + j] = r[i + j].add(&a.mul(b));
             }
         }
-        IPoly2::new(r)
+        Dense2::new(r)
     }
 
     /// The polynomial in P0 when delta_a does not occur (`None` otherwise).
-    pub fn univariate(&self) -> Option<IPoly> {
+    pub fn univariate(&self) -> Option<Dense<T>> {
         match self.0.len() {
-            0 => Some(IPoly::zero()),
+            0 => Some(Dense::zero()),
             1 => Some(self.0[0].clone()),
             _ => None,
         }

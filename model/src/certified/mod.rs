@@ -24,6 +24,7 @@
 pub mod compiled;
 pub mod dense;
 pub mod isolate;
+pub mod num;
 
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::MAX_SYMS;
@@ -31,89 +32,106 @@ use crate::derivation::Clearing;
 use crate::equations::symbols;
 use crate::interval::I;
 use compiled::{Cleared, Parametric, Table};
-use dense::{IPoly, IPoly2};
+use dense::{Dense, Dense2, IPoly, IPoly2};
 pub use isolate::{positive_roots, positive_roots_by, Bracket, Uncertified};
+use num::Num;
 
-/// The enclosures of an aircraft's data and controls: one interval per symbol of the model
-/// that has a value (the parameters, delta_e and delta_r), with their powers.
+/// The enclosures of an aircraft's data and controls (one per symbol of the model that has a
+/// value: the parameters, delta_e and delta_r) and every parametric result lifted to them.
 #[derive(Clone, Debug)]
-pub struct Values {
-    table: Table,
-    lifted: Lifted,
+pub struct Values<T = I> {
+    lifted: Lifted<T>,
 }
 
-impl Values {
+impl Values<I> {
     /// The exact data of `aircraft` (each bracketed by the two nearest doubles) at elevator
     /// `delta_e_rad` and rudder `delta_r_rad` (both exact doubles).
-    pub fn of(aircraft: &Aircraft, delta_e_rad: f64, delta_r_rad: f64) -> Values {
+    pub fn of(aircraft: &Aircraft, delta_e_rad: f64, delta_r_rad: f64) -> Values<I> {
         Values::new(
             std::array::from_fn(|i| I::from_q(aircraft.exact(Param::ALL[i]))),
             delta_e_rad,
             delta_r_rad,
         )
     }
+}
 
+impl<T: Num> Values<T> {
     /// Enclosures `params` (in [`Param::ALL`] order) of the data.
-    pub fn new(params: [I; 18], delta_e_rad: f64, delta_r_rad: f64) -> Values {
+    pub fn new(params: [T; 18], delta_e_rad: f64, delta_r_rad: f64) -> Values<T> {
         let s = symbols();
         let mut by_symbol = [None; MAX_SYMS];
         for (p, v) in Param::ALL.iter().zip(params) {
             by_symbol[s.param(*p).index()] = Some(v);
         }
-        by_symbol[s.delta_e.index()] = Some(I::point(delta_e_rad));
-        by_symbol[s.delta_r.index()] = Some(I::point(delta_r_rad));
-        let table = Table::new(&by_symbol);
+        by_symbol[s.delta_e.index()] = Some(T::constant(I::point(delta_e_rad)));
+        by_symbol[s.delta_r.index()] = Some(T::constant(I::point(delta_r_rad)));
         Values {
-            lifted: Lifted::new(Parametric::get(), &table),
-            table,
+            lifted: Lifted::new(Parametric::get(), Table::new(&by_symbol)),
         }
-    }
-
-    /// The table of enclosures and powers.
-    pub fn table(&self) -> &Table {
-        &self.table
     }
 }
 
-/// Every compiled result of [`Parametric`] lifted to one aircraft: interval polynomials in P0
+/// Every compiled result of [`Parametric`] lifted to one aircraft (or box): polynomials in P0
 /// and delta_a, computed once; the criterion polynomials are built from them
 /// ([`EnclosedPolys`]) and evaluated at single roll rates ([`value_at`]) without touching the
 /// parameters again.
 #[derive(Clone, Debug)]
-struct Lifted {
-    det_a: IPoly2,
-    trim: [IPoly2; 4],
-    roll: Vec<IPoly2>,
-    det_j5: Vec<IPoly2>,
-    d: Vec<IPoly2>,
-    zs_det: IPoly2,
-    zs_trim: [IPoly2; 3],
-    zs_det_j5: Vec<IPoly2>,
-    zs_d: Vec<IPoly2>,
-    lateral: IPoly2,
+struct Lifted<T> {
+    det_a: Dense2<T>,
+    trim: [Dense2<T>; 4],
+    roll: Vec<Dense2<T>>,
+    det_j5: Vec<Dense2<T>>,
+    d: Vec<Dense2<T>>,
+    lateral: Dense2<T>,
+    /// The zero-sideslip results, lifted on first use (clearance never needs them).
+    zs: std::sync::OnceLock<LiftedZs<T>>,
+    /// The table they are lifted from.
+    table: Table<T>,
 }
 
-impl Lifted {
-    fn new(c: &Parametric, t: &Table) -> Lifted {
-        let groups = |g: &Cleared| g.coefficients.iter().map(|c| c.lift(t)).collect();
+/// The zero-sideslip part of [`Lifted`].
+#[derive(Clone, Debug)]
+struct LiftedZs<T> {
+    zs_det: Dense2<T>,
+    zs_trim: [Dense2<T>; 3],
+    zs_det_j5: Vec<Dense2<T>>,
+    zs_d: Vec<Dense2<T>>,
+}
+
+fn lift_groups<T: Num>(g: &Cleared, t: &Table<T>) -> Vec<Dense2<T>> {
+    g.coefficients.iter().map(|c| c.lift(t)).collect()
+}
+
+impl<T: Num> Lifted<T> {
+    fn new(c: &Parametric, t: Table<T>) -> Lifted<T> {
         Lifted {
-            det_a: c.det_a.lift(t),
-            trim: std::array::from_fn(|i| c.trim[i].lift(t)),
-            roll: groups(&c.roll),
-            det_j5: groups(&c.det_j5),
-            d: groups(&c.d),
-            zs_det: c.zs_det.lift(t),
-            zs_trim: std::array::from_fn(|i| c.zs_trim[i].lift(t)),
-            zs_det_j5: groups(&c.zs_det_j5),
-            zs_d: groups(&c.zs_d),
-            lateral: c.lateral.lift(t),
+            det_a: c.det_a.lift(&t),
+            trim: std::array::from_fn(|i| c.trim[i].lift(&t)),
+            roll: lift_groups(&c.roll, &t),
+            det_j5: lift_groups(&c.det_j5, &t),
+            d: lift_groups(&c.d, &t),
+            lateral: c.lateral.lift(&t),
+            zs: std::sync::OnceLock::new(),
+            table: t,
         }
+    }
+
+    fn zs(&self) -> &LiftedZs<T> {
+        self.zs.get_or_init(|| {
+            let (c, t) = (Parametric::get(), &self.table);
+            LiftedZs {
+                zs_det: c.zs_det.lift(t),
+                zs_trim: std::array::from_fn(|i| c.zs_trim[i].lift(t)),
+                zs_det_j5: lift_groups(&c.zs_det_j5, t),
+                zs_d: lift_groups(&c.zs_d, t),
+            }
+        })
     }
 }
 
 /// The coefficient rings of the criterion polynomials in delta_a: polynomials in P0
-/// ([`IPoly`]) when the polynomials are built, numbers ([`I`]) when they are evaluated at one
-/// roll rate. [`eliminate`] is written once over both.
+/// ([`Dense`]) when the polynomials are built, numbers ([`Num`]) when they are evaluated at
+/// one roll rate. [`eliminate`] is written once over both.
 pub trait Coeff: Clone {
     /// `a + b`.
     fn add(&self, o: &Self) -> Self;
@@ -129,62 +147,68 @@ pub trait Coeff: Clone {
     fn zero() -> Self;
 }
 
-impl Coeff for IPoly {
-    fn add(&self, o: &IPoly) -> IPoly {
-        IPoly::add(self, o)
+impl<T: Num> Coeff for Dense<T> {
+    fn add(&self, o: &Dense<T>) -> Dense<T> {
+        Dense::add(self, o)
     }
-    fn sub(&self, o: &IPoly) -> IPoly {
-        IPoly::sub(self, o)
+    fn sub(&self, o: &Dense<T>) -> Dense<T> {
+        Dense::sub(self, o)
     }
-    fn mul(&self, o: &IPoly) -> IPoly {
-        IPoly::mul(self, o)
+    fn mul(&self, o: &Dense<T>) -> Dense<T> {
+        Dense::mul(self, o)
     }
-    fn pow(&self, k: u32) -> IPoly {
-        IPoly::pow(self, k)
+    fn pow(&self, k: u32) -> Dense<T> {
+        Dense::pow(self, k)
     }
-    fn div_exact(&self, d: &IPoly) -> Option<IPoly> {
-        IPoly::div_exact(self, d)
+    fn div_exact(&self, d: &Dense<T>) -> Option<Dense<T>> {
+        Dense::div_exact(self, d)
     }
-    fn zero() -> IPoly {
-        IPoly::zero()
-    }
-}
-
-impl Coeff for I {
-    fn add(&self, o: &I) -> I {
-        *self + *o
-    }
-    fn sub(&self, o: &I) -> I {
-        *self - *o
-    }
-    fn mul(&self, o: &I) -> I {
-        *self * *o
-    }
-    fn pow(&self, k: u32) -> I {
-        self.powi(k)
-    }
-    fn div_exact(&self, d: &I) -> Option<I> {
-        self.checked_div(*d)
-    }
-    fn zero() -> I {
-        I::point(0.0)
+    fn zero() -> Dense<T> {
+        Dense::zero()
     }
 }
 
-/// How the compiled results are evaluated: the ring of step 8 (polynomials in delta_a over
-/// [`Mode::Coef`]) and the lift of a compiled coefficient into it.
+/// A number as a [`Coeff`] (the ring of values at one roll rate).
+#[derive(Clone, Copy, Debug)]
+pub struct Scalar<T>(pub T);
+
+impl<T: Num> Coeff for Scalar<T> {
+    fn add(&self, o: &Self) -> Self {
+        Scalar(self.0 + o.0)
+    }
+    fn sub(&self, o: &Self) -> Self {
+        Scalar(self.0 - o.0)
+    }
+    fn mul(&self, o: &Self) -> Self {
+        Scalar(self.0 * o.0)
+    }
+    fn pow(&self, k: u32) -> Self {
+        Scalar(self.0.powi(k))
+    }
+    fn div_exact(&self, d: &Self) -> Option<Self> {
+        self.0.div(d.0).map(Scalar)
+    }
+    fn zero() -> Self {
+        Scalar(T::constant(I::point(0.0)))
+    }
+}
+
+/// How the lifted results are evaluated: the ring of step 8 (polynomials in delta_a over
+/// [`Mode::Coef`]) and the lift of a lifted polynomial into it.
 trait Mode: Clearing {
+    /// The numbers.
+    type Num: Num;
     /// Coefficients of the polynomials in delta_a.
     type Coef: Coeff;
     /// A lifted result as a value of the ring.
-    fn lifted(&self, p: &IPoly2) -> Self::Value;
+    fn lifted(&self, p: &Dense2<Self::Num>) -> Self::Value;
     /// The coefficients of `delta_a^0, delta_a^1, ...` (trailing exact zeros dropped).
     fn in_aileron(v: &Self::Value) -> Vec<Self::Coef>;
     /// Step 8 of a grouped result whose group coefficients are `lifted`.
     fn clear(
         &mut self,
         c: &Cleared,
-        lifted: &[IPoly2],
+        lifted: &[Dense2<Self::Num>],
         num: &[Self::Value],
         den: &Self::Value,
     ) -> Self::Value
@@ -205,54 +229,7 @@ trait Mode: Clearing {
     }
 }
 
-/// The criterion polynomials in P0 (and delta_a): values are [`IPoly2`].
-struct InP0;
-
-impl Clearing for InP0 {
-    type Value = IPoly2;
-    fn lift(&mut self, p: &crate::algebra::Poly) -> IPoly2 {
-        IPoly2::new(vec![IPoly::constant(constant(p))])
-    }
-    fn add(&mut self, a: &IPoly2, b: &IPoly2) -> IPoly2 {
-        a.add(b)
-    }
-    fn mul(&mut self, a: &IPoly2, b: &IPoly2) -> IPoly2 {
-        a.mul(b)
-    }
-}
-
-impl Mode for InP0 {
-    type Coef = IPoly;
-    fn lifted(&self, p: &IPoly2) -> IPoly2 {
-        p.clone()
-    }
-    fn in_aileron(v: &IPoly2) -> Vec<IPoly> {
-        v.0.clone()
-    }
-}
-
-/// The criterion at one roll rate `.0`: values are polynomials in delta_a with interval
-/// coefficients ([`Da`]).
-struct AtP0(I);
-
-/// A polynomial in delta_a of degree at most 3 with interval coefficients (no allocation).
-#[derive(Clone, Copy, Debug)]
-struct Da {
-    c: [I; 4],
-    len: usize,
-}
-
-impl Da {
-    fn new(c: [I; 4]) -> Da {
-        let len = c
-            .iter()
-            .rposition(|x| !x.is_exact_zero())
-            .map_or(0, |i| i + 1);
-        Da { c, len }
-    }
-}
-
-/// A constant step 8 lifts through the ring (only 0 and 1: the coefficients come compiled).
+/// A constant step 8 lifts through the ring (only 0 and 1: the coefficients come lifted).
 fn constant(p: &crate::algebra::Poly) -> I {
     let c = p
         .as_constant()
@@ -263,25 +240,82 @@ fn constant(p: &crate::algebra::Poly) -> I {
     }
 }
 
-impl Clearing for AtP0 {
-    type Value = Da;
-    fn lift(&mut self, p: &crate::algebra::Poly) -> Da {
-        let mut c = [I::point(0.0); 4];
-        c[0] = constant(p);
+/// The criterion polynomials in P0 (and delta_a): values are [`Dense2`].
+struct InP0<T>(std::marker::PhantomData<T>);
+
+impl<T> InP0<T> {
+    fn new() -> InP0<T> {
+        InP0(std::marker::PhantomData)
+    }
+}
+
+impl<T: Num> Clearing for InP0<T> {
+    type Value = Dense2<T>;
+    fn lift(&mut self, p: &crate::algebra::Poly) -> Dense2<T> {
+        Dense2::new(vec![Dense::constant(T::constant(constant(p)))])
+    }
+    fn add(&mut self, a: &Dense2<T>, b: &Dense2<T>) -> Dense2<T> {
+        a.add(b)
+    }
+    fn mul(&mut self, a: &Dense2<T>, b: &Dense2<T>) -> Dense2<T> {
+        a.mul(b)
+    }
+}
+
+impl<T: Num> Mode for InP0<T> {
+    type Num = T;
+    type Coef = Dense<T>;
+    fn lifted(&self, p: &Dense2<T>) -> Dense2<T> {
+        p.clone()
+    }
+    fn in_aileron(v: &Dense2<T>) -> Vec<Dense<T>> {
+        v.0.clone()
+    }
+}
+
+/// The criterion at one roll rate `.0`: values are polynomials in delta_a ([`Da`]).
+struct AtP0<T>(T);
+
+/// A polynomial in delta_a of degree at most 3 (no allocation).
+#[derive(Clone, Copy, Debug)]
+struct Da<T> {
+    c: [T; 4],
+    len: usize,
+}
+
+impl<T: Num> Da<T> {
+    fn new(c: [T; 4]) -> Da<T> {
+        let len = c
+            .iter()
+            .rposition(|x| !x.is_exact_zero())
+            .map_or(0, |i| i + 1);
+        Da { c, len }
+    }
+
+    fn anything() -> Da<T> {
+        Da::new([T::constant(I::entire()); 4])
+    }
+}
+
+impl<T: Num> Clearing for AtP0<T> {
+    type Value = Da<T>;
+    fn lift(&mut self, p: &crate::algebra::Poly) -> Da<T> {
+        let mut c = [T::constant(I::point(0.0)); 4];
+        c[0] = T::constant(constant(p));
         Da::new(c)
     }
-    fn add(&mut self, a: &Da, b: &Da) -> Da {
+    fn add(&mut self, a: &Da<T>, b: &Da<T>) -> Da<T> {
         Da::new(std::array::from_fn(|i| a.c[i] + b.c[i]))
     }
-    fn mul(&mut self, a: &Da, b: &Da) -> Da {
-        let mut c = [I::point(0.0); 4];
+    fn mul(&mut self, a: &Da<T>, b: &Da<T>) -> Da<T> {
+        let mut c = [T::constant(I::point(0.0)); 4];
         for i in 0..a.len {
             for j in 0..b.len {
                 // Step 8's products stay within degree 3 in delta_a (trim numerators are affine
                 // in it, every trim quantity at most quadratic in the trim states); a product
                 // beyond would be no value at all, never a truncated one.
                 let Some(slot) = c.get_mut(i + j) else {
-                    return Da::new([I::entire(); 4]);
+                    return Da::anything();
                 };
                 *slot = *slot + a.c[i] * b.c[j];
             }
@@ -290,20 +324,21 @@ impl Clearing for AtP0 {
     }
 }
 
-impl Mode for AtP0 {
-    type Coef = I;
-    fn lifted(&self, p: &IPoly2) -> Da {
+impl<T: Num> Mode for AtP0<T> {
+    type Num = T;
+    type Coef = Scalar<T>;
+    fn lifted(&self, p: &Dense2<T>) -> Da<T> {
         if p.0.len() > 4 {
-            return Da::new([I::entire(); 4]);
+            return Da::anything();
         }
-        let mut out = [I::point(0.0); 4];
+        let mut out = [T::constant(I::point(0.0)); 4];
         for (o, c) in out.iter_mut().zip(&p.0) {
             *o = c.eval(self.0);
         }
         Da::new(out)
     }
-    fn in_aileron(v: &Da) -> Vec<I> {
-        v.c[..v.len].to_vec()
+    fn in_aileron(v: &Da<T>) -> Vec<Scalar<T>> {
+        v.c[..v.len].iter().map(|c| Scalar(*c)).collect()
     }
 }
 
@@ -318,7 +353,7 @@ struct Unconstrained<M: Mode> {
 impl<M: Mode> Unconstrained<M> {
     /// det A, the trim and the trim condition; det J5 and d on the trim on demand
     /// ([`Unconstrained::on_trim`]).
-    fn new(m: &mut M, l: &Lifted) -> Result<Unconstrained<M>, Uncertified> {
+    fn new(m: &mut M, l: &Lifted<M::Num>) -> Result<Unconstrained<M>, Uncertified> {
         let c = Parametric::get();
         let det_a_value = m.lifted(&l.det_a);
         let det_a = M::univariate(&det_a_value)?;
@@ -332,7 +367,7 @@ impl<M: Mode> Unconstrained<M> {
     }
 
     /// `det J5 det(A)^2` (`jump`) or `d det(A)^2` on the trim.
-    fn on_trim(&self, m: &mut M, l: &Lifted, jump: bool) -> M::Value {
+    fn on_trim(&self, m: &mut M, l: &Lifted<M::Num>, jump: bool) -> M::Value {
         let c = Parametric::get();
         let (groups, lifted) = if jump {
             (&c.det_j5, &l.det_j5)
@@ -360,8 +395,9 @@ struct ZeroSideslip<M: Mode> {
 }
 
 impl<M: Mode> ZeroSideslip<M> {
-    fn new(m: &mut M, l: &Lifted) -> Result<ZeroSideslip<M>, Uncertified> {
+    fn new(m: &mut M, l: &Lifted<M::Num>) -> Result<ZeroSideslip<M>, Uncertified> {
         let c = Parametric::get();
+        let l = l.zs();
         let den = m.lifted(&l.zs_det);
         let num: [M::Value; 3] = std::array::from_fn(|i| m.lifted(&l.zs_trim[i]));
         let zs_jump = m.clear(&c.zs_det_j5, &l.zs_det_j5, &num, &den);
@@ -415,10 +451,11 @@ impl EnclosedPolys {
     /// Encloses the criterion polynomials of the data `v`.
     pub fn new(v: &Values) -> Result<EnclosedPolys, Uncertified> {
         let l = &v.lifted;
-        let u = Unconstrained::new(&mut InP0, l)?;
-        let jump_at = u.on_trim(&mut InP0, l, true);
-        let d_at = u.on_trim(&mut InP0, l, false);
-        let z = ZeroSideslip::new(&mut InP0, l)?;
+        let m = &mut InP0::new();
+        let u = Unconstrained::new(m, l)?;
+        let jump_at = u.on_trim(m, l, true);
+        let d_at = u.on_trim(m, l, false);
+        let z = ZeroSideslip::new(m, l)?;
         let lateral = l.lateral.coeff(0);
         // Every polynomial isolated below is even or odd in P0 (see `IPoly::symmetric`).
         Ok(EnclosedPolys {
@@ -459,7 +496,7 @@ pub enum Criterion {
 /// computed through the trim (the same construction at one roll rate): the trim-level factors
 /// are small, so this is much tighter near a root than the expanded polynomial's Horner sum.
 pub fn value_at(v: &Values, which: Criterion, x: f64) -> I {
-    type M1 = AtP0;
+    type M1 = AtP0<I>;
     let mut m = AtP0(I::point(x));
     let t = &v.lifted;
     let value = match which {
@@ -479,7 +516,34 @@ pub fn value_at(v: &Values, which: Criterion, x: f64) -> I {
             _ => z.zs_d_det,
         }),
     };
-    value.unwrap_or_else(|_| I::entire())
+    value.map_or_else(|_| I::entire(), |s| s.0)
+}
+
+/// The unconstrained roll's criterion quantities at one roll rate, as polynomials in delta_a
+/// (coefficients of `delta_a^0, delta_a^1, ...`), all cleared of det A as in
+/// [`EnclosedPolys`]: what clearance evaluates over a box of data and a slab of roll rates.
+#[derive(Clone, Debug)]
+pub struct AtRollRate<T> {
+    /// det A.
+    pub det_a: T,
+    /// The trim condition `det(A)^2 p_dot`.
+    pub g: Vec<T>,
+    /// `det J5 det(A)^2` on the trim.
+    pub jump_at: Vec<T>,
+}
+
+/// [`AtRollRate`] of the data `v` at the roll rate `p0` (both in the numbers `T`).
+pub fn at_roll_rate<T: Num>(v: &Values<T>, p0: T) -> Result<AtRollRate<T>, Uncertified> {
+    let m = &mut AtP0(p0);
+    let l = &v.lifted;
+    let u = Unconstrained::new(m, l)?;
+    let jump_at = u.on_trim(m, l, true);
+    let coeffs = |d: &Da<T>| d.c[..d.len].to_vec();
+    Ok(AtRollRate {
+        det_a: u.det_a.0,
+        g: coeffs(&u.trim_condition),
+        jump_at: coeffs(&jump_at),
+    })
 }
 
 /// The resultant in delta_a of the trim condition `g` and a trim quantity `f` (the enclosure of

@@ -1,134 +1,33 @@
-//! Sound enclosures of the criterion polynomials over a box of data and a slab of roll rates,
-//! and the branch and bound that certifies how far the primary branch is free of jumps.
+//! Sound enclosures of the criterion over a box of data and a slab of roll rates, for the
+//! branch and bound that certifies how far the primary branch is free of jumps.
 //!
-//! For a box X of the uncertain parameters the derivation is specialised to the fixed data only,
-//! leaving polynomials in P0, delta_a and the uncertain parameters: det A, the trim condition
-//! `G = g0 + g1 delta_a + g2 delta_a^2` and `J = det J5 det(A)^2`. A slab `[pa, pb] x X` is
-//! *certified* when, with every enclosure outward-rounded ([`crate::interval`]):
+//! A slab `[pa, pb] x X` (X the box of the uncertain parameters) is *certified* when, with every
+//! enclosure outward-rounded ([`crate::interval`]):
 //!
 //! 1. det A has no zero on it (the trim exists and is finite);
-//! 2. `g1` has no zero and the discriminant `g1^2 - 4 g0 g2` is positive: the root
+//! 2. `g1` has no zero and the discriminant `g1^2 - 4 g0 g2` of the trim condition
+//!    `G = g0 + g1 delta_a + g2 delta_a^2` is positive: the root
 //!    `delta_a = -2 g0 / (g1 + sign(g1) sqrt(disc))` (the root of smaller magnitude, 0 at P0 = 0)
 //!    is a continuous function on the slab with `dG/d delta_a != 0`, so it *is* the primary
 //!    branch there (implicit function theorem, continued from P0 = 0 through certified slabs);
-//! 3. J, evaluated with delta_a in the enclosure of that root, has no zero: no fold (saddle-node,
+//! 3. `J = det J5 det(A)^2`, evaluated on that root, has no zero: no fold (saddle-node,
 //!    det J5 = 0) of the primary branch in the slab.
 //!
-//! Each polynomial is enclosed by the mean-value form at the box centre, after a monotonicity
-//! test on its gradient enclosure: a coordinate in which it is monotone over the box is fixed at
-//! the face where the bound is attained.
+//! Each quantity is computed by the certified route's one construction
+//! ([`crate::certified::at_roll_rate`]) in [`Dual`] numbers: an enclosure over the whole slab
+//! and box together with enclosures of its partial derivatives in every uncertain parameter and
+//! in P0. The mean-value form `f(c) + sum_i df/dx_i (X) (x_i - c_i)`, with `f(c)` evaluated at
+//! the centre, then encloses `f` far more tightly than the value alone, and each enclosure is
+//! intersected into the next step of the chain. For J, whose zero is what the proof is about, a
+//! coordinate in which J is monotone over the box is fixed at the face where J comes closest to
+//! zero before the mean-value form is taken there.
 
 use crate::aircraft::{Aircraft, Param};
-use crate::algebra::{Poly, Sym};
-use crate::analysis::{parametric, specialisation};
+use crate::certified::num::{Dual, Num, GRADIENT};
+use crate::certified::{at_roll_rate, AtRollRate, Values};
 use crate::equations::symbols;
 use crate::interval::I;
-use crate::specialise::{on_trim, OnTrim};
-
-/// A polynomial compiled for interval evaluation over the variables `[P0, theta_1, ...]`.
-#[derive(Clone, Debug)]
-struct Compiled {
-    terms: Vec<(Vec<u32>, I)>,
-    degree: Vec<u32>,
-}
-
-impl Compiled {
-    fn new(p: &Poly, vars: &[Sym]) -> Compiled {
-        let mut degree = vec![0; vars.len()];
-        let terms = p
-            .terms()
-            .iter()
-            .map(|(m, c)| {
-                let e: Vec<u32> = vars.iter().map(|v| m.exp(*v)).collect();
-                for (d, k) in degree.iter_mut().zip(&e) {
-                    *d = (*d).max(*k);
-                }
-                (e, I::from_q(&c.to_big()))
-            })
-            .collect();
-        Compiled { terms, degree }
-    }
-
-    fn eval(&self, x: &[I]) -> I {
-        let powers: Vec<Vec<I>> = x
-            .iter()
-            .zip(&self.degree)
-            .map(|(xi, d)| (0..=*d).map(|k| xi.powi(k)).collect())
-            .collect();
-        let mut sum = I::point(0.0);
-        for (e, c) in &self.terms {
-            let mut t = *c;
-            for (i, k) in e.iter().enumerate() {
-                if *k > 0 {
-                    t = t * powers[i][*k as usize];
-                }
-            }
-            sum = sum + t;
-        }
-        sum
-    }
-}
-
-/// A polynomial with its gradient, for mean-value enclosures with monotonicity tests.
-#[derive(Clone, Debug)]
-struct Enclosed {
-    f: Compiled,
-    grad: Vec<Option<Compiled>>,
-}
-
-impl Enclosed {
-    fn new(p: &Poly, vars: &[Sym]) -> Enclosed {
-        let grad = vars
-            .iter()
-            .map(|v| {
-                let d = p.diff(*v);
-                (!d.is_zero()).then(|| Compiled::new(&d, vars))
-            })
-            .collect();
-        Enclosed {
-            f: Compiled::new(p, vars),
-            grad,
-        }
-    }
-
-    fn mean_value(&self, x: &[I], g: &[I]) -> I {
-        let c: Vec<I> = x.iter().map(|xi| I::point(xi.mid())).collect();
-        let mut r = self.f.eval(&c);
-        for (i, gi) in g.iter().enumerate() {
-            if x[i].lo != x[i].hi {
-                r = r + *gi * (x[i] - c[i]);
-            }
-        }
-        r
-    }
-
-    fn grads(&self, x: &[I]) -> Vec<I> {
-        self.grad
-            .iter()
-            .map(|g| g.as_ref().map_or(I::point(0.0), |g| g.eval(x)))
-            .collect()
-    }
-
-    /// An enclosure of the range over the box `x`.
-    fn enclose(&self, x: &[I]) -> I {
-        let g = self.grads(x);
-        let face = |lower: bool| -> Vec<I> {
-            x.iter()
-                .zip(&g)
-                .map(|(xi, gi)| match gi.sign() {
-                    Some(s) if (s > 0.0) == lower => I::point(xi.lo),
-                    Some(_) => I::point(xi.hi),
-                    None => *xi,
-                })
-                .collect()
-        };
-        let (xl, xh) = (face(true), face(false));
-        let lo = self.mean_value(&xl, &self.grads(&xl)).lo;
-        let hi = self.mean_value(&xh, &self.grads(&xh)).hi;
-        let naive = self.mean_value(x, &g);
-        I::new(lo.max(naive.lo), hi.min(naive.hi))
-    }
-}
+use crate::specialise::parametric;
 
 /// Why a slab could not be certified.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -141,123 +40,277 @@ pub enum Failure {
     Jump,
 }
 
-/// The criterion polynomials of one box, ready for enclosures.
+/// The criterion of a box of aircraft, ready for enclosures over slabs of roll rates.
 #[derive(Clone, Debug)]
 pub struct BoxPolys {
     /// The uncertain parameters, in the order of the box coordinates.
     pub params: Vec<Param>,
-    det_a: Enclosed,
-    g: [Enclosed; 3],
-    j: Vec<Enclosed>,
-    /// The trim condition in `[P0, delta_a, theta...]`.
-    g_full: Enclosed,
+    /// Enclosures of every parameter's fixed value (the uncertain ones are replaced by the box).
+    fixed: [I; 18],
+    delta_e_rad: f64,
     /// Whether the trim at P0 = 0 is delta_a = 0 for every aircraft of the box (exactly).
     pub symmetric: bool,
 }
 
+/// A box of uncertain data lifted for the chain (see [`BoxPolys::lift`]).
+#[derive(Clone, Debug)]
+pub struct LiftedBox {
+    theta: Vec<I>,
+    centre: Vec<f64>,
+    over: Values<Dual>,
+    at_centre: Values<I>,
+}
+
+impl LiftedBox {
+    /// The box.
+    pub fn theta(&self) -> &[I] {
+        &self.theta
+    }
+}
+
+/// The quantities of the chain, each either over the box or at its centre.
+struct Chain<T> {
+    det_a: T,
+    g1: T,
+    disc: T,
+    da: T,
+    jump: T,
+}
+
 impl BoxPolys {
-    /// Specialises the derivation to `aircraft` at `delta_e_rad` except for `params`.
+    /// The box of `aircraft` in the uncertain `params` at `delta_e_rad` (delta_r = 0).
     pub fn new(aircraft: &Aircraft, params: &[Param], delta_e_rad: f64) -> BoxPolys {
-        let s = symbols();
-        let par = parametric();
-        let free: Vec<Sym> = params.iter().map(|p| s.param(*p)).collect();
-        let values: Vec<_> = specialisation(aircraft, delta_e_rad)
-            .into_iter()
-            .filter(|(sym, _)| !free.contains(sym))
-            .collect();
-        let OnTrim {
-            det_a,
-            trim_condition: g,
-            jump_at: j,
-            ..
-        } = on_trim(par, &values);
-        let mut vars = vec![s.p0];
-        vars.extend(&free);
-        let gc = g.coeffs(s.delta_a);
-        let get = |k: usize| gc.get(k).cloned().unwrap_or_else(Poly::zero);
-        let symmetric = get(0).subs(s.p0, &Poly::zero()).is_zero();
-        let mut vars_da = vec![s.p0, s.delta_a];
-        vars_da.extend(&free);
+        assert!(
+            params.len() < GRADIENT,
+            "at most {} uncertain parameters (and P0)",
+            GRADIENT - 1
+        );
+        let fixed = std::array::from_fn(|i| I::from_q(aircraft.exact(Param::ALL[i])));
         BoxPolys {
-            g_full: Enclosed::new(&g, &vars_da),
             params: params.to_vec(),
-            det_a: Enclosed::new(&det_a, &vars),
-            g: [0, 1, 2].map(|k| Enclosed::new(&get(k), &vars)),
-            j: j.coeffs(s.delta_a)
-                .iter()
-                .map(|c| Enclosed::new(c, &vars))
-                .collect(),
-            symmetric,
+            fixed,
+            delta_e_rad,
+            symmetric: trim_at_rest_is_level(aircraft, params, delta_e_rad),
         }
     }
 
-    /// An enclosure of the primary branch's aileron over `p x theta`, or why there is none.
-    pub fn aileron(&self, p: I, theta: &[I]) -> Result<I, Failure> {
-        let mut x = vec![p];
-        x.extend_from_slice(theta);
-        if self.det_a.enclose(&x).contains_zero() {
+    /// The box `theta` lifted once for every slab of roll rates: over the box (a gradient seed in
+    /// each uncertain coordinate, P0 the last) and at its centre.
+    pub fn lift(&self, theta: &[I]) -> LiftedBox {
+        let n = self.params.len() + 1;
+        let mut over: [Dual; 18] = std::array::from_fn(|i| Dual::constant(self.fixed[i]));
+        let mut at = self.fixed;
+        let centre: Vec<f64> = theta.iter().map(|t| t.mid()).collect();
+        for (k, (param, x)) in self.params.iter().zip(theta).enumerate() {
+            over[param.index()] = Dual::variable(*x, k, n);
+            at[param.index()] = I::point(centre[k]);
+        }
+        LiftedBox {
+            theta: theta.to_vec(),
+            centre,
+            over: Values::new(over, self.delta_e_rad, 0.0),
+            at_centre: Values::new(at, self.delta_e_rad, 0.0),
+        }
+    }
+
+    /// The chain over `p x` the box, every value tightened by its mean-value form around the
+    /// centre, or the first link that fails.
+    fn chain(&self, bx: &LiftedBox, p: I) -> Result<Chain<Dual>, Failure> {
+        let n = self.params.len() + 1;
+        let x: Vec<I> = bx.theta.iter().copied().chain([p]).collect();
+        let c: Vec<f64> = bx.centre.iter().copied().chain([p.mid()]).collect();
+        let (vb, pb) = (&bx.over, Dual::variable(p, n - 1, n));
+        let (vc, pc) = (&bx.at_centre, I::point(c[n - 1]));
+        let b = at_roll_rate(vb, pb).map_err(|_| Failure::Divergence)?;
+        let m = at_roll_rate(vc, pc).map_err(|_| Failure::Divergence)?;
+        // Each link: the box value tightened by the mean-value form (both enclose it).
+        let tight = |q: Dual, centre: I| -> Result<Dual, Failure> {
+            let mut q = q;
+            let mv = mean_value(&q, centre, &x, &c);
+            q.v = q.v.intersect(mv).ok_or(Failure::Divergence)?;
+            Ok(q)
+        };
+        let det_a = tight(b.det_a, m.det_a)?;
+        if det_a.v.contains_zero() {
             return Err(Failure::Divergence);
         }
-        let [g0, g1, g2] = [0, 1, 2].map(|k| self.g[k].enclose(&x));
-        let Some(s) = g1.sign() else {
+        let coef = |a: &AtRollRate<Dual>, i: usize| {
+            a.g.get(i)
+                .copied()
+                .unwrap_or_else(|| Dual::constant(I::point(0.0)))
+        };
+        let coef_c = |a: &AtRollRate<I>, i: usize| a.g.get(i).copied().unwrap_or(I::point(0.0));
+        let (g0, g1, g2) = (coef(&b, 0), tight(coef(&b, 1), coef_c(&m, 1))?, coef(&b, 2));
+        let (g0c, g1c, g2c) = (coef_c(&m, 0), coef_c(&m, 1), coef_c(&m, 2));
+        let Some(s) = g1.v.sign() else {
             return Err(Failure::Turn);
         };
-        let disc = g1.sqr() - I::point(4.0) * g0 * g2;
-        if disc.lo <= 0.0 {
+        let four = I::point(4.0);
+        let disc = tight(
+            g1 * g1 - Dual::constant(four) * g0 * g2,
+            g1c * g1c - four * g0c * g2c,
+        )?;
+        if disc.v.lo <= 0.0 {
             return Err(Failure::Turn);
         }
-        let root = disc.sqrt().ok_or(Failure::Turn)?;
-        let den = g1 + I::point(s) * root;
-        (I::point(-2.0) * g0).checked_div(den).ok_or(Failure::Turn)
+        let root = Num::sqrt(disc).ok_or(Failure::Turn)?;
+        let root_c = I::sqrt(g1c * g1c - four * g0c * g2c).ok_or(Failure::Turn)?;
+        let sign = Dual::constant(I::point(s));
+        let den = g1 + sign * root;
+        let den_c = g1c + I::point(s) * root_c;
+        let minus_two = I::point(-2.0);
+        let da_box = (Dual::constant(minus_two) * g0)
+            .div(den)
+            .ok_or(Failure::Turn)?;
+        let da_c = (minus_two * g0c).checked_div(den_c).ok_or(Failure::Turn)?;
+        let da = tight(da_box, da_c)?;
+        let horner = |js: &[Dual], d: Dual| {
+            js.iter()
+                .rev()
+                .fold(Dual::constant(I::point(0.0)), |acc, j| acc * d + *j)
+        };
+        let horner_c = |js: &[I], d: I| js.iter().rev().fold(I::point(0.0), |acc, j| acc * d + *j);
+        let jump = tight(horner(&b.jump_at, da), horner_c(&m.jump_at, da_c))?;
+        Ok(Chain {
+            det_a,
+            g1,
+            disc,
+            da,
+            jump,
+        })
     }
 
-    /// A lower bound of |delta_a| on the primary branch at roll rate `p` over `theta`, given
-    /// the enclosure `da` of it there (which must exclude 0): the largest |delta| (of the sign
-    /// of `da`) such that the trim condition has no zero for delta_a between 0 and delta, found
-    /// by bisection. Since the primary root is the first root met from delta_a = 0 in its
-    /// direction, it lies beyond delta.
-    pub fn aileron_lower(&self, p: f64, theta: &[I], da: I) -> f64 {
+    /// An enclosure of the primary branch's aileron over `p x` the box, or why there is none.
+    pub fn aileron(&self, bx: &LiftedBox, p: I) -> Result<I, Failure> {
+        self.chain(bx, p).map(|c| c.da.v)
+    }
+
+    /// A lower bound of |delta_a| on the primary branch at roll rate `p` over `theta`, given the
+    /// enclosure `da` of it there: the smallest magnitude on the face of the box towards which
+    /// |delta_a| decreases in every coordinate where it is monotone (the mean-value form there),
+    /// and at least that of `da`.
+    pub fn aileron_lower(&self, bx: &LiftedBox, p: f64, da: I) -> f64 {
         let Some(sign) = da.sign() else {
             return 0.0;
         };
-        let free_of_roots = |delta: f64| {
-            let seg = if sign > 0.0 {
-                I::new(0.0, delta)
-            } else {
-                I::new(-delta, 0.0)
-            };
-            let mut x = vec![I::point(p), seg];
-            x.extend_from_slice(theta);
-            !self.g_full.enclose(&x).contains_zero()
+        let Ok(chain) = self.chain(bx, I::point(p)) else {
+            return da.mig();
         };
-        let (mut ok, mut bad) = (da.lo.abs().min(da.hi.abs()), da.mag());
-        if !free_of_roots(ok) {
-            return 0.0;
-        }
-        for _ in 0..24 {
-            let m = 0.5 * (ok + bad);
-            if free_of_roots(m) {
-                ok = m;
+        let face: Vec<I> = bx
+            .theta
+            .iter()
+            .enumerate()
+            .map(|(i, t)| match chain.da.g[i].sign() {
+                // Towards smaller |delta_a|: against the gradient when delta_a > 0.
+                Some(g) if g * sign > 0.0 => I::point(t.lo),
+                Some(_) => I::point(t.hi),
+                None => *t,
+            })
+            .collect();
+        let on_face = self.chain(&self.lift(&face), I::point(p)).map_or(0.0, |c| {
+            if c.da.v.sign() == Some(sign) {
+                c.da.v.mig()
             } else {
-                bad = m;
+                0.0
             }
-        }
-        ok
+        });
+        on_face.max(da.mig())
     }
 
     /// Certifies the slab `p x theta` (see the module documentation); on success returns the
     /// enclosure of the primary branch's aileron on it.
-    pub fn certify(&self, p: I, theta: &[I]) -> Result<I, Failure> {
-        let da = self.aileron(p, theta)?;
-        let mut x = vec![p];
-        x.extend_from_slice(theta);
-        let mut j = I::point(0.0);
-        for c in self.j.iter().rev() {
-            j = j * da + c.enclose(&x);
+    pub fn certify(&self, bx: &LiftedBox, p: I) -> Result<I, Failure> {
+        let chain = self.chain(bx, p)?;
+        debug_assert!(!chain.det_a.v.contains_zero() && chain.g1.v.sign().is_some());
+        debug_assert!(chain.disc.v.lo > 0.0);
+        if !chain.jump.v.contains_zero() {
+            return Ok(chain.da.v);
         }
-        if j.contains_zero() {
+        // J is monotone in some coordinates: on the face where it comes closest to zero (on the
+        // side of its sign at the centre) the mean-value form is tighter.
+        let x: Vec<I> = bx.theta.iter().copied().chain([p]).collect();
+        let centre_sign = if chain.jump.v.mid() >= 0.0 { 1.0 } else { -1.0 };
+        let mut moved = false;
+        let face: Vec<I> = x
+            .iter()
+            .enumerate()
+            .map(|(i, xi)| match chain.jump.g[i].sign() {
+                // Towards J's zero: against the gradient when J > 0, along it when J < 0.
+                Some(g) => {
+                    moved = true;
+                    if g * centre_sign > 0.0 {
+                        I::point(xi.lo)
+                    } else {
+                        I::point(xi.hi)
+                    }
+                }
+                None => *xi,
+            })
+            .collect();
+        if !moved {
             return Err(Failure::Jump);
         }
-        Ok(da)
+        let on_face = self.chain(&self.lift(&face[..face.len() - 1]), face[face.len() - 1])?;
+        match on_face.jump.v.sign() {
+            Some(s) if s == centre_sign => Ok(chain.da.v),
+            _ => Err(Failure::Jump),
+        }
     }
+}
+
+impl BoxPolys {
+    /// The coordinate of `theta` to split when the slab `p x theta` fails with `why`: the one
+    /// with the largest smear (|partial derivative| times width) of the quantity that failed
+    /// (J for a jump, the aileron otherwise), `None` when the chain cannot be evaluated.
+    pub fn split_coordinate(&self, bx: &LiftedBox, p: I, why: Failure) -> Option<usize> {
+        let theta = &bx.theta;
+        let chain = self.chain(bx, p).ok();
+        let q = match (why, chain) {
+            (Failure::Jump, Some(c)) => c.jump,
+            (_, Some(c)) => c.da,
+            (_, None) => {
+                // The chain fails before the aileron (det A or the discriminant): smear det A.
+                let n = self.params.len() + 1;
+                at_roll_rate(&bx.over, Dual::variable(p, n - 1, n))
+                    .ok()?
+                    .det_a
+            }
+        };
+        (0..theta.len())
+            .filter(|i| theta[*i].lo < theta[*i].hi)
+            .max_by(|a, b| {
+                let smear = |i: usize| q.g[i].mag() * theta[i].width();
+                smear(*a).total_cmp(&smear(*b))
+            })
+    }
+}
+
+/// The mean-value form of `q` (value and gradient over the box `x`) around the centre `c`,
+/// where its value is enclosed by `centre`.
+fn mean_value(q: &Dual, centre: I, x: &[I], c: &[f64]) -> I {
+    (0..q.n).fold(centre, |acc, i| {
+        if x[i].lo == x[i].hi {
+            acc
+        } else {
+            acc + q.g[i] * (x[i] - I::point(c[i]))
+        }
+    })
+}
+
+/// Whether the trim condition at P0 = 0 is satisfied by delta_a = 0 for every aircraft of the
+/// box, decided exactly: its delta_a^0 coefficient at P0 = 0, with the fixed data substituted,
+/// is the zero polynomial in the uncertain parameters.
+fn trim_at_rest_is_level(aircraft: &Aircraft, params: &[Param], delta_e_rad: f64) -> bool {
+    let s = symbols();
+    let free: Vec<_> = params.iter().map(|p| s.param(*p)).collect();
+    let values: Vec<_> = crate::specialise::specialisation(aircraft, delta_e_rad)
+        .into_iter()
+        .filter(|(sym, _)| !free.contains(sym))
+        .collect();
+    parametric()
+        .trim_condition()
+        .coeff(s.delta_a, 0)
+        .subs(s.p0, &crate::algebra::Poly::zero())
+        .subs_values(&values)
+        .is_zero()
 }

@@ -13,7 +13,7 @@ pub mod monte_carlo;
 use crate::aircraft::{Aircraft, Param, Uncertain};
 use crate::analysis::{analyze, AnalysisError, JumpPoint};
 use crate::interval::I;
-use bound::{BoxPolys, Failure};
+use bound::{BoxPolys, Failure, LiftedBox};
 use num_rational::BigRational;
 use serde::Serialize;
 use std::time::Instant;
@@ -279,6 +279,8 @@ fn descend(
 #[derive(Clone, Debug)]
 struct Leaf {
     theta: Vec<I>,
+    /// The box lifted once for all its slabs.
+    lifted: std::sync::Arc<LiftedBox>,
     depth: f64,
     step: f64,
     /// Lower bound of |delta_a| (rad) of the primary branch at `depth` over the box.
@@ -412,6 +414,7 @@ pub fn clear(
     };
     let min_step = settings.tolerance_p0 / 8.0;
     let mut leaves = vec![Leaf {
+        lifted: std::sync::Arc::new(polys.lift(&theta0)),
         theta: theta0.clone(),
         depth: 0.0,
         step: first_step,
@@ -467,25 +470,30 @@ pub fn clear(
         let top = (leaf.depth + leaf.step).min(limit.max(leaf.depth + min_step));
         let slab = I::new(leaf.depth, top);
         slabs += 1;
-        match polys.certify(slab, &leaf.theta) {
+        match polys.certify(&leaf.lifted, slab) {
             Ok(_) => {
                 leaf.depth = top;
                 leaf.step *= 2.0;
-                if let Ok(d) = polys.aileron(I::point(top), &leaf.theta) {
-                    leaf.da_lo = leaf.da_lo.max(polys.aileron_lower(top, &leaf.theta, d));
+                if let Ok(d) = polys.aileron(&leaf.lifted, I::point(top)) {
+                    leaf.da_lo = leaf.da_lo.max(polys.aileron_lower(&leaf.lifted, top, d));
                 }
             }
             Err(why) => {
                 if leaf.step > min_step {
                     leaf.step = (leaf.step / 4.0).max(min_step);
                 } else {
-                    // Split the widest coordinate (relative to the initial box).
-                    let k = (0..leaf.theta.len())
+                    // Split the coordinate that spreads the failing quantity most (its
+                    // partial derivative times the coordinate's width); the widest one
+                    // (relative to the initial box) when that cannot be told.
+                    let widest = (0..leaf.theta.len())
                         .max_by(|a, b| {
                             let r = |j: usize| leaf.theta[j].width() / theta0[j].width();
                             r(*a).total_cmp(&r(*b))
                         })
                         .unwrap_or(0);
+                    let k = polys
+                        .split_coordinate(&leaf.lifted, slab, why)
+                        .unwrap_or(widest);
                     let t = leaf.theta[k];
                     let m = t.mid();
                     if m <= t.lo || m >= t.hi {
@@ -497,6 +505,14 @@ pub fn clear(
                     other.theta[k] = I::new(m, t.hi);
                     leaf.step = first_step.max(min_step);
                     other.step = leaf.step;
+                    // The halves bound |delta_a| at their depth more tightly than the whole.
+                    for half in [&mut *leaf, &mut other] {
+                        half.lifted = std::sync::Arc::new(polys.lift(&half.theta));
+                        if let Ok(d) = polys.aileron(&half.lifted, I::point(half.depth)) {
+                            let lower = polys.aileron_lower(&half.lifted, half.depth, d);
+                            half.da_lo = half.da_lo.max(lower);
+                        }
+                    }
                     leaves.push(other);
                     boxes += 1;
                 }

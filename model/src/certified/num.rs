@@ -1,0 +1,189 @@
+//! The numbers the criterion polynomials are built and evaluated in: intervals ([`I`], one
+//! aircraft's data enclosed) and intervals with a gradient ([`Dual`], a box of uncertain data,
+//! for mean-value enclosures). One construction serves both: it is written over [`Num`].
+
+use crate::interval::I;
+use std::fmt::Debug;
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// Arithmetic the criterion's construction needs; every result encloses the exact result on
+/// any reals the operands enclose.
+pub trait Num:
+    Copy + Debug + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Neg<Output = Self>
+{
+    /// An exact constant, given by its enclosure (independent of any uncertain parameter).
+    fn constant(c: I) -> Self;
+    /// Whether this is an exact zero: a structural zero (a term of a parameter that is exactly
+    /// zero), which polynomials drop from their top so that degrees stay exact.
+    fn is_exact_zero(&self) -> bool;
+    /// Whether the value may be zero.
+    fn may_vanish(&self) -> bool;
+    /// `self / o`, or `None` when `o` may vanish.
+    fn div(self, o: Self) -> Option<Self>;
+    /// The common part of two enclosures of the same value (`None` if they are disjoint, which
+    /// only a wrong enclosure can give).
+    fn meet(self, o: Self) -> Option<Self>;
+    /// The square root, or `None` when the value may be negative.
+    fn sqrt(self) -> Option<Self>;
+    /// `self^k`.
+    fn powi(self, k: u32) -> Self {
+        match k {
+            0 => Self::constant(I::point(1.0)),
+            1 => self,
+            _ => {
+                let h = self.powi(k / 2);
+                let sq = h * h;
+                if k % 2 == 0 {
+                    sq
+                } else {
+                    sq * self
+                }
+            }
+        }
+    }
+}
+
+impl Num for I {
+    fn constant(c: I) -> I {
+        c
+    }
+    fn is_exact_zero(&self) -> bool {
+        I::is_exact_zero(*self)
+    }
+    fn may_vanish(&self) -> bool {
+        self.contains_zero()
+    }
+    fn div(self, o: I) -> Option<I> {
+        self.checked_div(o)
+    }
+    fn meet(self, o: I) -> Option<I> {
+        self.intersect(o)
+    }
+    fn sqrt(self) -> Option<I> {
+        if self.lo < 0.0 {
+            return None;
+        }
+        I::sqrt(self)
+    }
+    fn powi(self, k: u32) -> I {
+        I::powi(self, k)
+    }
+}
+
+/// Most uncertain parameters a [`Dual`] carries a derivative for (every parameter of the
+/// model, and P0).
+pub const GRADIENT: usize = 19;
+
+/// An enclosure of a function of the box's coordinates over the box: the value and the
+/// gradient (in the first `n` coordinates), each an interval over the whole box. The
+/// mean-value form `f(c) + sum_i g_i (x_i - c_i)` then encloses `f` over the box far more
+/// tightly than the value alone when the box is small.
+#[derive(Clone, Copy, Debug)]
+pub struct Dual {
+    /// The enclosure of the value.
+    pub v: I,
+    /// The enclosures of the partial derivatives.
+    pub g: [I; GRADIENT],
+    /// How many coordinates the gradient has.
+    pub n: usize,
+}
+
+impl Dual {
+    /// The coordinate `i` of `n` ranging over `x`.
+    pub fn variable(x: I, i: usize, n: usize) -> Dual {
+        let mut g = [I::point(0.0); GRADIENT];
+        g[i] = I::point(1.0);
+        Dual { v: x, g, n }
+    }
+
+    fn with_gradient(v: I, n: usize, f: impl Fn(usize) -> I) -> Dual {
+        let mut g = [I::point(0.0); GRADIENT];
+        for (i, gi) in g.iter_mut().enumerate().take(n) {
+            *gi = f(i);
+        }
+        Dual { v, g, n }
+    }
+}
+
+impl Add for Dual {
+    type Output = Dual;
+    fn add(self, o: Dual) -> Dual {
+        let n = self.n.max(o.n);
+        Dual::with_gradient(self.v + o.v, n, |i| self.g[i] + o.g[i])
+    }
+}
+
+impl Sub for Dual {
+    type Output = Dual;
+    fn sub(self, o: Dual) -> Dual {
+        self + -o
+    }
+}
+
+impl Neg for Dual {
+    type Output = Dual;
+    fn neg(self) -> Dual {
+        Dual::with_gradient(-self.v, self.n, |i| -self.g[i])
+    }
+}
+
+impl Mul for Dual {
+    type Output = Dual;
+    // The product rule adds: (a b)' = a b' + b a'.
+    #[allow(clippy::suspicious_arithmetic_impl)]
+    fn mul(self, o: Dual) -> Dual {
+        let n = self.n.max(o.n);
+        Dual::with_gradient(self.v * o.v, n, |i| self.v * o.g[i] + o.v * self.g[i])
+    }
+}
+
+impl Num for Dual {
+    fn sqrt(self) -> Option<Dual> {
+        // (sqrt a)' = a' / (2 sqrt a), a > 0 on the whole box.
+        if self.v.lo <= 0.0 {
+            return None;
+        }
+        let r = self.v.sqrt()?;
+        let two_r = I::point(2.0) * r;
+        let mut g = [I::point(0.0); GRADIENT];
+        for (i, gi) in g.iter_mut().enumerate().take(self.n) {
+            *gi = self.g[i].checked_div(two_r)?;
+        }
+        Some(Dual { v: r, g, n: self.n })
+    }
+    fn constant(c: I) -> Dual {
+        Dual {
+            v: c,
+            g: [I::point(0.0); GRADIENT],
+            n: 0,
+        }
+    }
+    fn is_exact_zero(&self) -> bool {
+        self.v.is_exact_zero() && self.g[..self.n].iter().all(|g| g.is_exact_zero())
+    }
+    fn may_vanish(&self) -> bool {
+        self.v.contains_zero()
+    }
+    fn div(self, o: Dual) -> Option<Dual> {
+        // (a / b)' = (a' - (a / b) b') / b.
+        let q = self.v.checked_div(o.v)?;
+        let n = self.n.max(o.n);
+        let mut g = [I::point(0.0); GRADIENT];
+        for (i, gi) in g.iter_mut().enumerate().take(n) {
+            *gi = (self.g[i] - q * o.g[i]).checked_div(o.v)?;
+        }
+        Some(Dual { v: q, g, n })
+    }
+    fn meet(self, o: Dual) -> Option<Dual> {
+        let n = self.n.max(o.n);
+        let mut g = [I::point(0.0); GRADIENT];
+        for (i, gi) in g.iter_mut().enumerate().take(n) {
+            *gi = self.g[i].intersect(o.g[i])?;
+        }
+        Some(Dual {
+            v: self.v.intersect(o.v)?,
+            g,
+            n,
+        })
+    }
+}

@@ -202,7 +202,8 @@ fn fig_1_folds_aircraft_a_near_minus_4_and_plus_8_deg() {
     assert_eq!(f.len(), 4, "{f:?}");
     let at = |p0: f64| f.iter().find(|x| (x.p - p0).abs() < 1e-6).copied().unwrap();
     assert!(
-        (at(reference::A_JUMP_P0[0]).param.to_degrees() - -3.847).abs() < 1e-3,
+        (at(reference::A_JUMP_P0[0]).param.to_degrees() - reference::A_FOLD_DELTA_A_DEG).abs()
+            < 1e-3,
         "Fig. 1: about -4 deg"
     );
     assert!(
@@ -241,7 +242,7 @@ fn fig_2_folds_aircraft_b_are_the_jump_roots_first_near_minus_12_deg() {
     // The primary branch (through the level trim) loses stability at the fold a, about -12 deg.
     let fa = folds(d)
         .into_iter()
-        .find(|f| (f.p - 2.595015).abs() < 1e-6)
+        .find(|f| (f.p - reference::B_JUMP_P0[0]).abs() < 1e-6)
         .unwrap();
     assert!(
         (fa.param.to_degrees() - reference::B_FOLD_DELTA_A_DEG).abs() < 1e-3,

@@ -454,11 +454,14 @@ impl RudderSchedule {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::reference::{
+        A_FOLD_DELTA_A_DEG, A_JUMP_P0, A_ZERO_SIDESLIP_DELTA_A_DEG, A_ZERO_SIDESLIP_P0,
+    };
 
     #[test]
     fn trims_are_equilibria_of_the_compiled_model() {
         let t = Trims::new(&Aircraft::a(), 2f64.to_radians()).unwrap();
-        for p0 in [-2.0, 0.3, 1.706288, 3.5] {
+        for p0 in [-2.0, 0.3, A_JUMP_P0[0], 3.5] {
             for dr in [0.0, 0.02] {
                 let e = t.unconstrained(p0, dr).unwrap();
                 let f = t.model().rhs(&e.x, &e.controls);
@@ -469,9 +472,9 @@ mod tests {
             let f = t.model().rhs(&z.x, &z.controls);
             assert!(f.iter().all(|v| v.abs() < 1e-11), "zs {p0}: {f:?}");
         }
-        // The first fold of Fig. 1 (analysis: delta_a = -3.8467 deg).
-        let e = t.unconstrained(1.706288, 0.0).unwrap();
-        assert!((e.controls.delta_a.to_degrees() - -3.8467).abs() < 1e-3);
+        // The first fold of Fig. 1.
+        let e = t.unconstrained(A_JUMP_P0[0], 0.0).unwrap();
+        assert!((e.controls.delta_a.to_degrees() - A_FOLD_DELTA_A_DEG).abs() < 1e-3);
     }
 
     #[test]
@@ -493,15 +496,15 @@ mod tests {
         let s = RudderSchedule::new(t).unwrap();
         let (lo, hi) = s.range();
         assert!(lo < -0.5 && hi > 0.5, "{lo} {hi}");
-        for deg in [-12.0, -8.1639, -3.0, 0.0, 5.0] {
+        for deg in [-12.0, A_ZERO_SIDESLIP_DELTA_A_DEG, -3.0, 0.0, 5.0] {
             let e = s.trim(f64::to_radians(deg)).unwrap();
             assert!((e.controls.delta_a - deg.to_radians()).abs() < 1e-14);
             let f = s.trims().model().rhs(&e.x, &e.controls);
             assert!(f.iter().all(|v| v.abs() < 1e-11), "{deg}: {f:?}");
         }
-        // Departure point of Fig. 11 / section V: P0 = 2.130625 at delta_a = -8.1639 deg.
-        let e = s.trim(f64::to_radians(-8.1639)).unwrap();
-        assert!((e.x[2] - 2.130625).abs() < 1e-4, "{e:?}");
+        // The departure point of Fig. 11 / section V.
+        let e = s.trim(A_ZERO_SIDESLIP_DELTA_A_DEG.to_radians()).unwrap();
+        assert!((e.x[2] - A_ZERO_SIDESLIP_P0[0]).abs() < 1e-4, "{e:?}");
         assert!(s.delta_r(2.0).is_err());
     }
 }

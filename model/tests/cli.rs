@@ -3,16 +3,9 @@
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
-#[allow(dead_code)]
-#[path = "support/reference.rs"]
-mod reference;
+mod support;
 
-fn model(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_model"))
-        .args(args)
-        .output()
-        .expect("run the model binary")
-}
+use support::{json, model, reference};
 
 fn repo(path: &str) -> String {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -20,15 +13,6 @@ fn repo(path: &str) -> String {
         .join(path)
         .to_string_lossy()
         .into_owned()
-}
-
-fn json(out: &Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("valid JSON")
 }
 
 #[test]

@@ -8,8 +8,8 @@
 //!
 //! One file, included by path wherever the numbers are needed, so that no crate under test
 //! depends on another for them: `paper_tests::reference` (tests/src/lib.rs), the unit tests and
-//! the test generator of `model` (model/src/lib.rs), `model/tests/cli.rs` and
-//! `derive/tests/expand.rs`. Nothing here is computed.
+//! the test generator of `model` (model/src/lib.rs), `model`'s integration tests (as
+//! `support::reference`) and `derive/tests/expand.rs`. Nothing here is computed.
 
 /// Aircraft A: the jump roll rates, rad/s (roots of det K, Fig. 7; the folds of Fig. 1).
 pub const A_JUMP_P0: [f64; 2] = [1.706288, 3.033180];

@@ -6,6 +6,18 @@
 //! branches of Figs 1-4 and 9; the closed-form det K curves give Figs 7, 8 and 11;
 //! [`crate::simulation`] gives the time histories of Figs 5, 6 and 10 and the simulated
 //! jump; [`crate::plot`] draws.
+//!
+//! ```
+//! use model::report::{fixed, list, ReportSettings};
+//!
+//! // Numbers as the summary prints them: never "-0.0000", and "none" for an empty list.
+//! assert_eq!(fixed(-0.00001, 4), "0.0000");
+//! assert_eq!(list(&[1.23456, 2.5], 2, "rad/s"), "1.23, 2.50 rad/s");
+//! assert_eq!(list(&[], 6, "rad/s"), "none");
+//! // The report's simulations stay within +-30 deg of aileron unless told otherwise.
+//! let settings = ReportSettings::new(2f64.to_radians());
+//! assert_eq!(settings.max_abs_delta_a(), 30f64.to_radians());
+//! ```
 
 use crate::aircraft::Aircraft;
 use crate::analysis::{analyze, Analysis, AnalysisError};

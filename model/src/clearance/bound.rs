@@ -17,6 +17,21 @@
 //! Each polynomial is enclosed by the mean-value form at the box centre, after a monotonicity
 //! test on its gradient enclosure: a coordinate in which it is monotone over the box is fixed at
 //! the face where the bound is attained.
+//!
+//! ```
+//! use model::aircraft::{Aircraft, Param};
+//! use model::clearance::bound::{BoxPolys, Failure};
+//! use model::clearance::interval::I;
+//!
+//! // Aircraft A with l_p free in [-21.8, -21.7] 1/s (A's is -21.7529).
+//! let b = BoxPolys::new(&Aircraft::a(), &[Param::Lp], 2f64.to_radians());
+//! let l_p = [I::new(-21.8, -21.7)];
+//! // No jump for P0 in [1.0, 1.01]: certified, with negative aileron on the primary branch.
+//! let da = b.certify(I::new(1.0, 1.01), &l_p).unwrap();
+//! assert!(da.hi < 0.0);
+//! // The slab [1.6, 1.8] holds A's first jump (1.706 rad/s, Fig. 7): it cannot be certified.
+//! assert_eq!(b.certify(I::new(1.6, 1.8), &l_p), Err(Failure::Jump));
+//! ```
 
 use super::interval::I;
 use crate::aircraft::{Aircraft, Param};

@@ -5,6 +5,17 @@
 //! exact result, so the widened interval contains the exact result of the operation on any
 //! reals of the operands: every result encloses the true range. Exact rationals enter through
 //! [`I::from_q`], which brackets the rational between two adjacent doubles exactly.
+//!
+//! ```
+//! use model::clearance::interval::I;
+//!
+//! // 0.1 + 0.2 rounds to 0.30000000000000004 in f64; the enclosure keeps 0.3 inside.
+//! let s = I::point(0.1) + I::point(0.2);
+//! assert!(s.lo <= 0.3 && 0.3 <= s.hi && s.lo < s.hi);
+//! // A square is never negative, unlike x * x over an interval through 0.
+//! let x = I::new(-1.0, 2.0);
+//! assert!(x.sqr().lo >= 0.0 && (x * x).lo < 0.0);
+//! ```
 
 use num_rational::BigRational;
 use num_traits::ToPrimitive;

@@ -15,6 +15,19 @@
 //! * det K (Figs 7, 8, 11): the exact rational function `det J5 / d` of P0, i.e. `jump /
 //!   d_det_a` (both carry det(A)^2, see [`det_k_ratio`]) and its zero-sideslip counterpart, with
 //!   common factors cancelled, evaluated in f64.
+//!
+//! ```
+//! use model::plot::closed_form::det_k_ratio;
+//! use model::roots::UPoly;
+//!
+//! // A common factor (P0 - 1) of numerator and denominator cancels exactly: P0 = 1 is neither
+//! // a root nor a pole of det K = (P0 - 1)(P0 - 2) / ((P0 - 1)(P0 + 3)).
+//! let jump = UPoly::from_i64s(&[2, -3, 1]);
+//! let d_den = UPoly::from_i64s(&[-3, 2, 1]);
+//! let (num, den) = det_k_ratio(&jump, &d_den);
+//! assert_eq!((num.degree(), den.degree()), (Some(1), Some(1)));
+//! assert_eq!(num.eval_f64(1.0) / den.eval_f64(1.0), -0.25);
+//! ```
 
 use super::data::{
     BifurcationData, Branch, BranchPoint, DetKData, SpecialKind, SpecialPoint, ZeroSideslipData,

@@ -1,6 +1,33 @@
 //! The plain data Figs 1-11 are drawn from (SI units: rad, rad/s). Bifurcation diagrams take
 //! branches of equilibria and special points, whoever computed them: the closed-form trims of
 //! [`super::closed_form`] or a continuation.
+//!
+//! ```
+//! use model::plot::figures::bifurcation_figure;
+//! use model::plot::{BifurcationData, Branch, BranchPoint, SpecialKind, SpecialPoint};
+//!
+//! // Two equilibria (aileron in rad) and a fold between them; the figure plots degrees.
+//! let at = |param: f64, p: f64| BranchPoint {
+//!     param,
+//!     alpha: 0.0,
+//!     beta: 0.0,
+//!     p,
+//!     q: 0.0,
+//!     r: 0.0,
+//!     stable: true,
+//! };
+//! let data = BifurcationData {
+//!     title: "two equilibria".into(),
+//!     branches: vec![Branch { points: vec![at(0.0, 0.0), at(-0.1, 2.0)] }],
+//!     special: vec![SpecialPoint { kind: SpecialKind::Fold, point: at(-0.05, 1.0), label: None }],
+//!     divergence_p: vec![],
+//!     delta_a_range_deg: None,
+//! };
+//! let fig = bifurcation_figure(&data).unwrap();
+//! let fold = &fig.panels[0].markers[0];
+//! assert!((fold.x - (-0.05f64).to_degrees()).abs() < 1e-12 && fold.y == 1.0);
+//! assert_eq!(fold.label.as_deref(), Some(SpecialKind::Fold.describe()));
+//! ```
 
 use crate::simulation::TimeHistory;
 use serde::Serialize;

@@ -2,6 +2,16 @@
 //! time histories, Figs 7, 8, 11 det K, Fig. 9 zero-sideslip diagram): unit conversion (angles
 //! to deg), axis ranges, clipping, line styles (stable solid, unstable dashed, as in the paper),
 //! markers and legends.
+//!
+//! ```
+//! use model::plot::figures::clip;
+//! use model::plot::Axis;
+//!
+//! // A polyline that leaves y in [-1, 1] is split where it leaves and where it comes back.
+//! let (x, y) = (Axis::linear("x", 0.0, 4.0), Axis::linear("y", -1.0, 1.0));
+//! let pieces = clip(&[(0.0, 0.0), (1.0, 2.0), (2.0, 2.0), (3.0, 0.0)], &x, &y);
+//! assert_eq!(pieces, [vec![(0.0, 0.0), (0.5, 1.0)], vec![(2.5, 1.0), (3.0, 0.0)]]);
+//! ```
 
 use super::data::{
     BifurcationData, Branch, DetKData, SpecialKind, SpecialPoint, State, TimeHistoryData,

@@ -2,6 +2,41 @@
 //! markers in plot units (deg, rad/s, ...). The figure builders of [`super::figures`] produce it
 //! from the paper's data; [`super::render()`] draws it with plotters. Tests compare the series
 //! here with what the library computes.
+//!
+//! ```
+//! use model::plot::{Axis, Dash, Figure, LegendPlace, Line, Panel, Rgb};
+//!
+//! let line = Line {
+//!     label: Some("det K".into()),
+//!     points: vec![(0.0, 1.0), (1.0, 0.0)],
+//!     color: Rgb::BLUE,
+//!     dash: Dash::Solid,
+//!     width: 2,
+//! };
+//! let panel = Panel {
+//!     title: String::new(),
+//!     area: [0.0, 0.0, 1.0, 1.0],
+//!     x: Axis::linear("P0 (rad/s)", 0.0, 1.0),
+//!     y: Axis::linear("det K", -1.0, 1.0),
+//!     lines: vec![line],
+//!     markers: vec![],
+//!     legend: LegendPlace::None,
+//! };
+//! let fig = Figure {
+//!     title: "t".into(),
+//!     panels: vec![panel],
+//!     legend_area: None,
+//!     note: String::new(),
+//! };
+//! // One CSV row per point drawn, with its panel, series, legend entry and axis labels.
+//! let csv = fig.to_csv();
+//! let rows: Vec<&str> = csv.lines().collect();
+//! assert_eq!(rows[0], "panel,panel_title,series,kind,label,x_axis,y_axis,x,y");
+//! assert_eq!(
+//!     rows[1..],
+//!     ["1,,1,line,det K,P0 (rad/s),det K,0,1", "1,,1,line,det K,P0 (rad/s),det K,1,0"]
+//! );
+//! ```
 
 use serde::Serialize;
 

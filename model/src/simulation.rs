@@ -43,6 +43,7 @@ mod sweep;
 mod trim;
 
 pub use sweep::{jump_sweep, jump_sweep_with_progress, Jump, Sweep, SweepPoint, SweepSettings};
+pub(crate) use trim::bisect;
 pub use trim::{Equilibrium, RudderSchedule, Trims};
 
 use crate::aircraft::Aircraft;

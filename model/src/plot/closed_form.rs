@@ -39,7 +39,7 @@ use crate::derivation::Derivation;
 use crate::equations::symbols;
 use crate::numeric::PssModel;
 use crate::roots::{positive_roots, UPoly};
-use crate::simulation::{Equilibrium, RudderSchedule, Trims};
+use crate::simulation::{bisect, Equilibrium, RudderSchedule, Trims};
 use crate::specialise::{cancel, in_aileron, specialisation, univariate, InAileron};
 use nalgebra::Matrix5;
 
@@ -410,7 +410,7 @@ pub fn zero_sideslip_diagram(
                 let pole = trims.det_a(pa) * trims.det_a(pb) <= 0.0;
                 let contains_zs = (pa - p_zs) * (pb - p_zs) <= 0.0;
                 if va * vb < 0.0 && !pole && !contains_zs {
-                    let seed = (da, bisect(&|p| g(p).unwrap_or(f64::NAN), pa, pb));
+                    let seed = (da, bisect(&|p| g(p).unwrap_or(f64::NAN), pa, pb, va));
                     if !curves.iter().any(|c| tracer.near(c, seed)) {
                         let c = tracer.trace(seed);
                         if c.len() > 1 {
@@ -474,24 +474,6 @@ pub fn zero_sideslip_diagram(
             delta_a_range_deg: Some((-half, half)),
         },
     })
-}
-
-fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
-    let mut fa = f(a);
-    for _ in 0..100 {
-        let m = 0.5 * (a + b);
-        if m == a || m == b {
-            break;
-        }
-        let fm = f(m);
-        if (fm < 0.0) == (fa < 0.0) {
-            a = m;
-            fa = fm;
-        } else {
-            b = m;
-        }
-    }
-    0.5 * (a + b)
 }
 
 /// Traces the zero set of a scalar function of two variables (pseudo-arclength: tangent

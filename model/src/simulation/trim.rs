@@ -278,7 +278,7 @@ fn finite(e: Equilibrium) -> Option<Equilibrium> {
 }
 
 /// Bisection of `f` on `[a, b]` with `f(a) = fa` and a sign change, to machine precision.
-fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64) -> f64 {
+pub(crate) fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64) -> f64 {
     for _ in 0..200 {
         let m = 0.5 * (a + b);
         if m == a || m == b {

@@ -121,16 +121,7 @@ impl Trims {
     /// The unconstrained trim state at roll rate `p0` for given aileron and rudder (rad): the
     /// four non-roll equations hold, the roll equation need not. `None` where det A vanishes.
     fn state(&self, p0: f64, delta_a: f64, delta_r: f64) -> Option<[f64; 5]> {
-        let den = self.det_a.eval(p0);
-        let scale = self
-            .det_a
-            .0
-            .iter()
-            .fold(0.0f64, |m, c| m.max(c.abs()))
-            .max(1.0);
-        if den.abs() <= SINGULAR * scale * (1.0 + p0.abs()).powi(4) {
-            return None;
-        }
+        let den = nonsingular(&self.det_a, p0)?;
         let v: [f64; 4] = std::array::from_fn(|i| {
             (self.num0[i].eval(p0)
                 + delta_a * self.num_a[i].eval(p0)
@@ -203,16 +194,7 @@ impl Trims {
         if self.n_delta_r() == 0.0 {
             return None;
         }
-        let den = self.zs_det.eval(p0);
-        let scale = self
-            .zs_det
-            .0
-            .iter()
-            .fold(0.0f64, |m, c| m.max(c.abs()))
-            .max(1.0);
-        if den.abs() <= SINGULAR * scale * (1.0 + p0.abs()).powi(4) {
-            return None;
-        }
+        let den = nonsingular(&self.zs_det, p0)?;
         let v: [f64; 3] = std::array::from_fn(|i| self.zs_num[i].eval(p0) / den);
         let x = [v[0], 0.0, p0, v[1], v[2]];
         // The roll and yaw equations are linear in (delta_a, delta_r) with the matrix `lateral`:
@@ -268,6 +250,18 @@ impl Trims {
             k += 1;
         }
         Err(SimError::NoTrim { delta_r })
+    }
+}
+
+/// The value of a trim's denominator at `p0`, or `None` where it vanishes to within
+/// [`SINGULAR`] of the size of its coefficients (the trim is singular there).
+fn nonsingular(den: &F64Poly, p0: f64) -> Option<f64> {
+    let value = den.eval(p0);
+    let scale = den.0.iter().fold(0.0f64, |m, c| m.max(c.abs())).max(1.0);
+    if value.abs() <= SINGULAR * scale * (1.0 + p0.abs()).powi(4) {
+        None
+    } else {
+        Some(value)
     }
 }
 

@@ -115,26 +115,15 @@ fn clipped_lines(points: &[(f64, f64)], x: &Axis, y: &Axis, proto: &Line) -> Vec
         .collect()
 }
 
-/// Gives a label only to the first line carrying each label text.
-fn dedup_labels(lines: &mut [Line]) {
+/// Leaves each legend text on the first item (line or marker) carrying it, so that the legend
+/// lists it once.
+fn dedup_labels<T>(items: &mut [T], label: fn(&mut T) -> &mut Option<String>) {
     let mut seen: Vec<String> = Vec::new();
-    for l in lines {
-        if let Some(t) = &l.label {
+    for item in items {
+        let l = label(item);
+        if let Some(t) = l.as_ref() {
             if seen.contains(t) {
-                l.label = None;
-            } else {
-                seen.push(t.clone());
-            }
-        }
-    }
-}
-
-fn dedup_marker_labels(markers: &mut [Marker]) {
-    let mut seen: Vec<String> = Vec::new();
-    for m in markers {
-        if let Some(t) = &m.label {
-            if seen.contains(t) {
-                m.label = None;
+                *l = None;
             } else {
                 seen.push(t.clone());
             }
@@ -372,10 +361,10 @@ fn diagram_panel(d: &BifurcationData, v: State, area: [f64; 4], title: &str, tex
     // Legend order: stable, unstable, reference lines (a stable sort keeps the drawing order
     // within each kind).
     lines.sort_by_key(|l| l.dash as u8);
-    dedup_labels(&mut lines);
+    dedup_labels(&mut lines, |l| &mut l.label);
     let mut markers = special_markers(&d.special, v, &x, &y, text);
     markers.sort_by_key(|m| m.shape as u8);
-    dedup_marker_labels(&mut markers);
+    dedup_labels(&mut markers, |m| &mut m.label);
     Panel {
         title: title.into(),
         area,
@@ -498,7 +487,7 @@ pub fn det_k_figure(d: &DetKData) -> Result<Figure, PlotError> {
     for p in d.divergence.iter().filter(|p| x.contains(**p)) {
         lines.push(vertical(*p, &y, "det A = 0 (Eq. 5)", Dash::Dotted));
     }
-    dedup_labels(&mut lines);
+    dedup_labels(&mut lines, |l| &mut l.label);
     let mut markers: Vec<Marker> = d
         .roots
         .iter()
@@ -521,7 +510,7 @@ pub fn det_k_figure(d: &DetKData) -> Result<Figure, PlotError> {
             size: 6,
         })
         .collect();
-    dedup_marker_labels(&mut markers);
+    dedup_labels(&mut markers, |m| &mut m.label);
     let panel = Panel {
         title: String::new(),
         area: [0.0, 0.0, PANEL_W, 1.0],
@@ -666,7 +655,7 @@ pub fn time_history_figure(d: &TimeHistoryData) -> Result<Figure, PlotError> {
             };
             lines.extend(clipped_lines(pts, &x, &y, &proto));
         }
-        dedup_labels(&mut lines);
+        dedup_labels(&mut lines, |l| &mut l.label);
         let h0 = 1.0 / n as f64;
         panels.push(Panel {
             title: String::new(),

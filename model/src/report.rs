@@ -20,7 +20,7 @@
 //! ```
 
 use crate::aircraft::Aircraft;
-use crate::analysis::{analyze, Analysis, AnalysisError};
+use crate::analysis::{analyze, Analysis, AnalysisError, HopfPoint, JumpPoint};
 use crate::continuation::{self, continue_equilibria, ContinuationError, Diagram};
 use crate::plot::{
     self, closed_form, BifurcationData, Branch, BranchPoint, PlotError, PlotStyle, SpecialKind,
@@ -654,6 +654,83 @@ pub fn list(v: &[f64], digits: usize, unit: &str) -> String {
     }
 }
 
+/// Which instability the primary branch meets first (a jump, or a Hopf point with its
+/// frequency, first Lyapunov coefficient and kind) and where a jump lands, as `analyze` prints
+/// it and the summary repeats it: lines ending in a blank line.
+pub fn first_departure_text(a: &Analysis) -> String {
+    let Some(f) = &a.first_departure else {
+        return "First loss of stability on the primary branch: none within the aileron range.\n\n"
+            .into();
+    };
+    let mut s = format!(
+        "First loss of stability on the primary branch: {} at P0 = {} rad/s, delta_a = {} deg",
+        if f.kind == "jump" { "JUMP" } else { "HOPF" },
+        fixed(f.p0, 6),
+        fixed(f.delta_a_deg, 4)
+    );
+    if let (Some(w), Some(l1), Some(k)) = (f.omega, f.l1, f.hopf_kind) {
+        s += &format!(
+            " (oscillation omega = {} rad/s, l1 = {:.4e}, {k})",
+            fixed(w, 4),
+            l1
+        );
+    }
+    s += "\n";
+    if let Some(l) = &f.lands_at {
+        if l.is_empty() {
+            s += "  the jump lands on no stable equilibrium (divergence)\n";
+        }
+        for e in l {
+            s += &format!(
+                "  lands at P0 = {} rad/s (jump {} rad/s), alpha = {} deg, beta = {} deg\n",
+                fixed(e.p0, 6),
+                fixed(e.p0 - f.p0, 6),
+                fixed(e.alpha.to_degrees(), 4),
+                fixed(e.beta.to_degrees(), 4)
+            );
+        }
+    }
+    s + "\n"
+}
+
+/// The cells of a reported point's row, as `analyze` and the summary print them: P0 (rad/s),
+/// delta_a, alpha and beta (deg).
+fn point_cells(j: &JumpPoint) -> [String; 4] {
+    [
+        fixed(j.p0, 6),
+        fixed(j.delta_a_deg, 4),
+        fixed(j.alpha.to_degrees(), 4),
+        fixed(j.beta.to_degrees(), 4),
+    ]
+}
+
+/// The cells of a jump point's row: P0 (rad/s), delta_a, alpha, beta (deg), q and r (rad/s).
+pub fn jump_cells(j: &JumpPoint) -> [String; 6] {
+    let [p0, da, alpha, beta] = point_cells(j);
+    [p0, da, alpha, beta, fixed(j.q, 5), fixed(j.r, 5)]
+}
+
+/// The cells of a Hopf point's row: P0 (rad/s), delta_a, alpha, beta (deg), omega (rad/s),
+/// period (s), l1 and its kind (supercritical or subcritical).
+pub fn hopf_cells(h: &HopfPoint) -> [String; 8] {
+    let [p0, da, alpha, beta] = point_cells(&h.point);
+    [
+        p0,
+        da,
+        alpha,
+        beta,
+        fixed(h.omega, 4),
+        fixed(h.period, 4),
+        format!("{:.3e}", h.l1),
+        h.kind.to_string(),
+    ]
+}
+
+/// A markdown table row of cells.
+fn md_row(cells: &[String]) -> String {
+    format!("| {} |\n", cells.join(" | "))
+}
+
 fn markdown(s: &Summary, de: f64) -> String {
     let a = &s.analysis;
     let mut m = format!(
@@ -676,15 +753,7 @@ fn markdown(s: &Summary, de: f64) -> String {
     );
     m += "### Jump points (det K = 0, saddle-nodes)\n\n| P0 rad/s | delta_a deg | alpha deg | beta deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|---:|\n";
     for j in &a.jump {
-        m += &format!(
-            "| {} | {} | {} | {} | {} | {} |\n",
-            fixed(j.p0, 6),
-            fixed(j.delta_a_deg, 4),
-            fixed(j.alpha.to_degrees(), 4),
-            fixed(j.beta.to_degrees(), 4),
-            fixed(j.q, 5),
-            fixed(j.r, 5)
-        );
+        m += &md_row(&jump_cells(j));
     }
     if a.jump.is_empty() {
         m += "| none | | | | | |\n";

@@ -241,6 +241,22 @@ fn to_plot(d: &Diagram, title: String, divergence: &[f64]) -> BifurcationData {
     }
 }
 
+/// The data of Figs 1-4 in the report: the continuation's branches and special points, the
+/// closed-form Hopf points of the analysis ([`closed_form::hopf_points`]) and its divergence
+/// roll rates.
+pub fn bifurcation_data(diagram: &Diagram, analysis: &Analysis, name: &str) -> BifurcationData {
+    let mut data = to_plot(
+        diagram,
+        format!(
+            "{name}: PSS equilibria, \u{3b4}e = {:.1} deg, \u{3b4}r = 0",
+            analysis.delta_e_rad.to_degrees()
+        ),
+        &analysis.divergence_roll_rates,
+    );
+    data.special.extend(closed_form::hopf_points(analysis));
+    data
+}
+
 fn rows(d: &Diagram) -> Vec<SpecialRow> {
     d.special_points
         .iter()
@@ -362,23 +378,16 @@ pub fn report(
         continue_equilibria(aircraft, &cont, &mut |_| {}).map_err(ReportError::from),
     );
     if let Some(diagram) = &diagram {
-        let data = to_plot(
-            diagram,
-            format!(
-                "{name}: PSS equilibria, \u{3b4}e = {:.1} deg, \u{3b4}r = 0",
-                de.to_degrees()
-            ),
-            &analysis.divergence_roll_rates,
-        );
+        let data = bifurcation_data(diagram, &analysis, name);
         let r = plot::bifurcation(&out.join("fig01_bifurcation"), &data, style);
         if let Some(r) = keep(&mut notes, "Figs 1, 2", r.map_err(ReportError::from)) {
-            figures.push(fig("Figs 1, 2", "Roll rate of the PSS equilibria vs aileron (solid stable, dashed unstable; saddle-nodes and Hopf points marked).".into(), &r.files));
+            figures.push(fig("Figs 1, 2", "Roll rate of the PSS equilibria vs aileron (solid stable, dashed unstable; saddle-nodes and Hopf points of the continuation marked, the closed-form Hopf points as black diamonds).".into(), &r.files));
         }
         let r = plot::trim_states(&out.join("fig03_trim_states"), &data, style);
         if let Some(r) = keep(&mut notes, "Figs 3, 4", r.map_err(ReportError::from)) {
             figures.push(fig(
                 "Figs 3, 4",
-                "Trim angle of attack, sideslip, pitch and yaw rate vs aileron.".into(),
+                "Trim angle of attack, sideslip, pitch and yaw rate vs aileron (special points as in Figs 1, 2).".into(),
                 &r.files,
             ));
         }
@@ -738,6 +747,10 @@ fn markdown(s: &Summary, de: f64) -> String {
         crate::aircraft::shown(&a.aircraft),
         de.to_degrees()
     );
+    m += &format!(
+        "## First loss of stability\n\n```text\n{}\n```\n\n",
+        first_departure_text(a).trim_end()
+    );
     m += "## Critical roll rates\n\n";
     m += &format!(
         "- Pitch-yaw divergence, Eq. 5 (Table 1): {}\n",
@@ -757,6 +770,13 @@ fn markdown(s: &Summary, de: f64) -> String {
     }
     if a.jump.is_empty() {
         m += "| none | | | | | |\n";
+    }
+    m += "\n### Hopf points (closed form, Delta4 = 0 with omega^2 > 0)\n\n| P0 rad/s | delta_a deg | alpha deg | beta deg | omega rad/s | period s | l1 | kind |\n|---:|---:|---:|---:|---:|---:|---:|---|\n";
+    for h in &a.hopf {
+        m += &md_row(&hopf_cells(h));
+    }
+    if a.hopf.is_empty() {
+        m += "| none | | | | | | | |\n";
     }
     m += "\n### Zero-sideslip departure (det K = 0 at beta = 0)\n\n| P0 rad/s | delta_a deg | alpha deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|\n";
     for d in &a.zero_sideslip.departure {

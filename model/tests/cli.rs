@@ -242,9 +242,33 @@ fn report_writes_every_figure_and_a_summary() {
     let jump = format!("{:.6}", reference::B_JUMP_P0[0]);
     assert!(md.contains(&jump) && md.contains("hopf"), "{md}");
     assert!(md.contains("![Figs 1, 2](fig01_bifurcation.png)"));
+    // Which instability comes first on the primary branch: B's first fold, before its Hopf
+    // points (issue 10).
+    let first = format!(
+        "First loss of stability on the primary branch: JUMP at P0 = {jump} rad/s, delta_a = {:.4} deg",
+        reference::B_FOLD_DELTA_A_DEG
+    );
+    assert!(md.contains(&first), "{md}");
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     assert_eq!(summary["analysis"]["aircraft"], "Aircraft B");
+    let departure = &summary["analysis"]["first_departure"];
+    assert_eq!(departure["kind"], "jump", "{departure}");
+    let p0 = departure["p0"].as_f64().unwrap();
+    assert!((p0 - reference::B_JUMP_P0[0]).abs() < 1e-6, "{departure}");
+    // Fig. 1 marks the closed-form Hopf points at AUTO-07p's roll rates (and their mirror
+    // images at -P0), apart from the continuation's; the CSV names each. (B's third Hopf point,
+    // at +75.7 deg of aileron, lies beyond the figure's +-0.8 rad.)
+    let csv = std::fs::read_to_string(dir.join("fig01_bifurcation.csv")).unwrap();
+    let hopf: Vec<f64> = csv
+        .lines()
+        .filter(|row| row.contains(",marker,closed-form Hopf point"))
+        .map(|row| row.rsplit(',').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(hopf.len(), 4, "{hopf:?}");
+    for (p0, _, _) in reference::B_HOPF {
+        assert!(hopf.iter().any(|p| (p - p0).abs() < 1e-6), "{p0}: {hopf:?}");
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

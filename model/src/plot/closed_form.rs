@@ -6,7 +6,8 @@
 //!   holds it comes from the roll equation. Branches break where det A = 0 (Eq. 5: the trims
 //!   blow up). Stability from the eigenvalues of the compiled Jacobian (nalgebra); folds are the
 //!   exact roots of det K from [`crate::analysis`], Hopf points are located by bisection on the
-//!   count of unstable complex eigenvalues.
+//!   count of unstable complex eigenvalues. [`hopf_points`] gives the closed form's Hopf points
+//!   (`crate::analysis`, beyond the paper) for any diagram of Figs 1-4.
 //! * Zero sideslip (Fig. 9): the zero-sideslip branch is the closed form of Eq. 35; with the
 //!   rudder on the schedule ([`RudderSchedule`]) the other equilibria solve
 //!   `delta_a(P0, delta_r(delta_a)) = delta_a`, a curve in the (delta_a, P0) plane traced by a
@@ -34,7 +35,7 @@ use super::data::{
 };
 use super::PlotError;
 use crate::aircraft::Aircraft;
-use crate::analysis::analyze;
+use crate::analysis::{analyze, Analysis};
 use crate::derivation::Derivation;
 use crate::equations::symbols;
 use crate::numeric::PssModel;
@@ -190,6 +191,33 @@ pub fn unconstrained_diagram(
         divergence_p,
         delta_a_range_deg: None,
     })
+}
+
+/// The closed-form Hopf points of an analysis (beyond the paper: [`crate::analysis::HopfPoint`],
+/// where `det(A)^10 Delta4` vanishes with `omega^2 > 0`) as special points of the diagram of
+/// Figs 1-4, each with its mirror image: with delta_r = 0 the PSS equations are invariant under
+/// (beta, p, r, delta_a) -> -(beta, p, r, delta_a), so a Hopf point at P0 has one at -P0.
+pub fn hopf_points(analysis: &Analysis) -> Vec<SpecialPoint> {
+    analysis
+        .hopf
+        .iter()
+        .flat_map(|h| {
+            let j = &h.point;
+            [1.0, -1.0].map(|sign| SpecialPoint {
+                kind: SpecialKind::HopfClosedForm,
+                point: BranchPoint {
+                    param: sign * j.delta_a_rad,
+                    alpha: j.alpha,
+                    beta: sign * j.beta,
+                    p: sign * j.p0,
+                    q: j.q,
+                    r: sign * j.r,
+                    stable: false,
+                },
+                label: None,
+            })
+        })
+        .collect()
 }
 
 /// A number with at most 3 decimals, trailing zeros removed.

@@ -91,8 +91,12 @@ pub struct Branch {
 pub enum SpecialKind {
     /// Saddle-node (fold, turning point): det K = 0, the jump points (Figs 1, 2).
     Fold,
-    /// Hopf bifurcation (filled squares of Fig. 2).
+    /// Hopf bifurcation (filled squares of Fig. 2), as a continuation or an eigenvalue scan
+    /// locates it.
     Hopf,
+    /// Hopf point of the closed form (beyond the paper, [`crate::analysis::HopfPoint`]: the
+    /// Hopf polynomial `det(A)^10 Delta4` vanishes with `omega^2 > 0`).
+    HopfClosedForm,
     /// Transcritical bifurcation (empty square of Fig. 9): departure from zero sideslip.
     Transcritical,
 }
@@ -103,6 +107,7 @@ impl SpecialKind {
         match self {
             SpecialKind::Fold => "saddle-node (det K = 0)",
             SpecialKind::Hopf => "Hopf bifurcation",
+            SpecialKind::HopfClosedForm => "closed-form Hopf point (\u{394}\u{2084} = 0)",
             SpecialKind::Transcritical => "transcritical (det K = 0)",
         }
     }

@@ -155,12 +155,15 @@ fn quantiles(values: &mut Vec<f64>, lo_q: f64, hi_q: f64) -> Option<(f64, f64)> 
     Some((at(lo_q), at(hi_q)))
 }
 
-/// Style of one kind of special point: shape, filled, colour.
-fn special_style(kind: SpecialKind) -> (Shape, bool, Rgb) {
+/// Style of one kind of special point: shape, filled, colour, size. The closed-form Hopf point
+/// is a small black diamond, drawn after (inside) the square of a continuation's Hopf point at
+/// the same place.
+fn special_style(kind: SpecialKind) -> (Shape, bool, Rgb, u32) {
     match kind {
-        SpecialKind::Fold => (Shape::Circle, true, Rgb::RED),
-        SpecialKind::Hopf => (Shape::Square, true, Rgb::ORANGE),
-        SpecialKind::Transcritical => (Shape::Square, false, Rgb::RED),
+        SpecialKind::Fold => (Shape::Circle, true, Rgb::RED, 6),
+        SpecialKind::Hopf => (Shape::Square, true, Rgb::ORANGE, 6),
+        SpecialKind::HopfClosedForm => (Shape::Diamond, true, Rgb::BLACK, 4),
+        SpecialKind::Transcritical => (Shape::Square, false, Rgb::RED, 6),
     }
 }
 
@@ -192,7 +195,7 @@ fn delta_a_range(d: &BifurcationData) -> (f64, f64) {
     let special = d
         .special
         .iter()
-        .filter(|s| s.kind != SpecialKind::Hopf)
+        .filter(|s| !matches!(s.kind, SpecialKind::Hopf | SpecialKind::HopfClosedForm))
         .map(|s| s.point.param.to_degrees().abs())
         .fold(0.0, f64::max);
     let data = d
@@ -293,7 +296,7 @@ fn special_markers(
             if !(x.contains(px) && y.contains(py)) {
                 return None;
             }
-            let (shape, filled, color) = special_style(s.kind);
+            let (shape, filled, color, size) = special_style(s.kind);
             Some(Marker {
                 label: Some(s.kind.describe().into()),
                 text: if text { s.label.clone() } else { None },
@@ -308,7 +311,7 @@ fn special_markers(
                 shape,
                 color,
                 filled,
-                size: 6,
+                size,
             })
         })
         .collect()

@@ -206,6 +206,13 @@ pub struct Marker {
     pub size: u32,
 }
 
+impl Marker {
+    /// What tells markers apart in a legend: shape, fill, colour and size.
+    fn style(&self) -> (Shape, bool, Rgb, u32) {
+        (self.shape, self.filled, self.color, self.size)
+    }
+}
+
 /// Placement of a marker's text.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum TextAt {
@@ -274,8 +281,10 @@ impl Figure {
     /// The plotted data as CSV, one row per point in drawing order, for replotting in other
     /// tools: `panel` (number, from 1) and `panel_title`, `series` (line or marker number
     /// within the panel, from 1), `kind` (`line` or `marker`), `label` (legend entry or marker
-    /// text, may be empty), `x_axis` and `y_axis` (the axis labels, with their units), `x`,
-    /// `y` (plot units, after clipping: exactly what was drawn).
+    /// text, may be empty; a marker without either carries the legend entry of the markers of
+    /// its style in the panel, so that every marked point says what it is), `x_axis` and
+    /// `y_axis` (the axis labels, with their units), `x`, `y` (plot units, after clipping:
+    /// exactly what was drawn).
     pub fn to_csv(&self) -> String {
         use std::fmt::Write;
         let mut s = String::from("panel,panel_title,series,kind,label,x_axis,y_axis,x,y\n");
@@ -297,8 +306,16 @@ impl Figure {
                     let _ = writeln!(s, "{h},{x},{y}");
                 }
             }
+            let legend = |m: &Marker| {
+                p.markers
+                    .iter()
+                    .find(|o| o.label.is_some() && o.style() == m.style())
+                    .and_then(|o| o.label.as_deref())
+            };
             for (k, m) in p.markers.iter().enumerate() {
-                let label = m.text.as_deref().or(m.label.as_deref()).unwrap_or("");
+                let label = (m.text.as_deref().or(m.label.as_deref()))
+                    .or_else(|| legend(m))
+                    .unwrap_or("");
                 let _ = writeln!(s, "{},{},{}", head(k, "marker", label), m.x, m.y);
             }
         }

@@ -863,6 +863,49 @@ mod tests {
     }
 
     #[test]
+    fn the_summary_says_which_instability_comes_first_with_l1_and_kind_for_a_hopf_point() {
+        let mut a = crate::analysis::analyze_with(&Aircraft::a(), 0.0349, false).unwrap();
+        a.first_departure = None;
+        let none = first_departure_text(&a);
+        assert!(none.contains("none within the aileron range"), "{none}");
+        // A Hopf point first (numbers made up for the text): its frequency, l1 and kind.
+        a.first_departure = Some(crate::analysis::FirstDeparture {
+            kind: "hopf",
+            p0: 3.1,
+            delta_a_rad: -0.36,
+            delta_a_deg: -20.6,
+            omega: Some(0.88),
+            l1: Some(-0.1746),
+            hopf_kind: Some("supercritical"),
+            lands_at: None,
+        });
+        let text = first_departure_text(&a);
+        assert!(
+            text.starts_with(
+                "First loss of stability on the primary branch: HOPF at P0 = 3.100000 rad/s, \
+                 delta_a = -20.6000 deg (oscillation omega = 0.8800 rad/s, l1 = -1.7460e-1, \
+                 supercritical)\n"
+            ),
+            "{text}"
+        );
+        let summary = Summary {
+            analysis: a,
+            special_points: vec![],
+            zero_sideslip_special_points: vec![],
+            simulated_jumps: vec![],
+            figures: vec![],
+            skipped: vec![],
+            failed_files: vec![],
+        };
+        let md = markdown(&summary, 0.0349);
+        let section = format!(
+            "## First loss of stability\n\n```text\n{}\n```",
+            text.trim_end()
+        );
+        assert!(md.contains(&section), "{md}");
+    }
+
+    #[test]
     fn steps_beyond_the_aileron_range_are_named_and_replaced_by_the_default_family() {
         let mut notes = Notes::default();
         let max = 30f64.to_radians();

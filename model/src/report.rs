@@ -23,7 +23,7 @@ use crate::aircraft::Aircraft;
 use crate::analysis::{analyze, Analysis, AnalysisError, HopfPoint, JumpPoint};
 use crate::continuation::{self, continue_equilibria, ContinuationError, Diagram};
 use crate::plot::{
-    self, closed_form, BifurcationData, Branch, BranchPoint, PlotError, PlotStyle, SpecialKind,
+    self, closed_form, BifurcationData, BranchPoint, PlotError, PlotStyle, SpecialKind,
     SpecialPoint, TimeHistoryData, Variable, ZeroSideslipData,
 };
 use crate::simulation::{
@@ -197,24 +197,9 @@ fn within(notes: &mut Notes, what: &str, steps: Vec<f64>, max: f64) -> Vec<f64> 
 }
 
 fn to_plot(d: &Diagram, title: String, divergence: &[f64]) -> BifurcationData {
-    let point = |p: &continuation::Point| BranchPoint {
-        param: p.param,
-        alpha: p.alpha,
-        beta: p.beta,
-        p: p.p,
-        q: p.q,
-        r: p.r,
-        stable: p.stable,
-    };
     BifurcationData {
         title,
-        branches: d
-            .branches
-            .iter()
-            .map(|b| Branch {
-                points: b.points.iter().map(point).collect(),
-            })
-            .collect(),
+        branches: d.branches.clone(),
         special: d
             .special_points
             .iter()

@@ -175,8 +175,9 @@ impl Default for Settings {
     }
 }
 
-/// One point of a branch.
-#[derive(Clone, Debug, PartialEq)]
+/// One point of a branch: an equilibrium, the parameter that holds it and its stability (also
+/// the point of a figure's branch, `plot::BranchPoint`).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Point {
     /// The parameter value, rad.
     pub param: f64,
@@ -194,8 +195,9 @@ pub struct Point {
     pub stable: bool,
 }
 
-/// A connected piece of the equilibrium curve, its points in order along it.
-#[derive(Clone, Debug, PartialEq)]
+/// A connected piece of the equilibrium curve, its points in order along it (also a figure's
+/// branch, `plot::Branch`).
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Branch {
     /// The points, in order of arclength.
     pub points: Vec<Point>,

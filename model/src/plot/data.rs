@@ -32,24 +32,12 @@
 use crate::simulation::TimeHistory;
 use serde::Serialize;
 
-/// An equilibrium on a branch: the continuation parameter (aileron deflection) and the state.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct BranchPoint {
-    /// Aileron deflection delta_a, rad.
-    pub param: f64,
-    /// Angle of attack, rad.
-    pub alpha: f64,
-    /// Sideslip, rad.
-    pub beta: f64,
-    /// Roll rate, rad/s.
-    pub p: f64,
-    /// Pitch rate, rad/s.
-    pub q: f64,
-    /// Yaw rate, rad/s.
-    pub r: f64,
-    /// All eigenvalues of the Jacobian in the open left half-plane.
-    pub stable: bool,
-}
+/// An equilibrium on a branch (the continuation's point): the parameter (aileron deflection,
+/// rad), the state and its stability.
+pub use crate::continuation::Point as BranchPoint;
+
+/// A branch of equilibria, ordered along the branch (the continuation's branch).
+pub use crate::continuation::Branch;
 
 impl BranchPoint {
     /// The value of a state variable in SI units.
@@ -77,13 +65,6 @@ pub enum State {
     Q,
     /// Yaw rate.
     R,
-}
-
-/// A branch of equilibria, ordered along the branch.
-#[derive(Clone, Debug, Default, PartialEq, Serialize)]
-pub struct Branch {
-    /// The equilibria.
-    pub points: Vec<BranchPoint>,
 }
 
 /// Kind of a special point.

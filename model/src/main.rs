@@ -5,7 +5,8 @@ use model::aircraft::{self, Aircraft};
 use model::analysis::{analyze, Analysis};
 use model::continuation::{continue_equilibria, ContinuationParam, Diagram, Settings};
 use model::report::{
-    first_departure_text, fixed, hopf_cells, jump_cells, list, report, ReportError, ReportSettings,
+    departure_cells, first_departure_text, fixed, hopf_cells, jump_cells, list, report,
+    ReportError, ReportSettings,
 };
 use model::simulation::{simulate, Model, Rudder, SimError, SimSettings};
 use std::io::Write;
@@ -795,14 +796,9 @@ fn table(a: &Analysis) -> String {
     } else {
         s += "     P0 rad/s   delta_a deg   delta_r deg   alpha deg     q rad/s     r rad/s\n";
         for j in &a.zero_sideslip.departure {
+            let [p0, da, dr, alpha, q, r] = departure_cells(j);
             s += &format!(
-                "  {:>11} {:>13} {:>13} {:>11} {:>11} {:>11}{}\n",
-                fixed(j.p0, 6),
-                fixed(j.delta_a_deg, 4),
-                fixed(j.delta_r_deg, 4),
-                fixed(j.alpha.to_degrees(), 4),
-                fixed(j.q, 5),
-                fixed(j.r, 5),
+                "  {p0:>11} {da:>13} {dr:>13} {alpha:>11} {q:>11} {r:>11}{}\n",
                 marks(j.within_limits, j.valid)
             );
         }

@@ -20,7 +20,7 @@
 //! ```
 
 use crate::aircraft::Aircraft;
-use crate::analysis::{analyze, Analysis, AnalysisError, HopfPoint, JumpPoint};
+use crate::analysis::{analyze, Analysis, AnalysisError, DeparturePoint, HopfPoint, JumpPoint};
 use crate::continuation::{self, continue_equilibria, ContinuationError, Diagram};
 use crate::plot::{
     self, closed_form, BifurcationData, BranchPoint, PlotError, PlotStyle, SpecialKind,
@@ -720,6 +720,19 @@ pub fn hopf_cells(h: &HopfPoint) -> [String; 8] {
     ]
 }
 
+/// The cells of a zero-sideslip departure's row: P0 (rad/s), delta_a, delta_r, alpha (deg), q
+/// and r (rad/s).
+pub fn departure_cells(d: &DeparturePoint) -> [String; 6] {
+    [
+        fixed(d.p0, 6),
+        fixed(d.delta_a_deg, 4),
+        fixed(d.delta_r_deg, 4),
+        fixed(d.alpha.to_degrees(), 4),
+        fixed(d.q, 5),
+        fixed(d.r, 5),
+    ]
+}
+
 /// A markdown table row of cells.
 fn md_row(cells: &[String]) -> String {
     format!("| {} |\n", cells.join(" | "))
@@ -763,16 +776,9 @@ fn markdown(s: &Summary, de: f64) -> String {
     if a.hopf.is_empty() {
         m += "| none | | | | | | | |\n";
     }
-    m += "\n### Zero-sideslip departure (det K = 0 at beta = 0)\n\n| P0 rad/s | delta_a deg | alpha deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|\n";
+    m += "\n### Zero-sideslip departure (det K = 0 at beta = 0)\n\n| P0 rad/s | delta_a deg | delta_r deg | alpha deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|---:|\n";
     for d in &a.zero_sideslip.departure {
-        m += &format!(
-            "| {} | {} | {} | {} | {} |\n",
-            fixed(d.p0, 6),
-            fixed(d.delta_a_deg, 4),
-            fixed(d.alpha.to_degrees(), 4),
-            fixed(d.q, 5),
-            fixed(d.r, 5)
-        );
+        m += &md_row(&departure_cells(d));
     }
     for (title, rows) in [
         (

@@ -30,6 +30,14 @@ fn lookup(k: &Params, extra: &[(Sym, f64)]) -> impl Fn(Sym) -> f64 {
     }
 }
 
+/// [`lookup`] with the trim symbols at the state `x` = [alpha, beta, p, q, r].
+fn lookup_state(k: &Params, x: &[f64; 5]) -> impl Fn(Sym) -> f64 {
+    let s = symbols();
+    let state = [s.alpha0, s.beta0, s.p0, s.q0, s.r0];
+    let extra: Vec<(Sym, f64)> = state.into_iter().zip(x.iter().copied()).collect();
+    lookup(k, &extra)
+}
+
 fn eval(p: &Poly, f: &impl Fn(Sym) -> f64) -> f64 {
     p.eval_f64(f)
 }
@@ -51,7 +59,6 @@ fn identity_det_j5_equals_d_det_k_symbolically() {
 
 #[test]
 fn symbolic_linearization_equals_central_difference_jacobian() {
-    let s = symbols();
     let d = parametric();
     let mut rng = Lcg(7);
     for _ in 0..200 {
@@ -62,16 +69,7 @@ fn symbolic_linearization_equals_central_difference_jacobian() {
             rng.range(-0.1, 0.1),
             rng.range(-0.1, 0.1),
         ];
-        let f = lookup(
-            &k,
-            &[
-                (s.alpha0, x[0]),
-                (s.beta0, x[1]),
-                (s.p0, x[2]),
-                (s.q0, x[3]),
-                (s.r0, x[4]),
-            ],
-        );
+        let f = lookup_state(&k, &x);
         let num = fd_jacobian(&k, &x, &u);
         for i in 0..5 {
             for j in 0..5 {
@@ -90,22 +88,12 @@ fn symbolic_linearization_equals_central_difference_jacobian() {
 
 #[test]
 fn identity_holds_numerically_at_random_points() {
-    let s = symbols();
     let d = parametric();
     let mut rng = Lcg(11);
     for _ in 0..200 {
         let k = random_params(&mut rng);
         let x: [f64; 5] = std::array::from_fn(|_| rng.range(-1.0, 1.0));
-        let f = lookup(
-            &k,
-            &[
-                (s.alpha0, x[0]),
-                (s.beta0, x[1]),
-                (s.p0, x[2]),
-                (s.q0, x[3]),
-                (s.r0, x[4]),
-            ],
-        );
+        let f = lookup_state(&k, &x);
         let j = fd_jacobian(&k, &x, &[0.0; 3]);
         let det_j5 = j.determinant();
         let dd = residual_denominator(&j);

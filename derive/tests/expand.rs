@@ -2,6 +2,10 @@
 //! parametric, it agrees with an independently computed jump root, with itself across the
 //! parametric and specialised forms, and with the committed generated crate.
 
+#[allow(dead_code)]
+#[path = "../../model/tests/support/reference.rs"]
+mod reference;
+
 /// Aircraft A, built in.
 mod a {
     roll_criterion_derive::roll_criterion!(aircraft = A);
@@ -56,11 +60,11 @@ fn assert_close(got: f64, want: f64, rel: f64, what: &str) {
 }
 
 /// det K of aircraft A changes sign at its jump roll rates, Fig. 7 of the paper (1.70 and
-/// 3.03 rad/s at delta_e = 2 deg, delta_r = 0); the values 1.706288 and 3.033180 are the
-/// independent computation of issue 2 (also pinned in tests/tests/paper.rs).
+/// 3.03 rad/s at delta_e = 2 deg, delta_r = 0), as the independent computation of issue 2
+/// gives them (`reference`, also pinned in tests/tests/paper.rs).
 #[test]
 fn fig_7_det_k_aircraft_a_changes_sign_at_the_jump_roll_rates() {
-    for p in [1.706288, 3.033180] {
+    for p in reference::A_JUMP_P0 {
         let below = a::det_k(p - 1e-5, DE, 0.0);
         let above = a::det_k(p + 1e-5, DE, 0.0);
         assert!(
@@ -88,11 +92,11 @@ fn parametric_det_k_with_b_data_equals_specialised_aircraft_b() {
             "det_j5",
         );
     }
-    // Table 1 of the paper: B's pitch-yaw divergence roll rates, 2.98 and 4.78 rad/s;
-    // independently computed (issue 2) 2.986460 and 4.783697.
+    // Table 1 of the paper: B's pitch-yaw divergence roll rates, 2.98 and 4.78 rad/s, as
+    // independently computed (issue 2).
     let got = parametric::divergence_roll_rates(&B);
     let want = b::divergence_roll_rates();
-    for ((g, w), table_1) in got.iter().zip(want).zip([2.986460, 4.783697]) {
+    for ((g, w), table_1) in got.iter().zip(want).zip(reference::B_DIVERGENCE_P0) {
         assert_close(*g, w, 1e-12, "divergence_roll_rates");
         assert_close(w, table_1, 2e-7, "Table 1 (independent)");
     }

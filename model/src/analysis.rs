@@ -13,6 +13,22 @@
 //! denominators); common factors are cancelled exactly by
 //! univariate gcds before any root is sought, so a pole is never reported as a root, however
 //! close a true root lies.
+//!
+//! ```
+//! use model::aircraft::Aircraft;
+//! use model::analysis::analyze_with;
+//!
+//! // Aircraft A of the paper at delta_e = 2 deg, the jump analysis alone (no Hopf points).
+//! let a = analyze_with(&Aircraft::a(), 2f64.to_radians(), false).unwrap();
+//! // Table 1: A has no pitch-yaw divergence; Fig. 7: det K has two positive roots.
+//! assert!(a.divergence_roll_rates.is_empty());
+//! assert_eq!(a.jump.len(), 2);
+//! // The critical jump is the first fold met from P0 = 0: the smaller root, reached with
+//! // negative aileron (l_delta_a < 0 rolls to positive p).
+//! let critical = a.critical.as_ref().unwrap();
+//! assert_eq!(critical.p0, a.jump[0].p0);
+//! assert!(critical.delta_a_rad < 0.0 && critical.valid);
+//! ```
 
 use crate::aircraft::Aircraft;
 use crate::algebra::{Poly, Sym, Q};

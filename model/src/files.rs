@@ -6,6 +6,19 @@
 //! Temporary files are named `.NAME.tmp-PID-N[.EXT]` next to their target `NAME` (PID: the
 //! writing process). A run that writes `NAME` first removes every such file of a process that
 //! no longer exists.
+//!
+//! ```
+//! use model::files::write_atomic;
+//!
+//! // A new file in a new directory, then replaced whole; no temporary file is left beside it.
+//! let dir = std::env::temp_dir().join(format!("model-files-doc-{}", std::process::id()));
+//! let path = dir.join("out").join("result.csv");
+//! write_atomic(&path, b"p0,det_k\n").unwrap();
+//! write_atomic(&path, b"p0,det_k\n1.7,0\n").unwrap();
+//! assert_eq!(std::fs::read(&path).unwrap(), b"p0,det_k\n1.7,0\n");
+//! assert_eq!(std::fs::read_dir(path.parent().unwrap()).unwrap().count(), 1);
+//! std::fs::remove_dir_all(&dir).unwrap();
+//! ```
 
 use std::io::Write;
 use std::path::{Path, PathBuf};

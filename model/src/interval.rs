@@ -3,8 +3,22 @@
 //! Every operation computes its ends in round-to-nearest and then moves each end one ulp
 //! outwards (`next_down` / `next_up` on the bits). Round-to-nearest is within half an ulp of the
 //! exact result, so the widened interval contains the exact result of the operation on any
-//! reals of the operands: every result encloses the true range. Exact rationals enter through
-//! [`I::from_q`], which brackets the rational between two adjacent doubles exactly.
+//! reals of the operands: every result encloses the true range. Sums, products and quotients
+//! of two exact doubles whose result is exact (checked by error-free transformations: Knuth's
+//! TwoSum, Dekker's product) stay points, so that exact zeros and small integers stay exact.
+//! Exact rationals enter through [`I::from_q`], which brackets the rational between two adjacent
+//! doubles exactly.
+//!
+//! ```
+//! use model::interval::I;
+//!
+//! // 0.1 + 0.2 rounds to 0.30000000000000004 in f64; the enclosure keeps 0.3 inside.
+//! let s = I::point(0.1) + I::point(0.2);
+//! assert!(s.lo <= 0.3 && 0.3 <= s.hi && s.lo < s.hi);
+//! // A square is never negative, unlike x * x over an interval through 0.
+//! let x = I::new(-1.0, 2.0);
+//! assert!(x.sqr().lo >= 0.0 && (x * x).lo < 0.0);
+//! ```
 
 use num_rational::BigRational;
 use num_traits::ToPrimitive;

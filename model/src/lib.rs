@@ -21,8 +21,13 @@ pub mod equations;
 pub mod files;
 pub mod interval;
 pub mod numeric;
+// The tests' reference numbers (one file, shared with the other crates' tests): for the unit
+// tests and for the generator of `generated/tests/values.rs` in `emit`.
 #[cfg(feature = "cli")]
 pub mod plot;
+#[allow(dead_code)]
+#[path = "../tests/support/reference.rs"]
+mod reference;
 #[cfg(feature = "cli")]
 pub mod report;
 pub mod roots;

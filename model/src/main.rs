@@ -4,7 +4,10 @@ use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use model::aircraft::{self, Aircraft};
 use model::analysis::{analyze, Analysis};
 use model::continuation::{continue_equilibria, ContinuationParam, Diagram, Settings};
-use model::report::{fixed, list, report, ReportError, ReportSettings};
+use model::report::{
+    departure_cells, first_departure_text, fixed, hopf_cells, jump_cells, list, report,
+    ReportError, ReportSettings,
+};
 use model::simulation::{simulate, Model, Rudder, SimError, SimSettings};
 use std::io::Write;
 use std::path::Path;
@@ -722,43 +725,6 @@ fn marks(within_limits: Option<bool>, valid: bool) -> String {
     m
 }
 
-/// Which instability the primary branch meets first, and where a jump lands.
-fn departure_lines(a: &Analysis) -> String {
-    let Some(f) = &a.first_departure else {
-        return "First loss of stability on the primary branch: none within the aileron range.\n\n"
-            .into();
-    };
-    let mut s = format!(
-        "First loss of stability on the primary branch: {} at P0 = {} rad/s, delta_a = {} deg",
-        if f.kind == "jump" { "JUMP" } else { "HOPF" },
-        fixed(f.p0, 6),
-        fixed(f.delta_a_deg, 4)
-    );
-    if let (Some(w), Some(l1), Some(k)) = (f.omega, f.l1, f.hopf_kind) {
-        s += &format!(
-            " (oscillation omega = {} rad/s, l1 = {:.4e}, {k})",
-            fixed(w, 4),
-            l1
-        );
-    }
-    s += "\n";
-    if let Some(l) = &f.lands_at {
-        if l.is_empty() {
-            s += "  the jump lands on no stable equilibrium (divergence)\n";
-        }
-        for e in l {
-            s += &format!(
-                "  lands at P0 = {} rad/s (jump {} rad/s), alpha = {} deg, beta = {} deg\n",
-                fixed(e.p0, 6),
-                fixed(e.p0 - f.p0, 6),
-                fixed(e.alpha.to_degrees(), 4),
-                fixed(e.beta.to_degrees(), 4)
-            );
-        }
-    }
-    s + "\n"
-}
-
 /// The Hopf points (complex pair on the imaginary axis), with omega and l1.
 fn hopf_table(a: &Analysis) -> String {
     let mut s = "\nHopf points, Delta4 = 0 with omega^2 > 0 (oscillatory departure):\n".to_string();
@@ -767,18 +733,10 @@ fn hopf_table(a: &Analysis) -> String {
     }
     s += "     P0 rad/s   delta_a deg   alpha deg    beta deg  omega rad/s    period s          l1  kind\n";
     for h in &a.hopf {
-        let j = &h.point;
+        let [p0, da, alpha, beta, omega, period, l1, kind] = hopf_cells(h);
         s += &format!(
-            "  {:>11} {:>13} {:>11} {:>11} {:>12} {:>11} {:>11.3e}  {}{}\n",
-            fixed(j.p0, 6),
-            fixed(j.delta_a_deg, 4),
-            fixed(j.alpha.to_degrees(), 4),
-            fixed(j.beta.to_degrees(), 4),
-            fixed(h.omega, 4),
-            fixed(h.period, 4),
-            h.l1,
-            h.kind,
-            marks(j.within_limits, j.valid)
+            "  {p0:>11} {da:>13} {alpha:>11} {beta:>11} {omega:>12} {period:>11} {l1:>11}  {kind}{}\n",
+            marks(h.point.within_limits, h.point.valid)
         );
     }
     s
@@ -809,7 +767,7 @@ fn table(a: &Analysis) -> String {
         (None, Some(note)) => s += &format!("No critical jump: {note}.\n\n"),
         (None, None) => {}
     }
-    s += &departure_lines(a);
+    s += &first_departure_text(a);
     s += &format!(
         "Divergence roll rates, Eq. 5:   {}\n",
         list(&a.divergence_roll_rates)
@@ -824,14 +782,9 @@ fn table(a: &Analysis) -> String {
     } else {
         s += "     P0 rad/s   delta_a deg   alpha deg    beta deg     q rad/s     r rad/s\n";
         for j in &a.jump {
+            let [p0, da, alpha, beta, q, r] = jump_cells(j);
             s += &format!(
-                "  {:>11} {:>13} {:>11} {:>11} {:>11} {:>11}{}\n",
-                fixed(j.p0, 6),
-                fixed(j.delta_a_deg, 4),
-                fixed(j.alpha.to_degrees(), 4),
-                fixed(j.beta.to_degrees(), 4),
-                fixed(j.q, 5),
-                fixed(j.r, 5),
+                "  {p0:>11} {da:>13} {alpha:>11} {beta:>11} {q:>11} {r:>11}{}\n",
                 marks(j.within_limits, j.valid)
             );
         }
@@ -843,14 +796,9 @@ fn table(a: &Analysis) -> String {
     } else {
         s += "     P0 rad/s   delta_a deg   delta_r deg   alpha deg     q rad/s     r rad/s\n";
         for j in &a.zero_sideslip.departure {
+            let [p0, da, dr, alpha, q, r] = departure_cells(j);
             s += &format!(
-                "  {:>11} {:>13} {:>13} {:>11} {:>11} {:>11}{}\n",
-                fixed(j.p0, 6),
-                fixed(j.delta_a_deg, 4),
-                fixed(j.delta_r_deg, 4),
-                fixed(j.alpha.to_degrees(), 4),
-                fixed(j.q, 5),
-                fixed(j.r, 5),
+                "  {p0:>11} {da:>13} {dr:>13} {alpha:>11} {q:>11} {r:>11}{}\n",
                 marks(j.within_limits, j.valid)
             );
         }

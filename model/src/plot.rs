@@ -21,6 +21,31 @@
 //! Output is deterministic (same bytes on every run and machine): the PNG text is rasterised
 //! with DejaVu Sans embedded from `model/assets/` (no system fonts), and nothing depends on
 //! time or hashing order.
+//!
+//! ```
+//! use model::plot::{self, DetKData, PlotStyle};
+//!
+//! // det K = 1 - P0^2 sampled on [0, 2]: one root, at P0 = 1 rad/s.
+//! let p0: Vec<f64> = (0..=40).map(|k| f64::from(k) / 20.0).collect();
+//! let data = DetKData {
+//!     title: "det K = 1 - P0^2".into(),
+//!     det_k: p0.iter().map(|p| 1.0 - p * p).collect(),
+//!     p0,
+//!     roots: vec![1.0],
+//!     poles: vec![],
+//!     divergence: vec![],
+//! };
+//! // Written to a scratch directory, SVG only (no PNG), then removed.
+//! let dir = std::env::temp_dir().join(format!("model-plot-doc-{}", std::process::id()));
+//! std::fs::create_dir_all(&dir).unwrap();
+//! let style = PlotStyle { png: false, ..PlotStyle::default() };
+//! let r = plot::det_k(&dir.join("fig07_det_k"), &data, &style).unwrap();
+//! // The SVG and the CSV of the series drawn; the root is marked on the P0 axis.
+//! assert_eq!(r.files.len(), 2);
+//! let root = &r.figure.panels[0].markers[0];
+//! assert_eq!((root.x, root.y), (1.0, 0.0));
+//! std::fs::remove_dir_all(&dir).unwrap();
+//! ```
 
 pub mod closed_form;
 pub mod data;

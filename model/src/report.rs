@@ -6,12 +6,24 @@
 //! branches of Figs 1-4 and 9; the closed-form det K curves give Figs 7, 8 and 11;
 //! [`crate::simulation`] gives the time histories of Figs 5, 6 and 10 and the simulated
 //! jump; [`crate::plot`] draws.
+//!
+//! ```
+//! use model::report::{fixed, list, ReportSettings};
+//!
+//! // Numbers as the summary prints them: never "-0.0000", and "none" for an empty list.
+//! assert_eq!(fixed(-0.00001, 4), "0.0000");
+//! assert_eq!(list(&[1.23456, 2.5], 2, "rad/s"), "1.23, 2.50 rad/s");
+//! assert_eq!(list(&[], 6, "rad/s"), "none");
+//! // The report's simulations stay within +-30 deg of aileron unless told otherwise.
+//! let settings = ReportSettings::new(2f64.to_radians());
+//! assert_eq!(settings.max_abs_delta_a(), 30f64.to_radians());
+//! ```
 
 use crate::aircraft::Aircraft;
-use crate::analysis::{analyze, Analysis, AnalysisError};
+use crate::analysis::{analyze, Analysis, AnalysisError, DeparturePoint, HopfPoint, JumpPoint};
 use crate::continuation::{self, continue_equilibria, ContinuationError, Diagram};
 use crate::plot::{
-    self, closed_form, BifurcationData, Branch, BranchPoint, PlotError, PlotStyle, SpecialKind,
+    self, closed_form, BifurcationData, BranchPoint, PlotError, PlotStyle, SpecialKind,
     SpecialPoint, TimeHistoryData, Variable, ZeroSideslipData,
 };
 use crate::simulation::{
@@ -185,24 +197,9 @@ fn within(notes: &mut Notes, what: &str, steps: Vec<f64>, max: f64) -> Vec<f64> 
 }
 
 fn to_plot(d: &Diagram, title: String, divergence: &[f64]) -> BifurcationData {
-    let point = |p: &continuation::Point| BranchPoint {
-        param: p.param,
-        alpha: p.alpha,
-        beta: p.beta,
-        p: p.p,
-        q: p.q,
-        r: p.r,
-        stable: p.stable,
-    };
     BifurcationData {
         title,
-        branches: d
-            .branches
-            .iter()
-            .map(|b| Branch {
-                points: b.points.iter().map(point).collect(),
-            })
-            .collect(),
+        branches: d.branches.clone(),
         special: d
             .special_points
             .iter()
@@ -227,6 +224,22 @@ fn to_plot(d: &Diagram, title: String, divergence: &[f64]) -> BifurcationData {
         divergence_p: divergence.iter().flat_map(|p| [*p, -*p]).collect(),
         delta_a_range_deg: Some((-0.8f64.to_degrees(), 0.8f64.to_degrees())),
     }
+}
+
+/// The data of Figs 1-4 in the report: the continuation's branches and special points, the
+/// closed-form Hopf points of the analysis ([`closed_form::hopf_points`]) and its divergence
+/// roll rates.
+pub fn bifurcation_data(diagram: &Diagram, analysis: &Analysis, name: &str) -> BifurcationData {
+    let mut data = to_plot(
+        diagram,
+        format!(
+            "{name}: PSS equilibria, \u{3b4}e = {:.1} deg, \u{3b4}r = 0",
+            analysis.delta_e_rad.to_degrees()
+        ),
+        &analysis.divergence_roll_rates,
+    );
+    data.special.extend(closed_form::hopf_points(analysis));
+    data
 }
 
 fn rows(d: &Diagram) -> Vec<SpecialRow> {
@@ -350,23 +363,16 @@ pub fn report(
         continue_equilibria(aircraft, &cont, &mut |_| {}).map_err(ReportError::from),
     );
     if let Some(diagram) = &diagram {
-        let data = to_plot(
-            diagram,
-            format!(
-                "{name}: PSS equilibria, \u{3b4}e = {:.1} deg, \u{3b4}r = 0",
-                de.to_degrees()
-            ),
-            &analysis.divergence_roll_rates,
-        );
+        let data = bifurcation_data(diagram, &analysis, name);
         let r = plot::bifurcation(&out.join("fig01_bifurcation"), &data, style);
         if let Some(r) = keep(&mut notes, "Figs 1, 2", r.map_err(ReportError::from)) {
-            figures.push(fig("Figs 1, 2", "Roll rate of the PSS equilibria vs aileron (solid stable, dashed unstable; saddle-nodes and Hopf points marked).".into(), &r.files));
+            figures.push(fig("Figs 1, 2", "Roll rate of the PSS equilibria vs aileron (solid stable, dashed unstable; saddle-nodes and Hopf points of the continuation marked, the closed-form Hopf points as black diamonds).".into(), &r.files));
         }
         let r = plot::trim_states(&out.join("fig03_trim_states"), &data, style);
         if let Some(r) = keep(&mut notes, "Figs 3, 4", r.map_err(ReportError::from)) {
             figures.push(fig(
                 "Figs 3, 4",
-                "Trim angle of attack, sideslip, pitch and yaw rate vs aileron.".into(),
+                "Trim angle of attack, sideslip, pitch and yaw rate vs aileron (special points as in Figs 1, 2).".into(),
                 &r.files,
             ));
         }
@@ -642,12 +648,106 @@ pub fn list(v: &[f64], digits: usize, unit: &str) -> String {
     }
 }
 
+/// Which instability the primary branch meets first (a jump, or a Hopf point with its
+/// frequency, first Lyapunov coefficient and kind) and where a jump lands, as `analyze` prints
+/// it and the summary repeats it: lines ending in a blank line.
+pub fn first_departure_text(a: &Analysis) -> String {
+    let Some(f) = &a.first_departure else {
+        return "First loss of stability on the primary branch: none within the aileron range.\n\n"
+            .into();
+    };
+    let mut s = format!(
+        "First loss of stability on the primary branch: {} at P0 = {} rad/s, delta_a = {} deg",
+        if f.kind == "jump" { "JUMP" } else { "HOPF" },
+        fixed(f.p0, 6),
+        fixed(f.delta_a_deg, 4)
+    );
+    if let (Some(w), Some(l1), Some(k)) = (f.omega, f.l1, f.hopf_kind) {
+        s += &format!(
+            " (oscillation omega = {} rad/s, l1 = {:.4e}, {k})",
+            fixed(w, 4),
+            l1
+        );
+    }
+    s += "\n";
+    if let Some(l) = &f.lands_at {
+        if l.is_empty() {
+            s += "  the jump lands on no stable equilibrium (divergence)\n";
+        }
+        for e in l {
+            s += &format!(
+                "  lands at P0 = {} rad/s (jump {} rad/s), alpha = {} deg, beta = {} deg\n",
+                fixed(e.p0, 6),
+                fixed(e.p0 - f.p0, 6),
+                fixed(e.alpha.to_degrees(), 4),
+                fixed(e.beta.to_degrees(), 4)
+            );
+        }
+    }
+    s + "\n"
+}
+
+/// The cells of a reported point's row, as `analyze` and the summary print them: P0 (rad/s),
+/// delta_a, alpha and beta (deg).
+fn point_cells(j: &JumpPoint) -> [String; 4] {
+    [
+        fixed(j.p0, 6),
+        fixed(j.delta_a_deg, 4),
+        fixed(j.alpha.to_degrees(), 4),
+        fixed(j.beta.to_degrees(), 4),
+    ]
+}
+
+/// The cells of a jump point's row: P0 (rad/s), delta_a, alpha, beta (deg), q and r (rad/s).
+pub fn jump_cells(j: &JumpPoint) -> [String; 6] {
+    let [p0, da, alpha, beta] = point_cells(j);
+    [p0, da, alpha, beta, fixed(j.q, 5), fixed(j.r, 5)]
+}
+
+/// The cells of a Hopf point's row: P0 (rad/s), delta_a, alpha, beta (deg), omega (rad/s),
+/// period (s), l1 and its kind (supercritical or subcritical).
+pub fn hopf_cells(h: &HopfPoint) -> [String; 8] {
+    let [p0, da, alpha, beta] = point_cells(&h.point);
+    [
+        p0,
+        da,
+        alpha,
+        beta,
+        fixed(h.omega, 4),
+        fixed(h.period, 4),
+        format!("{:.3e}", h.l1),
+        h.kind.to_string(),
+    ]
+}
+
+/// The cells of a zero-sideslip departure's row: P0 (rad/s), delta_a, delta_r, alpha (deg), q
+/// and r (rad/s).
+pub fn departure_cells(d: &DeparturePoint) -> [String; 6] {
+    [
+        fixed(d.p0, 6),
+        fixed(d.delta_a_deg, 4),
+        fixed(d.delta_r_deg, 4),
+        fixed(d.alpha.to_degrees(), 4),
+        fixed(d.q, 5),
+        fixed(d.r, 5),
+    ]
+}
+
+/// A markdown table row of cells.
+fn md_row(cells: &[String]) -> String {
+    format!("| {} |\n", cells.join(" | "))
+}
+
 fn markdown(s: &Summary, de: f64) -> String {
     let a = &s.analysis;
     let mut m = format!(
         "# {}: roll-coupling report\n\nElevator {:.2} deg, rudder 0 (unconstrained roll). Criterion of Mahale & Ananthkrishnan (AIAA 2006-6267), derived exactly; see `docs/formulas.tex`.\n\n",
         crate::aircraft::shown(&a.aircraft),
         de.to_degrees()
+    );
+    m += &format!(
+        "## First loss of stability\n\n```text\n{}\n```\n\n",
+        first_departure_text(a).trim_end()
     );
     m += "## Critical roll rates\n\n";
     m += &format!(
@@ -664,29 +764,21 @@ fn markdown(s: &Summary, de: f64) -> String {
     );
     m += "### Jump points (det K = 0, saddle-nodes)\n\n| P0 rad/s | delta_a deg | alpha deg | beta deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|---:|\n";
     for j in &a.jump {
-        m += &format!(
-            "| {} | {} | {} | {} | {} | {} |\n",
-            fixed(j.p0, 6),
-            fixed(j.delta_a_deg, 4),
-            fixed(j.alpha.to_degrees(), 4),
-            fixed(j.beta.to_degrees(), 4),
-            fixed(j.q, 5),
-            fixed(j.r, 5)
-        );
+        m += &md_row(&jump_cells(j));
     }
     if a.jump.is_empty() {
         m += "| none | | | | | |\n";
     }
-    m += "\n### Zero-sideslip departure (det K = 0 at beta = 0)\n\n| P0 rad/s | delta_a deg | alpha deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|\n";
+    m += "\n### Hopf points (closed form, Delta4 = 0 with omega^2 > 0)\n\n| P0 rad/s | delta_a deg | alpha deg | beta deg | omega rad/s | period s | l1 | kind |\n|---:|---:|---:|---:|---:|---:|---:|---|\n";
+    for h in &a.hopf {
+        m += &md_row(&hopf_cells(h));
+    }
+    if a.hopf.is_empty() {
+        m += "| none | | | | | | | |\n";
+    }
+    m += "\n### Zero-sideslip departure (det K = 0 at beta = 0)\n\n| P0 rad/s | delta_a deg | delta_r deg | alpha deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|---:|\n";
     for d in &a.zero_sideslip.departure {
-        m += &format!(
-            "| {} | {} | {} | {} | {} |\n",
-            fixed(d.p0, 6),
-            fixed(d.delta_a_deg, 4),
-            fixed(d.alpha.to_degrees(), 4),
-            fixed(d.q, 5),
-            fixed(d.r, 5)
-        );
+        m += &md_row(&departure_cells(d));
     }
     for (title, rows) in [
         (
@@ -759,6 +851,49 @@ mod tests {
         assert_eq!(fixed(2.5, 1), "2.5");
         assert_eq!(list(&[], 6, "rad/s"), "none");
         assert_eq!(list(&[1.0, -0.0], 2, "rad/s"), "1.00, 0.00 rad/s");
+    }
+
+    #[test]
+    fn the_summary_says_which_instability_comes_first_with_l1_and_kind_for_a_hopf_point() {
+        let mut a = crate::analysis::analyze_with(&Aircraft::a(), 0.0349, false).unwrap();
+        a.first_departure = None;
+        let none = first_departure_text(&a);
+        assert!(none.contains("none within the aileron range"), "{none}");
+        // A Hopf point first (numbers made up for the text): its frequency, l1 and kind.
+        a.first_departure = Some(crate::analysis::FirstDeparture {
+            kind: "hopf",
+            p0: 3.1,
+            delta_a_rad: -0.36,
+            delta_a_deg: -20.6,
+            omega: Some(0.88),
+            l1: Some(-0.1746),
+            hopf_kind: Some("supercritical"),
+            lands_at: None,
+        });
+        let text = first_departure_text(&a);
+        assert!(
+            text.starts_with(
+                "First loss of stability on the primary branch: HOPF at P0 = 3.100000 rad/s, \
+                 delta_a = -20.6000 deg (oscillation omega = 0.8800 rad/s, l1 = -1.7460e-1, \
+                 supercritical)\n"
+            ),
+            "{text}"
+        );
+        let summary = Summary {
+            analysis: a,
+            special_points: vec![],
+            zero_sideslip_special_points: vec![],
+            simulated_jumps: vec![],
+            figures: vec![],
+            skipped: vec![],
+            failed_files: vec![],
+        };
+        let md = markdown(&summary, 0.0349);
+        let section = format!(
+            "## First loss of stability\n\n```text\n{}\n```",
+            text.trim_end()
+        );
+        assert!(md.contains(&section), "{md}");
     }
 
     #[test]

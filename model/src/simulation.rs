@@ -23,11 +23,27 @@
 //! Sign convention (ours and the paper's): `l_delta_a < 0`, so a negative aileron deflection
 //! rolls the aircraft with positive roll rate; the paper's jumps (Figs 5, 6) and the sideslip
 //! build-up (Fig. 10) are at negative delta_a with positive p.
+//!
+//! ```
+//! use model::aircraft::Aircraft;
+//! use model::simulation::{simulate, Model, SimSettings};
+//!
+//! // Aircraft A, PSS model, an aileron step of -2 deg (short of its first fold, Fig. 5).
+//! let settings = SimSettings::step(Model::Pss, 2f64.to_radians(), -2f64.to_radians());
+//! let run = simulate(&Aircraft::a(), &settings).unwrap();
+//! assert_eq!(run.t.len(), 1001); // every 0.02 s over the default 20 s
+//! // The roll rate settles at a positive value (negative aileron rolls to positive p) through
+//! // a decaying pitch-yaw oscillation: narrower over the last second than the last ten.
+//! let (last, before) = (run.steady(1.0), run.steady(10.0));
+//! assert!(last.p_mean > 0.0);
+//! assert!(last.p_max - last.p_min < 0.5 * (before.p_max - before.p_min), "{last:?}");
+//! ```
 
 mod sweep;
 mod trim;
 
 pub use sweep::{jump_sweep, jump_sweep_with_progress, Jump, Sweep, SweepPoint, SweepSettings};
+pub(crate) use trim::bisect;
 pub use trim::{Equilibrium, RudderSchedule, Trims};
 
 use crate::aircraft::Aircraft;

@@ -1,14 +1,10 @@
 //! `model clear` end to end: bad `[uncertainty]` entries, zero-width boxes, the JSON shape.
 
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
-fn model(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_model"))
-        .args(args)
-        .output()
-        .expect("run the model binary")
-}
+mod support;
+
+use support::{json, model};
 
 fn aircraft_a_with(extra: &str, name: &str) -> PathBuf {
     let a = std::fs::read_to_string(
@@ -20,15 +16,6 @@ fn aircraft_a_with(extra: &str, name: &str) -> PathBuf {
     let path = dir.join(name);
     std::fs::write(&path, format!("{a}\n{extra}")).unwrap();
     path
-}
-
-fn json(out: &Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("valid JSON")
 }
 
 #[test]

@@ -3,12 +3,9 @@
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
-fn model(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_model"))
-        .args(args)
-        .output()
-        .expect("run the model binary")
-}
+mod support;
+
+use support::{json, model, reference};
 
 fn repo(path: &str) -> String {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -16,15 +13,6 @@ fn repo(path: &str) -> String {
         .join(path)
         .to_string_lossy()
         .into_owned()
-}
-
-fn json(out: &Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("valid JSON")
 }
 
 #[test]
@@ -62,7 +50,9 @@ fn analyze_prints_a_table_for_b_and_a_users_file() {
     let out = model(&["analyze", "B"]);
     assert!(out.status.success());
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(text.contains("Aircraft B") && text.contains("2.986460") && text.contains("4.627182"));
+    assert!(text.contains("Aircraft B"));
+    let (divergence, jump) = (reference::B_DIVERGENCE_P0[0], reference::B_JUMP_P0[3]);
+    assert!(text.contains(&format!("{divergence:.6}")) && text.contains(&format!("{jump:.6}")));
     let c = json(&model(&[
         "analyze",
         &repo("aircraft/c.toml"),
@@ -181,9 +171,11 @@ fn continue_reports_the_folds_of_fig_1_as_json_and_csv() {
         .map(|s| s["p"].as_f64().unwrap())
         .filter(|p| *p > 0.0)
         .collect();
-    // The jump roots of `analyze` (Fig. 7): 1.706288 and 3.033180.
+    // The jump roots of `analyze` (Fig. 7).
     assert_eq!(folds.len(), 2, "{folds:?}");
-    assert!(folds.iter().any(|p| (p - 1.706288).abs() < 1e-6));
+    assert!(folds
+        .iter()
+        .any(|p| (p - reference::A_JUMP_P0[0]).abs() < 1e-6));
     let text = std::fs::read_to_string(&csv).unwrap();
     assert!(
         text.starts_with("branch,delta_a_rad,alpha_rad,beta_rad,p_rad_s,q_rad_s,r_rad_s,stable"),
@@ -203,11 +195,15 @@ fn continue_zero_sideslip_finds_the_branch_point_of_fig_9() {
         .iter()
         .filter(|s| s["kind"] == "branch")
         .collect();
-    // analyze: departure at P0 = 2.130625, delta_a = -0.14249 rad (paper: about -0.15 rad).
+    // analyze's zero-sideslip departure (Fig. 11; the paper: about -0.15 rad of aileron).
+    let (p0, delta_a) = (
+        reference::A_ZERO_SIDESLIP_P0[0],
+        reference::A_ZERO_SIDESLIP_DELTA_A_DEG.to_radians(),
+    );
     assert!(
         bp.iter()
-            .any(|s| (s["p"].as_f64().unwrap() - 2.130625).abs() < 1e-6
-                && (s["delta_a"].as_f64().unwrap() + 0.14249).abs() < 1e-5),
+            .any(|s| (s["p"].as_f64().unwrap() - p0).abs() < 1e-6
+                && (s["delta_a"].as_f64().unwrap() - delta_a).abs() < 1e-5),
         "{bp:?}"
     );
     let out = model(&["continue", "A", "--param", "delta_x"]);
@@ -243,11 +239,36 @@ fn report_writes_every_figure_and_a_summary() {
     }
     let md = std::fs::read_to_string(dir.join("summary.md")).unwrap();
     // B's first jump (Fig. 8) and its Hopf points (Fig. 2) are in the report.
-    assert!(md.contains("2.595015") && md.contains("hopf"), "{md}");
+    let jump = format!("{:.6}", reference::B_JUMP_P0[0]);
+    assert!(md.contains(&jump) && md.contains("hopf"), "{md}");
     assert!(md.contains("![Figs 1, 2](fig01_bifurcation.png)"));
+    // Which instability comes first on the primary branch: B's first fold, before its Hopf
+    // points (issue 10).
+    let first = format!(
+        "First loss of stability on the primary branch: JUMP at P0 = {jump} rad/s, delta_a = {:.4} deg",
+        reference::B_FOLD_DELTA_A_DEG
+    );
+    assert!(md.contains(&first), "{md}");
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     assert_eq!(summary["analysis"]["aircraft"], "Aircraft B");
+    let departure = &summary["analysis"]["first_departure"];
+    assert_eq!(departure["kind"], "jump", "{departure}");
+    let p0 = departure["p0"].as_f64().unwrap();
+    assert!((p0 - reference::B_JUMP_P0[0]).abs() < 1e-6, "{departure}");
+    // Fig. 1 marks the closed-form Hopf points at AUTO-07p's roll rates (and their mirror
+    // images at -P0), apart from the continuation's; the CSV names each. (B's third Hopf point,
+    // at +75.7 deg of aileron, lies beyond the figure's +-0.8 rad.)
+    let csv = std::fs::read_to_string(dir.join("fig01_bifurcation.csv")).unwrap();
+    let hopf: Vec<f64> = csv
+        .lines()
+        .filter(|row| row.contains(",marker,closed-form Hopf point"))
+        .map(|row| row.rsplit(',').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(hopf.len(), 4, "{hopf:?}");
+    for (p0, _, _) in reference::B_HOPF {
+        assert!(hopf.iter().any(|p| (p - p0).abs() < 1e-6), "{p0}: {hopf:?}");
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -6,20 +6,9 @@
 
 use nalgebra::{Matrix4, Matrix5, Vector4};
 
-/// Reference numbers that several test files check, each written once. Computed by this
-/// crate's independent numeric oracle (scan and bisection of det J5 on its finite-difference
-/// Jacobian, `tests/tests/paper.rs` recomputes them), at delta_e = 2 deg, delta_r = 0, to the
-/// digits printed; the paper's Figs 1, 5-7 and 11 give them to two or three digits.
-pub mod reference {
-    /// Aircraft A: the jump roll rates, rad/s (roots of det K, Fig. 7; the folds of Fig. 1).
-    pub const A_JUMP_P0: [f64; 2] = [1.706288, 3.033180];
-    /// Aircraft A: the aileron of the first jump (the critical point), deg (Figs 1, 5).
-    pub const A_FOLD_DELTA_A_DEG: f64 = -3.8467;
-    /// Aircraft B: the aileron of the first jump, deg (Figs 2, 6).
-    pub const B_FOLD_DELTA_A_DEG: f64 = -11.2068;
-    /// Aircraft A: the zero-sideslip departure roll rates, rad/s (Fig. 11).
-    pub const A_ZERO_SIDESLIP_P0: [f64; 2] = [2.130625, 4.457684];
-}
+// One file of reference numbers, shared with the tests of `model` and `derive`.
+#[path = "../../model/tests/support/reference.rs"]
+pub mod reference;
 
 /// Parameter values in the order C, D, E, z_alpha, y_beta, l_p, l_r, l_beta, l_delta_a, m_q,
 /// m_alpha, m_delta_e, n_p, n_r, n_beta, n_delta_a, n_delta_r, l_delta_r (the order of

@@ -65,16 +65,20 @@ fn check_box(a: &Aircraft, samples: usize, seed: u64) {
     }
 }
 
+/// The parameters the random boxes are drawn from.
+const POOL: [Param; 6] = [
+    Param::Lp,
+    Param::NBeta,
+    Param::LBeta,
+    Param::MAlpha,
+    Param::E,
+    Param::Nr,
+];
+
 #[test]
 fn no_sample_of_a_random_box_jumps_below_the_proven_bound() {
     let mut rng = Rng::new(7);
-    let pool = [
-        Param::Lp,
-        Param::NBeta,
-        Param::LBeta,
-        Param::MAlpha,
-        Param::E,
-    ];
+    let pool = &POOL[..5];
     for b in 0..2 {
         let k1 = (rng.unit() * pool.len() as f64) as usize % pool.len();
         let k2 = (k1 + 1 + (rng.unit() * 3.0) as usize) % pool.len();
@@ -88,14 +92,7 @@ fn no_sample_of_a_random_box_jumps_below_the_proven_bound() {
 #[ignore]
 fn no_sample_of_a_random_box_jumps_below_the_proven_bound_10k() {
     let mut rng = Rng::new(11);
-    let pool = [
-        Param::Lp,
-        Param::NBeta,
-        Param::LBeta,
-        Param::MAlpha,
-        Param::E,
-        Param::Nr,
-    ];
+    let pool = POOL;
     for b in 0..3 {
         let k1 = (rng.unit() * pool.len() as f64) as usize % pool.len();
         let k2 = (k1 + 1) % pool.len();

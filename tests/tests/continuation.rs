@@ -12,6 +12,7 @@ use model::continuation::{
     continue_equilibria, ContinuationError, ContinuationParam, Diagram, Settings, SpecialKind,
     SpecialPoint,
 };
+use model::plot::Shape;
 use paper_tests::{fd_jacobian, pss_rhs, reference, zero_sideslip_trim, Lcg, Params};
 use std::path::Path;
 use std::sync::OnceLock;
@@ -202,7 +203,8 @@ fn fig_1_folds_aircraft_a_near_minus_4_and_plus_8_deg() {
     assert_eq!(f.len(), 4, "{f:?}");
     let at = |p0: f64| f.iter().find(|x| (x.p - p0).abs() < 1e-6).copied().unwrap();
     assert!(
-        (at(reference::A_JUMP_P0[0]).param.to_degrees() - -3.847).abs() < 1e-3,
+        (at(reference::A_JUMP_P0[0]).param.to_degrees() - reference::A_FOLD_DELTA_A_DEG).abs()
+            < 1e-3,
         "Fig. 1: about -4 deg"
     );
     assert!(
@@ -241,7 +243,7 @@ fn fig_2_folds_aircraft_b_are_the_jump_roots_first_near_minus_12_deg() {
     // The primary branch (through the level trim) loses stability at the fold a, about -12 deg.
     let fa = folds(d)
         .into_iter()
-        .find(|f| (f.p - 2.595015).abs() < 1e-6)
+        .find(|f| (f.p - reference::B_JUMP_P0[0]).abs() < 1e-6)
         .unwrap();
     assert!(
         (fa.param.to_degrees() - reference::B_FOLD_DELTA_A_DEG).abs() < 1e-3,
@@ -331,6 +333,58 @@ fn fig_2_hopf_points_of_aircraft_b_with_their_frequencies() {
             .iter()
             .any(|g| (g.p + h.p).abs() < 1e-7 && (g.param + h.param).abs() < 1e-7));
     }
+}
+
+/// The closed-form Hopf points as the report's Figs 1-4 mark them (issue 10): the figure data
+/// of `model report`, drawn and written as the CSV beside the figure, holds them as their own
+/// series, apart from the continuation's; each row is `(delta_a deg, p rad/s)`.
+fn closed_form_hopf_rows(ac: &Aircraft, d: &Diagram) -> Vec<(f64, f64)> {
+    let a = analyze(ac, de()).unwrap();
+    let data = model::report::bifurcation_data(d, &a, &ac.name);
+    // Figs 3, 4 mark them in each state panel too: those in the figures' aileron range, each
+    // with its mirror image.
+    let (lo, hi) = data.delta_a_range_deg.unwrap();
+    let inside = a
+        .hopf
+        .iter()
+        .filter(|h| (lo..=hi).contains(&h.point.delta_a_deg))
+        .count();
+    let states = model::plot::figures::trim_states_figure(&data).unwrap();
+    for panel in &states.panels {
+        let marked = panel.markers.iter().filter(|m| m.shape == Shape::Diamond);
+        assert_eq!(marked.count(), 2 * inside, "{}: {}", ac.name, panel.title);
+    }
+    let csv = model::plot::figures::bifurcation_figure(&data)
+        .unwrap()
+        .to_csv();
+    csv.lines()
+        .filter(|row| row.contains(",marker,closed-form Hopf point"))
+        .map(|row| {
+            let f: Vec<&str> = row.rsplitn(3, ',').collect();
+            (f[1].parse().unwrap(), f[0].parse().unwrap())
+        })
+        .collect()
+}
+
+#[test]
+fn report_figures_mark_the_closed_form_hopf_points_of_b_and_none_of_a() {
+    let b = closed_form_hopf_rows(&Aircraft::b(), b_default());
+    // AUTO-07p's Hopf points and their mirror images (-P0 at -delta_a); B's third, at +75.7 deg
+    // of aileron, lies beyond the figure's +-0.8 rad.
+    assert_eq!(b.len(), 2 * reference::B_HOPF.len(), "{b:?}");
+    for (p0, da_deg, _) in reference::B_HOPF {
+        for sign in [1.0, -1.0] {
+            assert!(
+                b.iter()
+                    .any(|(da, p)| (p - sign * p0).abs() < 1e-6
+                        && (da - sign * da_deg).abs() < 0.005),
+                "{}: {b:?}",
+                sign * p0
+            );
+        }
+    }
+    let a = closed_form_hopf_rows(&Aircraft::a(), a_default());
+    assert!(a.is_empty(), "{a:?}");
 }
 
 #[test]

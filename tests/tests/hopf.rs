@@ -9,7 +9,7 @@ use model::analysis::{analyze, parametric, Analysis, CriterionPolys, HopfPolys};
 use model::continuation::{continue_equilibria, Settings, SpecialKind};
 use model::roots::positive_roots;
 use nalgebra::Complex;
-use paper_tests::{fd_jacobian, ix, pss_rhs, random_params, trim_branches, Lcg, Params};
+use paper_tests::{fd_jacobian, ix, pss_rhs, random_params, reference, trim_branches, Lcg, Params};
 
 fn de() -> f64 {
     2f64.to_radians()
@@ -45,9 +45,8 @@ fn closest_pair(eig: &[Complex<f64>]) -> (Complex<f64>, Complex<f64>) {
 #[test]
 fn hopf_points_of_b_are_autos_and_a_has_none_at_delta_e_2_deg() {
     let b = analyze(&Aircraft::b(), de()).unwrap();
-    // AUTO-07p (the issue): P0 = 3.129030 at -20.70 deg, omega 0.8796; P0 = 4.731306 at -12.71
-    // deg, omega 5.1854.
-    for (p0, da_deg, omega) in [(3.129030, -20.70, 0.8796), (4.731306, -12.71, 5.1854)] {
+    // AUTO-07p (the issue): P0, delta_a and omega of each Hopf point.
+    for (p0, da_deg, omega) in reference::B_HOPF {
         let h = b
             .hopf
             .iter()
@@ -265,12 +264,12 @@ fn a_jump_lands_on_a_reported_stable_equilibrium_for_a_and_b() {
 
 #[test]
 fn generated_characteristic_coefficients_delta4_and_omega_squared_match_nalgebra() {
-    // At the issue's Hopf point of B, P0 = 3.129030 rad/s: the generated coefficients are those
-    // of prod (s - l_i) over the oracle's eigenvalues, Delta4 changes sign across it, and
-    // omega^2 is the issue's 0.8796^2.
+    // At the issue's first Hopf point of B: the generated coefficients are those of
+    // prod (s - l_i) over the oracle's eigenvalues, Delta4 changes sign across it, and omega^2
+    // is the square of the issue's omega.
     let k = Aircraft::b().values_f64();
     let kd = paper_tests::generated_derivatives(&k);
-    let p0 = 3.129030;
+    let (p0, _, omega) = reference::B_HOPF[0];
     let (x, da) = trim_branches(&k, p0, de(), 0.0).remove(0);
     let eig = eigenvalues(&k, &x, da);
     // Coefficients of prod (s - l_i), highest power first.
@@ -296,7 +295,7 @@ fn generated_characteristic_coefficients_delta4_and_omega_squared_match_nalgebra
     let d4 = |p: f64| roll_criterion::hurwitz_delta4(&kd, p, de(), 0.0);
     assert!(d4(p0 - 1e-5) * d4(p0 + 1e-5) < 0.0);
     let w2 = roll_criterion::hopf_omega_squared(&kd, p0, de(), 0.0);
-    assert!((w2.sqrt() - 0.8796).abs() < 5e-5, "{w2}");
+    assert!((w2.sqrt() - omega).abs() < 5e-5, "{w2}");
 }
 
 /// `det(A)^10 Delta4` at the trim of `p0`, computed here with nalgebra and the

@@ -35,9 +35,14 @@ fn table_1_divergence_roll_rates_aircraft_a_none() {
 #[test]
 fn table_1_divergence_roll_rates_aircraft_b() {
     let got = at_2deg(&Aircraft::b()).divergence_roll_rates;
-    // Independent computation (issue 2): 2.986460, 4.783697; the paper: 2.98, 4.78.
-    assert_close(&got, &[2.986460, 4.783697], 2e-7, "Table 1 (independent)");
-    assert_close(&got, &[2.98, 4.78], 3e-3, "Table 1 (paper)");
+    // Independent computation (issue 2) and the paper.
+    assert_close(
+        &got,
+        &reference::B_DIVERGENCE_P0,
+        2e-7,
+        "Table 1 (independent)",
+    );
+    assert_close(&got, &reference::TABLE_1_B, 3e-3, "Table 1 (paper)");
 }
 
 #[test]
@@ -46,13 +51,14 @@ fn fig_7_det_k_roots_aircraft_a_are_the_saddle_nodes_of_fig_1() {
     let p0: Vec<f64> = a.jump.iter().map(|j| j.p0).collect();
     assert_close(&p0, &reference::A_JUMP_P0, 1e-6, "Fig. 7 (independent)");
     assert_close(&p0, &[1.70, 3.03], 4e-3, "Fig. 7 (paper)");
-    // Fig. 1: saddle-nodes near delta_a = -4 deg and +8 deg; issue: -3.847 deg at the first.
+    // Fig. 1: saddle-nodes near delta_a = -4 deg and +8 deg; the issue gives the first.
+    let fold = reference::A_FOLD_DELTA_A_DEG;
     assert!(
-        (a.jump[0].delta_a_deg - -3.847).abs() < 1e-3,
+        (a.jump[0].delta_a_deg - fold).abs() < 1e-3,
         "{:?}",
         a.jump[0]
     );
-    assert!((a.jump[0].delta_a_rad - -0.06714).abs() < 1e-5);
+    assert!((a.jump[0].delta_a_rad - fold.to_radians()).abs() < 1e-5);
     assert!((a.jump[1].delta_a_deg - 8.0).abs() < 1.0, "{:?}", a.jump[1]);
     assert!(
         a.det_k_poles.is_empty(),
@@ -65,12 +71,7 @@ fn fig_7_det_k_roots_aircraft_a_are_the_saddle_nodes_of_fig_1() {
 fn fig_8_det_k_roots_and_poles_aircraft_b() {
     let b = at_2deg(&Aircraft::b());
     let p0: Vec<f64> = b.jump.iter().map(|j| j.p0).collect();
-    assert_close(
-        &p0,
-        &[2.595015, 3.006127, 3.351058, 4.627182],
-        1e-6,
-        "Fig. 8 roots",
-    );
+    assert_close(&p0, &reference::B_JUMP_P0, 1e-6, "Fig. 8 roots");
     assert_close(
         &b.det_k_poles.iter().map(|j| j.p0).collect::<Vec<_>>(),
         &[2.95891, 3.01944, 4.68475, 4.88055],

@@ -13,14 +13,14 @@
 //!   (signature, IHDR of the requested size, > 10 kB), are byte-identical between runs, and the
 //!   plotted series are the library's numbers.
 
-use model::aircraft::Aircraft;
+use model::aircraft::{f64_to_rational, Aircraft, Param};
 use model::analysis::analyze;
 use model::plot::{self, closed_form, PlotError, PlotStyle, State, TimeHistoryData, Variable};
 use model::simulation::{
     jump_sweep, Aileron, Model, Rudder, SimError, SimSettings, Simulator, SweepSettings,
     TimeHistory,
 };
-use paper_tests::reference;
+use paper_tests::{fd_jacobian, reference, residual_denominator, Params};
 use std::path::{Path, PathBuf};
 
 const DE: f64 = 2.0 * std::f64::consts::PI / 180.0; // 2 deg, as analyze uses it
@@ -652,6 +652,85 @@ fn plotted_series_are_the_library_numbers() {
         Some("\u{3b4}a = \u{2212}5 deg")
     );
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Tolerance of det K against [`det_k_oracle`], relative to max(|det K|, 1): the oracle's
+/// central differences of the quadratic model are exact but for rounding, about
+/// eps |f| / h = 2e-16 * 100 / 1e-6 = 2e-8 in an entry of J5; the largest difference measured
+/// on these curves is 1.8e-8. A wrong clearing of the trim's denominator is an error of order 1.
+const DET_K_TOL: f64 = 1e-6;
+
+/// det K at the trim of roll rate `p0`, computed here without `model`: the trim by LU on the
+/// hand-written model (`paper_tests::trim`, or the zero-sideslip trim with its rudder), J5 by
+/// central differences, det K = det J5 / d (the identity det J5 = d det K, d from the same
+/// Jacobian). `None` where the trim is singular.
+fn det_k_oracle(k: &Params, p0: f64, zero_sideslip: bool) -> Option<f64> {
+    let (x, u) = if zero_sideslip {
+        let (x, da, dr) = paper_tests::zero_sideslip_trim(k, p0, DE)?;
+        (x, [da, DE, dr])
+    } else {
+        let (x, da) = paper_tests::trim(k, p0, DE, 0.0)?;
+        (x, [da, DE, 0.0])
+    };
+    let j = fd_jacobian(k, &x, &u);
+    Some(j.determinant() / residual_denominator(&j))
+}
+
+/// Figs 7, 8 and 11 for aircraft with E = 0 or D = 0 (A with that inertia term removed): the
+/// plotted det K is the independent det K at every sample away from a pole, each marked root
+/// is a sign change of it, and the figure draws the samples unchanged. (E = 0 once took another
+/// clearing of the trim's denominator than det J5 in the figure code.)
+#[test]
+fn det_k_figures_of_aircraft_with_e_or_d_zero_are_the_independent_det_k() {
+    let zero = f64_to_rational(0.0).unwrap();
+    for param in [Param::E, Param::D] {
+        let ac = Aircraft::a().with(param, zero.clone());
+        let k = ac.values_f64();
+        assert_eq!(k[param.index()], 0.0);
+        for (zero_sideslip, data) in [
+            (false, closed_form::det_k_curve(&ac, DE).unwrap()),
+            (
+                true,
+                closed_form::zero_sideslip_det_k_curve(&ac, DE).unwrap(),
+            ),
+        ] {
+            let what = format!("{param:?} = 0, zero sideslip {zero_sideslip}");
+            let mut checked = 0;
+            for (p0, got) in data.p0.iter().zip(&data.det_k) {
+                if data.poles.iter().any(|pole| (pole - p0).abs() < 1e-2) {
+                    continue;
+                }
+                let want = det_k_oracle(&k, *p0, zero_sideslip).unwrap();
+                assert!(
+                    (got - want).abs() <= DET_K_TOL * want.abs().max(1.0),
+                    "{what}: det K({p0}) = {got:e}, independently {want:e}"
+                );
+                checked += 1;
+            }
+            assert!(checked > 1900, "{what}: {checked} samples checked");
+            assert!(!data.roots.is_empty(), "{what}: no root to check");
+            for r in &data.roots {
+                let at = |p: f64| det_k_oracle(&k, p, zero_sideslip).unwrap();
+                assert!(at(r - 1e-5) * at(r + 1e-5) < 0.0, "{what}: root {r}");
+            }
+            let fig = model::plot::figures::det_k_figure(&data).unwrap();
+            let panel = &fig.panels[0];
+            let drawn: Vec<(f64, f64)> = panel
+                .lines
+                .iter()
+                .filter(|l| l.color == model::plot::Rgb::BLUE)
+                .flat_map(|l| l.points.iter().copied())
+                .collect();
+            let inside = data
+                .p0
+                .iter()
+                .copied()
+                .zip(data.det_k.iter().copied())
+                .filter(|(_, v)| panel.y.contains(*v));
+            assert!(inside.clone().count() > 1000, "{what}");
+            assert!(inside.into_iter().all(|q| drawn.contains(&q)), "{what}");
+        }
+    }
 }
 
 #[test]

@@ -22,6 +22,14 @@
 //! so they are within about 1e-16 relative of the exact conversion (the rotation is orthogonal to
 //! within 1e-16, and the product of inertia left in the principal axes is of order 1e-16 (iz - ix)).
 //! With `density` given and `ixz = 0` the conversion is exact.
+//!
+//! ```
+//! use model::aircraft::convert::isa_density;
+//!
+//! // The ISA: 1.225 kg/m^3 at sea level, 0.3639 kg/m^3 at the tropopause (11 km).
+//! assert!((isa_density(0.0) - 1.225).abs() < 1e-3);
+//! assert!((isa_density(11_000.0) - 0.3639).abs() < 1e-4);
+//! ```
 
 use super::{f64_to_rational, rational_to_f64, Aircraft, Param};
 use num_bigint::BigInt;

@@ -21,6 +21,21 @@
 //! intersected into the next step of the chain. For J, whose zero is what the proof is about, a
 //! coordinate in which J is monotone over the box is fixed at the face where J comes closest to
 //! zero before the mean-value form is taken there.
+//!
+//! ```
+//! use model::aircraft::{Aircraft, Param};
+//! use model::clearance::bound::{BoxPolys, Failure};
+//! use model::interval::I;
+//!
+//! // Aircraft A with l_p free in [-21.8, -21.7] 1/s (A's is -21.7529).
+//! let b = BoxPolys::new(&Aircraft::a(), &[Param::Lp], 2f64.to_radians());
+//! let l_p = b.lift(&[I::new(-21.8, -21.7)]);
+//! // No jump for P0 in [1.0, 1.01]: certified, with negative aileron on the primary branch.
+//! let da = b.certify(&l_p, I::new(1.0, 1.01)).unwrap();
+//! assert!(da.hi < 0.0);
+//! // The slab [1.6, 1.8] holds A's first jump (1.706 rad/s, Fig. 7): it cannot be certified.
+//! assert_eq!(b.certify(&l_p, I::new(1.6, 1.8)), Err(Failure::Jump));
+//! ```
 
 use crate::aircraft::{Aircraft, Param};
 use crate::certified::num::{Dual, Num, GRADIENT};

@@ -6,6 +6,29 @@
 //! and bound of [`bound`] (no aircraft of the box has a primary-branch jump below it), `hi` is
 //! attained by a reported aircraft of the box, computed by the exact `analyze`. What exactly is
 //! proven is in `docs/clearance.md`.
+//!
+//! ```
+//! use model::aircraft::{Aircraft, Param, Uncertain};
+//! use model::clearance::{sample, split_box, Rng};
+//! use num_rational::BigRational;
+//!
+//! // Aircraft A with l_p uncertain in [-22, -21.5] 1/s, and n_r given as a zero-width interval.
+//! let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+//! let mut a = Aircraft::a();
+//! let n_r = a.exact(Param::Nr).clone();
+//! a.uncertainty = vec![
+//!     Uncertain { param: Param::Lp, lo: q(-22, 1), hi: q(-43, 2) },
+//!     Uncertain { param: Param::Nr, lo: n_r.clone(), hi: n_r },
+//! ];
+//! // The box has one dimension; every sample of it is an aircraft inside it.
+//! let (base, wide) = split_box(&a);
+//! assert_eq!(wide.len(), 1);
+//! let mut rng = Rng::new(7);
+//! for _ in 0..10 {
+//!     let l_p = sample(&base, &wide, &mut rng).value(Param::Lp);
+//!     assert!((-22.0..=-21.5).contains(&l_p), "{l_p}");
+//! }
+//! ```
 
 pub mod bound;
 pub mod monte_carlo;

@@ -1,4 +1,17 @@
 //! Seeded Monte Carlo over the uncertainty box by the exact path, for comparison with the proof.
+//!
+//! ```
+//! use model::aircraft::{Aircraft, Param, Uncertain};
+//! use model::clearance::monte_carlo::run;
+//!
+//! // Aircraft A with n_beta in a box of zero width: every sample is A itself.
+//! let mut a = Aircraft::a();
+//! let n_beta = a.exact(Param::NBeta).clone();
+//! a.uncertainty = vec![Uncertain { param: Param::NBeta, lo: n_beta.clone(), hi: n_beta }];
+//! let mc = run(&a, 2f64.to_radians(), 2, 1, 1);
+//! assert_eq!(mc.samples, 2);
+//! assert!(mc.values.iter().all(|s| s.p0 == mc.min_p0 && s.p0.is_some()));
+//! ```
 
 use super::{critical, sample, split_box, Rng};
 use crate::aircraft::Aircraft;

@@ -1,5 +1,12 @@
 //! What `model clear` prints and writes: the text summary, the JSON object, summary.md and the
 //! CSV of the Monte Carlo samples.
+//!
+//! ```
+//! use model::clearance::output::samples_csv;
+//!
+//! // The CSV's columns, with their units: one row per Monte Carlo sample of each run.
+//! assert_eq!(samples_csv(&[]), "delta_e_deg,sample,p0_rad_s,abs_delta_a_deg\n");
+//! ```
 
 use super::monte_carlo::MonteCarlo;
 use super::{Bounds, CaseAircraft, Clearance};

@@ -28,6 +28,20 @@
 //!   closed-form zero-sideslip trim (Eqs 32-35), parametrised by its roll rate; the
 //!   zero-sideslip branch loses stability at a transcritical (branch) point, the departure of
 //!   Fig. 9, where the crossing branch is traced by branch switching.
+//!
+//! ```
+//! use model::aircraft::Aircraft;
+//! use model::continuation::{continue_equilibria, Settings, SpecialKind};
+//!
+//! // Aircraft A for delta_a in [-0.1, 0.1] rad (the paper's range is +-0.8), roll rates up to
+//! // 5 rad/s: the primary branch folds at its first jump on either side (Fig. 1).
+//! let settings = Settings { min: -0.1, max: 0.1, max_state: 5.0, ..Settings::default() };
+//! let d = continue_equilibria(&Aircraft::a(), &settings, &mut |_| {}).unwrap();
+//! let folds: Vec<_> = d.special(SpecialKind::Fold).collect();
+//! assert_eq!(folds.len(), 2);
+//! // Mirror images: P0 -> -P0 with delta_a -> -delta_a; negative aileron rolls to positive p.
+//! assert!((folds[0].p + folds[1].p).abs() < 1e-8 && folds.iter().all(|f| f.p * f.param < 0.0));
+//! ```
 
 mod engine;
 mod seeds;
@@ -161,8 +175,9 @@ impl Default for Settings {
     }
 }
 
-/// One point of a branch.
-#[derive(Clone, Debug, PartialEq)]
+/// One point of a branch: an equilibrium, the parameter that holds it and its stability (also
+/// the point of a figure's branch, `plot::BranchPoint`).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Point {
     /// The parameter value, rad.
     pub param: f64,
@@ -180,8 +195,9 @@ pub struct Point {
     pub stable: bool,
 }
 
-/// A connected piece of the equilibrium curve, its points in order along it.
-#[derive(Clone, Debug, PartialEq)]
+/// A connected piece of the equilibrium curve, its points in order along it (also a figure's
+/// branch, `plot::Branch`).
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Branch {
     /// The points, in order of arclength.
     pub points: Vec<Point>,

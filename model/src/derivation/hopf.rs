@@ -22,6 +22,31 @@
 //!    eliminating `w^2` leaves a linear equation, `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)`
 //!    (derived below from the characteristic polynomial, not typed). A Hopf point has
 //!    `omega^2 > 0`; a neutral saddle `omega^2 < 0` (the pair is `+-sqrt(-w)`).
+//!
+//! ```
+//! use model::algebra::{Matrix, Poly, Q};
+//! use model::derivation::hopf::{at_coefficients, characteristic_coefficients, orlando};
+//!
+//! // Eigenvalues -1, +-2i, -3, -4: a pair on the imaginary axis with omega = 2.
+//! let entry = |r: usize, c: usize| match (r, c) {
+//!     (0, 0) => Poly::int(-1),
+//!     (1, 2) => Poly::int(2),
+//!     (2, 1) => Poly::int(-2),
+//!     (3, 3) => Poly::int(-3),
+//!     (4, 4) => Poly::int(-4),
+//!     _ => Poly::zero(),
+//! };
+//! let j = Matrix::from_rows((0..5).map(|r| (0..5).map(|c| entry(r, c)).collect()).collect());
+//! // det(s I - J) = (s + 1)(s^2 + 4)(s + 3)(s + 4) = s^5 + 8 s^4 + 23 s^3 + 44 s^2 + 76 s + 48.
+//! let c = characteristic_coefficients(&j);
+//! let value = |p: &Poly| p.as_constant().unwrap();
+//! assert_eq!(c.each_ref().map(value), [8, 23, 44, 76, 48].map(Q::from));
+//! // Delta4 vanishes, and omega^2 = (c1 c4 - c5) / (c1 c2 - c3) = 560 / 140 = 4.
+//! let o = orlando();
+//! assert!(at_coefficients(&o.delta4, &c).is_zero());
+//! let (num, den) = (at_coefficients(&o.omega_sq.num, &c), at_coefficients(&o.omega_sq.den, &c));
+//! assert_eq!(value(&num).div(&value(&den)), Q::from(4));
+//! ```
 
 use super::{homogenize, Ratio};
 use crate::algebra::{Matrix, Poly, Sym, Q};

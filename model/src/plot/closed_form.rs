@@ -6,7 +6,8 @@
 //!   holds it comes from the roll equation. Branches break where det A = 0 (Eq. 5: the trims
 //!   blow up). Stability from the eigenvalues of the compiled Jacobian (nalgebra); folds are the
 //!   exact roots of det K from [`crate::analysis`], Hopf points are located by bisection on the
-//!   count of unstable complex eigenvalues.
+//!   count of unstable complex eigenvalues. [`hopf_points`] gives the closed form's Hopf points
+//!   (`crate::analysis`, beyond the paper) for any diagram of Figs 1-4.
 //! * Zero sideslip (Fig. 9): the zero-sideslip branch is the closed form of Eq. 35; with the
 //!   rudder on the schedule ([`RudderSchedule`]) the other equilibria solve
 //!   `delta_a(P0, delta_r(delta_a)) = delta_a`, a curve in the (delta_a, P0) plane traced by a
@@ -15,18 +16,31 @@
 //! * det K (Figs 7, 8, 11): the exact rational function `det J5 / d` of P0, i.e. `jump /
 //!   d_det_a` (both carry det(A)^2, see [`det_k_ratio`]) and its zero-sideslip counterpart, with
 //!   common factors cancelled, evaluated in f64.
+//!
+//! ```
+//! use model::plot::closed_form::det_k_ratio;
+//! use model::roots::UPoly;
+//!
+//! // A common factor (P0 - 1) of numerator and denominator cancels exactly: P0 = 1 is neither
+//! // a root nor a pole of det K = (P0 - 1)(P0 - 2) / ((P0 - 1)(P0 + 3)).
+//! let jump = UPoly::from_i64s(&[2, -3, 1]);
+//! let d_den = UPoly::from_i64s(&[-3, 2, 1]);
+//! let (num, den) = det_k_ratio(&jump, &d_den);
+//! assert_eq!((num.degree(), den.degree()), (Some(1), Some(1)));
+//! assert_eq!(num.eval_f64(1.0) / den.eval_f64(1.0), -0.25);
+//! ```
 
 use super::data::{
     BifurcationData, Branch, BranchPoint, DetKData, SpecialKind, SpecialPoint, ZeroSideslipData,
 };
 use super::PlotError;
 use crate::aircraft::Aircraft;
-use crate::analysis::analyze;
+use crate::analysis::{analyze, Analysis};
 use crate::derivation::Derivation;
 use crate::equations::symbols;
 use crate::numeric::PssModel;
 use crate::roots::{positive_roots, UPoly};
-use crate::simulation::{Equilibrium, RudderSchedule, Trims};
+use crate::simulation::{bisect, Equilibrium, RudderSchedule, Trims};
 use crate::specialise::{cancel, in_aileron, specialisation, univariate, InAileron};
 use nalgebra::Matrix5;
 
@@ -177,6 +191,33 @@ pub fn unconstrained_diagram(
         divergence_p,
         delta_a_range_deg: None,
     })
+}
+
+/// The closed-form Hopf points of an analysis (beyond the paper: [`crate::analysis::HopfPoint`],
+/// where `det(A)^10 Delta4` vanishes with `omega^2 > 0`) as special points of the diagram of
+/// Figs 1-4, each with its mirror image: with delta_r = 0 the PSS equations are invariant under
+/// (beta, p, r, delta_a) -> -(beta, p, r, delta_a), so a Hopf point at P0 has one at -P0.
+pub fn hopf_points(analysis: &Analysis) -> Vec<SpecialPoint> {
+    analysis
+        .hopf
+        .iter()
+        .flat_map(|h| {
+            let j = &h.point;
+            [1.0, -1.0].map(|sign| SpecialPoint {
+                kind: SpecialKind::HopfClosedForm,
+                point: BranchPoint {
+                    param: sign * j.delta_a_rad,
+                    alpha: j.alpha,
+                    beta: sign * j.beta,
+                    p: sign * j.p0,
+                    q: j.q,
+                    r: sign * j.r,
+                    stable: false,
+                },
+                label: None,
+            })
+        })
+        .collect()
 }
 
 /// A number with at most 3 decimals, trailing zeros removed.
@@ -397,7 +438,7 @@ pub fn zero_sideslip_diagram(
                 let pole = trims.det_a(pa) * trims.det_a(pb) <= 0.0;
                 let contains_zs = (pa - p_zs) * (pb - p_zs) <= 0.0;
                 if va * vb < 0.0 && !pole && !contains_zs {
-                    let seed = (da, bisect(&|p| g(p).unwrap_or(f64::NAN), pa, pb));
+                    let seed = (da, bisect(&|p| g(p).unwrap_or(f64::NAN), pa, pb, va));
                     if !curves.iter().any(|c| tracer.near(c, seed)) {
                         let c = tracer.trace(seed);
                         if c.len() > 1 {
@@ -461,24 +502,6 @@ pub fn zero_sideslip_diagram(
             delta_a_range_deg: Some((-half, half)),
         },
     })
-}
-
-fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
-    let mut fa = f(a);
-    for _ in 0..100 {
-        let m = 0.5 * (a + b);
-        if m == a || m == b {
-            break;
-        }
-        let fm = f(m);
-        if (fm < 0.0) == (fa < 0.0) {
-            a = m;
-            fa = fm;
-        } else {
-            b = m;
-        }
-    }
-    0.5 * (a + b)
 }
 
 /// Traces the zero set of a scalar function of two variables (pseudo-arclength: tangent

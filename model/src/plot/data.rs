@@ -1,28 +1,43 @@
 //! The plain data Figs 1-11 are drawn from (SI units: rad, rad/s). Bifurcation diagrams take
 //! branches of equilibria and special points, whoever computed them: the closed-form trims of
 //! [`super::closed_form`] or a continuation.
+//!
+//! ```
+//! use model::plot::figures::bifurcation_figure;
+//! use model::plot::{BifurcationData, Branch, BranchPoint, SpecialKind, SpecialPoint};
+//!
+//! // Two equilibria (aileron in rad) and a fold between them; the figure plots degrees.
+//! let at = |param: f64, p: f64| BranchPoint {
+//!     param,
+//!     alpha: 0.0,
+//!     beta: 0.0,
+//!     p,
+//!     q: 0.0,
+//!     r: 0.0,
+//!     stable: true,
+//! };
+//! let data = BifurcationData {
+//!     title: "two equilibria".into(),
+//!     branches: vec![Branch { points: vec![at(0.0, 0.0), at(-0.1, 2.0)] }],
+//!     special: vec![SpecialPoint { kind: SpecialKind::Fold, point: at(-0.05, 1.0), label: None }],
+//!     divergence_p: vec![],
+//!     delta_a_range_deg: None,
+//! };
+//! let fig = bifurcation_figure(&data).unwrap();
+//! let fold = &fig.panels[0].markers[0];
+//! assert!((fold.x - (-0.05f64).to_degrees()).abs() < 1e-12 && fold.y == 1.0);
+//! assert_eq!(fold.label.as_deref(), Some(SpecialKind::Fold.describe()));
+//! ```
 
 use crate::simulation::TimeHistory;
 use serde::Serialize;
 
-/// An equilibrium on a branch: the continuation parameter (aileron deflection) and the state.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct BranchPoint {
-    /// Aileron deflection delta_a, rad.
-    pub param: f64,
-    /// Angle of attack, rad.
-    pub alpha: f64,
-    /// Sideslip, rad.
-    pub beta: f64,
-    /// Roll rate, rad/s.
-    pub p: f64,
-    /// Pitch rate, rad/s.
-    pub q: f64,
-    /// Yaw rate, rad/s.
-    pub r: f64,
-    /// All eigenvalues of the Jacobian in the open left half-plane.
-    pub stable: bool,
-}
+/// An equilibrium on a branch (the continuation's point): the parameter (aileron deflection,
+/// rad), the state and its stability.
+pub use crate::continuation::Point as BranchPoint;
+
+/// A branch of equilibria, ordered along the branch (the continuation's branch).
+pub use crate::continuation::Branch;
 
 impl BranchPoint {
     /// The value of a state variable in SI units.
@@ -52,20 +67,17 @@ pub enum State {
     R,
 }
 
-/// A branch of equilibria, ordered along the branch.
-#[derive(Clone, Debug, Default, PartialEq, Serialize)]
-pub struct Branch {
-    /// The equilibria.
-    pub points: Vec<BranchPoint>,
-}
-
 /// Kind of a special point.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum SpecialKind {
     /// Saddle-node (fold, turning point): det K = 0, the jump points (Figs 1, 2).
     Fold,
-    /// Hopf bifurcation (filled squares of Fig. 2).
+    /// Hopf bifurcation (filled squares of Fig. 2), as a continuation or an eigenvalue scan
+    /// locates it.
     Hopf,
+    /// Hopf point of the closed form (beyond the paper, [`crate::analysis::HopfPoint`]: the
+    /// Hopf polynomial `det(A)^10 Delta4` vanishes with `omega^2 > 0`).
+    HopfClosedForm,
     /// Transcritical bifurcation (empty square of Fig. 9): departure from zero sideslip.
     Transcritical,
 }
@@ -76,6 +88,7 @@ impl SpecialKind {
         match self {
             SpecialKind::Fold => "saddle-node (det K = 0)",
             SpecialKind::Hopf => "Hopf bifurcation",
+            SpecialKind::HopfClosedForm => "closed-form Hopf point (\u{394}\u{2084} = 0)",
             SpecialKind::Transcritical => "transcritical (det K = 0)",
         }
     }

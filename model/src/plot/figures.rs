@@ -2,6 +2,16 @@
 //! time histories, Figs 7, 8, 11 det K, Fig. 9 zero-sideslip diagram): unit conversion (angles
 //! to deg), axis ranges, clipping, line styles (stable solid, unstable dashed, as in the paper),
 //! markers and legends.
+//!
+//! ```
+//! use model::plot::figures::clip;
+//! use model::plot::Axis;
+//!
+//! // A polyline that leaves y in [-1, 1] is split where it leaves and where it comes back.
+//! let (x, y) = (Axis::linear("x", 0.0, 4.0), Axis::linear("y", -1.0, 1.0));
+//! let pieces = clip(&[(0.0, 0.0), (1.0, 2.0), (2.0, 2.0), (3.0, 0.0)], &x, &y);
+//! assert_eq!(pieces, [vec![(0.0, 0.0), (0.5, 1.0)], vec![(2.5, 1.0), (3.0, 0.0)]]);
+//! ```
 
 use super::data::{
     BifurcationData, Branch, DetKData, SpecialKind, SpecialPoint, State, TimeHistoryData,
@@ -105,26 +115,15 @@ fn clipped_lines(points: &[(f64, f64)], x: &Axis, y: &Axis, proto: &Line) -> Vec
         .collect()
 }
 
-/// Gives a label only to the first line carrying each label text.
-fn dedup_labels(lines: &mut [Line]) {
+/// Leaves each legend text on the first item (line or marker) carrying it, so that the legend
+/// lists it once.
+fn dedup_labels<T>(items: &mut [T], label: fn(&mut T) -> &mut Option<String>) {
     let mut seen: Vec<String> = Vec::new();
-    for l in lines {
-        if let Some(t) = &l.label {
+    for item in items {
+        let l = label(item);
+        if let Some(t) = l.as_ref() {
             if seen.contains(t) {
-                l.label = None;
-            } else {
-                seen.push(t.clone());
-            }
-        }
-    }
-}
-
-fn dedup_marker_labels(markers: &mut [Marker]) {
-    let mut seen: Vec<String> = Vec::new();
-    for m in markers {
-        if let Some(t) = &m.label {
-            if seen.contains(t) {
-                m.label = None;
+                *l = None;
             } else {
                 seen.push(t.clone());
             }
@@ -156,12 +155,15 @@ fn quantiles(values: &mut Vec<f64>, lo_q: f64, hi_q: f64) -> Option<(f64, f64)> 
     Some((at(lo_q), at(hi_q)))
 }
 
-/// Style of one kind of special point: shape, filled, colour.
-fn special_style(kind: SpecialKind) -> (Shape, bool, Rgb) {
+/// Style of one kind of special point: shape, filled, colour, size. The closed-form Hopf point
+/// is a small black diamond, drawn after (inside) the square of a continuation's Hopf point at
+/// the same place.
+fn special_style(kind: SpecialKind) -> (Shape, bool, Rgb, u32) {
     match kind {
-        SpecialKind::Fold => (Shape::Circle, true, Rgb::RED),
-        SpecialKind::Hopf => (Shape::Square, true, Rgb::ORANGE),
-        SpecialKind::Transcritical => (Shape::Square, false, Rgb::RED),
+        SpecialKind::Fold => (Shape::Circle, true, Rgb::RED, 6),
+        SpecialKind::Hopf => (Shape::Square, true, Rgb::ORANGE, 6),
+        SpecialKind::HopfClosedForm => (Shape::Diamond, true, Rgb::BLACK, 4),
+        SpecialKind::Transcritical => (Shape::Square, false, Rgb::RED, 6),
     }
 }
 
@@ -193,7 +195,7 @@ fn delta_a_range(d: &BifurcationData) -> (f64, f64) {
     let special = d
         .special
         .iter()
-        .filter(|s| s.kind != SpecialKind::Hopf)
+        .filter(|s| !matches!(s.kind, SpecialKind::Hopf | SpecialKind::HopfClosedForm))
         .map(|s| s.point.param.to_degrees().abs())
         .fold(0.0, f64::max);
     let data = d
@@ -294,7 +296,7 @@ fn special_markers(
             if !(x.contains(px) && y.contains(py)) {
                 return None;
             }
-            let (shape, filled, color) = special_style(s.kind);
+            let (shape, filled, color, size) = special_style(s.kind);
             Some(Marker {
                 label: Some(s.kind.describe().into()),
                 text: if text { s.label.clone() } else { None },
@@ -309,7 +311,7 @@ fn special_markers(
                 shape,
                 color,
                 filled,
-                size: 6,
+                size,
             })
         })
         .collect()
@@ -362,10 +364,10 @@ fn diagram_panel(d: &BifurcationData, v: State, area: [f64; 4], title: &str, tex
     // Legend order: stable, unstable, reference lines (a stable sort keeps the drawing order
     // within each kind).
     lines.sort_by_key(|l| l.dash as u8);
-    dedup_labels(&mut lines);
+    dedup_labels(&mut lines, |l| &mut l.label);
     let mut markers = special_markers(&d.special, v, &x, &y, text);
     markers.sort_by_key(|m| m.shape as u8);
-    dedup_marker_labels(&mut markers);
+    dedup_labels(&mut markers, |m| &mut m.label);
     Panel {
         title: title.into(),
         area,
@@ -488,7 +490,7 @@ pub fn det_k_figure(d: &DetKData) -> Result<Figure, PlotError> {
     for p in d.divergence.iter().filter(|p| x.contains(**p)) {
         lines.push(vertical(*p, &y, "det A = 0 (Eq. 5)", Dash::Dotted));
     }
-    dedup_labels(&mut lines);
+    dedup_labels(&mut lines, |l| &mut l.label);
     let mut markers: Vec<Marker> = d
         .roots
         .iter()
@@ -511,7 +513,7 @@ pub fn det_k_figure(d: &DetKData) -> Result<Figure, PlotError> {
             size: 6,
         })
         .collect();
-    dedup_marker_labels(&mut markers);
+    dedup_labels(&mut markers, |m| &mut m.label);
     let panel = Panel {
         title: String::new(),
         area: [0.0, 0.0, PANEL_W, 1.0],
@@ -656,7 +658,7 @@ pub fn time_history_figure(d: &TimeHistoryData) -> Result<Figure, PlotError> {
             };
             lines.extend(clipped_lines(pts, &x, &y, &proto));
         }
-        dedup_labels(&mut lines);
+        dedup_labels(&mut lines, |l| &mut l.label);
         let h0 = 1.0 / n as f64;
         panels.push(Panel {
             title: String::new(),

@@ -2,6 +2,41 @@
 //! markers in plot units (deg, rad/s, ...). The figure builders of [`super::figures`] produce it
 //! from the paper's data; [`super::render()`] draws it with plotters. Tests compare the series
 //! here with what the library computes.
+//!
+//! ```
+//! use model::plot::{Axis, Dash, Figure, LegendPlace, Line, Panel, Rgb};
+//!
+//! let line = Line {
+//!     label: Some("det K".into()),
+//!     points: vec![(0.0, 1.0), (1.0, 0.0)],
+//!     color: Rgb::BLUE,
+//!     dash: Dash::Solid,
+//!     width: 2,
+//! };
+//! let panel = Panel {
+//!     title: String::new(),
+//!     area: [0.0, 0.0, 1.0, 1.0],
+//!     x: Axis::linear("P0 (rad/s)", 0.0, 1.0),
+//!     y: Axis::linear("det K", -1.0, 1.0),
+//!     lines: vec![line],
+//!     markers: vec![],
+//!     legend: LegendPlace::None,
+//! };
+//! let fig = Figure {
+//!     title: "t".into(),
+//!     panels: vec![panel],
+//!     legend_area: None,
+//!     note: String::new(),
+//! };
+//! // One CSV row per point drawn, with its panel, series, legend entry and axis labels.
+//! let csv = fig.to_csv();
+//! let rows: Vec<&str> = csv.lines().collect();
+//! assert_eq!(rows[0], "panel,panel_title,series,kind,label,x_axis,y_axis,x,y");
+//! assert_eq!(
+//!     rows[1..],
+//!     ["1,,1,line,det K,P0 (rad/s),det K,0,1", "1,,1,line,det K,P0 (rad/s),det K,1,0"]
+//! );
+//! ```
 
 use serde::Serialize;
 
@@ -171,6 +206,13 @@ pub struct Marker {
     pub size: u32,
 }
 
+impl Marker {
+    /// What tells markers apart in a legend: shape, fill, colour and size.
+    fn style(&self) -> (Shape, bool, Rgb, u32) {
+        (self.shape, self.filled, self.color, self.size)
+    }
+}
+
 /// Placement of a marker's text.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum TextAt {
@@ -239,8 +281,10 @@ impl Figure {
     /// The plotted data as CSV, one row per point in drawing order, for replotting in other
     /// tools: `panel` (number, from 1) and `panel_title`, `series` (line or marker number
     /// within the panel, from 1), `kind` (`line` or `marker`), `label` (legend entry or marker
-    /// text, may be empty), `x_axis` and `y_axis` (the axis labels, with their units), `x`,
-    /// `y` (plot units, after clipping: exactly what was drawn).
+    /// text, may be empty; a marker without either carries the legend entry of the markers of
+    /// its style in the panel, so that every marked point says what it is), `x_axis` and
+    /// `y_axis` (the axis labels, with their units), `x`, `y` (plot units, after clipping:
+    /// exactly what was drawn).
     pub fn to_csv(&self) -> String {
         use std::fmt::Write;
         let mut s = String::from("panel,panel_title,series,kind,label,x_axis,y_axis,x,y\n");
@@ -262,8 +306,16 @@ impl Figure {
                     let _ = writeln!(s, "{h},{x},{y}");
                 }
             }
+            let legend = |m: &Marker| {
+                p.markers
+                    .iter()
+                    .find(|o| o.label.is_some() && o.style() == m.style())
+                    .and_then(|o| o.label.as_deref())
+            };
             for (k, m) in p.markers.iter().enumerate() {
-                let label = m.text.as_deref().or(m.label.as_deref()).unwrap_or("");
+                let label = (m.text.as_deref().or(m.label.as_deref()))
+                    .or_else(|| legend(m))
+                    .unwrap_or("");
                 let _ = writeln!(s, "{},{},{}", head(k, "marker", label), m.x, m.y);
             }
         }

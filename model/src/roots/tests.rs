@@ -496,10 +496,25 @@ fn timing_poly(rng: &mut Lcg) -> UPoly {
     UPoly::from_roots(&roots).scale(&q(rng.below(1_000_000) as i64 + 1, 999_983))
 }
 
+/// Prints the mean time of `positive_roots` over `polys` (20 repetitions) and the mean number of
+/// roots found.
+fn time_positive_roots(what: &str, polys: &[UPoly]) {
+    const REPS: usize = 20;
+    let start = std::time::Instant::now();
+    let mut n = 0;
+    for _ in 0..REPS {
+        for p in polys {
+            n += positive_roots(p).len();
+        }
+    }
+    n /= REPS;
+    let per = start.elapsed() / (REPS * polys.len()) as u32;
+    println!("{what}: {per:?} per positive_roots ({n} roots)");
+}
+
 #[test]
 #[ignore = "timing; run with --release -- --ignored --nocapture"]
 fn timing() {
-    const REPS: usize = 20;
     let mut rng = Lcg(42);
     let polys: Vec<_> = (0..200).map(|_| timing_poly(&mut rng)).collect();
     let digits: usize = polys[0]
@@ -508,17 +523,9 @@ fn timing() {
         .map(|c| c.numer().to_string().len() + c.denom().to_string().len())
         .max()
         .unwrap();
-    let start = std::time::Instant::now();
-    let mut n = 0;
-    for _ in 0..REPS {
-        for p in &polys {
-            n += positive_roots(p).len();
-        }
-    }
-    n /= REPS;
-    let per = start.elapsed() / (REPS * polys.len()) as u32;
-    println!(
-        "degree 12, up to {digits} digits per coefficient: {per:?} per positive_roots ({n} roots)"
+    time_positive_roots(
+        &format!("degree 12, up to {digits} digits per coefficient"),
+        &polys,
     );
     // random dense polynomials, coefficients p/q with 28-digit p and q
     let polys: Vec<_> = (0..200)
@@ -539,17 +546,9 @@ fn timing() {
             )
         })
         .collect();
-    let start = std::time::Instant::now();
-    let mut n = 0;
-    for _ in 0..REPS {
-        for p in &polys {
-            n += positive_roots(p).len();
-        }
-    }
-    n /= REPS;
-    let per = start.elapsed() / (REPS * polys.len()) as u32;
-    println!(
-        "random dense degree 12, 28-digit numerators and denominators: {per:?} per positive_roots ({n} roots)"
+    time_positive_roots(
+        "random dense degree 12, 28-digit numerators and denominators",
+        &polys,
     );
     // degree 16, coefficients with 30 decimals (denominators 10^30), as after substitution
     let polys: Vec<_> = (0..200)
@@ -570,16 +569,5 @@ fn timing() {
             )
         })
         .collect();
-    let start = std::time::Instant::now();
-    let mut n = 0;
-    for _ in 0..REPS {
-        for p in &polys {
-            n += positive_roots(p).len();
-        }
-    }
-    n /= REPS;
-    let per = start.elapsed() / (REPS * polys.len()) as u32;
-    println!(
-        "random dense degree 16, 30-decimal coefficients: {per:?} per positive_roots ({n} roots)"
-    );
+    time_positive_roots("random dense degree 16, 30-decimal coefficients", &polys);
 }

@@ -121,16 +121,7 @@ impl Trims {
     /// The unconstrained trim state at roll rate `p0` for given aileron and rudder (rad): the
     /// four non-roll equations hold, the roll equation need not. `None` where det A vanishes.
     fn state(&self, p0: f64, delta_a: f64, delta_r: f64) -> Option<[f64; 5]> {
-        let den = self.det_a.eval(p0);
-        let scale = self
-            .det_a
-            .0
-            .iter()
-            .fold(0.0f64, |m, c| m.max(c.abs()))
-            .max(1.0);
-        if den.abs() <= SINGULAR * scale * (1.0 + p0.abs()).powi(4) {
-            return None;
-        }
+        let den = nonsingular(&self.det_a, p0)?;
         let v: [f64; 4] = std::array::from_fn(|i| {
             (self.num0[i].eval(p0)
                 + delta_a * self.num_a[i].eval(p0)
@@ -203,16 +194,7 @@ impl Trims {
         if self.n_delta_r() == 0.0 {
             return None;
         }
-        let den = self.zs_det.eval(p0);
-        let scale = self
-            .zs_det
-            .0
-            .iter()
-            .fold(0.0f64, |m, c| m.max(c.abs()))
-            .max(1.0);
-        if den.abs() <= SINGULAR * scale * (1.0 + p0.abs()).powi(4) {
-            return None;
-        }
+        let den = nonsingular(&self.zs_det, p0)?;
         let v: [f64; 3] = std::array::from_fn(|i| self.zs_num[i].eval(p0) / den);
         let x = [v[0], 0.0, p0, v[1], v[2]];
         // The roll and yaw equations are linear in (delta_a, delta_r) with the matrix `lateral`:
@@ -271,6 +253,18 @@ impl Trims {
     }
 }
 
+/// The value of a trim's denominator at `p0`, or `None` where it vanishes to within
+/// [`SINGULAR`] of the size of its coefficients (the trim is singular there).
+fn nonsingular(den: &F64Poly, p0: f64) -> Option<f64> {
+    let value = den.eval(p0);
+    let scale = den.0.iter().fold(0.0f64, |m, c| m.max(c.abs())).max(1.0);
+    if value.abs() <= SINGULAR * scale * (1.0 + p0.abs()).powi(4) {
+        None
+    } else {
+        Some(value)
+    }
+}
+
 fn finite(e: Equilibrium) -> Option<Equilibrium> {
     let c = e.controls;
     (e.x.iter().all(|v| v.is_finite()) && c.delta_a.is_finite() && c.delta_r.is_finite())
@@ -278,7 +272,7 @@ fn finite(e: Equilibrium) -> Option<Equilibrium> {
 }
 
 /// Bisection of `f` on `[a, b]` with `f(a) = fa` and a sign change, to machine precision.
-fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64) -> f64 {
+pub(crate) fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64) -> f64 {
     for _ in 0..200 {
         let m = 0.5 * (a + b);
         if m == a || m == b {
@@ -454,11 +448,14 @@ impl RudderSchedule {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::reference::{
+        A_FOLD_DELTA_A_DEG, A_JUMP_P0, A_ZERO_SIDESLIP_DELTA_A_DEG, A_ZERO_SIDESLIP_P0,
+    };
 
     #[test]
     fn trims_are_equilibria_of_the_compiled_model() {
         let t = Trims::new(&Aircraft::a(), 2f64.to_radians()).unwrap();
-        for p0 in [-2.0, 0.3, 1.706288, 3.5] {
+        for p0 in [-2.0, 0.3, A_JUMP_P0[0], 3.5] {
             for dr in [0.0, 0.02] {
                 let e = t.unconstrained(p0, dr).unwrap();
                 let f = t.model().rhs(&e.x, &e.controls);
@@ -469,9 +466,9 @@ mod tests {
             let f = t.model().rhs(&z.x, &z.controls);
             assert!(f.iter().all(|v| v.abs() < 1e-11), "zs {p0}: {f:?}");
         }
-        // The first fold of Fig. 1 (analysis: delta_a = -3.8467 deg).
-        let e = t.unconstrained(1.706288, 0.0).unwrap();
-        assert!((e.controls.delta_a.to_degrees() - -3.8467).abs() < 1e-3);
+        // The first fold of Fig. 1.
+        let e = t.unconstrained(A_JUMP_P0[0], 0.0).unwrap();
+        assert!((e.controls.delta_a.to_degrees() - A_FOLD_DELTA_A_DEG).abs() < 1e-3);
     }
 
     #[test]
@@ -493,15 +490,15 @@ mod tests {
         let s = RudderSchedule::new(t).unwrap();
         let (lo, hi) = s.range();
         assert!(lo < -0.5 && hi > 0.5, "{lo} {hi}");
-        for deg in [-12.0, -8.1639, -3.0, 0.0, 5.0] {
+        for deg in [-12.0, A_ZERO_SIDESLIP_DELTA_A_DEG, -3.0, 0.0, 5.0] {
             let e = s.trim(f64::to_radians(deg)).unwrap();
             assert!((e.controls.delta_a - deg.to_radians()).abs() < 1e-14);
             let f = s.trims().model().rhs(&e.x, &e.controls);
             assert!(f.iter().all(|v| v.abs() < 1e-11), "{deg}: {f:?}");
         }
-        // Departure point of Fig. 11 / section V: P0 = 2.130625 at delta_a = -8.1639 deg.
-        let e = s.trim(f64::to_radians(-8.1639)).unwrap();
-        assert!((e.x[2] - 2.130625).abs() < 1e-4, "{e:?}");
+        // The departure point of Fig. 11 / section V.
+        let e = s.trim(A_ZERO_SIDESLIP_DELTA_A_DEG.to_radians()).unwrap();
+        assert!((e.x[2] - A_ZERO_SIDESLIP_P0[0]).abs() < 1e-4, "{e:?}");
         assert!(s.delta_r(2.0).is_err());
     }
 }

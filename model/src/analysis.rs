@@ -277,7 +277,7 @@ pub fn analyze_with(
 
 /// How far the primary branch is followed: the aileron limit, at least
 /// [`DEFAULT_AILERON_RANGE`], rad.
-fn aileron_range(aircraft: &Aircraft) -> f64 {
+pub fn aileron_range(aircraft: &Aircraft) -> f64 {
     aircraft
         .limits
         .aileron_deg
@@ -492,7 +492,7 @@ fn check(a: &Analysis) -> Result<(), AnalysisError> {
 /// nearly proportional) the root of the trim condition at which `f` is smallest (relative to
 /// its size) is the candidate; where the two trims merge, the vertex of the quadratic. NaN
 /// when the common root is not real: a conjugate pair shared by both, with no real trim.
-fn aileron_of_root(g: &InAileron, f: &InAileron, p0: f64) -> f64 {
+pub(crate) fn aileron_of_root(g: &InAileron, f: &InAileron, p0: f64) -> f64 {
     let relative = |h: &InAileron, da: f64| {
         let c = h.at(p0);
         let scale: f64 = c

@@ -79,6 +79,9 @@ fn zero_width_box_gives_lo_equal_hi_equal_analyze() {
     assert_eq!(c["worst_case"]["l_p"].as_f64(), Some(-21.7529));
     assert_eq!(c["worst_case"]["p0"].as_f64(), Some(p0));
     assert_eq!(c["monte_carlo"]["samples"], 3);
-    assert_eq!(c["monte_carlo"]["min_p0"].as_f64(), Some(p0));
+    // The Monte Carlo runs the certified floating-point route: its roll rate lies in a
+    // certified bracket of relative width 1e-9 around the exact root.
+    let mc = c["monte_carlo"]["min_p0"].as_f64().unwrap();
+    assert!((mc - p0).abs() <= 1e-9 * p0, "{mc} vs {p0}");
     assert!(c["cleared"].is_null());
 }

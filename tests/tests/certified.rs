@@ -15,7 +15,7 @@
 //! aircraft; debug builds a smaller sample.
 
 use model::aircraft::{Aircraft, Param};
-use model::analysis::fast::{analyze_routed, Route};
+use model::analysis::fast::{analyze_routed, Route, MAX_WIDTH};
 use model::analysis::{analyze_with, parametric, Analysis, CriterionPolys, JumpPoint};
 use model::certified::{positive_roots_by, value_at, Criterion, EnclosedPolys, Values};
 use num_rational::BigRational;
@@ -291,4 +291,48 @@ fn certified_brackets_hold_the_exact_roots() {
             }
         }
     }
+}
+
+/// The Monte Carlo's lean route ([`model::analysis::fast::critical`]: the jump polynomial and
+/// det A only, the pole polynomial checked over the critical bracket) gives the exact path's
+/// critical jump, or says it cannot certify.
+#[test]
+fn lean_critical_route_gives_the_exact_critical_jump() {
+    let mut rng = Rng(11);
+    let (mut answered, mut total) = (0usize, 0usize);
+    for i in 0..N / 10 {
+        let ac = random_aircraft(&mut rng, i);
+        let de = rng.uniform(-4.0, 4.0).to_radians();
+        let Ok(exact) = analyze_with(&ac, de, false) else {
+            continue;
+        };
+        total += 1;
+        let v = Values::of(&ac, de, 0.0);
+        let bound = model::analysis::aileron_range(&ac);
+        let Ok(lean) = model::analysis::fast::critical(&v, bound, MAX_WIDTH) else {
+            continue;
+        };
+        answered += 1;
+        match (&exact.critical, lean) {
+            (None, None) => {}
+            (Some(e), Some((p0, da))) => {
+                assert!(
+                    close_roots(e.p0, p0, MAX_WIDTH),
+                    "aircraft {i}: P0 {} vs {p0}",
+                    e.p0
+                );
+                assert!(
+                    close(e.delta_a_rad, da),
+                    "aircraft {i}: delta_a {} vs {da}",
+                    e.delta_a_rad
+                );
+            }
+            (e, l) => panic!("aircraft {i}: exact {e:?} vs lean {l:?}"),
+        }
+    }
+    println!("{answered} of {total} answered by the lean route");
+    assert!(
+        answered as f64 >= 0.95 * total as f64,
+        "{answered} of {total}"
+    );
 }

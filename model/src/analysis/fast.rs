@@ -23,10 +23,11 @@ use crate::aircraft::Aircraft;
 use crate::algebra::Sym;
 use crate::certified::dense::{IPoly, IPoly2};
 use crate::certified::{
-    positive_roots_by, value_at, Bracket, Criterion, EnclosedPolys, Uncertified, Values,
+    positive_roots_by, value_at, Bracket, Criterion, EnclosedPolys, JumpPolys, Uncertified, Values,
 };
 use crate::derivation::Ratio;
 use crate::equations::symbols;
+use crate::interval::I;
 
 /// Which route gave the answer.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -160,5 +161,47 @@ fn apart(a: &[Bracket], b: &[Bracket]) -> Result<(), Uncertified> {
         Err(Uncertified::Sign)
     } else {
         Ok(())
+    }
+}
+
+/// The critical jump alone (the first jump on the primary branch, as [`super::analyze`] defines
+/// it) by the certified route without fallback: its roll rate and aileron (rad), `Ok(None)`
+/// when the primary branch diverges or reaches |delta_a| = `bound` first, or why it cannot be
+/// certified. The lean route of the Monte Carlo: only the jump polynomial and det A are
+/// isolated, each root refined towards relative width `width` (the critical one must reach it;
+/// the value reported is the Newton root in its bracket), and the critical root's bracket is
+/// proven free of poles of det K.
+pub fn critical(v: &Values, bound: f64, width: f64) -> Result<Option<(f64, f64)>, Uncertified> {
+    let e = JumpPolys::new(v)?;
+    let divergence =
+        positive_roots_by(&e.det_a, Some(&|x| value_at(v, Criterion::DetA, x)), width)?;
+    let jump = positive_roots_by(&e.jump, Some(&|x| value_at(v, Criterion::Jump, x)), width)?;
+    apart(&jump, &divergence)?;
+    let f64s = |p: &IPoly2| InAileron(p.0.iter().map(|c| c.mid()).collect());
+    let g = f64s(&e.trim_condition);
+    let jump_at = f64s(&e.jump_at);
+    let det_a = f64s(e.trim().0);
+    let points: Vec<(f64, f64, Bracket)> = jump
+        .iter()
+        .map(|b| (b.value, super::aileron_of_root(&g, &jump_at, b.value), *b))
+        .filter(|(_, da, _)| da.is_finite())
+        .collect();
+    let roots: Vec<(f64, f64)> = points.iter().map(|(p, da, _)| (*p, *da)).collect();
+    let divergence: Vec<f64> = divergence.iter().map(|b| b.value).collect();
+    match super::primary::follow(&g, &det_a, &divergence, &roots, bound) {
+        super::Outcome::Jump(i) => {
+            let (p0, da, b) = points[i];
+            if b.relative_width() > width {
+                return Err(Uncertified::Wide);
+            }
+            // A common root of the jump and pole polynomials is no jump (the exact path cancels
+            // it): the pole polynomial must keep its sign over the critical bracket.
+            if e.poles(v)?.eval(I::new(b.lo, b.hi)).contains_zero() {
+                return Err(Uncertified::Sign);
+            }
+            Ok(Some((p0, da)))
+        }
+        super::Outcome::Lost(_) => Err(Uncertified::Degenerate),
+        _ => Ok(None),
     }
 }

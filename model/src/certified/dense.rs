@@ -72,6 +72,28 @@ impl<T: Num> Dense<T> {
         )
     }
 
+    /// `self += a * b`, in place (the product's terms added one by one: no temporary).
+    pub fn add_product(&mut self, a: &Dense<T>, b: &Dense<T>) {
+        if a.is_zero() || b.is_zero() {
+            return;
+        }
+        let n = a.0.len() + b.0.len() - 1;
+        if self.0.len() < n {
+            self.0.resize(n, T::constant(I::point(0.0)));
+        }
+        for (i, x) in a.0.iter().enumerate() {
+            if x.is_exact_zero() {
+                continue;
+            }
+            for (j, y) in b.0.iter().enumerate() {
+                self.0[i + j] = self.0[i + j] + *x * *y;
+            }
+        }
+        while self.0.last().is_some_and(|c| c.is_exact_zero()) {
+            self.0.pop();
+        }
+    }
+
     /// `-self`.
     pub fn neg(&self) -> Dense<T> {
         Dense(self.0.iter().map(|c| -*c).collect())
@@ -265,8 +287,16 @@ impl<T: Num> Dense2<T> {
 
     /// `self + o`.
     pub fn add(&self, o: &Dense2<T>) -> Dense2<T> {
-        let n = self.0.len().max(o.0.len());
-        Dense2::new((0..n).map(|i| self.coeff(i).add(&o.coeff(i))).collect())
+        let (long, short) = if self.0.len() >= o.0.len() {
+            (self, o)
+        } else {
+            (o, self)
+        };
+        let mut r = long.0.clone();
+        for (c, s) in r.iter_mut().zip(&short.0) {
+            *c = c.add(s);
+        }
+        Dense2::new(r)
     }
 
     /// `self * o`.
@@ -277,7 +307,7 @@ impl<T: Num> Dense2<T> {
         let mut r = vec![Dense::zero(); self.0.len() + o.0.len() - 1];
         for (i, a) in self.0.iter().enumerate() {
             for (j, b) in o.0.iter().enumerate() {
-                r[i + j] = r[i + j].add(&a.mul(b));
+                r[i + j].add_product(a, b);
             }
         }
         Dense2::new(r)

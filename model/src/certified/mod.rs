@@ -450,20 +450,24 @@ pub struct EnclosedPolys {
 impl EnclosedPolys {
     /// Encloses the criterion polynomials of the data `v`.
     pub fn new(v: &Values) -> Result<EnclosedPolys, Uncertified> {
-        let l = &v.lifted;
-        let m = &mut InP0::new();
-        let u = Unconstrained::new(m, l)?;
-        let jump_at = u.on_trim(m, l, true);
+        let JumpPolys {
+            det_a,
+            trim_condition,
+            jump_at,
+            jump,
+            unconstrained: u,
+        } = JumpPolys::new(v)?;
+        let (l, m) = (&v.lifted, &mut InP0::new());
         let d_at = u.on_trim(m, l, false);
         let z = ZeroSideslip::new(m, l)?;
         let lateral = l.lateral.coeff(0);
         // Every polynomial isolated below is even or odd in P0 (see `IPoly::symmetric`).
         Ok(EnclosedPolys {
-            jump: u.eliminate(&jump_at)?.symmetric(),
+            jump,
             poles: u.eliminate(&d_at)?.symmetric(),
-            det_a: u.det_a.symmetric(),
+            det_a,
             trim: u.trim,
-            trim_condition: u.trim_condition,
+            trim_condition,
             jump_at,
             d_at,
             zs_det: z.zs_det.symmetric(),
@@ -472,6 +476,48 @@ impl EnclosedPolys {
             zs_d_det: z.zs_d_det.symmetric(),
             lateral: lateral.coeffs().first().copied().unwrap_or(I::point(0.0)),
         })
+    }
+}
+
+/// The part of [`EnclosedPolys`] the critical jump needs: det A, the trim condition, det J5 on
+/// the trim and the jump polynomial (the Monte Carlo's lean route).
+pub struct JumpPolys {
+    /// det A (Eq. 4) in P0.
+    pub det_a: IPoly,
+    /// The trim condition `det(A)^2 p_dot` on the trim.
+    pub trim_condition: IPoly2,
+    /// `det J5 det(A)^2` on the trim.
+    pub jump_at: IPoly2,
+    /// The jump polynomial in P0.
+    pub jump: IPoly,
+    unconstrained: Unconstrained<InP0<I>>,
+}
+
+impl JumpPolys {
+    /// Encloses the jump part of the criterion polynomials of the data `v`.
+    pub fn new(v: &Values) -> Result<JumpPolys, Uncertified> {
+        let (l, m) = (&v.lifted, &mut InP0::new());
+        let u = Unconstrained::new(m, l)?;
+        let jump_at = u.on_trim(m, l, true);
+        Ok(JumpPolys {
+            jump: u.eliminate(&jump_at)?.symmetric(),
+            det_a: u.det_a.symmetric(),
+            trim_condition: u.trim_condition.clone(),
+            jump_at,
+            unconstrained: u,
+        })
+    }
+
+    /// det A and the numerators of [alpha0, beta0, Q0, R0] in P0 and delta_a.
+    pub fn trim(&self) -> (&IPoly2, &[IPoly2; 4]) {
+        (&self.unconstrained.det_a_value, &self.unconstrained.trim)
+    }
+
+    /// The pole polynomial in P0 (as in [`EnclosedPolys`]) of the same data `v`.
+    pub fn poles(&self, v: &Values) -> Result<IPoly, Uncertified> {
+        let u = &self.unconstrained;
+        let d_at = u.on_trim(&mut InP0::new(), &v.lifted, false);
+        Ok(u.eliminate(&d_at)?.symmetric())
     }
 }
 

@@ -1,4 +1,5 @@
-//! Seeded Monte Carlo over the uncertainty box by the exact path, for comparison with the proof.
+//! Seeded Monte Carlo over the uncertainty box by the certified route (the exact path where a
+//! certificate fails), for comparison with the proof.
 //!
 //! ```
 //! use model::aircraft::{Aircraft, Param, Uncertain};
@@ -13,8 +14,12 @@
 //! assert!(mc.values.iter().all(|s| s.p0 == mc.min_p0 && s.p0.is_some()));
 //! ```
 
-use super::{critical, sample, split_box, Rng};
-use crate::aircraft::Aircraft;
+use super::{clamp_exact, critical, split_box, Rng};
+use crate::aircraft::{Aircraft, Param};
+use crate::analysis::fast;
+use crate::certified::Values;
+use crate::interval::I;
+use rayon::prelude::*;
 use serde::Serialize;
 
 /// One sample: its critical jump (None when its primary branch has none).
@@ -37,12 +42,17 @@ pub struct MonteCarlo {
     pub min_abs_delta_a_deg: Option<f64>,
     /// Fraction of samples whose critical jump lies within the aileron limit (null without one).
     pub fraction_within_limit: Option<f64>,
+    /// Samples the certified route could not certify, answered by the exact path.
+    pub exact_fallbacks: usize,
     /// Every sample, in order.
     #[serde(skip)]
     pub values: Vec<Sample>,
 }
 
-/// `n` seeded uniform samples of the box, each analysed exactly, on `threads` threads.
+/// `n` seeded uniform samples of the box, each analysed by the certified route
+/// ([`fast::critical`]: every critical roll rate bracketed to 1e-9 relative around the exact
+/// one) and by the exact path where a certificate fails, on rayon's threads (`threads`, or all
+/// cores for 0). The samples are the first `n` of the seeded sequence, whatever the threads.
 pub fn run(
     aircraft: &Aircraft,
     delta_e_rad: f64,
@@ -51,43 +61,71 @@ pub fn run(
     threads: usize,
 ) -> MonteCarlo {
     let (base, params) = split_box(aircraft);
-    let threads = threads.max(1);
-    let chunk = n.div_ceil(threads).max(1);
-    let values: Vec<Sample> = std::thread::scope(|s| {
-        let handles: Vec<_> = (0..threads)
-            .map(|t| {
-                let (base, params) = (&base, &params);
-                s.spawn(move || {
-                    let mut rng = Rng::new(seed);
-                    // Skip to this thread's part of the one seeded sequence.
-                    let first = (t * chunk).min(n);
-                    let last = ((t + 1) * chunk).min(n);
-                    for _ in 0..first {
-                        sample(base, params, &mut rng);
-                    }
-                    (first..last)
-                        .map(|_| {
-                            let a = sample(base, params, &mut rng);
-                            match critical(&a, delta_e_rad) {
-                                Ok(Some(j)) => Sample {
-                                    p0: Some(j.p0),
-                                    abs_delta_a_deg: Some(j.delta_a_deg.abs()),
-                                },
-                                _ => Sample {
-                                    p0: None,
-                                    abs_delta_a_deg: None,
-                                },
-                            }
-                        })
-                        .collect::<Vec<_>>()
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap_or_default())
-            .collect()
-    });
+    let fixed: [I; 18] = std::array::from_fn(|i| I::from_q(base.exact(Param::ALL[i])));
+    let ends: Vec<(I, I, I)> = params
+        .iter()
+        .map(|u| {
+            (
+                I::from_q_pair(&u.lo, &u.hi),
+                I::from_q(&u.lo),
+                I::from_q(&u.hi),
+            )
+        })
+        .collect();
+    let mut rng = Rng::new(seed);
+    let draws: Vec<Vec<f64>> = (0..n)
+        .map(|_| {
+            ends.iter()
+                .map(|(b, _, _)| b.lo + rng.unit() * (b.hi - b.lo))
+                .collect()
+        })
+        .collect();
+    let bound = crate::analysis::aileron_range(aircraft);
+    let one = |x: &Vec<f64>| -> (Sample, bool) {
+        // A draw strictly inside the exact ends is its own exact value; one at an end is
+        // clamped to the exact end, as the exact path's sample.
+        let mut data = fixed;
+        for ((u, xi), (_, lo, hi)) in params.iter().zip(x).zip(&ends) {
+            data[u.param.index()] = if *xi > lo.hi && *xi < hi.lo {
+                I::point(*xi)
+            } else {
+                I::from_q(&clamp_exact(u, *xi))
+            };
+        }
+        let v = Values::new(data, delta_e_rad, 0.0);
+        let (point, fell_back) = match fast::critical(&v, bound, fast::MAX_WIDTH) {
+            Ok(c) => (c, false),
+            Err(_) => {
+                let exact: Vec<_> = params
+                    .iter()
+                    .zip(x)
+                    .map(|(u, xi)| clamp_exact(u, *xi))
+                    .collect();
+                let a = super::at(&base, &params, &exact);
+                let c = critical(&a, delta_e_rad)
+                    .ok()
+                    .flatten()
+                    .map(|j| (j.p0, j.delta_a_rad));
+                (c, true)
+            }
+        };
+        let sample = Sample {
+            p0: point.map(|(p, _)| p),
+            abs_delta_a_deg: point.map(|(_, da)| da.to_degrees().abs()),
+        };
+        (sample, fell_back)
+    };
+    let results: Vec<(Sample, bool)> = if threads == 1 {
+        draws.iter().map(one).collect()
+    } else {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build();
+        match pool {
+            Ok(pool) => pool.install(|| draws.par_iter().map(one).collect()),
+            Err(_) => draws.iter().map(one).collect(),
+        }
+    };
+    let exact_fallbacks = results.iter().filter(|(_, f)| *f).count();
+    let values: Vec<Sample> = results.into_iter().map(|(s, _)| s).collect();
     let min = |f: fn(&Sample) -> Option<f64>| values.iter().filter_map(f).reduce(f64::min);
     let fraction_within_limit = aircraft.limits.aileron_deg.map(|l| {
         values
@@ -101,6 +139,7 @@ pub fn run(
         min_p0: min(|s| s.p0),
         min_abs_delta_a_deg: min(|s| s.abs_delta_a_deg),
         fraction_within_limit,
+        exact_fallbacks,
         values,
     }
 }

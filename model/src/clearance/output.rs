@@ -90,8 +90,9 @@ pub fn text(r: &Run) -> String {
     let m = &r.monte_carlo;
     let opt = |x: Option<f64>, d: usize| x.map_or("none".to_string(), |v| fixed(v, d));
     s += &format!(
-        "\nMonte Carlo ({} seeded samples, exact path): min P0 = {} rad/s, min |delta_a| = {} deg, within limit: {}\n",
+        "\nMonte Carlo ({} seeded samples, certified route, {} of them by the exact path): min P0 = {} rad/s, min |delta_a| = {} deg, within limit: {}\n",
         m.samples,
+        m.exact_fallbacks,
         opt(m.min_p0, 6),
         opt(m.min_abs_delta_a_deg, 4),
         m.fraction_within_limit.map_or("no limit".to_string(), |f| format!("{:.4}", f))

@@ -132,7 +132,7 @@ impl UPoly {
                 .iter()
                 .enumerate()
                 .skip(1)
-                .map(|(i, c)| c * BigRational::from_integer(i.into()))
+                .map(|(i, c)| mul_q(c, &BigRational::from_integer(i.into())))
                 .collect(),
         )
     }
@@ -144,7 +144,7 @@ impl UPoly {
         Self::new(
             (0..n)
                 .map(|i| match (self.coeffs.get(i), o.coeffs.get(i)) {
-                    (Some(a), Some(b)) => a + b,
+                    (Some(a), Some(b)) => add_q(a, b),
                     (Some(a), None) => a.clone(),
                     (None, Some(b)) => b.clone(),
                     (None, None) => BigRational::zero(),
@@ -179,7 +179,7 @@ impl UPoly {
 
     /// The scalar multiple `c · self`.
     pub fn scale(&self, c: &BigRational) -> UPoly {
-        Self::new(self.coeffs.iter().map(|a| a * c).collect())
+        Self::new(self.coeffs.iter().map(|a| mul_q(a, c)).collect())
     }
 
     /// `self` divided by its leading coefficient (zero stays zero).
@@ -266,5 +266,30 @@ impl UPoly {
             .into_iter()
             .map(|(f, i)| (z_to_upoly(&f).monic(), i))
             .collect()
+    }
+}
+
+/// `a + b`, reduced by the Lehmer gcd, and without any gcd when both are integers: the exact
+/// Hopf polynomial's coefficients run to thousands of bits, where num-rational's reduction (a
+/// binary gcd, quadratic in the length even against a denominator of 1) dominated.
+fn add_q(a: &BigRational, b: &BigRational) -> BigRational {
+    if a.denom().is_one() && b.denom().is_one() {
+        BigRational::new_raw(a.numer() + b.numer(), BigInt::one())
+    } else if a.denom() == b.denom() {
+        reduced(a.numer() + b.numer(), a.denom().clone())
+    } else {
+        reduced(
+            a.numer() * b.denom() + b.numer() * a.denom(),
+            a.denom() * b.denom(),
+        )
+    }
+}
+
+/// `a * b`, as [`add_q`].
+fn mul_q(a: &BigRational, b: &BigRational) -> BigRational {
+    if a.denom().is_one() && b.denom().is_one() {
+        BigRational::new_raw(a.numer() * b.numer(), BigInt::one())
+    } else {
+        reduced(a.numer() * b.numer(), a.denom() * b.denom())
     }
 }

@@ -44,6 +44,9 @@ pub(super) fn reduced(mut n: BigInt, mut d: BigInt) -> BigRational {
         n = -n;
         d = -d;
     }
+    if d.is_one() {
+        return BigRational::new_raw(n, d);
+    }
     let g = int_gcd(&n, &d);
     if !g.is_one() {
         n /= &g;

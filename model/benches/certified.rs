@@ -1,0 +1,74 @@
+//! Benchmarks of issue 11: the certified floating-point route against the exact path, measured
+//! in the same run (the ratio of the medians is the speed-up), and what clearance builds on it.
+//! Run with `cargo bench -p model --bench certified`.
+//!
+//! - `analyze_exact` / `analyze_fast`: the jump part of `analyze` (divergence, jumps, poles,
+//!   critical jump, zero-sideslip departure) by big rationals and by the certified route;
+//! - `critical_lean`: the Monte Carlo's per-sample route (critical jump only);
+//! - `monte_carlo_1000`: 1000 seeded samples of `aircraft/a_uncertain.toml` on every core
+//!   (samples per second = 1000 / median);
+//! - `clear_a_uncertain`: the proof of that file (bounds, worst case, verdict).
+
+use model::aircraft::Aircraft;
+use model::analysis::{analyze_with, fast};
+use model::certified::Values;
+use std::path::Path;
+
+fn main() {
+    // The parametric derivation and its compiled form are made once per process; keep them out
+    // of every measurement.
+    let _ = fast::analyze_fast(&Aircraft::a(), 0.0);
+    divan::main();
+}
+
+fn aircraft(name: &str) -> Aircraft {
+    Aircraft::builtin(name).unwrap_or_else(|| {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../aircraft")
+            .join(name);
+        model::aircraft::load(&path).expect("a committed aircraft file")
+    })
+}
+
+const DELTA_E: f64 = 0.034_906_585_039_886_59; // 2 deg
+
+/// The exact path (the baseline).
+#[divan::bench(args = ["A", "B", "fighter.toml"])]
+fn analyze_exact(bencher: divan::Bencher, name: &str) {
+    let a = aircraft(name);
+    bencher.bench(|| analyze_with(divan::black_box(&a), DELTA_E, false).map(|r| r.jump.len()));
+}
+
+/// The certified route (exact fallback where a certificate fails: none for these three).
+#[divan::bench(args = ["A", "B", "fighter.toml"])]
+fn analyze_fast(bencher: divan::Bencher, name: &str) {
+    let a = aircraft(name);
+    bencher.bench(|| fast::analyze_fast(divan::black_box(&a), DELTA_E).map(|r| r.jump.len()));
+}
+
+/// One Monte Carlo sample: lifting the data and the lean critical-jump route.
+#[divan::bench(args = ["A", "B"])]
+fn critical_lean(bencher: divan::Bencher, name: &str) {
+    let a = aircraft(name);
+    let bound = model::analysis::aileron_range(&a);
+    bencher.bench(|| {
+        let v = Values::of(divan::black_box(&a), DELTA_E, 0.0);
+        fast::critical(&v, bound, fast::MAX_WIDTH).ok().flatten()
+    });
+}
+
+/// 1000 seeded samples on every core.
+#[divan::bench(sample_count = 20)]
+fn monte_carlo_1000(bencher: divan::Bencher) {
+    let a = aircraft("a_uncertain.toml");
+    bencher.bench(|| model::clearance::monte_carlo::run(&a, DELTA_E, 1000, 1, 0).samples);
+}
+
+/// The whole proof of `aircraft/a_uncertain.toml` (4 uncertain parameters; bounds, worst case,
+/// verdict; no Monte Carlo).
+#[divan::bench(sample_count = 3)]
+fn clear_a_uncertain(bencher: divan::Bencher) {
+    let a = aircraft("a_uncertain.toml");
+    let settings = model::clearance::Settings::default();
+    bencher.bench(|| model::clearance::clear(&a, &settings, &mut |_| {}).map(|r| r.boxes));
+}

@@ -703,7 +703,7 @@ ROLL_CRITERION_API struct rc_array2 rc_divergence_roll_rates(const struct rc_der
     const double t2 = k->c * (k->y_beta * (k->d * k->z_alpha) - k->n_beta) + (k->m_q * k->n_r + k->d
         * k->m_alpha);
     const double t3 = k->c * k->d;
-    const double t4 = 0.5 * (t2 + copysign(sqrt(t2 * t2 - 4.0 * (t1 * t3)), t2));
+    const double t4 = (t2 + copysign(sqrt(t2 * t2 - t1 * t3 * 4.0), t2)) * 0.5;
     struct rc_array2 result;
     result.v[0] = sqrt(-(t1 / t4));
     result.v[1] = sqrt(-(t4 / t3));
@@ -2129,7 +2129,7 @@ ROLL_CRITERION_API struct rc_array2 rc_aircraft_a_divergence_roll_rates(void)
 {
     // exact: -28.7200084742592588633040084736
     const double K0 = -28.72000847425926;
-    const double t0 = 0.5 * (copysign(sqrt(K0), -13.59447201192208) - 13.59447201192208);
+    const double t0 = (copysign(sqrt(K0), -13.59447201192208) - 13.59447201192208) * 0.5;
     struct rc_array2 result;
     result.v[0] = sqrt(-(70.82019204602176 / t0));
     result.v[1] = sqrt(-(t0 / 0.753774));
@@ -3223,7 +3223,7 @@ ROLL_CRITERION_API struct rc_array2 rc_aircraft_b_divergence_roll_rates(void)
 {
     // exact: 90.038627326860557391585536
     const double K0 = 90.03862732686056;
-    const double t0 = 0.5 * (copysign(sqrt(K0), -21.609425289744) - 21.609425289744);
+    const double t0 = (copysign(sqrt(K0), -21.609425289744) - 21.609425289744) * 0.5;
     struct rc_array2 result;
     result.v[0] = sqrt(-(138.68193880436 / t0));
     result.v[1] = sqrt(-(t0 / 0.679484));

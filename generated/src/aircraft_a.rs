@@ -462,7 +462,7 @@ pub fn divergence_biquadratic() -> [f64; 3] {
 pub fn divergence_roll_rates() -> [f64; 2] {
     /// exact: -28.7200084742592588633040084736
     const K0: f64 = -28.72000847425926;
-    let t0 = 0.5 * (libm::sqrt(K0).copysign(-13.59447201192208) - 13.59447201192208);
+    let t0 = (libm::sqrt(K0).copysign(-13.59447201192208) - 13.59447201192208) * 0.5;
     [libm::sqrt(-(70.82019204602176 / t0)), libm::sqrt(-(t0 / 0.753774))]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]

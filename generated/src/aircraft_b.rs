@@ -450,7 +450,7 @@ pub fn divergence_biquadratic() -> [f64; 3] {
 pub fn divergence_roll_rates() -> [f64; 2] {
     /// exact: 90.038627326860557391585536
     const K0: f64 = 90.03862732686056;
-    let t0 = 0.5 * (libm::sqrt(K0).copysign(-21.609425289744) - 21.609425289744);
+    let t0 = (libm::sqrt(K0).copysign(-21.609425289744) - 21.609425289744) * 0.5;
     [libm::sqrt(-(138.68193880436 / t0)), libm::sqrt(-(t0 / 0.679484))]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]

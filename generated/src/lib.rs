@@ -681,7 +681,7 @@ pub fn divergence_roll_rates(k: &Derivatives) -> [f64; 2] {
     let t2 = k.c * (k.y_beta * (k.d * k.z_alpha) - k.n_beta)
         + (k.m_q * k.n_r + k.d * k.m_alpha);
     let t3 = k.c * k.d;
-    let t4 = 0.5 * (t2 + libm::sqrt(t2 * t2 - 4.0 * (t1 * t3)).copysign(t2));
+    let t4 = (t2 + libm::sqrt(t2 * t2 - t1 * t3 * 4.0).copysign(t2)) * 0.5;
     [libm::sqrt(-(t1 / t4)), libm::sqrt(-(t4 / t3))]
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]

@@ -31,8 +31,8 @@
 //! ```
 
 use crate::aircraft::Aircraft;
-use crate::algebra::{Poly, Sym, Q};
-use crate::derivation::{eliminate_aileron, homogenize, Derivation, Ratio, TRIM_DEGREE};
+use crate::algebra::{Poly, Sym};
+use crate::derivation::{eliminate_aileron, zero_sideslip_step8, Derivation, Ratio};
 use crate::equations::symbols;
 use crate::roots::{positive_roots, RealRoot, UPoly};
 use serde::Serialize;
@@ -533,7 +533,7 @@ pub(crate) fn aileron_of_root(g: &InAileron, f: &InAileron, p0: f64) -> f64 {
 /// Built from the parametric derivation by substituting the data into the small trim-level
 /// results (det A, the trim numerators, det J5, d and the roll equation in the trim symbols) with
 /// every denominator cleared by one integer scale per group, and only then clearing the trim's
-/// denominator (step 8, [`homogenize`]) and eliminating the aileron ([`eliminate_aileron`]).
+/// denominator (step 8, [`crate::derivation::homogenize`]) and eliminating the aileron ([`eliminate_aileron`]).
 /// `tests/tests/derivation.rs` checks that they are proportional to the fully specialised
 /// derivation's.
 #[derive(Clone, Debug)]
@@ -602,19 +602,8 @@ impl CriterionPolys {
             &par.zs_trim[2],
         ]);
         let (zs_det, zs_trim) = (z[0].clone(), [z[1].clone(), z[2].clone(), z[3].clone()]);
-        let t3 = [s.alpha0, s.q0, s.r0];
-        let beta0_zero = [(s.beta0, Q::ZERO)];
-        let zs_step8 = |f: &Poly| {
-            homogenize(
-                &f.subs_values(&beta0_zero),
-                &t3,
-                &zs_trim,
-                &zs_det,
-                TRIM_DEGREE,
-            )
-        };
-        let zs_jump = zs_step8(&det_j5);
-        let zs_d_det = zs_step8(&d);
+        let zs_jump = zero_sideslip_step8(&det_j5, &zs_trim, &zs_det);
+        let zs_d_det = zero_sideslip_step8(&d, &zs_trim, &zs_det);
         CriterionPolys {
             det_a,
             trim,

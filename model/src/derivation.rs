@@ -329,8 +329,6 @@ impl Derivation {
             // along the equilibrium curve (trim condition = 0).
             let s = symbols();
             let trims4 = [s.alpha0, s.beta0, s.q0, s.r0];
-            let trims3 = [s.alpha0, s.q0, s.r0];
-            let zero = Poly::zero();
             let jump_at = homogenize(&self.det_j5, &trims4, &self.trim, &self.det_a, TRIM_DEGREE);
             let d_at = homogenize(&self.d, &trims4, &self.trim, &self.det_a, TRIM_DEGREE);
             let trim_condition = homogenize(
@@ -344,20 +342,8 @@ impl Derivation {
                 trim_condition,
                 jump_at,
                 d_at,
-                zs_jump: homogenize(
-                    &self.det_j5.subs(s.beta0, &zero),
-                    &trims3,
-                    &self.zs_trim,
-                    &self.zs_det,
-                    TRIM_DEGREE,
-                ),
-                zs_d_det: homogenize(
-                    &self.d.subs(s.beta0, &zero),
-                    &trims3,
-                    &self.zs_trim,
-                    &self.zs_det,
-                    TRIM_DEGREE,
-                ),
+                zs_jump: zero_sideslip_step8(&self.det_j5, &self.zs_trim, &self.zs_det),
+                zs_d_det: zero_sideslip_step8(&self.d, &self.zs_trim, &self.zs_det),
             }
         })
     }
@@ -651,6 +637,14 @@ impl TrimGroups {
         }
         acc
     }
+}
+
+/// Step 8 on the zero-sideslip trim (section V): `f` with beta0 = 0, then `alpha0, Q0, R0 =
+/// num_i / den` substituted and `den^TRIM_DEGREE` cleared.
+pub fn zero_sideslip_step8(f: &Poly, num: &[Poly], den: &Poly) -> Poly {
+    let s = symbols();
+    let f = f.subs_values(&[(s.beta0, Q::ZERO)]);
+    homogenize(&f, &[s.alpha0, s.q0, s.r0], num, den, TRIM_DEGREE)
 }
 
 /// Substitutes `t_i = num_i / den` into `f` (of degree at most k in the `t_i`) and multiplies

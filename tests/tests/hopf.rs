@@ -390,7 +390,7 @@ fn permutations4() -> Vec<[usize; 4]> {
 #[test]
 fn folded_hopf_polynomial_changes_sign_at_autos_hopf_points_and_has_the_sign_of_nalgebras() {
     use roll_criterion::{aircraft_a, aircraft_b};
-    for p0 in [3.129030, 4.731306] {
+    for (p0, _, _) in reference::B_HOPF {
         let (lo, hi) = (
             aircraft_b::hopf_polynomial(p0 - 1e-5, de(), 0.0),
             aircraft_b::hopf_polynomial(p0 + 1e-5, de(), 0.0),

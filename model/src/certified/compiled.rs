@@ -2,6 +2,13 @@
 //! term's coefficient as an interval and its exponents as small integers, and step 8's grouping
 //! ([`crate::derivation::TrimGroups`]) made once, so that enclosing one aircraft's polynomials
 //! is a pass over a few hundred terms.
+//!
+//! ```
+//! use model::certified::compiled::Parametric;
+//!
+//! // det A (Eq. 4), compiled once per process: biquadratic in P0 (the divergence biquadratic).
+//! assert_eq!(Parametric::get().det_a.p0_degree(), 4);
+//! ```
 
 use super::dense::{Dense, Dense2};
 use super::num::Num;

@@ -4,6 +4,17 @@
 //! Every operation is a finite sequence of additions and multiplications of enclosures (and,
 //! for [`Dense::div_exact`], divisions by one that excludes zero), so each coefficient of a
 //! result encloses the exact coefficient that the same operations give on the exact inputs.
+//!
+//! ```
+//! use model::certified::dense::IPoly;
+//! use model::interval::I;
+//!
+//! // (x + 1)(x - 2) = x^2 - x - 2 in exact (point) coefficients, and back by exact division.
+//! let p = |c: &[f64]| IPoly::new(c.iter().map(|x| I::point(*x)).collect());
+//! let (a, b) = (p(&[1.0, 1.0]), p(&[-2.0, 1.0]));
+//! assert_eq!(a.mul(&b), p(&[-2.0, -1.0, 1.0]));
+//! assert_eq!(a.mul(&b).div_exact(&a), Some(b));
+//! ```
 
 use super::num::Num;
 use crate::interval::I;
@@ -135,10 +146,7 @@ impl<T: Num> Dense<T> {
 
     /// The value at `x` by Horner's scheme (an enclosure of the range over `x`).
     pub fn eval(&self, x: T) -> T {
-        self.0
-            .iter()
-            .rev()
-            .fold(T::constant(I::point(0.0)), |acc, c| acc * x + *c)
+        horner(&self.0, x)
     }
 
     /// The derivative.
@@ -253,6 +261,14 @@ impl IPoly {
 /// A polynomial in P0 and delta_a: `self.0[i]` (a polynomial in P0) multiplies `delta_a^i`.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Dense2<T>(pub Vec<Dense<T>>);
+
+/// The value at `x` of the polynomial with ascending coefficients `c`, by Horner's scheme: the
+/// one evaluation of enclosed coefficients (an enclosure of the range over `x`).
+pub fn horner<T: Num>(c: &[T], x: T) -> T {
+    c.iter()
+        .rev()
+        .fold(T::constant(I::point(0.0)), |acc, c| acc * x + *c)
+}
 
 /// A polynomial in P0 and delta_a with interval coefficients.
 pub type IPoly2 = Dense2<I>;

@@ -22,6 +22,19 @@
 //! Whatever cannot be decided (a leading or constant coefficient that may vanish, a root too
 //! close to a split point, roots closer than the enclosures can tell apart) is an
 //! [`Uncertified`] error: the caller then falls back to the exact path. Nothing is ever guessed.
+//!
+//! ```
+//! use model::certified::dense::IPoly;
+//! use model::certified::isolate::positive_roots_by;
+//! use model::interval::I;
+//!
+//! // x^2 - 2: one positive root, sqrt(2), in a bracket of relative width at most 1e-12.
+//! let p = IPoly::new(vec![I::point(-2.0), I::point(0.0), I::point(1.0)]);
+//! let r = positive_roots_by(&p, None, 1e-12).unwrap();
+//! assert_eq!(r.len(), 1);
+//! assert!(r[0].lo <= 2f64.sqrt() && 2f64.sqrt() <= r[0].hi);
+//! assert!(r[0].relative_width() <= 1e-12);
+//! ```
 
 use super::dense::IPoly;
 use crate::interval::{next_down, next_up, I};

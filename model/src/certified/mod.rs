@@ -20,6 +20,18 @@
 //! So a certified answer is exactly the exact path's, up to the width of the brackets (an ulp or
 //! two). Where a certificate fails (a root too close to another, a coefficient that may vanish)
 //! callers fall back to the exact path: the answer is never a guess.
+//!
+//! ```
+//! use model::aircraft::Aircraft;
+//! use model::certified::{positive_roots_by, EnclosedPolys, Values};
+//!
+//! // Aircraft A at delta_e = 2 deg: its first jump root (Table 1: 1.706288 rad/s) lies in a
+//! // certified bracket of relative width at most 1e-9.
+//! let v = Values::of(&Aircraft::a(), 2f64.to_radians(), 0.0);
+//! let e = EnclosedPolys::new(&v).unwrap();
+//! let first = positive_roots_by(&e.jump, None, 1e-9).unwrap()[0];
+//! assert!(first.lo < 1.7062880 && first.hi > 1.7062879);
+//! ```
 
 pub mod compiled;
 pub mod dense;
@@ -47,11 +59,13 @@ impl Values<I> {
     /// The exact data of `aircraft` (each bracketed by the two nearest doubles) at elevator
     /// `delta_e_rad` and rudder `delta_r_rad` (both exact doubles).
     pub fn of(aircraft: &Aircraft, delta_e_rad: f64, delta_r_rad: f64) -> Values<I> {
-        Values::new(
-            std::array::from_fn(|i| I::from_q(aircraft.exact(Param::ALL[i]))),
-            delta_e_rad,
-            delta_r_rad,
-        )
+        Values::new(Values::data(aircraft), delta_e_rad, delta_r_rad)
+    }
+
+    /// The exact data of `aircraft` in [`Param::ALL`] order, each bracketed by the two nearest
+    /// doubles (exact ones stay points).
+    pub fn data(aircraft: &Aircraft) -> [I; 18] {
+        std::array::from_fn(|i| I::from_q(aircraft.exact(Param::ALL[i])))
     }
 }
 

@@ -1,6 +1,19 @@
 //! The numbers the criterion polynomials are built and evaluated in: intervals ([`I`], one
 //! aircraft's data enclosed) and intervals with a gradient ([`Dual`], a box of uncertain data,
 //! for mean-value enclosures). One construction serves both: it is written over [`Num`].
+//!
+//! ```
+//! use model::certified::num::Dual;
+//! use model::interval::I;
+//!
+//! // f(x, y) = x y + x over x in [1, 2], y in [3, 4]: the value and both partial derivatives
+//! // (df/dx = y + 1, df/dy = x) enclosed, outward-rounded.
+//! let x = Dual::variable(I::new(1.0, 2.0), 0, 2);
+//! let y = Dual::variable(I::new(3.0, 4.0), 1, 2);
+//! let f = x * y + x;
+//! let holds = |i: I, lo: f64, hi: f64| i.lo <= lo && i.hi >= hi && i.hi - i.lo < hi - lo + 1e-12;
+//! assert!(holds(f.v, 4.0, 10.0) && holds(f.g[0], 4.0, 5.0) && holds(f.g[1], 1.0, 2.0));
+//! ```
 
 use crate::interval::I;
 use std::fmt::Debug;

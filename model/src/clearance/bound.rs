@@ -38,6 +38,7 @@
 //! ```
 
 use crate::aircraft::{Aircraft, Param};
+use crate::certified::dense::horner;
 use crate::certified::num::{Dual, Num, GRADIENT};
 use crate::certified::{at_roll_rate, AtRollRate, Values};
 use crate::equations::symbols;
@@ -100,7 +101,7 @@ impl BoxPolys {
             "at most {} uncertain parameters (and P0)",
             GRADIENT - 1
         );
-        let fixed = std::array::from_fn(|i| I::from_q(aircraft.exact(Param::ALL[i])));
+        let fixed = Values::data(aircraft);
         BoxPolys {
             params: params.to_vec(),
             fixed,
@@ -179,13 +180,7 @@ impl BoxPolys {
             .ok_or(Failure::Turn)?;
         let da_c = (minus_two * g0c).checked_div(den_c).ok_or(Failure::Turn)?;
         let da = tight(da_box, da_c)?;
-        let horner = |js: &[Dual], d: Dual| {
-            js.iter()
-                .rev()
-                .fold(Dual::constant(I::point(0.0)), |acc, j| acc * d + *j)
-        };
-        let horner_c = |js: &[I], d: I| js.iter().rev().fold(I::point(0.0), |acc, j| acc * d + *j);
-        let jump = tight(horner(&b.jump_at, da), horner_c(&m.jump_at, da_c))?;
+        let jump = tight(horner(&b.jump_at, da), horner(&m.jump_at, da_c))?;
         Ok(Chain {
             det_a,
             g1,

@@ -15,7 +15,7 @@
 //! ```
 
 use super::{clamp_exact, critical, split_box, Rng};
-use crate::aircraft::{Aircraft, Param};
+use crate::aircraft::Aircraft;
 use crate::analysis::fast;
 use crate::certified::Values;
 use crate::interval::I;
@@ -61,7 +61,7 @@ pub fn run(
     threads: usize,
 ) -> MonteCarlo {
     let (base, params) = split_box(aircraft);
-    let fixed: [I; 18] = std::array::from_fn(|i| I::from_q(base.exact(Param::ALL[i])));
+    let fixed = Values::data(&base);
     let ends: Vec<(I, I, I)> = params
         .iter()
         .map(|u| {

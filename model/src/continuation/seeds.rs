@@ -115,8 +115,9 @@ impl Sections {
             return Section::Points(vec![to_z(z0)]);
         }
         Section::Points(
-            quadratic_roots(a, b, cc)
+            crate::specialise::quadratic_roots(a, b, cc)
                 .into_iter()
+                .filter(|t| t.is_finite())
                 .map(|t| to_z(z0 + n * t))
                 .collect(),
         )
@@ -163,31 +164,6 @@ fn line_by_minors(m: &M56, c: &Vector5<f64>) -> Option<(Vector6<f64>, Vector6<f6
         std::cmp::Ordering::Greater => sol[i - 1],
     });
     Some((z0, n / n.norm()))
-}
-
-/// Real roots of `a t^2 + b t + c`, ascending, computed without cancellation.
-fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
-    let mut roots = Vec::with_capacity(2);
-    if a == 0.0 {
-        if b != 0.0 {
-            roots.push(-c / b);
-        }
-        return roots;
-    }
-    let disc = b * b - 4.0 * a * c;
-    if disc < 0.0 {
-        return roots;
-    }
-    let q = -0.5 * (b + disc.sqrt().copysign(b));
-    if q != 0.0 {
-        roots.push(c / q);
-        roots.push(q / a);
-    } else {
-        roots.push(0.0);
-    }
-    roots.retain(|t| t.is_finite());
-    roots.sort_by(f64::total_cmp);
-    roots
 }
 
 /// One start point.

@@ -332,6 +332,21 @@ impl Dag {
         self.add_node(Node::CopySign(a, b))
     }
 
+    /// `b + copysign(sqrt(b^2 - 4 (x y)), b)` for a quadratic `a t^2 + b t + c` with `x y = a c`:
+    /// the cancellation-free denominator of its roots (two numbers of the same sign added;
+    /// the roots are `-2 c / D` and `-D / (2 a)`), the one construction of every quadratic
+    /// formula the emitter writes.
+    pub fn stable_quadratic_sum(&mut self, b: Id, x: Id, y: Id) -> Id {
+        let b_sq = self.mul(b, b);
+        let xy = self.mul(x, y);
+        let four = self.constant(Q::int(4));
+        let f = self.mul(four, xy);
+        let disc = self.sub(b_sq, f);
+        let root = self.sqrt(disc);
+        let signed = self.copysign(root, b);
+        self.add(b, signed)
+    }
+
     /// Builds a polynomial with a greedy multivariate Horner scheme: factor out the symbol that
     /// occurs in most terms, recurse on its coefficients. `leaf` maps each symbol to a node.
     pub fn poly(&mut self, p: &Poly, leaf: &dyn Fn(Sym) -> Id) -> Id {

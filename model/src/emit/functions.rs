@@ -854,15 +854,8 @@ pub fn functions(d: &Derivation, takes_derivatives: bool) -> Vec<Function> {
         // The cancellation-free quadratic formula in x = P0^2: q = -(c2 + sign(c2) sqrt(disc)) / 2
         // adds two numbers of the same sign, and the roots are c0 / q (the smaller in
         // magnitude) and q / c4 (the larger), each a single rounding of well-conditioned parts.
-        let four = dag.constant(Q::int(4));
+        let sum = dag.stable_quadratic_sum(c2, c4, c0);
         let half = dag.constant(Q::ratio(1, 2));
-        let c2sq = dag.mul(c2, c2);
-        let c4c0 = dag.mul(c4, c0);
-        let f = dag.mul(four, c4c0);
-        let disc = dag.sub(c2sq, f);
-        let sq = dag.sqrt(disc);
-        let signed = dag.copysign(sq, c2);
-        let sum = dag.add(c2, signed);
         let half_sum = dag.mul(sum, half);
         let q = dag.neg(half_sum);
         let small = dag.div(c0, q);

@@ -15,6 +15,13 @@
 //! of `P_0^k` are listed in full. Only `amsmath` and `geometry` (both in Debian's
 //! texlive-latex-base) are used. Output is deterministic: every order is fixed here, nothing
 //! depends on hash-map iteration or on the order in which symbols were interned.
+//!
+//! ```
+//! let tex = model::emit::latex::document();
+//! assert!(tex.contains("\\documentclass") && tex.trim_end().ends_with("\\end{document}"));
+//! // Every display carries the paper's equation number; Eq. 27 is det K.
+//! assert!(tex.contains("\\tag{27}"));
+//! ```
 
 use super::paper::{self as printed, display_order, parse, perturbation_order};
 use crate::algebra::{Matrix, Mono, Poly, Sym, Q};

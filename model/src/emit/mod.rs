@@ -5,21 +5,28 @@
 //! [`macro_items`] and returns the same functions as tokens. Output is deterministic: the DAG
 //! is built in a fixed order, nothing iterates a hash map into output, and prettyplease (pinned)
 //! formats it.
+//!
+//! ```
+//! // The proc-macro's expansion of the parametric functions holds det K (Eq. 27) and the
+//! // prepared form of issue 11.
+//! let items = model::emit::macro_items(None).to_string();
+//! assert!(items.contains("fn det_k") && items.contains("struct Prepared"));
+//! ```
 
-pub mod c;
-pub mod c_test;
-pub mod cross;
-pub mod expr;
-pub mod formulas;
-pub mod functions;
+pub(crate) mod c;
+pub(crate) mod c_test;
+pub(crate) mod cross;
+pub(crate) mod expr;
+pub(crate) mod formulas;
+pub(crate) mod functions;
 pub mod latex;
-pub mod linear;
+pub(crate) mod linear;
 pub mod paper;
 pub mod program;
-pub mod reference;
-pub mod rust;
-pub mod shape;
-pub mod stage;
+pub(crate) mod reference;
+pub(crate) mod rust;
+pub(crate) mod shape;
+pub(crate) mod stage;
 
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::Q;
@@ -175,7 +182,7 @@ fn fn_items(fs: &[Function], attrs: &TokenStream) -> TokenStream {
 }
 
 /// The items the proc-macro expands to: the structs and the functions, parametric (`None`,
-/// with [`Prepared`]) or specialised to an aircraft.
+/// with the `Prepared` struct) or specialised to an aircraft.
 pub fn macro_items(aircraft: Option<&Aircraft>) -> TokenStream {
     let fs = match aircraft {
         None => parametric_functions(),

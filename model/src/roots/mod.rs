@@ -51,6 +51,17 @@
 //! have 28-digit numerators and denominators, 65 µs at degree 16 with 30-decimal coefficients,
 //! and 100 µs for degree-12 polynomials with twelve real roots (coefficients up to 126 digits).
 //! A non-square-free input adds an exact Yun decomposition (typically 0.1–1 ms).
+//!
+//! ```
+//! use model::roots::{positive_roots, UPoly};
+//! use num_rational::BigRational;
+//!
+//! // (x - 1)(x - 3)(x + 2) = x^3 - 2x^2 - 5x + 6: the positive roots 1 and 3, isolated exactly.
+//! let q = |n: i64| BigRational::from_integer(n.into());
+//! let p = UPoly::new(vec![q(6), q(-5), q(-2), q(1)]);
+//! let roots: Vec<f64> = positive_roots(&p).iter().map(|r| r.value).collect();
+//! assert_eq!(roots, vec![1.0, 3.0]);
+//! ```
 
 mod dyadic;
 mod isolate;

@@ -13,14 +13,10 @@ pub(super) type ZPoly = Vec<BigInt>;
 
 /// `(z, l)` with `p = z / l`: integer coefficients over `l = lcm` of the denominators.
 pub(super) fn common_denominator(p: &UPoly) -> (ZPoly, BigInt) {
-    let l = p.coeffs().iter().fold(BigInt::one(), |l, c| {
-        let d = c.denom();
-        if d.is_one() || &l == d {
-            l
-        } else {
-            &l / int_gcd(&l, d) * d
-        }
-    });
+    let l = p
+        .coeffs()
+        .iter()
+        .fold(BigInt::one(), |l, c| int_lcm(&l, c.denom()));
     let z = p
         .coeffs()
         .iter()
@@ -33,6 +29,15 @@ pub(super) fn common_denominator(p: &UPoly) -> (ZPoly, BigInt) {
         })
         .collect();
     (z, l)
+}
+
+/// The least common multiple of two positive integers (by the fast gcd).
+pub(super) fn int_lcm(a: &BigInt, b: &BigInt) -> BigInt {
+    if b.is_one() || a == b {
+        a.clone()
+    } else {
+        a / int_gcd(a, b) * b
+    }
 }
 
 /// The reduced rational `n / d` (`d ≠ 0`), using the fast gcd.

@@ -6,6 +6,20 @@
 //! a 1.1 TB allocation); per aircraft with delta_e a symbol the generic sparse route takes about
 //! a second (release, A and B), while the dense route at a handful of elevator settings and an
 //! exact interpolation in delta_e gives the same polynomial much faster.
+//!
+//! ```
+//! use model::aircraft::Aircraft;
+//! use model::equations::symbols;
+//! use model::specialise::hopf::hopf_polynomial;
+//!
+//! // Aircraft B's Hopf polynomial (delta_e a symbol) changes sign at its first Hopf point,
+//! // P0 = 3.129030 rad/s at delta_e = 2 deg (AUTO-07p's value); A's exists too.
+//! let (h, s) = (hopf_polynomial(&Aircraft::b()).unwrap(), symbols());
+//! let de = 2f64.to_radians();
+//! let at = |p0: f64| h.eval_f64(&|x| if x == s.p0 { p0 } else if x == s.delta_e { de } else { 0.0 });
+//! assert!(at(3.1290) * at(3.1291) < 0.0);
+//! assert!(hopf_polynomial(&Aircraft::a()).is_some());
+//! ```
 
 use super::{aircraft_values, from_univariate, parametric, parametric_characteristic, univariate};
 use crate::aircraft::{Aircraft, Param};

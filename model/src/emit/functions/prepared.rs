@@ -71,14 +71,7 @@ pub fn prepared(d: &Derivation) -> Prepared {
     // D N_a - 2 G0 N_b over D det A give the same det K with one division fewer.
     let (two_g0, den) = {
         let dag = &mut c.dag;
-        let g1sq = dag.mul(g1, g1);
-        let g0g2 = dag.mul(g0, g2);
-        let four = dag.constant(Q::int(4));
-        let f = dag.mul(four, g0g2);
-        let disc = dag.sub(g1sq, f);
-        let root = dag.sqrt(disc);
-        let signed = dag.copysign(root, g1);
-        let den = dag.add(g1, signed);
+        let den = dag.stable_quadratic_sum(g1, g0, g2);
         let two = dag.constant(Q::int(2));
         (dag.mul(two, g0), den)
     };

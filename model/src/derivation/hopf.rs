@@ -48,7 +48,7 @@
 //! assert_eq!(value(&num).div(&value(&den)), Q::from(4));
 //! ```
 
-use super::{homogenize, Ratio};
+use super::{homogenize, Clearing, Exact, Ratio, TrimGroups};
 use crate::algebra::{Matrix, Poly, Sym, Q};
 use std::sync::OnceLock;
 
@@ -91,6 +91,10 @@ pub struct Orlando {
     /// `Res_w(even, odd) - Delta4`: identically zero (the two conditions on `w` have a common
     /// root exactly where Delta4 vanishes); a check of the whole construction.
     pub identity_residual: Poly,
+    /// `+-odd` grouped by powers of `w` for step 8 with `w = omega^2`'s numerator over its
+    /// denominator: `Delta4 = den^2 (+-odd)(num / den)`, the sign fixed by the derivation (see
+    /// [`delta4_in`]).
+    pub delta4_groups: TrimGroups,
 }
 
 /// Derives the generic Hurwitz/omega^2 results once.
@@ -140,12 +144,27 @@ pub fn orlando() -> &'static Orlando {
         } else {
             &res + &delta4
         };
+        // Res_w(odd, even) = Res_w(odd, even - c1 odd) (odd is monic in w), and even - c1 odd =
+        // den w - num is linear: so Delta4 is +-den^2 odd(num / den), step 8 of `odd` at
+        // w = omega^2. Which sign is decided here, exactly.
+        let w = [h.w];
+        let cleared = homogenize(&odd, &w, &[omega_sq.num.clone()], &omega_sq.den, 2);
+        let signed = if (&cleared - &delta4).is_zero() {
+            odd.clone()
+        } else {
+            assert!(
+                (&cleared + &delta4).is_zero(),
+                "Delta4 is +-den^2 odd(omega^2) (Orlando, resultant of the even and odd parts)"
+            );
+            -&odd
+        };
         Orlando {
             delta4,
             even,
             odd,
             omega_sq,
             identity_residual,
+            delta4_groups: TrimGroups::new(&signed, &w, 2),
         }
     })
 }
@@ -206,7 +225,47 @@ pub fn cleared_coefficients(c: &[Poly; 5], t: &[Sym], num: &[Poly], den: &Poly) 
 
 /// The Hopf polynomial `den^10 Delta4` at the trim, from the cleared coefficients.
 pub fn hopf_at(cleared: &[Poly; 5]) -> Poly {
-    at_coefficients(&orlando().delta4, cleared)
+    delta4_in(&mut Exact, cleared)
+}
+
+/// Delta4 of the values `c` of `c1..c5` in any ring of step 8 (exact polynomials, dense
+/// univariate ones, enclosures in [`crate::certified`]): the one evaluation of Orlando's
+/// formula every route shares.
+///
+/// Evaluated as `Delta4 = +-u^2 odd(v / u)` with `v / u = (c1 c4 - c5) / (c1 c2 - c3)` the
+/// omega^2 of step 4 and `odd = w^2 - c2 w + c4`, i.e. `+-(v^2 - c2 u v + c4 u^2)`, derived and
+/// checked exactly in [`orlando`]: seven products instead of the eighteen of the expanded
+/// determinant, and in interval arithmetic a much smaller cancellation (the expanded form's
+/// terms are each far larger than Delta4 near its roots).
+pub fn delta4_in<C: Clearing>(ring: &mut C, c: &[C::Value; 5]) -> C::Value {
+    let o = orlando();
+    let u = at_coefficients_in(ring, &o.omega_sq.den, c);
+    let v = at_coefficients_in(ring, &o.omega_sq.num, c);
+    let groups = &o.delta4_groups;
+    let coefficients: Vec<&Poly> = groups.coefficients().collect();
+    groups.clear_by(ring, &[v], &u, |ring, i| {
+        at_coefficients_in(ring, coefficients[i], c)
+    })
+}
+
+/// A polynomial `f` in `c1..c5` (rational coefficients) at the values `c` of a ring, term by
+/// term.
+pub fn at_coefficients_in<C: Clearing>(ring: &mut C, f: &Poly, c: &[C::Value; 5]) -> C::Value {
+    let h = hopf_symbols();
+    let mut acc = ring.lift(&Poly::zero());
+    for (m, q) in f.terms() {
+        let mut term = ring.lift(&Poly::constant(q.clone()));
+        let mut rest = *m;
+        for (k, ck) in h.c.iter().enumerate() {
+            for _ in 0..m.exp(*ck) {
+                term = ring.mul(&term, &c[k]);
+            }
+            rest.set(*ck, 0);
+        }
+        assert!(rest.is_one(), "a polynomial in c1..c5 only");
+        acc = ring.add(&acc, &term);
+    }
+    acc
 }
 
 #[cfg(test)]
@@ -225,5 +284,16 @@ mod tests {
         let same = (&o.omega_sq.num - &num).is_zero() && (&o.omega_sq.den - &den).is_zero();
         let flipped = (&o.omega_sq.num + &num).is_zero() && (&o.omega_sq.den + &den).is_zero();
         assert!(same || flipped, "{:?}", o.omega_sq);
+    }
+
+    /// The evaluation every route uses, `delta4_in`, gives Orlando's determinant itself.
+    #[test]
+    fn delta4_from_omega_squared_is_the_hurwitz_determinant() {
+        let h = hopf_symbols();
+        let c = h.c.map(Poly::var);
+        assert_eq!(delta4_in(&mut Exact, &c), orlando().delta4);
+        // And at the doc example's coefficients (eigenvalues -1, +-2i, -3, -4) it vanishes.
+        let at = [8, 23, 44, 76, 48].map(Poly::int);
+        assert!(delta4_in(&mut Exact, &at).is_zero());
     }
 }

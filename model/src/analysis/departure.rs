@@ -12,7 +12,7 @@ use super::{
     CriterionPolys, InAileron, JumpPoint,
 };
 use crate::aircraft::Aircraft;
-use crate::algebra::{Poly, Sym, Q};
+use crate::algebra::{Poly, PolyF64, Sym, Q};
 use crate::derivation::eliminate_aileron;
 use crate::derivation::hopf::{cleared_coefficients, hopf_at, orlando, Orlando};
 use crate::equations::symbols;
@@ -109,6 +109,8 @@ pub struct LocalPolys {
     /// Third derivatives, index `[i][j][k][l]` (identically zero for the PSS model; kept so
     /// Kuznetsov's formula is complete).
     pub third: Vec<Poly>,
+    /// The same prepared for f64 evaluation: `c`, `jacobian`, `second`, `third` in one list.
+    f64s: Vec<PolyF64>,
 }
 
 impl LocalPolys {
@@ -129,11 +131,19 @@ impl LocalPolys {
                 }
             }
         }
+        let f64s = c
+            .iter()
+            .chain(&jacobian)
+            .chain(&second)
+            .chain(&third)
+            .map(Poly::to_f64_form)
+            .collect();
         LocalPolys {
             c,
             jacobian,
             second,
             third,
+            f64s,
         }
     }
 
@@ -235,13 +245,14 @@ impl AtTrim<'_> {
     /// J5 at a trim `[alpha0, beta0, P0, Q0, R0]` in f64.
     pub fn j5(&self, trim: &[f64; 5]) -> Matrix5<f64> {
         let look = self.lookup(trim);
-        Matrix5::from_fn(|i, j| self.polys.jacobian[5 * i + j].eval_f64(&look))
+        let jacobian = &self.polys.f64s[5..30];
+        Matrix5::from_fn(|i, j| jacobian[5 * i + j].eval(&look))
     }
 
     /// `c1..c5` at a trim in f64.
     pub fn coefficients(&self, trim: &[f64; 5]) -> [f64; 5] {
         let look = self.lookup(trim);
-        std::array::from_fn(|k| self.polys.c[k].eval_f64(&look))
+        std::array::from_fn(|k| self.polys.f64s[k].eval(&look))
     }
 
     /// The first Lyapunov coefficient at a Hopf trim with frequency `omega` (Kuznetsov,
@@ -250,13 +261,14 @@ impl AtTrim<'_> {
     /// / (2 omega)`, with `A q = i omega q`, `A^T p = -i omega p`, `<p, q> = 1`.
     pub fn lyapunov(&self, trim: &[f64; 5], omega: f64) -> Option<f64> {
         let look = self.lookup(trim);
-        let sec: Vec<f64> = self
-            .polys
-            .second
+        let sec: Vec<f64> = self.polys.f64s[30..155]
             .iter()
-            .map(|p| p.eval_f64(&look))
+            .map(|p| p.eval(&look))
             .collect();
-        let thi: Vec<f64> = self.polys.third.iter().map(|p| p.eval_f64(&look)).collect();
+        let thi: Vec<f64> = self.polys.f64s[155..]
+            .iter()
+            .map(|p| p.eval(&look))
+            .collect();
         let a = self.j5(trim).map(|v| Complex::new(v, 0.0));
         let iw = Complex::new(0.0, omega);
         let q = null_vector(&(a - Matrix5::from_diagonal_element(iw)))?;

@@ -259,7 +259,7 @@ const MAX_WINDOWED_BOUND: f64 = 65536.0;
 pub const MAX_WINDOW_SPLITS: u32 = 5;
 
 /// The bisection budget of one window of [`positive_roots_windowed`].
-const WINDOW_NODES: usize = 48;
+const WINDOW_NODES: usize = 16;
 
 /// A bound on the positive roots (Kioustelidis: `2 max (|a_i| / a_n)^(1/(n-i))` over the
 /// coefficients that may have the sign opposite to the leading one), rounded up to a power of
@@ -583,8 +583,11 @@ fn refine_local(
                 c.intersect(value(x)).unwrap_or(c)
             }
         };
-        // The cheap bracket holds the root: the tight one is searched inside it.
-        let (l, h, bx2) = certified_bracket(&tight, (blo, slo), (bhi, shi), bx, slope);
+        // The cheap bracket holds the root: the tight one is searched inside it, from a guess
+        // by regula falsi (Illinois) on the tight enclosure's midpoints, a much better guess
+        // than the cheap polynomial's Newton root (nothing certified: only where to start).
+        let guess = illinois(&|x| tight(x).mid(), blo, bhi, bx);
+        let (l, h, bx2) = certified_bracket(&tight, (blo, slo), (bhi, shi), guess, slope);
         (blo, bhi, bx) = (l, h, bx2);
     }
     let value = if bhi <= next_up(blo) {
@@ -604,6 +607,44 @@ fn refine_local(
         value,
     })
 }
+
+/// A few steps of the Illinois variant of regula falsi for a root of `f` in `[a, b]`; `x` when
+/// `f` has no sign change there (or a step leaves the interval).
+fn illinois(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64, x: f64) -> f64 {
+    let (mut fa, mut fb) = (f(a), f(b));
+    if !(fa * fb < 0.0) {
+        return x;
+    }
+    let mut side = 0;
+    let mut c = x;
+    for _ in 0..ILLINOIS_STEPS {
+        c = (a * fb - b * fa) / (fb - fa);
+        if !(c > a && c < b) {
+            return x;
+        }
+        let fc = f(c);
+        if fc == 0.0 {
+            break;
+        }
+        if fc * fb < 0.0 {
+            (a, fa) = (b, fb);
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        } else {
+            if side == -1 {
+                fa *= 0.5;
+            }
+            side = -1;
+        }
+        (b, fb) = (c, fc);
+    }
+    c
+}
+
+/// How many steps [`illinois`] takes.
+const ILLINOIS_STEPS: usize = 4;
 
 /// The narrowest bracket around `x` within `(lo, hi)` (whose ends have the known signs `slo`,
 /// `shi`) that `enclose` certifies: half-width from the enclosure's width over `slope`, doubled

@@ -27,8 +27,8 @@ use crate::aircraft::Aircraft;
 use crate::algebra::Sym;
 use crate::certified::dense::{IPoly, IPoly2};
 use crate::certified::{
-    positive_roots_by, real_roots_outside, value_at, Bracket, Criterion, EnclosedHopf,
-    EnclosedPolys, JumpPolys, Uncertified, Values,
+    positive_roots_by, real_roots_outside, trim_condition_at, value_at, Bracket, Criterion,
+    EnclosedHopf, EnclosedPolys, JumpPolys, Uncertified, Values,
 };
 use crate::derivation::Ratio;
 use crate::equations::symbols;
@@ -226,7 +226,8 @@ fn certified_departures<'a>(
     let mut landing = Vec::with_capacity(jump.len());
     for j in jump {
         let g = e.trim_condition.at_aileron(I::point(j.delta_a_rad));
-        let roots = real_roots_outside(&g, fold_window(j), MAX_WIDTH)?;
+        let value = |x: f64| trim_condition_at(v, x, j.delta_a_rad);
+        let roots = real_roots_outside(&g, fold_window(j), Some(&value), MAX_WIDTH)?;
         apart(&roots, &det_a_roots)?;
         landing.push(roots);
     }

@@ -114,10 +114,12 @@ pub fn positive_roots_by(
 /// negative ones as positive roots of `p(-x)`, those in `(0, lo)` from `p(lo t)` on `(0, 1)`,
 /// those beyond `hi` from `p(hi + y)` on `(0, inf)`. Whatever lies in the window is neither
 /// counted nor isolated (e.g. a nearly double root there). `p(0)`, `p(lo)` and `p(hi)` must
-/// have certain signs.
+/// have certain signs, from the coefficients or from `value` (another enclosure of the value at a
+/// double, intersected with it; also used to refine).
 pub fn real_roots_outside(
     p: &IPoly,
     (lo, hi): (f64, f64),
+    value: Option<&dyn Fn(f64) -> I>,
     target: f64,
 ) -> Result<Vec<Bracket>, Uncertified> {
     if !(lo > 0.0 && hi > lo) {
@@ -127,6 +129,11 @@ pub fn real_roots_outside(
     if c.is_empty() || c[0].contains_zero() {
         return Err(Uncertified::Degenerate);
     }
+    let at = |x: f64| {
+        let c = p.eval(I::point(x));
+        value.and_then(|v| c.intersect(v(x))).unwrap_or(c)
+    };
+    let (at_lo, at_hi) = (at(lo), at(hi));
     let mut out: Vec<Bracket> = positive_roots_by(&p.mirror(), None, target)?
         .into_iter()
         .rev()
@@ -142,14 +149,19 @@ pub fn real_roots_outside(
         .enumerate()
         .map(|(i, a)| *a * scale.powi(i as u32))
         .collect();
-    for (tl, tr) in isolate_unit(&below)? {
+    // The Bernstein end coefficients are the values at the window's ends: the tighter
+    // enclosure of those decides their signs.
+    for (tl, tr) in isolate_unit_ends(&below, MAX_NODES, (None, Some(at_lo)))? {
         let (a, b) = (next_down(lo * tl).max(0.0), next_up(lo * tr).min(lo));
-        out.push(refine(p, None, target, a, b)?);
+        out.push(refine(p, value, target, a, b)?);
     }
-    let above = p.shift(I::point(hi));
-    for (yl, yr) in isolate_positive(above.coeffs())? {
+    let mut above = p.shift(I::point(hi)).0;
+    if let Some(c0) = above.first_mut() {
+        *c0 = c0.intersect(at_hi).ok_or(Uncertified::Sign)?;
+    }
+    for (yl, yr) in isolate_positive(&above)? {
         let (a, b) = (next_down(hi + yl).max(hi), next_up(hi + yr));
-        out.push(refine(p, None, target, a, b)?);
+        out.push(refine(p, value, target, a, b)?);
     }
     out.sort_by(|a, b| a.lo.total_cmp(&b.lo));
     if out.windows(2).any(|w| w[0].hi >= w[1].lo) {
@@ -256,7 +268,7 @@ const COARSE: f64 = 1e-6;
 const MAX_WINDOWED_BOUND: f64 = 65536.0;
 
 /// How often a window of [`positive_roots_windowed`] may be halved.
-pub const MAX_WINDOW_SPLITS: u32 = 5;
+pub const MAX_WINDOW_SPLITS: u32 = 8;
 
 /// The bisection budget of one window of [`positive_roots_windowed`].
 const WINDOW_NODES: usize = 16;
@@ -447,11 +459,33 @@ fn isolate_unit(a: &[I]) -> Result<Vec<(f64, f64)>, Uncertified> {
 
 /// [`isolate_unit`] with a budget of `max_nodes` bisection nodes.
 fn isolate_unit_within(a: &[I], max_nodes: usize) -> Result<Vec<(f64, f64)>, Uncertified> {
-    let b = bernstein(a).ok_or(Uncertified::Degenerate)?;
+    isolate_unit_ends(a, max_nodes, (None, None))
+}
+
+/// [`isolate_unit_within`] with tighter enclosures of the values at 0 and 1 (`ends`), which
+/// are the first and last Bernstein coefficients of every node that reaches that end.
+fn isolate_unit_ends(
+    a: &[I],
+    max_nodes: usize,
+    ends: (Option<I>, Option<I>),
+) -> Result<Vec<(f64, f64)>, Uncertified> {
+    let mut b = bernstein(a).ok_or(Uncertified::Degenerate)?;
+    let tighten = |b: &mut Vec<I>, tl: f64, tr: f64| -> Result<(), Uncertified> {
+        let n = b.len() - 1;
+        if let (0.0, Some(e)) = (tl, ends.0) {
+            b[0] = b[0].intersect(e).ok_or(Uncertified::Sign)?;
+        }
+        if let (1.0, Some(e)) = (tr, ends.1) {
+            b[n] = b[n].intersect(e).ok_or(Uncertified::Sign)?;
+        }
+        Ok(())
+    };
+    tighten(&mut b, 0.0, 1.0)?;
     let mut out = Vec::new();
     let mut stack = vec![(0.0f64, 1.0f64, b, 0u32)];
     let mut nodes = 0usize;
-    while let Some((tl, tr, b, depth)) = stack.pop() {
+    while let Some((tl, tr, mut b, depth)) = stack.pop() {
+        tighten(&mut b, tl, tr)?;
         nodes += 1;
         if nodes > max_nodes || depth > MAX_DEPTH {
             return Err(Uncertified::Budget);

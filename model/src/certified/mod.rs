@@ -764,6 +764,22 @@ pub fn value_at(v: &Values, which: Criterion, x: f64) -> I {
     value.map_or_else(|_| I::entire(), |s| s.0)
 }
 
+/// An enclosure of the trim condition `det(A)^2 p_dot` at `P0 = x` and `delta_a = da`, through
+/// the trim (as [`value_at`]): the tight value of [`EnclosedPolys::trim_condition`] there.
+pub fn trim_condition_at(v: &Values, x: f64, da: f64) -> I {
+    let mut m = AtP0(I::point(x));
+    Unconstrained::new(&mut m, &v.lifted).map_or_else(
+        |_| I::entire(),
+        |u| {
+            let g = &u.trim_condition;
+            g.c[..g.len]
+                .iter()
+                .rev()
+                .fold(I::point(0.0), |acc, c| acc * I::point(da) + *c)
+        },
+    )
+}
+
 /// The unconstrained roll's criterion quantities at one roll rate, as polynomials in delta_a
 /// (coefficients of `delta_a^0, delta_a^1, ...`), all cleared of det A as in
 /// [`EnclosedPolys`]: what clearance evaluates over a box of data and a slab of roll rates.

@@ -197,7 +197,7 @@ pub fn positive_roots_windowed(
     let Some(bound) = positive_root_bound(c) else {
         return Ok(Vec::new());
     };
-    if !(bound <= MAX_WINDOWED_BOUND) {
+    if bound.is_nan() || bound > MAX_WINDOWED_BOUND {
         return Err(Uncertified::Degenerate);
     }
     let mut windows = vec![(0.0, 0.25, 0)];
@@ -646,7 +646,7 @@ fn refine_local(
 /// `f` has no sign change there (or a step leaves the interval).
 fn illinois(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64, x: f64) -> f64 {
     let (mut fa, mut fb) = (f(a), f(b));
-    if !(fa * fb < 0.0) {
+    if fa * fb >= 0.0 || (fa * fb).is_nan() {
         return x;
     }
     let mut side = 0;

@@ -152,7 +152,13 @@ pub fn orlando() -> &'static Orlando {
         // den w - num is linear: so Delta4 is +-den^2 odd(num / den), step 8 of `odd` at
         // w = omega^2. Which sign is decided here, exactly.
         let w = [h.w];
-        let cleared = homogenize(&odd, &w, &[omega_sq.num.clone()], &omega_sq.den, 2);
+        let cleared = homogenize(
+            &odd,
+            &w,
+            std::slice::from_ref(&omega_sq.num),
+            &omega_sq.den,
+            2,
+        );
         let signed = if (&cleared - &delta4).is_zero() {
             odd.clone()
         } else {

@@ -1,10 +1,12 @@
 //! Benchmarks of issue 10: deriving the Hopf criterion parametrically (Orlando's Delta4 of the
 //! characteristic coefficients of J5, in the trim symbols and every parameter), the Hopf part of
 //! `analyze` per aircraft, and `analyze` with and without it, measured in the same run (the
-//! ratio of the medians is the cost of the new answer). Run with
+//! ratio of the medians is the cost of the new answer), and the full `analyze` on the certified
+//! route against the exact one (issue 10: under 2 ms per aircraft). Run with
 //! `cargo bench -p model --bench hopf`.
 
 use model::aircraft::Aircraft;
+use model::analysis::fast::{analyze_routed_with, Route};
 use model::analysis::{
     analyze_with, parametric, parametric_characteristic, CriterionPolys, HopfPolys,
 };
@@ -52,4 +54,16 @@ fn analyze_without_hopf(name: &str) -> usize {
         .unwrap()
         .jump
         .len()
+}
+
+/// The full `analyze` (jumps, Hopf points with omega and l1, landings, first departure,
+/// zero-sideslip part) on the certified route, as `model analyze` runs it by default; compare
+/// with `analyze_with_hopf`, the exact path, in the same run. Panics if the route falls back, so
+/// the figure is the certified route's.
+#[divan::bench(args = ["A", "B"])]
+fn analyze_full_certified(name: &str) -> usize {
+    let ac = Aircraft::builtin(name).unwrap();
+    let (a, route) = analyze_routed_with(divan::black_box(&ac), 2f64.to_radians(), true).unwrap();
+    assert!(matches!(route, Route::Certified(_)), "{route:?}");
+    a.hopf.len()
 }

@@ -45,7 +45,7 @@ pub use crate::specialise::{
     quadratic_roots, specialisation, univariate, InAileron,
 };
 use crate::specialise::{on_trim, OnTrim};
-pub use departure::{omega_at, FirstDeparture, HopfPoint, HopfPolys, Landing};
+pub use departure::{omega_at, AtTrim, FirstDeparture, HopfPoint, HopfPolys, Landing, LocalPolys};
 pub use primary::Outcome;
 
 /// A trim on the unconstrained roll (delta_r = 0) at which something happens: a jump point (a
@@ -248,28 +248,20 @@ pub fn analyze_with(
 
     if departures {
         let hp = HopfPolys::new(&d, aircraft, delta_e_rad);
-        let (g, trims) = (&found.g, &found.trims);
-        for j in &mut analysis.jump {
-            j.lands_at = Some(departure::landings(&hp, &d, trims, j));
-        }
-        if let Some(i) = critical {
-            analysis.critical = Some(analysis.jump[i].clone());
-        }
-        analysis.hopf = departure::hopf_points(&hp, g, trims, (aircraft, delta_e_rad));
-        analysis.first_departure = departure::first_departure(
-            &hp,
-            g,
-            trims,
-            &found.divergence,
-            &analysis.jump,
-            &analysis.hopf,
-            aileron_range(aircraft),
-        );
-        analysis.zero_sideslip.hopf_roll_rates =
-            departure::zs_hopf_roll_rates(&hp, &found.zs_trims)
-                .iter()
-                .map(|(p, _)| *p)
-                .collect();
+        let roots = |p: &UPoly| values(positive_roots(p));
+        let landing_roots = analysis
+            .jump
+            .iter()
+            .map(|j| departure::landing_roots(&d, j))
+            .collect();
+        let input = Departures {
+            at: hp.at_trim(),
+            hopf_roots: roots(&hp.hopf),
+            hopf_at: in_aileron(&hp.hopf_at),
+            zs_hopf_roots: roots(&hp.zs_hopf),
+            landing_roots,
+        };
+        found.add_departures(&mut analysis, critical, &input, (aircraft, delta_e_rad));
     }
     check(&analysis)?;
     Ok(analysis)
@@ -284,6 +276,23 @@ pub fn aileron_range(aircraft: &Aircraft) -> f64 {
         .map_or(DEFAULT_AILERON_RANGE, |l| {
             l.to_radians().max(DEFAULT_AILERON_RANGE)
         })
+}
+
+/// What the departure part of the analysis (issue 10) needs beyond the jump part, from either
+/// route: the f64 evaluation at trims, the positive roots of the Hopf polynomials and the real
+/// roots of the trim condition at each fold's aileron.
+pub(crate) struct Departures<'a> {
+    /// J5, `c1..c5` and the model's derivatives at trims.
+    pub at: AtTrim<'a>,
+    /// Positive roots of the Hopf polynomial, ascending.
+    pub hopf_roots: Vec<f64>,
+    /// The Hopf polynomial in P0 and delta_a (for the aileron of a root).
+    pub hopf_at: InAileron,
+    /// Positive roots of the zero-sideslip Hopf polynomial, ascending.
+    pub zs_hopf_roots: Vec<f64>,
+    /// For each jump point (in the order of `Analysis::jump`), the real roots of the trim
+    /// condition at its aileron (det A's removed), ascending.
+    pub landing_roots: Vec<Vec<f64>>,
 }
 
 /// The aileron and rudder of a zero-sideslip trim given as symbol values (the trim symbols).
@@ -415,6 +424,40 @@ impl Found {
             first_departure: None,
         };
         (analysis, critical)
+    }
+
+    /// Adds the departure part to the jump part `analysis` (whose critical jump is `critical`):
+    /// the landings of each jump, the Hopf points, the first departure and the zero-sideslip
+    /// Hopf roll rates, the same on both routes.
+    pub(crate) fn add_departures(
+        &self,
+        analysis: &mut Analysis,
+        critical: Option<usize>,
+        d: &Departures<'_>,
+        marks: (&Aircraft, f64),
+    ) {
+        let (g, trims) = (&self.g, &self.trims);
+        for (j, roots) in analysis.jump.iter_mut().zip(&d.landing_roots) {
+            j.lands_at = Some(departure::landings(&d.at, trims, j, roots));
+        }
+        if let Some(i) = critical {
+            analysis.critical = Some(analysis.jump[i].clone());
+        }
+        analysis.hopf = departure::hopf_points(&d.at, &d.hopf_roots, &d.hopf_at, g, trims, marks);
+        analysis.first_departure = departure::first_departure(
+            &d.at,
+            g,
+            trims,
+            &self.divergence,
+            &analysis.jump,
+            &analysis.hopf,
+            aileron_range(marks.0),
+        );
+        analysis.zero_sideslip.hopf_roll_rates =
+            departure::zs_hopf_roll_rates(&d.at, &d.zs_hopf_roots, &self.zs_trims)
+                .iter()
+                .map(|(p, _)| *p)
+                .collect();
     }
 }
 

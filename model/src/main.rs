@@ -2,6 +2,7 @@
 
 use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use model::aircraft::{self, Aircraft};
+use model::analysis::fast::analyze_routed_with;
 use model::analysis::{analyze, Analysis};
 use model::continuation::{continue_equilibria, ContinuationParam, Diagram, Settings};
 use model::report::{
@@ -35,9 +36,20 @@ enum Command {
         /// Elevator deflection in degrees.
         #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
         delta_e_deg: f64,
-        /// Print JSON instead of a table.
+        /// Print JSON instead of a table. JSON carries every digit of every number, so it comes
+        /// from the exact path (correctly rounded roots) unless the table's route is asked for
+        /// with --certified.
         #[arg(long)]
         json: bool,
+        /// Force the exact (big-rational) path; by default the table comes from the certified
+        /// floating-point route, which falls back to the exact path whenever a certificate fails.
+        #[arg(long, conflicts_with = "certified")]
+        exact: bool,
+        /// With --json: the certified route's numbers (each roll rate within its certified bracket
+        /// of about 1e-10 relative width, the trim evaluated from the enclosures' midpoints, so
+        /// the last digits differ from the exact path's).
+        #[arg(long)]
+        certified: bool,
     },
     /// Continuation of the PSS equilibria: every branch, folds, Hopf and branch points (Figs 1-4, 9).
     Continue {
@@ -239,9 +251,17 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
             aircraft,
             delta_e_deg,
             json,
+            exact,
+            certified,
         } => {
             let ac = load_aircraft(&aircraft)?;
-            let result = analyze(&ac, elevator(delta_e_deg)?).map_err(|e| named(&ac, e))?;
+            let delta_e = elevator(delta_e_deg)?;
+            let result = if exact || (json && !certified) {
+                analyze(&ac, delta_e)
+            } else {
+                analyze_routed_with(&ac, delta_e, true).map(|(a, _)| a)
+            }
+            .map_err(|e| named(&ac, e))?;
             if json {
                 let text = serde_json::to_string_pretty(&result).map_err(|e| e.to_string())?;
                 say!(out, "{text}");

@@ -25,6 +25,6 @@ mod symbol;
 
 pub use matrix::Matrix;
 pub use mono::Mono;
-pub use poly::Poly;
+pub use poly::{Poly, PolyF64};
 pub use rational::Q;
 pub use symbol::{Sym, MAX_SYMS};

@@ -496,6 +496,21 @@ impl Poly {
             .sum()
     }
 
+    /// The polynomial prepared for repeated [`Poly::eval_f64`]: coefficients converted to f64
+    /// and monomials unpacked once ([`PolyF64`], same operations in the same order, so the same
+    /// result to the bit).
+    pub fn to_f64_form(&self) -> PolyF64 {
+        PolyF64(
+            self.terms
+                .iter()
+                .map(|(m, c)| {
+                    let f = m.factors().iter().map(|(s, e)| (*s, *e as i32)).collect();
+                    (c.to_f64(), f)
+                })
+                .collect(),
+        )
+    }
+
     /// The symbols that occur, in symbol order.
     pub fn symbols(&self) -> Vec<Sym> {
         let mut all: Vec<Sym> = self
@@ -597,5 +612,19 @@ impl fmt::Debug for Poly {
             }
         }
         Ok(())
+    }
+}
+
+/// A polynomial prepared for f64 evaluation ([`Poly::to_f64_form`]).
+#[derive(Clone, Debug)]
+pub struct PolyF64(Vec<(f64, Vec<(Sym, i32)>)>);
+
+impl PolyF64 {
+    /// [`Poly::eval_f64`] of the polynomial it was made from.
+    pub fn eval(&self, value: &dyn Fn(Sym) -> f64) -> f64 {
+        self.0
+            .iter()
+            .map(|(c, f)| f.iter().fold(*c, |acc, (s, e)| acc * value(*s).powi(*e)))
+            .sum()
     }
 }

@@ -8,15 +8,15 @@
 //! [`crate::derivation::hopf::orlando`]) tells them apart.
 
 use super::{
-    aileron_of_root, exact_f64, in_aileron, parametric_characteristic, specialisation, strip,
-    univariate, CriterionPolys, InAileron, JumpPoint,
+    aileron_of_root, exact_f64, parametric_characteristic, specialisation, strip, univariate,
+    CriterionPolys, InAileron, JumpPoint,
 };
 use crate::aircraft::Aircraft;
-use crate::algebra::{Poly, Sym, Q};
+use crate::algebra::{Poly, PolyF64, Sym, Q};
 use crate::derivation::eliminate_aileron;
 use crate::derivation::hopf::{cleared_coefficients, hopf_at, orlando, Orlando};
 use crate::equations::symbols;
-use crate::roots::{positive_roots, real_roots, UPoly};
+use crate::roots::{real_roots, UPoly};
 use crate::specialise::from_univariate;
 use crate::specialise::hopf::{dense_hopf, weighted_integer};
 use nalgebra::{Complex, Matrix5, Vector5};
@@ -83,15 +83,25 @@ pub struct FirstDeparture {
 /// The Hopf part of the closed form specialised to one aircraft.
 #[derive(Clone, Debug)]
 pub struct HopfPolys {
-    /// `c1..c5` in trim symbols, exact.
-    pub c: [Poly; 5],
     /// `det(A)^10 Delta4` at the trim, in P0 and delta_a.
     pub hopf_at: Poly,
     /// The Hopf polynomial in P0 (delta_a eliminated, det A's roots removed).
     pub hopf: UPoly,
     /// The Hopf polynomial of the zero-sideslip trims in P0 (`det(A1)^10 Delta4`).
     pub zs_hopf: UPoly,
-    /// Entries of J5 (row-major) in trim symbols, exact.
+    /// J5, its characteristic coefficients and the model's derivatives, in trim symbols.
+    pub local: LocalPolys,
+}
+
+/// What the departure part evaluates in f64 at a trim: the entries of J5, its characteristic
+/// coefficients `c1..c5` and the second and third derivatives of the PSS right-hand side, as
+/// polynomials in the trim symbols, specialised to an aircraft (exact path) or parametric (the
+/// certified route, evaluated with the aircraft's values, see [`AtTrim`]).
+#[derive(Clone, Debug)]
+pub struct LocalPolys {
+    /// `c1..c5`.
+    pub c: [Poly; 5],
+    /// Entries of J5 (row-major).
     pub jacobian: Vec<Poly>,
     /// Second derivatives `d2 f_i / dx_j dx_k` of the PSS right-hand side (constants for the
     /// quadratic PSS model), index `[i][j][k]`.
@@ -99,6 +109,86 @@ pub struct HopfPolys {
     /// Third derivatives, index `[i][j][k][l]` (identically zero for the PSS model; kept so
     /// Kuznetsov's formula is complete).
     pub third: Vec<Poly>,
+    /// The same prepared for f64 evaluation: `c`, `jacobian`, `second`, `third` in one list.
+    f64s: Vec<PolyF64>,
+}
+
+impl LocalPolys {
+    /// From the characteristic coefficients, J5's entries and the model's right-hand side
+    /// (whose derivatives are taken here).
+    fn new(c: [Poly; 5], jacobian: Vec<Poly>, model: &[Poly]) -> LocalPolys {
+        let x = symbols().states();
+        let mut second = Vec::with_capacity(125);
+        let mut third = Vec::with_capacity(625);
+        for f in model {
+            for a in x {
+                for b in x {
+                    let fab = f.diff(a).diff(b);
+                    for c in x {
+                        third.push(fab.diff(c));
+                    }
+                    second.push(fab);
+                }
+            }
+        }
+        let f64s = c
+            .iter()
+            .chain(&jacobian)
+            .chain(&second)
+            .chain(&third)
+            .map(Poly::to_f64_form)
+            .collect();
+        LocalPolys {
+            c,
+            jacobian,
+            second,
+            third,
+            f64s,
+        }
+    }
+
+    /// The parametric derivation's (every parameter a symbol), derived once per process.
+    pub fn parametric() -> &'static LocalPolys {
+        static L: std::sync::OnceLock<LocalPolys> = std::sync::OnceLock::new();
+        L.get_or_init(|| LocalPolys::of(&|p: &Poly| p.clone()))
+    }
+
+    /// The parametric polynomials through `map` (e.g. a substitution of an aircraft's data).
+    fn of(map: &dyn Fn(&Poly) -> Poly) -> LocalPolys {
+        let par = super::parametric();
+        let jacobian = (0..5)
+            .flat_map(|i| (0..5).map(move |j| (i, j)))
+            .map(|(i, j)| map(par.jacobian.get(i, j)))
+            .collect();
+        let model: Vec<Poly> = par.unconstrained_model.iter().map(map).collect();
+        LocalPolys::new(
+            parametric_characteristic().clone().map(|ck| map(&ck)),
+            jacobian,
+            &model,
+        )
+    }
+
+    /// Evaluation at trims with `values` for the other symbols ([`AtTrim`]).
+    pub fn at<'a>(&'a self, values: &[(Sym, f64)]) -> AtTrim<'a> {
+        let mut v = vec![f64::NAN; crate::algebra::MAX_SYMS];
+        for (s, x) in values {
+            v[s.index()] = *x;
+        }
+        AtTrim {
+            polys: self,
+            values: v,
+        }
+    }
+}
+
+/// [`LocalPolys`] evaluated in f64 at trims `[alpha0, beta0, P0, Q0, R0]`, with fixed values of
+/// the other symbols (none on the exact path; the aircraft's data and controls on the certified
+/// route): one routine for both routes.
+#[derive(Clone, Debug)]
+pub struct AtTrim<'a> {
+    polys: &'a LocalPolys,
+    /// Values by symbol index (NaN: none).
+    values: Vec<f64>,
 }
 
 impl HopfPolys {
@@ -106,11 +196,10 @@ impl HopfPolys {
     pub fn new(cp: &CriterionPolys, aircraft: &Aircraft, delta_e_rad: f64) -> HopfPolys {
         let s = symbols();
         let values = specialisation(aircraft, delta_e_rad);
-        let c: [Poly; 5] = parametric_characteristic()
-            .clone()
-            .map(|ck| ck.subs_values(&values));
-        // Integer coefficients for the exact polynomials; `c` itself stays for f64 evaluation.
-        let (ci, _) = weighted_integer(&c);
+        let local = LocalPolys::of(&|p: &Poly| p.subs_values(&values));
+        // Integer coefficients for the exact polynomials; `local.c` itself stays for f64
+        // evaluation.
+        let (ci, _) = weighted_integer(&local.c);
         let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
         // Without aileron yaw everything is univariate in P0: dense arithmetic is much faster.
         let (hopf_at, hopf) = match dense_hopf(&ci, &t4, &cp.trim, &cp.det_a) {
@@ -128,51 +217,42 @@ impl HopfPolys {
         let zs_hopf = dense_hopf(&czs, &t3, &cp.zs_trim, &cp.zs_det)
             .unwrap_or_else(|| univariate(&hopf_at_zs(&czs, &t3, &cp.zs_trim, &cp.zs_det), s.p0));
         let zs_hopf = strip(&zs_hopf, &univariate(&cp.zs_det, s.p0));
-        let par = super::parametric();
-        let jacobian = (0..5)
-            .flat_map(|i| (0..5).map(move |j| (i, j)))
-            .map(|(i, j)| par.jacobian.get(i, j).subs_values(&values))
-            .collect();
-        let model: Vec<Poly> = par
-            .unconstrained_model
-            .iter()
-            .map(|f| f.subs_values(&values))
-            .collect();
-        let x = s.states();
-        let mut second = Vec::with_capacity(125);
-        let mut third = Vec::with_capacity(625);
-        for f in &model {
-            for a in x {
-                for b in x {
-                    let fab = f.diff(a).diff(b);
-                    for c in x {
-                        third.push(fab.diff(c));
-                    }
-                    second.push(fab);
-                }
-            }
-        }
         HopfPolys {
-            c,
             hopf_at,
             hopf,
             zs_hopf,
-            jacobian,
-            second,
-            third,
+            local,
+        }
+    }
+
+    /// The f64 evaluation at trims (the polynomials hold no other symbol).
+    pub fn at_trim(&self) -> AtTrim<'_> {
+        self.local.at(&[])
+    }
+}
+
+impl AtTrim<'_> {
+    fn lookup(&self, trim: &[f64; 5]) -> impl Fn(Sym) -> f64 + '_ {
+        let t = symbols().trims();
+        let trim = *trim;
+        move |x: Sym| {
+            t.iter()
+                .position(|y| *y == x)
+                .map_or(self.values[x.index()], |i| trim[i])
         }
     }
 
     /// J5 at a trim `[alpha0, beta0, P0, Q0, R0]` in f64.
     pub fn j5(&self, trim: &[f64; 5]) -> Matrix5<f64> {
-        let look = trim_lookup(trim);
-        Matrix5::from_fn(|i, j| self.jacobian[5 * i + j].eval_f64(&look))
+        let look = self.lookup(trim);
+        let jacobian = &self.polys.f64s[5..30];
+        Matrix5::from_fn(|i, j| jacobian[5 * i + j].eval(&look))
     }
 
     /// `c1..c5` at a trim in f64.
     pub fn coefficients(&self, trim: &[f64; 5]) -> [f64; 5] {
-        let look = trim_lookup(trim);
-        std::array::from_fn(|k| self.c[k].eval_f64(&look))
+        let look = self.lookup(trim);
+        std::array::from_fn(|k| self.polys.f64s[k].eval(&look))
     }
 
     /// The first Lyapunov coefficient at a Hopf trim with frequency `omega` (Kuznetsov,
@@ -180,9 +260,15 @@ impl HopfPolys {
     /// `l1 = Re[<p, C(q,q,qb)> - 2 <p, B(q, A^-1 B(q,qb))> + <p, B(qb, (2 i omega - A)^-1 B(q,q))>]
     /// / (2 omega)`, with `A q = i omega q`, `A^T p = -i omega p`, `<p, q> = 1`.
     pub fn lyapunov(&self, trim: &[f64; 5], omega: f64) -> Option<f64> {
-        let look = trim_lookup(trim);
-        let sec: Vec<f64> = self.second.iter().map(|p| p.eval_f64(&look)).collect();
-        let thi: Vec<f64> = self.third.iter().map(|p| p.eval_f64(&look)).collect();
+        let look = self.lookup(trim);
+        let sec: Vec<f64> = self.polys.f64s[30..155]
+            .iter()
+            .map(|p| p.eval(&look))
+            .collect();
+        let thi: Vec<f64> = self.polys.f64s[155..]
+            .iter()
+            .map(|p| p.eval(&look))
+            .collect();
         let a = self.j5(trim).map(|v| Complex::new(v, 0.0));
         let iw = Complex::new(0.0, omega);
         let q = null_vector(&(a - Matrix5::from_diagonal_element(iw)))?;
@@ -289,13 +375,6 @@ fn hopf_at_zs(c: &[Poly; 5], t: &[Sym], num: &[Poly], den: &Poly) -> Poly {
     hopf_at(&cleared_coefficients(c, t, num, den))
 }
 
-fn trim_lookup(trim: &[f64; 5]) -> impl Fn(Sym) -> f64 {
-    let s = symbols();
-    let t = s.trims();
-    let trim = *trim;
-    move |x: Sym| t.iter().position(|y| *y == x).map_or(f64::NAN, |i| trim[i])
-}
-
 /// A null vector of a (numerically) singular 5x5 complex matrix: the row with the smallest
 /// pivot is replaced by the normalisation `x_k = 1`, choosing `k` for the smallest residual.
 fn null_vector(m: &Matrix5<Complex<f64>>) -> Option<Vector5<Complex<f64>>> {
@@ -319,25 +398,26 @@ fn null_vector(m: &Matrix5<Complex<f64>>) -> Option<Vector5<Complex<f64>>> {
     best.map(|(_, x)| x)
 }
 
-/// The Hopf points of the unconstrained roll, ascending in P0, and the zero-sideslip Hopf
-/// roll rates (positive roots of the zero-sideslip Hopf polynomial with omega^2 > 0).
-pub(super) fn hopf_points(
-    h: &HopfPolys,
+/// The Hopf points of the unconstrained roll at the positive roots `roots` (ascending) of the
+/// Hopf polynomial, whose value in P0 and delta_a is `hopf_ia`: those with omega^2 > 0, with
+/// their trim, omega, period and l1.
+pub(crate) fn hopf_points(
+    at: &AtTrim<'_>,
+    roots: &[f64],
+    hopf_ia: &InAileron,
     g: &InAileron,
     trims: &[InAileron],
     marks: (&Aircraft, f64),
 ) -> Vec<HopfPoint> {
     let o: &Orlando = orlando();
-    let hopf_ia = in_aileron(&h.hopf_at);
-    positive_roots(&h.hopf)
+    roots
         .iter()
-        .filter_map(|root| {
-            let p0 = root.value;
-            let da = hopf_aileron(h, g, &hopf_ia, trims, p0)?;
+        .filter_map(|&p0| {
+            let da = hopf_aileron(at, g, hopf_ia, trims, p0)?;
             let point = trim_point(p0, da, trims, marks);
             let t = [point.alpha, point.beta, p0, point.q, point.r];
-            let omega = omega_at(o, &h.coefficients(&t))?;
-            let l1 = h.lyapunov(&t, omega)?;
+            let omega = omega_at(o, &at.coefficients(&t))?;
+            let l1 = at.lyapunov(&t, omega)?;
             Some(HopfPoint {
                 point,
                 omega,
@@ -359,7 +439,7 @@ pub(super) fn hopf_points(
 /// `hopf_at` in delta_a makes its own value a poor guide with aileron yaw. `None` when no trim is
 /// real.
 fn hopf_aileron(
-    h: &HopfPolys,
+    h: &AtTrim<'_>,
     g: &InAileron,
     hopf_ia: &InAileron,
     trims: &[InAileron],
@@ -400,7 +480,7 @@ pub fn omega_at(o: &Orlando, c: &[f64; 5]) -> Option<f64> {
 
 /// The trim at `(p0, delta_a)` as a [`JumpPoint`] (no landing), marked with the aircraft's
 /// limits and validity range at elevator `marks.1`.
-pub(super) fn trim_point(
+pub(crate) fn trim_point(
     p0: f64,
     da: f64,
     trims: &[InAileron],
@@ -422,15 +502,9 @@ pub(super) fn trim_point(
     }
 }
 
-/// Every stable equilibrium at the aileron of the fold `fold` other than the fold itself: all
-/// real roots in P0 of the trim condition at that (exact) delta_a, with finite trims and all
-/// eigenvalues of J5 in the left half-plane.
-pub(super) fn landings(
-    h: &HopfPolys,
-    cp: &CriterionPolys,
-    trims: &[InAileron],
-    fold: &JumpPoint,
-) -> Vec<Landing> {
+/// The real roots in P0 of the trim condition at the (exact) aileron of the fold `fold`, det A's
+/// roots removed: where the jump can land, before the stability check of [`landings`].
+pub(super) fn landing_roots(cp: &CriterionPolys, fold: &JumpPoint) -> Vec<f64> {
     let s = symbols();
     let at = cp
         .trim_condition
@@ -440,17 +514,36 @@ pub(super) fn landings(
     if g.is_zero() {
         return Vec::new();
     }
-    real_roots(&g)
+    real_roots(&g).iter().map(|r| r.value).collect()
+}
+
+/// The roll rates within which a root of the trim condition at the fold's aileron is the fold
+/// itself: the fold is a double root at its exact aileron, and the rounded aileron splits it.
+pub(crate) fn fold_window(fold: &JumpPoint) -> (f64, f64) {
+    let tol = 1e-6 * (1.0 + fold.p0.abs());
+    (fold.p0 - tol, fold.p0 + tol)
+}
+
+/// Every stable equilibrium at the aileron of the fold `fold` other than the fold itself: of the
+/// real roots `roots` of the trim condition at that aileron ([`landing_roots`]), those outside
+/// [`fold_window`] with finite trims and all eigenvalues of J5 in the left half-plane.
+pub(crate) fn landings(
+    at: &AtTrim<'_>,
+    trims: &[InAileron],
+    fold: &JumpPoint,
+    roots: &[f64],
+) -> Vec<Landing> {
+    let (lo, hi) = fold_window(fold);
+    roots
         .iter()
-        .map(|r| r.value)
-        // The fold is a double root at its exact aileron; the rounded aileron splits it.
-        .filter(|p| (p - fold.p0).abs() > 1e-6 * (1.0 + fold.p0.abs()))
+        .copied()
+        .filter(|p| !(lo..=hi).contains(p))
         .filter_map(|p0| {
             let dv = trims[0].eval(p0, 0.0);
             let [alpha, beta, q, r] =
                 std::array::from_fn(|i| trims[i + 1].eval(p0, fold.delta_a_rad) / dv);
             let t = [alpha, beta, p0, q, r];
-            (t.iter().all(|v| v.is_finite()) && h.stable(&t)).then_some(Landing {
+            (t.iter().all(|v| v.is_finite()) && at.stable(&t)).then_some(Landing {
                 p0,
                 alpha,
                 beta,
@@ -467,8 +560,8 @@ pub(super) fn landings(
 /// aileron direction meets the mirror point (-P0, -delta_a) with the same kind, omega and l1
 /// (the symmetry maps J5 to a similar matrix). `None` when the wings-level trim is itself
 /// unstable, or the branch diverges or runs off the aileron range first.
-pub(super) fn first_departure(
-    h: &HopfPolys,
+pub(crate) fn first_departure(
+    h: &AtTrim<'_>,
     g: &InAileron,
     trims: &[InAileron],
     divergence: &[f64],
@@ -521,14 +614,17 @@ pub(super) fn first_departure(
     })
 }
 
-/// The zero-sideslip Hopf roll rates: positive roots of the zero-sideslip Hopf polynomial whose
-/// omega^2 at the beta = 0 trim is positive.
-pub(super) fn zs_hopf_roll_rates(h: &HopfPolys, zs_trims: &[InAileron]) -> Vec<(f64, f64)> {
+/// The zero-sideslip Hopf roll rates: of the positive roots `roots` of the zero-sideslip Hopf
+/// polynomial, those whose omega^2 at the beta = 0 trim is positive, with their omega.
+pub(crate) fn zs_hopf_roll_rates(
+    h: &AtTrim<'_>,
+    roots: &[f64],
+    zs_trims: &[InAileron],
+) -> Vec<(f64, f64)> {
     let o = orlando();
-    positive_roots(&h.zs_hopf)
+    roots
         .iter()
-        .filter_map(|root| {
-            let p0 = root.value;
+        .filter_map(|&p0| {
             let dv = zs_trims[0].eval(p0, 0.0);
             let [alpha, q, r] = std::array::from_fn(|i| zs_trims[i + 1].eval(p0, 0.0) / dv);
             let c = h.coefficients(&[alpha, 0.0, p0, q, r]);

@@ -18,12 +18,17 @@
 //! assert!((a.critical.unwrap().p0 - 1.706288).abs() < 1e-6);
 //! ```
 
-use super::{analyze_with, check, parametric, Analysis, AnalysisError, Found, InAileron};
+use super::departure::fold_window;
+use super::{
+    analyze_with, check, parametric, Analysis, AnalysisError, AtTrim, Departures, Found, InAileron,
+    JumpPoint, LocalPolys,
+};
 use crate::aircraft::Aircraft;
 use crate::algebra::Sym;
 use crate::certified::dense::{IPoly, IPoly2};
 use crate::certified::{
-    positive_roots_by, value_at, Bracket, Criterion, EnclosedPolys, JumpPolys, Uncertified, Values,
+    positive_roots_by, real_roots_outside, trim_condition_at, value_at, Bracket, Criterion,
+    EnclosedHopf, EnclosedPolys, JumpPolys, Uncertified, Values,
 };
 use crate::derivation::Ratio;
 use crate::equations::symbols;
@@ -54,10 +59,33 @@ pub fn analyze_routed(
     aircraft: &Aircraft,
     delta_e_rad: f64,
 ) -> Result<(Analysis, Route), AnalysisError> {
+    analyze_routed_with(aircraft, delta_e_rad, false)
+}
+
+/// [`super::analyze_with`] by the certified route where it succeeds, saying which route
+/// answered: with `departures`, the full answer of [`super::analyze`] (Hopf points with omega
+/// and l1, landings, first departure, zero-sideslip Hopf roll rates).
+///
+/// The departure part is certified the same way as the jump part: the Hopf polynomials
+/// ([`EnclosedHopf`], the factor `det(A)^4` the exact path strips taken out before any product)
+/// and the trim condition at each fold's aileron are enclosed, and their roots isolated and
+/// refined ([`crate::certified::positive_roots_windowed`],
+/// [`crate::certified::real_roots_outside`]); everything evaluated at the roots (omega^2,
+/// omega, l1, stability) is the exact path's f64 evaluation ([`super::AtTrim`]), of the
+/// parametric polynomials at the aircraft's data instead of the specialised ones. Any
+/// certificate that fails sends the whole analysis to the exact path, and so does aileron yaw
+/// (`n_delta_a != 0`) for the departure part: the trim then depends on delta_a and the exact
+/// path eliminates it from the Hopf polynomial by a resultant, which is not enclosed here
+/// ([`Uncertified::Uncovered`]).
+pub fn analyze_routed_with(
+    aircraft: &Aircraft,
+    delta_e_rad: f64,
+    departures: bool,
+) -> Result<(Analysis, Route), AnalysisError> {
     if !delta_e_rad.is_finite() || delta_e_rad.abs() > std::f64::consts::FRAC_PI_2 {
         return Err(AnalysisError::DeltaE(delta_e_rad));
     }
-    let why = match certified(aircraft, delta_e_rad) {
+    let why = match certified(aircraft, delta_e_rad, departures) {
         Ok((a, width)) => match check(&a) {
             Ok(()) => return Ok((a, Route::Certified(width))),
             // Values the checks refuse (not finite, indistinct in f64) are the exact path's
@@ -66,11 +94,15 @@ pub fn analyze_routed(
         },
         Err(why) => why,
     };
-    analyze_with(aircraft, delta_e_rad, false).map(|a| (a, Route::Exact(why)))
+    analyze_with(aircraft, delta_e_rad, departures).map(|a| (a, Route::Exact(why)))
 }
 
 /// The certified route and its widest relative bracket, or why it cannot certify.
-fn certified(aircraft: &Aircraft, delta_e_rad: f64) -> Result<(Analysis, f64), Uncertified> {
+fn certified(
+    aircraft: &Aircraft,
+    delta_e_rad: f64,
+    departures: bool,
+) -> Result<(Analysis, f64), Uncertified> {
     let par = parametric();
     let v = Values::of(aircraft, delta_e_rad, 0.0);
     let e = EnclosedPolys::new(&v)?;
@@ -113,7 +145,7 @@ fn certified(aircraft: &Aircraft, delta_e_rad: f64) -> Result<(Analysis, f64), U
     }
     let value = |b: Vec<Bracket>| b.iter().map(|r| r.value).collect::<Vec<f64>>();
     let found = Found {
-        divergence: value(divergence),
+        divergence: value(divergence.clone()),
         jump_roots: value(jump),
         pole_roots: value(poles),
         zs_roots: value(zs_roots),
@@ -149,7 +181,75 @@ fn certified(aircraft: &Aircraft, delta_e_rad: f64) -> Result<(Analysis, f64), U
         let eval = |r: &Ratio| r.num.eval_f64(&look) / r.den.eval_f64(&look);
         (eval(&par.zs_delta_a), eval(&par.zs_delta_r))
     };
-    Ok((found.assemble(aircraft, delta_e_rad, &zs_controls).0, width))
+    let (mut analysis, critical) = found.assemble(aircraft, delta_e_rad, &zs_controls);
+    if !departures {
+        return Ok((analysis, width));
+    }
+    let local = LocalPolys::parametric();
+    let mut values: Vec<(Sym, f64)> = s.params.iter().copied().zip(data).collect();
+    values.extend([(s.delta_e, delta_e_rad), (s.delta_r, 0.0)]);
+    let input = certified_departures(&v, &e, &divergence, &analysis.jump, local.at(&values))?;
+    found.add_departures(&mut analysis, critical, &input.0, (aircraft, delta_e_rad));
+    Ok((analysis, width.max(input.1)))
+}
+
+/// The departure part's roots by the certified route (the Hopf polynomials' positive roots,
+/// proven distinct from det A's, the trim condition's real roots at each fold's aileron) and
+/// their widest relative bracket.
+fn certified_departures<'a>(
+    v: &Values,
+    e: &EnclosedPolys,
+    divergence: &[Bracket],
+    jump: &[JumpPoint],
+    at: AtTrim<'a>,
+) -> Result<(Departures<'a>, f64), Uncertified> {
+    let h = EnclosedHopf::new(v)?;
+    let hopf = h.positive_roots(v, false, MAX_WIDTH)?;
+    apart(&hopf, divergence)?;
+    let zs_hopf = h.positive_roots(v, true, MAX_WIDTH)?;
+    let zs_det = positive_roots_by(
+        &e.zs_det,
+        Some(&|x| value_at(v, Criterion::ZsDet, x)),
+        MAX_WIDTH,
+    )?;
+    apart(&zs_hopf, &zs_det)?;
+    // det A is even in P0: its real roots are the divergence roll rates and their mirrors.
+    let det_a_roots: Vec<Bracket> = divergence
+        .iter()
+        .map(|b| Bracket {
+            lo: -b.hi,
+            hi: -b.lo,
+            value: -b.value,
+        })
+        .chain(divergence.iter().copied())
+        .collect();
+    let mut landing = Vec::with_capacity(jump.len());
+    for j in jump {
+        let g = e.trim_condition.at_aileron(I::point(j.delta_a_rad));
+        let value = |x: f64| trim_condition_at(v, x, j.delta_a_rad);
+        let roots = real_roots_outside(&g, fold_window(j), Some(&value), MAX_WIDTH)?;
+        apart(&roots, &det_a_roots)?;
+        landing.push(roots);
+    }
+    let width = [&hopf, &zs_hopf]
+        .into_iter()
+        .chain(&landing)
+        .flat_map(|b| b.iter().map(Bracket::relative_width))
+        .fold(0.0, f64::max);
+    if width > MAX_WIDTH {
+        return Err(Uncertified::Wide);
+    }
+    let value = |b: &[Bracket]| b.iter().map(|r| r.value).collect::<Vec<f64>>();
+    Ok((
+        Departures {
+            at,
+            hopf_roots: value(&hopf),
+            hopf_at: InAileron(vec![h.hopf.mid()]),
+            zs_hopf_roots: value(&zs_hopf),
+            landing_roots: landing.iter().map(|b| value(b)).collect(),
+        },
+        width,
+    ))
 }
 
 /// Proves that no bracket of `a` meets one of `b` (their roots are distinct).

@@ -161,7 +161,12 @@ pub struct Cleared {
 
 impl Cleared {
     fn new(f: &Poly, t: &[Sym]) -> Cleared {
-        let groups = TrimGroups::new(f, t, TRIM_DEGREE);
+        Cleared::with_power(f, t, TRIM_DEGREE)
+    }
+
+    /// Step 8 of `f` (of degree at most `k` in the trim symbols `t`) with clearing power `k`.
+    fn with_power(f: &Poly, t: &[Sym], k: u32) -> Cleared {
+        let groups = TrimGroups::new(f, t, k);
         let coefficients = groups.coefficients().map(Compiled::new).collect();
         Cleared {
             groups,
@@ -194,6 +199,39 @@ pub struct Parametric {
     /// The lateral control determinant `l_delta_a n_delta_r - l_delta_r n_delta_a` (the
     /// denominator of the zero-sideslip controls).
     pub lateral: Compiled,
+}
+
+/// The characteristic coefficients `c1..c5` of J5 ([`crate::specialise::parametric_characteristic`])
+/// grouped for step 8 with clearing power `k` for `c_k` (`C_k = den^k c_k(num / den)`, as
+/// [`crate::derivation::hopf::cleared_coefficients`] clears them): the Hopf polynomial's
+/// ingredients, compiled on first use (the jump analysis, Monte Carlo and clearance never need
+/// them).
+#[derive(Debug)]
+pub struct Characteristic {
+    /// `c1..c5` on the trim of Eqs 3-4.
+    pub c: [Cleared; 5],
+    /// `c1..c5` at beta0 = 0 on the zero-sideslip trim (Eq. 35).
+    pub zs_c: [Cleared; 5],
+}
+
+impl Characteristic {
+    /// The compiled characteristic coefficients of the process's parametric derivation.
+    pub fn get() -> &'static Characteristic {
+        static C: OnceLock<Characteristic> = OnceLock::new();
+        C.get_or_init(|| {
+            let s = symbols();
+            let c = crate::specialise::parametric_characteristic();
+            let t4 = [s.alpha0, s.beta0, s.q0, s.r0];
+            let t3 = [s.alpha0, s.q0, s.r0];
+            let zero = Poly::zero();
+            Characteristic {
+                c: std::array::from_fn(|k| Cleared::with_power(&c[k], &t4, k as u32 + 1)),
+                zs_c: std::array::from_fn(|k| {
+                    Cleared::with_power(&c[k].subs(s.beta0, &zero), &t3, k as u32 + 1)
+                }),
+            }
+        })
+    }
 }
 
 impl Parametric {

@@ -149,6 +149,19 @@ impl<T: Num> Dense<T> {
         horner(&self.0, x)
     }
 
+    /// `self(x0 + y)` as a polynomial in `y` (the Taylor expansion at `x0`, enclosed), by
+    /// repeated synthetic division in place.
+    pub fn shift(&self, x0: T) -> Dense<T> {
+        let mut a = self.0.clone();
+        let n = a.len();
+        for i in 0..n {
+            for j in (i..n - 1).rev() {
+                a[j] = a[j] + x0 * a[j + 1];
+            }
+        }
+        Dense::new(a)
+    }
+
     /// The derivative.
     pub fn derivative(&self) -> Dense<T> {
         Dense::new(
@@ -252,6 +265,17 @@ impl IPoly {
         )
     }
 
+    /// `p(-x)`.
+    pub fn mirror(&self) -> IPoly {
+        IPoly::new(
+            self.0
+                .iter()
+                .enumerate()
+                .map(|(i, c)| if i % 2 == 1 { -*c } else { *c })
+                .collect(),
+        )
+    }
+
     /// The midpoints of the coefficients, for floating-point evaluation.
     pub fn mid(&self) -> F64Poly {
         F64Poly(self.0.iter().map(|c| c.mid()).collect())
@@ -327,6 +351,14 @@ impl<T: Num> Dense2<T> {
             }
         }
         Dense2::new(r)
+    }
+
+    /// The polynomial in P0 at `delta_a = da`.
+    pub fn at_aileron(&self, da: T) -> Dense<T> {
+        self.0
+            .iter()
+            .rev()
+            .fold(Dense::zero(), |acc, c| acc.scale(da).add(c))
     }
 
     /// The polynomial in P0 when delta_a does not occur (`None` otherwise).

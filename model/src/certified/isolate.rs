@@ -73,6 +73,9 @@ pub enum Uncertified {
     /// A root is certified, but only within a bracket wider than the caller accepts (an
     /// ill-conditioned root: double precision cannot pin it down further).
     Wide,
+    /// The certified route does not cover this case (the Hopf points with aileron yaw, whose
+    /// polynomial is a resultant of high degree in delta_a): the exact path answers.
+    Uncovered,
 }
 
 const MAX_DEPTH: u32 = 60;
@@ -117,6 +120,198 @@ pub fn positive_roots_by(
         return Err(Uncertified::Sign);
     }
     Ok(brackets)
+}
+
+/// The real roots of every polynomial with coefficients in `p`'s intervals outside the window
+/// `[lo, hi]` (`0 < lo < hi`), ascending, each refined towards relative width `target`: the
+/// negative ones as positive roots of `p(-x)`, those in `(0, lo)` from `p(lo t)` on `(0, 1)`,
+/// those beyond `hi` from `p(hi + y)` on `(0, inf)`. Whatever lies in the window is neither
+/// counted nor isolated (e.g. a nearly double root there). `p(0)`, `p(lo)` and `p(hi)` must
+/// have certain signs, from the coefficients or from `value` (another enclosure of the value at a
+/// double, intersected with it; also used to refine).
+pub fn real_roots_outside(
+    p: &IPoly,
+    (lo, hi): (f64, f64),
+    value: Option<&dyn Fn(f64) -> I>,
+    target: f64,
+) -> Result<Vec<Bracket>, Uncertified> {
+    if !(lo > 0.0 && hi > lo) {
+        return Err(Uncertified::Degenerate);
+    }
+    let c = p.coeffs();
+    if c.is_empty() || c[0].contains_zero() {
+        return Err(Uncertified::Degenerate);
+    }
+    let at = |x: f64| {
+        let c = p.eval(I::point(x));
+        value.and_then(|v| c.intersect(v(x))).unwrap_or(c)
+    };
+    let (at_lo, at_hi) = (at(lo), at(hi));
+    let mut out: Vec<Bracket> = positive_roots_by(&p.mirror(), None, target)?
+        .into_iter()
+        .rev()
+        .map(|b| Bracket {
+            lo: -b.hi,
+            hi: -b.lo,
+            value: -b.value,
+        })
+        .collect();
+    let scale = I::point(lo);
+    let below: Vec<I> = c
+        .iter()
+        .enumerate()
+        .map(|(i, a)| *a * scale.powi(i as u32))
+        .collect();
+    // The Bernstein end coefficients are the values at the window's ends: the tighter
+    // enclosure of those decides their signs.
+    for (tl, tr) in isolate_unit_ends(&below, MAX_NODES, (None, Some(at_lo)))? {
+        let (a, b) = (next_down(lo * tl).max(0.0), next_up(lo * tr).min(lo));
+        out.push(refine(p, value, target, a, b)?);
+    }
+    let mut above = p.shift(I::point(hi)).0;
+    if let Some(c0) = above.first_mut() {
+        *c0 = c0.intersect(at_hi).ok_or(Uncertified::Sign)?;
+    }
+    for (yl, yr) in isolate_positive(&above)? {
+        let (a, b) = (next_down(hi + yl).max(hi), next_up(hi + yr));
+        out.push(refine(p, value, target, a, b)?);
+    }
+    out.sort_by(|a, b| a.lo.total_cmp(&b.lo));
+    if out.windows(2).any(|w| w[0].hi >= w[1].lo) {
+        return Err(Uncertified::Sign);
+    }
+    Ok(out)
+}
+
+/// [`positive_roots_by`] for a polynomial whose expansion in powers of P0 is too cancellation-
+/// prone to isolate roots from (the Hopf polynomial: degree 32, its terms up to 10^11 times its
+/// value where its roots lie), given instead by `local(x0)`, an enclosure of its Taylor
+/// expansion `p(x0 + y)` in `y` at a double `x0`, built from ingredients of low degree.
+///
+/// `(0, inf)` is covered by windows `[x0, x0 + h]` up to a bound on the positive roots of
+/// `global` (the expansion in powers of P0, whose leading and constant coefficients must
+/// exclude zero): `[0, 1/4]`, then one per octave `[2^j, 2^(j+1)]`, so that `h` is a power of
+/// two and `y = h t` maps the window to `[0, 1]` exactly. In each, the local expansion is
+/// isolated on `[0, 1]` as in [`positive_roots`] (its ends' signs certain, from the expansion
+/// or from `value`) with a small bisection budget; a window that exhausts it is halved (new
+/// expansions at the halves) up to [`MAX_WINDOW_SPLITS`] times. Each root is refined on its
+/// window's expansion and on `value`.
+pub fn positive_roots_windowed(
+    global: &IPoly,
+    local: &dyn Fn(f64) -> IPoly,
+    value: &dyn Fn(f64) -> I,
+    target: f64,
+) -> Result<Vec<Bracket>, Uncertified> {
+    let c = global.coeffs();
+    let n = c.len().checked_sub(1).ok_or(Uncertified::Degenerate)?;
+    if c[0].contains_zero() || c[n].contains_zero() {
+        return Err(Uncertified::Degenerate);
+    }
+    let Some(bound) = positive_root_bound(c) else {
+        return Ok(Vec::new());
+    };
+    if bound.is_nan() || bound > MAX_WINDOWED_BOUND {
+        return Err(Uncertified::Degenerate);
+    }
+    let mut windows = vec![(0.0, 0.25, 0)];
+    let mut x0 = 0.25;
+    while x0 < bound {
+        windows.push((x0, x0, 0));
+        x0 *= 2.0;
+    }
+    windows.reverse();
+    let mut out = Vec::new();
+    while let Some((x0, h, splits)) = windows.pop() {
+        let q = local(x0);
+        let at = |y: I| q.eval(y);
+        // The window's ends: x0 (y = 0) and x0 + h (y = h), each sign certain.
+        let end_sign = |x: f64, y: I| {
+            let c = at(y);
+            c.sign().or_else(|| c.intersect(value(x))?.sign())
+        };
+        if end_sign(x0, I::point(0.0)).is_none() || end_sign(x0 + h, I::point(h)).is_none() {
+            return Err(Uncertified::Sign);
+        }
+        let k = h.log2() as i32;
+        let scaled: Vec<I> = q
+            .coeffs()
+            .iter()
+            .enumerate()
+            .map(|(i, a)| a.scale2(k * i as i32))
+            .collect();
+        let isolated = match isolate_unit_within(&scaled, WINDOW_NODES) {
+            Ok(t) => t,
+            Err(Uncertified::Budget | Uncertified::Sign) if splits < MAX_WINDOW_SPLITS => {
+                windows.push((x0 + h / 2.0, h / 2.0, splits + 1));
+                windows.push((x0, h / 2.0, splits + 1));
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
+        for (tl, tr) in isolated {
+            let lo = next_down(x0 + h * tl).max(x0);
+            let hi = next_up(x0 + h * tr).min(x0 + h);
+            // A first bracket on the window's expansion, then the final one on an expansion at
+            // the root itself, whose enclosure is tightest there.
+            let first = refine_local(&Local::of(&q, x0), None, COARSE, lo, hi)?;
+            let at_root = local(first.value);
+            let bracket = refine_local(
+                &Local::of(&at_root, first.value),
+                Some(value),
+                target,
+                first.lo,
+                first.hi,
+            )?;
+            out.push(bracket);
+        }
+    }
+    out.sort_by(|a, b| a.lo.total_cmp(&b.lo));
+    if out.windows(2).any(|w| w[0].hi >= w[1].lo) {
+        return Err(Uncertified::Sign);
+    }
+    Ok(out)
+}
+
+/// The relative width of the first bracket of a root in [`positive_roots_windowed`], on the
+/// window's expansion (the final one is refined on an expansion at that bracket's root).
+const COARSE: f64 = 1e-6;
+
+/// The largest positive-root bound [`positive_roots_windowed`] covers with windows (a roll
+/// rate far beyond any aircraft's).
+const MAX_WINDOWED_BOUND: f64 = 65536.0;
+
+/// How often a window of [`positive_roots_windowed`] may be halved.
+pub const MAX_WINDOW_SPLITS: u32 = 8;
+
+/// The bisection budget of one window of [`positive_roots_windowed`].
+const WINDOW_NODES: usize = 16;
+
+/// A bound on the positive roots (Kioustelidis: `2 max (|a_i| / a_n)^(1/(n-i))` over the
+/// coefficients that may have the sign opposite to the leading one), rounded up to a power of
+/// two; `None` when no coefficient can have that sign (no positive root at all). The leading
+/// coefficient must exclude zero.
+fn positive_root_bound(c: &[I]) -> Option<f64> {
+    let n = c.len() - 1;
+    let lead = c[n];
+    let opposite = |a: &I| {
+        if lead.lo > 0.0 {
+            a.lo < 0.0
+        } else {
+            a.hi > 0.0
+        }
+    };
+    let m = (0..n)
+        .filter(|i| opposite(&c[*i]))
+        .map(|i| (c[i].mag() / lead.mig()).powf(1.0 / (n - i) as f64))
+        .fold(None, |acc: Option<f64>, r| {
+            Some(acc.map_or(r, |a| a.max(r)))
+        })?;
+    let b = 2.0 * m * (1.0 + 1e-9);
+    Some(if b.is_finite() && b > 0.0 {
+        2f64.powi(b.log2().ceil() as i32)
+    } else {
+        f64::INFINITY
+    })
 }
 
 /// Isolating intervals `[lo, hi]` (one root of every polynomial with coefficients in `c`
@@ -272,13 +467,40 @@ fn split(b: &[I], t: f64) -> (Vec<I>, Vec<I>) {
 /// The open sub-intervals `(tl, tr)` of `(0, 1)` holding exactly one root each, for a
 /// polynomial (ascending coefficients `a`) with certain, nonzero values at 0 and 1.
 fn isolate_unit(a: &[I]) -> Result<Vec<(f64, f64)>, Uncertified> {
-    let b = bernstein(a).ok_or(Uncertified::Degenerate)?;
+    isolate_unit_within(a, MAX_NODES)
+}
+
+/// [`isolate_unit`] with a budget of `max_nodes` bisection nodes.
+fn isolate_unit_within(a: &[I], max_nodes: usize) -> Result<Vec<(f64, f64)>, Uncertified> {
+    isolate_unit_ends(a, max_nodes, (None, None))
+}
+
+/// [`isolate_unit_within`] with tighter enclosures of the values at 0 and 1 (`ends`), which
+/// are the first and last Bernstein coefficients of every node that reaches that end.
+fn isolate_unit_ends(
+    a: &[I],
+    max_nodes: usize,
+    ends: (Option<I>, Option<I>),
+) -> Result<Vec<(f64, f64)>, Uncertified> {
+    let mut b = bernstein(a).ok_or(Uncertified::Degenerate)?;
+    let tighten = |b: &mut Vec<I>, tl: f64, tr: f64| -> Result<(), Uncertified> {
+        let n = b.len() - 1;
+        if let (0.0, Some(e)) = (tl, ends.0) {
+            b[0] = b[0].intersect(e).ok_or(Uncertified::Sign)?;
+        }
+        if let (1.0, Some(e)) = (tr, ends.1) {
+            b[n] = b[n].intersect(e).ok_or(Uncertified::Sign)?;
+        }
+        Ok(())
+    };
+    tighten(&mut b, 0.0, 1.0)?;
     let mut out = Vec::new();
     let mut stack = vec![(0.0f64, 1.0f64, b, 0u32)];
     let mut nodes = 0usize;
-    while let Some((tl, tr, b, depth)) = stack.pop() {
+    while let Some((tl, tr, mut b, depth)) = stack.pop() {
+        tighten(&mut b, tl, tr)?;
         nodes += 1;
-        if nodes > MAX_NODES || depth > MAX_DEPTH {
+        if nodes > max_nodes || depth > MAX_DEPTH {
             return Err(Uncertified::Budget);
         }
         match variations(&b) {
@@ -321,7 +543,38 @@ fn refine(
     lo: f64,
     hi: f64,
 ) -> Result<Bracket, Uncertified> {
-    let cheap = |x: f64| p.eval(I::point(x));
+    refine_local(&Local::of(p, 0.0), value, target, lo, hi)
+}
+
+/// A polynomial near its root as [`refine_local`] uses it: a cheap enclosure of its value and
+/// floating-point values of it and its derivative.
+struct Local<'a> {
+    cheap: Box<dyn Fn(f64) -> I + 'a>,
+    f: Box<dyn Fn(f64) -> f64 + 'a>,
+    df: Box<dyn Fn(f64) -> f64 + 'a>,
+}
+
+impl Local<'_> {
+    /// The polynomial given by its expansion `q` in `y = x - x0`.
+    fn of(q: &IPoly, x0: f64) -> Local<'_> {
+        let (f, df) = (q.mid(), q.derivative().mid());
+        Local {
+            cheap: Box::new(move |x| q.eval(I::point(x) - I::point(x0))),
+            f: Box::new(move |x| f.eval(x - x0)),
+            df: Box::new(move |x| df.eval(x - x0)),
+        }
+    }
+}
+
+/// [`refine`] of a polynomial given by [`Local`].
+fn refine_local(
+    p: &Local<'_>,
+    value: Option<&dyn Fn(f64) -> I>,
+    target: f64,
+    lo: f64,
+    hi: f64,
+) -> Result<Bracket, Uncertified> {
+    let cheap = &p.cheap;
     let end_sign = |x: f64| {
         let c = cheap(x);
         c.sign()
@@ -333,13 +586,13 @@ fn refine(
     if slo == shi || lo >= hi || lo.is_nan() || hi.is_nan() {
         return Err(Uncertified::Sign);
     }
-    let (f, df) = (p.mid(), p.derivative().mid());
+    let (f, df) = (&p.f, &p.df);
     let inside = |x: f64, lo: f64, hi: f64| x > lo && x < hi;
     let (mut a, mut b) = (lo, hi);
-    let fa_sign = f.eval(a).signum();
+    let fa_sign = f(a).signum();
     let mut x = 0.5 * a + 0.5 * b;
     for _ in 0..100 {
-        let fx = f.eval(x);
+        let fx = f(x);
         if fx == 0.0 || b <= next_up(a) {
             break;
         }
@@ -348,7 +601,7 @@ fn refine(
         } else {
             b = x;
         }
-        let newton = x - fx / df.eval(x);
+        let newton = x - fx / df(x);
         let next = if inside(newton, a, b) {
             newton
         } else {
@@ -362,7 +615,7 @@ fn refine(
     if !inside(x, lo, hi) {
         x = 0.5 * lo + 0.5 * hi;
     }
-    let slope = df.eval(x).abs();
+    let slope = df(x).abs();
     let certify = |enclose: &dyn Fn(f64) -> I, x: f64| -> (f64, f64, f64) {
         certified_bracket(enclose, (lo, slo), (hi, shi), x, slope)
     };
@@ -377,12 +630,15 @@ fn refine(
                 c.intersect(value(x)).unwrap_or(c)
             }
         };
-        // The cheap bracket holds the root: the tight one is searched inside it.
-        let (l, h, bx2) = certified_bracket(&tight, (blo, slo), (bhi, shi), bx, slope);
+        // The cheap bracket holds the root: the tight one is searched inside it, from a guess
+        // by regula falsi (Illinois) on the tight enclosure's midpoints, a much better guess
+        // than the cheap polynomial's Newton root (nothing certified: only where to start).
+        let guess = illinois(&|x| tight(x).mid(), blo, bhi, bx);
+        let (l, h, bx2) = certified_bracket(&tight, (blo, slo), (bhi, shi), guess, slope);
         (blo, bhi, bx) = (l, h, bx2);
     }
     let value = if bhi <= next_up(blo) {
-        if f.eval(blo).abs() <= f.eval(bhi).abs() {
+        if f(blo).abs() <= f(bhi).abs() {
             blo
         } else {
             bhi
@@ -398,6 +654,44 @@ fn refine(
         value,
     })
 }
+
+/// A few steps of the Illinois variant of regula falsi for a root of `f` in `[a, b]`; `x` when
+/// `f` has no sign change there (or a step leaves the interval).
+fn illinois(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64, x: f64) -> f64 {
+    let (mut fa, mut fb) = (f(a), f(b));
+    if fa * fb >= 0.0 || (fa * fb).is_nan() {
+        return x;
+    }
+    let mut side = 0;
+    let mut c = x;
+    for _ in 0..ILLINOIS_STEPS {
+        c = (a * fb - b * fa) / (fb - fa);
+        if !(c > a && c < b) {
+            return x;
+        }
+        let fc = f(c);
+        if fc == 0.0 {
+            break;
+        }
+        if fc * fb < 0.0 {
+            (a, fa) = (b, fb);
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        } else {
+            if side == -1 {
+                fa *= 0.5;
+            }
+            side = -1;
+        }
+        (b, fb) = (c, fc);
+    }
+    c
+}
+
+/// How many steps [`illinois`] takes.
+const ILLINOIS_STEPS: usize = 4;
 
 /// The narrowest bracket around `x` within `(lo, hi)` (whose ends have the known signs `slo`,
 /// `shi`) that `enclose` certifies: half-width from the enclosure's width over `slope`, doubled

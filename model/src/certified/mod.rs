@@ -40,12 +40,16 @@ pub mod num;
 
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::MAX_SYMS;
+use crate::derivation::hopf::{stripped_delta4_in, TRIM_FACTOR_POWERS};
 use crate::derivation::Clearing;
 use crate::equations::symbols;
 use crate::interval::I;
-use compiled::{Cleared, Parametric, Table};
+use compiled::{Characteristic, Cleared, Parametric, Table};
 use dense::{Dense, Dense2, IPoly, IPoly2};
-pub use isolate::{positive_roots, positive_roots_by, Bracket, Uncertified};
+pub use isolate::{
+    positive_roots, positive_roots_by, positive_roots_windowed, real_roots_outside, Bracket,
+    Uncertified,
+};
 use num::Num;
 
 /// The enclosures of an aircraft's data and controls (one per symbol of the model that has a
@@ -99,6 +103,8 @@ struct Lifted<T> {
     lateral: Dense2<T>,
     /// The zero-sideslip results, lifted on first use (clearance never needs them).
     zs: std::sync::OnceLock<LiftedZs<T>>,
+    /// The characteristic coefficients, lifted on first use (only the Hopf points need them).
+    hopf: std::sync::OnceLock<LiftedHopf<T>>,
     /// The table they are lifted from.
     table: Table<T>,
 }
@@ -110,6 +116,14 @@ struct LiftedZs<T> {
     zs_trim: [Dense2<T>; 3],
     zs_det_j5: Vec<Dense2<T>>,
     zs_d: Vec<Dense2<T>>,
+}
+
+/// The characteristic coefficients of [`Characteristic`] lifted (group coefficients of each
+/// `c_k`, unconstrained and zero-sideslip).
+#[derive(Clone, Debug)]
+struct LiftedHopf<T> {
+    c: [Vec<Dense2<T>>; 5],
+    zs_c: [Vec<Dense2<T>>; 5],
 }
 
 fn lift_groups<T: Num>(g: &Cleared, t: &Table<T>) -> Vec<Dense2<T>> {
@@ -126,6 +140,7 @@ impl<T: Num> Lifted<T> {
             d: lift_groups(&c.d, &t),
             lateral: c.lateral.lift(&t),
             zs: std::sync::OnceLock::new(),
+            hopf: std::sync::OnceLock::new(),
             table: t,
         }
     }
@@ -138,6 +153,16 @@ impl<T: Num> Lifted<T> {
                 zs_trim: std::array::from_fn(|i| c.zs_trim[i].lift(t)),
                 zs_det_j5: lift_groups(&c.zs_det_j5, t),
                 zs_d: lift_groups(&c.zs_d, t),
+            }
+        })
+    }
+
+    fn hopf(&self) -> &LiftedHopf<T> {
+        self.hopf.get_or_init(|| {
+            let (c, t) = (Characteristic::get(), &self.table);
+            LiftedHopf {
+                c: std::array::from_fn(|k| lift_groups(&c.c[k], t)),
+                zs_c: std::array::from_fn(|k| lift_groups(&c.zs_c[k], t)),
             }
         })
     }
@@ -159,6 +184,8 @@ pub trait Coeff: Clone {
     fn div_exact(&self, d: &Self) -> Option<Self>;
     /// Zero.
     fn zero() -> Self;
+    /// The constant `c`.
+    fn constant(c: I) -> Self;
 }
 
 impl<T: Num> Coeff for Dense<T> {
@@ -179,6 +206,9 @@ impl<T: Num> Coeff for Dense<T> {
     }
     fn zero() -> Dense<T> {
         Dense::zero()
+    }
+    fn constant(c: I) -> Dense<T> {
+        Dense::constant(T::constant(c))
     }
 }
 
@@ -204,6 +234,9 @@ impl<T: Num> Coeff for Scalar<T> {
     }
     fn zero() -> Self {
         Scalar(T::constant(I::point(0.0)))
+    }
+    fn constant(c: I) -> Self {
+        Scalar(T::constant(c))
     }
 }
 
@@ -400,6 +433,16 @@ impl<M: Mode> Unconstrained<M> {
     }
 }
 
+/// The numerators of [alpha0, Q0, R0] of the zero-sideslip trim and their denominator det A1,
+/// as values of the ring `m`.
+fn zs_trim_in<M: Mode>(m: &mut M, l: &Lifted<M::Num>) -> ([M::Value; 3], M::Value) {
+    let l = l.zs();
+    (
+        std::array::from_fn(|i| m.lifted(&l.zs_trim[i])),
+        m.lifted(&l.zs_det),
+    )
+}
+
 /// The criterion quantities of the zero-sideslip roll in a [`Mode`].
 struct ZeroSideslip<M: Mode> {
     zs_det: M::Coef,
@@ -411,9 +454,8 @@ struct ZeroSideslip<M: Mode> {
 impl<M: Mode> ZeroSideslip<M> {
     fn new(m: &mut M, l: &Lifted<M::Num>) -> Result<ZeroSideslip<M>, Uncertified> {
         let c = Parametric::get();
+        let (num, den) = zs_trim_in(m, l);
         let l = l.zs();
-        let den = m.lifted(&l.zs_det);
-        let num: [M::Value; 3] = std::array::from_fn(|i| m.lifted(&l.zs_trim[i]));
         let zs_jump = m.clear(&c.zs_det_j5, &l.zs_det_j5, &num, &den);
         let zs_d_det = m.clear(&c.zs_d, &l.zs_d, &num, &den);
         Ok(ZeroSideslip {
@@ -535,6 +577,143 @@ impl JumpPolys {
     }
 }
 
+/// `den^10 Delta4 / den^4` of a trim `t_i = num_i / den` (the Hopf polynomial with the factor
+/// the exact path strips, `analysis::strip`) from the lifted characteristic coefficients: each
+/// `C_k = den^k c_k(num / den)` by step 8, divided by its own power of `den`
+/// ([`TRIM_FACTOR_POWERS`], a certified exact division of a polynomial of low degree), and
+/// Delta4 with that factor taken out ([`stripped_delta4_in`]): the routines of the exact path,
+/// in the ring `m`. Dividing the expanded degree-48 polynomial by `den^4` instead would lose
+/// eight digits of its middle coefficients. Without aileron yaw only: delta_a must not occur
+/// ([`Uncertified::Uncovered`] otherwise).
+fn hopf_in<M: Mode>(
+    m: &mut M,
+    groups: &[Cleared; 5],
+    lifted: &[Vec<Dense2<M::Num>>; 5],
+    num: &[M::Value],
+    den: &M::Value,
+) -> Result<Reduced<M::Coef>, Uncertified> {
+    let uncovered = |_| Uncertified::Uncovered;
+    let scale = M::univariate(den).map_err(uncovered)?;
+    for n in num {
+        M::univariate(n).map_err(uncovered)?;
+    }
+    let mut c = Vec::with_capacity(5);
+    for (k, power) in TRIM_FACTOR_POWERS.iter().enumerate() {
+        let cleared =
+            M::univariate(&m.clear(&groups[k], &lifted[k], num, den)).map_err(uncovered)?;
+        c.push(
+            cleared
+                .div_exact(&scale.pow(*power))
+                .ok_or(Uncertified::Degenerate)?,
+        );
+    }
+    Ok(Reduced {
+        c: c.try_into()
+            .unwrap_or_else(|_| unreachable!("five coefficients")),
+        f: scale,
+    })
+}
+
+/// The characteristic coefficients at a trim, cleared and divided by their own powers of the
+/// trim's denominator `f` (`c'_k = C_k / f^(e_k)`), and `f`: what the Hopf polynomial is built
+/// from.
+#[derive(Clone, Debug)]
+struct Reduced<C> {
+    c: [C; 5],
+    f: C,
+}
+
+impl<C: Coeff> Reduced<C> {
+    /// `Delta4(C) / f^4`, the Hopf polynomial with det A's factor stripped.
+    fn delta4(&self) -> C {
+        stripped_delta4_in(&mut InCoef(std::marker::PhantomData), &self.c, &self.f)
+    }
+}
+
+impl Reduced<IPoly> {
+    /// The same at `P0 = x0 + y`, in `y`.
+    fn shift(&self, x0: f64) -> Reduced<IPoly> {
+        let x0 = I::point(x0);
+        Reduced {
+            c: std::array::from_fn(|k| self.c[k].shift(x0)),
+            f: self.f.shift(x0),
+        }
+    }
+}
+
+/// The coefficient ring of a [`Mode`] as a ring of step 8 (for the Hopf polynomial, whose
+/// ingredients are free of delta_a).
+struct InCoef<C>(std::marker::PhantomData<C>);
+
+impl<C: Coeff> Clearing for InCoef<C> {
+    type Value = C;
+    fn lift(&mut self, p: &crate::algebra::Poly) -> C {
+        C::constant(constant(p))
+    }
+    fn add(&mut self, a: &C, b: &C) -> C {
+        a.add(b)
+    }
+    fn mul(&mut self, a: &C, b: &C) -> C {
+        a.mul(b)
+    }
+}
+
+/// The Hopf polynomials of one aircraft without aileron yaw, enclosed: the interval counterpart
+/// of `analysis::HopfPolys`' `hopf` and `zs_hopf` (each proportional to the exact one by a
+/// constant, with the factor `det(A)^4` the exact path strips taken out, see `hopf_in`), and
+/// their certified positive roots.
+#[derive(Clone, Debug)]
+pub struct EnclosedHopf {
+    /// `det(A)^10 Delta4 / det(A)^4` in P0.
+    pub hopf: IPoly,
+    /// `det(A1)^10 Delta4 / det(A1)^4` at the zero-sideslip trim (beta0 = 0), in P0.
+    pub zs_hopf: IPoly,
+    reduced: Reduced<IPoly>,
+    zs_reduced: Reduced<IPoly>,
+}
+
+impl EnclosedHopf {
+    /// Encloses the Hopf polynomials of the data `v`; [`Uncertified::Uncovered`] with aileron
+    /// yaw (the trim then depends on delta_a, and the exact path eliminates it by a resultant).
+    pub fn new(v: &Values) -> Result<EnclosedHopf, Uncertified> {
+        let (l, m) = (&v.lifted, &mut InP0::new());
+        let (c, h) = (Characteristic::get(), l.hopf());
+        let u = Unconstrained::new(m, l)?;
+        let reduced = hopf_in(m, &c.c, &h.c, &u.trim, &u.det_a_value)?;
+        let (num, den) = zs_trim_in(m, l);
+        let zs_reduced = hopf_in(m, &c.zs_c, &h.zs_c, &num, &den)?;
+        Ok(EnclosedHopf {
+            hopf: reduced.delta4().symmetric(),
+            zs_hopf: zs_reduced.delta4().symmetric(),
+            reduced,
+            zs_reduced,
+        })
+    }
+
+    /// The certified positive roots of the Hopf polynomial (`zero_sideslip`: of the
+    /// zero-sideslip one) of the data `v`, each refined towards relative width `width`: by
+    /// [`positive_roots_windowed`] from Taylor expansions built from the reduced coefficients
+    /// (degree at most 12, shifted cheaply and accurately), with [`value_at`] through the trim.
+    pub fn positive_roots(
+        &self,
+        v: &Values,
+        zero_sideslip: bool,
+        width: f64,
+    ) -> Result<Vec<Bracket>, Uncertified> {
+        let (global, reduced, which) = if zero_sideslip {
+            (&self.zs_hopf, &self.zs_reduced, Criterion::ZsHopf)
+        } else {
+            (&self.hopf, &self.reduced, Criterion::Hopf)
+        };
+        positive_roots_windowed(
+            global,
+            &|x0| reduced.shift(x0).delta4(),
+            &|x| value_at(v, which, x),
+            width,
+        )
+    }
+}
+
 /// Which criterion polynomial [`value_at`] encloses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Criterion {
@@ -550,6 +729,10 @@ pub enum Criterion {
     ZsJump,
     /// `d det(A1)^2` at the zero-sideslip trim.
     ZsDDet,
+    /// The Hopf polynomial of [`EnclosedHopf`].
+    Hopf,
+    /// The zero-sideslip Hopf polynomial of [`EnclosedHopf`].
+    ZsHopf,
 }
 
 /// An enclosure of the value at `P0 = x` of a criterion polynomial of [`EnclosedPolys`],
@@ -570,6 +753,22 @@ pub fn value_at(v: &Values, which: Criterion, x: f64) -> I {
                 })
             }
         }
+        Criterion::Hopf => {
+            let den = m.lifted(&t.det_a);
+            let num: [Da<I>; 4] = std::array::from_fn(|i| m.lifted(&t.trim[i]));
+            hopf_in(&mut m, &Characteristic::get().c, &t.hopf().c, &num, &den).map(|r| r.delta4())
+        }
+        Criterion::ZsHopf => {
+            let (num, den) = zs_trim_in(&mut m, t);
+            hopf_in(
+                &mut m,
+                &Characteristic::get().zs_c,
+                &t.hopf().zs_c,
+                &num,
+                &den,
+            )
+            .map(|r| r.delta4())
+        }
         _ => ZeroSideslip::new(&mut m, t).map(|z| match which {
             Criterion::ZsDet => z.zs_det,
             Criterion::ZsJump => z.zs_jump,
@@ -577,6 +776,22 @@ pub fn value_at(v: &Values, which: Criterion, x: f64) -> I {
         }),
     };
     value.map_or_else(|_| I::entire(), |s| s.0)
+}
+
+/// An enclosure of the trim condition `det(A)^2 p_dot` at `P0 = x` and `delta_a = da`, through
+/// the trim (as [`value_at`]): the tight value of [`EnclosedPolys::trim_condition`] there.
+pub fn trim_condition_at(v: &Values, x: f64, da: f64) -> I {
+    let mut m = AtP0(I::point(x));
+    Unconstrained::new(&mut m, &v.lifted).map_or_else(
+        |_| I::entire(),
+        |u| {
+            let g = &u.trim_condition;
+            g.c[..g.len]
+                .iter()
+                .rev()
+                .fold(I::point(0.0), |acc, c| acc * I::point(da) + *c)
+        },
+    )
 }
 
 /// The unconstrained roll's criterion quantities at one roll rate, as polynomials in delta_a

@@ -48,7 +48,7 @@
 //! assert_eq!(value(&num).div(&value(&den)), Q::from(4));
 //! ```
 
-use super::{homogenize, Ratio};
+use super::{homogenize, Clearing, Exact, Ratio, TrimGroups};
 use crate::algebra::{Matrix, Poly, Sym, Q};
 use std::sync::OnceLock;
 
@@ -62,6 +62,9 @@ pub struct HopfSymbols {
     pub c: [Sym; 5],
     /// `w = omega^2` at a pair `+-i omega`.
     pub w: Sym,
+    /// A common factor `f` of the coefficients, `c_k = f^(e_k) c'_k` (see [`stripped`]), and the
+    /// rescaled `omega^2 / f^2` in the reduced odd part.
+    pub f: Sym,
 }
 
 /// The Hopf symbols (created once, after the model's).
@@ -73,6 +76,7 @@ pub fn hopf_symbols() -> &'static HopfSymbols {
             s: Sym::new("s"),
             c: std::array::from_fn(|i| Sym::new(&format!("c{}", i + 1))),
             w: Sym::new("w"),
+            f: Sym::new("f_common"),
         }
     })
 }
@@ -91,6 +95,10 @@ pub struct Orlando {
     /// `Res_w(even, odd) - Delta4`: identically zero (the two conditions on `w` have a common
     /// root exactly where Delta4 vanishes); a check of the whole construction.
     pub identity_residual: Poly,
+    /// `+-odd` grouped by powers of `w` for step 8 with `w = omega^2`'s numerator over its
+    /// denominator: `Delta4 = den^2 (+-odd)(num / den)`, the sign fixed by the derivation (see
+    /// [`delta4_in`]).
+    pub delta4_groups: TrimGroups,
 }
 
 /// Derives the generic Hurwitz/omega^2 results once.
@@ -140,12 +148,33 @@ pub fn orlando() -> &'static Orlando {
         } else {
             &res + &delta4
         };
+        // Res_w(odd, even) = Res_w(odd, even - c1 odd) (odd is monic in w), and even - c1 odd =
+        // den w - num is linear: so Delta4 is +-den^2 odd(num / den), step 8 of `odd` at
+        // w = omega^2. Which sign is decided here, exactly.
+        let w = [h.w];
+        let cleared = homogenize(
+            &odd,
+            &w,
+            std::slice::from_ref(&omega_sq.num),
+            &omega_sq.den,
+            2,
+        );
+        let signed = if (&cleared - &delta4).is_zero() {
+            odd.clone()
+        } else {
+            assert!(
+                (&cleared + &delta4).is_zero(),
+                "Delta4 is +-den^2 odd(omega^2) (Orlando, resultant of the even and odd parts)"
+            );
+            -&odd
+        };
         Orlando {
             delta4,
             even,
             odd,
             omega_sq,
             identity_residual,
+            delta4_groups: TrimGroups::new(&signed, &w, 2),
         }
     })
 }
@@ -206,7 +235,158 @@ pub fn cleared_coefficients(c: &[Poly; 5], t: &[Sym], num: &[Poly], den: &Poly) 
 
 /// The Hopf polynomial `den^10 Delta4` at the trim, from the cleared coefficients.
 pub fn hopf_at(cleared: &[Poly; 5]) -> Poly {
-    at_coefficients(&orlando().delta4, cleared)
+    delta4_in(&mut Exact, cleared)
+}
+
+/// Delta4 of the values `c` of `c1..c5` in any ring of step 8 (exact polynomials, dense
+/// univariate ones, enclosures in [`crate::certified`]): the one evaluation of Orlando's
+/// formula every route shares.
+///
+/// Evaluated as `Delta4 = +-u^2 odd(v / u)` with `v / u = (c1 c4 - c5) / (c1 c2 - c3)` the
+/// omega^2 of step 4 and `odd = w^2 - c2 w + c4`, i.e. `+-(v^2 - c2 u v + c4 u^2)`, derived and
+/// checked exactly in [`orlando`]: seven products instead of the eighteen of the expanded
+/// determinant, and in interval arithmetic a much smaller cancellation (the expanded form's
+/// terms are each far larger than Delta4 near its roots).
+pub fn delta4_in<C: Clearing>(ring: &mut C, c: &[C::Value; 5]) -> C::Value {
+    odd_cleared_in(ring, &orlando().delta4_groups, c, None)
+}
+
+/// `+-u^2 odd(v / u)` with the grouping `groups` of an odd part (coefficients in `c1..c5` and
+/// the common factor `f`), `u`, `v` the omega^2 denominator and numerator at `c`: Delta4
+/// itself ([`delta4_in`]) or its reduced form ([`stripped_delta4_in`]).
+fn odd_cleared_in<C: Clearing>(
+    ring: &mut C,
+    groups: &TrimGroups,
+    c: &[C::Value; 5],
+    f: Option<&C::Value>,
+) -> C::Value {
+    let o = orlando();
+    let u = at_coefficients_in(ring, &o.omega_sq.den, c);
+    let v = at_coefficients_in(ring, &o.omega_sq.num, c);
+    let coefficients: Vec<&Poly> = groups.coefficients().collect();
+    groups.clear_by(ring, &[v], &u, |ring, i| {
+        at_values_in(ring, coefficients[i], c, f)
+    })
+}
+
+/// The powers of the trim's denominator `den` that divide the cleared characteristic
+/// coefficients `C_k = den^k c_k(num / den)` of J5 on the trim (Eqs 3-4, and the zero-sideslip
+/// trim of Eq. 35 with its own denominator), for aircraft without aileron yaw: `C1 = den c1'`
+/// (the trace of J5 does not depend on the trim), `C3 = den C3'`, `C4 = den^2 C4'`,
+/// `C5 = den^3 C5'`. Found on the exact path for aircraft A, B and random aircraft and checked
+/// on every aircraft of the certified route's agreement test (`tests/tests/hopf_fast.rs`); the
+/// certified route divides by them with a certified remainder.
+pub const TRIM_FACTOR_POWERS: [u32; 5] = [1, 0, 1, 2, 3];
+
+/// Delta4 of coefficients `C_k = f^(e_k) c'_k` (`e` = [`TRIM_FACTOR_POWERS`]) with the power of
+/// `f` that divides it taken out, derived from [`orlando`]: `u(C) = f u(c')`,
+/// `v(C) = f^3 v(c')`, so `omega^2 = f^2 v(c') / u(c')`, and `Delta4(C) = f^power R(c', f)` with
+/// `R = +-u'^2 odd_r(v' / u')`, `odd_r(x) = odd(f^2 x) / f^2` at the scaled coefficients.
+#[derive(Clone, Debug)]
+pub struct Stripped {
+    /// The power of `f` that divides `Delta4(C)` (4): the factor of det A (det A1) that the
+    /// exact path strips from the Hopf polynomial.
+    pub power: u32,
+    /// `+-odd_r` grouped by powers of its variable, coefficients in `c'` and `f`.
+    groups: TrimGroups,
+}
+
+/// The derivation of [`Stripped`], checked exactly against Delta4.
+pub fn stripped() -> &'static Stripped {
+    static S: OnceLock<Stripped> = OnceLock::new();
+    S.get_or_init(|| {
+        let h = hopf_symbols();
+        let o = orlando();
+        let f = Poly::var(h.f);
+        let scaled: Vec<(Sym, Poly)> = (0..5)
+            .map(|k| (h.c[k], &f.pow(TRIM_FACTOR_POWERS[k]) * &Poly::var(h.c[k])))
+            .collect();
+        let power_of_f = |p: &Poly| p.terms().iter().map(|(m, _)| m.exp(h.f)).min().unwrap_or(0);
+        let (u, v) = (
+            o.omega_sq.den.subs_all(&scaled),
+            o.omega_sq.num.subs_all(&scaled),
+        );
+        let (a, b) = (power_of_f(&u), power_of_f(&v));
+        assert!(
+            b >= a,
+            "omega^2 carries a nonnegative power of the common factor"
+        );
+        // odd(w) at the scaled coefficients and w = f^(b - a) x, divided by the power of f it
+        // carries (the sign of `delta4_groups` kept).
+        let signed: Poly =
+            o.delta4_groups
+                .coefficients()
+                .zip([0u32, 1, 2])
+                .fold(Poly::zero(), |acc, (g, j)| {
+                    &acc + &(&g.subs_all(&scaled) * &(&f.pow(b - a) * &Poly::var(h.w)).pow(j))
+                });
+        let carried = power_of_f(&signed);
+        let reduced = divide_by_power(&signed, h.f, carried);
+        let power = 2 * a + carried;
+        // The check: f^power u'^2 odd_r(v'/u') is Delta4 at the scaled coefficients.
+        let groups = TrimGroups::new(&reduced, &[h.w], 2);
+        let c: [Poly; 5] = h.c.map(Poly::var);
+        let r = odd_cleared_in(&mut Exact, &groups, &c, Some(&f));
+        assert_eq!(
+            &f.pow(power) * &r,
+            o.delta4.subs_all(&scaled),
+            "Delta4(C) = f^power R(c', f)"
+        );
+        Stripped { power, groups }
+    })
+}
+
+/// `Delta4(C) / f^power` for `C_k = f^(e_k) c_k` ([`Stripped`]) from the values `c` (the `c'_k`)
+/// and `f` in any ring of step 8: [`delta4_in`] with the common factor taken out before any
+/// product, so that no division of a high-degree polynomial is needed.
+pub fn stripped_delta4_in<C: Clearing>(ring: &mut C, c: &[C::Value; 5], f: &C::Value) -> C::Value {
+    odd_cleared_in(ring, &stripped().groups, c, Some(f))
+}
+
+/// `p / x^k` for a polynomial every term of which carries `x^k`.
+fn divide_by_power(p: &Poly, x: Sym, k: u32) -> Poly {
+    Poly::from_terms(p.terms().iter().map(|(m, q)| {
+        let mut m = *m;
+        assert!(m.exp(x) >= k, "every term carries the power");
+        m.set(x, m.exp(x) - k);
+        (m, q.clone())
+    }))
+}
+
+/// A polynomial `f` in `c1..c5` (rational coefficients) at the values `c` of a ring, term by
+/// term.
+pub fn at_coefficients_in<C: Clearing>(ring: &mut C, f: &Poly, c: &[C::Value; 5]) -> C::Value {
+    at_values_in(ring, f, c, None)
+}
+
+/// A polynomial in `c1..c5` and the common factor `f` at values of a ring.
+fn at_values_in<C: Clearing>(
+    ring: &mut C,
+    p: &Poly,
+    c: &[C::Value; 5],
+    f: Option<&C::Value>,
+) -> C::Value {
+    let h = hopf_symbols();
+    let mut acc = ring.lift(&Poly::zero());
+    for (m, q) in p.terms() {
+        let mut term = ring.lift(&Poly::constant(q.clone()));
+        let mut rest = *m;
+        for (k, ck) in h.c.iter().enumerate() {
+            for _ in 0..m.exp(*ck) {
+                term = ring.mul(&term, &c[k]);
+            }
+            rest.set(*ck, 0);
+        }
+        if let Some(f) = f {
+            for _ in 0..m.exp(h.f) {
+                term = ring.mul(&term, f);
+            }
+            rest.set(h.f, 0);
+        }
+        assert!(rest.is_one(), "a polynomial in c1..c5 (and f) only");
+        acc = ring.add(&acc, &term);
+    }
+    acc
 }
 
 #[cfg(test)]
@@ -225,5 +405,30 @@ mod tests {
         let same = (&o.omega_sq.num - &num).is_zero() && (&o.omega_sq.den - &den).is_zero();
         let flipped = (&o.omega_sq.num + &num).is_zero() && (&o.omega_sq.den + &den).is_zero();
         assert!(same || flipped, "{:?}", o.omega_sq);
+    }
+
+    /// The evaluation every route uses, `delta4_in`, gives Orlando's determinant itself.
+    #[test]
+    fn delta4_from_omega_squared_is_the_hurwitz_determinant() {
+        let h = hopf_symbols();
+        let c = h.c.map(Poly::var);
+        assert_eq!(delta4_in(&mut Exact, &c), orlando().delta4);
+        // And at the doc example's coefficients (eigenvalues -1, +-2i, -3, -4) it vanishes.
+        let at = [8, 23, 44, 76, 48].map(Poly::int);
+        assert!(delta4_in(&mut Exact, &at).is_zero());
+    }
+
+    /// The stripped form times `f^4` is Delta4 at `C_k = f^(e_k) c_k` (checked inside
+    /// `stripped()`), and at f = 1 it is Delta4 itself.
+    #[test]
+    fn stripped_delta4_times_the_common_factor_is_delta4() {
+        let h = hopf_symbols();
+        let st = stripped();
+        assert_eq!(st.power, 4);
+        let c = h.c.map(Poly::var);
+        assert_eq!(
+            stripped_delta4_in(&mut Exact, &c, &Poly::int(1)),
+            orlando().delta4
+        );
     }
 }

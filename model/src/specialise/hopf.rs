@@ -24,7 +24,8 @@
 use super::{aircraft_values, from_univariate, parametric, parametric_characteristic, univariate};
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::{Poly, Sym, Q};
-use crate::derivation::hopf::{hopf_symbols, orlando};
+use crate::derivation::hopf::{delta4_in, hopf_symbols, orlando};
+use crate::derivation::{clear_trim, Clearing};
 use crate::equations::symbols;
 use crate::roots::UPoly;
 use num_traits::Zero;
@@ -32,58 +33,36 @@ use num_traits::Zero;
 /// `den^10 Delta4(c(num / den))` in dense univariate arithmetic, when the trim numerators `num`
 /// and `den` are polynomials in P0 alone (no aileron yaw, or the zero-sideslip trim): the same
 /// polynomial as [`crate::derivation::hopf::hopf_at`] of
-/// [`crate::derivation::hopf::cleared_coefficients`], each `C_k = den^k c_k(num / den)`
-/// built term by term from tables of powers. `None` when delta_a occurs.
+/// [`crate::derivation::hopf::cleared_coefficients`], by the same routines (step 8's
+/// [`clear_trim`], Orlando's [`delta4_in`]) in the ring of [`UPoly`]. `None` when delta_a occurs.
 pub fn dense_hopf(c: &[Poly; 5], t: &[Sym], num: &[Poly], den: &Poly) -> Option<UPoly> {
     let s = symbols();
     if num.iter().chain([den]).any(|p| p.contains(s.delta_a)) {
         return None;
     }
-    let u = |p: &Poly| univariate(p, s.p0);
-    let int = |n: i64| num_rational::BigRational::from_integer(n.into());
-    let powers = |p: &UPoly| {
-        let mut v = vec![UPoly::constant(int(1))];
-        for e in 0..5 {
-            let next = v[e].mul(p);
-            v.push(next);
-        }
-        v
-    };
-    let npow: Vec<Vec<UPoly>> = num.iter().map(|n| powers(&u(n))).collect();
-    let dpow = powers(&u(den));
-    let x_pow = |a: u32, q: &Q| {
-        let mut v = vec![int(0); a as usize + 1];
-        v[a as usize] = q.to_big();
-        UPoly::new(v)
-    };
-    let cleared: Vec<UPoly> = (0..5)
-        .map(|k| {
-            c[k].terms().iter().fold(UPoly::zero(), |acc, (m, q)| {
-                let mut term = x_pow(m.exp(s.p0), q);
-                let mut j = 0usize;
-                for (i, ti) in t.iter().enumerate() {
-                    let e = m.exp(*ti) as usize;
-                    j += e;
-                    if e > 0 {
-                        term = term.mul(&npow[i][e]);
-                    }
-                }
-                acc.add(&term.mul(&dpow[k + 1 - j]))
-            })
-        })
-        .collect();
-    let hs = crate::derivation::hopf::hopf_symbols();
-    let d4 = orlando()
-        .delta4
-        .terms()
-        .iter()
-        .fold(UPoly::zero(), |acc, (m, q)| {
-            let term = hs.c.iter().enumerate().fold(x_pow(0, q), |t, (k, ck)| {
-                (0..m.exp(*ck)).fold(t, |t, _| t.mul(&cleared[k]))
-            });
-            acc.add(&term)
-        });
-    Some(d4)
+    let ring = &mut Univariate;
+    let num: Vec<UPoly> = num.iter().map(|n| univariate(n, s.p0)).collect();
+    let den = univariate(den, s.p0);
+    let cleared: [UPoly; 5] =
+        std::array::from_fn(|k| clear_trim(ring, &c[k], t, &num, &den, k as u32 + 1));
+    Some(delta4_in(ring, &cleared))
+}
+
+/// Dense univariate polynomials in P0 as the ring of step 8 (values free of the trim symbols
+/// are polynomials in P0 alone).
+struct Univariate;
+
+impl Clearing for Univariate {
+    type Value = UPoly;
+    fn lift(&mut self, p: &Poly) -> UPoly {
+        univariate(p, symbols().p0)
+    }
+    fn add(&mut self, a: &UPoly, b: &UPoly) -> UPoly {
+        a.add(b)
+    }
+    fn mul(&mut self, a: &UPoly, b: &UPoly) -> UPoly {
+        a.mul(b)
+    }
 }
 
 /// `mu^k c_k` with `mu` the least common multiple of every coefficient's denominator, so that

@@ -1,0 +1,177 @@
+//! Shared by the certified-route agreement tests (`certified.rs`, `hopf_fast.rs`): random
+//! aircraft around A and B, and the comparison of an exact and a certified analysis.
+
+#![allow(dead_code)]
+
+use model::aircraft::{Aircraft, Param};
+use model::analysis::{Analysis, JumpPoint};
+use num_rational::BigRational;
+
+/// A small deterministic generator (SplitMix64).
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    pub fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.unit()
+    }
+}
+
+/// `x` with five significant decimal digits, exactly (the literal a data file would hold).
+pub fn five_digits(x: f64) -> BigRational {
+    model::aircraft::decimal_to_rational(&format!("{x:.4e}")).expect("a decimal literal")
+}
+
+pub fn random_aircraft(rng: &mut Rng, i: usize) -> Aircraft {
+    let base = if i % 2 == 0 {
+        Aircraft::a()
+    } else {
+        Aircraft::b()
+    };
+    let mut a = base.clone();
+    for p in Param::ALL {
+        let v = base.value(p);
+        let moved = match p {
+            // Physical inertia coefficients stay within (-1, 1).
+            Param::C | Param::D | Param::E => (v * rng.uniform(0.7, 1.3)).clamp(-0.99, 0.99),
+            Param::NDeltaA => {
+                if rng.unit() < 0.5 {
+                    0.0
+                } else {
+                    rng.uniform(-10.0, 10.0)
+                }
+            }
+            Param::LDeltaR => {
+                if rng.unit() < 0.3 {
+                    rng.uniform(-5.0, 5.0)
+                } else {
+                    0.0
+                }
+            }
+            Param::Np => {
+                if rng.unit() < 0.3 {
+                    rng.uniform(-0.5, 0.5)
+                } else {
+                    0.0
+                }
+            }
+            _ => v * rng.uniform(0.7, 1.3),
+        };
+        let exact = if moved == 0.0 {
+            BigRational::from_integer(0.into())
+        } else {
+            five_digits(moved)
+        };
+        a = a.with(p, exact);
+    }
+    a
+}
+
+/// Whether a certified roll rate `f` agrees with the exact one `e`: `e` is correctly rounded,
+/// `f` lies in a bracket of relative width at most `width` around the exact root.
+pub fn close_roots(e: f64, f: f64, width: f64) -> bool {
+    (e - f).abs() <= (width + 2.0 * f64::EPSILON) * e.abs().max(f.abs())
+}
+
+/// Whether two values evaluated at a root agree: to 1e-6 relative, the precision `analyze`
+/// prints. Both routes evaluate the trim in f64 at the root, and that evaluation is itself far
+/// less accurate than the root in two places the random sample meets: next to a divergence roll
+/// rate (the trim has a pole there) and where the two trims of a roll rate nearly merge (with
+/// aileron yaw the aileron is a root of a quadratic whose discriminant nearly vanishes, and the
+/// square root amplifies rounding: measured up to 5e-7 relative between the two routes, whose
+/// polynomials' f64 coefficients differ by a few ulps).
+pub fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-6 * a.abs().max(b.abs()) + 1e-9
+}
+
+pub fn same_point(e: &JumpPoint, f: &JumpPoint, w: f64) -> Result<(), String> {
+    if !close_roots(e.p0, f.p0, w) {
+        return Err(format!("P0 {} vs {}", e.p0, f.p0));
+    }
+    if e.within_limits != f.within_limits || e.valid != f.valid {
+        return Err(format!("marks at P0 = {}", e.p0));
+    }
+    // Outside the validity range (trims of hundreds of degrees, where the linear model means
+    // nothing) the trim is a badly conditioned f64 evaluation on both routes: only the roll
+    // rate and the marks are compared there.
+    if !e.valid {
+        return Ok(());
+    }
+    for (name, x, y) in [
+        ("delta_a", e.delta_a_rad, f.delta_a_rad),
+        ("alpha", e.alpha, f.alpha),
+        ("beta", e.beta, f.beta),
+        ("q", e.q, f.q),
+        ("r", e.r, f.r),
+    ] {
+        if !close(x, y) {
+            return Err(format!("{name} at P0 = {}: {x} vs {y}", e.p0));
+        }
+    }
+    Ok(())
+}
+
+pub fn same_analysis(e: &Analysis, f: &Analysis, w: f64) -> Result<(), String> {
+    let lens = |a: &Analysis| {
+        (
+            a.divergence_roll_rates.len(),
+            a.jump.len(),
+            a.det_k_poles.len(),
+            a.zero_sideslip.departure.len(),
+        )
+    };
+    if lens(e) != lens(f) {
+        return Err(format!("counts {:?} vs {:?}", lens(e), lens(f)));
+    }
+    for (x, y) in e.divergence_roll_rates.iter().zip(&f.divergence_roll_rates) {
+        if !close_roots(*x, *y, w) {
+            return Err(format!("divergence {x} vs {y}"));
+        }
+    }
+    for (x, y) in e
+        .jump
+        .iter()
+        .zip(&f.jump)
+        .chain(e.det_k_poles.iter().zip(&f.det_k_poles))
+    {
+        same_point(x, y, w)?;
+    }
+    match (&e.critical, &f.critical) {
+        (None, None) => {
+            if e.critical_note.is_none() != f.critical_note.is_none() {
+                return Err("critical note".into());
+            }
+        }
+        (Some(x), Some(y)) => same_point(x, y, w)?,
+        _ => return Err(format!("critical {:?} vs {:?}", e.critical, f.critical)),
+    }
+    for (x, y) in e
+        .zero_sideslip
+        .departure
+        .iter()
+        .zip(&f.zero_sideslip.departure)
+    {
+        let ok = close_roots(x.p0, y.p0, w)
+            && x.within_limits == y.within_limits
+            && x.valid == y.valid
+            && (!x.valid
+                || close(x.delta_a_rad, y.delta_a_rad)
+                    && close(x.delta_r_rad, y.delta_r_rad)
+                    && close(x.alpha, y.alpha));
+        if !ok {
+            return Err(format!("zero-sideslip departure {x:?} vs {y:?}"));
+        }
+    }
+    Ok(())
+}

@@ -265,6 +265,16 @@ impl IPoly {
         )
     }
 
+    /// `q` with `p(x) = q(x^2)`, for a polynomial known to be even (`p(-x) = p(x)` exactly,
+    /// see [`IPoly::symmetric`]): its odd coefficients are zero, and their enclosures carry
+    /// only rounding. `None` when one of them excludes zero (the polynomial is not even).
+    pub fn in_square(&self) -> Option<IPoly> {
+        if self.0.iter().skip(1).step_by(2).any(|c| !c.contains_zero()) {
+            return None;
+        }
+        Some(IPoly::new(self.0.iter().step_by(2).copied().collect()))
+    }
+
     /// `p(-x)`.
     pub fn mirror(&self) -> IPoly {
         IPoly::new(

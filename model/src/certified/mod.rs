@@ -47,8 +47,8 @@ use crate::interval::I;
 use compiled::{Characteristic, Cleared, Parametric, Table};
 use dense::{Dense, Dense2, IPoly, IPoly2};
 pub use isolate::{
-    positive_roots, positive_roots_by, positive_roots_windowed, real_roots_outside, Bracket,
-    Uncertified,
+    positive_roots, positive_roots_by, positive_roots_windowed, positive_roots_windowed_even,
+    real_roots_outside, Bracket, Uncertified,
 };
 use num::Num;
 
@@ -631,6 +631,22 @@ impl<C: Coeff> Reduced<C> {
 }
 
 impl Reduced<IPoly> {
+    /// The same in `u = P0^2` ([`IPoly::in_square`]): every ingredient is even in P0 (see
+    /// [`EnclosedHopf::positive_roots`]).
+    fn in_square(&self) -> Option<Reduced<IPoly>> {
+        let [c1, c2, c3, c4, c5] = &self.c;
+        Some(Reduced {
+            c: [
+                c1.in_square()?,
+                c2.in_square()?,
+                c3.in_square()?,
+                c4.in_square()?,
+                c5.in_square()?,
+            ],
+            f: self.f.in_square()?,
+        })
+    }
+
     /// The same at `P0 = x0 + y`, in `y`.
     fn shift(&self, x0: f64) -> Reduced<IPoly> {
         let x0 = I::point(x0);
@@ -694,6 +710,12 @@ impl EnclosedHopf {
     /// zero-sideslip one) of the data `v`, each refined towards relative width `width`: by
     /// [`positive_roots_windowed`] from Taylor expansions built from the reduced coefficients
     /// (degree at most 12, shifted cheaply and accurately), with [`value_at`] through the trim.
+    ///
+    /// The Hopf polynomial is even in P0, and so are its ingredients (the characteristic
+    /// coefficients are invariant under the model's mirror symmetry, see [`IPoly::symmetric`],
+    /// and det A is even): the roots are first isolated in `P0^2`
+    /// ([`positive_roots_windowed_even`], half the degree), and in P0 only where that cannot
+    /// decide.
     pub fn positive_roots(
         &self,
         v: &Values,
@@ -705,12 +727,17 @@ impl EnclosedHopf {
         } else {
             (&self.hopf, &self.reduced, Criterion::Hopf)
         };
-        positive_roots_windowed(
-            global,
-            &|x0| reduced.shift(x0).delta4(),
-            &|x| value_at(v, which, x),
-            width,
-        )
+        let value = |x| value_at(v, which, x);
+        let local = |x0| reduced.shift(x0).delta4();
+        if let (Some(global_u), Some(reduced_u)) = (global.in_square(), reduced.in_square()) {
+            let local_u = |u0| reduced_u.shift(u0).delta4();
+            if let Ok(roots) =
+                positive_roots_windowed_even(&global_u, &local_u, &local, &value, width)
+            {
+                return Ok(roots);
+            }
+        }
+        positive_roots_windowed(global, &local, &value, width)
     }
 }
 

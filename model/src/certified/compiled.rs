@@ -33,7 +33,11 @@ impl<T: Num> Table<T> {
         let powers = values
             .iter()
             .map(|v| {
-                let x = v.unwrap_or_else(|| T::constant(I::entire()));
+                let Some(x) = *v else {
+                    // No value (a trim symbol, P0, delta_a): the compiled results never read
+                    // its powers; the whole line keeps any use of them honest.
+                    return [T::constant(I::entire()); POWERS + 1];
+                };
                 let mut p = [T::constant(I::point(1.0)); POWERS + 1];
                 for e in 1..=POWERS {
                     p[e] = if e % 2 == 0 {
@@ -76,6 +80,8 @@ pub struct Compiled {
     terms: Vec<Term>,
     p0_degree: usize,
     da_degree: usize,
+    /// The most factors of one term (the depth of the trie of the monomials).
+    depth: usize,
 }
 
 impl Compiled {
@@ -122,6 +128,7 @@ impl Compiled {
         Compiled {
             p0_degree: terms.iter().map(|t| t.p0).max().unwrap_or(0),
             da_degree: terms.iter().map(|t| t.da).max().unwrap_or(0),
+            depth: terms.iter().map(|t| t.factors.len()).max().unwrap_or(0),
             terms,
         }
     }
@@ -131,7 +138,8 @@ impl Compiled {
         let zero = T::constant(I::point(0.0));
         let mut grid = vec![vec![zero; self.p0_degree + 1]; self.da_degree + 1];
         // prefix[k]: the product of the current term's first k factors.
-        let mut prefix = vec![T::constant(I::point(1.0))];
+        let mut prefix = Vec::with_capacity(self.depth + 1);
+        prefix.push(T::constant(I::point(1.0)));
         for t in &self.terms {
             prefix.truncate(t.shared + 1);
             for (sym, e) in &t.factors[t.shared..] {

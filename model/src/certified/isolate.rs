@@ -272,8 +272,13 @@ fn first_brackets_windowed(
     }
     windows.reverse();
     let mut out = Vec::new();
+    // The windows are taken in ascending order of x0.
     while let Some((x0, h, splits)) = windows.pop() {
         let q = local(x0);
+        if no_root_beyond(q.coeffs()) {
+            // Nor in this window or any after it.
+            break;
+        }
         let at = |y: I| q.eval(y);
         // The window's ends: x0 (y = 0) and x0 + h (y = h), each sign certain.
         let end_sign = |x: f64, y: I| {
@@ -306,6 +311,24 @@ fn first_brackets_windowed(
         }
     }
     Ok(out)
+}
+
+/// Whether the Taylor coefficients `c` of a polynomial at `x0` prove it has no root in
+/// `[x0, inf)`: none negative and the constant term positive (or the mirror), so that
+/// `p(x0 + y) >= p(x0) > 0` for every `y >= 0`. Past the last real root and the region where
+/// the complex ones pull the coefficients' signs apart, this ends the window search long before
+/// the root bound, which is loose by a factor of two or more.
+fn no_root_beyond(c: &[I]) -> bool {
+    let Some(c0) = c.first() else {
+        return false;
+    };
+    if c0.lo > 0.0 {
+        c.iter().all(|a| a.lo >= 0.0)
+    } else if c0.hi < 0.0 {
+        c.iter().all(|a| a.hi <= 0.0)
+    } else {
+        false
+    }
 }
 
 /// The final brackets of [`positive_roots_windowed`] from the first ones (disjoint, each
@@ -723,10 +746,17 @@ fn illinois(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64, x: f64) -> f64 {
     }
     let mut side = 0;
     let mut c = x;
-    for _ in 0..ILLINOIS_STEPS {
-        c = (a * fb - b * fa) / (fb - fa);
-        if !(c > a && c < b) {
-            return x;
+    for step in 0..ILLINOIS_STEPS {
+        let next = (a * fb - b * fa) / (fb - fa);
+        if !(next > a && next < b) {
+            // Converged onto an end (or lost): the last point inside is the best guess.
+            return if step == 0 { x } else { c };
+        }
+        // Converged to a few ulps, or the last step: no further value is needed.
+        let converged = step > 0 && (next - c).abs() <= 4.0 * f64::EPSILON * next.abs();
+        c = next;
+        if converged || step + 1 == ILLINOIS_STEPS {
+            break;
         }
         let fc = f(c);
         if fc == 0.0 {
@@ -755,7 +785,8 @@ const ILLINOIS_STEPS: usize = 4;
 /// The narrowest bracket around `x` within `(lo, hi)` (whose ends have the known signs `slo`,
 /// `shi`) that `enclose` certifies: half-width from the enclosure's width over `slope`, doubled
 /// until both ends have certain, opposite signs; a root found outside moves the search to its
-/// side. Returns the bracket and its centre.
+/// side (first next to the end passed, then to the middle of what is left). Returns the
+/// bracket and its centre.
 fn certified_bracket(
     enclose: &dyn Fn(f64) -> I,
     (mut lo, slo): (f64, f64),
@@ -776,7 +807,7 @@ fn certified_bracket(
             2.0 * ulp
         }
     };
-    let mut delta = start;
+    let (mut delta, mut nudged) = (start, false);
     loop {
         let (a, b) = (x - delta, x + delta);
         if a <= lo && b >= hi {
@@ -786,16 +817,26 @@ fn certified_bracket(
         let sign = |t: f64, end: f64, s: f64| if t == end { Some(s) } else { enclose(t).sign() };
         match (sign(a, lo, slo), sign(b, hi, shi)) {
             (Some(sa), Some(sb)) if sa == slo && sb == shi => return (a, b, x),
-            // The root is outside [a, b] on one side: move the other end in and recentre.
+            // The root is outside [a, b] on one side: move that end in. The first time, try
+            // the bracket of the same width next to it (a guess within the enclosure's noise
+            // is off by about one half-width); after that, recentre in what is left.
             (Some(sa), _) if sa == shi => {
                 hi = a;
-                x = 0.5 * lo + 0.5 * hi;
-                delta = start;
+                x = if nudged {
+                    0.5 * lo + 0.5 * hi
+                } else {
+                    a - delta
+                };
+                (nudged, delta) = (true, if nudged { start } else { delta });
             }
             (_, Some(sb)) if sb == slo => {
                 lo = b;
-                x = 0.5 * lo + 0.5 * hi;
-                delta = start;
+                x = if nudged {
+                    0.5 * lo + 0.5 * hi
+                } else {
+                    b + delta
+                };
+                (nudged, delta) = (true, if nudged { start } else { delta });
             }
             _ => delta *= 2.0,
         }

@@ -111,10 +111,16 @@ pub fn positive_roots_by(
     } else {
         isolate_positive(c)?
     };
-    let mut brackets = isolating
+    let brackets = isolating
         .into_iter()
         .map(|(lo, hi)| refine(&p, value, target, lo, hi))
         .collect::<Result<Vec<_>, _>>()?;
+    sorted_disjoint(brackets)
+}
+
+/// `brackets` in ascending order, proven pairwise disjoint (so each holds a different root), or
+/// [`Uncertified::Sign`] when two meet.
+fn sorted_disjoint(mut brackets: Vec<Bracket>) -> Result<Vec<Bracket>, Uncertified> {
     brackets.sort_by(|a, b| a.lo.total_cmp(&b.lo));
     if brackets.windows(2).any(|w| w[0].hi >= w[1].lo) {
         return Err(Uncertified::Sign);
@@ -176,11 +182,7 @@ pub fn real_roots_outside(
         let (a, b) = (next_down(hi + yl).max(hi), next_up(hi + yr));
         out.push(refine(p, value, target, a, b)?);
     }
-    out.sort_by(|a, b| a.lo.total_cmp(&b.lo));
-    if out.windows(2).any(|w| w[0].hi >= w[1].lo) {
-        return Err(Uncertified::Sign);
-    }
-    Ok(out)
+    sorted_disjoint(out)
 }
 
 /// [`positive_roots_by`] for a polynomial whose expansion in powers of P0 is too cancellation-
@@ -275,8 +277,10 @@ fn first_brackets_windowed(
     // The windows are taken in ascending order of x0.
     while let Some((x0, h, splits)) = windows.pop() {
         let q = local(x0);
-        if no_root_beyond(q.coeffs()) {
-            // Nor in this window or any after it.
+        // Descartes' rule on the Taylor coefficients at x0: no sign change, no root in
+        // [x0, inf), nor in this window or any after it. Past the last real root this ends the
+        // search long before the root bound, which is loose by a factor of two or more.
+        if variations(q.coeffs()) == Some(0) {
             break;
         }
         let at = |y: I| q.eval(y);
@@ -313,38 +317,17 @@ fn first_brackets_windowed(
     Ok(out)
 }
 
-/// Whether the Taylor coefficients `c` of a polynomial at `x0` prove it has no root in
-/// `[x0, inf)`: none negative and the constant term positive (or the mirror), so that
-/// `p(x0 + y) >= p(x0) > 0` for every `y >= 0`. Past the last real root and the region where
-/// the complex ones pull the coefficients' signs apart, this ends the window search long before
-/// the root bound, which is loose by a factor of two or more.
-fn no_root_beyond(c: &[I]) -> bool {
-    let Some(c0) = c.first() else {
-        return false;
-    };
-    if c0.lo > 0.0 {
-        c.iter().all(|a| a.lo >= 0.0)
-    } else if c0.hi < 0.0 {
-        c.iter().all(|a| a.hi <= 0.0)
-    } else {
-        false
-    }
-}
-
 /// The final brackets of [`positive_roots_windowed`] from the first ones (disjoint, each
 /// holding exactly one root): refined on an expansion at each first bracket's root, whose
 /// enclosure is tightest there, and on `value`.
 fn final_brackets(
-    mut first: Vec<Bracket>,
+    first: Vec<Bracket>,
     local: &dyn Fn(f64) -> IPoly,
     value: &dyn Fn(f64) -> I,
     target: f64,
 ) -> Result<Vec<Bracket>, Uncertified> {
-    first.sort_by(|a, b| a.lo.total_cmp(&b.lo));
-    if first.windows(2).any(|w| w[0].hi >= w[1].lo) {
-        return Err(Uncertified::Sign);
-    }
-    first
+    // Each final bracket lies in its first one: the order and disjointness carry over.
+    sorted_disjoint(first)?
         .iter()
         .map(|b| {
             let at_root = local(b.value);
@@ -815,30 +798,29 @@ fn certified_bracket(
         }
         let (a, b) = (a.max(lo), b.min(hi));
         let sign = |t: f64, end: f64, s: f64| if t == end { Some(s) } else { enclose(t).sign() };
-        match (sign(a, lo, slo), sign(b, hi, shi)) {
+        // The root outside [a, b] on one side: that end moves in, and the centre next to it.
+        let next_to = match (sign(a, lo, slo), sign(b, hi, shi)) {
             (Some(sa), Some(sb)) if sa == slo && sb == shi => return (a, b, x),
-            // The root is outside [a, b] on one side: move that end in. The first time, try
-            // the bracket of the same width next to it (a guess within the enclosure's noise
-            // is off by about one half-width); after that, recentre in what is left.
             (Some(sa), _) if sa == shi => {
                 hi = a;
-                x = if nudged {
-                    0.5 * lo + 0.5 * hi
-                } else {
-                    a - delta
-                };
-                (nudged, delta) = (true, if nudged { start } else { delta });
+                a - delta
             }
             (_, Some(sb)) if sb == slo => {
                 lo = b;
-                x = if nudged {
-                    0.5 * lo + 0.5 * hi
-                } else {
-                    b + delta
-                };
-                (nudged, delta) = (true, if nudged { start } else { delta });
+                b + delta
             }
-            _ => delta *= 2.0,
+            _ => {
+                delta *= 2.0;
+                continue;
+            }
+        };
+        // The first time, the bracket of the same width next to the end passed (a guess within
+        // the enclosure's noise is off by about one half-width); after that, the middle of
+        // what is left.
+        if nudged {
+            (x, delta) = (0.5 * lo + 0.5 * hi, start);
+        } else {
+            (x, nudged) = (next_to, true);
         }
     }
 }

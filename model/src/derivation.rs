@@ -530,6 +530,11 @@ pub trait Clearing {
     fn add(&mut self, a: &Self::Value, b: &Self::Value) -> Self::Value;
     /// `a * b`.
     fn mul(&mut self, a: &Self::Value, b: &Self::Value) -> Self::Value;
+    /// `acc + a * b` in place of `acc` (by default a product and a sum).
+    fn add_product(&mut self, acc: &mut Self::Value, a: &Self::Value, b: &Self::Value) {
+        let term = self.mul(a, b);
+        *acc = self.add(acc, &term);
+    }
     /// `a^n` (by default `n` products starting from 1).
     fn pow(&mut self, a: &Self::Value, n: u32) -> Self::Value {
         let mut acc = self.lift(&Poly::int(1));
@@ -620,22 +625,97 @@ impl TrimGroups {
         ring: &mut C,
         num: &[C::Value],
         den: &C::Value,
+        lift: impl FnMut(&mut C, usize) -> C::Value,
+    ) -> C::Value {
+        let mut products = TrimProducts::new(ring, num, den, self.k);
+        self.clear_with(ring, &mut products, lift)
+    }
+
+    /// Step 8 on the trim of `products` (whose products this clearing extends and reuses),
+    /// with coefficient `i` lifted by `lift`.
+    pub fn clear_with<C: Clearing>(
+        &self,
+        ring: &mut C,
+        products: &mut TrimProducts<C::Value>,
         mut lift: impl FnMut(&mut C, usize) -> C::Value,
     ) -> C::Value {
-        let den_pows: Vec<C::Value> = (0..=self.k).map(|j| ring.pow(den, j)).collect();
         let mut acc = ring.lift(&Poly::zero());
         for (i, (e, _)) in self.groups.iter().enumerate() {
-            let mut prod = den_pows[(self.k - e.iter().sum::<u32>()) as usize].clone();
-            for (n, ei) in num.iter().zip(e) {
-                for _ in 0..*ei {
-                    prod = ring.mul(&prod, n);
-                }
-            }
+            let at = products.index(ring, self.k - e.iter().sum::<u32>(), e);
             let c = lift(ring, i);
-            let term = ring.mul(&c, &prod);
-            acc = ring.add(&acc, &term);
+            ring.add_product(&mut acc, &c, products.get(at));
         }
         acc
+    }
+}
+
+/// The products `den^j num^m` of step 8 on one trim (`t_i = num_i / den`), each built once, on
+/// demand, from the one with its last factor removed, and kept: the groups of one quantity
+/// share their prefixes, and the quantities cleared on the same trim (the trim condition,
+/// det J5, d) share the products themselves. The products and their order are those of
+/// multiplying `den^j` by the factors of `num^m` one by one, so a ring that records
+/// expressions (the emitter's DAG) sees the same expressions, fewer times.
+#[derive(Clone, Debug)]
+pub struct TrimProducts<V> {
+    num: Vec<V>,
+    den: V,
+    /// `((j, m), den^j num^m)`, the exponents `m` packed a byte each ([`TrimProducts::key`]).
+    memo: Vec<((u32, u64), V)>,
+}
+
+impl<V: Clone> TrimProducts<V> {
+    /// The products of the trim `num / den` (at most eight trim quantities), starting with
+    /// `den^0 .. den^k`.
+    pub fn new<C: Clearing<Value = V>>(ring: &mut C, num: &[V], den: &V, k: u32) -> Self {
+        assert!(num.len() <= 8, "at most eight trim quantities");
+        let mut memo = Vec::with_capacity(32);
+        memo.extend((0..=k).map(|j| ((j, 0), ring.pow(den, j))));
+        TrimProducts {
+            num: num.to_vec(),
+            den: den.clone(),
+            memo,
+        }
+    }
+
+    /// The packed exponents `m` with one more factor `num_v` (each exponent at most the
+    /// clearing power, far below 256).
+    fn key(m: u64, v: usize) -> u64 {
+        m + (1 << (8 * v))
+    }
+
+    fn find(&self, key: (u32, u64)) -> Option<usize> {
+        self.memo.iter().position(|(k, _)| *k == key)
+    }
+
+    /// The index of `den^j num^m`, built if new.
+    fn index<C: Clearing<Value = V>>(&mut self, ring: &mut C, j: u32, m: &[u32]) -> usize {
+        let mut key = (j, 0);
+        let mut at = match self.find(key) {
+            Some(found) => found,
+            None => {
+                let power = ring.pow(&self.den, j);
+                self.memo.push((key, power));
+                self.memo.len() - 1
+            }
+        };
+        for (v, e) in m.iter().enumerate() {
+            for _ in 0..*e {
+                key.1 = Self::key(key.1, v);
+                at = match self.find(key) {
+                    Some(found) => found,
+                    None => {
+                        let next = ring.mul(&self.memo[at].1, &self.num[v]);
+                        self.memo.push((key, next));
+                        self.memo.len() - 1
+                    }
+                };
+            }
+        }
+        at
+    }
+
+    fn get(&self, at: usize) -> &V {
+        &self.memo[at].1
     }
 }
 

@@ -18,9 +18,11 @@ mod support;
 
 use support::{close, close_roots, random_aircraft, same_analysis, Rng};
 
+use model::aircraft::Param;
 use model::analysis::fast::{analyze_routed, Route, MAX_WIDTH};
 use model::analysis::{analyze_with, parametric, CriterionPolys};
-use model::certified::{positive_roots_by, value_at, Criterion, EnclosedPolys, Values};
+use model::certified::{positive_roots_by, value_at, Criterion, EnclosedPolys, Sampler, Values};
+use model::interval::I;
 use num_rational::BigRational;
 
 /// Aircraft in the random sample.
@@ -147,24 +149,85 @@ fn lean_critical_route_gives_the_exact_critical_jump() {
             continue;
         };
         answered += 1;
-        match (&exact.critical, lean) {
-            (None, None) => {}
-            (Some(e), Some((p0, da))) => {
-                assert!(
-                    close_roots(e.p0, p0, MAX_WIDTH),
-                    "aircraft {i}: P0 {} vs {p0}",
-                    e.p0
-                );
-                assert!(
-                    close(e.delta_a_rad, da),
-                    "aircraft {i}: delta_a {} vs {da}",
-                    e.delta_a_rad
-                );
-            }
-            (e, l) => panic!("aircraft {i}: exact {e:?} vs lean {l:?}"),
-        }
+        same_critical(&format!("aircraft {i}"), &exact.critical, lean);
     }
     println!("{answered} of {total} answered by the lean route");
+    assert!(
+        answered as f64 >= 0.95 * total as f64,
+        "{answered} of {total}"
+    );
+}
+
+/// The exact path's critical jump and a certified route's `(P0, delta_a)` are the same point.
+fn same_critical(
+    what: &str,
+    exact: &Option<model::analysis::JumpPoint>,
+    certified: Option<(f64, f64)>,
+) {
+    match (exact, certified) {
+        (None, None) => {}
+        (Some(e), Some((p0, da))) => {
+            assert!(
+                close_roots(e.p0, p0, MAX_WIDTH),
+                "{what}: P0 {} vs {p0}",
+                e.p0
+            );
+            assert!(
+                close(e.delta_a_rad, da),
+                "{what}: delta_a {} vs {da}",
+                e.delta_a_rad
+            );
+        }
+        (e, c) => panic!("{what}: exact {e:?} vs certified {c:?}"),
+    }
+}
+
+/// The Monte Carlo's sampler ([`Sampler`]: every parameter but a few folded into the
+/// parametric coefficients once, then each sample lifted in the varying ones alone) gives the
+/// exact path's critical jump of the aircraft it samples: the fixed data of one random
+/// aircraft, the varying parameters (a random handful, or all 18) taken from another.
+#[test]
+fn sampler_gives_the_exact_critical_jump_of_each_sample() {
+    let mut rng = Rng(13);
+    let (mut answered, mut total) = (0usize, 0usize);
+    for i in 0..N / 20 {
+        let base = random_aircraft(&mut rng, i);
+        let other = random_aircraft(&mut rng, i);
+        let varying: Vec<Param> = if i % 5 == 0 {
+            Param::ALL.to_vec()
+        } else {
+            Param::ALL
+                .iter()
+                .copied()
+                .filter(|_| rng.unit() < 0.25)
+                .collect()
+        };
+        let sample = varying
+            .iter()
+            .fold(base.clone(), |a, p| a.with(*p, other.exact(*p).clone()));
+        let de = rng.uniform(-4.0, 4.0).to_radians();
+        let Ok(exact) = analyze_with(&sample, de, false) else {
+            continue;
+        };
+        total += 1;
+        let sampler = Sampler::new(Values::data(&base), &varying, de, 0.0);
+        let x: Vec<I> = varying
+            .iter()
+            .map(|p| Values::data(&other)[p.index()])
+            .collect();
+        let bound = model::analysis::aileron_range(&sample);
+        let Ok(lean) = model::analysis::fast::critical(&sampler.values(&x), bound, MAX_WIDTH)
+        else {
+            continue;
+        };
+        answered += 1;
+        same_critical(
+            &format!("aircraft {i} ({varying:?})"),
+            &exact.critical,
+            lean,
+        );
+    }
+    println!("{answered} of {total} answered through the sampler");
     assert!(
         answered as f64 >= 0.95 * total as f64,
         "{answered} of {total}"

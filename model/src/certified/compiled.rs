@@ -21,39 +21,50 @@ use std::sync::OnceLock;
 /// Highest power of a valued symbol kept in the table of powers (higher ones are computed).
 const POWERS: usize = 8;
 
-/// The enclosures of the valued symbols (parameters, delta_e, delta_r) and their powers.
+/// The enclosures of the valued symbols (parameters, delta_e, delta_r) and their powers: a row
+/// of powers for each symbol with a value, and none for the others.
 #[derive(Clone, Debug)]
 pub struct Table<T> {
-    powers: Vec<[T; POWERS + 1]>,
+    rows: Vec<[T; POWERS + 1]>,
+    /// The row of each symbol, [`NO_VALUE`] for a symbol without one.
+    row_of: [u8; MAX_SYMS],
 }
 
+/// [`Table::row_of`] of a symbol without a value.
+const NO_VALUE: u8 = u8::MAX;
+
 impl<T: Num> Table<T> {
-    /// The table of `values`, indexed by symbol (`None`: no value, the whole line).
+    /// The table of `values`, indexed by symbol (`None`: no value).
     pub fn new(values: &[Option<T>; MAX_SYMS]) -> Table<T> {
-        let powers = values
-            .iter()
-            .map(|v| {
-                let Some(x) = *v else {
-                    // No value (a trim symbol, P0, delta_a): the compiled results never read
-                    // its powers; the whole line keeps any use of them honest.
-                    return [T::constant(I::entire()); POWERS + 1];
-                };
-                let mut p = [T::constant(I::point(1.0)); POWERS + 1];
-                for e in 1..=POWERS {
-                    p[e] = if e % 2 == 0 {
-                        p[e / 2].powi(2)
-                    } else {
-                        p[e - 1] * x
-                    };
-                }
-                p
-            })
-            .collect();
-        Table { powers }
+        let mut row_of = [NO_VALUE; MAX_SYMS];
+        let mut rows = Vec::with_capacity(values.iter().flatten().count());
+        for (sym, v) in values.iter().enumerate() {
+            if let Some(x) = v {
+                row_of[sym] = rows.len() as u8;
+                rows.push(Table::row(*x));
+            }
+        }
+        Table { rows, row_of }
+    }
+
+    fn row(x: T) -> [T; POWERS + 1] {
+        let mut p = [T::constant(I::point(1.0)); POWERS + 1];
+        for e in 1..=POWERS {
+            p[e] = if e % 2 == 0 {
+                p[e / 2].powi(2)
+            } else {
+                p[e - 1] * x
+            };
+        }
+        p
     }
 
     fn pow(&self, sym: u8, e: u8) -> T {
-        let p = &self.powers[sym as usize];
+        let Some(p) = self.rows.get(self.row_of[sym as usize] as usize) else {
+            // No value (a trim symbol, P0, delta_a): the compiled results never read its
+            // powers; the whole line keeps any use of them honest.
+            return T::constant(I::entire());
+        };
         match p.get(e as usize) {
             Some(v) => *v,
             None => p[1].powi(e as u32),
@@ -119,8 +130,15 @@ impl Compiled {
                 }
             })
             .collect();
-        let mut terms = terms;
+        Compiled::of_terms(terms)
+    }
+
+    /// The compiled form of `terms` (sorted by their factors, shared prefixes counted).
+    fn of_terms(mut terms: Vec<Term>) -> Compiled {
         terms.sort_by(|a, b| a.factors.cmp(&b.factors));
+        if let Some(first) = terms.first_mut() {
+            first.shared = 0;
+        }
         for i in 1..terms.len() {
             let (before, this) = (&terms[i - 1].factors, &terms[i].factors);
             terms[i].shared = before.iter().zip(this).take_while(|(a, b)| a == b).count();
@@ -155,6 +173,42 @@ impl Compiled {
     /// The highest power of P0.
     pub fn p0_degree(&self) -> usize {
         self.p0_degree
+    }
+
+    /// `self` with the symbols for which `fixed` has values (not `keep`) folded into the
+    /// coefficients: each term's coefficient times the enclosures of their powers, terms that
+    /// then share their monomial summed. Lifting the result by a table that agrees with
+    /// `fixed` on those symbols encloses what lifting `self` encloses, in a pass over the terms
+    /// in the kept symbols only (a box's samples, where only the uncertain data vary).
+    pub fn folded(&self, fixed: &Table<I>, keep: &[bool; MAX_SYMS]) -> Compiled {
+        let mut terms: Vec<Term> = self
+            .terms
+            .iter()
+            .map(|t| {
+                let kept = |(sym, _): &&(u8, u8)| keep[*sym as usize];
+                let coef = t
+                    .factors
+                    .iter()
+                    .filter(|f| !kept(f))
+                    .fold(t.coef, |c, (sym, e)| c * fixed.pow(*sym, *e));
+                Term {
+                    coef,
+                    factors: t.factors.iter().filter(kept).copied().collect(),
+                    ..*t
+                }
+            })
+            .collect();
+        terms.sort_by(|a, b| (&a.factors, a.p0, a.da).cmp(&(&b.factors, b.p0, b.da)));
+        let mut merged: Vec<Term> = Vec::with_capacity(terms.len());
+        for t in terms {
+            match merged.last_mut() {
+                Some(m) if (&m.factors, m.p0, m.da) == (&t.factors, t.p0, t.da) => {
+                    m.coef = m.coef + t.coef;
+                }
+                _ => merged.push(t),
+            }
+        }
+        Compiled::of_terms(merged)
     }
 }
 
@@ -267,6 +321,28 @@ impl Parametric {
             .map(Compiled::p0_degree)
             .max()
             .unwrap_or(0)
+    }
+
+    /// Every result with the symbols valued in `fixed` (not `keep`) folded into its
+    /// coefficients ([`Compiled::folded`]); the groupings are the same.
+    pub fn folded(&self, fixed: &Table<I>, keep: &[bool; MAX_SYMS]) -> Parametric {
+        let one = |c: &Compiled| c.folded(fixed, keep);
+        let cleared = |c: &Cleared| Cleared {
+            groups: c.groups.clone(),
+            coefficients: c.coefficients.iter().map(one).collect(),
+        };
+        Parametric {
+            det_a: one(&self.det_a),
+            trim: std::array::from_fn(|i| one(&self.trim[i])),
+            roll: cleared(&self.roll),
+            det_j5: cleared(&self.det_j5),
+            d: cleared(&self.d),
+            zs_det: one(&self.zs_det),
+            zs_trim: std::array::from_fn(|i| one(&self.zs_trim[i])),
+            zs_det_j5: cleared(&self.zs_det_j5),
+            zs_d: cleared(&self.zs_d),
+            lateral: one(&self.lateral),
+        }
     }
 
     fn new(par: &Derivation) -> Parametric {

@@ -354,13 +354,28 @@ impl<T: Num> Dense2<T> {
         if self.0.is_empty() || o.0.is_empty() {
             return Dense2::zero();
         }
-        let mut r = vec![Dense::zero(); self.0.len() + o.0.len() - 1];
-        for (i, a) in self.0.iter().enumerate() {
-            for (j, b) in o.0.iter().enumerate() {
-                r[i + j].add_product(a, b);
+        let mut r = Dense2::zero();
+        r.add_product(self, o);
+        r
+    }
+
+    /// `self += a * b`, in place.
+    pub fn add_product(&mut self, a: &Dense2<T>, b: &Dense2<T>) {
+        if a.0.is_empty() || b.0.is_empty() {
+            return;
+        }
+        let n = a.0.len() + b.0.len() - 1;
+        if self.0.len() < n {
+            self.0.resize(n, Dense::zero());
+        }
+        for (i, x) in a.0.iter().enumerate() {
+            for (j, y) in b.0.iter().enumerate() {
+                self.0[i + j].add_product(x, y);
             }
         }
-        Dense2::new(r)
+        while self.0.last().is_some_and(Dense::is_zero) {
+            self.0.pop();
+        }
     }
 
     /// The polynomial in P0 at `delta_a = da`.

@@ -41,7 +41,7 @@ pub mod num;
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::MAX_SYMS;
 use crate::derivation::hopf::{stripped_delta4_in, TRIM_FACTOR_POWERS};
-use crate::derivation::Clearing;
+use crate::derivation::{Clearing, TrimProducts, TRIM_DEGREE};
 use crate::equations::symbols;
 use crate::interval::I;
 use compiled::{Characteristic, Cleared, Parametric, Table};
@@ -51,6 +51,7 @@ pub use isolate::{
     real_roots_outside, Bracket, Uncertified,
 };
 use num::Num;
+use std::cell::RefCell;
 
 /// The enclosures of an aircraft's data and controls (one per symbol of the model that has a
 /// value: the parameters, delta_e and delta_r) and every parametric result lifted to them.
@@ -76,15 +77,92 @@ impl Values<I> {
 impl<T: Num> Values<T> {
     /// Enclosures `params` (in [`Param::ALL`] order) of the data.
     pub fn new(params: [T; 18], delta_e_rad: f64, delta_r_rad: f64) -> Values<T> {
-        let s = symbols();
-        let mut by_symbol = [None; MAX_SYMS];
-        for (p, v) in Param::ALL.iter().zip(params) {
-            by_symbol[s.param(*p).index()] = Some(v);
-        }
-        by_symbol[s.delta_e.index()] = Some(T::constant(I::point(delta_e_rad)));
-        by_symbol[s.delta_r.index()] = Some(T::constant(I::point(delta_r_rad)));
+        let inputs = Inputs {
+            params,
+            delta_e_rad,
+            delta_r_rad,
+        };
         Values {
-            lifted: Lifted::new(Parametric::get(), Table::new(&by_symbol)),
+            lifted: Lifted::new(Parametric::get(), &inputs.table(), inputs),
+        }
+    }
+}
+
+/// What values are lifted from: the data (in [`Param::ALL`] order) and the controls.
+#[derive(Clone, Copy, Debug)]
+struct Inputs<T> {
+    params: [T; 18],
+    delta_e_rad: f64,
+    delta_r_rad: f64,
+}
+
+impl<T: Num> Inputs<T> {
+    /// The table of every valued symbol.
+    fn table(&self) -> Table<T> {
+        Table::new(&by_symbol(self.params, self.delta_e_rad, self.delta_r_rad))
+    }
+}
+
+/// The values of the model's symbols: the data `params` (in [`Param::ALL`] order) and the
+/// controls.
+fn by_symbol<T: Num>(params: [T; 18], delta_e_rad: f64, delta_r_rad: f64) -> [Option<T>; MAX_SYMS] {
+    let s = symbols();
+    let mut by_symbol = [None; MAX_SYMS];
+    for (p, v) in Param::ALL.iter().zip(params) {
+        by_symbol[s.param(*p).index()] = Some(v);
+    }
+    by_symbol[s.delta_e.index()] = Some(T::constant(I::point(delta_e_rad)));
+    by_symbol[s.delta_r.index()] = Some(T::constant(I::point(delta_r_rad)));
+    by_symbol
+}
+
+/// [`Values`] for many samples of a box where only a few parameters vary (Monte Carlo): the
+/// parametric results with every other parameter and the controls folded into their
+/// coefficients once ([`Parametric::folded`]), so that lifting one sample is a pass over the
+/// terms in the varying parameters only. The values enclose the same exact quantities as
+/// [`Values::new`] on the whole data (each folded coefficient encloses its exact value).
+#[derive(Debug)]
+pub struct Sampler {
+    parametric: Parametric,
+    inputs: Inputs<I>,
+    varying: Vec<Param>,
+}
+
+impl Sampler {
+    /// The data `params` (in [`Param::ALL`] order; the entries of `varying` are replaced by
+    /// each sample's) at elevator `delta_e_rad` and rudder `delta_r_rad`.
+    pub fn new(params: [I; 18], varying: &[Param], delta_e_rad: f64, delta_r_rad: f64) -> Sampler {
+        let s = symbols();
+        let inputs = Inputs {
+            params,
+            delta_e_rad,
+            delta_r_rad,
+        };
+        let mut keep = [false; MAX_SYMS];
+        for p in varying {
+            keep[s.param(*p).index()] = true;
+        }
+        Sampler {
+            parametric: Parametric::get().folded(&inputs.table(), &keep),
+            inputs,
+            varying: varying.to_vec(),
+        }
+    }
+
+    /// The values of the sample whose varying parameters (in the order given to
+    /// [`Sampler::new`]) are enclosed by `x`.
+    pub fn values(&self, x: &[I]) -> Values<I> {
+        // The folded results read only the varying symbols: a table of those alone (small,
+        // no large allocation per sample).
+        let s = symbols();
+        let mut inputs = self.inputs;
+        let mut varying = [None; MAX_SYMS];
+        for (p, xi) in self.varying.iter().zip(x) {
+            inputs.params[p.index()] = *xi;
+            varying[s.param(*p).index()] = Some(*xi);
+        }
+        Values {
+            lifted: Lifted::new(&self.parametric, &Table::new(&varying), inputs),
         }
     }
 }
@@ -105,8 +183,8 @@ struct Lifted<T> {
     zs: std::sync::OnceLock<LiftedZs<T>>,
     /// The characteristic coefficients, lifted on first use (only the Hopf points need them).
     hopf: std::sync::OnceLock<LiftedHopf<T>>,
-    /// The table they are lifted from.
-    table: Table<T>,
+    /// What they are lifted from (the lazily lifted parts build their table from it).
+    inputs: Inputs<T>,
 }
 
 /// The zero-sideslip part of [`Lifted`].
@@ -131,23 +209,25 @@ fn lift_groups<T: Num>(g: &Cleared, t: &Table<T>) -> Vec<Dense2<T>> {
 }
 
 impl<T: Num> Lifted<T> {
-    fn new(c: &Parametric, t: Table<T>) -> Lifted<T> {
+    /// The main results of `c` lifted by `t`, and `inputs` (the data `t` stands for) for the
+    /// parts lifted on first use.
+    fn new(c: &Parametric, t: &Table<T>, inputs: Inputs<T>) -> Lifted<T> {
         Lifted {
-            det_a: c.det_a.lift(&t),
-            trim: std::array::from_fn(|i| c.trim[i].lift(&t)),
-            roll: lift_groups(&c.roll, &t),
-            det_j5: lift_groups(&c.det_j5, &t),
-            d: lift_groups(&c.d, &t),
-            lateral: c.lateral.lift(&t),
+            det_a: c.det_a.lift(t),
+            trim: std::array::from_fn(|i| c.trim[i].lift(t)),
+            roll: lift_groups(&c.roll, t),
+            det_j5: lift_groups(&c.det_j5, t),
+            d: lift_groups(&c.d, t),
+            lateral: c.lateral.lift(t),
             zs: std::sync::OnceLock::new(),
             hopf: std::sync::OnceLock::new(),
-            table: t,
+            inputs,
         }
     }
 
     fn zs(&self) -> &LiftedZs<T> {
         self.zs.get_or_init(|| {
-            let (c, t) = (Parametric::get(), &self.table);
+            let (c, t) = (Parametric::get(), &self.inputs.table());
             LiftedZs {
                 zs_det: c.zs_det.lift(t),
                 zs_trim: std::array::from_fn(|i| c.zs_trim[i].lift(t)),
@@ -159,7 +239,7 @@ impl<T: Num> Lifted<T> {
 
     fn hopf(&self) -> &LiftedHopf<T> {
         self.hopf.get_or_init(|| {
-            let (c, t) = (Characteristic::get(), &self.table);
+            let (c, t) = (Characteristic::get(), &self.inputs.table());
             LiftedHopf {
                 c: std::array::from_fn(|k| lift_groups(&c.c[k], t)),
                 zs_c: std::array::from_fn(|k| lift_groups(&c.zs_c[k], t)),
@@ -251,19 +331,19 @@ trait Mode: Clearing {
     fn lifted(&self, p: &Dense2<Self::Num>) -> Self::Value;
     /// The coefficients of `delta_a^0, delta_a^1, ...` (trailing exact zeros dropped).
     fn in_aileron(v: &Self::Value) -> Vec<Self::Coef>;
-    /// Step 8 of a grouped result whose group coefficients are `lifted`.
-    fn clear(
+    /// Step 8 of a grouped result whose group coefficients are `lifted`, on the trim of
+    /// `products` (extended and reused).
+    fn clear_with(
         &mut self,
         c: &Cleared,
         lifted: &[Dense2<Self::Num>],
-        num: &[Self::Value],
-        den: &Self::Value,
+        products: &mut TrimProducts<Self::Value>,
     ) -> Self::Value
     where
         Self: Sized,
     {
         c.groups
-            .clear_by(self, num, den, |m, i| m.lifted(&lifted[i]))
+            .clear_with(self, products, |m, i| m.lifted(&lifted[i]))
     }
     /// The value when delta_a does not occur.
     fn univariate(v: &Self::Value) -> Result<Self::Coef, Uncertified> {
@@ -306,6 +386,9 @@ impl<T: Num> Clearing for InP0<T> {
     }
     fn mul(&mut self, a: &Dense2<T>, b: &Dense2<T>) -> Dense2<T> {
         a.mul(b)
+    }
+    fn add_product(&mut self, acc: &mut Dense2<T>, a: &Dense2<T>, b: &Dense2<T>) {
+        acc.add_product(a, b);
     }
 }
 
@@ -395,6 +478,8 @@ struct Unconstrained<M: Mode> {
     det_a_value: M::Value,
     trim: [M::Value; 4],
     trim_condition: M::Value,
+    /// Step 8's products on this trim, shared by the trim condition, det J5 and d.
+    products: RefCell<TrimProducts<M::Value>>,
 }
 
 impl<M: Mode> Unconstrained<M> {
@@ -405,11 +490,13 @@ impl<M: Mode> Unconstrained<M> {
         let det_a_value = m.lifted(&l.det_a);
         let det_a = M::univariate(&det_a_value)?;
         let trim: [M::Value; 4] = std::array::from_fn(|i| m.lifted(&l.trim[i]));
+        let mut products = TrimProducts::new(m, &trim, &det_a_value, TRIM_DEGREE);
         Ok(Unconstrained {
-            trim_condition: m.clear(&c.roll, &l.roll, &trim, &det_a_value),
+            trim_condition: m.clear_with(&c.roll, &l.roll, &mut products),
             det_a,
             det_a_value,
             trim,
+            products: RefCell::new(products),
         })
     }
 
@@ -421,7 +508,7 @@ impl<M: Mode> Unconstrained<M> {
         } else {
             (&c.d, &l.d)
         };
-        m.clear(groups, lifted, &self.trim, &self.det_a_value)
+        m.clear_with(groups, lifted, &mut self.products.borrow_mut())
     }
 
     fn eliminate(&self, f: &M::Value) -> Result<M::Coef, Uncertified> {
@@ -456,8 +543,9 @@ impl<M: Mode> ZeroSideslip<M> {
         let c = Parametric::get();
         let (num, den) = zs_trim_in(m, l);
         let l = l.zs();
-        let zs_jump = m.clear(&c.zs_det_j5, &l.zs_det_j5, &num, &den);
-        let zs_d_det = m.clear(&c.zs_d, &l.zs_d, &num, &den);
+        let mut products = TrimProducts::new(m, &num, &den, TRIM_DEGREE);
+        let zs_jump = m.clear_with(&c.zs_det_j5, &l.zs_det_j5, &mut products);
+        let zs_d_det = m.clear_with(&c.zs_d, &l.zs_d, &mut products);
         Ok(ZeroSideslip {
             zs_jump: M::univariate(&zs_jump)?,
             zs_d_det: M::univariate(&zs_d_det)?,
@@ -598,9 +686,10 @@ fn hopf_in<M: Mode>(
         M::univariate(n).map_err(uncovered)?;
     }
     let mut c = Vec::with_capacity(5);
+    let mut products = TrimProducts::new(m, num, den, 1);
     for (k, power) in TRIM_FACTOR_POWERS.iter().enumerate() {
-        let cleared =
-            M::univariate(&m.clear(&groups[k], &lifted[k], num, den)).map_err(uncovered)?;
+        let cleared = M::univariate(&m.clear_with(&groups[k], &lifted[k], &mut products))
+            .map_err(uncovered)?;
         c.push(
             cleared
                 .div_exact(&scale.pow(*power))

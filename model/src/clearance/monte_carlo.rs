@@ -17,7 +17,7 @@
 use super::{clamp_exact, critical, split_box, Rng};
 use crate::aircraft::Aircraft;
 use crate::analysis::fast;
-use crate::certified::Values;
+use crate::certified::{Sampler, Values};
 use crate::interval::I;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -81,18 +81,24 @@ pub fn run(
         })
         .collect();
     let bound = crate::analysis::aileron_range(aircraft);
+    let varying: Vec<_> = params.iter().map(|u| u.param).collect();
+    let sampler = Sampler::new(fixed, &varying, delta_e_rad, 0.0);
     let one = |x: &Vec<f64>| -> (Sample, bool) {
         // A draw strictly inside the exact ends is its own exact value; one at an end is
         // clamped to the exact end, as the exact path's sample.
-        let mut data = fixed;
-        for ((u, xi), (_, lo, hi)) in params.iter().zip(x).zip(&ends) {
-            data[u.param.index()] = if *xi > lo.hi && *xi < hi.lo {
-                I::point(*xi)
-            } else {
-                I::from_q(&clamp_exact(u, *xi))
-            };
-        }
-        let v = Values::new(data, delta_e_rad, 0.0);
+        let data: Vec<I> = params
+            .iter()
+            .zip(x)
+            .zip(&ends)
+            .map(|((u, xi), (_, lo, hi))| {
+                if *xi > lo.hi && *xi < hi.lo {
+                    I::point(*xi)
+                } else {
+                    I::from_q(&clamp_exact(u, *xi))
+                }
+            })
+            .collect();
+        let v = sampler.values(&data);
         let (point, fell_back) = match fast::critical(&v, bound, fast::MAX_WIDTH) {
             Ok(c) => (c, false),
             Err(_) => {

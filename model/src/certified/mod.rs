@@ -82,9 +82,11 @@ impl<T: Num> Values<T> {
             delta_e_rad,
             delta_r_rad,
         };
-        Values {
-            lifted: Lifted::new(Parametric::get(), &inputs.table(), inputs),
-        }
+        let table = inputs.table();
+        let lifted = Lifted::new(Parametric::get(), &table, inputs);
+        // The whole table, kept for the parts lifted on first use.
+        let _ = lifted.table.set(table);
+        Values { lifted }
     }
 }
 
@@ -183,8 +185,11 @@ struct Lifted<T> {
     zs: std::sync::OnceLock<LiftedZs<T>>,
     /// The characteristic coefficients, lifted on first use (only the Hopf points need them).
     hopf: std::sync::OnceLock<LiftedHopf<T>>,
-    /// What they are lifted from (the lazily lifted parts build their table from it).
+    /// What they are lifted from.
     inputs: Inputs<T>,
+    /// The table of every valued symbol, for the parts lifted on first use (built from
+    /// `inputs` when first needed, unless given).
+    table: std::sync::OnceLock<Table<T>>,
 }
 
 /// The zero-sideslip part of [`Lifted`].
@@ -222,12 +227,17 @@ impl<T: Num> Lifted<T> {
             zs: std::sync::OnceLock::new(),
             hopf: std::sync::OnceLock::new(),
             inputs,
+            table: std::sync::OnceLock::new(),
         }
+    }
+
+    fn table(&self) -> &Table<T> {
+        self.table.get_or_init(|| self.inputs.table())
     }
 
     fn zs(&self) -> &LiftedZs<T> {
         self.zs.get_or_init(|| {
-            let (c, t) = (Parametric::get(), &self.inputs.table());
+            let (c, t) = (Parametric::get(), self.table());
             LiftedZs {
                 zs_det: c.zs_det.lift(t),
                 zs_trim: std::array::from_fn(|i| c.zs_trim[i].lift(t)),
@@ -239,7 +249,7 @@ impl<T: Num> Lifted<T> {
 
     fn hopf(&self) -> &LiftedHopf<T> {
         self.hopf.get_or_init(|| {
-            let (c, t) = (Characteristic::get(), &self.inputs.table());
+            let (c, t) = (Characteristic::get(), self.table());
             LiftedHopf {
                 c: std::array::from_fn(|k| lift_groups(&c.c[k], t)),
                 zs_c: std::array::from_fn(|k| lift_groups(&c.zs_c[k], t)),

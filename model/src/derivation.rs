@@ -668,7 +668,10 @@ impl<V: Clone> TrimProducts<V> {
     /// `den^0 .. den^k`.
     pub fn new<C: Clearing<Value = V>>(ring: &mut C, num: &[V], den: &V, k: u32) -> Self {
         assert!(num.len() <= 8, "at most eight trim quantities");
-        let mut memo = Vec::with_capacity(32);
+        // Room for the products of the trim quantities (k = 2, four trim states: 21), and no
+        // more: for polynomial values a request of 1 KiB or above sends glibc's malloc down
+        // its slow path (it consolidates its fast bins), measurably on every Monte Carlo sample.
+        let mut memo = Vec::with_capacity(24);
         memo.extend((0..=k).map(|j| ((j, 0), ring.pow(den, j))));
         TrimProducts {
             num: num.to_vec(),

@@ -482,9 +482,8 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
                 };
                 let clearance =
                     model::clearance::clear(&ac, &s, &mut tick).map_err(|e| named(&ac, e))?;
-                let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-                let monte_carlo =
-                    model::clearance::monte_carlo::run(&ac, *de, samples, seed, threads);
+                // 0: every core, on rayon's global pool (one set of threads for every run).
+                let monte_carlo = model::clearance::monte_carlo::run(&ac, *de, samples, seed, 0);
                 runs.push(model::clearance::output::Run {
                     clearance,
                     monte_carlo,

@@ -627,21 +627,26 @@ impl TrimGroups {
         den: &C::Value,
         lift: impl FnMut(&mut C, usize) -> C::Value,
     ) -> C::Value {
-        let mut products = TrimProducts::new(ring, num, den, self.k);
-        self.clear_with(ring, &mut products, lift)
+        let mut products = TrimProducts::new(ring, den, self.k);
+        self.clear_with(ring, num, den, &mut products, lift)
     }
 
-    /// Step 8 on the trim of `products` (whose products this clearing extends and reuses),
-    /// with coefficient `i` lifted by `lift`.
+    /// Step 8 on the trim `num / den` with the products of that trim kept in `products`
+    /// (extended and reused; always the same trim for the same `products`), coefficient `i`
+    /// lifted by `lift`.
     pub fn clear_with<C: Clearing>(
         &self,
         ring: &mut C,
+        num: &[C::Value],
+        den: &C::Value,
         products: &mut TrimProducts<C::Value>,
         mut lift: impl FnMut(&mut C, usize) -> C::Value,
     ) -> C::Value {
+        assert!(num.len() <= 8, "at most eight trim quantities");
         let mut acc = ring.lift(&Poly::zero());
         for (i, (e, _)) in self.groups.iter().enumerate() {
-            let at = products.index(ring, self.k - e.iter().sum::<u32>(), e);
+            debug_assert_eq!(e.len(), num.len(), "one exponent per trim quantity");
+            let at = products.index(ring, num, den, self.k - e.iter().sum::<u32>(), e);
             let c = lift(ring, i);
             ring.add_product(&mut acc, &c, products.get(at));
         }
@@ -650,34 +655,28 @@ impl TrimGroups {
 }
 
 /// The products `den^j num^m` of step 8 on one trim (`t_i = num_i / den`), each built once, on
-/// demand, from the one with its last factor removed, and kept: the groups of one quantity
-/// share their prefixes, and the quantities cleared on the same trim (the trim condition,
-/// det J5, d) share the products themselves. The products and their order are those of
-/// multiplying `den^j` by the factors of `num^m` one by one, so a ring that records
-/// expressions (the emitter's DAG) sees the same expressions, fewer times.
+/// demand, and kept: `den^j` by the ring's power, every other one from the product with its
+/// last factor removed. The groups of one quantity share their prefixes, and the quantities
+/// cleared on the same trim (the trim condition, det J5, d) share the products themselves.
+/// The products and their order are those of multiplying `den^j` by the factors of `num^m`
+/// one by one, so a ring that records expressions (the emitter's DAG) sees the same
+/// expressions, fewer times.
 #[derive(Clone, Debug)]
 pub struct TrimProducts<V> {
-    num: Vec<V>,
-    den: V,
     /// `((j, m), den^j num^m)`, the exponents `m` packed a byte each ([`TrimProducts::key`]).
     memo: Vec<((u32, u64), V)>,
 }
 
 impl<V: Clone> TrimProducts<V> {
-    /// The products of the trim `num / den` (at most eight trim quantities), starting with
-    /// `den^0 .. den^k`.
-    pub fn new<C: Clearing<Value = V>>(ring: &mut C, num: &[V], den: &V, k: u32) -> Self {
-        assert!(num.len() <= 8, "at most eight trim quantities");
+    /// The products of a trim with denominator `den` (at most eight trim quantities),
+    /// starting with `den^0 .. den^k`.
+    pub fn new<C: Clearing<Value = V>>(ring: &mut C, den: &V, k: u32) -> Self {
         // Room for the products of the trim quantities (k = 2, four trim states: 21), and no
         // more: for polynomial values a request of 1 KiB or above sends glibc's malloc down
         // its slow path (it consolidates its fast bins), measurably on every Monte Carlo sample.
         let mut memo = Vec::with_capacity(24);
         memo.extend((0..=k).map(|j| ((j, 0), ring.pow(den, j))));
-        TrimProducts {
-            num: num.to_vec(),
-            den: den.clone(),
-            memo,
-        }
+        TrimProducts { memo }
     }
 
     /// The packed exponents `m` with one more factor `num_v` (each exponent at most the
@@ -691,12 +690,19 @@ impl<V: Clone> TrimProducts<V> {
     }
 
     /// The index of `den^j num^m`, built if new.
-    fn index<C: Clearing<Value = V>>(&mut self, ring: &mut C, j: u32, m: &[u32]) -> usize {
+    fn index<C: Clearing<Value = V>>(
+        &mut self,
+        ring: &mut C,
+        num: &[V],
+        den: &V,
+        j: u32,
+        m: &[u32],
+    ) -> usize {
         let mut key = (j, 0);
         let mut at = match self.find(key) {
             Some(found) => found,
             None => {
-                let power = ring.pow(&self.den, j);
+                let power = ring.pow(den, j);
                 self.memo.push((key, power));
                 self.memo.len() - 1
             }
@@ -707,7 +713,7 @@ impl<V: Clone> TrimProducts<V> {
                 at = match self.find(key) {
                     Some(found) => found,
                     None => {
-                        let next = ring.mul(&self.memo[at].1, &self.num[v]);
+                        let next = ring.mul(&self.memo[at].1, &num[v]);
                         self.memo.push((key, next));
                         self.memo.len() - 1
                     }

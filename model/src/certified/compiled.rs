@@ -32,6 +32,7 @@ pub struct Table<T> {
 
 /// [`Table::row_of`] of a symbol without a value.
 const NO_VALUE: u8 = u8::MAX;
+const _: () = assert!(MAX_SYMS < NO_VALUE as usize, "a row index for every symbol");
 
 impl<T: Num> Table<T> {
     /// The table of `values`, indexed by symbol (`None`: no value).
@@ -61,8 +62,9 @@ impl<T: Num> Table<T> {
 
     fn pow(&self, sym: u8, e: u8) -> T {
         let Some(p) = self.rows.get(self.row_of[sym as usize] as usize) else {
-            // No value (a trim symbol, P0, delta_a): the compiled results never read its
-            // powers; the whole line keeps any use of them honest.
+            // No value (a trim symbol, P0 or delta_a, which the compiled results never read; a
+            // parameter folded into the coefficients, for a sample's table): the whole line
+            // keeps any use of it honest.
             return T::constant(I::entire());
         };
         match p.get(e as usize) {
@@ -175,11 +177,12 @@ impl Compiled {
         self.p0_degree
     }
 
-    /// `self` with the symbols for which `fixed` has values (not `keep`) folded into the
-    /// coefficients: each term's coefficient times the enclosures of their powers, terms that
-    /// then share their monomial summed. Lifting the result by a table that agrees with
-    /// `fixed` on those symbols encloses what lifting `self` encloses, in a pass over the terms
-    /// in the kept symbols only (a box's samples, where only the uncertain data vary).
+    /// `self` with every symbol not in `keep` folded into the coefficients: each term's
+    /// coefficient times the enclosures of those symbols' powers from `fixed`, terms that then
+    /// share their monomial summed. Lifting the result by a table of the kept symbols encloses
+    /// what lifting `self` by `fixed` with those kept values encloses, in a pass over the terms
+    /// in the kept symbols only (a box's samples, where only the uncertain data vary). A folded
+    /// symbol without a value in `fixed` folds in the whole real line: sound, and useless.
     pub fn folded(&self, fixed: &Table<I>, keep: &[bool; MAX_SYMS]) -> Compiled {
         let mut terms: Vec<Term> = self
             .terms

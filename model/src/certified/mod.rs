@@ -154,6 +154,11 @@ impl Sampler {
     /// The values of the sample whose varying parameters (in the order given to
     /// [`Sampler::new`]) are enclosed by `x`.
     pub fn values(&self, x: &[I]) -> Values<I> {
+        debug_assert_eq!(
+            x.len(),
+            self.varying.len(),
+            "one value per varying parameter"
+        );
         // The folded results read only the varying symbols: a table of those alone (small,
         // no large allocation per sample).
         let s = symbols();
@@ -347,13 +352,15 @@ trait Mode: Clearing {
         &mut self,
         c: &Cleared,
         lifted: &[Dense2<Self::Num>],
+        num: &[Self::Value],
+        den: &Self::Value,
         products: &mut TrimProducts<Self::Value>,
     ) -> Self::Value
     where
         Self: Sized,
     {
         c.groups
-            .clear_with(self, products, |m, i| m.lifted(&lifted[i]))
+            .clear_with(self, num, den, products, |m, i| m.lifted(&lifted[i]))
     }
     /// The value when delta_a does not occur.
     fn univariate(v: &Self::Value) -> Result<Self::Coef, Uncertified> {
@@ -488,7 +495,8 @@ struct Unconstrained<M: Mode> {
     det_a_value: M::Value,
     trim: [M::Value; 4],
     trim_condition: M::Value,
-    /// Step 8's products on this trim, shared by the trim condition, det J5 and d.
+    /// Step 8's products on this trim (`trim / det_a_value`), shared by the trim condition,
+    /// det J5 and d.
     products: RefCell<TrimProducts<M::Value>>,
 }
 
@@ -500,9 +508,9 @@ impl<M: Mode> Unconstrained<M> {
         let det_a_value = m.lifted(&l.det_a);
         let det_a = M::univariate(&det_a_value)?;
         let trim: [M::Value; 4] = std::array::from_fn(|i| m.lifted(&l.trim[i]));
-        let mut products = TrimProducts::new(m, &trim, &det_a_value, TRIM_DEGREE);
+        let mut products = TrimProducts::new(m, &det_a_value, TRIM_DEGREE);
         Ok(Unconstrained {
-            trim_condition: m.clear_with(&c.roll, &l.roll, &mut products),
+            trim_condition: m.clear_with(&c.roll, &l.roll, &trim, &det_a_value, &mut products),
             det_a,
             det_a_value,
             trim,
@@ -518,7 +526,8 @@ impl<M: Mode> Unconstrained<M> {
         } else {
             (&c.d, &l.d)
         };
-        m.clear_with(groups, lifted, &mut self.products.borrow_mut())
+        let mut products = self.products.borrow_mut();
+        m.clear_with(groups, lifted, &self.trim, &self.det_a_value, &mut products)
     }
 
     fn eliminate(&self, f: &M::Value) -> Result<M::Coef, Uncertified> {
@@ -553,9 +562,9 @@ impl<M: Mode> ZeroSideslip<M> {
         let c = Parametric::get();
         let (num, den) = zs_trim_in(m, l);
         let l = l.zs();
-        let mut products = TrimProducts::new(m, &num, &den, TRIM_DEGREE);
-        let zs_jump = m.clear_with(&c.zs_det_j5, &l.zs_det_j5, &mut products);
-        let zs_d_det = m.clear_with(&c.zs_d, &l.zs_d, &mut products);
+        let mut products = TrimProducts::new(m, &den, TRIM_DEGREE);
+        let zs_jump = m.clear_with(&c.zs_det_j5, &l.zs_det_j5, &num, &den, &mut products);
+        let zs_d_det = m.clear_with(&c.zs_d, &l.zs_d, &num, &den, &mut products);
         Ok(ZeroSideslip {
             zs_jump: M::univariate(&zs_jump)?,
             zs_d_det: M::univariate(&zs_d_det)?,
@@ -696,9 +705,9 @@ fn hopf_in<M: Mode>(
         M::univariate(n).map_err(uncovered)?;
     }
     let mut c = Vec::with_capacity(5);
-    let mut products = TrimProducts::new(m, num, den, 1);
+    let mut products = TrimProducts::new(m, den, 1);
     for (k, power) in TRIM_FACTOR_POWERS.iter().enumerate() {
-        let cleared = M::univariate(&m.clear_with(&groups[k], &lifted[k], &mut products))
+        let cleared = M::univariate(&m.clear_with(&groups[k], &lifted[k], num, den, &mut products))
             .map_err(uncovered)?;
         c.push(
             cleared
@@ -979,5 +988,71 @@ pub fn eliminate<C: Coeff>(g: &[C], f: &[C], det_a: &C) -> Result<C, Uncertified
             res.div_exact(&det_a.pow(4)).ok_or(Uncertified::Degenerate)
         }
         _ => Err(Uncertified::Degenerate),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every coefficient of every polynomial of two liftings, as pairs (a missing one is an
+    /// exact zero).
+    fn coefficient_pairs(a: &Lifted<I>, b: &Lifted<I>) -> Vec<(I, I)> {
+        let all = |l: &Lifted<I>| -> Vec<Dense2<I>> {
+            let mut v = vec![l.det_a.clone(), l.lateral.clone()];
+            v.extend(l.trim.iter().cloned());
+            v.extend(l.roll.iter().chain(&l.det_j5).chain(&l.d).cloned());
+            v
+        };
+        let (a, b) = (all(a), all(b));
+        assert_eq!(a.len(), b.len());
+        let zero = I::point(0.0);
+        let mut pairs = Vec::new();
+        for (p, q) in a.iter().zip(&b) {
+            for i in 0..p.0.len().max(q.0.len()) {
+                let (pi, qi) = (p.coeff(i), q.coeff(i));
+                for j in 0..pi.0.len().max(qi.0.len()) {
+                    let at = |d: &Dense<I>| d.0.get(j).copied().unwrap_or(zero);
+                    pairs.push((at(&pi), at(&qi)));
+                }
+            }
+        }
+        pairs
+    }
+
+    /// A sample's values through the sampler (the other parameters folded into the
+    /// coefficients) and through the whole data enclose the same exact coefficients: every
+    /// pair of enclosures overlaps, and the folded ones stay tight.
+    #[test]
+    fn sampler_values_enclose_what_the_whole_data_encloses() {
+        let b = Aircraft::b();
+        let data = Values::data(&b);
+        let varying = [Param::Lp, Param::NBeta, Param::C, Param::MDeltaE];
+        let de = 0.03;
+        let sampler = Sampler::new(data, &varying, de, 0.0);
+        let mut moved = data;
+        let x: Vec<I> = varying
+            .iter()
+            .map(|p| {
+                moved[p.index()] = data[p.index()] * I::point(1.03);
+                moved[p.index()]
+            })
+            .collect();
+        let pairs = coefficient_pairs(
+            &sampler.values(&x).lifted,
+            &Values::new(moved, de, 0.0).lifted,
+        );
+        assert!(pairs.len() > 50, "{} coefficients", pairs.len());
+        for (folded, whole) in pairs {
+            assert!(folded.intersect(whole).is_some(), "{folded:?} vs {whole:?}");
+            let scale = 1.0 + folded.lo.abs().max(folded.hi.abs());
+            assert!(folded.width() <= 1e-12 * scale, "{folded:?}");
+        }
+        // The sampler answers for the sample, not for the data it was built from.
+        let pairs = coefficient_pairs(
+            &sampler.values(&x).lifted,
+            &Values::new(data, de, 0.0).lifted,
+        );
+        assert!(pairs.iter().any(|(f, w)| f.intersect(*w).is_none()));
     }
 }

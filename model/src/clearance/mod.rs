@@ -38,6 +38,7 @@ use crate::analysis::{analyze, AnalysisError, JumpPoint};
 use crate::interval::I;
 use bound::{BoxPolys, Failure, LiftedBox};
 use num_rational::BigRational;
+use rayon::prelude::*;
 use serde::Serialize;
 use std::time::Instant;
 
@@ -240,9 +241,12 @@ struct Worst {
 impl Worst {
     /// Evaluates one aircraft; returns its critical (p0, |delta_a| deg) if it has one.
     fn try_aircraft(&mut self, a: &Aircraft) -> Result<Option<(f64, f64)>, ClearError> {
-        let Some(j) = critical(a, self.delta_e_rad)? else {
-            return Ok(None);
-        };
+        Ok(self.record(a, critical(a, self.delta_e_rad)?))
+    }
+
+    /// Keeps `a` if its critical jump `j` lowers either minimum (or hits the limit).
+    fn record(&mut self, a: &Aircraft, j: Option<JumpPoint>) -> Option<(f64, f64)> {
+        let j = j?;
         let da = j.delta_a_deg.abs();
         if self.p0.as_ref().is_none_or(|(p, _)| j.p0 < *p) {
             self.p0 = Some((j.p0, case(a, &j)));
@@ -255,7 +259,7 @@ impl Worst {
                 self.limit_hit = Some(case(a, &j));
             }
         }
-        Ok(Some((j.p0, da)))
+        Some((j.p0, da))
     }
 }
 
@@ -309,6 +313,78 @@ struct Leaf {
     /// Lower bound of |delta_a| (rad) of the primary branch at `depth` over the box.
     da_lo: f64,
     stuck: Option<Failure>,
+}
+
+/// Leaves of the branch and bound stepped at once (in parallel on rayon's threads).
+const BATCH: usize = 8;
+
+/// What one step of a leaf needs: the box's polynomials, the initial box, the roll rate no
+/// slab goes beyond, and the slab widths.
+struct Walk<'a> {
+    polys: &'a BoxPolys,
+    theta0: &'a [I],
+    limit: f64,
+    min_step: f64,
+    first_step: f64,
+}
+
+impl Walk<'_> {
+    /// One step of `leaf`: its next slab certified (the leaf deeper, its step doubled), or
+    /// not (the step quartered; at the smallest step the box split in two, or the leaf stuck
+    /// when it cannot be). Returns the leaf and the other half of a split.
+    fn step(&self, leaf: &Leaf) -> (Leaf, Option<Leaf>) {
+        let (polys, mut leaf) = (self.polys, leaf.clone());
+        let top = (leaf.depth + leaf.step).min(self.limit.max(leaf.depth + self.min_step));
+        let slab = I::new(leaf.depth, top);
+        let why = match polys.certify(&leaf.lifted, slab) {
+            Ok(_) => {
+                leaf.depth = top;
+                leaf.step *= 2.0;
+                if let Ok(d) = polys.aileron(&leaf.lifted, I::point(top)) {
+                    leaf.da_lo = leaf.da_lo.max(polys.aileron_lower(&leaf.lifted, top, d));
+                }
+                return (leaf, None);
+            }
+            Err(why) => why,
+        };
+        if leaf.step > self.min_step {
+            leaf.step = (leaf.step / 4.0).max(self.min_step);
+            return (leaf, None);
+        }
+        // Split the coordinate that spreads the failing quantity most (its partial derivative
+        // times the coordinate's width); the widest one (relative to the initial box) when that
+        // cannot be told.
+        let theta0 = self.theta0;
+        let widest = (0..leaf.theta.len())
+            .max_by(|a, b| {
+                let r = |j: usize| leaf.theta[j].width() / theta0[j].width();
+                r(*a).total_cmp(&r(*b))
+            })
+            .unwrap_or(0);
+        let k = polys
+            .split_coordinate(&leaf.lifted, slab, why)
+            .unwrap_or(widest);
+        let t = leaf.theta[k];
+        let m = t.mid();
+        if m <= t.lo || m >= t.hi {
+            leaf.stuck = Some(why);
+            return (leaf, None);
+        }
+        let mut other = leaf.clone();
+        leaf.theta[k] = I::new(t.lo, m);
+        other.theta[k] = I::new(m, t.hi);
+        leaf.step = self.first_step.max(self.min_step);
+        other.step = leaf.step;
+        // The halves bound |delta_a| at their depth more tightly than the whole.
+        for half in [&mut leaf, &mut other] {
+            half.lifted = std::sync::Arc::new(polys.lift(&half.theta));
+            if let Ok(d) = polys.aileron(&half.lifted, I::point(half.depth)) {
+                let lower = polys.aileron_lower(&half.lifted, half.depth, d);
+                half.da_lo = half.da_lo.max(lower);
+            }
+        }
+        (leaf, Some(other))
+    }
 }
 
 /// Runs the clearance of `aircraft`'s `[uncertainty]` box; `progress` gets a fraction in [0, 1].
@@ -400,9 +476,14 @@ pub fn clear(
         .map(|u| (&u.lo + &u.hi) / BigRational::from_integer(2.into()))
         .collect();
     worst.try_aircraft(&at(&base, &params, &centre))?;
+    // The random candidates analysed on rayon's threads, kept in their seeded order.
     let mut rng = Rng::new(settings.seed);
-    for _ in 0..settings.candidates {
-        worst.try_aircraft(&sample(&base, &params, &mut rng))?;
+    let candidates: Vec<Aircraft> = (0..settings.candidates)
+        .map(|_| sample(&base, &params, &mut rng))
+        .collect();
+    let found: Vec<_> = candidates.par_iter().map(|a| critical(a, de)).collect();
+    for (a, j) in candidates.iter().zip(found) {
+        worst.record(a, j?);
     }
     progress(0.05);
     let coords = |c: &Option<(f64, CaseAircraft)>| -> Vec<BigRational> {
@@ -475,70 +556,49 @@ pub fn clear(
             note = format!("stopped at the budget of {} boxes", settings.max_boxes);
             break;
         }
-        // Work on the leaf that limits the larger relative gap.
+        // Work on the leaves that limit the larger relative gap: the lowest few still short
+        // of it, one step each, in parallel. A fixed number of them, so that the answer does
+        // not depend on the number of cores; every leaf has to reach the target anyway, so
+        // taking the next-lowest ones along adds little work.
         let by_p0 = !done_p0;
-        let i = (0..leaves.len())
+        let key = |l: &Leaf| if by_p0 { l.depth } else { l.da_lo };
+        let target = if by_p0 {
+            hi_p0 - settings.tolerance_p0
+        } else {
+            hi_da_rad - tol_da
+        };
+        let mut batch: Vec<usize> = (0..leaves.len())
             .filter(|i| leaves[*i].stuck.is_none())
-            .min_by(|a, b| {
-                let k = |l: &Leaf| if by_p0 { l.depth } else { l.da_lo };
-                k(&leaves[*a]).total_cmp(&k(&leaves[*b]))
-            });
-        let Some(i) = i else {
+            .collect();
+        let lowest =
+            |a: &usize, b: &usize| key(&leaves[*a]).total_cmp(&key(&leaves[*b])).then(a.cmp(b));
+        if batch.len() > BATCH {
+            batch.select_nth_unstable_by(BATCH - 1, lowest);
+            batch.truncate(BATCH);
+        }
+        batch.sort_by(lowest);
+        let Some(first) = batch.first().copied() else {
             note = "every remaining box is stuck at a point where the proof cannot continue"
                 .to_string();
             break;
         };
-        let leaf = &mut leaves[i];
+        batch.retain(|i| *i == first || key(&leaves[*i]) < target);
         let limit = if by_p0 { hi_p0 } else { f64::INFINITY };
-        let top = (leaf.depth + leaf.step).min(limit.max(leaf.depth + min_step));
-        let slab = I::new(leaf.depth, top);
-        slabs += 1;
-        match polys.certify(&leaf.lifted, slab) {
-            Ok(_) => {
-                leaf.depth = top;
-                leaf.step *= 2.0;
-                if let Ok(d) = polys.aileron(&leaf.lifted, I::point(top)) {
-                    leaf.da_lo = leaf.da_lo.max(polys.aileron_lower(&leaf.lifted, top, d));
-                }
-            }
-            Err(why) => {
-                if leaf.step > min_step {
-                    leaf.step = (leaf.step / 4.0).max(min_step);
-                } else {
-                    // Split the coordinate that spreads the failing quantity most (its
-                    // partial derivative times the coordinate's width); the widest one
-                    // (relative to the initial box) when that cannot be told.
-                    let widest = (0..leaf.theta.len())
-                        .max_by(|a, b| {
-                            let r = |j: usize| leaf.theta[j].width() / theta0[j].width();
-                            r(*a).total_cmp(&r(*b))
-                        })
-                        .unwrap_or(0);
-                    let k = polys
-                        .split_coordinate(&leaf.lifted, slab, why)
-                        .unwrap_or(widest);
-                    let t = leaf.theta[k];
-                    let m = t.mid();
-                    if m <= t.lo || m >= t.hi {
-                        leaf.stuck = Some(why);
-                        continue;
-                    }
-                    let mut other = leaf.clone();
-                    leaf.theta[k] = I::new(t.lo, m);
-                    other.theta[k] = I::new(m, t.hi);
-                    leaf.step = first_step.max(min_step);
-                    other.step = leaf.step;
-                    // The halves bound |delta_a| at their depth more tightly than the whole.
-                    for half in [&mut *leaf, &mut other] {
-                        half.lifted = std::sync::Arc::new(polys.lift(&half.theta));
-                        if let Ok(d) = polys.aileron(&half.lifted, I::point(half.depth)) {
-                            let lower = polys.aileron_lower(&half.lifted, half.depth, d);
-                            half.da_lo = half.da_lo.max(lower);
-                        }
-                    }
-                    leaves.push(other);
-                    boxes += 1;
-                }
+        let walk = Walk {
+            polys: &polys,
+            theta0: &theta0,
+            limit,
+            min_step,
+            first_step,
+        };
+        let steps: Vec<(Leaf, Option<Leaf>)> =
+            batch.par_iter().map(|i| walk.step(&leaves[*i])).collect();
+        for (i, (leaf, other)) in batch.into_iter().zip(steps) {
+            slabs += 1;
+            leaves[i] = leaf;
+            if let Some(other) = other {
+                leaves.push(other);
+                boxes += 1;
             }
         }
     }
@@ -575,3 +635,34 @@ pub fn clear(
 
 #[cfg(feature = "cli")]
 pub mod output;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The branch and bound steps a fixed number of leaves at a time, so its answer (bounds,
+    /// worst cases, boxes, slabs) does not depend on how many threads run them.
+    #[test]
+    fn the_proof_does_not_depend_on_the_threads() {
+        let path =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../aircraft/a_uncertain.toml");
+        let a = crate::aircraft::load(&path).expect("the committed uncertain aircraft");
+        let settings = Settings::default();
+        let run = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .expect("a thread pool");
+            let mut c = pool
+                .install(|| clear(&a, &settings, &mut |_| {}))
+                .expect("a proof");
+            c.seconds = 0.0;
+            c
+        };
+        let one = run(1);
+        assert!(one.critical_p0.converged, "{one:?}");
+        assert!(one.boxes > 1, "the box is split: {one:?}");
+        assert_eq!(run(2), one);
+        assert_eq!(run(3), one);
+    }
+}

@@ -51,8 +51,8 @@ pub struct MonteCarlo {
 
 /// `n` seeded uniform samples of the box, each analysed by the certified route
 /// ([`fast::critical`]: every critical roll rate bracketed to 1e-9 relative around the exact
-/// one) and by the exact path where a certificate fails, on rayon's threads (`threads`, or all
-/// cores for 0). The samples are the first `n` of the seeded sequence, whatever the threads.
+/// one) and by the exact path where a certificate fails, on `threads` threads (0: rayon's
+/// global pool, every core unless `RAYON_NUM_THREADS` says otherwise). The samples are the first `n` of the seeded sequence, whatever the threads.
 pub fn run(
     aircraft: &Aircraft,
     delta_e_rad: f64,

@@ -685,8 +685,15 @@ impl<V: Clone> TrimProducts<V> {
         m + (1 << (8 * v))
     }
 
-    fn find(&self, key: (u32, u64)) -> Option<usize> {
-        self.memo.iter().position(|(k, _)| *k == key)
+    /// The index of the product under `key`, built by `make` (from the products so far) if
+    /// new.
+    fn find_or(&mut self, key: (u32, u64), make: impl FnOnce(&[((u32, u64), V)]) -> V) -> usize {
+        if let Some(found) = self.memo.iter().position(|(k, _)| *k == key) {
+            return found;
+        }
+        let value = make(&self.memo);
+        self.memo.push((key, value));
+        self.memo.len() - 1
     }
 
     /// The index of `den^j num^m`, built if new.
@@ -699,25 +706,12 @@ impl<V: Clone> TrimProducts<V> {
         m: &[u32],
     ) -> usize {
         let mut key = (j, 0);
-        let mut at = match self.find(key) {
-            Some(found) => found,
-            None => {
-                let power = ring.pow(den, j);
-                self.memo.push((key, power));
-                self.memo.len() - 1
-            }
-        };
+        let mut at = self.find_or(key, |_| ring.pow(den, j));
         for (v, e) in m.iter().enumerate() {
             for _ in 0..*e {
                 key.1 = Self::key(key.1, v);
-                at = match self.find(key) {
-                    Some(found) => found,
-                    None => {
-                        let next = ring.mul(&self.memo[at].1, &num[v]);
-                        self.memo.push((key, next));
-                        self.memo.len() - 1
-                    }
-                };
+                let prefix = at;
+                at = self.find_or(key, |memo| ring.mul(&memo[prefix].1, &num[v]));
             }
         }
         at

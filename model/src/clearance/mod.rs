@@ -637,16 +637,21 @@ pub fn clear(
 pub mod output;
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
+
+    /// The committed `aircraft/a_uncertain.toml` (four uncertain derivatives).
+    pub(crate) fn a_uncertain() -> Aircraft {
+        let path =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../aircraft/a_uncertain.toml");
+        crate::aircraft::load(&path).expect("the committed uncertain aircraft")
+    }
 
     /// The branch and bound steps a fixed number of leaves at a time, so its answer (bounds,
     /// worst cases, boxes, slabs) does not depend on how many threads run them.
     #[test]
     fn the_proof_does_not_depend_on_the_threads() {
-        let path =
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../aircraft/a_uncertain.toml");
-        let a = crate::aircraft::load(&path).expect("the committed uncertain aircraft");
+        let a = a_uncertain();
         let settings = Settings::default();
         let run = |threads: usize| {
             let pool = rayon::ThreadPoolBuilder::new()

@@ -52,7 +52,8 @@ pub struct MonteCarlo {
 /// `n` seeded uniform samples of the box, each analysed by the certified route
 /// ([`fast::critical`]: every critical roll rate bracketed to 1e-9 relative around the exact
 /// one) and by the exact path where a certificate fails, on `threads` threads (0: rayon's
-/// global pool, every core unless `RAYON_NUM_THREADS` says otherwise). The samples are the first `n` of the seeded sequence, whatever the threads.
+/// global pool, every core unless `RAYON_NUM_THREADS` says otherwise). The samples are the
+/// first `n` of the seeded sequence, whatever the threads.
 pub fn run(
     aircraft: &Aircraft,
     delta_e_rad: f64,
@@ -162,9 +163,7 @@ mod tests {
     /// same samples in the same order, and the same summary.
     #[test]
     fn the_samples_do_not_depend_on_the_threads() {
-        let path =
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../aircraft/a_uncertain.toml");
-        let a = crate::aircraft::load(&path).expect("the committed uncertain aircraft");
+        let a = super::super::tests::a_uncertain();
         let de = 2f64.to_radians();
         let one = run(&a, de, 40, 3, 1);
         assert_eq!(one.values.len(), 40);

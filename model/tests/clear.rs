@@ -18,6 +18,18 @@ fn aircraft_a_with(extra: &str, name: &str) -> PathBuf {
     path
 }
 
+/// `model clear PATH --samples N --json`, parsed.
+fn clear_json(path: &std::path::Path, samples: usize) -> serde_json::Value {
+    let samples = samples.to_string();
+    json(&model(&[
+        "clear",
+        path.to_str().unwrap(),
+        "--samples",
+        &samples,
+        "--json",
+    ]))
+}
+
 #[test]
 fn bad_uncertainty_entries_exit_2_naming_file_line_and_key() {
     // a.toml has 35 lines; the blank line and the table header follow, so the entry is line 38.
@@ -58,13 +70,7 @@ fn bad_uncertainty_entries_exit_2_naming_file_line_and_key() {
 #[test]
 fn zero_width_box_gives_lo_equal_hi_equal_analyze() {
     let path = aircraft_a_with("[uncertainty]\nl_p = 0.0\nn_beta = \"0%\"\n", "zero.toml");
-    let c = json(&model(&[
-        "clear",
-        path.to_str().unwrap(),
-        "--samples",
-        "3",
-        "--json",
-    ]));
+    let c = clear_json(&path, 3);
     let a = json(&model(&["analyze", "A", "--json"]));
     let p0 = a["critical"]["p0"].as_f64().unwrap();
     let da = a["critical"]["delta_a_deg"].as_f64().unwrap().abs();
@@ -84,4 +90,105 @@ fn zero_width_box_gives_lo_equal_hi_equal_analyze() {
     let mc = c["monte_carlo"]["min_p0"].as_f64().unwrap();
     assert!((mc - p0).abs() <= 1e-9 * p0, "{mc} vs {p0}");
     assert!(c["cleared"].is_null());
+}
+
+/// A nondimensional body-axis aircraft in round numbers (qbar S = 120 000 N, qbar S b (b/2V) /
+/// ix = 6 per unit Cl_p, qbar S / (m V) = 0.12 per unit CL_alpha), without aileron yaw; `ixz`
+/// and the `[uncertainty]` table as given.
+fn body_axis_with(ixz: &str, uncertainty: &str, name: &str) -> PathBuf {
+    let text = format!(
+        "name = \"Made up\"\n[flight]\nspeed = 100\ndensity = 1.2\n[geometry]\nmass = 10000\n\
+         wing_area = 20\nspan = 10\nchord = 2\n[inertia]\nix = 10000\niy = 40000\niz = 45000\n\
+         ixz = {ixz}\n[coefficients]\nCL_alpha = 5\nCY_beta = -1\nCl_beta = -0.1\nCl_p = -0.4\n\
+         Cl_r = 0.1\nCl_delta_a = -0.2\nCl_delta_r = 0.01\nCm_alpha = -0.5\nCm_q = -10\n\
+         Cm_delta_e = -1\nCn_beta = 0.1\nCn_p = -0.05\nCn_r = -0.3\nCn_delta_a = 0\n\
+         Cn_delta_r = -0.05\n[uncertainty]\n{uncertainty}\n"
+    );
+    let dir = std::env::temp_dir().join(format!("model-clear-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// A nondimensional file takes its uncertainty per coefficient: with ixz = 0 each coefficient's
+/// interval is the interval of the one derivative it scales (l_p = 6 Cl_p, z_alpha = -0.12
+/// CL_alpha, worked out by hand above), and the proof is that of the dimensional file with
+/// those derivative intervals.
+#[test]
+fn nondimensional_files_take_uncertainty_per_coefficient() {
+    let path = body_axis_with("0", "Cl_p = \"10%\"\nCL_alpha = 0.5", "coefficients.toml");
+    let c = clear_json(&path, 3);
+    let entries = c["box"].as_array().unwrap();
+    let close = |x: &serde_json::Value, v: f64| (x.as_f64().unwrap() - v).abs() <= 1e-15;
+    let find = |key: &str| {
+        entries
+            .iter()
+            .find(|e| e[0] == key)
+            .unwrap_or_else(|| panic!("{key} in {entries:?}"))
+    };
+    // Cl_p = -0.4 +- 10 % and CL_alpha = 5 +- 0.5.
+    let l_p = find("l_p");
+    assert!(
+        close(&l_p[1], 6.0 * -0.44) && close(&l_p[2], 6.0 * -0.36),
+        "{l_p:?}"
+    );
+    let z_alpha = find("z_alpha");
+    assert!(
+        close(&z_alpha[1], -0.12 * 5.5) && close(&z_alpha[2], -0.12 * 4.5),
+        "{z_alpha:?}"
+    );
+    assert_eq!(entries.len(), 2);
+
+    // The same box written per derivative in the dimensional file of `model convert`.
+    let converted = model(&["convert", path.to_str().unwrap()]);
+    assert!(converted.status.success());
+    let dimensional = String::from_utf8(converted.stdout).unwrap();
+    let dir = path.parent().unwrap();
+    let dim_path = dir.join("derivatives.toml");
+    std::fs::write(
+        &dim_path,
+        format!("{dimensional}\n[uncertainty]\nl_p = [-2.64, -2.16]\nz_alpha = [-0.66, -0.54]\n"),
+    )
+    .unwrap();
+    let d = clear_json(&dim_path, 3);
+    for key in ["critical_p0", "critical_delta_a_deg"] {
+        assert_eq!(c[key], d[key], "{key}");
+    }
+    assert_eq!(c["critical_p0"]["converged"], true);
+}
+
+/// Bad coefficient uncertainties exit 2 naming file, line and key: a coefficient that the
+/// principal-axis rotation (ixz != 0) makes move several derivatives, an aileron interval
+/// through zero, a dimensional key, an unknown key.
+#[test]
+fn bad_coefficient_uncertainties_exit_2_naming_file_line_and_key() {
+    let cases = [
+        ("500", "Cl_p = \"10%\"", "l_p, l_r, n_p, n_r"),
+        ("0", "Cl_delta_a = [-0.1, 0.1]", "keeps its sign"),
+        ("0", "l_p = \"10%\"", "a dimensional file's key"),
+        ("0", "Cl_q = 0.1", "did you mean `Cl_p`?"),
+    ];
+    for (i, (ixz, entry, needle)) in cases.iter().enumerate() {
+        let path = body_axis_with(ixz, entry, &format!("bad-body{i}.toml"));
+        let out = model(&["clear", path.to_str().unwrap(), "--samples", "1"]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{entry}: {err}");
+        let key = entry.split(' ').next().unwrap();
+        let lines = std::fs::read_to_string(&path).unwrap();
+        let line = lines.lines().position(|l| l == *entry).unwrap() + 1;
+        assert!(
+            err.contains(&format!("bad-body{i}.toml:{line}:")),
+            "{entry}: {err}"
+        );
+        assert!(
+            err.contains(&format!("uncertainty.{key}")),
+            "{entry}: {err}"
+        );
+        assert!(err.contains(needle), "{entry}: {err}");
+    }
+    // With ixz != 0 the longitudinal coefficients, which the rotation leaves alone, are taken.
+    let path = body_axis_with("500", "Cm_alpha = \"10%\"", "tilted.toml");
+    let c = clear_json(&path, 1);
+    assert_eq!(c["box"][0][0], "m_alpha");
 }

@@ -98,6 +98,28 @@ impl Coefficient {
         Coefficient::CnDeltaR,
     ];
 
+    /// The derivative of the model this coefficient scales (the one it moves alone when
+    /// `ixz = 0`; see [`convert`]).
+    pub fn derivative(self) -> Param {
+        match self {
+            Coefficient::CLAlpha => Param::ZAlpha,
+            Coefficient::CYBeta => Param::YBeta,
+            Coefficient::ClBeta => Param::LBeta,
+            Coefficient::ClP => Param::Lp,
+            Coefficient::ClR => Param::Lr,
+            Coefficient::ClDeltaA => Param::LDeltaA,
+            Coefficient::ClDeltaR => Param::LDeltaR,
+            Coefficient::CmAlpha => Param::MAlpha,
+            Coefficient::CmQ => Param::Mq,
+            Coefficient::CmDeltaE => Param::MDeltaE,
+            Coefficient::CnBeta => Param::NBeta,
+            Coefficient::CnP => Param::Np,
+            Coefficient::CnR => Param::Nr,
+            Coefficient::CnDeltaA => Param::NDeltaA,
+            Coefficient::CnDeltaR => Param::NDeltaR,
+        }
+    }
+
     /// The TOML key.
     pub fn key(self) -> &'static str {
         match self {

@@ -408,9 +408,6 @@ fn read_document(text: &str, file: &str) -> Result<Parsed, AircraftError> {
     };
 
     if body_axis.is_some() {
-        if let Some((key, _)) = find("uncertainty") {
-            return Err(uncertainty::not_in_body_axis(&cx, key));
-        }
         let table = |t: &'static str| {
             find(t)
                 .map(|(_, t)| t)
@@ -423,9 +420,14 @@ fn read_document(text: &str, file: &str) -> Result<Parsed, AircraftError> {
         let input = cx.body_axis(flight, geometry, inertia, coefficients)?;
         let converted = convert::convert(&input);
         let aircraft = cx.body_axis_aircraft(name, &converted, inertia, coefficients)?;
+        let uncertainty = match find("uncertainty") {
+            Some((_, t)) => cx.body_axis_uncertainty(t, &input, &converted)?,
+            None => Vec::new(),
+        };
         let aircraft = Aircraft {
             limits,
             validity,
+            uncertainty,
             ..aircraft
         };
         return Ok(Parsed::BodyAxis(Box::new(BodyAxis {
@@ -455,8 +457,8 @@ fn read_document(text: &str, file: &str) -> Result<Parsed, AircraftError> {
     let mut aircraft = Aircraft::new(name, values, speed);
     aircraft.limits = limits;
     aircraft.validity = validity;
-    if let Some((key, t)) = find("uncertainty") {
-        aircraft.uncertainty = cx.uncertainty(key, t, &aircraft)?;
+    if let Some((_, t)) = find("uncertainty") {
+        aircraft.uncertainty = cx.uncertainty(t, &aircraft)?;
     }
     Ok(Parsed::Dimensional(aircraft))
 }
@@ -510,7 +512,15 @@ fn tables_of_format() -> [(&'static str, Vec<&'static str>); 9] {
         ),
         ("limits", LIMIT_KEYS.to_vec()),
         ("validity", VALIDITY_KEYS.to_vec()),
-        ("uncertainty", Param::ALL.iter().map(|p| p.key()).collect()),
+        // Either format's keys here; each format's loader then takes only its own.
+        (
+            "uncertainty",
+            Param::ALL
+                .iter()
+                .map(|p| p.key())
+                .chain(Coefficient::ALL.iter().map(|c| c.key()))
+                .collect(),
+        ),
     ]
 }
 
@@ -599,6 +609,12 @@ fn suggestion(table: &str, key: &str) -> Option<String> {
             });
         }
     }
+    suggestion_among(own, key)
+}
+
+/// The closest of `own` to `key` within edit distance 2 (ignoring case), as a hint.
+fn suggestion_among(own: &[&str], key: &str) -> Option<String> {
+    let lower = key.to_lowercase();
     own.iter()
         .map(|k| (edit_distance(&lower, &k.to_lowercase()), *k))
         .filter(|(d, _)| *d <= 2)
@@ -821,9 +837,11 @@ impl Cx<'_> {
                 found: value.kind.describe(),
             });
         };
+        // `[uncertainty]` takes the keys of the file's format, known only later: its loaders
+        // check them (`uncertainty.rs`).
         if let Some((k, _)) = entries
             .iter()
-            .find(|(k, _)| !valid.contains(&k.name.as_str()))
+            .find(|(k, _)| name != "uncertainty" && !valid.contains(&k.name.as_str()))
         {
             return Err(self.unknown(name, k));
         }

@@ -34,7 +34,7 @@ pub mod bound;
 pub mod monte_carlo;
 
 use crate::aircraft::{Aircraft, Param, Uncertain};
-use crate::analysis::{analyze, AnalysisError, JumpPoint};
+use crate::analysis::{analyze_with, AnalysisError, JumpPoint};
 use crate::interval::I;
 use bound::{BoxPolys, Failure, LiftedBox};
 use num_rational::BigRational;
@@ -143,9 +143,11 @@ pub enum ClearError {
     Analysis(#[from] AnalysisError),
 }
 
-/// The critical jump of one exact aircraft by the exact path.
+/// The critical jump of one exact aircraft by the exact path: the jump part of `analyze`
+/// alone, whose critical jump is the same point; the departure part (Hopf points, landings)
+/// would cost up to seconds per aircraft with aileron yaw and decide nothing here.
 pub fn critical(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Option<JumpPoint>, AnalysisError> {
-    Ok(analyze(aircraft, delta_e_rad)?.critical)
+    Ok(analyze_with(aircraft, delta_e_rad, false)?.critical)
 }
 
 /// The box of an aircraft: its uncertain parameters of nonzero width with their exact ends, and

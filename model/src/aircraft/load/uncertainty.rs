@@ -7,36 +7,38 @@
 //! l_beta = [-115.0, -105.0] # an interval [lo, hi], lo <= hi
 //! ```
 //!
-//! Keys are those of [`Param::ALL`] (the dimensional file's `[inertia]` C, D, E and
-//! `[derivatives]`). Every end is exact (the literals as written). Rejected, with file, line and
-//! key: an unknown key, a negative width or percentage, an empty interval (lo > hi), an interval
-//! of `l_delta_a` that contains zero (flips the sign of the aileron authority), and an interval of
-//! C, D or E outside [-1, 1] (no rigid body has such an inertia coefficient: the triangle
-//! inequalities of the principal moments bound |C|, |D|, |E| by 1).
+//! Keys are those of [`Param::ALL`] in a dimensional file (its `[inertia]` C, D, E and
+//! `[derivatives]`), and the `[coefficients]` keys in a nondimensional body-axis file: each
+//! coefficient's interval becomes the interval of the one derivative it scales (below). Every
+//! end is exact (the literals as written). Rejected, with file, line and key: an unknown key, a
+//! negative width or percentage, an empty interval (lo > hi), an interval of `l_delta_a` (or of
+//! `Cl_delta_a`) that contains zero (flips the sign of the aileron authority), an interval of C,
+//! D or E outside [-1, 1] (no rigid body has such an inertia coefficient: the triangle
+//! inequalities of the principal moments bound |C|, |D|, |E| by 1), and a coefficient that moves
+//! more than one derivative (below).
+//!
+//! A nondimensional file's coefficient enters the model through the conversion of
+//! [`convert`](crate::aircraft::convert), which is linear in the coefficients: with `ixz = 0`
+//! each derivative is one coefficient times a factor of the flight condition, geometry and
+//! inertia, so a box of coefficients is exactly a box of derivatives, the conversion of the
+//! coefficient's two ends. With `ixz != 0` the rotation to principal axes mixes `Cl_x` and
+//! `Cn_x` into both `l_x` and `n_x` (and `Cl_p`, `Cl_r`, `Cn_p`, `Cn_r` into all four rate
+//! derivatives): one uncertain coefficient then moves a line, not a box, of derivatives, which
+//! the clearance's box cannot represent. Those are refused, naming the derivatives moved; the
+//! longitudinal and side-force coefficients, which the rotation leaves alone, are accepted.
 
 use super::{qualified, shorten, AircraftError, Cx, Key, Kind, Node, Table};
+use crate::aircraft::convert::{convert, BodyAxisInput, Coefficient, Converted};
 use crate::aircraft::{decimal_to_rational, Aircraft, Param, Uncertain};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-/// The error for an `[uncertainty]` table in a nondimensional file (not supported yet).
-pub(super) fn not_in_body_axis(cx: &Cx<'_>, key: &Key) -> AircraftError {
-    AircraftError::InvalidValue {
-        at: cx.at_key(key),
-        key: "uncertainty".to_string(),
-        expected: "an `[uncertainty]` table only in a dimensional principal-axis file (per \
-                   derivative and C, D, E; write the file with `model convert` first)"
-            .to_string(),
-        value: "[uncertainty]".to_string(),
-    }
-}
-
 impl Cx<'_> {
-    /// `[uncertainty]`: the interval of each parameter named, in the order written.
+    /// `[uncertainty]` of a dimensional file: the interval of each parameter named, in the
+    /// order written.
     pub(super) fn uncertainty(
         &self,
-        _key: &Key,
         table: &Table<'_>,
         aircraft: &Aircraft,
     ) -> Result<Vec<Uncertain>, AircraftError> {
@@ -46,81 +48,195 @@ impl Cx<'_> {
                 .iter()
                 .copied()
                 .find(|p| p.key() == key.name)
-                .ok_or_else(|| self.unknown(table.name, key))?;
-            let nominal = aircraft.exact(param).clone();
-            let bad = |expected: &str, written: String| AircraftError::InvalidValue {
-                at: self.at_value(key, value),
-                key: qualified(table.name, &key.name),
-                expected: expected.to_string(),
-                value: shorten(&written),
-            };
-            let (lo, hi) = match &value.kind {
-                Kind::String(s) if s.trim().ends_with('%') => {
-                    let pct = s.trim().trim_end_matches('%').trim();
-                    let r = decimal_to_rational(pct)
-                        .ok_or_else(|| bad("a relative uncertainty such as \"10%\"", s.clone()))?;
-                    if r.is_negative() {
-                        return Err(bad("a percentage >= 0 (a negative width)", s.clone()));
-                    }
-                    let half = nominal.abs() * r / BigRational::from_integer(BigInt::from(100));
-                    (&nominal - &half, &nominal + &half)
-                }
-                Kind::Array(items) => {
-                    let ends: Vec<BigRational> = match items.as_slice() {
-                        [a, b] => vec![self.end(table, key, a)?, self.end(table, key, b)?],
-                        _ => {
-                            return Err(bad(
-                                "an interval of two numbers [lo, hi]",
-                                self.written(value),
-                            ))
-                        }
-                    };
-                    if ends[0] > ends[1] {
-                        return Err(bad(
-                            "a non-empty interval [lo, hi] with lo <= hi",
-                            self.written(value),
-                        ));
-                    }
-                    (ends[0].clone(), ends[1].clone())
-                }
-                _ => {
-                    let n = self.number(table.name, key, value).map_err(|_| {
-                        bad(
-                            "a relative uncertainty \"10%\", an absolute half-width >= 0, or an \
-                             interval [lo, hi]",
-                            self.written(value),
-                        )
-                    })?;
-                    if n.exact.is_negative() {
-                        return Err(bad("a half-width >= 0 (a negative width)", n.written));
-                    }
-                    (&nominal - &n.exact, &nominal + &n.exact)
-                }
-            };
-            let range = format!("[{}, {}]", show(&lo), show(&hi));
-            if param == Param::LDeltaA
-                && (lo.is_zero() || hi.is_zero() || lo.is_negative() != hi.is_negative())
-            {
-                return Err(bad(
-                    "an interval of l_delta_a that keeps its sign (0 inside flips the sign of \
-                     the aileron authority)",
-                    range,
-                ));
-            }
-            if matches!(param, Param::C | Param::D | Param::E) {
-                let one = BigRational::one();
-                if hi > one || lo < -one {
-                    return Err(bad(
-                        "an inertia coefficient interval within [-1, 1] (the triangle \
-                         inequalities of the principal moments; outside, the inertia is \
-                         unphysical)",
-                        range,
-                    ));
-                }
-            }
-            out.push(Uncertain { param, lo, hi });
+                .ok_or_else(|| self.unknown_uncertain(table, key, false))?;
+            let (lo, hi) = self.interval(table, key, value, aircraft.exact(param))?;
+            out.push(self.checked(table, key, value, param, lo, hi)?);
         }
         Ok(out)
+    }
+
+    /// `[uncertainty]` of a nondimensional body-axis file: each coefficient's interval,
+    /// converted (by the same [`convert`] as the nominal data) to the interval of the one
+    /// derivative it moves; a coefficient that moves several (`ixz != 0`) is refused.
+    pub(super) fn body_axis_uncertainty(
+        &self,
+        table: &Table<'_>,
+        input: &BodyAxisInput,
+        converted: &Converted,
+    ) -> Result<Vec<Uncertain>, AircraftError> {
+        let mut out = Vec::new();
+        for (key, value) in table.entries {
+            let c = Coefficient::ALL
+                .iter()
+                .copied()
+                .find(|c| c.key() == key.name)
+                .ok_or_else(|| self.unknown_uncertain(table, key, true))?;
+            let (lo, hi) = self.interval(table, key, value, input.coefficient(c))?;
+            let at = |x: &BigRational| {
+                let mut i = input.clone();
+                i.coefficients[c as usize] = x.clone();
+                convert(&i)
+            };
+            let (at_lo, at_hi) = (at(&lo), at(&hi));
+            let moved: Vec<Param> = Param::ALL
+                .iter()
+                .skip(3)
+                .copied()
+                .filter(|p| {
+                    at_lo.derivative(*p) != converted.derivative(*p)
+                        || at_hi.derivative(*p) != converted.derivative(*p)
+                })
+                .collect();
+            let param = c.derivative();
+            if moved.iter().any(|p| *p != param) {
+                let names: Vec<&str> = moved.iter().map(|p| p.key()).collect();
+                return Err(AircraftError::InvalidValue {
+                    at: self.at_value(key, value),
+                    key: qualified(table.name, &key.name),
+                    expected: format!(
+                        "an uncertain coefficient that moves one derivative: with ixz != 0 the \
+                         rotation to principal axes makes `{}` move {} together, a line that the \
+                         clearance box (one interval per derivative) cannot hold; give this \
+                         uncertainty per derivative in the dimensional file of `model convert`",
+                        key.name,
+                        names.join(", ")
+                    ),
+                    value: shorten(&self.written(value)),
+                });
+            }
+            let (a, b) = (at_lo.derivative(param), at_hi.derivative(param));
+            let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+            out.push(self.checked(table, key, value, param, lo.clone(), hi.clone())?);
+        }
+        Ok(out)
+    }
+
+    /// The interval `[lo, hi]` written for `key`: a relative `"10%"` or an absolute half-width
+    /// about `nominal`, or the two ends.
+    fn interval(
+        &self,
+        table: &Table<'_>,
+        key: &Key,
+        value: &Node,
+        nominal: &BigRational,
+    ) -> Result<(BigRational, BigRational), AircraftError> {
+        let bad = |expected: &str, written: String| AircraftError::InvalidValue {
+            at: self.at_value(key, value),
+            key: qualified(table.name, &key.name),
+            expected: expected.to_string(),
+            value: shorten(&written),
+        };
+        Ok(match &value.kind {
+            Kind::String(s) if s.trim().ends_with('%') => {
+                let pct = s.trim().trim_end_matches('%').trim();
+                let r = decimal_to_rational(pct)
+                    .ok_or_else(|| bad("a relative uncertainty such as \"10%\"", s.clone()))?;
+                if r.is_negative() {
+                    return Err(bad("a percentage >= 0 (a negative width)", s.clone()));
+                }
+                let half = nominal.abs() * r / BigRational::from_integer(BigInt::from(100));
+                (nominal - &half, nominal + &half)
+            }
+            Kind::Array(items) => {
+                let ends: Vec<BigRational> = match items.as_slice() {
+                    [a, b] => vec![self.end(table, key, a)?, self.end(table, key, b)?],
+                    _ => {
+                        return Err(bad(
+                            "an interval of two numbers [lo, hi]",
+                            self.written(value),
+                        ))
+                    }
+                };
+                if ends[0] > ends[1] {
+                    return Err(bad(
+                        "a non-empty interval [lo, hi] with lo <= hi",
+                        self.written(value),
+                    ));
+                }
+                (ends[0].clone(), ends[1].clone())
+            }
+            _ => {
+                let n = self.number(table.name, key, value).map_err(|_| {
+                    bad(
+                        "a relative uncertainty \"10%\", an absolute half-width >= 0, or an \
+                         interval [lo, hi]",
+                        self.written(value),
+                    )
+                })?;
+                if n.exact.is_negative() {
+                    return Err(bad("a half-width >= 0 (a negative width)", n.written));
+                }
+                (nominal - &n.exact, nominal + &n.exact)
+            }
+        })
+    }
+
+    /// `param` in `[lo, hi]`, or the error (at `key`) for an interval that flips the sign of
+    /// l_delta_a or makes the inertia unphysical.
+    fn checked(
+        &self,
+        table: &Table<'_>,
+        key: &Key,
+        value: &Node,
+        param: Param,
+        lo: BigRational,
+        hi: BigRational,
+    ) -> Result<Uncertain, AircraftError> {
+        let bad = |expected: &str| AircraftError::InvalidValue {
+            at: self.at_value(key, value),
+            key: qualified(table.name, &key.name),
+            expected: expected.to_string(),
+            value: format!("[{}, {}]", show(&lo), show(&hi)),
+        };
+        if param == Param::LDeltaA
+            && (lo.is_zero() || hi.is_zero() || lo.is_negative() != hi.is_negative())
+        {
+            return Err(bad(
+                "an interval of l_delta_a that keeps its sign (0 inside flips the sign of the \
+                 aileron authority)",
+            ));
+        }
+        if matches!(param, Param::C | Param::D | Param::E) {
+            let one = BigRational::one();
+            if hi > one || lo < -one {
+                return Err(bad(
+                    "an inertia coefficient interval within [-1, 1] (the triangle inequalities \
+                     of the principal moments; outside, the inertia is unphysical)",
+                ));
+            }
+        }
+        Ok(Uncertain { param, lo, hi })
+    }
+
+    /// The unknown-key error of `[uncertainty]`, listing the keys of the file's format (and
+    /// saying where a key of the other format belongs).
+    fn unknown_uncertain(&self, table: &Table<'_>, key: &Key, body_axis: bool) -> AircraftError {
+        let params: Vec<&str> = Param::ALL.iter().map(|p| p.key()).collect();
+        let coefficients: Vec<&str> = Coefficient::ALL.iter().map(|c| c.key()).collect();
+        let (own, other, other_format) = if body_axis {
+            (coefficients, params, "a dimensional file's")
+        } else {
+            (params, coefficients, "a nondimensional file's")
+        };
+        let hint = if other.contains(&key.name.as_str()) {
+            Some(format!(
+                "`{}` is {other_format} key; this file takes its uncertainty per {}",
+                key.name,
+                if body_axis {
+                    "coefficient"
+                } else {
+                    "derivative and C, D, E"
+                }
+            ))
+        } else {
+            super::suggestion_among(&own, &key.name)
+        };
+        AircraftError::UnknownKey {
+            at: self.at_key(key),
+            key: qualified(table.name, &key.name),
+            hint,
+            expected: super::list(&own),
+        }
     }
 
     fn end(&self, table: &Table<'_>, key: &Key, node: &Node) -> Result<BigRational, AircraftError> {

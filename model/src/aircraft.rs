@@ -215,15 +215,65 @@ pub struct Aircraft {
     pub uncertainty: Vec<Uncertain>,
 }
 
-/// One uncertain parameter: the closed interval `[lo, hi]` (exact) its value may take.
+/// One coordinate of the uncertainty box: the closed interval `[lo, hi]` (exact) of a parameter,
+/// or of a nondimensional coefficient that moves several parameters at once (`coefficient`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Uncertain {
-    /// The parameter.
+    /// The parameter (for a coefficient: the derivative it scales).
     pub param: Param,
     /// Lower end, exact.
     pub lo: BigRational,
     /// Upper end, exact (`lo <= hi`).
     pub hi: BigRational,
+    /// `None`: the coordinate is the value of `param`. `Some`: it is a coefficient of a
+    /// nondimensional file, `[lo, hi]` its interval, and it moves the parameters of its map.
+    pub coefficient: Option<CoefficientMap>,
+}
+
+/// How a coefficient of a nondimensional file moves the model's parameters: the conversion is
+/// linear in the coefficients, so at coefficient value x each parameter p of `moves` is its
+/// nominal value plus `a_p (x - nominal)`, exactly (with `ixz != 0` the principal-axis rotation
+/// makes a lateral coefficient move both an `l_x` and an `n_x`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CoefficientMap {
+    /// The coefficient's TOML key, e.g. `Cl_p`.
+    pub key: &'static str,
+    /// Its nominal value (that of the file).
+    pub nominal: BigRational,
+    /// Each parameter it moves and the exact change of that parameter per unit coefficient.
+    pub moves: Vec<(Param, BigRational)>,
+}
+
+impl Uncertain {
+    /// The uncertain parameter `param` in `[lo, hi]`.
+    pub fn param(param: Param, lo: BigRational, hi: BigRational) -> Uncertain {
+        Uncertain {
+            param,
+            lo,
+            hi,
+            coefficient: None,
+        }
+    }
+
+    /// The coordinate's name: the TOML key the file gives it by.
+    pub fn key(&self) -> &'static str {
+        match &self.coefficient {
+            Some(c) => c.key,
+            None => self.param.key(),
+        }
+    }
+
+    /// `aircraft` moved to coordinate value `x` (exact): the parameter set to `x`, or each
+    /// parameter of the coefficient's map moved by `a_p (x - nominal)`.
+    pub fn moved(&self, aircraft: Aircraft, x: &BigRational) -> Aircraft {
+        match &self.coefficient {
+            None => aircraft.with(self.param, x.clone()),
+            Some(c) => c.moves.iter().fold(aircraft, |a, (p, slope)| {
+                let v = a.exact(*p) + slope * (x - &c.nominal);
+                a.with(*p, v)
+            }),
+        }
+    }
 }
 
 impl Aircraft {

@@ -113,8 +113,8 @@ fn body_axis_with(ixz: &str, uncertainty: &str, name: &str) -> PathBuf {
 
 /// A nondimensional file takes its uncertainty per coefficient: with ixz = 0 each coefficient's
 /// interval is the interval of the one derivative it scales (l_p = 6 Cl_p, z_alpha = -0.12
-/// CL_alpha, worked out by hand above), and the proof is that of the dimensional file with
-/// those derivative intervals.
+/// CL_alpha, worked out by hand above); `model convert` writes those derivative intervals, and
+/// the proof of the converted file is the same.
 #[test]
 fn nondimensional_files_take_uncertainty_per_coefficient() {
     let path = body_axis_with("0", "Cl_p = \"10%\"\nCL_alpha = 0.5", "coefficients.toml");
@@ -140,17 +140,18 @@ fn nondimensional_files_take_uncertainty_per_coefficient() {
     );
     assert_eq!(entries.len(), 2);
 
-    // The same box written per derivative in the dimensional file of `model convert`.
+    // `model convert` writes the same box per derivative, with exact ends.
     let converted = model(&["convert", path.to_str().unwrap()]);
     assert!(converted.status.success());
     let dimensional = String::from_utf8(converted.stdout).unwrap();
-    let dir = path.parent().unwrap();
-    let dim_path = dir.join("derivatives.toml");
-    std::fs::write(
-        &dim_path,
-        format!("{dimensional}\n[uncertainty]\nl_p = [-2.64, -2.16]\nz_alpha = [-0.66, -0.54]\n"),
-    )
-    .unwrap();
+    for line in ["l_p = [-2.64, -2.16]", "z_alpha = [-0.66, -0.54]"] {
+        assert!(
+            dimensional.lines().any(|l| l == line),
+            "{line}: {dimensional}"
+        );
+    }
+    let dim_path = path.parent().unwrap().join("derivatives.toml");
+    std::fs::write(&dim_path, dimensional).unwrap();
     let d = clear_json(&dim_path, 3);
     for key in ["critical_p0", "critical_delta_a_deg"] {
         assert_eq!(c[key], d[key], "{key}");
@@ -158,13 +159,17 @@ fn nondimensional_files_take_uncertainty_per_coefficient() {
     assert_eq!(c["critical_p0"]["converged"], true);
 }
 
-/// Bad coefficient uncertainties exit 2 naming file, line and key: a coefficient that the
-/// principal-axis rotation (ixz != 0) makes move several derivatives, an aileron interval
-/// through zero, a dimensional key, an unknown key.
+/// Bad coefficient uncertainties exit 2 naming file, line and key: an aileron interval through
+/// zero (with ixz != 0, where Cl_delta_a moves l_delta_a and n_delta_a, and without), a
+/// dimensional key, an unknown key.
 #[test]
 fn bad_coefficient_uncertainties_exit_2_naming_file_line_and_key() {
     let cases = [
-        ("500", "Cl_p = \"10%\"", "l_p, l_r, n_p, n_r"),
+        (
+            "500",
+            "Cl_delta_a = [-0.1, 0.1]",
+            "keep the sign of l_delta_a",
+        ),
         ("0", "Cl_delta_a = [-0.1, 0.1]", "keeps its sign"),
         ("0", "l_p = \"10%\"", "a dimensional file's key"),
         ("0", "Cl_q = 0.1", "did you mean `Cl_p`?"),
@@ -187,8 +192,17 @@ fn bad_coefficient_uncertainties_exit_2_naming_file_line_and_key() {
         );
         assert!(err.contains(needle), "{entry}: {err}");
     }
-    // With ixz != 0 the longitudinal coefficients, which the rotation leaves alone, are taken.
-    let path = body_axis_with("500", "Cm_alpha = \"10%\"", "tilted.toml");
+    // With ixz != 0 a longitudinal coefficient, which the rotation leaves alone, is the box
+    // of its derivative; a lateral one, which moves an l and an n derivative, is a coordinate
+    // of its own, reported by its key with its value in the worst case.
+    let path = body_axis_with(
+        "500",
+        "Cm_alpha = \"10%\"\nCl_delta_r = \"10%\"",
+        "tilted.toml",
+    );
     let c = clear_json(&path, 1);
     assert_eq!(c["box"][0][0], "m_alpha");
+    assert_eq!(c["box"][1][0], "Cl_delta_r");
+    let cl_delta_r = c["worst_case"]["Cl_delta_r"].as_f64().unwrap();
+    assert!((0.009..=0.011).contains(&cl_delta_r), "{cl_delta_r}");
 }

@@ -14,11 +14,7 @@ fn boxed(params: &[(Param, f64)]) -> Aircraft {
         .map(|(p, rel)| {
             let v = a.exact(*p).clone();
             let half = BigRational::from_float((a.value(*p).abs() * rel).max(1e-3)).unwrap();
-            Uncertain {
-                param: *p,
-                lo: &v - &half,
-                hi: &v + &half,
-            }
+            Uncertain::param(*p, &v - &half, &v + &half)
         })
         .collect();
     a
@@ -104,4 +100,70 @@ fn no_sample_of_a_random_box_jumps_below_the_proven_bound_10k() {
         let a = boxed(&[(pool[k1], 0.03), (pool[k2], 0.03), (pool[k3], 0.02)]);
         check_box(&a, 10_000, b);
     }
+}
+
+/// `aircraft/fighter.toml` (ixz != 0: its principal axes are tilted) with `Cl_p` and `Cn_beta`
+/// set to `cl_p` and `cn_beta` and the extra text `extra` appended.
+fn fighter_with(cl_p: &str, cn_beta: &str, extra: &str) -> Aircraft {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../aircraft/fighter.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    assert!(text.contains("\nCl_p = -0.38\n") && text.contains("\nCn_beta = 0.12\n"));
+    let text = text
+        .replace("\nCl_p = -0.38\n", &format!("\nCl_p = {cl_p}\n"))
+        .replace("\nCn_beta = 0.12\n", &format!("\nCn_beta = {cn_beta}\n"));
+    model::aircraft::parse(&format!("{text}\n{extra}"), "fighter.toml").unwrap()
+}
+
+/// A box of nondimensional coefficients that the principal-axis rotation mixes (each of Cl_p
+/// and Cn_beta moves an l and an n derivative): no aircraft of the box, written as a file with
+/// its sampled coefficients and converted by the loader (not by the box's linear map), has a
+/// critical jump below the proven `lo`; the worst case, written the same way, reproduces `hi`.
+#[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "an aircraft with aileron yaw, 80 exact analyses: run with --release"
+)]
+fn coefficient_boxes_of_a_tilted_aircraft_are_sound() {
+    let a = fighter_with(
+        "-0.38",
+        "0.12",
+        "[uncertainty]\nCl_p = [-0.40, -0.36]\nCn_beta = [0.11, 0.13]\n",
+    );
+    assert!(a.uncertainty.iter().all(|u| u.coefficient.is_some()));
+    let de = 2f64.to_radians();
+    let settings = Settings {
+        tolerance_p0: 1e-2,
+        tolerance_deg: 0.1,
+        candidates: 4,
+        ..Settings::default()
+    };
+    let c = clear(&a, &settings, &mut |_| {}).unwrap();
+    let (lo, lo_da) = (c.critical_p0.lo, c.critical_delta_a_deg.lo);
+    assert!(lo > 0.5 && c.critical_p0.converged, "{c:?}");
+    let critical = |a: &Aircraft| {
+        model::analysis::analyze_with(a, de, false)
+            .unwrap()
+            .critical
+    };
+    let mut rng = Rng::new(5);
+    for i in 0..80 {
+        let cl_p = -0.40 + 0.04 * (0.001 + 0.998 * rng.unit());
+        let cn_beta = 0.11 + 0.02 * (0.001 + 0.998 * rng.unit());
+        let s = fighter_with(&cl_p.to_string(), &cn_beta.to_string(), "");
+        if let Some(j) = critical(&s) {
+            assert!(j.p0 >= lo, "sample {i}: P0 = {} below lo = {lo}", j.p0);
+            assert!(
+                j.delta_a_deg.abs() >= lo_da,
+                "sample {i}: |delta_a| below {lo_da}"
+            );
+        }
+    }
+    let w = c.worst_case.expect("a worst case");
+    let (cl_p, cn_beta) = (w.parameters["Cl_p"], w.parameters["Cn_beta"]);
+    assert!((-0.40..=-0.36).contains(&cl_p) && (0.11..=0.13).contains(&cn_beta));
+    // The file's conversion rounds each derivative once to f64, the box's map adds exact
+    // increments to the rounded nominal ones: the two aircraft differ by about 1e-16 relative.
+    let j = critical(&fighter_with(&cl_p.to_string(), &cn_beta.to_string(), "")).unwrap();
+    let hi = c.critical_p0.hi.unwrap();
+    assert!((j.p0 - hi).abs() <= 1e-9 * hi, "{} vs {hi}", j.p0);
 }

@@ -286,6 +286,30 @@ impl Converted {
              alpha_max = {:?}\nbeta_max = {:?}",
             v.alpha_max_deg, v.beta_max_deg
         );
+        if !aircraft.uncertainty.is_empty() {
+            let _ = writeln!(
+                out,
+                "\n[uncertainty]\n# The coefficient intervals, converted (exact ends)."
+            );
+        }
+        for u in &aircraft.uncertainty {
+            let (lo, hi) = (toml_number(&u.lo), toml_number(&u.hi));
+            match &u.coefficient {
+                None => {
+                    let _ = writeln!(out, "{} = [{lo}, {hi}]", u.param.key());
+                }
+                Some(c) => {
+                    let moved: Vec<&str> = c.moves.iter().map(|(p, _)| p.key()).collect();
+                    let _ = writeln!(
+                        out,
+                        "# {} = [{lo}, {hi}] moves {} together (ixz != 0), which a box per \
+                         derivative cannot hold: `model clear` the nondimensional file for it.",
+                        c.key,
+                        moved.join(", ")
+                    );
+                }
+            }
+        }
         out
     }
 }
@@ -370,6 +394,34 @@ fn tilt(ix: f64, iz: f64, ixz: f64) -> f64 {
 
 /// Converts body-axis coefficients to principal-axis derivatives (see the module docs).
 pub fn convert(input: &BodyAxisInput) -> Converted {
+    convert_rounding(input, true)
+}
+
+/// The exact change of each derivative per unit of coefficient `c` (the conversion is linear in
+/// the coefficients: the derivatives of the input with every coefficient 0 but `c` = 1, with
+/// the same density and principal axes as `input`'s conversion and nothing rounded); the
+/// derivatives `c` does not move are left out.
+pub fn slopes(input: &BodyAxisInput, c: Coefficient) -> Vec<(Param, BigRational)> {
+    let mut unit = input.clone();
+    for (i, x) in unit.coefficients.iter_mut().enumerate() {
+        *x = if i == c as usize {
+            BigRational::one()
+        } else {
+            BigRational::zero()
+        };
+    }
+    let converted = convert_rounding(&unit, false);
+    Param::ALL
+        .iter()
+        .skip(3)
+        .map(|p| (*p, converted.derivative(*p).clone()))
+        .filter(|(_, a)| !a.is_zero())
+        .collect()
+}
+
+/// [`convert`], with the results rounded once each to f64 when an irrational step went
+/// through f64 (`round`), or left exact.
+fn convert_rounding(input: &BodyAxisInput, round: bool) -> Converted {
     let f = rational_to_f64;
     let (density, density_source, mut rounded) = match &input.density {
         Density::Given(rho) => (rho.clone(), "given".to_string(), false),
@@ -459,7 +511,7 @@ pub fn convert(input: &BodyAxisInput) -> Converted {
         });
     }
     let mut principal = [ix_p, input.iy.clone(), iz_p];
-    if rounded {
+    if rounded && round {
         // A value beyond f64 stays exact here, for the loader to refuse with its name.
         let round = |x: &BigRational| {
             let v = f(x);

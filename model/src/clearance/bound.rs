@@ -37,7 +37,7 @@
 //! assert_eq!(b.certify(&l_p, I::new(1.6, 1.8)), Err(Failure::Jump));
 //! ```
 
-use crate::aircraft::{Aircraft, Param};
+use crate::aircraft::{Aircraft, Param, Uncertain};
 use crate::certified::dense::horner;
 use crate::certified::num::{Dual, Num, GRADIENT};
 use crate::certified::{at_roll_rate, AtRollRate, Values};
@@ -56,11 +56,21 @@ pub enum Failure {
     Jump,
 }
 
+/// How one coordinate of the box enters the data.
+#[derive(Clone, Debug)]
+enum Coordinate {
+    /// The value of a parameter.
+    Param(Param),
+    /// A coefficient of a nondimensional file: each parameter `p` it moves is its fixed value
+    /// plus `a_p (x - nominal)` (enclosures of the exact `a_p` and nominal).
+    Coefficient { nominal: I, moves: Vec<(Param, I)> },
+}
+
 /// The criterion of a box of aircraft, ready for enclosures over slabs of roll rates.
 #[derive(Clone, Debug)]
 pub struct BoxPolys {
-    /// The uncertain parameters, in the order of the box coordinates.
-    pub params: Vec<Param>,
+    /// The coordinates of the box, in order.
+    coordinates: Vec<Coordinate>,
     /// Enclosures of every parameter's fixed value (the uncertain ones are replaced by the box).
     fixed: [I; 18],
     delta_e_rad: f64,
@@ -96,30 +106,74 @@ struct Chain<T> {
 impl BoxPolys {
     /// The box of `aircraft` in the uncertain `params` at `delta_e_rad` (delta_r = 0).
     pub fn new(aircraft: &Aircraft, params: &[Param], delta_e_rad: f64) -> BoxPolys {
+        BoxPolys::with(
+            aircraft,
+            params.iter().map(|p| Coordinate::Param(*p)).collect(),
+            delta_e_rad,
+        )
+    }
+
+    /// The box of `aircraft` whose coordinates are `params` (each a parameter, or a coefficient
+    /// of a nondimensional file moving several), with every coordinate's value in `aircraft`
+    /// its nominal one.
+    pub fn of_box(aircraft: &Aircraft, params: &[Uncertain], delta_e_rad: f64) -> BoxPolys {
+        let coordinates = params
+            .iter()
+            .map(|u| match &u.coefficient {
+                None => Coordinate::Param(u.param),
+                Some(c) => Coordinate::Coefficient {
+                    nominal: I::from_q(&c.nominal),
+                    moves: c.moves.iter().map(|(p, a)| (*p, I::from_q(a))).collect(),
+                },
+            })
+            .collect();
+        BoxPolys::with(aircraft, coordinates, delta_e_rad)
+    }
+
+    fn with(aircraft: &Aircraft, coordinates: Vec<Coordinate>, delta_e_rad: f64) -> BoxPolys {
         assert!(
-            params.len() < GRADIENT,
+            coordinates.len() < GRADIENT,
             "at most {} uncertain parameters (and P0)",
             GRADIENT - 1
         );
-        let fixed = Values::data(aircraft);
+        let moved: Vec<Param> = coordinates
+            .iter()
+            .flat_map(|c| match c {
+                Coordinate::Param(p) => vec![*p],
+                Coordinate::Coefficient { moves, .. } => moves.iter().map(|(p, _)| *p).collect(),
+            })
+            .collect();
         BoxPolys {
-            params: params.to_vec(),
-            fixed,
+            fixed: Values::data(aircraft),
             delta_e_rad,
-            symmetric: trim_at_rest_is_level(aircraft, params, delta_e_rad),
+            symmetric: trim_at_rest_is_level(aircraft, &moved, delta_e_rad),
+            coordinates,
         }
     }
 
     /// The box `theta` lifted once for every slab of roll rates: over the box (a gradient seed in
     /// each uncertain coordinate, P0 the last) and at its centre.
     pub fn lift(&self, theta: &[I]) -> LiftedBox {
-        let n = self.params.len() + 1;
+        let n = self.coordinates.len() + 1;
         let mut over: [Dual; 18] = std::array::from_fn(|i| Dual::constant(self.fixed[i]));
         let mut at = self.fixed;
         let centre: Vec<f64> = theta.iter().map(|t| t.mid()).collect();
-        for (k, (param, x)) in self.params.iter().zip(theta).enumerate() {
-            over[param.index()] = Dual::variable(*x, k, n);
-            at[param.index()] = I::point(centre[k]);
+        for (k, (coordinate, x)) in self.coordinates.iter().zip(theta).enumerate() {
+            match coordinate {
+                Coordinate::Param(param) => {
+                    over[param.index()] = Dual::variable(*x, k, n);
+                    at[param.index()] = I::point(centre[k]);
+                }
+                Coordinate::Coefficient { nominal, moves } => {
+                    let dx = Dual::variable(*x, k, n) - Dual::constant(*nominal);
+                    let dc = I::point(centre[k]) - *nominal;
+                    for (p, a) in moves {
+                        let i = p.index();
+                        over[i] = over[i] + Dual::constant(*a) * dx;
+                        at[i] = at[i] + *a * dc;
+                    }
+                }
+            }
         }
         LiftedBox {
             theta: theta.to_vec(),
@@ -132,7 +186,7 @@ impl BoxPolys {
     /// The chain over `p x` the box, every value tightened by its mean-value form around the
     /// centre, or the first link that fails.
     fn chain(&self, bx: &LiftedBox, p: I) -> Result<Chain<Dual>, Failure> {
-        let n = self.params.len() + 1;
+        let n = self.coordinates.len() + 1;
         let x: Vec<I> = bx.theta.iter().copied().chain([p]).collect();
         let c: Vec<f64> = bx.centre.iter().copied().chain([p.mid()]).collect();
         let (vb, pb) = (&bx.over, Dual::variable(p, n - 1, n));
@@ -280,7 +334,7 @@ impl BoxPolys {
             (_, Some(c)) => c.da,
             (_, None) => {
                 // The chain fails before the aileron (det A or the discriminant): smear det A.
-                let n = self.params.len() + 1;
+                let n = self.coordinates.len() + 1;
                 at_roll_rate(&bx.over, Dual::variable(p, n - 1, n))
                     .ok()?
                     .det_a

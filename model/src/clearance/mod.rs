@@ -17,8 +17,8 @@
 //! let mut a = Aircraft::a();
 //! let n_r = a.exact(Param::Nr).clone();
 //! a.uncertainty = vec![
-//!     Uncertain { param: Param::Lp, lo: q(-22, 1), hi: q(-43, 2) },
-//!     Uncertain { param: Param::Nr, lo: n_r.clone(), hi: n_r },
+//!     Uncertain::param(Param::Lp, q(-22, 1), q(-43, 2)),
+//!     Uncertain::param(Param::Nr, n_r.clone(), n_r),
 //! ];
 //! // The box has one dimension; every sample of it is an aircraft inside it.
 //! let (base, wide) = split_box(&a);
@@ -101,6 +101,9 @@ pub struct CaseAircraft {
     /// The exact aircraft (not serialized).
     #[serde(skip)]
     pub aircraft: Aircraft,
+    /// Its exact coordinates in the box (not serialized).
+    #[serde(skip)]
+    pub coordinates: Vec<BigRational>,
 }
 
 /// The result of [`clear`].
@@ -157,7 +160,7 @@ pub fn split_box(aircraft: &Aircraft) -> (Aircraft, Vec<Uncertain>) {
     let mut wide = Vec::new();
     for u in &aircraft.uncertainty {
         if u.lo == u.hi {
-            base = base.with(u.param, u.lo.clone());
+            base = u.moved(base, &u.lo);
         } else {
             wide.push(u.clone());
         }
@@ -171,7 +174,7 @@ pub fn at(base: &Aircraft, params: &[Uncertain], x: &[BigRational]) -> Aircraft 
     params
         .iter()
         .zip(x)
-        .fold(base.clone(), |a, (u, v)| a.with(u.param, v.clone()))
+        .fold(base.clone(), |a, (u, v)| u.moved(a, v))
 }
 
 /// An f64 coordinate of the box as an exact value within the exact ends.
@@ -186,15 +189,24 @@ pub fn clamp_exact(u: &Uncertain, v: f64) -> BigRational {
     }
 }
 
-fn case(a: &Aircraft, j: &JumpPoint) -> CaseAircraft {
+/// The aircraft `a` at coordinates `x` of the box `params` with its critical jump `j`: every
+/// parameter by its key, and each uncertain coefficient of a nondimensional file by its key.
+fn case(a: &Aircraft, params: &[Uncertain], x: &[BigRational], j: &JumpPoint) -> CaseAircraft {
+    let coefficients = params
+        .iter()
+        .zip(x)
+        .filter(|(u, _)| u.coefficient.is_some())
+        .map(|(u, v)| (u.key().to_string(), crate::aircraft::rational_to_f64(v)));
     CaseAircraft {
         parameters: Param::ALL
             .iter()
             .map(|p| (p.key().to_string(), a.value(*p)))
+            .chain(coefficients)
             .collect(),
         p0: j.p0,
         delta_a_deg: j.delta_a_deg,
         aircraft: a.clone(),
+        coordinates: x.to_vec(),
     }
 }
 
@@ -221,18 +233,24 @@ impl Rng {
 
 /// A uniform random aircraft of the box.
 pub fn sample(base: &Aircraft, params: &[Uncertain], rng: &mut Rng) -> Aircraft {
-    let x: Vec<BigRational> = params
+    at(base, params, &sample_coordinates(params, rng))
+}
+
+/// Uniform random (exact) coordinates in the box.
+pub fn sample_coordinates(params: &[Uncertain], rng: &mut Rng) -> Vec<BigRational> {
+    params
         .iter()
         .map(|u| {
             let b = I::from_q_pair(&u.lo, &u.hi);
             clamp_exact(u, b.lo + rng.unit() * (b.hi - b.lo))
         })
-        .collect();
-    at(base, params, &x)
+        .collect()
 }
 
 /// The worst cases found so far, by the exact path.
-struct Worst {
+struct Worst<'a> {
+    base: &'a Aircraft,
+    params: &'a [Uncertain],
     p0: Option<(f64, CaseAircraft)>,
     da: Option<(f64, CaseAircraft)>,
     limit_hit: Option<CaseAircraft>,
@@ -240,25 +258,35 @@ struct Worst {
     delta_e_rad: f64,
 }
 
-impl Worst {
-    /// Evaluates one aircraft; returns its critical (p0, |delta_a| deg) if it has one.
-    fn try_aircraft(&mut self, a: &Aircraft) -> Result<Option<(f64, f64)>, ClearError> {
-        Ok(self.record(a, critical(a, self.delta_e_rad)?))
+impl Worst<'_> {
+    /// Evaluates the aircraft at coordinates `x`; returns its critical (p0, |delta_a| deg) if
+    /// it has one.
+    fn try_at(&mut self, x: &[BigRational]) -> Result<Option<(f64, f64)>, ClearError> {
+        let a = at(self.base, self.params, x);
+        let j = critical(&a, self.delta_e_rad)?;
+        Ok(self.record(&a, x, j))
     }
 
-    /// Keeps `a` if its critical jump `j` lowers either minimum (or hits the limit).
-    fn record(&mut self, a: &Aircraft, j: Option<JumpPoint>) -> Option<(f64, f64)> {
+    /// Keeps `a` (at coordinates `x`) if its critical jump `j` lowers either minimum (or hits
+    /// the limit).
+    fn record(
+        &mut self,
+        a: &Aircraft,
+        x: &[BigRational],
+        j: Option<JumpPoint>,
+    ) -> Option<(f64, f64)> {
         let j = j?;
         let da = j.delta_a_deg.abs();
+        let case = |a: &Aircraft| case(a, self.params, x, &j);
         if self.p0.as_ref().is_none_or(|(p, _)| j.p0 < *p) {
-            self.p0 = Some((j.p0, case(a, &j)));
+            self.p0 = Some((j.p0, case(a)));
         }
         if self.da.as_ref().is_none_or(|(d, _)| da < *d) {
-            self.da = Some((da, case(a, &j)));
+            self.da = Some((da, case(a)));
         }
         if let Some(l) = self.limit_deg {
             if da <= l && self.limit_hit.is_none() {
-                self.limit_hit = Some(case(a, &j));
+                self.limit_hit = Some(case(a));
             }
         }
         Some((j.p0, da))
@@ -269,13 +297,12 @@ impl Worst {
 /// that lowers `key` (the critical p0 or |delta_a|), repeated while it improves.
 fn descend(
     worst: &mut Worst,
-    base: &Aircraft,
     params: &[Uncertain],
     start: Vec<BigRational>,
     key: fn(f64, f64) -> f64,
 ) -> Result<(), ClearError> {
     let mut x = start;
-    let mut best = match worst.try_aircraft(&at(base, params, &x))? {
+    let mut best = match worst.try_at(&x)? {
         Some((p, d)) => key(p, d),
         None => f64::INFINITY,
     };
@@ -288,7 +315,7 @@ fn descend(
                 }
                 let mut y = x.clone();
                 y[i] = end.clone();
-                if let Some((p, d)) = worst.try_aircraft(&at(base, params, &y))? {
+                if let Some((p, d)) = worst.try_at(&y)? {
                     if key(p, d) < best {
                         best = key(p, d);
                         x = y;
@@ -399,6 +426,8 @@ pub fn clear(
     let de = settings.delta_e_rad;
     let (base, params) = split_box(aircraft);
     let mut worst = Worst {
+        base: &base,
+        params: &params,
         p0: None,
         da: None,
         limit_hit: None,
@@ -409,7 +438,7 @@ pub fn clear(
         .iter()
         .map(|u| {
             let b = I::from_q_pair(&u.lo, &u.hi);
-            (u.param.key().to_string(), b.lo, b.hi)
+            (u.key().to_string(), b.lo, b.hi)
         })
         .collect();
     let finish = |worst: Worst,
@@ -458,7 +487,7 @@ pub fn clear(
 
     if params.is_empty() {
         // A point: the exact analysis is the proof.
-        let (lo, da) = match worst.try_aircraft(&base)? {
+        let (lo, da) = match worst.try_at(&[])? {
             Some((p, d)) => (p, d),
             None => (f64::INFINITY, f64::INFINITY),
         };
@@ -477,37 +506,37 @@ pub fn clear(
         .iter()
         .map(|u| (&u.lo + &u.hi) / BigRational::from_integer(2.into()))
         .collect();
-    worst.try_aircraft(&at(&base, &params, &centre))?;
+    worst.try_at(&centre)?;
     // The random candidates analysed on rayon's threads, kept in their seeded order.
     let mut rng = Rng::new(settings.seed);
-    let candidates: Vec<Aircraft> = (0..settings.candidates)
-        .map(|_| sample(&base, &params, &mut rng))
+    let candidates: Vec<(Vec<BigRational>, Aircraft)> = (0..settings.candidates)
+        .map(|_| {
+            let x = sample_coordinates(&params, &mut rng);
+            let a = at(&base, &params, &x);
+            (x, a)
+        })
         .collect();
-    let found: Vec<_> = candidates.par_iter().map(|a| critical(a, de)).collect();
-    for (a, j) in candidates.iter().zip(found) {
-        worst.record(a, j?);
+    let found: Vec<_> = candidates
+        .par_iter()
+        .map(|(_, a)| critical(a, de))
+        .collect();
+    for ((x, a), j) in candidates.iter().zip(found) {
+        worst.record(a, x, j?);
     }
     progress(0.05);
     let coords = |c: &Option<(f64, CaseAircraft)>| -> Vec<BigRational> {
         match c {
-            Some((_, w)) => params
-                .iter()
-                .map(|u| w.aircraft.exact(u.param).clone())
-                .collect(),
+            Some((_, w)) => w.coordinates.clone(),
             None => centre.clone(),
         }
     };
     let from_p0 = coords(&worst.p0);
-    descend(&mut worst, &base, &params, from_p0, |p, _| p)?;
+    descend(&mut worst, &params, from_p0, |p, _| p)?;
     let from_da = coords(&worst.da);
-    descend(&mut worst, &base, &params, from_da, |_, d| d)?;
+    descend(&mut worst, &params, from_da, |_, d| d)?;
     progress(0.1);
 
-    let polys = BoxPolys::new(
-        &base,
-        &params.iter().map(|u| u.param).collect::<Vec<_>>(),
-        de,
-    );
+    let polys = BoxPolys::of_box(&base, &params, de);
     let theta0: Vec<I> = params
         .iter()
         .map(|u| I::from_q_pair(&u.lo, &u.hi))

@@ -8,19 +8,28 @@
 //! // Aircraft A with n_beta in a box of zero width: every sample is A itself.
 //! let mut a = Aircraft::a();
 //! let n_beta = a.exact(Param::NBeta).clone();
-//! a.uncertainty = vec![Uncertain { param: Param::NBeta, lo: n_beta.clone(), hi: n_beta }];
+//! a.uncertainty = vec![Uncertain::param(Param::NBeta, n_beta.clone(), n_beta)];
 //! let mc = run(&a, 2f64.to_radians(), 2, 1, 1);
 //! assert_eq!(mc.samples, 2);
 //! assert!(mc.values.iter().all(|s| s.p0 == mc.min_p0 && s.p0.is_some()));
 //! ```
 
 use super::{clamp_exact, critical, split_box, Rng};
-use crate::aircraft::Aircraft;
+use crate::aircraft::{Aircraft, Param};
 use crate::analysis::fast;
 use crate::certified::{Sampler, Values};
 use crate::interval::I;
 use rayon::prelude::*;
 use serde::Serialize;
+
+/// How a coordinate of the box enters the sampler's varying parameters (by their index).
+enum Enters {
+    /// It is the value of one.
+    Value(usize),
+    /// A coefficient: each parameter moves by a (x - nominal), with enclosures of the
+    /// coefficient's nominal value and of each a.
+    Moves(I, Vec<(usize, I)>),
+}
 
 /// One sample: its critical jump (None when its primary branch has none).
 #[derive(Clone, Debug, Serialize, PartialEq)]
@@ -82,23 +91,51 @@ pub fn run(
         })
         .collect();
     let bound = crate::analysis::aileron_range(aircraft);
-    let varying: Vec<_> = params.iter().map(|u| u.param).collect();
+    // The parameters the coordinates move, each once, and how: a coordinate is a parameter's
+    // value, or a coefficient moving parameters by a_p (x - nominal) (enclosed).
+    let mut varying: Vec<Param> = Vec::new();
+    let moves: Vec<Enters> = params
+        .iter()
+        .map(|u| {
+            let mut slot = |p: Param| match varying.iter().position(|v| *v == p) {
+                Some(i) => i,
+                None => {
+                    varying.push(p);
+                    varying.len() - 1
+                }
+            };
+            match &u.coefficient {
+                None => Enters::Value(slot(u.param)),
+                Some(c) => Enters::Moves(
+                    I::from_q(&c.nominal),
+                    c.moves
+                        .iter()
+                        .map(|(p, a)| (slot(*p), I::from_q(a)))
+                        .collect(),
+                ),
+            }
+        })
+        .collect();
     let sampler = Sampler::new(fixed, &varying, delta_e_rad, 0.0);
     let one = |x: &Vec<f64>| -> (Sample, bool) {
         // A draw strictly inside the exact ends is its own exact value; one at an end is
         // clamped to the exact end, as the exact path's sample.
-        let data: Vec<I> = params
-            .iter()
-            .zip(x)
-            .zip(&ends)
-            .map(|((u, xi), (_, lo, hi))| {
-                if *xi > lo.hi && *xi < hi.lo {
-                    I::point(*xi)
-                } else {
-                    I::from_q(&clamp_exact(u, *xi))
+        let mut data: Vec<I> = varying.iter().map(|p| fixed[p.index()]).collect();
+        for (((u, xi), (_, lo, hi)), how) in params.iter().zip(x).zip(&ends).zip(&moves) {
+            let xi = if *xi > lo.hi && *xi < hi.lo {
+                I::point(*xi)
+            } else {
+                I::from_q(&clamp_exact(u, *xi))
+            };
+            match how {
+                Enters::Value(i) => data[*i] = xi,
+                Enters::Moves(nominal, moved) => {
+                    for (i, a) in moved {
+                        data[*i] = data[*i] + *a * (xi - *nominal);
+                    }
                 }
-            })
-            .collect();
+            }
+        }
         let v = sampler.values(&data);
         let (point, fell_back) = match fast::critical(&v, bound, fast::MAX_WIDTH) {
             Ok(c) => (c, false),

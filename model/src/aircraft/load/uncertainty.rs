@@ -8,28 +8,25 @@
 //! ```
 //!
 //! Keys are those of [`Param::ALL`] in a dimensional file (its `[inertia]` C, D, E and
-//! `[derivatives]`), and the `[coefficients]` keys in a nondimensional body-axis file: each
-//! coefficient's interval becomes the interval of the one derivative it scales (below). Every
+//! `[derivatives]`), and the `[coefficients]` keys in a nondimensional body-axis file. Every
 //! end is exact (the literals as written). Rejected, with file, line and key: an unknown key, a
-//! negative width or percentage, an empty interval (lo > hi), an interval of `l_delta_a` (or of
-//! `Cl_delta_a`) that contains zero (flips the sign of the aileron authority), an interval of C,
-//! D or E outside [-1, 1] (no rigid body has such an inertia coefficient: the triangle
-//! inequalities of the principal moments bound |C|, |D|, |E| by 1), and a coefficient that moves
-//! more than one derivative (below).
+//! negative width or percentage, an empty interval (lo > hi), an interval of `l_delta_a` that
+//! contains zero, or coefficient intervals that let it reach zero (that flips the sign of the
+//! aileron authority), and an interval of C, D or E outside [-1, 1] (no rigid body has such an
+//! inertia coefficient: the triangle inequalities of the principal moments bound |C|, |D|, |E|
+//! by 1).
 //!
 //! A nondimensional file's coefficient enters the model through the conversion of
-//! [`convert`](crate::aircraft::convert), which is linear in the coefficients: with `ixz = 0`
-//! each derivative is one coefficient times a factor of the flight condition, geometry and
-//! inertia, so a box of coefficients is exactly a box of derivatives, the conversion of the
-//! coefficient's two ends. With `ixz != 0` the rotation to principal axes mixes `Cl_x` and
-//! `Cn_x` into both `l_x` and `n_x` (and `Cl_p`, `Cl_r`, `Cn_p`, `Cn_r` into all four rate
-//! derivatives): one uncertain coefficient then moves a line, not a box, of derivatives, which
-//! the clearance's box cannot represent. Those are refused, naming the derivatives moved; the
-//! longitudinal and side-force coefficients, which the rotation leaves alone, are accepted.
+//! [`convert`](crate::aircraft::convert), which is linear in the coefficients. A coefficient that
+//! moves one derivative (every one with `ixz = 0`; with `ixz != 0` those the principal-axis
+//! rotation leaves alone: `CL_alpha`, `CY_beta`, the `Cm`) becomes that derivative's interval,
+//! the conversion of its two ends. One that moves several (with `ixz != 0` the rotation mixes
+//! `Cl_x` and `Cn_x` into both `l_x` and `n_x`) is a coordinate of its own: its interval, its
+//! nominal value and the exact slope of each derivative it moves ([`CoefficientMap`]).
 
 use super::{qualified, shorten, AircraftError, Cx, Key, Kind, Node, Table};
-use crate::aircraft::convert::{convert, BodyAxisInput, Coefficient, Converted};
-use crate::aircraft::{decimal_to_rational, Aircraft, Param, Uncertain};
+use crate::aircraft::convert::{convert, slopes, BodyAxisInput, Coefficient, Converted};
+use crate::aircraft::{decimal_to_rational, Aircraft, CoefficientMap, Param, Uncertain};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
@@ -65,6 +62,8 @@ impl Cx<'_> {
         converted: &Converted,
     ) -> Result<Vec<Uncertain>, AircraftError> {
         let mut out = Vec::new();
+        // The entries that became coefficient coordinates, for the joint check below.
+        let mut maps: Vec<(&Key, &Node)> = Vec::new();
         for (key, value) in table.entries {
             let c = Coefficient::ALL
                 .iter()
@@ -89,24 +88,58 @@ impl Cx<'_> {
                 .collect();
             let param = c.derivative();
             if moved.iter().any(|p| *p != param) {
-                let names: Vec<&str> = moved.iter().map(|p| p.key()).collect();
-                return Err(AircraftError::InvalidValue {
-                    at: self.at_value(key, value),
-                    key: qualified(table.name, &key.name),
-                    expected: format!(
-                        "an uncertain coefficient that moves one derivative: with ixz != 0 the \
-                         rotation to principal axes makes `{}` move {} together, a line that the \
-                         clearance box (one interval per derivative) cannot hold; give this \
-                         uncertainty per derivative in the dimensional file of `model convert`",
-                        key.name,
-                        names.join(", ")
-                    ),
-                    value: shorten(&self.written(value)),
-                });
+                // Several derivatives move together: the coordinate is the coefficient.
+                let u = Uncertain {
+                    param,
+                    lo,
+                    hi,
+                    coefficient: Some(CoefficientMap {
+                        key: c.key(),
+                        nominal: input.coefficient(c).clone(),
+                        moves: slopes(input, c),
+                    }),
+                };
+                out.push(u);
+                maps.push((key, value));
+                continue;
             }
             let (a, b) = (at_lo.derivative(param), at_hi.derivative(param));
             let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
             out.push(self.checked(table, key, value, param, lo.clone(), hi.clone())?);
+        }
+        // The aileron authority keeps its sign over the whole box: l_delta_a's exact range,
+        // its nominal value plus each coefficient's extreme moves.
+        if let Some((key, value)) = maps.last() {
+            let nominal = converted.derivative(Param::LDeltaA).clone();
+            let (lo, hi) = out
+                .iter()
+                .filter_map(|u| Some((u, u.coefficient.as_ref()?)))
+                .flat_map(|(u, c)| {
+                    c.moves
+                        .iter()
+                        .filter(|(p, _)| *p == Param::LDeltaA)
+                        .map(move |(_, a)| {
+                            let (x, y) = (a * (&u.lo - &c.nominal), a * (&u.hi - &c.nominal));
+                            if x <= y {
+                                (x, y)
+                            } else {
+                                (y, x)
+                            }
+                        })
+                })
+                .fold((nominal.clone(), nominal), |(lo, hi), (x, y)| {
+                    (lo + x, hi + y)
+                });
+            if lo.is_zero() || hi.is_zero() || lo.is_negative() != hi.is_negative() {
+                return Err(AircraftError::InvalidValue {
+                    at: self.at_value(key, value),
+                    key: qualified(table.name, &key.name),
+                    expected: "coefficient intervals that keep the sign of l_delta_a over the \
+                               box (0 inside flips the sign of the aileron authority)"
+                        .to_string(),
+                    value: format!("l_delta_a in [{}, {}]", show(&lo), show(&hi)),
+                });
+            }
         }
         Ok(out)
     }
@@ -205,7 +238,7 @@ impl Cx<'_> {
                 ));
             }
         }
-        Ok(Uncertain { param, lo, hi })
+        Ok(Uncertain::param(param, lo, hi))
     }
 
     /// The unknown-key error of `[uncertainty]`, listing the keys of the file's format (and

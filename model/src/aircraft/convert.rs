@@ -289,7 +289,7 @@ impl Converted {
         if !aircraft.uncertainty.is_empty() {
             let _ = writeln!(
                 out,
-                "\n[uncertainty]\n# The coefficient intervals, converted (exact ends)."
+                "\n[uncertainty]\n# Each coefficient's interval as its derivative's: the conversion of its ends."
             );
         }
         for u in &aircraft.uncertainty {

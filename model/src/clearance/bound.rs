@@ -42,7 +42,7 @@ use crate::certified::dense::horner;
 use crate::certified::num::{Dual, Num, GRADIENT};
 use crate::certified::{at_roll_rate, AtRollRate, Values};
 use crate::equations::symbols;
-use crate::interval::I;
+use crate::interval::{next_down, next_up, I};
 use crate::specialise::parametric;
 
 /// Why a slab could not be certified.
@@ -116,8 +116,14 @@ impl BoxPolys {
     /// The box of `aircraft` whose coordinates are `params` (each a parameter, or a coefficient
     /// of a nondimensional file moving several), with every coordinate's value in `aircraft`
     /// its nominal one.
+    ///
+    /// A parameter a coefficient moves is its loaded nominal value (the conversion rounded once
+    /// to f64) plus exact increments, while a file written with the same coefficients holds
+    /// the conversion rounded at those coefficients: the two differ by at most one ulp of the
+    /// parameter's largest magnitude over the box. Its fixed part is widened by two of those,
+    /// so that the proof covers both.
     pub fn of_box(aircraft: &Aircraft, params: &[Uncertain], delta_e_rad: f64) -> BoxPolys {
-        let coordinates = params
+        let coordinates: Vec<Coordinate> = params
             .iter()
             .map(|u| match &u.coefficient {
                 None => Coordinate::Param(u.param),
@@ -127,7 +133,25 @@ impl BoxPolys {
                 },
             })
             .collect();
-        BoxPolys::with(aircraft, coordinates, delta_e_rad)
+        let mut b = BoxPolys::with(aircraft, coordinates, delta_e_rad);
+        let mut largest = [0.0f64; 18];
+        for u in params {
+            let Some(c) = &u.coefficient else { continue };
+            let reach = (I::from_q(&u.lo) - I::from_q(&c.nominal))
+                .mag()
+                .max((I::from_q(&u.hi) - I::from_q(&c.nominal)).mag());
+            for (p, a) in &c.moves {
+                largest[p.index()] += I::from_q(a).mag() * reach;
+            }
+        }
+        for (i, extra) in largest.iter().enumerate() {
+            if *extra > 0.0 {
+                let f = b.fixed[i];
+                let w = 4.0 * f64::EPSILON * (f.mag() + extra);
+                b.fixed[i] = I::new(next_down(f.lo - w), next_up(f.hi + w));
+            }
+        }
+        b
     }
 
     fn with(aircraft: &Aircraft, coordinates: Vec<Coordinate>, delta_e_rad: f64) -> BoxPolys {
@@ -136,6 +160,15 @@ impl BoxPolys {
             "at most {} uncertain parameters (and P0)",
             GRADIENT - 1
         );
+        // A parameter's own coordinate sets it: no coefficient may move it too (the loader
+        // makes every coefficient that moves more than its own derivative a coordinate).
+        debug_assert!(coordinates.iter().all(|c| match c {
+            Coordinate::Param(p) => coordinates.iter().all(|o| match o {
+                Coordinate::Coefficient { moves, .. } => moves.iter().all(|(q, _)| q != p),
+                Coordinate::Param(_) => true,
+            }),
+            Coordinate::Coefficient { .. } => true,
+        }));
         let moved: Vec<Param> = coordinates
             .iter()
             .flat_map(|c| match c {

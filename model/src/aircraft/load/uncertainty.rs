@@ -52,9 +52,10 @@ impl Cx<'_> {
         Ok(out)
     }
 
-    /// `[uncertainty]` of a nondimensional body-axis file: each coefficient's interval,
-    /// converted (by the same [`convert`] as the nominal data) to the interval of the one
-    /// derivative it moves; a coefficient that moves several (`ixz != 0`) is refused.
+    /// `[uncertainty]` of a nondimensional body-axis file: the interval of each coefficient
+    /// that moves one derivative, converted (by the same [`convert`] as the nominal data) to
+    /// that derivative's interval; each coefficient that moves several (`ixz != 0`, decided by
+    /// its exact slopes) as a coordinate of its own.
     pub(super) fn body_axis_uncertainty(
         &self,
         table: &Table<'_>,
@@ -62,8 +63,8 @@ impl Cx<'_> {
         converted: &Converted,
     ) -> Result<Vec<Uncertain>, AircraftError> {
         let mut out = Vec::new();
-        // The entries that became coefficient coordinates, for the joint check below.
-        let mut maps: Vec<(&Key, &Node)> = Vec::new();
+        // The last coefficient coordinate that moves l_delta_a, for the joint check below.
+        let mut aileron: Option<(&Key, &Node)> = None;
         for (key, value) in table.entries {
             let c = Coefficient::ALL
                 .iter()
@@ -71,45 +72,38 @@ impl Cx<'_> {
                 .find(|c| c.key() == key.name)
                 .ok_or_else(|| self.unknown_uncertain(table, key, true))?;
             let (lo, hi) = self.interval(table, key, value, input.coefficient(c))?;
-            let at = |x: &BigRational| {
-                let mut i = input.clone();
-                i.coefficients[c as usize] = x.clone();
-                convert(&i)
-            };
-            let (at_lo, at_hi) = (at(&lo), at(&hi));
-            let moved: Vec<Param> = Param::ALL
-                .iter()
-                .skip(3)
-                .copied()
-                .filter(|p| {
-                    at_lo.derivative(*p) != converted.derivative(*p)
-                        || at_hi.derivative(*p) != converted.derivative(*p)
-                })
-                .collect();
             let param = c.derivative();
-            if moved.iter().any(|p| *p != param) {
+            let moves = slopes(input, c);
+            if moves.iter().any(|(p, _)| *p != param) {
                 // Several derivatives move together: the coordinate is the coefficient.
-                let u = Uncertain {
+                if moves.iter().any(|(p, _)| *p == Param::LDeltaA) {
+                    aileron = Some((key, value));
+                }
+                out.push(Uncertain {
                     param,
                     lo,
                     hi,
                     coefficient: Some(CoefficientMap {
                         key: c.key(),
                         nominal: input.coefficient(c).clone(),
-                        moves: slopes(input, c),
+                        moves,
                     }),
-                };
-                out.push(u);
-                maps.push((key, value));
+                });
                 continue;
             }
+            let at = |x: &BigRational| {
+                let mut i = input.clone();
+                i.coefficients[c as usize] = x.clone();
+                convert(&i)
+            };
+            let (at_lo, at_hi) = (at(&lo), at(&hi));
             let (a, b) = (at_lo.derivative(param), at_hi.derivative(param));
             let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
             out.push(self.checked(table, key, value, param, lo.clone(), hi.clone())?);
         }
         // The aileron authority keeps its sign over the whole box: l_delta_a's exact range,
         // its nominal value plus each coefficient's extreme moves.
-        if let Some((key, value)) = maps.last() {
+        if let Some((key, value)) = aileron {
             let nominal = converted.derivative(Param::LDeltaA).clone();
             let (lo, hi) = out
                 .iter()

@@ -120,7 +120,7 @@ impl BoxPolys {
     /// A parameter a coefficient moves is its loaded nominal value (the conversion rounded once
     /// to f64) plus exact increments, while a file written with the same coefficients holds
     /// the conversion rounded at those coefficients: the two differ by at most one ulp of the
-    /// parameter's largest magnitude over the box. Its fixed part is widened by two of those,
+    /// parameter's largest magnitude over the box. Its fixed part is widened by four of those,
     /// so that the proof covers both.
     pub fn of_box(aircraft: &Aircraft, params: &[Uncertain], delta_e_rad: f64) -> BoxPolys {
         let coordinates: Vec<Coordinate> = params

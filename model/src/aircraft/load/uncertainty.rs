@@ -124,7 +124,7 @@ impl Cx<'_> {
                 .fold((nominal.clone(), nominal), |(lo, hi), (x, y)| {
                     (lo + x, hi + y)
                 });
-            if lo.is_zero() || hi.is_zero() || lo.is_negative() != hi.is_negative() {
+            if !keeps_sign(&lo, &hi) {
                 return Err(AircraftError::InvalidValue {
                     at: self.at_value(key, value),
                     key: qualified(table.name, &key.name),
@@ -215,9 +215,7 @@ impl Cx<'_> {
             expected: expected.to_string(),
             value: format!("[{}, {}]", show(&lo), show(&hi)),
         };
-        if param == Param::LDeltaA
-            && (lo.is_zero() || hi.is_zero() || lo.is_negative() != hi.is_negative())
-        {
+        if param == Param::LDeltaA && !keeps_sign(&lo, &hi) {
             return Err(bad(
                 "an interval of l_delta_a that keeps its sign (0 inside flips the sign of the \
                  aileron authority)",
@@ -269,6 +267,12 @@ impl Cx<'_> {
     fn end(&self, table: &Table<'_>, key: &Key, node: &Node) -> Result<BigRational, AircraftError> {
         self.number(table.name, key, node).map(|n| n.exact)
     }
+}
+
+/// Whether every value of `[lo, hi]` has the same nonzero sign (the aileron authority l_delta_a
+/// may not vanish or flip anywhere in the box).
+fn keeps_sign(lo: &BigRational, hi: &BigRational) -> bool {
+    !lo.is_zero() && !hi.is_zero() && lo.is_negative() == hi.is_negative()
 }
 
 fn show(q: &BigRational) -> String {

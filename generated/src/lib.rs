@@ -1637,51 +1637,181 @@ impl Prepared {
     #[must_use]
     #[inline]
     pub fn det_k(&self, p0: f64) -> f64 {
-        let t0 = p0 * (self.f19 + p0 * self.f20);
-        let t1 = self.f18 + p0 * (self.f17 + t0);
+        self.det_k_lanes(p0)
+    }
+    /// The statements of [`det_k`](Self::det_k), over f64 or four lanes (`T`).
+    #[inline(always)]
+    fn det_k_lanes<T: prepared_lanes::Lane>(&self, p0: T) -> T {
+        let t0 = p0 * (T::splat(self.f19) + p0 * T::splat(self.f20));
+        let t1 = T::splat(self.f18) + p0 * (T::splat(self.f17) + t0);
         let t2 = p0 * p0;
-        let t3 = self.f22 * t2;
-        let t4 = self.f21 + t3;
-        let t5 = p0 * (self.f24 + p0 * (t0 + self.f23)) - self.f25;
-        let t6 = p0 * (t3 + self.f26);
-        let t7 = self.f29 + p0 * (self.f27 - p0 * (self.f28 + p0 * self.f16));
-        let t8 = self.f31 - t2 * self.f30;
-        let t9 = self.f32 + t2 * (self.f33 + t2 * self.f34);
+        let t3 = T::splat(self.f22) * t2;
+        let t4 = T::splat(self.f21) + t3;
+        let t5 = p0 * (T::splat(self.f24) + p0 * (t0 + T::splat(self.f23)))
+            - T::splat(self.f25);
+        let t6 = p0 * (t3 + T::splat(self.f26));
+        let t7 = T::splat(self.f29)
+            + p0
+                * (T::splat(self.f27)
+                    - p0 * (T::splat(self.f28) + p0 * T::splat(self.f16)));
+        let t8 = T::splat(self.f31) - t2 * T::splat(self.f30);
+        let t9 = T::splat(self.f32)
+            + t2 * (T::splat(self.f33) + t2 * T::splat(self.f34));
         let t10 = t9 * t9;
-        let t11 = t10 * (self.f35 + p0 * self.f3) + self.f4 * (t7 * t9)
-            - self.f2 * (t5 * t7) + self.f5 * (t1 * t9);
-        let t12 = self.f6 * t10 + self.f4 * (t8 * t9) - self.f2 * (t5 * t8 + t6 * t7)
-            + self.f5 * (t4 * t9);
+        let t11 = t10 * (T::splat(self.f35) + p0 * T::splat(self.f3))
+            + T::splat(self.f4) * (t7 * t9) - T::splat(self.f2) * (t5 * t7)
+            + T::splat(self.f5) * (t1 * t9);
+        let t12 = T::splat(self.f6) * t10 + T::splat(self.f4) * (t8 * t9)
+            - T::splat(self.f2) * (t5 * t8 + t6 * t7) + T::splat(self.f5) * (t4 * t9);
         let t13 = t12
-            + libm::sqrt(t12 * t12 + self.f2 * (t6 * t8) * t11 * 4.0).copysign(t12);
-        let t14 = t11 * 2.0;
-        let t15 = (self.f11 - p0 * (self.f13 + p0 * self.f14)) * t13
-            + p0 * self.f15 * t14;
+            + T::copysign(
+                T::sqrt(t12 * t12 + T::splat(self.f2) * (t6 * t8) * t11 * T::splat(4.0)),
+                t12,
+            );
+        let t14 = t11 * T::splat(2.0);
+        let t15 = (T::splat(self.f11)
+            - p0 * (T::splat(self.f13) + p0 * T::splat(self.f14))) * t13
+            + p0 * T::splat(self.f15) * t14;
         let t16 = t1 * t13 - t4 * t14;
         let t17 = t5 * t13 - t6 * t14;
         let t18 = t7 * t13 - t8 * t14;
         let t19 = t9 * t13;
-        let t20 = self.f0 * t18 + self.f7 * t16 + t15 * (p0 * self.f0);
-        let t21 = self.f8 * t19 - self.f1 * t17 - t16 * (p0 * self.f1) + self.f9 * t15;
-        let t22 = p0 * self.f2;
-        let t23 = (t19 * (p0 * self.f4) + t18 * self.f36 - t17 * t22)
-            * (t21 * (p0 * self.f12) - t20 * (self.f10 - self.f1 * t2));
+        let t20 = T::splat(self.f0) * t18 + T::splat(self.f7) * t16
+            + t15 * (p0 * T::splat(self.f0));
+        let t21 = T::splat(self.f8) * t19 - T::splat(self.f1) * t17
+            - t16 * (p0 * T::splat(self.f1)) + T::splat(self.f9) * t15;
+        let t22 = p0 * T::splat(self.f2);
+        let t23 = (t19 * (p0 * T::splat(self.f4)) + t18 * T::splat(self.f36) - t17 * t22)
+            * (t21 * (p0 * T::splat(self.f12))
+                - t20 * (T::splat(self.f10) - T::splat(self.f1) * t2));
         let t24 = t23
-            + (t19 * self.f37 - t18 * t22 - t17 * self.f38)
-                * (t21 * (self.f39 - self.f0 * t2) + t20 * (p0 * self.f40));
+            + (t19 * T::splat(self.f37) - t18 * t22 - t17 * T::splat(self.f38))
+                * (t21 * (T::splat(self.f39) - T::splat(self.f0) * t2)
+                    + t20 * (p0 * T::splat(self.f40)));
         t9
             - t24
-                / (self.f3 * (t19 * t19) - self.f2 * (t16 * t18) + self.f4 * (t15 * t19)
-                    - self.f2 * (t15 * t17))
+                / (T::splat(self.f3) * (t19 * t19) - T::splat(self.f2) * (t16 * t18)
+                    + T::splat(self.f4) * (t15 * t19) - T::splat(self.f2) * (t15 * t17))
     }
     /// det K at each roll rate of `p0`, written to `out`: element i of `out` is
     /// `self.det_k(p0[i])` for i below the shorter length; the rest of `out` is not touched.
-    /// No allocation, no panic; the loop body is `det_k`, straight-line.
+    /// No allocation, no panic. Four roll rates at a time: the statements of `det_k` over four
+    /// lanes, which the compiler turns into packed (SIMD) arithmetic; each lane is the same
+    /// operations in the same order as `det_k`, so the results are bit for bit `det_k`'s.
     #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
     #[inline]
     pub fn det_k_into(&self, p0: &[f64], out: &mut [f64]) {
-        for (o, p) in core::iter::zip(out, p0) {
+        let n = core::cmp::min(p0.len(), out.len());
+        let (p0, out) = (p0.split_at(n).0, out.split_at_mut(n).0);
+        let (mut o4, mut p4) = (out.chunks_exact_mut(4), p0.chunks_exact(4));
+        for (o, p) in core::iter::zip(&mut o4, &mut p4) {
+            let lanes = prepared_lanes::Lanes([p[0], p[1], p[2], p[3]]);
+            o.copy_from_slice(&self.det_k_lanes(lanes).0);
+        }
+        for (o, p) in core::iter::zip(o4.into_remainder(), p4.remainder()) {
             *o = self.det_k(*p);
+        }
+    }
+}
+/// Four roll rates at once for [`Prepared::det_k_into`]: the per-call statements are
+/// written once, generic over [`Lane`](prepared_lanes::Lane), and each lane of
+/// `Lanes` computes exactly what `f64` does.
+mod prepared_lanes {
+    use core::ops::{Add, Div, Mul, Neg, Sub};
+    /// The arithmetic of the per-call statements.
+    pub trait Lane: Copy
+    where
+        Self: Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self>,
+        Self: Div<Output = Self> + Neg<Output = Self>,
+    {
+        /// The same f64 in every lane.
+        fn splat(x: f64) -> Self;
+        /// The square root (IEEE, correctly rounded), lane by lane.
+        fn sqrt(x: Self) -> Self;
+        /// `x` with the sign of `sign`, lane by lane.
+        fn copysign(x: Self, sign: Self) -> Self;
+    }
+    impl Lane for f64 {
+        #[inline(always)]
+        fn splat(x: f64) -> f64 {
+            x
+        }
+        #[inline(always)]
+        fn sqrt(x: f64) -> f64 {
+            libm::sqrt(x)
+        }
+        #[inline(always)]
+        fn copysign(x: f64, sign: f64) -> f64 {
+            x.copysign(sign)
+        }
+    }
+    /// Four f64, one roll rate each.
+    #[derive(Clone, Copy)]
+    pub struct Lanes(pub [f64; 4]);
+    impl Lanes {
+        #[inline(always)]
+        fn map(self, f: impl Fn(f64) -> f64) -> Lanes {
+            let a = self.0;
+            Lanes([f(a[0]), f(a[1]), f(a[2]), f(a[3])])
+        }
+    }
+    impl Add for Lanes {
+        type Output = Lanes;
+        #[inline(always)]
+        fn add(self, b: Lanes) -> Lanes {
+            let (a, b) = (self.0, b.0);
+            Lanes([a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]])
+        }
+    }
+    impl Sub for Lanes {
+        type Output = Lanes;
+        #[inline(always)]
+        fn sub(self, b: Lanes) -> Lanes {
+            let (a, b) = (self.0, b.0);
+            Lanes([a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] - b[3]])
+        }
+    }
+    impl Mul for Lanes {
+        type Output = Lanes;
+        #[inline(always)]
+        fn mul(self, b: Lanes) -> Lanes {
+            let (a, b) = (self.0, b.0);
+            Lanes([a[0] * b[0], a[1] * b[1], a[2] * b[2], a[3] * b[3]])
+        }
+    }
+    impl Div for Lanes {
+        type Output = Lanes;
+        #[inline(always)]
+        fn div(self, b: Lanes) -> Lanes {
+            let (a, b) = (self.0, b.0);
+            Lanes([a[0] / b[0], a[1] / b[1], a[2] / b[2], a[3] / b[3]])
+        }
+    }
+    impl Neg for Lanes {
+        type Output = Lanes;
+        #[inline(always)]
+        fn neg(self) -> Lanes {
+            self.map(|x| -x)
+        }
+    }
+    impl Lane for Lanes {
+        #[inline(always)]
+        fn splat(x: f64) -> Lanes {
+            Lanes([x; 4])
+        }
+        #[inline(always)]
+        fn sqrt(x: Lanes) -> Lanes {
+            x.map(libm::sqrt)
+        }
+        #[inline(always)]
+        fn copysign(x: Lanes, sign: Lanes) -> Lanes {
+            let (a, s) = (x.0, sign.0);
+            Lanes([
+                a[0].copysign(s[0]),
+                a[1].copysign(s[1]),
+                a[2].copysign(s[2]),
+                a[3].copysign(s[3]),
+            ])
         }
     }
 }

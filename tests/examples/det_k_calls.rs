@@ -2,7 +2,8 @@
 //! (N from the command line), for counting instructions per call with callgrind. The second
 //! argument picks the route: `det_k` (default), `prepared`, `into` (slices of 1000 roll rates),
 //! or `loop`, the same loop without any call: (Ir(N route) - Ir(N loop)) / N is the cost of one
-//! call (for `into`, of one element), call included.
+//! call, call included. `into` fills its roll rates once, not per call as the others do: its
+//! cost per element is (Ir(2N into) - Ir(N into)) / N.
 //!
 //! `valgrind --tool=callgrind --callgrind-out-file=/dev/null target/release/examples/det_k_calls 100000 [det_k|prepared|into|loop]`
 

@@ -15,7 +15,7 @@ use crate::equations::symbols;
 mod hopf;
 mod prepared;
 pub(crate) use hopf::polynomial as hopf_polynomial;
-pub use prepared::{prepared, Prepared};
+pub use prepared::{prepared, Prepared, TYPE as PREPARED_TYPE};
 
 /// How a generated function returns its outputs.
 #[derive(Clone, Debug, PartialEq)]

@@ -36,12 +36,28 @@ pub fn float_literal(q: &Q) -> TokenStream {
     }
 }
 
-fn input_tokens(name: &str) -> TokenStream {
+/// The type of the values of a body: `f64`, or the lanes type `T` of a generic body (the
+/// per-call program of `Prepared`, evaluated for one roll rate or for four at once). Either way
+/// the statements are the same operations in the same order, so each lane of a generic body
+/// equals the f64 body bit for bit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Values {
+    /// Plain f64.
+    F64,
+    /// `T: Lane` (see [`lane_items`]): inputs through `self` are f64 fields, made lanes by
+    /// `T::splat`; the other inputs are `T`.
+    Lanes,
+}
+
+fn input_tokens(name: &str, values: Values) -> TokenStream {
     match name.split_once('.') {
         Some((base, field)) => {
             let b = Ident::new(base, Span::call_site());
             let f = Ident::new(field, Span::call_site());
-            quote!(#b.#f)
+            match values {
+                Values::F64 => quote!(#b.#f),
+                Values::Lanes => quote!(T::splat(#b.#f)),
+            }
         }
         None => {
             let i = Ident::new(name, Span::call_site());
@@ -51,20 +67,32 @@ fn input_tokens(name: &str) -> TokenStream {
 }
 
 /// The tokens of an expression; its grouping is already explicit in [`Expr::Paren`].
-fn tokens(e: &Expr) -> TokenStream {
+fn tokens(e: &Expr, values: Values) -> TokenStream {
+    let lanes = values == Values::Lanes;
     match e {
-        Expr::Const(q) => float_literal(q),
+        Expr::Const(q) => {
+            let x = float_literal(q);
+            if lanes {
+                quote!(T::splat(#x))
+            } else {
+                x
+            }
+        }
         Expr::Named(n) => {
             let k = format_ident!("K{}", n);
-            quote!(#k)
+            if lanes {
+                quote!(T::splat(#k))
+            } else {
+                quote!(#k)
+            }
         }
-        Expr::Input(name) => input_tokens(name),
+        Expr::Input(name) => input_tokens(name, values),
         Expr::Temp(n) => {
             let t = format_ident!("t{}", n);
             quote!(#t)
         }
         Expr::Binary(op, a, b) => {
-            let (x, y) = (tokens(a), tokens(b));
+            let (x, y) = (tokens(a, values), tokens(b, values));
             match op {
                 Op::Add => quote!(#x + #y),
                 Op::Sub => quote!(#x - #y),
@@ -73,14 +101,22 @@ fn tokens(e: &Expr) -> TokenStream {
             }
         }
         Expr::Neg(a) => {
-            let x = tokens(a);
+            let x = tokens(a, values);
             quote!(-#x)
         }
         Expr::Sqrt(a) => {
-            let x = tokens(a);
-            quote!(libm::sqrt(#x))
+            let x = tokens(a, values);
+            if lanes {
+                quote!(T::sqrt(#x))
+            } else {
+                quote!(libm::sqrt(#x))
+            }
         }
         Expr::CopySign(a, b) => {
+            let (x, y) = (tokens(a, values), tokens(b, values));
+            if lanes {
+                return quote!(T::copysign(#x, #y));
+            }
             // core's `f64::copysign` (the `llvm.copysign` intrinsic: inlined, cannot unwind, so the
             // no-panic proof holds even where the arguments are constants), a method call: its
             // receiver is parenthesized unless it is an atom.
@@ -90,13 +126,11 @@ fn tokens(e: &Expr) -> TokenStream {
                 Expr::Sqrt(_) | Expr::CopySign(..) | Expr::Paren(_) => true,
                 Expr::Binary(..) | Expr::Neg(_) => false,
             };
-            let x = tokens(a);
             let x = if atom { x } else { quote!((#x)) };
-            let y = tokens(b);
             quote!(#x.copysign(#y))
         }
         Expr::Paren(a) => {
-            let x = tokens(a);
+            let x = tokens(a, values);
             quote!((#x))
         }
     }
@@ -104,7 +138,7 @@ fn tokens(e: &Expr) -> TokenStream {
 
 /// The body statements and the tokens of each output, for a function's DAG: the named
 /// constants (`const KN: f64`, their exact value in a doc comment), then the temporaries.
-pub fn body(dag: &Dag, outputs: &[Id]) -> (Vec<TokenStream>, Vec<TokenStream>) {
+pub fn body(dag: &Dag, outputs: &[Id], values: Values) -> (Vec<TokenStream>, Vec<TokenStream>) {
     let p = program(dag, outputs);
     let constants = p.constants.iter().enumerate().map(|(n, q)| {
         let name = format_ident!("K{}", n);
@@ -114,17 +148,157 @@ pub fn body(dag: &Dag, outputs: &[Id]) -> (Vec<TokenStream>, Vec<TokenStream>) {
     });
     let temps = p.temps.iter().enumerate().map(|(n, e)| {
         let name = format_ident!("t{}", n);
-        let e = tokens(e);
+        let e = tokens(e, values);
         quote!(let #name = #e;)
     });
     let stmts = constants.chain(temps).collect();
-    (stmts, p.outputs.iter().map(tokens).collect())
+    let outs = p.outputs.iter().map(|e| tokens(e, values)).collect();
+    (stmts, outs)
 }
 
-/// The tokens of one function, with `extra_attrs` (e.g. `#[no_panic]`) before it.
+/// The tokens of one function, its doc (`header_doc` first) and its body of straight-line f64
+/// statements.
 pub fn function(f: &Function, header_doc: &[String]) -> TokenStream {
     let ids: Vec<Id> = f.outputs.iter().map(|(_, id)| *id).collect();
-    let (stmts, outs) = body(&f.dag, &ids);
+    let (stmts, outs) = body(&f.dag, &ids, Values::F64);
+    signature_and_body(f, header_doc, stmts, outs)
+}
+
+/// The tokens of a scalar method `f` (inputs `&self` and f64 arguments, one output) whose body
+/// calls the generic `lanes` (made by [`lane_function`] from the same `f`) with `T = f64`: the
+/// same doc and signature as [`function`] gives, the statements written once for both.
+pub fn delegating_function(f: &Function, header_doc: &[String], lanes: &Ident) -> TokenStream {
+    let args = f.args.iter().map(|a| Ident::new(a.name, Span::call_site()));
+    let call = quote!(self.#lanes(#(#args),*));
+    signature_and_body(f, header_doc, Vec::new(), vec![call])
+}
+
+/// The generic form of the scalar method `f`, named `name`: its statements over `T: Lane`
+/// ([`lane_items`]), so that one body serves one roll rate (`T = f64`) and four (`Lanes`).
+pub fn lane_function(f: &Function, name: &Ident) -> TokenStream {
+    let ids: Vec<Id> = f.outputs.iter().map(|(_, id)| *id).collect();
+    let (stmts, outs) = body(&f.dag, &ids, Values::Lanes);
+    let args = f.args.iter().map(|a| Ident::new(a.name, Span::call_site()));
+    let out = &outs[0];
+    let doc = format!(
+        " The statements of [`{}`](Self::{}), over f64 or four lanes (`T`).",
+        f.name, f.name
+    );
+    quote! {
+        #[doc = #doc]
+        #[inline(always)]
+        fn #name<T: prepared_lanes::Lane>(&self, #(#args: T),*) -> T {
+            #(#stmts)*
+            #out
+        }
+    }
+}
+
+/// The private module `prepared_lanes`: the arithmetic a [`lane_function`] needs, for `f64`
+/// (libm's square root, core's copysign, as [`function`] writes them) and for `Lanes`, four
+/// f64 side by side, lane by lane the same operations: a loop over `Lanes` is what the
+/// compiler turns into packed (SIMD) arithmetic, without `unsafe` or target features.
+pub fn lane_items() -> TokenStream {
+    let ops = [
+        (quote!(Add), quote!(add), quote!(+)),
+        (quote!(Sub), quote!(sub), quote!(-)),
+        (quote!(Mul), quote!(mul), quote!(*)),
+        (quote!(Div), quote!(div), quote!(/)),
+    ];
+    let impls = ops.iter().map(|(tr, f, op)| {
+        quote! {
+            impl #tr for Lanes {
+                type Output = Lanes;
+                #[inline(always)]
+                fn #f(self, b: Lanes) -> Lanes {
+                    let (a, b) = (self.0, b.0);
+                    Lanes([a[0] #op b[0], a[1] #op b[1], a[2] #op b[2], a[3] #op b[3]])
+                }
+            }
+        }
+    });
+    quote! {
+        /// Four roll rates at once for [`Prepared::det_k_into`]: the per-call statements are
+        /// written once, generic over [`Lane`](prepared_lanes::Lane), and each lane of
+        /// `Lanes` computes exactly what `f64` does.
+        mod prepared_lanes {
+            use core::ops::{Add, Div, Mul, Neg, Sub};
+            /// The arithmetic of the per-call statements.
+            pub trait Lane: Copy
+            where
+                Self: Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self>,
+                Self: Div<Output = Self> + Neg<Output = Self>,
+            {
+                /// The same f64 in every lane.
+                fn splat(x: f64) -> Self;
+                /// The square root (IEEE, correctly rounded), lane by lane.
+                fn sqrt(x: Self) -> Self;
+                /// `x` with the sign of `sign`, lane by lane.
+                fn copysign(x: Self, sign: Self) -> Self;
+            }
+            impl Lane for f64 {
+                #[inline(always)]
+                fn splat(x: f64) -> f64 {
+                    x
+                }
+                #[inline(always)]
+                fn sqrt(x: f64) -> f64 {
+                    libm::sqrt(x)
+                }
+                #[inline(always)]
+                fn copysign(x: f64, sign: f64) -> f64 {
+                    x.copysign(sign)
+                }
+            }
+            /// Four f64, one roll rate each.
+            #[derive(Clone, Copy)]
+            pub struct Lanes(pub [f64; 4]);
+            impl Lanes {
+                #[inline(always)]
+                fn map(self, f: impl Fn(f64) -> f64) -> Lanes {
+                    let a = self.0;
+                    Lanes([f(a[0]), f(a[1]), f(a[2]), f(a[3])])
+                }
+            }
+            #(#impls)*
+            impl Neg for Lanes {
+                type Output = Lanes;
+                #[inline(always)]
+                fn neg(self) -> Lanes {
+                    self.map(|x| -x)
+                }
+            }
+            impl Lane for Lanes {
+                #[inline(always)]
+                fn splat(x: f64) -> Lanes {
+                    Lanes([x; 4])
+                }
+                #[inline(always)]
+                fn sqrt(x: Lanes) -> Lanes {
+                    x.map(libm::sqrt)
+                }
+                #[inline(always)]
+                fn copysign(x: Lanes, sign: Lanes) -> Lanes {
+                    let (a, s) = (x.0, sign.0);
+                    Lanes([
+                        a[0].copysign(s[0]),
+                        a[1].copysign(s[1]),
+                        a[2].copysign(s[2]),
+                        a[3].copysign(s[3]),
+                    ])
+                }
+            }
+        }
+    }
+}
+
+/// The signature, doc and attributes of `f` around the given statements and outputs.
+fn signature_and_body(
+    f: &Function,
+    header_doc: &[String],
+    stmts: Vec<TokenStream>,
+    outs: Vec<TokenStream>,
+) -> TokenStream {
     let name = Ident::new(f.name, Span::call_site());
     let mut args = Vec::new();
     if f.takes_self() {

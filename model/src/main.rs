@@ -133,7 +133,7 @@ enum Command {
         /// A range of elevator deflections `A:B:STEP` in degrees (a clearance map).
         #[arg(long, value_name = "A:B:STEP", allow_hyphen_values = true)]
         delta_e_range: Option<String>,
-        /// Monte Carlo samples (exact path).
+        /// Monte Carlo samples (certified route; the exact path where a certificate fails).
         #[arg(long, default_value_t = 1000)]
         samples: usize,
         /// Tolerance on the roll-rate gap, rad/s (the aileron gap is 10 times it, in deg).

@@ -7,7 +7,7 @@
 // It prints the number of checks and exits 1 on any failure.
 // `./a.out --bits FILE` reads records "<aircraft index> <hex bits of each column>",
 // columns alpha, beta, delta_e, delta_r, p, p0, q, r,
-// and writes the 169 results of each record as doubles in host byte order: the C half
+// and writes the 172 results of each record as doubles in host byte order: the C half
 // of the workspace's bit-identity check (tests/tests/c_header.rs).
 
 #include "roll_criterion.h"
@@ -981,16 +981,22 @@ static void outputs_aircraft_a(const double *x, double *o)
     }
     {
         const struct rc_Prepared p = rc_prepared_new(k, x[2], x[3]);
-        double in[3];
-        double r[3];
+        double in[6];
+        double r[6];
         in[0] = x[5];
         in[1] = x[5] * 0.5;
         in[2] = x[5] + 1.0;
-        rc_prepared_det_k_into(&p, in, r, 3);
+        in[3] = x[5] * 0.25;
+        in[4] = x[5] + 0.5;
+        in[5] = x[5] * 1.5;
+        rc_prepared_det_k_into(&p, in, r, 6);
         o[165] = rc_prepared_det_k(&p, x[5]);
         o[166] = r[0];
         o[167] = r[1];
         o[168] = r[2];
+        o[169] = r[3];
+        o[170] = r[4];
+        o[171] = r[5];
     }
 }
 
@@ -1935,26 +1941,32 @@ static void outputs_aircraft_b(const double *x, double *o)
     }
     {
         const struct rc_Prepared p = rc_prepared_new(k, x[2], x[3]);
-        double in[3];
-        double r[3];
+        double in[6];
+        double r[6];
         in[0] = x[5];
         in[1] = x[5] * 0.5;
         in[2] = x[5] + 1.0;
-        rc_prepared_det_k_into(&p, in, r, 3);
+        in[3] = x[5] * 0.25;
+        in[4] = x[5] + 0.5;
+        in[5] = x[5] * 1.5;
+        rc_prepared_det_k_into(&p, in, r, 6);
         o[165] = rc_prepared_det_k(&p, x[5]);
         o[166] = r[0];
         o[167] = r[1];
         o[168] = r[2];
+        o[169] = r[3];
+        o[170] = r[4];
+        o[171] = r[5];
     }
 }
 
-/* The --bits mode: one record per line, 8 columns, 169 outputs. */
+/* The --bits mode: one record per line, 8 columns, 172 outputs. */
 static int bits(const char *path)
 {
     FILE *in = fopen(path, "r");
     unsigned aircraft;
     double x[8];
-    double o[169];
+    double o[172];
     if (!in) {
         perror(path);
         return 2;

@@ -66,12 +66,20 @@ pub fn arg_columns(f: &Function, columns: &[&str]) -> Vec<usize> {
         .collect()
 }
 
-/// How many roll rates the cross-check passes to `det_k_into`: `p0`, `p0 * 0.5`, `p0 + 1.0` of
-/// the record ([`INTO_INPUTS`], the same arithmetic in both languages).
-pub const INTO_LEN: usize = 3;
+/// How many roll rates the cross-check passes to `det_k_into`: six expressions of the record's
+/// `p0` ([`INTO_INPUTS`], the same arithmetic in both languages), so that the Rust slice form
+/// runs both its four-lane loop and its scalar rest against C's scalar loop.
+pub const INTO_LEN: usize = 6;
 
 /// The roll rates of `det_k_into` as expressions of the record's `p0`, in Rust and C alike.
-pub const INTO_INPUTS: [&str; INTO_LEN] = ["p0", "p0 * 0.5", "p0 + 1.0"];
+pub const INTO_INPUTS: [&str; INTO_LEN] = [
+    "p0",
+    "p0 * 0.5",
+    "p0 + 1.0",
+    "p0 * 0.25",
+    "p0 + 0.5",
+    "p0 * 1.5",
+];
 
 /// The labels of the prepared outputs of a record for aircraft `b` (after its calls).
 pub fn prepared_labels(p: &Prepared, b: &Builtin) -> Vec<String> {

@@ -16,7 +16,7 @@ pub const COLUMNS: [&str; 8] = [
 /// The built-in aircraft, by their index in a record.
 pub const AIRCRAFT: [&str; 2] = ["aircraft_a", "aircraft_b"];
 /// What each output is, per aircraft (C names).
-pub const LABELS: [[&str; 169]; 2] = [
+pub const LABELS: [[&str; 172]; 2] = [
     [
         "rc_trim(&rc_aircraft_a_derivatives).v[0].alpha",
         "rc_trim(&rc_aircraft_a_derivatives).v[0].beta",
@@ -187,6 +187,9 @@ pub const LABELS: [[&str; 169]; 2] = [
         "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_a_derivatives))[0]",
         "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_a_derivatives))[1]",
         "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_a_derivatives))[2]",
+        "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_a_derivatives))[3]",
+        "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_a_derivatives))[4]",
+        "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_a_derivatives))[5]",
     ],
     [
         "rc_trim(&rc_aircraft_b_derivatives).v[0].alpha",
@@ -358,10 +361,13 @@ pub const LABELS: [[&str; 169]; 2] = [
         "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_b_derivatives))[0]",
         "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_b_derivatives))[1]",
         "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_b_derivatives))[2]",
+        "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_b_derivatives))[3]",
+        "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_b_derivatives))[4]",
+        "rc_prepared_det_k_into(&rc_prepared_new(&rc_aircraft_b_derivatives))[5]",
     ],
 ];
 /// Every output for the aircraft with index `aircraft`, in record order.
-pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 169] {
+pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 172] {
     match aircraft {
         0 => aircraft_a(x),
         1 => aircraft_b(x),
@@ -369,7 +375,7 @@ pub fn outputs(aircraft: usize, x: &[f64; 8]) -> [f64; 169] {
     }
 }
 /// Every output for Aircraft A, in record order.
-fn aircraft_a(x: &[f64; 8]) -> [f64; 169] {
+fn aircraft_a(x: &[f64; 8]) -> [f64; 172] {
     let k = &rc::aircraft_a::DERIVATIVES;
     let r0 = rc::trim(k, x[5], x[2], x[3]);
     let r1 = rc::zero_sideslip_trim(k, x[5], x[2]);
@@ -403,8 +409,12 @@ fn aircraft_a(x: &[f64; 8]) -> [f64; 169] {
     let r29 = rc::aircraft_a::hopf_omega_squared(x[5], x[2], x[3]);
     let r30 = rc::aircraft_a::hopf_polynomial(x[5], x[2], x[3]);
     let prepared = rc::Prepared::new(k, x[2], x[3]);
-    let mut into = [0.0; 3];
-    prepared.det_k_into(&[x[5], x[5] * 0.5, x[5] + 1.0], &mut into);
+    let mut into = [0.0; 6];
+    prepared
+        .det_k_into(
+            &[x[5], x[5] * 0.5, x[5] + 1.0, x[5] * 0.25, x[5] + 0.5, x[5] * 1.5],
+            &mut into,
+        );
     [
         r0[0].alpha,
         r0[0].beta,
@@ -575,10 +585,13 @@ fn aircraft_a(x: &[f64; 8]) -> [f64; 169] {
         into[0],
         into[1],
         into[2],
+        into[3],
+        into[4],
+        into[5],
     ]
 }
 /// Every output for Aircraft B, in record order.
-fn aircraft_b(x: &[f64; 8]) -> [f64; 169] {
+fn aircraft_b(x: &[f64; 8]) -> [f64; 172] {
     let k = &rc::aircraft_b::DERIVATIVES;
     let r0 = rc::trim(k, x[5], x[2], x[3]);
     let r1 = rc::zero_sideslip_trim(k, x[5], x[2]);
@@ -612,8 +625,12 @@ fn aircraft_b(x: &[f64; 8]) -> [f64; 169] {
     let r29 = rc::aircraft_b::hopf_omega_squared(x[5], x[2], x[3]);
     let r30 = rc::aircraft_b::hopf_polynomial(x[5], x[2], x[3]);
     let prepared = rc::Prepared::new(k, x[2], x[3]);
-    let mut into = [0.0; 3];
-    prepared.det_k_into(&[x[5], x[5] * 0.5, x[5] + 1.0], &mut into);
+    let mut into = [0.0; 6];
+    prepared
+        .det_k_into(
+            &[x[5], x[5] * 0.5, x[5] + 1.0, x[5] * 0.25, x[5] + 0.5, x[5] * 1.5],
+            &mut into,
+        );
     [
         r0[0].alpha,
         r0[0].beta,
@@ -784,5 +801,8 @@ fn aircraft_b(x: &[f64; 8]) -> [f64; 169] {
         into[0],
         into[1],
         into[2],
+        into[3],
+        into[4],
+        into[5],
     ]
 }

@@ -26,8 +26,9 @@
 //! `divergence_biquadratic`, `divergence_roll_rates`, `jump_polynomial`,
 //! `zero_sideslip_jump_polynomial`, `characteristic_coefficients`, `hurwitz_delta4` and
 //! `hopf_omega_squared`, and for an aircraft `hopf_polynomial` (the exact Hopf polynomial of its
-//! data; NaN with aileron yaw); the doc comment of each gives its formula and units. Since the
-//! names are fixed, put each invocation in a module of its own.
+//! data; NaN with aileron yaw), and, parametric, the struct `Prepared` (det K prepared for many
+//! roll rates) with its private module `prepared_lanes`; the doc comment of each gives its
+//! formula and units. Since the names are fixed, put each invocation in a module of its own.
 //!
 //! The functions take square roots through `libm::sqrt`: add `libm = "0.2"` to the
 //! `[dependencies]` of the invoking crate (which may be `#![no_std]`).

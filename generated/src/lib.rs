@@ -26,7 +26,8 @@
 //! generated from the model equations by exact symbolic derivation.
 //!
 //! Every function is straight-line, branch-free f64 arithmetic (square roots through
-//! `libm`): no allocation, no panics, no `unsafe`. The parametric functions take the
+//! `libm`), except the slice form `Prepared::det_k_into`, a loop over its slices whose
+//! body is straight-line: no allocation, no panics, no `unsafe`. The parametric functions take the
 //! aircraft's [`Derivatives`]; the modules [`aircraft_a`] and [`aircraft_b`] hold the
 //! same functions with the data of Table A.1 folded in exactly and rounded once.
 //!
@@ -1642,62 +1643,91 @@ impl Prepared {
     /// The statements of [`det_k`](Self::det_k), over f64 or four lanes (`T`).
     #[inline(always)]
     fn det_k_lanes<T: prepared_lanes::Lane>(&self, p0: T) -> T {
-        let t0 = p0 * (T::splat(self.f19) + p0 * T::splat(self.f20));
-        let t1 = T::splat(self.f18) + p0 * (T::splat(self.f17) + t0);
+        let f0 = T::splat(self.f0);
+        let f1 = T::splat(self.f1);
+        let f2 = T::splat(self.f2);
+        let f3 = T::splat(self.f3);
+        let f4 = T::splat(self.f4);
+        let f5 = T::splat(self.f5);
+        let f6 = T::splat(self.f6);
+        let f7 = T::splat(self.f7);
+        let f8 = T::splat(self.f8);
+        let f9 = T::splat(self.f9);
+        let f10 = T::splat(self.f10);
+        let f11 = T::splat(self.f11);
+        let f12 = T::splat(self.f12);
+        let f13 = T::splat(self.f13);
+        let f14 = T::splat(self.f14);
+        let f15 = T::splat(self.f15);
+        let f16 = T::splat(self.f16);
+        let f17 = T::splat(self.f17);
+        let f18 = T::splat(self.f18);
+        let f19 = T::splat(self.f19);
+        let f20 = T::splat(self.f20);
+        let f21 = T::splat(self.f21);
+        let f22 = T::splat(self.f22);
+        let f23 = T::splat(self.f23);
+        let f24 = T::splat(self.f24);
+        let f25 = T::splat(self.f25);
+        let f26 = T::splat(self.f26);
+        let f27 = T::splat(self.f27);
+        let f28 = T::splat(self.f28);
+        let f29 = T::splat(self.f29);
+        let f30 = T::splat(self.f30);
+        let f31 = T::splat(self.f31);
+        let f32 = T::splat(self.f32);
+        let f33 = T::splat(self.f33);
+        let f34 = T::splat(self.f34);
+        let f35 = T::splat(self.f35);
+        let f36 = T::splat(self.f36);
+        let f37 = T::splat(self.f37);
+        let f38 = T::splat(self.f38);
+        let f39 = T::splat(self.f39);
+        let f40 = T::splat(self.f40);
+        let t0 = p0 * (f19 + p0 * f20);
+        let t1 = f18 + p0 * (f17 + t0);
         let t2 = p0 * p0;
-        let t3 = T::splat(self.f22) * t2;
-        let t4 = T::splat(self.f21) + t3;
-        let t5 = p0 * (T::splat(self.f24) + p0 * (t0 + T::splat(self.f23)))
-            - T::splat(self.f25);
-        let t6 = p0 * (t3 + T::splat(self.f26));
-        let t7 = T::splat(self.f29)
-            + p0
-                * (T::splat(self.f27)
-                    - p0 * (T::splat(self.f28) + p0 * T::splat(self.f16)));
-        let t8 = T::splat(self.f31) - t2 * T::splat(self.f30);
-        let t9 = T::splat(self.f32)
-            + t2 * (T::splat(self.f33) + t2 * T::splat(self.f34));
+        let t3 = f22 * t2;
+        let t4 = f21 + t3;
+        let t5 = p0 * (f24 + p0 * (t0 + f23)) - f25;
+        let t6 = p0 * (t3 + f26);
+        let t7 = f29 + p0 * (f27 - p0 * (f28 + p0 * f16));
+        let t8 = f31 - t2 * f30;
+        let t9 = f32 + t2 * (f33 + t2 * f34);
         let t10 = t9 * t9;
-        let t11 = t10 * (T::splat(self.f35) + p0 * T::splat(self.f3))
-            + T::splat(self.f4) * (t7 * t9) - T::splat(self.f2) * (t5 * t7)
-            + T::splat(self.f5) * (t1 * t9);
-        let t12 = T::splat(self.f6) * t10 + T::splat(self.f4) * (t8 * t9)
-            - T::splat(self.f2) * (t5 * t8 + t6 * t7) + T::splat(self.f5) * (t4 * t9);
+        let t11 = t10 * (f35 + p0 * f3) + f4 * (t7 * t9) - f2 * (t5 * t7)
+            + f5 * (t1 * t9);
+        let t12 = f6 * t10 + f4 * (t8 * t9) - f2 * (t5 * t8 + t6 * t7) + f5 * (t4 * t9);
         let t13 = t12
             + T::copysign(
-                T::sqrt(t12 * t12 + T::splat(self.f2) * (t6 * t8) * t11 * T::splat(4.0)),
+                T::sqrt(t12 * t12 + f2 * (t6 * t8) * t11 * T::splat(4.0)),
                 t12,
             );
         let t14 = t11 * T::splat(2.0);
-        let t15 = (T::splat(self.f11)
-            - p0 * (T::splat(self.f13) + p0 * T::splat(self.f14))) * t13
-            + p0 * T::splat(self.f15) * t14;
+        let t15 = (f11 - p0 * (f13 + p0 * f14)) * t13 + p0 * f15 * t14;
         let t16 = t1 * t13 - t4 * t14;
         let t17 = t5 * t13 - t6 * t14;
         let t18 = t7 * t13 - t8 * t14;
         let t19 = t9 * t13;
-        let t20 = T::splat(self.f0) * t18 + T::splat(self.f7) * t16
-            + t15 * (p0 * T::splat(self.f0));
-        let t21 = T::splat(self.f8) * t19 - T::splat(self.f1) * t17
-            - t16 * (p0 * T::splat(self.f1)) + T::splat(self.f9) * t15;
-        let t22 = p0 * T::splat(self.f2);
-        let t23 = (t19 * (p0 * T::splat(self.f4)) + t18 * T::splat(self.f36) - t17 * t22)
-            * (t21 * (p0 * T::splat(self.f12))
-                - t20 * (T::splat(self.f10) - T::splat(self.f1) * t2));
+        let t20 = f0 * t18 + f7 * t16 + t15 * (p0 * f0);
+        let t21 = f8 * t19 - f1 * t17 - t16 * (p0 * f1) + f9 * t15;
+        let t22 = p0 * f2;
+        let t23 = (t19 * (p0 * f4) + t18 * f36 - t17 * t22)
+            * (t21 * (p0 * f12) - t20 * (f10 - f1 * t2));
         let t24 = t23
-            + (t19 * T::splat(self.f37) - t18 * t22 - t17 * T::splat(self.f38))
-                * (t21 * (T::splat(self.f39) - T::splat(self.f0) * t2)
-                    + t20 * (p0 * T::splat(self.f40)));
+            + (t19 * f37 - t18 * t22 - t17 * f38)
+                * (t21 * (f39 - f0 * t2) + t20 * (p0 * f40));
         t9
             - t24
-                / (T::splat(self.f3) * (t19 * t19) - T::splat(self.f2) * (t16 * t18)
-                    + T::splat(self.f4) * (t15 * t19) - T::splat(self.f2) * (t15 * t17))
+                / (f3 * (t19 * t19) - f2 * (t16 * t18) + f4 * (t15 * t19)
+                    - f2 * (t15 * t17))
     }
     /// det K at each roll rate of `p0`, written to `out`: element i of `out` is
     /// `self.det_k(p0[i])` for i below the shorter length; the rest of `out` is not touched.
     /// No allocation, no panic. Four roll rates at a time: the statements of `det_k` over four
     /// lanes, which the compiler turns into packed (SIMD) arithmetic; each lane is the same
-    /// operations in the same order as `det_k`, so the results are bit for bit `det_k`'s.
+    /// operations in the same order as `det_k`, so the results are bit for bit `det_k`'s (NaN
+    /// where `det_k` is NaN; IEEE leaves a NaN's sign and payload open).
     #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
     #[inline]
     pub fn det_k_into(&self, p0: &[f64], out: &mut [f64]) {
@@ -1715,11 +1745,12 @@ impl Prepared {
 }
 /// Four roll rates at once for [`Prepared::det_k_into`]: the per-call statements are
 /// written once, generic over [`Lane`](prepared_lanes::Lane), and each lane of
-/// `Lanes` computes exactly what `f64` does.
+/// `Lanes` computes exactly what `f64` does (only arithmetic on array elements at
+/// constant indices: no branch, no closure, no panic).
 mod prepared_lanes {
     use core::ops::{Add, Div, Mul, Neg, Sub};
     /// The arithmetic of the per-call statements.
-    pub trait Lane: Copy
+    pub(super) trait Lane: Copy
     where
         Self: Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self>,
         Self: Div<Output = Self> + Neg<Output = Self>,
@@ -1747,51 +1778,60 @@ mod prepared_lanes {
     }
     /// Four f64, one roll rate each.
     #[derive(Clone, Copy)]
-    pub struct Lanes(pub [f64; 4]);
-    impl Lanes {
-        #[inline(always)]
-        fn map(self, f: impl Fn(f64) -> f64) -> Lanes {
-            let a = self.0;
-            Lanes([f(a[0]), f(a[1]), f(a[2]), f(a[3])])
-        }
-    }
+    pub(super) struct Lanes(pub(super) [f64; 4]);
     impl Add for Lanes {
         type Output = Lanes;
         #[inline(always)]
         fn add(self, b: Lanes) -> Lanes {
-            let (a, b) = (self.0, b.0);
-            Lanes([a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]])
+            Lanes([
+                self.0[0] + b.0[0],
+                self.0[1] + b.0[1],
+                self.0[2] + b.0[2],
+                self.0[3] + b.0[3],
+            ])
         }
     }
     impl Sub for Lanes {
         type Output = Lanes;
         #[inline(always)]
         fn sub(self, b: Lanes) -> Lanes {
-            let (a, b) = (self.0, b.0);
-            Lanes([a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] - b[3]])
+            Lanes([
+                self.0[0] - b.0[0],
+                self.0[1] - b.0[1],
+                self.0[2] - b.0[2],
+                self.0[3] - b.0[3],
+            ])
         }
     }
     impl Mul for Lanes {
         type Output = Lanes;
         #[inline(always)]
         fn mul(self, b: Lanes) -> Lanes {
-            let (a, b) = (self.0, b.0);
-            Lanes([a[0] * b[0], a[1] * b[1], a[2] * b[2], a[3] * b[3]])
+            Lanes([
+                self.0[0] * b.0[0],
+                self.0[1] * b.0[1],
+                self.0[2] * b.0[2],
+                self.0[3] * b.0[3],
+            ])
         }
     }
     impl Div for Lanes {
         type Output = Lanes;
         #[inline(always)]
         fn div(self, b: Lanes) -> Lanes {
-            let (a, b) = (self.0, b.0);
-            Lanes([a[0] / b[0], a[1] / b[1], a[2] / b[2], a[3] / b[3]])
+            Lanes([
+                self.0[0] / b.0[0],
+                self.0[1] / b.0[1],
+                self.0[2] / b.0[2],
+                self.0[3] / b.0[3],
+            ])
         }
     }
     impl Neg for Lanes {
         type Output = Lanes;
         #[inline(always)]
         fn neg(self) -> Lanes {
-            self.map(|x| -x)
+            Lanes([-self.0[0], -self.0[1], -self.0[2], -self.0[3]])
         }
     }
     impl Lane for Lanes {
@@ -1801,16 +1841,20 @@ mod prepared_lanes {
         }
         #[inline(always)]
         fn sqrt(x: Lanes) -> Lanes {
-            x.map(libm::sqrt)
+            Lanes([
+                libm::sqrt(x.0[0]),
+                libm::sqrt(x.0[1]),
+                libm::sqrt(x.0[2]),
+                libm::sqrt(x.0[3]),
+            ])
         }
         #[inline(always)]
         fn copysign(x: Lanes, sign: Lanes) -> Lanes {
-            let (a, s) = (x.0, sign.0);
             Lanes([
-                a[0].copysign(s[0]),
-                a[1].copysign(s[1]),
-                a[2].copysign(s[2]),
-                a[3].copysign(s[3]),
+                x.0[0].copysign(sign.0[0]),
+                x.0[1].copysign(sign.0[1]),
+                x.0[2].copysign(sign.0[2]),
+                x.0[3].copysign(sign.0[3]),
             ])
         }
     }

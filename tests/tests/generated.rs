@@ -35,10 +35,33 @@ fn generated_files_are_fresh() {
     assert_eq!(outputs, model::emit::generate().unwrap());
 }
 
-/// Fails on anything but straight-line arithmetic in a function body.
+/// Fails on anything but straight-line arithmetic in a function body. `Prepared`'s slice form
+/// and its four lanes are held to their exact intended shape.
 struct StraightLine {
     violations: Vec<String>,
     fn_name: String,
+    /// Inside `mod prepared_lanes`: array elements at constant indices 0 to 3 and the lanes
+    /// constructor are allowed there (and nowhere else).
+    in_lanes: bool,
+}
+
+impl StraightLine {
+    fn new() -> StraightLine {
+        StraightLine {
+            violations: vec![],
+            fn_name: String::new(),
+            in_lanes: false,
+        }
+    }
+
+    /// Requires `f`'s body to be exactly `want`.
+    fn exactly(&mut self, f: &syn::ImplItemFn, want: syn::Block, what: &str) {
+        let text = |b: &syn::Block| quote::ToTokens::to_token_stream(b).to_string();
+        if text(&f.block) != text(&want) {
+            self.violations
+                .push(format!("{}: not {what}", self.fn_name));
+        }
+    }
 }
 
 impl<'ast> Visit<'ast> for StraightLine {
@@ -47,24 +70,41 @@ impl<'ast> Visit<'ast> for StraightLine {
         syn::visit::visit_item_fn(self, f);
     }
 
+    fn visit_item_mod(&mut self, m: &'ast syn::ItemMod) {
+        self.in_lanes = m.ident == "prepared_lanes";
+        syn::visit::visit_item_mod(self, m);
+        self.in_lanes = false;
+    }
+
     fn visit_impl_item_fn(&mut self, f: &'ast syn::ImplItemFn) {
         self.fn_name = f.sig.ident.to_string();
-        if self.fn_name == "det_k_into" {
-            // The slice form: one loop over the shorter slice whose body is the straight-line
-            // det_k; exactly this, nothing else.
-            let want: syn::Block = syn::parse_quote!({
-                for (o, p) in core::iter::zip(out, p0) {
-                    *o = self.det_k(*p);
-                }
-            });
-            let text = |b: &syn::Block| quote::ToTokens::to_token_stream(b).to_string();
-            if text(&f.block) != text(&want) {
-                self.violations
-                    .push("det_k_into: not the one-loop slice form".into());
-            }
-            return;
+        match self.fn_name.as_str() {
+            // The slice form: the shorter length, four roll rates at a time through the
+            // statements of det_k over lanes, the rest through det_k; exactly this.
+            "det_k_into" => self.exactly(
+                f,
+                syn::parse_quote!({
+                    let n = core::cmp::min(p0.len(), out.len());
+                    let (p0, out) = (p0.split_at(n).0, out.split_at_mut(n).0);
+                    let (mut o4, mut p4) = (out.chunks_exact_mut(4), p0.chunks_exact(4));
+                    for (o, p) in core::iter::zip(&mut o4, &mut p4) {
+                        let lanes = prepared_lanes::Lanes([p[0], p[1], p[2], p[3]]);
+                        o.copy_from_slice(&self.det_k_lanes(lanes).0);
+                    }
+                    for (o, p) in core::iter::zip(o4.into_remainder(), p4.remainder()) {
+                        *o = self.det_k(*p);
+                    }
+                }),
+                "the four-lane slice form",
+            ),
+            // det K of one roll rate: the lanes statements with f64 for the lanes.
+            "det_k" if f.sig.inputs.len() == 2 => self.exactly(
+                f,
+                syn::parse_quote!({ self.det_k_lanes(p0) }),
+                "det_k_lanes",
+            ),
+            _ => syn::visit::visit_impl_item_fn(self, f),
         }
-        syn::visit::visit_impl_item_fn(self, f);
     }
 
     fn visit_expr(&mut self, e: &'ast syn::Expr) {
@@ -80,10 +120,22 @@ impl<'ast> Visit<'ast> for StraightLine {
                     Path(p) => quote_path(&p.path),
                     _ => String::new(),
                 };
-                path != "libm::sqrt"
+                // libm's square root; in the generic statements the lanes' arithmetic
+                // (`T::splat`, `T::sqrt`, `T::copysign`, lane by lane the f64 operations).
+                let lanes = ["T::splat", "T::sqrt", "T::copysign"];
+                !(path == "libm::sqrt"
+                    || lanes.contains(&path.as_str())
+                    || (self.in_lanes && path == "Lanes"))
             }
             // core's f64::copysign, exact and branch-free.
             MethodCall(m) => m.method != "copysign" || m.args.len() != 1,
+            // `x.0[i]` of the four lanes, at a constant index below 4: no bounds check left.
+            Index(i) if self.in_lanes => !matches!(
+                &*i.index,
+                Lit(syn::ExprLit { lit: syn::Lit::Int(n), .. })
+                    if n.base10_parse::<usize>().is_ok_and(|n| n < 4)
+            ),
+            Repeat(_) => !self.in_lanes,
             Lit(_) | Paren(_) | Path(_) | Field(_) | Struct(_) | Array(_) | Block(_) => false,
             other => {
                 self.violations
@@ -139,10 +191,7 @@ fn generated_functions_are_straight_line_and_branch_free() {
         let path = entry.unwrap().path();
         let text = std::fs::read_to_string(&path).unwrap();
         let file = syn::parse_file(&text).unwrap();
-        let mut v = StraightLine {
-            violations: vec![],
-            fn_name: String::new(),
-        };
+        let mut v = StraightLine::new();
         v.visit_file(&file);
         assert!(
             v.violations.is_empty(),
@@ -162,12 +211,23 @@ fn generated_functions_are_straight_line_and_branch_free() {
 fn the_branch_check_catches_a_branch() {
     // The checker must be able to fail.
     let file = syn::parse_file("fn f(x: f64) -> f64 { if x > 0.0 { x } else { -x } }").unwrap();
-    let mut v = StraightLine {
-        violations: vec![],
-        fn_name: String::new(),
-    };
+    let mut v = StraightLine::new();
     v.visit_file(&file);
     assert!(!v.violations.is_empty());
+}
+
+#[test]
+fn the_lanes_check_catches_an_index_past_the_fourth_lane_and_indexing_elsewhere() {
+    let check = |src: &str| {
+        let mut v = StraightLine::new();
+        v.visit_file(&syn::parse_file(src).unwrap());
+        v.violations
+    };
+    let lanes = |i: &str| format!("mod prepared_lanes {{ fn f(x: [f64; 4]) -> f64 {{ x[{i}] }} }}");
+    assert!(check(&lanes("3")).is_empty());
+    assert!(!check(&lanes("4")).is_empty());
+    assert!(!check(&lanes("i")).is_empty());
+    assert!(!check("fn f(x: [f64; 4]) -> f64 { x[0] }").is_empty());
 }
 
 #[test]
@@ -454,8 +514,12 @@ fn generated_expressions_are_within_the_width_cap() {
                 syn::Item::Fn(f) => body_expressions(&f.block, &mut exprs),
                 syn::Item::Impl(i) => {
                     for it in &i.items {
+                        // The slice form's loops are no formula: the straight-line check
+                        // pins their exact text.
                         if let syn::ImplItem::Fn(f) = it {
-                            body_expressions(&f.block, &mut exprs);
+                            if f.sig.ident != "det_k_into" {
+                                body_expressions(&f.block, &mut exprs);
+                            }
                         }
                     }
                 }

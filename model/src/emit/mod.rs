@@ -202,7 +202,8 @@ pub fn prepared() -> Prepared {
 }
 
 /// `struct Prepared` and its `impl`: `new`, `det_k` and the slice form `det_k_into`, each with
-/// `attrs` (the no-panic proof).
+/// `attrs` (the no-panic proof), the private generic `det_k_lanes` that holds `det_k`'s
+/// statements once for both, and the private module `prepared_lanes` of its four-lane type.
 fn prepared_items(p: &Prepared, attrs: &TokenStream) -> TokenStream {
     let fields = p
         .new
@@ -275,7 +276,9 @@ pub fn det_k_into_doc() -> Vec<String> {
             .into(),
         "lanes, which the compiler turns into packed (SIMD) arithmetic; each lane is the same"
             .into(),
-        "operations in the same order as `det_k`, so the results are bit for bit `det_k`'s.".into(),
+        "operations in the same order as `det_k`, so the results are bit for bit `det_k`'s (NaN"
+            .into(),
+        "where `det_k` is NaN; IEEE leaves a NaN's sign and payload open).".into(),
     ]
 }
 
@@ -399,7 +402,8 @@ pub fn generate() -> Result<Vec<Output>, EmitError> {
         //! generated from the model equations by exact symbolic derivation.
         //!
         //! Every function is straight-line, branch-free f64 arithmetic (square roots through
-        //! `libm`): no allocation, no panics, no `unsafe`. The parametric functions take the
+        //! `libm`), except the slice form `Prepared::det_k_into`, a loop over its slices whose
+        //! body is straight-line: no allocation, no panics, no `unsafe`. The parametric functions take the
         //! aircraft's [`Derivatives`]; the modules [`aircraft_a`] and [`aircraft_b`] hold the
         //! same functions with the data of Table A.1 folded in exactly and rounded once.
         //!

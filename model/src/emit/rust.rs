@@ -39,13 +39,15 @@ pub fn float_literal(q: &Q) -> TokenStream {
 /// The type of the values of a body: `f64`, or the lanes type `T` of a generic body (the
 /// per-call program of `Prepared`, evaluated for one roll rate or for four at once). Either way
 /// the statements are the same operations in the same order, so each lane of a generic body
-/// equals the f64 body bit for bit.
+/// equals the f64 body bit for bit (a NaN lane is NaN there too; IEEE leaves a NaN's sign and
+/// payload open).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Values {
     /// Plain f64.
     F64,
-    /// `T: Lane` (see [`lane_items`]): inputs through `self` are f64 fields, made lanes by
-    /// `T::splat`; the other inputs are `T`.
+    /// `T: Lane` (see [`lane_items`]): an input through `self` (an f64 field `self.fN`) is
+    /// spelled `fN`, bound once at the top of the body to `T::splat(self.fN)`; the other inputs
+    /// are `T`, constants are splat where used.
     Lanes,
 }
 
@@ -56,7 +58,7 @@ fn input_tokens(name: &str, values: Values) -> TokenStream {
             let f = Ident::new(field, Span::call_site());
             match values {
                 Values::F64 => quote!(#b.#f),
-                Values::Lanes => quote!(T::splat(#b.#f)),
+                Values::Lanes => quote!(#f),
             }
         }
         None => {
@@ -178,6 +180,10 @@ pub fn delegating_function(f: &Function, header_doc: &[String], lanes: &Ident) -
 pub fn lane_function(f: &Function, name: &Ident) -> TokenStream {
     let ids: Vec<Id> = f.outputs.iter().map(|(_, id)| *id).collect();
     let (stmts, outs) = body(&f.dag, &ids, Values::Lanes);
+    let fields = f.dag.inputs().iter().filter_map(|i| {
+        let field = Ident::new(i.strip_prefix("self.")?, Span::call_site());
+        Some(quote!(let #field = T::splat(self.#field);))
+    });
     let args = f.args.iter().map(|a| Ident::new(a.name, Span::call_site()));
     let out = &outs[0];
     let doc = format!(
@@ -188,6 +194,7 @@ pub fn lane_function(f: &Function, name: &Ident) -> TokenStream {
         #[doc = #doc]
         #[inline(always)]
         fn #name<T: prepared_lanes::Lane>(&self, #(#args: T),*) -> T {
+            #(#fields)*
             #(#stmts)*
             #out
         }
@@ -211,8 +218,12 @@ pub fn lane_items() -> TokenStream {
                 type Output = Lanes;
                 #[inline(always)]
                 fn #f(self, b: Lanes) -> Lanes {
-                    let (a, b) = (self.0, b.0);
-                    Lanes([a[0] #op b[0], a[1] #op b[1], a[2] #op b[2], a[3] #op b[3]])
+                    Lanes([
+                        self.0[0] #op b.0[0],
+                        self.0[1] #op b.0[1],
+                        self.0[2] #op b.0[2],
+                        self.0[3] #op b.0[3],
+                    ])
                 }
             }
         }
@@ -220,11 +231,12 @@ pub fn lane_items() -> TokenStream {
     quote! {
         /// Four roll rates at once for [`Prepared::det_k_into`]: the per-call statements are
         /// written once, generic over [`Lane`](prepared_lanes::Lane), and each lane of
-        /// `Lanes` computes exactly what `f64` does.
+        /// `Lanes` computes exactly what `f64` does (only arithmetic on array elements at
+        /// constant indices: no branch, no closure, no panic).
         mod prepared_lanes {
             use core::ops::{Add, Div, Mul, Neg, Sub};
             /// The arithmetic of the per-call statements.
-            pub trait Lane: Copy
+            pub(super) trait Lane: Copy
             where
                 Self: Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self>,
                 Self: Div<Output = Self> + Neg<Output = Self>,
@@ -252,20 +264,13 @@ pub fn lane_items() -> TokenStream {
             }
             /// Four f64, one roll rate each.
             #[derive(Clone, Copy)]
-            pub struct Lanes(pub [f64; 4]);
-            impl Lanes {
-                #[inline(always)]
-                fn map(self, f: impl Fn(f64) -> f64) -> Lanes {
-                    let a = self.0;
-                    Lanes([f(a[0]), f(a[1]), f(a[2]), f(a[3])])
-                }
-            }
+            pub(super) struct Lanes(pub(super) [f64; 4]);
             #(#impls)*
             impl Neg for Lanes {
                 type Output = Lanes;
                 #[inline(always)]
                 fn neg(self) -> Lanes {
-                    self.map(|x| -x)
+                    Lanes([-self.0[0], -self.0[1], -self.0[2], -self.0[3]])
                 }
             }
             impl Lane for Lanes {
@@ -275,16 +280,20 @@ pub fn lane_items() -> TokenStream {
                 }
                 #[inline(always)]
                 fn sqrt(x: Lanes) -> Lanes {
-                    x.map(libm::sqrt)
+                    Lanes([
+                        libm::sqrt(x.0[0]),
+                        libm::sqrt(x.0[1]),
+                        libm::sqrt(x.0[2]),
+                        libm::sqrt(x.0[3]),
+                    ])
                 }
                 #[inline(always)]
                 fn copysign(x: Lanes, sign: Lanes) -> Lanes {
-                    let (a, s) = (x.0, sign.0);
                     Lanes([
-                        a[0].copysign(s[0]),
-                        a[1].copysign(s[1]),
-                        a[2].copysign(s[2]),
-                        a[3].copysign(s[3]),
+                        x.0[0].copysign(sign.0[0]),
+                        x.0[1].copysign(sign.0[1]),
+                        x.0[2].copysign(sign.0[2]),
+                        x.0[3].copysign(sign.0[3]),
                     ])
                 }
             }

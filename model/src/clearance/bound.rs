@@ -37,6 +37,7 @@
 //! assert_eq!(b.certify(&l_p, I::new(1.6, 1.8)), Err(Failure::Jump));
 //! ```
 
+use super::Coordinate;
 use crate::aircraft::{Aircraft, Param, Uncertain};
 use crate::certified::dense::horner;
 use crate::certified::num::{Dual, Num, GRADIENT};
@@ -54,16 +55,6 @@ pub enum Failure {
     Turn,
     /// J may vanish: a jump may lie in the slab.
     Jump,
-}
-
-/// How one coordinate of the box enters the data.
-#[derive(Clone, Debug)]
-enum Coordinate {
-    /// The value of a parameter.
-    Param(Param),
-    /// A coefficient of a nondimensional file: each parameter `p` it moves is its fixed value
-    /// plus `a_p (x - nominal)` (enclosures of the exact `a_p` and nominal).
-    Coefficient { nominal: I, moves: Vec<(Param, I)> },
 }
 
 /// The criterion of a box of aircraft, ready for enclosures over slabs of roll rates.
@@ -123,16 +114,7 @@ impl BoxPolys {
     /// parameter's largest magnitude over the box. Its fixed part is widened by four of those,
     /// so that the proof covers both.
     pub fn of_box(aircraft: &Aircraft, params: &[Uncertain], delta_e_rad: f64) -> BoxPolys {
-        let coordinates: Vec<Coordinate> = params
-            .iter()
-            .map(|u| match &u.coefficient {
-                None => Coordinate::Param(u.param),
-                Some(c) => Coordinate::Coefficient {
-                    nominal: I::from_q(&c.nominal),
-                    moves: c.moves.iter().map(|(p, a)| (*p, I::from_q(a))).collect(),
-                },
-            })
-            .collect();
+        let coordinates: Vec<Coordinate> = params.iter().map(Coordinate::of).collect();
         let mut b = BoxPolys::with(aircraft, coordinates, delta_e_rad);
         let mut largest = [0.0f64; 18];
         for u in params {
@@ -169,13 +151,7 @@ impl BoxPolys {
             }),
             Coordinate::Coefficient { .. } => true,
         }));
-        let moved: Vec<Param> = coordinates
-            .iter()
-            .flat_map(|c| match c {
-                Coordinate::Param(p) => vec![*p],
-                Coordinate::Coefficient { moves, .. } => moves.iter().map(|(p, _)| *p).collect(),
-            })
-            .collect();
+        let moved: Vec<Param> = coordinates.iter().flat_map(Coordinate::params).collect();
         BoxPolys {
             fixed: Values::data(aircraft),
             delta_e_rad,

@@ -153,6 +153,38 @@ pub fn critical(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Option<JumpPoin
     Ok(analyze_with(aircraft, delta_e_rad, false)?.critical)
 }
 
+/// How one coordinate of a box enters the data, enclosed: what the branch and bound
+/// ([`bound::BoxPolys`]) and the Monte Carlo ([`monte_carlo::run`]) both build on.
+#[derive(Clone, Debug)]
+pub(crate) enum Coordinate {
+    /// The value of a parameter.
+    Param(Param),
+    /// A coefficient of a nondimensional file: each parameter `p` it moves is its fixed value
+    /// plus `a_p (x - nominal)` (enclosures of the exact `a_p` and nominal).
+    Coefficient { nominal: I, moves: Vec<(Param, I)> },
+}
+
+impl Coordinate {
+    /// The coordinate of an uncertain entry.
+    pub(crate) fn of(u: &Uncertain) -> Coordinate {
+        match &u.coefficient {
+            None => Coordinate::Param(u.param),
+            Some(c) => Coordinate::Coefficient {
+                nominal: I::from_q(&c.nominal),
+                moves: c.moves.iter().map(|(p, a)| (*p, I::from_q(a))).collect(),
+            },
+        }
+    }
+
+    /// The parameters it moves.
+    pub(crate) fn params(&self) -> Vec<Param> {
+        match self {
+            Coordinate::Param(p) => vec![*p],
+            Coordinate::Coefficient { moves, .. } => moves.iter().map(|(p, _)| *p).collect(),
+        }
+    }
+}
+
 /// The box of an aircraft: its uncertain parameters of nonzero width with their exact ends, and
 /// the aircraft with every zero-width parameter set to its value.
 pub fn split_box(aircraft: &Aircraft) -> (Aircraft, Vec<Uncertain>) {

@@ -14,22 +14,13 @@
 //! assert!(mc.values.iter().all(|s| s.p0 == mc.min_p0 && s.p0.is_some()));
 //! ```
 
-use super::{clamp_exact, critical, split_box, Rng};
+use super::{clamp_exact, critical, split_box, Coordinate, Rng};
 use crate::aircraft::{Aircraft, Param};
 use crate::analysis::fast;
 use crate::certified::{Sampler, Values};
 use crate::interval::I;
 use rayon::prelude::*;
 use serde::Serialize;
-
-/// How a coordinate of the box enters the sampler's varying parameters (by their index).
-enum Enters {
-    /// It is the value of one.
-    Value(usize),
-    /// A coefficient: each parameter moves by a (x - nominal), with enclosures of the
-    /// coefficient's nominal value and of each a.
-    Moves(I, Vec<(usize, I)>),
-}
 
 /// One sample: its critical jump (None when its primary branch has none).
 #[derive(Clone, Debug, Serialize, PartialEq)]
@@ -91,29 +82,23 @@ pub fn run(
         })
         .collect();
     let bound = crate::analysis::aileron_range(aircraft);
-    // The parameters the coordinates move, each once, and how: a coordinate is a parameter's
-    // value, or a coefficient moving parameters by a_p (x - nominal) (enclosed).
+    // The parameters the coordinates move, each once (the sampler's varying data), and for
+    // each coordinate the indices of those it moves.
+    let coordinates: Vec<Coordinate> = params.iter().map(Coordinate::of).collect();
     let mut varying: Vec<Param> = Vec::new();
-    let moves: Vec<Enters> = params
+    let slots: Vec<Vec<usize>> = coordinates
         .iter()
-        .map(|u| {
-            let mut slot = |p: Param| match varying.iter().position(|v| *v == p) {
-                Some(i) => i,
-                None => {
-                    varying.push(p);
-                    varying.len() - 1
-                }
-            };
-            match &u.coefficient {
-                None => Enters::Value(slot(u.param)),
-                Some(c) => Enters::Moves(
-                    I::from_q(&c.nominal),
-                    c.moves
-                        .iter()
-                        .map(|(p, a)| (slot(*p), I::from_q(a)))
-                        .collect(),
-                ),
-            }
+        .map(|c| {
+            c.params()
+                .into_iter()
+                .map(|p| match varying.iter().position(|v| *v == p) {
+                    Some(i) => i,
+                    None => {
+                        varying.push(p);
+                        varying.len() - 1
+                    }
+                })
+                .collect()
         })
         .collect();
     let sampler = Sampler::new(fixed, &varying, delta_e_rad, 0.0);
@@ -121,16 +106,21 @@ pub fn run(
         // A draw strictly inside the exact ends is its own exact value; one at an end is
         // clamped to the exact end, as the exact path's sample.
         let mut data: Vec<I> = varying.iter().map(|p| fixed[p.index()]).collect();
-        for (((u, xi), (_, lo, hi)), how) in params.iter().zip(x).zip(&ends).zip(&moves) {
+        let how = coordinates.iter().zip(&slots);
+        for (((u, xi), (_, lo, hi)), (how, slots)) in params.iter().zip(x).zip(&ends).zip(how) {
             let xi = if *xi > lo.hi && *xi < hi.lo {
                 I::point(*xi)
             } else {
                 I::from_q(&clamp_exact(u, *xi))
             };
             match how {
-                Enters::Value(i) => data[*i] = xi,
-                Enters::Moves(nominal, moved) => {
-                    for (i, a) in moved {
+                Coordinate::Param(_) => {
+                    for i in slots {
+                        data[*i] = xi;
+                    }
+                }
+                Coordinate::Coefficient { nominal, moves } => {
+                    for ((_, a), i) in moves.iter().zip(slots) {
                         data[*i] = data[*i] + *a * (xi - *nominal);
                     }
                 }

@@ -117,13 +117,15 @@ impl BoxPolys {
         let coordinates: Vec<Coordinate> = params.iter().map(Coordinate::of).collect();
         let mut b = BoxPolys::with(aircraft, coordinates, delta_e_rad);
         let mut largest = [0.0f64; 18];
-        for u in params {
-            let Some(c) = &u.coefficient else { continue };
-            let reach = (I::from_q(&u.lo) - I::from_q(&c.nominal))
+        for (u, c) in params.iter().zip(&b.coordinates) {
+            let Coordinate::Coefficient { nominal, moves } = c else {
+                continue;
+            };
+            let reach = (I::from_q(&u.lo) - *nominal)
                 .mag()
-                .max((I::from_q(&u.hi) - I::from_q(&c.nominal)).mag());
-            for (p, a) in &c.moves {
-                largest[p.index()] += I::from_q(a).mag() * reach;
+                .max((I::from_q(&u.hi) - *nominal).mag());
+            for (p, a) in moves {
+                largest[p.index()] += a.mag() * reach;
             }
         }
         for (i, extra) in largest.iter().enumerate() {

@@ -6,14 +6,16 @@
 //!
 //! 1. `(0, inf)` is split at a power of two `s` where the value has a certain sign: `(0, s]` is
 //!    mapped to `t in (0, 1]` by `x = s t`, `(s, inf)` by `x = s / t` (the reversed polynomial).
-//! 2. On `[0, 1]` the Bernstein coefficients are enclosed and bisected by de Casteljau's
-//!    algorithm (interval additions and halvings). Descartes' rule for the Bernstein form: when
+//! 2. On `[0, 1]` the Bernstein coefficients are enclosed (in intervals) and bisected by de
+//!    Casteljau's algorithm, run in f64 on their midpoints with a running bound on its rounding
+//!    error carried in their radii (`Node::split`). Descartes' rule for the Bernstein form: when
 //!    every coefficient has a certain sign, 0 sign changes prove no root and 1 proves exactly
 //!    one (simple) root in the open interval. Any coefficient whose sign is uncertain makes the
 //!    node undecided; it is bisected, up to a depth and node budget.
 //! 3. Each isolated root is refined on the original polynomial: Newton steps in f64 propose a
-//!    point, and a bracket around it is certified by the signs of the interval values at its
-//!    ends, starting from the enclosure's half-width over the slope (the narrowest bracket the
+//!    point, and a bracket around it is certified by the signs of enclosures of the values at
+//!    its ends ([`PointEnclosure`]: Horner in f64 with a running error bound), starting from
+//!    the enclosure's half-width over the slope (the narrowest bracket the
 //!    enclosure can possibly certify) and doubling. The result is a bracket `[lo, hi]` with
 //!    certified opposite signs at its ends and exactly one root inside, within a factor two of
 //!    that narrowest width: a few ulps for a well-conditioned root, wider by the root's
@@ -36,8 +38,9 @@
 //! assert!(r[0].relative_width() <= 1e-12);
 //! ```
 
-use super::dense::IPoly;
+use super::dense::{IPoly, PointEnclosure};
 use crate::interval::{next_down, next_up, I};
+use crate::roots::F64Poly;
 
 /// A certified bracket of a simple real root: exactly one root lies in `[lo, hi]` (strictly
 /// inside unless `lo == hi`), and `value` is a double in the bracket.
@@ -111,9 +114,10 @@ pub fn positive_roots_by(
     } else {
         isolate_positive(c)?
     };
+    let local = Local::of(&p, 0.0);
     let brackets = isolating
         .into_iter()
-        .map(|(lo, hi)| refine(&p, value, target, lo, hi))
+        .map(|(lo, hi)| refine_local(&local, value, target, lo, hi))
         .collect::<Result<Vec<_>, _>>()?;
     sorted_disjoint(brackets)
 }
@@ -153,6 +157,7 @@ pub fn real_roots_outside(
         value.and_then(|v| c.intersect(v(x))).unwrap_or(c)
     };
     let (at_lo, at_hi) = (at(lo), at(hi));
+    let local = Local::of(p, 0.0);
     let mut out: Vec<Bracket> = positive_roots_by(&p.mirror(), None, target)?
         .into_iter()
         .rev()
@@ -172,7 +177,7 @@ pub fn real_roots_outside(
     // enclosure of those decides their signs.
     for (tl, tr) in isolate_unit_ends(&below, MAX_NODES, (None, Some(at_lo)))? {
         let (a, b) = (next_down(lo * tl).max(0.0), next_up(lo * tr).min(lo));
-        out.push(refine(p, value, target, a, b)?);
+        out.push(refine_local(&local, value, target, a, b)?);
     }
     let mut above = p.shift(I::point(hi)).0;
     if let Some(c0) = above.first_mut() {
@@ -180,7 +185,7 @@ pub fn real_roots_outside(
     }
     for (yl, yr) in isolate_positive(&above)? {
         let (a, b) = (next_down(hi + yl).max(hi), next_up(hi + yr));
-        out.push(refine(p, value, target, a, b)?);
+        out.push(refine_local(&local, value, target, a, b)?);
     }
     sorted_disjoint(out)
 }
@@ -506,27 +511,112 @@ fn variations(b: &[I]) -> Option<usize> {
     Some(v)
 }
 
-/// de Casteljau subdivision of Bernstein coefficients at `t`: (left, right).
-fn split(b: &[I], t: f64) -> (Vec<I>, Vec<I>) {
-    let n = b.len() - 1;
-    let mut w = b.to_vec();
-    let mut left = Vec::with_capacity(n + 1);
-    let mut right = vec![I::point(0.0); n + 1];
-    left.push(w[0]);
-    right[n] = w[n];
-    let (u, v) = (I::point(1.0 - t), I::point(t));
-    for r in 1..=n {
-        for j in 0..=n - r {
-            w[j] = if t == 0.5 {
-                (w[j] + w[j + 1]).scale2(-1)
-            } else {
-                u * w[j] + v * w[j + 1]
-            };
-        }
-        left.push(w[0]);
-        right[n - r] = w[n - r];
+/// Bernstein coefficients of a node of the bisection as f64 midpoints `m_j` and radii `r_j`:
+/// the exact coefficient lies in `[m_j - r_j, m_j + r_j]`. De Casteljau's subdivision runs on
+/// the midpoints in f64 and carries a bound on its rounding error in the radii, a few times
+/// less work than the same subdivision in outward-rounded intervals.
+#[derive(Clone, Debug)]
+struct Node {
+    /// `(m_j, r_j)`.
+    c: Vec<(f64, f64)>,
+}
+
+/// What each subdivision level adds to a radius for underflow, `2^-1072` (a product by the
+/// weights below that underflows is off by at most `2^-1075`, two of them and the sum's
+/// rounding, times `1 + 8u`, stay below it).
+const NODE_FLOOR: f64 = f64::from_bits(4);
+
+impl Node {
+    /// The node of the enclosed coefficients `b` (a radius is infinite, so no sign is certain,
+    /// where an enclosure is not finite).
+    fn of(b: &[I]) -> Node {
+        let c = b
+            .iter()
+            .map(|c| {
+                let m = c.mid();
+                let r = next_up((c.hi - m).max(m - c.lo));
+                if m.is_finite() && r.is_finite() {
+                    (m, r)
+                } else {
+                    (0.0, f64::INFINITY)
+                }
+            })
+            .collect();
+        Node { c }
     }
-    (left, right)
+
+    /// The certain sign of coefficient `j` (`None` if its enclosure holds zero).
+    fn sign(&self, j: usize) -> Option<f64> {
+        let (m, r) = self.c[j];
+        if m > r {
+            Some(1.0)
+        } else if -m > r {
+            Some(-1.0)
+        } else {
+            None
+        }
+    }
+
+    /// Coefficient `j` replaced by its enclosure's intersection with `e` (`None` when they
+    /// are disjoint).
+    fn tighten(&mut self, j: usize, e: I) -> Option<()> {
+        let (m, r) = self.c[j];
+        let c = I::new(next_down(m - r), next_up(m + r)).intersect(e)?;
+        let cm = c.mid();
+        self.c[j] = (cm, next_up((c.hi - cm).max(cm - c.lo)));
+        Some(())
+    }
+
+    /// Sign changes of the coefficients, all of whose signs are certain; `None` if some sign
+    /// is not.
+    fn variations(&self) -> Option<usize> {
+        let mut last = None;
+        let mut v = 0;
+        for j in 0..self.c.len() {
+            let s = self.sign(j)?;
+            if last.is_some_and(|l| l != s) {
+                v += 1;
+            }
+            last = Some(s);
+        }
+        Some(v)
+    }
+
+    /// De Casteljau's subdivision at `t` (a dyadic weight: `t` and `1 - t` exact): (left,
+    /// right); `w` is working space.
+    ///
+    /// Each level replaces `w_j` by `(1 - t) w_j + t w_(j+1)`, a convex combination: the exact
+    /// values stay within the same combination of the radii, and the computed midpoint is off
+    /// from the combination of the midpoints by at most the rounding of two products and a
+    /// sum, `u (|(1 - t) w_j| + |t w_(j+1)|) + u |sum| <= 2u (1 + u) max(|w_j|, |w_(j+1)|)`,
+    /// plus underflow. So each level's radius is that combination of the radii plus
+    /// `2.01 u max(|w_j|, |w_(j+1)|)` plus [`NODE_FLOOR`], all computed in f64 and then times
+    /// `1 + 8u`, which covers the (at most five) roundings down of those nonnegative terms.
+    fn split(&self, t: f64, w: &mut Vec<(f64, f64)>) -> (Node, Node) {
+        let n = self.c.len() - 1;
+        w.clear();
+        w.extend_from_slice(&self.c);
+        let mut left = Vec::with_capacity(n + 1);
+        let mut right = vec![(0.0, 0.0); n + 1];
+        left.push(w[0]);
+        right[n] = w[n];
+        let (a, b) = (1.0 - t, t);
+        let u = 2.01 * f64::EPSILON / 2.0;
+        let grow = 1.0 + 8.0 * f64::EPSILON / 2.0;
+        for level in 1..=n {
+            for j in 0..=n - level {
+                let ((m0, r0), (m1, r1)) = (w[j], w[j + 1]);
+                let mu = m0.abs().max(m1.abs());
+                w[j] = (
+                    a * m0 + b * m1,
+                    (a * r0 + b * r1 + u * mu + NODE_FLOOR) * grow,
+                );
+            }
+            left.push(w[0]);
+            right[n - level] = w[n - level];
+        }
+        (Node { c: left }, Node { c: right })
+    }
 }
 
 /// The open sub-intervals `(tl, tr)` of `(0, 1)` holding exactly one root each, for a
@@ -547,14 +637,14 @@ fn isolate_unit_ends(
     max_nodes: usize,
     ends: (Option<I>, Option<I>),
 ) -> Result<Vec<(f64, f64)>, Uncertified> {
-    let mut b = bernstein(a).ok_or(Uncertified::Degenerate)?;
-    let tighten = |b: &mut Vec<I>, tl: f64, tr: f64| -> Result<(), Uncertified> {
-        let n = b.len() - 1;
+    let mut b = Node::of(&bernstein(a).ok_or(Uncertified::Degenerate)?);
+    let tighten = |b: &mut Node, tl: f64, tr: f64| -> Result<(), Uncertified> {
+        let n = b.c.len() - 1;
         if let (0.0, Some(e)) = (tl, ends.0) {
-            b[0] = b[0].intersect(e).ok_or(Uncertified::Sign)?;
+            b.tighten(0, e).ok_or(Uncertified::Sign)?;
         }
         if let (1.0, Some(e)) = (tr, ends.1) {
-            b[n] = b[n].intersect(e).ok_or(Uncertified::Sign)?;
+            b.tighten(n, e).ok_or(Uncertified::Sign)?;
         }
         Ok(())
     };
@@ -562,13 +652,14 @@ fn isolate_unit_ends(
     let mut out = Vec::new();
     let mut stack = vec![(0.0f64, 1.0f64, b, 0u32)];
     let mut nodes = 0usize;
+    let mut w = Vec::with_capacity(a.len());
     while let Some((tl, tr, mut b, depth)) = stack.pop() {
         tighten(&mut b, tl, tr)?;
         nodes += 1;
         if nodes > max_nodes || depth > MAX_DEPTH {
             return Err(Uncertified::Budget);
         }
-        match variations(&b) {
+        match b.variations() {
             Some(0) => continue,
             Some(1) => {
                 out.push((tl, tr));
@@ -579,8 +670,8 @@ fn isolate_unit_ends(
         // Split where the value has a certain sign, so that no root sits on the split point.
         let (t, (l, r)) = [0.5, 0.4375, 0.5625, 0.375, 0.625]
             .into_iter()
-            .map(|t| (t, split(&b, t)))
-            .find(|(_, (l, _))| l.last().is_some_and(|v| !v.contains_zero()))
+            .map(|t| (t, b.split(t, &mut w)))
+            .find(|(_, (l, _))| l.sign(l.c.len() - 1).is_some())
             .ok_or(Uncertified::Sign)?;
         let tm = tl + t * (tr - tl);
         if !(tm > tl && tm < tr) {
@@ -593,45 +684,58 @@ fn isolate_unit_ends(
     Ok(out)
 }
 
-/// Refines the bracket `[lo, hi]` of the single root of `p` in it, to relative width `target`
-/// if the enclosures allow.
-///
-/// A guess first, by safeguarded Newton on the midpoint polynomial (nothing certified). Then a
-/// bracket around the guess certified by the signs of the coefficients' Horner enclosure,
-/// starting from the enclosure's half-width over the slope (the narrowest bracket it can
-/// possibly certify) and doubling; only when that is wider than `target` is the same done with
-/// `value` (a tighter, costlier enclosure), intersected with the cheap one.
-fn refine(
-    p: &IPoly,
-    value: Option<&dyn Fn(f64) -> I>,
-    target: f64,
-    lo: f64,
-    hi: f64,
-) -> Result<Bracket, Uncertified> {
-    refine_local(&Local::of(p, 0.0), value, target, lo, hi)
-}
-
 /// A polynomial near its root as [`refine_local`] uses it: a cheap enclosure of its value and
-/// floating-point values of it and its derivative.
+/// floating-point values of it and its derivative, made once per polynomial (every root of it
+/// is refined on the same one).
 struct Local<'a> {
-    cheap: Box<dyn Fn(f64) -> I + 'a>,
-    f: Box<dyn Fn(f64) -> f64 + 'a>,
-    df: Box<dyn Fn(f64) -> f64 + 'a>,
+    /// The expansion in `y = x - x0`.
+    q: &'a IPoly,
+    x0: f64,
+    /// `q` made ready for evaluation at doubles (`x0 = 0`: `y = x` exactly).
+    at_point: Option<PointEnclosure<'a>>,
+    f: F64Poly,
+    df: F64Poly,
 }
 
 impl Local<'_> {
     /// The polynomial given by its expansion `q` in `y = x - x0`.
     fn of(q: &IPoly, x0: f64) -> Local<'_> {
-        let (f, df) = (q.mid(), q.derivative().mid());
         Local {
-            cheap: Box::new(move |x| q.eval(I::point(x) - I::point(x0))),
-            f: Box::new(move |x| f.eval(x - x0)),
-            df: Box::new(move |x| df.eval(x - x0)),
+            q,
+            x0,
+            at_point: (x0 == 0.0).then(|| PointEnclosure::new(q)),
+            f: q.mid(),
+            df: q.derivative().mid(),
         }
+    }
+
+    /// An enclosure of the value at `x`.
+    fn cheap(&self, x: f64) -> I {
+        match &self.at_point {
+            Some(e) => e.at(x),
+            None => self.q.eval(I::point(x) - I::point(self.x0)),
+        }
+    }
+
+    /// The floating-point value at `x` (nothing certified).
+    fn f(&self, x: f64) -> f64 {
+        self.f.eval(x - self.x0)
+    }
+
+    /// The floating-point derivative at `x` (nothing certified).
+    fn df(&self, x: f64) -> f64 {
+        self.df.eval(x - self.x0)
     }
 }
 
-/// [`refine`] of a polynomial given by [`Local`].
+/// Refines the bracket `[lo, hi]` of the single root of `p` in it, to relative width `target`
+/// if the enclosures allow.
+///
+/// A guess first, by safeguarded Newton on the midpoint polynomial (nothing certified). Then a
+/// bracket around the guess certified by the signs of the cheap enclosure ([`Local::cheap`]),
+/// starting from the enclosure's half-width over the slope (the narrowest bracket it can
+/// possibly certify) and doubling; only when that is wider than `target` is the same done with
+/// `value` (a tighter, costlier enclosure), intersected with the cheap one.
 fn refine_local(
     p: &Local<'_>,
     value: Option<&dyn Fn(f64) -> I>,
@@ -639,7 +743,7 @@ fn refine_local(
     lo: f64,
     hi: f64,
 ) -> Result<Bracket, Uncertified> {
-    let cheap = &p.cheap;
+    let cheap = |x: f64| p.cheap(x);
     let end_sign = |x: f64| {
         let c = cheap(x);
         c.sign()
@@ -651,7 +755,7 @@ fn refine_local(
     if slo == shi || lo >= hi || lo.is_nan() || hi.is_nan() {
         return Err(Uncertified::Sign);
     }
-    let (f, df) = (&p.f, &p.df);
+    let (f, df) = (|x: f64| p.f(x), |x: f64| p.df(x));
     let inside = |x: f64, lo: f64, hi: f64| x > lo && x < hi;
     let (mut a, mut b) = (lo, hi);
     let fa_sign = f(a).signum();
@@ -829,6 +933,64 @@ fn certified_bracket(
 mod tests {
     use super::*;
 
+    proptest::proptest! {
+        /// De Casteljau's subdivision in f64 with its radii (`Node::split`) encloses the exact
+        /// subdivision, in rationals, of every coefficient vector in the node's enclosures
+        /// (here its corners and an interior point), at every split point the isolation uses,
+        /// for magnitudes that differ by many orders and wide or point enclosures.
+        #[test]
+        fn subdivision_in_f64_encloses_the_exact_subdivision(
+            coefficients in proptest::collection::vec((-1.0f64..1.0, -12i32..12), 2..16),
+            rel in proptest::sample::select(vec![0.0, 1e-15, 1e-9, 1e-3]),
+            corner in proptest::collection::vec(proptest::bool::ANY, 16),
+            which in 0usize..5,
+        ) {
+            use num_rational::BigRational;
+            let q = |v: f64| BigRational::from_float(v).expect("finite");
+            let b: Vec<I> = coefficients
+                .iter()
+                .map(|(m, e)| {
+                    let m = m * 10f64.powi(*e);
+                    I::new(m - m.abs() * rel, m + m.abs() * rel)
+                })
+                .collect();
+            let t = [0.5, 0.4375, 0.5625, 0.375, 0.625][which];
+            let (left, right) = Node::of(&b).split(t, &mut Vec::new());
+            let n = b.len() - 1;
+            let pick = |j: usize, c: &I| if corner[j] { c.hi } else { c.lo };
+            let choices: [Vec<f64>; 2] = [
+                b.iter().enumerate().map(|(j, c)| pick(j, c)).collect(),
+                b.iter().map(|c| c.lo + 0.25 * (c.hi - c.lo)).collect(),
+            ];
+            for chosen in choices {
+                // The exact subdivision: the same levels in rationals.
+                let mut w: Vec<BigRational> = chosen.iter().map(|v| q(*v)).collect();
+                let (a, tt) = (q(1.0 - t), q(t));
+                let mut l = vec![w[0].clone()];
+                let mut r = vec![w[n].clone()];
+                for level in 1..=n {
+                    for j in 0..=n - level {
+                        w[j] = &a * &w[j] + &tt * &w[j + 1];
+                    }
+                    l.push(w[0].clone());
+                    r.push(w[n - level].clone());
+                }
+                r.reverse();
+                for (node, exact) in [(&left, &l), (&right, &r)] {
+                    for (j, e) in exact.iter().enumerate() {
+                        let (m, rad) = node.c[j];
+                        let lo = q(m) - q(rad);
+                        let hi = q(m) + q(rad);
+                        proptest::prop_assert!(
+                            lo <= *e && *e <= hi,
+                            "coefficient {j}: ({m}, {rad}) misses {e} for t = {t}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+
     fn p(c: &[f64]) -> IPoly {
         IPoly::new(c.iter().map(|x| I::point(*x)).collect())
     }
@@ -845,8 +1007,9 @@ mod tests {
         assert_eq!(r.len(), 3);
         for (b, want) in r.iter().zip([1.0 / 3.0, 2.0, 1000.0]) {
             assert!(b.lo <= want && want <= b.hi, "{b:?} vs {want}");
-            // Outward rounding widens each Horner step by an ulp of the partial sum, and the
-            // bracket is within a factor two of what that enclosure can certify.
+            // The running error bound of Horner's scheme widens each step by an ulp or two of
+            // the partial sum, and the bracket is within a factor two of what that enclosure
+            // can certify.
             assert!(b.hi - b.lo <= 64.0 * f64::EPSILON * want, "{b:?}");
         }
     }

@@ -479,6 +479,10 @@ fn pascal() -> &'static [Vec<I>] {
 /// The highest degree [`bernstein`] converts (binomials stay exact in u128).
 const MAX_BERNSTEIN_DEGREE: usize = 120;
 
+/// The highest degree `Node::bernstein` converts in f64 (`C(56, 28) < 2^53`: every binomial of
+/// these rows is an exact double).
+const MAX_F64_BERNSTEIN_DEGREE: usize = 56;
+
 /// The Bernstein coefficients on `[0, 1]` of the polynomial with (ascending) coefficients `a`:
 /// `b_j = sum_{i <= j} C(j, i) / C(n, i) a_i`.
 fn bernstein(a: &[I]) -> Option<Vec<I>> {
@@ -543,6 +547,55 @@ impl Node {
             })
             .collect();
         Node { c }
+    }
+
+    /// The node of the Bernstein coefficients on `[0, 1]` of the polynomial with enclosed
+    /// ascending coefficients `a` (`None` beyond [`MAX_BERNSTEIN_DEGREE`]): [`bernstein`]'s
+    /// `b_j = sum_(i <= j) C(j, i) s_i`, `s_i = a_i / C(n, i)`, computed in f64 on the
+    /// midpoints up to degree [`MAX_F64_BERNSTEIN_DEGREE`] (every binomial exact), in intervals
+    /// above.
+    ///
+    /// With midpoints `m_i`, radii `r_i` and `u = 2^-53`: `fl(m_i / C(n, i))` is off by at most
+    /// `u |s_i|`, and the sum of `j + 1` exact-binomial products by at most
+    /// `gamma_(j+1) sum C(j, i) |fl(s_i)|` (Higham, *Accuracy and Stability of Numerical
+    /// Algorithms*, 2nd ed., eq. (3.5)), together at most `g = (n + 4) u` times that sum; the
+    /// coefficients' radii add `sum C(j, i) r_i / C(n, i)`, and an underflowing quotient at
+    /// most `2^-1075` per quotient or product. So `r_j = sum C(j, i) t_i` with
+    /// `t_i = r_i / C(n, i) + g |fl(s_i)| + 2^-1073`, computed in f64 from nonnegative terms
+    /// (at most `n + 7` roundings down) and multiplied by `1 + (2n + 16) u`, then rounded up.
+    fn bernstein(a: &[I]) -> Option<Node> {
+        let n = a.len() - 1;
+        if n > MAX_F64_BERNSTEIN_DEGREE {
+            return bernstein(a).map(|b| Node::of(&b));
+        }
+        let rows = pascal();
+        let u = f64::EPSILON / 2.0;
+        let g = (n + 4) as f64 * u;
+        // 2^-1073: the underflow of two quotients and a product.
+        let tiny = f64::from_bits(2);
+        let (s, t): (Vec<f64>, Vec<f64>) = Node::of(a)
+            .c
+            .iter()
+            .zip(&rows[n])
+            .map(|((m, r), c)| {
+                // Binomials up to this degree are below 2^53: exact points.
+                let s = m / c.lo;
+                (s, r / c.lo + g * s.abs() + tiny)
+            })
+            .unzip();
+        let grow = 1.0 + (2 * n + 16) as f64 * u;
+        let c = (0..=n)
+            .map(|j| {
+                let row = &rows[j];
+                let (mut m, mut r) = (0.0, 0.0);
+                for i in 0..=j {
+                    m += row[i].lo * s[i];
+                    r += row[i].lo * t[i];
+                }
+                (m, next_up(r * grow))
+            })
+            .collect();
+        Some(Node { c })
     }
 
     /// The certain sign of coefficient `j` (`None` if its enclosure holds zero).
@@ -637,7 +690,7 @@ fn isolate_unit_ends(
     max_nodes: usize,
     ends: (Option<I>, Option<I>),
 ) -> Result<Vec<(f64, f64)>, Uncertified> {
-    let mut b = Node::of(&bernstein(a).ok_or(Uncertified::Degenerate)?);
+    let mut b = Node::bernstein(a).ok_or(Uncertified::Degenerate)?;
     let tighten = |b: &mut Node, tl: f64, tr: f64| -> Result<(), Uncertified> {
         let n = b.c.len() - 1;
         if let (0.0, Some(e)) = (tl, ends.0) {
@@ -933,7 +986,59 @@ fn certified_bracket(
 mod tests {
     use super::*;
 
+    /// Enclosures of relative half-width `rel` around `m 10^e` for each `(m, e)`.
+    fn enclosures(coefficients: &[(f64, i32)], rel: f64) -> Vec<I> {
+        coefficients
+            .iter()
+            .map(|(m, e)| {
+                let m = m * 10f64.powi(*e);
+                I::new(m - m.abs() * rel, m + m.abs() * rel)
+            })
+            .collect()
+    }
+
     proptest::proptest! {
+        /// The Bernstein coefficients in f64 with their radii (`Node::bernstein`) enclose the
+        /// exact ones, in rationals, of every polynomial with coefficients in the enclosures
+        /// (corners and an interior point), for magnitudes that differ by many orders and
+        /// wide or point enclosures, up to the degree where the conversion is in f64 and
+        /// beyond.
+        #[test]
+        fn bernstein_coefficients_in_f64_enclose_the_exact_ones(
+            coefficients in proptest::collection::vec((-1.0f64..1.0, -12i32..12), 2..60),
+            rel in proptest::sample::select(vec![0.0, 1e-15, 1e-9, 1e-3]),
+            corner in proptest::collection::vec(proptest::bool::ANY, 60),
+        ) {
+            use num_rational::BigRational;
+            let q = |v: f64| BigRational::from_float(v).expect("finite");
+            let a = enclosures(&coefficients, rel);
+            let n = a.len() - 1;
+            let node = Node::bernstein(&a).expect("within the degree limit");
+            let binomial = |n: usize, k: usize| -> BigRational {
+                let mut c = num_bigint::BigInt::from(1);
+                for i in 0..k {
+                    c = c * (n - i) / (i + 1);
+                }
+                BigRational::from_integer(c)
+            };
+            let choices: [Vec<f64>; 2] = [
+                a.iter().enumerate().map(|(i, c)| if corner[i] { c.hi } else { c.lo }).collect(),
+                a.iter().map(|c| c.lo + 0.75 * (c.hi - c.lo)).collect(),
+            ];
+            for chosen in choices {
+                for j in 0..=n {
+                    let exact = (0..=j).fold(BigRational::from_integer(0.into()), |acc, i| {
+                        acc + binomial(j, i) / binomial(n, i) * q(chosen[i])
+                    });
+                    let (m, r) = node.c[j];
+                    proptest::prop_assert!(
+                        q(m) - q(r) <= exact && exact <= q(m) + q(r),
+                        "b_{j} of degree {n}: ({m}, {r}) misses {exact}"
+                    );
+                }
+            }
+        }
+
         /// De Casteljau's subdivision in f64 with its radii (`Node::split`) encloses the exact
         /// subdivision, in rationals, of every coefficient vector in the node's enclosures
         /// (here its corners and an interior point), at every split point the isolation uses,
@@ -947,13 +1052,7 @@ mod tests {
         ) {
             use num_rational::BigRational;
             let q = |v: f64| BigRational::from_float(v).expect("finite");
-            let b: Vec<I> = coefficients
-                .iter()
-                .map(|(m, e)| {
-                    let m = m * 10f64.powi(*e);
-                    I::new(m - m.abs() * rel, m + m.abs() * rel)
-                })
-                .collect();
+            let b = enclosures(&coefficients, rel);
             let t = [0.5, 0.4375, 0.5625, 0.375, 0.625][which];
             let (left, right) = Node::of(&b).split(t, &mut Vec::new());
             let n = b.len() - 1;

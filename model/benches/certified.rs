@@ -8,11 +8,18 @@
 //! - `monte_carlo_1000`: 1000 seeded samples of `aircraft/a_uncertain.toml` on every core
 //!   (samples per second = 1000 / median);
 //! - `clear_a_uncertain`: the proof of that file (bounds, worst case, verdict).
+//!
+//! Everything runs under the command-line tool's allocator (mimalloc), as `model` does.
 
 use model::aircraft::Aircraft;
 use model::analysis::{analyze_with, fast};
 use model::certified::Values;
 use std::path::Path;
+
+/// The command-line tool's allocator (model/src/main.rs), so that the benchmarks measure what
+/// `model analyze` and `model clear` run. Baseline and certified route alike.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 fn main() {
     // The parametric derivation and its compiled form are made once per process; keep them out

@@ -525,9 +525,21 @@ struct Node {
     c: Vec<(f64, f64)>,
 }
 
-/// What each subdivision level adds to a radius for underflow, `2^-1072` (a product by the
-/// weights below that underflows is off by at most `2^-1075`, two of them and the sum's
-/// rounding, times `1 + 8u`, stay below it).
+/// A coefficient `(m, r)` as a node holds it: as computed when both are finite, else `(0, inf)`,
+/// which no sign is claimed for. A sum that overflowed to an infinity says nothing about the
+/// sign of the exact value (later terms of the other sign cannot bring it back), so every
+/// computed coefficient passes through here.
+fn entry(m: f64, r: f64) -> (f64, f64) {
+    if m.is_finite() && r.is_finite() {
+        (m, r)
+    } else {
+        (0.0, f64::INFINITY)
+    }
+}
+
+/// What each subdivision level adds to a radius for underflow, `2^-1072`: each of the five
+/// products of a level (two for the midpoint, three for the radius) that underflows is off by
+/// at most `2^-1075`, and sums of subnormals are exact, so a level loses at most `5 * 2^-1075`.
 const NODE_FLOOR: f64 = f64::from_bits(4);
 
 impl Node {
@@ -538,12 +550,7 @@ impl Node {
             .iter()
             .map(|c| {
                 let m = c.mid();
-                let r = next_up((c.hi - m).max(m - c.lo));
-                if m.is_finite() && r.is_finite() {
-                    (m, r)
-                } else {
-                    (0.0, f64::INFINITY)
-                }
+                entry(m, next_up((c.hi - m).max(m - c.lo)))
             })
             .collect();
         Node { c }
@@ -592,7 +599,7 @@ impl Node {
                     m += row[i].lo * s[i];
                     r += row[i].lo * t[i];
                 }
-                (m, next_up(r * grow))
+                entry(m, next_up(r * grow))
             })
             .collect();
         Some(Node { c })
@@ -601,7 +608,9 @@ impl Node {
     /// The certain sign of coefficient `j` (`None` if its enclosure holds zero).
     fn sign(&self, j: usize) -> Option<f64> {
         let (m, r) = self.c[j];
-        if m > r {
+        if !(m.is_finite() && r.is_finite()) {
+            None
+        } else if m > r {
             Some(1.0)
         } else if -m > r {
             Some(-1.0)
@@ -616,7 +625,7 @@ impl Node {
         let (m, r) = self.c[j];
         let c = I::new(next_down(m - r), next_up(m + r)).intersect(e)?;
         let cm = c.mid();
-        self.c[j] = (cm, next_up((c.hi - cm).max(cm - c.lo)));
+        self.c[j] = entry(cm, next_up((c.hi - cm).max(cm - c.lo)));
         Some(())
     }
 
@@ -660,7 +669,7 @@ impl Node {
             for j in 0..=n - level {
                 let ((m0, r0), (m1, r1)) = (w[j], w[j + 1]);
                 let mu = m0.abs().max(m1.abs());
-                w[j] = (
+                w[j] = entry(
                     a * m0 + b * m1,
                     (a * r0 + b * r1 + u * mu + NODE_FLOOR) * grow,
                 );
@@ -986,32 +995,86 @@ fn certified_bracket(
 mod tests {
     use super::*;
 
-    /// Enclosures of relative half-width `rel` around `m 10^e` for each `(m, e)`.
-    fn enclosures(coefficients: &[(f64, i32)], rel: f64) -> Vec<I> {
+    /// Enclosures of relative half-width `rel` around `m 10^e 10^scale` for each `(m, e)`.
+    fn enclosures(coefficients: &[(f64, i32)], rel: f64, scale: i32) -> Vec<I> {
         coefficients
             .iter()
             .map(|(m, e)| {
-                let m = m * 10f64.powi(*e);
+                let m = m * 10f64.powi(*e) * 10f64.powi(scale);
                 I::new(m - m.abs() * rel, m + m.abs() * rel)
             })
             .collect()
     }
 
+    /// Coefficient vectors of the box `b` to check exactly: every lower end, every upper end
+    /// (the extremes of any combination with nonnegative weights), the corner `corner` and an
+    /// interior point.
+    fn corners(b: &[I], corner: &[bool]) -> [Vec<f64>; 4] {
+        [
+            b.iter().map(|c| c.lo).collect(),
+            b.iter().map(|c| c.hi).collect(),
+            b.iter()
+                .zip(corner)
+                .map(|(c, k)| if *k { c.hi } else { c.lo })
+                .collect(),
+            b.iter().map(|c| c.lo + 0.75 * (c.hi - c.lo)).collect(),
+        ]
+    }
+
+    /// The exact value `e` lies in the node's coefficient `(m, r)`, or the node claims nothing
+    /// about it (an infinite radius, no sign).
+    fn holds(node: &Node, j: usize, e: &num_rational::BigRational) -> bool {
+        let (m, r) = node.c[j];
+        if !r.is_finite() {
+            return node.sign(j).is_none();
+        }
+        let q = |v: f64| num_rational::BigRational::from_float(v).expect("finite");
+        q(m) - q(r) <= *e && *e <= q(m) + q(r)
+    }
+
+    /// De Casteljau's subdivision at `t` in exact rationals: (left, right).
+    fn exact_split(
+        mut w: Vec<num_rational::BigRational>,
+        t: &num_rational::BigRational,
+    ) -> (
+        Vec<num_rational::BigRational>,
+        Vec<num_rational::BigRational>,
+    ) {
+        let n = w.len() - 1;
+        let a = num_rational::BigRational::from_integer(1.into()) - t;
+        let mut l = vec![w[0].clone()];
+        let mut r = vec![w[n].clone()];
+        for level in 1..=n {
+            for j in 0..=n - level {
+                w[j] = &a * &w[j] + t * &w[j + 1];
+            }
+            l.push(w[0].clone());
+            r.push(w[n - level].clone());
+        }
+        r.reverse();
+        (l, r)
+    }
+
+    /// Magnitudes the property tests scale their coefficients by: ordinary, tiny (down to
+    /// subnormal, where the underflow floors matter) and huge (sums overflow).
+    const SCALES: [i32; 4] = [0, -300, -315, 296];
+
     proptest::proptest! {
         /// The Bernstein coefficients in f64 with their radii (`Node::bernstein`) enclose the
         /// exact ones, in rationals, of every polynomial with coefficients in the enclosures
-        /// (corners and an interior point), for magnitudes that differ by many orders and
-        /// wide or point enclosures, up to the degree where the conversion is in f64 and
-        /// beyond.
+        /// (all lower ends, all upper ends, a corner and an interior point), for magnitudes
+        /// that differ by many orders, tiny and huge ones, and wide or point enclosures, up to
+        /// the degree where the conversion is in f64 and beyond.
         #[test]
         fn bernstein_coefficients_in_f64_enclose_the_exact_ones(
             coefficients in proptest::collection::vec((-1.0f64..1.0, -12i32..12), 2..60),
             rel in proptest::sample::select(vec![0.0, 1e-15, 1e-9, 1e-3]),
+            scale in proptest::sample::select(SCALES.to_vec()),
             corner in proptest::collection::vec(proptest::bool::ANY, 60),
         ) {
             use num_rational::BigRational;
             let q = |v: f64| BigRational::from_float(v).expect("finite");
-            let a = enclosures(&coefficients, rel);
+            let a = enclosures(&coefficients, rel, scale);
             let n = a.len() - 1;
             let node = Node::bernstein(&a).expect("within the degree limit");
             let binomial = |n: usize, k: usize| -> BigRational {
@@ -1021,72 +1084,87 @@ mod tests {
                 }
                 BigRational::from_integer(c)
             };
-            let choices: [Vec<f64>; 2] = [
-                a.iter().enumerate().map(|(i, c)| if corner[i] { c.hi } else { c.lo }).collect(),
-                a.iter().map(|c| c.lo + 0.75 * (c.hi - c.lo)).collect(),
-            ];
-            for chosen in choices {
+            for chosen in corners(&a, &corner) {
                 for j in 0..=n {
                     let exact = (0..=j).fold(BigRational::from_integer(0.into()), |acc, i| {
                         acc + binomial(j, i) / binomial(n, i) * q(chosen[i])
                     });
-                    let (m, r) = node.c[j];
                     proptest::prop_assert!(
-                        q(m) - q(r) <= exact && exact <= q(m) + q(r),
-                        "b_{j} of degree {n}: ({m}, {r}) misses {exact}"
+                        holds(&node, j, &exact),
+                        "b_{j} of degree {n}: {:?} misses {exact}",
+                        node.c[j]
                     );
                 }
             }
         }
 
-        /// De Casteljau's subdivision in f64 with its radii (`Node::split`) encloses the exact
-        /// subdivision, in rationals, of every coefficient vector in the node's enclosures
-        /// (here its corners and an interior point), at every split point the isolation uses,
-        /// for magnitudes that differ by many orders and wide or point enclosures.
+        /// De Casteljau's subdivision in f64 with its radii (`Node::split`), applied twice,
+        /// encloses the exact subdivision, in rationals, of every coefficient vector in the
+        /// node's enclosures (all lower ends, all upper ends, a corner and an interior point),
+        /// at every split point the isolation uses, for magnitudes that differ by many orders,
+        /// tiny and huge ones, and wide or point enclosures.
         #[test]
         fn subdivision_in_f64_encloses_the_exact_subdivision(
-            coefficients in proptest::collection::vec((-1.0f64..1.0, -12i32..12), 2..16),
+            coefficients in proptest::collection::vec((-1.0f64..1.0, -12i32..12), 2..24),
             rel in proptest::sample::select(vec![0.0, 1e-15, 1e-9, 1e-3]),
-            corner in proptest::collection::vec(proptest::bool::ANY, 16),
+            scale in proptest::sample::select(SCALES.to_vec()),
+            corner in proptest::collection::vec(proptest::bool::ANY, 24),
             which in 0usize..5,
         ) {
             use num_rational::BigRational;
             let q = |v: f64| BigRational::from_float(v).expect("finite");
-            let b = enclosures(&coefficients, rel);
+            let b = enclosures(&coefficients, rel, scale);
             let t = [0.5, 0.4375, 0.5625, 0.375, 0.625][which];
             let (left, right) = Node::of(&b).split(t, &mut Vec::new());
-            let n = b.len() - 1;
-            let pick = |j: usize, c: &I| if corner[j] { c.hi } else { c.lo };
-            let choices: [Vec<f64>; 2] = [
-                b.iter().enumerate().map(|(j, c)| pick(j, c)).collect(),
-                b.iter().map(|c| c.lo + 0.25 * (c.hi - c.lo)).collect(),
-            ];
-            for chosen in choices {
-                // The exact subdivision: the same levels in rationals.
-                let mut w: Vec<BigRational> = chosen.iter().map(|v| q(*v)).collect();
-                let (a, tt) = (q(1.0 - t), q(t));
-                let mut l = vec![w[0].clone()];
-                let mut r = vec![w[n].clone()];
-                for level in 1..=n {
-                    for j in 0..=n - level {
-                        w[j] = &a * &w[j] + &tt * &w[j + 1];
-                    }
-                    l.push(w[0].clone());
-                    r.push(w[n - level].clone());
-                }
-                r.reverse();
-                for (node, exact) in [(&left, &l), (&right, &r)] {
+            let (left_right, _) = right.split(t, &mut Vec::new());
+            for chosen in corners(&b, &corner) {
+                let w: Vec<BigRational> = chosen.iter().map(|v| q(*v)).collect();
+                let (l, r) = exact_split(w, &q(t));
+                let (rl, _) = exact_split(r.clone(), &q(t));
+                for (node, exact) in [(&left, &l), (&right, &r), (&left_right, &rl)] {
                     for (j, e) in exact.iter().enumerate() {
-                        let (m, rad) = node.c[j];
-                        let lo = q(m) - q(rad);
-                        let hi = q(m) + q(rad);
                         proptest::prop_assert!(
-                            lo <= *e && *e <= hi,
-                            "coefficient {j}: ({m}, {rad}) misses {e} for t = {t}"
+                            holds(node, j, e),
+                            "coefficient {j}: {:?} misses {e} for t = {t}",
+                            node.c[j]
                         );
                     }
                 }
             }
+        }
+    }
+
+    /// A sum that overflows is no sign (found in review): the Bernstein coefficients of this
+    /// polynomial of degree 10 with coefficients near `f64::MAX` overflow to +inf while two of
+    /// the exact ones are negative, and a node that read +inf as positive proved "no roots". It
+    /// has two positive roots, near 0.82 and 0.9 (exact values of opposite signs at 0.8, 0.85
+    /// and 0.95): the isolation must find them or give up, never answer that there are none.
+    #[test]
+    fn an_overflowing_sum_is_no_sign() {
+        let m = f64::MAX;
+        let c = [
+            0.6 * m,
+            0.6 * m,
+            -m,
+            -0.99 * m,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            m,
+        ];
+        let q = |v: f64| num_rational::BigRational::from_float(v).expect("finite");
+        let value = |x: f64| c.iter().rev().fold(q(0.0), |acc, a| acc * q(x) + q(*a));
+        let zero = q(0.0);
+        assert!(value(0.8) > zero && value(0.85) < zero && value(0.95) > zero);
+        match positive_roots(&p(&c)) {
+            Ok(r) => {
+                assert_eq!(r.len(), 2, "{r:?}");
+                assert!(r[0].lo < 0.85 && r[0].hi > 0.8 && r[1].lo > 0.85 && r[1].hi < 0.95);
+            }
+            Err(why) => assert!(why != Uncertified::Wide, "{why:?}"),
         }
     }
 

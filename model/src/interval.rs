@@ -288,7 +288,10 @@ fn exact_product(a: f64, b: f64) -> Option<f64> {
         (hi, x - hi)
     }
     let p = a * b;
-    if !p.is_finite() || a.abs() > 1e300 || b.abs() > 1e300 || (p != 0.0 && p.abs() < 1e-290) {
+    // Near underflow Dekker's error term underflows too (a product that rounds to zero would
+    // read as exact): only a zero factor makes a product that small exact here.
+    let tiny = p.abs() < 1e-290 && a != 0.0 && b != 0.0;
+    if !p.is_finite() || a.abs() > 1e300 || b.abs() > 1e300 || tiny {
         return None;
     }
     let ((ah, al), (bh, bl)) = (split(a), split(b));
@@ -335,5 +338,26 @@ mod tests {
         assert!(I::new(-1.0, 2.0).checked_div(I::new(-1.0, 1.0)).is_none());
         assert_eq!(next_up(1.0), 1.0 + f64::EPSILON);
         assert_eq!(next_down(0.0), -f64::from_bits(1));
+    }
+
+    /// Products of exact points that underflow are not exact (Dekker's error term underflows
+    /// with them): found by the point-enclosure property test, where a subnormal coefficient
+    /// times a small negative x gave the point [0, 0] for a value of about -2e-324.
+    #[test]
+    fn underflowing_products_of_points_are_enclosed_not_rounded() {
+        let q = |v: f64| BigRational::from_float(v).expect("finite");
+        for (a, b) in [
+            (8.289046e-317, -2.273489482017882e-8),
+            (f64::from_bits(3), 0.5),
+            (1e-200, 1e-200),
+            (-1e-160, 3e-160),
+        ] {
+            let p = I::point(a) * I::point(b);
+            let exact = q(a) * q(b);
+            assert!(q(p.lo) <= exact && exact <= q(p.hi), "{a} * {b}: {p:?}");
+            assert!(p.lo < p.hi, "{a} * {b} is not a double: {p:?}");
+        }
+        // A zero factor stays an exact zero.
+        assert_eq!(I::point(0.0) * I::point(1e-300), I::point(0.0));
     }
 }

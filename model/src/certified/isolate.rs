@@ -735,8 +735,12 @@ fn isolate_unit_ends(
             .map(|t| (t, b.split(t, &mut w)))
             .find(|(_, (l, _))| l.sign(l.c.len() - 1).is_some())
             .ok_or(Uncertified::Sign)?;
-        let tm = tl + t * (tr - tl);
-        if !(tm > tl && tm < tr) {
+        // The split point must be exact: the halves' coefficients are those of the exact
+        // subdivision, and the intervals reported are the halves' own domains. Sums and
+        // products of exact points stay points exactly when they are exact.
+        let split_point = I::point(tl) + I::point(t) * (I::point(tr) - I::point(tl));
+        let tm = split_point.lo;
+        if split_point.hi != tm || !(tm > tl && tm < tr) {
             return Err(Uncertified::Budget);
         }
         stack.push((tm, tr, r, depth + 1));

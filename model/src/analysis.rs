@@ -464,11 +464,12 @@ impl Found {
 /// The checks every answer passes before it is reported: every number finite, and no two
 /// distinct exact roots (of one list, or a jump root and a pole) that look the same in f64.
 fn check(a: &Analysis) -> Result<(), AnalysisError> {
-    let finite = |what: String, v: &[f64]| {
+    // The message is written only when a number is not finite (this runs on every answer).
+    let finite = |what: &dyn Fn() -> String, v: &[f64]| {
         if v.iter().all(|x| x.is_finite()) {
             Ok(())
         } else {
-            Err(AnalysisError::NotFinite(what))
+            Err(AnalysisError::NotFinite(what()))
         }
     };
     let jumps: Vec<f64> = a.jump.iter().map(|j| j.p0).collect();
@@ -492,11 +493,14 @@ fn check(a: &Analysis) -> Result<(), AnalysisError> {
     if let Some(x) = jumps.iter().find(|x| poles.contains(x)) {
         return Err(same("a jump root and a pole of det K", *x));
     }
-    finite("a divergence roll rate".into(), &a.divergence_roll_rates)?;
+    finite(
+        &|| "a divergence roll rate".into(),
+        &a.divergence_roll_rates,
+    )?;
     for (i, j) in a.jump.iter().chain(&a.det_k_poles).enumerate() {
         let v = j.numbers();
         finite(
-            format!("the trim at P0 = {:e} rad/s (point {})", j.p0, i + 1),
+            &|| format!("the trim at P0 = {:e} rad/s (point {})", j.p0, i + 1),
             &v,
         )?;
     }
@@ -513,11 +517,13 @@ fn check(a: &Analysis) -> Result<(), AnalysisError> {
             d.delta_r_deg,
         ];
         finite(
-            format!(
-                "the trim of zero-sideslip departure {} (P0 = {:e} rad/s)",
-                i + 1,
-                d.p0
-            ),
+            &|| {
+                format!(
+                    "the trim of zero-sideslip departure {} (P0 = {:e} rad/s)",
+                    i + 1,
+                    d.p0
+                )
+            },
             &v,
         )?;
     }

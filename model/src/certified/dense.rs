@@ -96,8 +96,12 @@ impl<T: Num> Dense<T> {
             if x.is_exact_zero() {
                 continue;
             }
+            // An exact zero term adds nothing (and adding it would only widen the sum by an
+            // ulp): the even and odd polynomials in P0 have every other coefficient zero.
             for (j, y) in b.0.iter().enumerate() {
-                self.0[i + j] = self.0[i + j] + *x * *y;
+                if !y.is_exact_zero() {
+                    self.0[i + j] = self.0[i + j] + *x * *y;
+                }
             }
         }
         while self.0.last().is_some_and(|c| c.is_exact_zero()) {
@@ -126,7 +130,9 @@ impl<T: Num> Dense<T> {
                 continue;
             }
             for (j, b) in o.0.iter().enumerate() {
-                r[i + j] = r[i + j] + *a * *b;
+                if !b.is_exact_zero() {
+                    r[i + j] = r[i + j] + *a * *b;
+                }
             }
         }
         Dense::new(r)

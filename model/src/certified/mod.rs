@@ -15,7 +15,8 @@
 //!    [`crate::derivation::clear_trim`], in the ring of those interval polynomials, and the
 //!    aileron is eliminated by the resultant with the trim condition ([`eliminate`]);
 //! 3. [`isolate`] brackets the positive roots of every polynomial whose coefficients lie in
-//!    the enclosures, or says it cannot.
+//!    the enclosures, or says it cannot (its inner loops keep f64 midpoints with radii that
+//!    bound their rounding instead of intervals: the same guarantee, less work).
 //!
 //! So a certified answer is exactly the exact path's, up to the width of the brackets (an ulp or
 //! two). Where a certificate fails (a root too close to another, a coefficient that may vanish)

@@ -3,7 +3,8 @@
 //! `analyze` per aircraft, and `analyze` with and without it, measured in the same run (the
 //! ratio of the medians is the cost of the new answer), and the full `analyze` on the certified
 //! route against the exact one (issue 10: under 2 ms per aircraft). Run with
-//! `cargo bench -p model --bench hopf`.
+//! `cargo bench -p model --bench hopf`. Everything runs under the command-line tool's allocator
+//! (mimalloc), as `model` does.
 
 use model::aircraft::Aircraft;
 use model::analysis::fast::{analyze_routed_with, Route};
@@ -11,6 +12,11 @@ use model::analysis::{
     analyze_with, parametric, parametric_characteristic, CriterionPolys, HopfPolys,
 };
 use model::derivation::hopf::{at_coefficients, orlando};
+
+/// The command-line tool's allocator (model/src/main.rs), so that the benchmarks measure what
+/// `model analyze` runs. Baseline and certified route alike.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 fn main() {
     divan::main();

@@ -113,6 +113,14 @@ impl I {
         m.clamp(self.lo, self.hi)
     }
 
+    /// Midpoint `m` ([`I::mid`]) and a radius `r` rounded up, so that `[m - r, m + r]` (in
+    /// exact arithmetic) holds the interval: the midpoint-radius form of the f64 bounds in
+    /// [`crate::certified`]. Not finite when an end is not.
+    pub fn mid_rad(self) -> (f64, f64) {
+        let m = self.mid();
+        (m, next_up((self.hi - m).max(m - self.lo)))
+    }
+
     /// Width `hi - lo` (rounded up).
     pub fn width(self) -> f64 {
         next_up(self.hi - self.lo)

@@ -359,8 +359,8 @@ impl<'a> PointEnclosure<'a> {
             .0
             .iter()
             .map(|c| {
-                let m = c.mid();
-                (m, up(up((c.hi - m).max(m - c.lo)) + FLOOR))
+                let (m, r) = c.mid_rad();
+                (m, up(r + FLOOR))
             })
             .unzip();
         PointEnclosure {

@@ -572,8 +572,8 @@ impl Node {
         let c = b
             .iter()
             .map(|c| {
-                let m = c.mid();
-                entry(m, next_up((c.hi - m).max(m - c.lo)))
+                let (m, r) = c.mid_rad();
+                entry(m, r)
             })
             .collect();
         Node { c }
@@ -646,9 +646,10 @@ impl Node {
     /// are disjoint).
     fn tighten(&mut self, j: usize, e: I) -> Option<()> {
         let (m, r) = self.c[j];
-        let c = I::new(next_down(m - r), next_up(m + r)).intersect(e)?;
-        let cm = c.mid();
-        self.c[j] = entry(cm, next_up((c.hi - cm).max(cm - c.lo)));
+        let (cm, cr) = I::new(next_down(m - r), next_up(m + r))
+            .intersect(e)?
+            .mid_rad();
+        self.c[j] = entry(cm, cr);
         Some(())
     }
 

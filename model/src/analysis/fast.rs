@@ -24,15 +24,15 @@ use super::{
     JumpPoint, LocalPolys,
 };
 use crate::aircraft::Aircraft;
-use crate::algebra::Sym;
+use crate::algebra::{PolyF64, Sym, MAX_SYMS};
 use crate::certified::dense::{IPoly, IPoly2};
 use crate::certified::{
     positive_roots_by, real_roots_outside, trim_condition_at, value_at, Bracket, Criterion,
     EnclosedHopf, EnclosedPolys, JumpPolys, Uncertified, Values,
 };
-use crate::derivation::Ratio;
 use crate::equations::symbols;
 use crate::interval::I;
+use std::sync::OnceLock;
 
 /// Which route gave the answer.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -103,7 +103,6 @@ fn certified(
     delta_e_rad: f64,
     departures: bool,
 ) -> Result<(Analysis, f64), Uncertified> {
-    let par = parametric();
     let v = Values::of(aircraft, delta_e_rad, 0.0);
     let e = EnclosedPolys::new(&v)?;
     let roots = |p: &IPoly, which: Criterion| {
@@ -163,23 +162,24 @@ fn certified(
     };
     let data = aircraft.values_f64();
     let s = symbols();
+    // Every symbol's value, NaN for those a zero-sideslip point sets (and any other).
+    let mut known = [f64::NAN; MAX_SYMS];
+    for (p, v) in s.params.iter().zip(&data) {
+        known[p.index()] = *v;
+    }
+    known[s.delta_e.index()] = delta_e_rad;
+    known[s.delta_r.index()] = 0.0;
     let zs_controls = |at: &[(Sym, f64)]| {
-        let look = |x: Sym| {
-            if let Some((_, v)) = at.iter().find(|(t, _)| *t == x) {
-                *v
-            } else if x == s.delta_e {
-                delta_e_rad
-            } else if x == s.delta_r {
-                0.0
-            } else {
-                s.params
-                    .iter()
-                    .position(|p| *p == x)
-                    .map_or(f64::NAN, |i| data[i])
-            }
-        };
-        let eval = |r: &Ratio| r.num.eval_f64(&look) / r.den.eval_f64(&look);
-        (eval(&par.zs_delta_a), eval(&par.zs_delta_r))
+        let mut values = known;
+        for (t, v) in at {
+            values[t.index()] = *v;
+        }
+        let look = |x: Sym| values[x.index()];
+        let [a_num, a_den, r_num, r_den] = zs_control_forms();
+        (
+            a_num.eval(&look) / a_den.eval(&look),
+            r_num.eval(&look) / r_den.eval(&look),
+        )
     };
     let (mut analysis, critical) = found.assemble(aircraft, delta_e_rad, &zs_controls);
     if !departures {
@@ -191,6 +191,24 @@ fn certified(
     let input = certified_departures(&v, &e, &divergence, &analysis.jump, local.at(&values))?;
     found.add_departures(&mut analysis, critical, &input.0, (aircraft, delta_e_rad));
     Ok((analysis, width.max(input.1)))
+}
+
+/// The zero-sideslip controls of the parametric derivation (numerator and denominator of
+/// delta_a, then of delta_r; Eq. 35), prepared once per process for f64 evaluation: the same
+/// operations as [`crate::algebra::Poly::eval_f64`] in the same order, so the same values to
+/// the bit.
+fn zs_control_forms() -> &'static [PolyF64; 4] {
+    static FORMS: OnceLock<[PolyF64; 4]> = OnceLock::new();
+    FORMS.get_or_init(|| {
+        let par = parametric();
+        [
+            &par.zs_delta_a.num,
+            &par.zs_delta_a.den,
+            &par.zs_delta_r.num,
+            &par.zs_delta_r.den,
+        ]
+        .map(|p| p.to_f64_form())
+    })
 }
 
 /// The departure part's roots by the certified route (the Hopf polynomials' positive roots,

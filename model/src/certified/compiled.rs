@@ -28,6 +28,85 @@ pub struct Table<T> {
     rows: Vec<[T; POWERS + 1]>,
     /// The row of each symbol, [`NO_VALUE`] for a symbol without one.
     row_of: [u8; MAX_SYMS],
+    /// The same powers as midpoints with relative radii, when every value is a plain enclosure
+    /// of a modest relative width (see [`Relative`]).
+    relative: Option<Relative>,
+}
+
+/// A table's powers `x^e` as f64 midpoints `m` with relative radii `eps` (`x^e = m (1 + h)`
+/// with `|h| <= eps`, for every real in the enclosure), for [`Compiled::lift`]'s evaluation in
+/// f64 with a rounding error bound: the same enclosure as interval arithmetic gives, at a
+/// fraction of the cost.
+#[derive(Clone, Debug)]
+struct Relative {
+    rows: Vec<[(f64, f64); POWERS + 1]>,
+    /// The largest `eps`.
+    eps: f64,
+    /// Binary exponents `(lo, hi)`, `lo <= 0 <= hi`, with every nonzero midpoint `|m|` in
+    /// `[2^lo, 2^hi]`; the computed power `m_e` then lies in `[2^(e lo), 2^(e hi)]` as long as
+    /// that range is within the normal doubles (rounding is monotone, powers of two are
+    /// doubles).
+    exponents: (i32, i32),
+}
+
+impl Relative {
+    /// The relative form of the rows of powers `rows` (from their first powers), or `None`
+    /// when a value has none (a number that is more than an enclosure, an interval holding zero
+    /// without being the exact zero, one not finite).
+    ///
+    /// The power `e` is the computed product `m_e` of `e` copies of `m = m_1`, and
+    /// `x^e = m_e prod (1 + h_i)` over the `e` relative errors of `x` and the `e - 1`
+    /// roundings: their sum `eps_e = e eps + (e - 1) u` (rounded up) bounds them as one
+    /// relative radius does in the bound of [`Compiled::lift_rounded`].
+    fn new<T: Num>(rows: &[[T; POWERS + 1]]) -> Option<Relative> {
+        let (mut eps, mut exponents) = (0.0f64, (0, 0));
+        let mut out = Vec::with_capacity(rows.len());
+        for row in rows {
+            let (m, e1) = relative(row[1].interval()?)?;
+            let mut r = [(1.0, 0.0); POWERS + 1];
+            r[1] = (m, e1);
+            for e in 2..=POWERS {
+                let (p, s) = r[e - 1];
+                r[e] = (p * m, crate::interval::next_up(s + e1 + UNIT));
+            }
+            eps = eps.max(r[POWERS].1);
+            if m != 0.0 {
+                let (lo, hi) = binary_exponents(m);
+                exponents = (exponents.0.min(lo), exponents.1.max(hi));
+            }
+            out.push(r);
+        }
+        Some(Relative {
+            rows: out,
+            eps,
+            exponents,
+        })
+    }
+}
+
+/// `(m, eps)` with `x = m (1 + h)`, `|h| <= eps`, for every real `x` in `i`; the exact zero is
+/// `(0, 0)`. `None` for an interval without such a form (holding zero but not the point zero,
+/// or not finite).
+fn relative(i: I) -> Option<(f64, f64)> {
+    if i.is_exact_zero() {
+        return Some((0.0, 0.0));
+    }
+    let (m, r) = i.mid_rad();
+    // r / |m| rounded to nearest, then up by an ulp: above the exact quotient (finite and
+    // positive operands; a subnormal quotient is off by at most half its ulp).
+    let eps = crate::interval::next_up(r / m.abs());
+    (m != 0.0 && eps.is_finite() && !i.contains_zero()).then_some((m, eps))
+}
+
+/// `(e, e + 1)` with `2^e <= |x| < 2^(e + 1)` for a nonzero normal `x` (a subnormal `x` gets
+/// a range no product passes).
+fn binary_exponents(x: f64) -> (i32, i32) {
+    let biased = ((x.to_bits() >> 52) & 0x7ff) as i32;
+    if biased == 0 {
+        return (-2 * MAX_EXPONENT, 2 * MAX_EXPONENT);
+    }
+    let e = biased - 1023;
+    (e, e + 1)
 }
 
 /// [`Table::row_of`] of a symbol without a value.
@@ -45,7 +124,11 @@ impl<T: Num> Table<T> {
                 rows.push(Table::row(*x));
             }
         }
-        Table { rows, row_of }
+        Table {
+            relative: Relative::new(&rows),
+            rows,
+            row_of,
+        }
     }
 
     fn row(x: T) -> [T; POWERS + 1] {
@@ -95,6 +178,81 @@ pub struct Compiled {
     da_degree: usize,
     /// The most factors of one term (the depth of the trie of the monomials).
     depth: usize,
+    /// The coefficients in relative form, for the lift in f64 (`None` when one has none).
+    relative: Option<RelativeTerms>,
+}
+
+/// [`Compiled`]'s coefficients as midpoints `m` with relative radii (see [`Relative`]), each
+/// with the count of roundings its term's product takes added: `sigma = eps + (k + 1) u` for a
+/// term of `k` factors (one rounding per factor and one for the coefficient).
+#[derive(Clone, Debug)]
+struct RelativeTerms {
+    coefs: Vec<(f64, f64)>,
+    /// The largest `sigma`.
+    sigma: f64,
+    /// Binary exponents `(lo, hi)`, `lo <= 0 <= hi`, bounding every `|m|`.
+    exponents: (i32, i32),
+    /// The highest power of a valued symbol.
+    max_power: usize,
+    /// The highest total degree of a term in the valued symbols.
+    max_degree: usize,
+}
+
+impl RelativeTerms {
+    fn new(terms: &[Term]) -> Option<RelativeTerms> {
+        let (mut sigma, mut exponents, mut max_power, mut max_degree) = (0.0f64, (0, 0), 0, 0);
+        let coefs = terms
+            .iter()
+            .map(|t| {
+                let (m, eps) = relative(t.coef)?;
+                // Terms are nonzero: a zero coefficient has no term.
+                let (lo, hi) = binary_exponents(m);
+                exponents = (exponents.0.min(lo), exponents.1.max(hi));
+                max_power =
+                    max_power.max(t.factors.iter().map(|f| f.1 as usize).max().unwrap_or(0));
+                max_degree = max_degree.max(t.factors.iter().map(|f| f.1 as usize).sum());
+                // Rounded to nearest, then up by an ulp: above the exact value.
+                let s = crate::interval::next_up(eps + (t.factors.len() + 1) as f64 * UNIT);
+                sigma = sigma.max(s);
+                (m != 0.0).then_some((m, s))
+            })
+            .collect::<Option<Vec<_>>>()?;
+        Some(RelativeTerms {
+            coefs,
+            sigma,
+            exponents,
+            max_power,
+            max_degree,
+        })
+    }
+}
+
+/// The unit roundoff of f64, `2^-53`.
+const UNIT: f64 = f64::EPSILON / 2.0;
+
+/// The largest relative error bound of one term the lift in f64 accepts (above it, the
+/// bound's own first-order treatment would need more care than it is worth: interval
+/// arithmetic takes over).
+const MAX_SIGMA: f64 = 1.0 / (1u64 << 20) as f64;
+
+/// The binary exponent range the lift in f64 keeps every product of (no overflow, no
+/// underflow, no subnormal: every rounding within a relative `u`).
+const MAX_EXPONENT: i32 = 900;
+
+/// The most coefficients (in P0 and delta_a) the lift in f64 evaluates on the stack.
+const MAX_CELLS: usize = 64;
+
+/// The most factors of a term the lift in f64 takes.
+const MAX_DEPTH: usize = 24;
+
+/// A cell of [`Compiled::lift`]'s evaluation in f64: the running sum `s` of the terms'
+/// computed values, `a`, the sum of their bounds `|t| sigma`, and `b`, the sum of the
+/// absolute partial sums (whose rounding errors are at most `u` times each).
+#[derive(Clone, Copy, Default)]
+struct Cell {
+    s: f64,
+    a: f64,
+    b: f64,
 }
 
 impl Compiled {
@@ -149,12 +307,126 @@ impl Compiled {
             p0_degree: terms.iter().map(|t| t.p0).max().unwrap_or(0),
             da_degree: terms.iter().map(|t| t.da).max().unwrap_or(0),
             depth: terms.iter().map(|t| t.factors.len()).max().unwrap_or(0),
+            relative: RelativeTerms::new(&terms),
             terms,
         }
     }
 
-    /// The enclosure as a polynomial in P0 and delta_a.
+    /// The enclosure as a polynomial in P0 and delta_a: evaluated in f64 with a bound on its
+    /// rounding ([`Compiled::lift_rounded`]) where the table and the coefficients allow it,
+    /// otherwise in interval arithmetic.
     pub fn lift<T: Num>(&self, table: &Table<T>) -> Dense2<T> {
+        let mut cells = [I::point(0.0); MAX_CELLS];
+        let rounded = (table.relative.as_ref())
+            .is_some_and(|r| self.lift_rounded(&table.row_of, r, &mut cells));
+        if !rounded {
+            return self.lift_intervals(table);
+        }
+        let width = self.p0_degree + 1;
+        let rows = cells[..width * (self.da_degree + 1)].chunks(width);
+        Dense2::new(
+            rows.map(|row| Dense::new(row.iter().map(|c| T::constant(*c)).collect()))
+                .collect(),
+        )
+    }
+
+    /// Writes to `out` the enclosures of the coefficients of `P0^i delta_a^j` (row by row in
+    /// `j`, `i` ascending within a row), evaluated in f64 from the relative form of the table;
+    /// `false` (and `out` meaningless) when the evaluation cannot promise its bound: a term's
+    /// relative error bound above [`MAX_SIGMA`], a product that could leave the exponent range
+    /// of [`MAX_EXPONENT`], a power beyond the table's, too many cells or factors for the
+    /// stack, a value not finite.
+    ///
+    /// Why the bound holds. Each factor is `x^e = m_e prod (1 + h_i)` with `sum |h_i| <= eps_e`
+    /// (its table entry, [`Relative::new`]), the coefficient `c = m_c (1 + h_c)` with
+    /// `|h_c| <= eps_c`, and the computed product of the `k` midpoints and `m_c` takes `k + 1`
+    /// roundings, each within a relative `u` (no underflow, no overflow: the exponent check).
+    /// So the exact term `t` and the computed `t~` satisfy
+    /// `t = t~ (1 + h_c) prod (1 + h_i) / prod (1 + d)` with `|d| <= u`, and
+    /// `|t - t~| <= |t~| (exp(sigma') - 1)` for `sigma' = eps_c + sum eps_e + (k + 1) u / (1 - u)`;
+    /// for `sigma' <= 2^-20` that is below `|t~| sigma (1 + 2^-19)`, `sigma` the sum of the
+    /// term's `eps_c + (k + 1) u` and its factors' `eps_e`. The recursive sum `s` of the `t~`
+    /// is off from their exact sum by at most `u` times the sum `b` of its absolute partial
+    /// sums (Higham, Accuracy and Stability, section 4.2: one rounding of at most `u |s_k|` per
+    /// addition, none for a subnormal sum). So the exact coefficient lies within
+    /// `a (1 + 2^-19) + u b` of `s`, `a = sum |t~| sigma`. `a`, `b` and the `sigma` are computed
+    /// from nonnegative terms in round-to-nearest, each low by a relative `(n + k + 3) u` at
+    /// most (`n` terms per cell, fewer than 2^20); the factor `1 + 2^-10` covers all of it and
+    /// the two roundings of the radius itself, and the ends are pushed out by an ulp.
+    ///
+    /// A cell all of whose terms hold an exact zero factor (a parameter that is exactly zero)
+    /// comes out as the exact zero, as in interval arithmetic: structural zeros stay exact, so
+    /// that degrees stay exact.
+    fn lift_rounded(
+        &self,
+        row_of: &[u8; MAX_SYMS],
+        t: &Relative,
+        out: &mut [I; MAX_CELLS],
+    ) -> bool {
+        let Some(c) = self.relative.as_ref() else {
+            return false;
+        };
+        let degree = c.max_degree as i32;
+        // Every product of entries of total degree at most `degree` and a coefficient lies in
+        // [2^(degree lo + lo_c), 2^(degree hi + hi_c)] (lo <= 0 <= hi), and so does its
+        // computed value (rounding is monotone and powers of two are doubles).
+        let low = degree * t.exponents.0 + c.exponents.0;
+        let high = degree * t.exponents.1 + c.exponents.1;
+        let width = self.p0_degree + 1;
+        let n = width * (self.da_degree + 1);
+        if c.max_power > POWERS
+            || self.depth >= MAX_DEPTH
+            || n > MAX_CELLS
+            || self.terms.len() >= 1 << 20
+            || c.sigma + self.depth as f64 * t.eps > MAX_SIGMA
+            || low < -MAX_EXPONENT
+            || high > MAX_EXPONENT
+        {
+            return false;
+        }
+        let mut cells = [Cell::default(); MAX_CELLS];
+        // prefix[k]: the computed product of the current term's first k midpoints, and the sum
+        // of their relative radii.
+        let mut prefix = [(1.0f64, 0.0f64); MAX_DEPTH + 1];
+        for (term, &(m_c, sigma_c)) in self.terms.iter().zip(&c.coefs) {
+            let mut k = term.shared;
+            for &(sym, e) in &term.factors[term.shared..] {
+                let Some(row) = t.rows.get(row_of[sym as usize] as usize) else {
+                    return false;
+                };
+                let (m, eps) = row[e as usize];
+                let (p, s) = prefix[k];
+                k += 1;
+                prefix[k] = (p * m, s + eps);
+            }
+            let (p, s) = prefix[k];
+            let v = p * m_c;
+            let cell = &mut cells[term.da * width + term.p0];
+            cell.s += v;
+            cell.a += v.abs() * (s + sigma_c);
+            cell.b += cell.s.abs();
+        }
+        let safety = 1.0 + 1.0 / 1024.0;
+        for (o, &Cell { s, a, b }) in out.iter_mut().zip(&cells[..n]) {
+            let r = (a + b * UNIT) * safety;
+            if !(s.is_finite() && r.is_finite()) {
+                return false;
+            }
+            *o = if r == 0.0 {
+                // Every term exactly zero (sigma > 0: a nonzero term gives a > 0).
+                I::point(s)
+            } else {
+                I::new(
+                    crate::interval::next_down(s - r),
+                    crate::interval::next_up(s + r),
+                )
+            };
+        }
+        true
+    }
+
+    /// The enclosure as a polynomial in P0 and delta_a, in interval arithmetic.
+    fn lift_intervals<T: Num>(&self, table: &Table<T>) -> Dense2<T> {
         let zero = T::constant(I::point(0.0));
         let mut grid = vec![vec![zero; self.p0_degree + 1]; self.da_degree + 1];
         // prefix[k]: the product of the current term's first k factors.
@@ -364,6 +636,113 @@ impl Parametric {
             zs_det_j5: Cleared::new(&par.det_j5.subs(s.beta0, &zero), &t3),
             zs_d: Cleared::new(&par.d.subs(s.beta0, &zero), &t3),
             lateral: Compiled::new(&par.zs_delta_a.den),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::aircraft::Param;
+    use crate::algebra::{Mono, Q};
+    use num_rational::BigRational;
+
+    /// A polynomial in four parameters, P0 and delta_a from `terms` (coefficient numerator,
+    /// whether it is divided by 3, which no double holds, and exponents), and exact data for the four from `data` (mantissa, binary exponent, kind:
+    /// an exact double, a tenth of one, which no double holds, or the exact zero).
+    fn case(terms: &[(i64, bool, [u32; 6])], data: &[(f64, i32, u8)]) -> (Poly, Vec<(Sym, Q)>) {
+        let s = symbols();
+        let params = [Param::Lp, Param::NBeta, Param::C, Param::MDeltaE].map(|p| s.param(p));
+        let vars = [params[0], params[1], params[2], params[3], s.p0, s.delta_a];
+        let poly = Poly::from_terms(terms.iter().map(|(c, third, e)| {
+            let mut m = Mono::ONE;
+            for (v, k) in vars.iter().zip(e) {
+                m.set(*v, *k);
+            }
+            (m, Q::ratio(*c, if *third { 3 } else { 1 }))
+        }));
+        let values = params
+            .iter()
+            .zip(data)
+            .map(|(p, (m, e, kind))| {
+                let x = BigRational::from_float(m * 2f64.powi(*e)).expect("finite");
+                let v = match kind {
+                    0 => x,
+                    1 => x / BigRational::from_integer(10.into()),
+                    _ => BigRational::from_integer(0.into()),
+                };
+                (*p, Q::from_big(v))
+            })
+            .collect();
+        (poly, values)
+    }
+
+    proptest::proptest! {
+        /// The lift in f64 with its rounding bound encloses the exact coefficients, in
+        /// rationals, of random polynomials at random exact data (doubles, values no double
+        /// holds, exact zeros) and coefficients (integers, thirds), over magnitudes from tiny to huge; exact zeros stay exact, the
+        /// enclosures stay as tight as a few ulps of the terms' magnitudes, and the evaluation
+        /// is taken wherever the magnitudes allow it.
+        #[test]
+        fn the_lift_in_f64_encloses_the_exact_coefficients(
+            terms in proptest::collection::vec(
+                (-50i64..50, proptest::bool::ANY, proptest::array::uniform6(0u32..4)), 1..40),
+            data in proptest::collection::vec((0.5f64..1.0, -3i32..3, 0u8..3), 4),
+            scale in proptest::sample::select(vec![0, 20, -20, 60, -60, 130, -130]),
+            sign in proptest::collection::vec(proptest::bool::ANY, 4),
+        ) {
+            let data: Vec<(f64, i32, u8)> = data
+                .iter()
+                .zip(&sign)
+                .map(|((m, e, k), neg)| (if *neg { -m } else { *m }, e + scale, *k))
+                .collect();
+            let (poly, values) = case(&terms, &data);
+            let compiled = Compiled::new(&poly);
+            let mut by_symbol = [None; MAX_SYMS];
+            for (sym, q) in &values {
+                by_symbol[sym.index()] = Some(I::from_q(&q.to_big()));
+            }
+            let table = Table::new(&by_symbol);
+            let mut out = [I::point(0.0); MAX_CELLS];
+            let rounded = compiled.lift_rounded(
+                &table.row_of,
+                table.relative.as_ref().expect("point data have a relative form"),
+                &mut out,
+            );
+            // Total degree at most 12 in data of magnitude up to 2^(3 + 130): the products stay
+            // within 2^900 when the scale is at most 60.
+            proptest::prop_assert!(rounded || scale.abs() > 60, "refused at scale {scale}");
+            if !rounded {
+                return Ok(());
+            }
+            let exact = poly.subs_values(&values);
+            let s = symbols();
+            let width = compiled.p0_degree + 1;
+            for j in 0..=compiled.da_degree {
+                for i in 0..width {
+                    let cell = out[j * width + i];
+                    let mono = {
+                        let mut m = Mono::ONE;
+                        m.set(s.p0, i as u32);
+                        m.set(s.delta_a, j as u32);
+                        m
+                    };
+                    let q = exact
+                        .terms()
+                        .iter()
+                        .find(|(m, _)| *m == mono)
+                        .map_or(BigRational::from_integer(0.into()), |(_, c)| c.to_big());
+                    let f = |v: f64| BigRational::from_float(v).expect("finite");
+                    proptest::prop_assert!(
+                        f(cell.lo) <= q && q <= f(cell.hi),
+                        "P0^{i} delta_a^{j}: {cell:?} misses {q}"
+                    );
+                    if q == BigRational::from_integer(0.into()) && cell.lo != cell.hi {
+                        // Only a cancellation may leave a nonzero width around zero.
+                        proptest::prop_assert!(cell.width() < 1e-10 * 2f64.powi(12 * scale.abs()));
+                    }
+                }
+            }
         }
     }
 }

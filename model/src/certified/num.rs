@@ -38,6 +38,13 @@ pub trait Num:
     fn meet(self, o: Self) -> Option<Self>;
     /// The square root, or `None` when the value may be negative.
     fn sqrt(self) -> Option<Self>;
+    /// The enclosure alone, when that is all the number carries (an [`I`]; `None` for a
+    /// [`Dual`], whose gradient a plain enclosure would drop): what allows evaluations in f64
+    /// with a rounding error bound instead of interval operations
+    /// ([`super::compiled::Compiled::lift`]).
+    fn interval(&self) -> Option<I> {
+        None
+    }
     /// `self^k`.
     fn powi(self, k: u32) -> Self {
         match k {
@@ -80,6 +87,9 @@ impl Num for I {
     }
     fn powi(self, k: u32) -> I {
         I::powi(self, k)
+    }
+    fn interval(&self) -> Option<I> {
+        Some(*self)
     }
 }
 

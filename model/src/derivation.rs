@@ -620,12 +620,12 @@ impl TrimGroups {
     }
 
     /// Step 8 with coefficient `i` (of [`TrimGroups::coefficients`]) lifted by `lift`.
-    pub fn clear_by<C: Clearing>(
+    pub fn clear_by<C: Clearing, L: std::borrow::Borrow<C::Value>>(
         &self,
         ring: &mut C,
         num: &[C::Value],
         den: &C::Value,
-        lift: impl FnMut(&mut C, usize) -> C::Value,
+        lift: impl FnMut(&mut C, usize) -> L,
     ) -> C::Value {
         let mut products = TrimProducts::new(ring, den, self.k);
         self.clear_with(ring, num, den, &mut products, lift)
@@ -633,14 +633,14 @@ impl TrimGroups {
 
     /// Step 8 on the trim `num / den` with the products of that trim kept in `products`
     /// (extended and reused; always the same trim for the same `products`), coefficient `i`
-    /// lifted by `lift`.
-    pub fn clear_with<C: Clearing>(
+    /// lifted by `lift` (as a value of the ring, or a reference to one that is kept elsewhere).
+    pub fn clear_with<C: Clearing, L: std::borrow::Borrow<C::Value>>(
         &self,
         ring: &mut C,
         num: &[C::Value],
         den: &C::Value,
         products: &mut TrimProducts<C::Value>,
-        mut lift: impl FnMut(&mut C, usize) -> C::Value,
+        mut lift: impl FnMut(&mut C, usize) -> L,
     ) -> C::Value {
         assert!(num.len() <= 8, "at most eight trim quantities");
         let mut acc = ring.lift(&Poly::zero());
@@ -648,7 +648,7 @@ impl TrimGroups {
             debug_assert_eq!(e.len(), num.len(), "one exponent per trim quantity");
             let at = products.index(ring, num, den, self.k - e.iter().sum::<u32>(), e);
             let c = lift(ring, i);
-            ring.add_product(&mut acc, &c, products.get(at));
+            ring.add_product(&mut acc, c.borrow(), products.get(at));
         }
         acc
     }

@@ -36,19 +36,21 @@ pub struct I {
 
 /// The next double below `x` (`x` itself for -inf and NaN).
 pub fn next_down(x: f64) -> f64 {
-    if x.is_nan() || x == f64::NEG_INFINITY {
-        return x;
-    }
-    if x == 0.0 {
-        return -f64::from_bits(1);
-    }
-    let b = x.to_bits();
-    f64::from_bits(if x > 0.0 { b - 1 } else { b + 1 })
+    -next_up(-x)
 }
 
-/// The next double above `x`.
+/// The next double above `x` (`x` itself for +inf and NaN; the smallest positive double for
+/// either zero). Every interval operation rounds its ends out by this, so it is written to be
+/// cheap: one predictable branch, then a step of one in the bits towards +inf (up for a
+/// positive double, down for a negative one), `-0` first made `+0`.
 pub fn next_up(x: f64) -> f64 {
-    -next_down(-x)
+    if x.is_nan() || x == f64::INFINITY {
+        return x;
+    }
+    // -0 + 0 = +0 in round-to-nearest; every other value is unchanged.
+    let b = (x + 0.0).to_bits() as i64;
+    // +1 for a sign bit clear, -1 for one set.
+    f64::from_bits(b.wrapping_add((b >> 63) | 1) as u64)
 }
 
 impl I {
@@ -82,6 +84,11 @@ impl I {
 
     /// The tightest double interval containing the exact rational `q`.
     pub fn from_q(q: &BigRational) -> I {
+        I::from_small_q(q).unwrap_or_else(|| I::from_big_q(q))
+    }
+
+    /// [`I::from_q`] in big integers: `q = n / d` against `x = m 2^e` exactly.
+    fn from_big_q(q: &BigRational) -> I {
         let x = q.to_f64().unwrap_or(f64::NAN);
         if !x.is_finite() {
             return I::entire();
@@ -100,6 +107,35 @@ impl I {
             std::cmp::Ordering::Greater => I::new(x, next_up(x)),
             std::cmp::Ordering::Less => I::new(next_down(x), x),
         }
+    }
+
+    /// [`I::from_q`] for `n / d` with `|n|` and `d` below 2^53 (the data of every aircraft file
+    /// written in decimals), without big integers: `x = fl(n / d)` is the nearest double, and
+    /// the exact sign of `n - x d` says on which side of it `q` lies. `x d` is split exactly
+    /// into `p + e` (Dekker's product, no overflow or underflow here: `x d` is within a factor
+    /// `1 + 2^-52` of `n`, an integer), and `n - p` is exact (within a factor two of each
+    /// other, Sterbenz), so the sign of `(n - p) - e` is that of `n - x d`.
+    fn from_small_q(q: &BigRational) -> Option<I> {
+        const LIMIT: i64 = 1 << 53;
+        let (n, d) = (q.numer().to_i64()?, q.denom().to_i64()?);
+        if !(n.abs() < LIMIT && d > 0 && d < LIMIT) {
+            return None;
+        }
+        if n == 0 {
+            return Some(I::point(0.0));
+        }
+        let (nf, df) = (n as f64, d as f64);
+        let x = nf / df;
+        let p = x * df;
+        let e = exact_product_error(x, df, p);
+        let r = (nf - p) - e;
+        Some(if r == 0.0 {
+            I::point(x)
+        } else if r > 0.0 {
+            I::new(x, next_up(x))
+        } else {
+            I::new(next_down(x), x)
+        })
     }
 
     /// The enclosure of `[lo, hi]` for exact ends.
@@ -286,15 +322,21 @@ impl Neg for I {
     }
 }
 
-/// `a * b` when it is exact in f64 (Dekker's product error is zero), so that products of
-/// exact values stay points.
-fn exact_product(a: f64, b: f64) -> Option<f64> {
-    // Veltkamp's split into halves of 26 bits (valid away from overflow).
+/// `a b - p` for `p = fl(a b)`, exactly (Dekker's product with Veltkamp's split into halves
+/// of 26 bits; valid away from overflow and underflow).
+fn exact_product_error(a: f64, b: f64, p: f64) -> f64 {
     fn split(x: f64) -> (f64, f64) {
         let c = 134_217_729.0 * x; // 2^27 + 1
         let hi = c - (c - x);
         (hi, x - hi)
     }
+    let ((ah, al), (bh, bl)) = (split(a), split(b));
+    ((ah * bh - p) + ah * bl + al * bh) + al * bl
+}
+
+/// `a * b` when it is exact in f64 (Dekker's product error is zero), so that products of
+/// exact values stay points.
+fn exact_product(a: f64, b: f64) -> Option<f64> {
     let p = a * b;
     // Near underflow Dekker's error term underflows too (a product that rounds to zero would
     // read as exact): only a zero factor makes a product that small exact here.
@@ -302,9 +344,7 @@ fn exact_product(a: f64, b: f64) -> Option<f64> {
     if !p.is_finite() || a.abs() > 1e300 || b.abs() > 1e300 || tiny {
         return None;
     }
-    let ((ah, al), (bh, bl)) = (split(a), split(b));
-    let err = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-    (err == 0.0).then_some(p)
+    (exact_product_error(a, b, p) == 0.0).then_some(p)
 }
 
 impl Mul for I {
@@ -331,6 +371,60 @@ impl Mul for I {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Small rationals are rounded without big integers exactly as with them.
+    #[test]
+    fn small_rationals_round_as_in_big_integers() {
+        let mut bits = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            bits ^= bits << 13;
+            bits ^= bits >> 7;
+            bits ^= bits << 17;
+            bits
+        };
+        for k in 0..200_000 {
+            let limit = 1i64 << [53, 20, 7, 53][k % 4];
+            let n = (next() % (2 * limit as u64 - 1)) as i64 - (limit - 1);
+            let d = 1 + (next() % (limit as u64 - 1)) as i64;
+            let q = BigRational::new(n.into(), d.into());
+            let small = I::from_small_q(&q).expect("within 2^53");
+            assert_eq!(small, I::from_big_q(&q), "{n}/{d}");
+        }
+        let big = BigRational::new((1i64 << 53).into(), 3.into());
+        assert!(I::from_small_q(&big).is_none());
+    }
+
+    /// The neighbours are the standard library's (`f64::next_up`, `f64::next_down`) on the
+    /// special values and on doubles of every binade and sign.
+    #[test]
+    fn neighbours_are_the_standard_ones() {
+        let mut xs = vec![
+            0.0,
+            -0.0,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MAX,
+            -f64::MAX,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            f64::from_bits(1),
+            -f64::from_bits(1),
+            1.0,
+            -1.0,
+        ];
+        let mut bits = 0x9e37_79b9_7f4a_7c15u64;
+        for _ in 0..100_000 {
+            bits ^= bits << 13;
+            bits ^= bits >> 7;
+            bits ^= bits << 17;
+            xs.push(f64::from_bits(bits));
+        }
+        for x in xs {
+            let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+            assert!(same(next_up(x), x.next_up()), "next_up({x:e})");
+            assert!(same(next_down(x), x.next_down()), "next_down({x:e})");
+        }
+    }
 
     #[test]
     fn enclosures_contain_the_exact_results() {

@@ -25,7 +25,10 @@ const POWERS: usize = 8;
 /// of powers for each symbol with a value, and none for the others.
 #[derive(Clone, Debug)]
 pub struct Table<T> {
-    rows: Vec<[T; POWERS + 1]>,
+    /// The values, in symbol order.
+    values: Vec<T>,
+    /// Their powers, made on first use (the lift in f64 reads [`Table::relative`] instead).
+    rows: std::sync::OnceLock<Vec<[T; POWERS + 1]>>,
     /// The row of each symbol, [`NO_VALUE`] for a symbol without one.
     row_of: [u8; MAX_SYMS],
     /// The same powers as midpoints with relative radii, when every value is a plain enclosure
@@ -50,19 +53,19 @@ struct Relative {
 }
 
 impl Relative {
-    /// The relative form of the rows of powers `rows` (from their first powers), or `None`
-    /// when a value has none (a number that is more than an enclosure, an interval holding zero
-    /// without being the exact zero, one not finite).
+    /// The relative form of the powers of `values`, or `None` when a value has none (a number
+    /// that is more than an enclosure, an interval holding zero without being the exact zero,
+    /// one not finite).
     ///
     /// The power `e` is the computed product `m_e` of `e` copies of `m = m_1`, and
     /// `x^e = m_e prod (1 + h_i)` over the `e` relative errors of `x` and the `e - 1`
     /// roundings: their sum `eps_e = e eps + (e - 1) u` (rounded up) bounds them as one
     /// relative radius does in the bound of [`Compiled::lift_rounded`].
-    fn new<T: Num>(rows: &[[T; POWERS + 1]]) -> Option<Relative> {
+    fn new<T: Num>(values: &[T]) -> Option<Relative> {
         let (mut eps, mut exponents) = (0.0f64, (0, 0));
-        let mut out = Vec::with_capacity(rows.len());
-        for row in rows {
-            let (m, e1) = relative(row[1].interval()?)?;
+        let mut out = Vec::with_capacity(values.len());
+        for x in values {
+            let (m, e1) = relative(x.interval()?)?;
             let mut r = [(1.0, 0.0); POWERS + 1];
             r[1] = (m, e1);
             for e in 2..=POWERS {
@@ -117,18 +120,24 @@ impl<T: Num> Table<T> {
     /// The table of `values`, indexed by symbol (`None`: no value).
     pub fn new(values: &[Option<T>; MAX_SYMS]) -> Table<T> {
         let mut row_of = [NO_VALUE; MAX_SYMS];
-        let mut rows = Vec::with_capacity(values.iter().flatten().count());
+        let mut valued = Vec::with_capacity(values.iter().flatten().count());
         for (sym, v) in values.iter().enumerate() {
             if let Some(x) = v {
-                row_of[sym] = rows.len() as u8;
-                rows.push(Table::row(*x));
+                row_of[sym] = valued.len() as u8;
+                valued.push(*x);
             }
         }
         Table {
-            relative: Relative::new(&rows),
-            rows,
+            relative: Relative::new(&valued),
+            values: valued,
+            rows: std::sync::OnceLock::new(),
             row_of,
         }
+    }
+
+    fn rows(&self) -> &[[T; POWERS + 1]] {
+        self.rows
+            .get_or_init(|| self.values.iter().map(|x| Table::row(*x)).collect())
     }
 
     fn row(x: T) -> [T; POWERS + 1] {
@@ -144,7 +153,7 @@ impl<T: Num> Table<T> {
     }
 
     fn pow(&self, sym: u8, e: u8) -> T {
-        let Some(p) = self.rows.get(self.row_of[sym as usize] as usize) else {
+        let Some(p) = self.rows().get(self.row_of[sym as usize] as usize) else {
             // No value (a trim symbol, P0 or delta_a, which the compiled results never read; a
             // parameter folded into the coefficients, for a sample's table): the whole line
             // keeps any use of it honest.
@@ -313,7 +322,7 @@ impl Compiled {
     }
 
     /// The enclosure as a polynomial in P0 and delta_a: evaluated in f64 with a bound on its
-    /// rounding ([`Compiled::lift_rounded`]) where the table and the coefficients allow it,
+    /// rounding (`Compiled::lift_rounded`) where the table and the coefficients allow it,
     /// otherwise in interval arithmetic.
     pub fn lift<T: Num>(&self, table: &Table<T>) -> Dense2<T> {
         let mut cells = [I::point(0.0); MAX_CELLS];

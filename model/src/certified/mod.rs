@@ -52,6 +52,7 @@ pub use isolate::{
     real_roots_outside, Bracket, Uncertified,
 };
 use num::Num;
+use std::borrow::Cow;
 use std::cell::RefCell;
 
 /// The enclosures of an aircraft's data and controls (one per symbol of the model that has a
@@ -344,7 +345,11 @@ trait Mode: Clearing {
     /// Coefficients of the polynomials in delta_a.
     type Coef: Coeff;
     /// A lifted result as a value of the ring.
-    fn lifted(&self, p: &Dense2<Self::Num>) -> Self::Value;
+    fn lifted(&self, p: &Dense2<Self::Num>) -> Self::Value {
+        self.lifted_ref(p).into_owned()
+    }
+    /// [`Mode::lifted`], borrowed where the value is the lifted result itself.
+    fn lifted_ref<'a>(&self, p: &'a Dense2<Self::Num>) -> Cow<'a, Self::Value>;
     /// The coefficients of `delta_a^0, delta_a^1, ...` (trailing exact zeros dropped).
     fn in_aileron(v: &Self::Value) -> Vec<Self::Coef>;
     /// Step 8 of a grouped result whose group coefficients are `lifted`, on the trim of
@@ -361,7 +366,7 @@ trait Mode: Clearing {
         Self: Sized,
     {
         c.groups
-            .clear_with(self, num, den, products, |m, i| m.lifted(&lifted[i]))
+            .clear_with(self, num, den, products, |m, i| m.lifted_ref(&lifted[i]))
     }
     /// The value when delta_a does not occur.
     fn univariate(v: &Self::Value) -> Result<Self::Coef, Uncertified> {
@@ -413,8 +418,8 @@ impl<T: Num> Clearing for InP0<T> {
 impl<T: Num> Mode for InP0<T> {
     type Num = T;
     type Coef = Dense<T>;
-    fn lifted(&self, p: &Dense2<T>) -> Dense2<T> {
-        p.clone()
+    fn lifted_ref<'a>(&self, p: &'a Dense2<T>) -> Cow<'a, Dense2<T>> {
+        Cow::Borrowed(p)
     }
     fn in_aileron(v: &Dense2<T>) -> Vec<Dense<T>> {
         v.0.clone()
@@ -475,15 +480,15 @@ impl<T: Num> Clearing for AtP0<T> {
 impl<T: Num> Mode for AtP0<T> {
     type Num = T;
     type Coef = Scalar<T>;
-    fn lifted(&self, p: &Dense2<T>) -> Da<T> {
+    fn lifted_ref<'a>(&self, p: &'a Dense2<T>) -> Cow<'a, Da<T>> {
         if p.0.len() > 4 {
-            return Da::anything();
+            return Cow::Owned(Da::anything());
         }
         let mut out = [T::constant(I::point(0.0)); 4];
         for (o, c) in out.iter_mut().zip(&p.0) {
             *o = c.eval(self.0);
         }
-        Da::new(out)
+        Cow::Owned(Da::new(out))
     }
     fn in_aileron(v: &Da<T>) -> Vec<Scalar<T>> {
         v.c[..v.len].iter().map(|c| Scalar(*c)).collect()

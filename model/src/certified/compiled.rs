@@ -36,10 +36,12 @@ pub struct Table<T> {
     relative: Option<Relative>,
 }
 
-/// A table's powers `x^e` as f64 midpoints `m` with relative radii `eps` (`x^e = m (1 + h)`
-/// with `|h| <= eps`, for every real in the enclosure), for [`Compiled::lift`]'s evaluation in
-/// f64 with a rounding error bound: the same enclosure as interval arithmetic gives, at a
-/// fraction of the cost.
+/// A table's powers `x^e` as f64 midpoints `m_e` with relative bounds `eps_e`
+/// (`x^e = m_e prod (1 + h_i)` with `sum |h_i| <= eps_e`, for every real in the enclosure: for
+/// `e = 1` a relative radius, for higher powers the sum of the value's and the roundings'
+/// relative errors, see [`Relative::new`]), for [`Compiled::lift`]'s evaluation in f64 with a
+/// rounding error bound: an enclosure as tight as interval arithmetic gives, at a fraction of
+/// the cost.
 #[derive(Clone, Debug)]
 struct Relative {
     rows: Vec<[(f64, f64); POWERS + 1]>,
@@ -214,16 +216,19 @@ impl RelativeTerms {
             .iter()
             .map(|t| {
                 let (m, eps) = relative(t.coef)?;
-                // Terms are nonzero: a zero coefficient has no term.
-                let (lo, hi) = binary_exponents(m);
-                exponents = (exponents.0.min(lo), exponents.1.max(hi));
+                // An exact zero coefficient (a folded term whose folded data are zero) makes its
+                // term exactly zero, whatever its factors.
+                if m != 0.0 {
+                    let (lo, hi) = binary_exponents(m);
+                    exponents = (exponents.0.min(lo), exponents.1.max(hi));
+                }
                 max_power =
                     max_power.max(t.factors.iter().map(|f| f.1 as usize).max().unwrap_or(0));
                 max_degree = max_degree.max(t.factors.iter().map(|f| f.1 as usize).sum());
                 // Rounded to nearest, then up by an ulp: above the exact value.
                 let s = crate::interval::next_up(eps + (t.factors.len() + 1) as f64 * UNIT);
                 sigma = sigma.max(s);
-                (m != 0.0).then_some((m, s))
+                Some((m, s))
             })
             .collect::<Option<Vec<_>>>()?;
         Some(RelativeTerms {
@@ -249,7 +254,7 @@ const MAX_SIGMA: f64 = 1.0 / (1u64 << 20) as f64;
 const MAX_EXPONENT: i32 = 900;
 
 /// The most coefficients (in P0 and delta_a) the lift in f64 evaluates on the stack.
-const MAX_CELLS: usize = 64;
+const MAX_CELLS: usize = 16;
 
 /// The most factors of a term the lift in f64 takes.
 const MAX_DEPTH: usize = 24;
@@ -361,11 +366,16 @@ impl Compiled {
     /// `a (1 + 2^-19) + u b` of `s`, `a = sum |t~| sigma`. `a`, `b` and the `sigma` are computed
     /// from nonnegative terms in round-to-nearest, each low by a relative `(n + k + 3) u` at
     /// most (`n` terms per cell, fewer than 2^20); the factor `1 + 2^-10` covers all of it and
-    /// the two roundings of the radius itself, and the ends are pushed out by an ulp.
+    /// the two roundings of the radius itself, and the ends are pushed out by an ulp. (The
+    /// count is generous: the first factor's product with 1 is exact; `b u` is exact unless
+    /// every partial sum is below about `2^-969`, when the additions were exact too; the
+    /// `MAX_SIGMA` test is itself rounded, and the exponential bound holds far beyond it.)
     ///
-    /// A cell all of whose terms hold an exact zero factor (a parameter that is exactly zero)
-    /// comes out as the exact zero, as in interval arithmetic: structural zeros stay exact, so
-    /// that degrees stay exact.
+    /// A cell all of whose terms hold an exact zero factor or coefficient (a parameter that is
+    /// exactly zero) comes out as the exact zero, as in interval arithmetic: structural zeros
+    /// stay exact, so that degrees stay exact. Unlike interval arithmetic, terms of exact data
+    /// that cancel exactly give a small interval around zero, not the exact zero: sound, and
+    /// at worst a coefficient that may vanish, which sends the aircraft to the exact path.
     fn lift_rounded(
         &self,
         row_of: &[u8; MAX_SYMS],
@@ -689,7 +699,8 @@ mod tests {
     proptest::proptest! {
         /// The lift in f64 with its rounding bound encloses the exact coefficients, in
         /// rationals, of random polynomials at random exact data (doubles, values no double
-        /// holds, exact zeros) and coefficients (integers, thirds), over magnitudes from tiny to huge; exact zeros stay exact, the
+        /// holds, exact zeros; enclosed to an ulp or widened) and coefficients (integers,
+        /// thirds), over magnitudes from tiny to huge; exact zeros stay exact, the
         /// enclosures stay as tight as a few ulps of the terms' magnitudes, and the evaluation
         /// is taken wherever the magnitudes allow it.
         #[test]
@@ -699,6 +710,7 @@ mod tests {
             data in proptest::collection::vec((0.5f64..1.0, -3i32..3, 0u8..3), 4),
             scale in proptest::sample::select(vec![0, 20, -20, 60, -60, 130, -130]),
             sign in proptest::collection::vec(proptest::bool::ANY, 4),
+            widen in proptest::sample::select(vec![0.0, 1e-12, 1e-9]),
         ) {
             let data: Vec<(f64, i32, u8)> = data
                 .iter()
@@ -709,7 +721,18 @@ mod tests {
             let compiled = Compiled::new(&poly);
             let mut by_symbol = [None; MAX_SYMS];
             for (sym, q) in &values {
-                by_symbol[sym.index()] = Some(I::from_q(&q.to_big()));
+                // Widened by a relative `widen` (as a box of uncertain data would be): the
+                // exact value stays inside.
+                let i = I::from_q(&q.to_big());
+                let w = |x: f64| x.abs() * widen;
+                by_symbol[sym.index()] = Some(if i.is_exact_zero() {
+                    i
+                } else {
+                    I::new(
+                        crate::interval::next_down(i.lo - w(i.lo)),
+                        crate::interval::next_up(i.hi + w(i.hi)),
+                    )
+                });
             }
             let table = Table::new(&by_symbol);
             let mut out = [I::point(0.0); MAX_CELLS];

@@ -90,6 +90,7 @@ impl<T: Num> Dense<T> {
         }
         let n = a.0.len() + b.0.len() - 1;
         if self.0.len() < n {
+            grow(&mut self.0, n);
             self.0.resize(n, T::constant(I::point(0.0)));
         }
         for (i, x) in a.0.iter().enumerate() {
@@ -404,6 +405,15 @@ impl<'a> PointEnclosure<'a> {
     }
 }
 
+/// Room for `n` coefficients in an accumulator of products (step 8's sums grow term by term
+/// from nothing): at least eight, so that the criterion's sums (degree at most 12 in P0, 2 in
+/// delta_a) rarely move.
+fn grow<T>(v: &mut Vec<T>, n: usize) {
+    if v.capacity() < n {
+        v.reserve_exact(n.max(8).max(2 * v.capacity()) - v.len());
+    }
+}
+
 /// A polynomial in P0 and delta_a with interval coefficients.
 pub type IPoly2 = Dense2<I>;
 
@@ -466,6 +476,7 @@ impl<T: Num> Dense2<T> {
         }
         let n = a.0.len() + b.0.len() - 1;
         if self.0.len() < n {
+            grow(&mut self.0, n);
             self.0.resize(n, Dense::zero());
         }
         for (i, x) in a.0.iter().enumerate() {

@@ -416,6 +416,9 @@ fn isolate_positive(c: &[I]) -> Result<Vec<(f64, f64)>, Uncertified> {
         return Ok(Vec::new());
     }
     let p = IPoly::new(c.to_vec());
+    if let Some(found) = low_degree(&p) {
+        return Ok(found);
+    }
     let k = [0, 1, -1, 2, -2, 3, -3]
         .into_iter()
         .find(|k| !p.eval(I::point(2f64.powi(*k))).contains_zero())
@@ -439,6 +442,70 @@ fn isolate_positive(c: &[I]) -> Result<Vec<(f64, f64)>, Uncertified> {
         out.push((lo, hi));
     }
     Ok(out)
+}
+
+/// [`isolate_positive`] in closed form for degrees 1 and 2 (det A, the zero-sideslip
+/// determinant and d, in `P0^2`), where interval arithmetic decides; `None` sends the
+/// polynomial to the bisection.
+///
+/// Descartes' rule of signs counts the positive roots of every polynomial in the enclosures at
+/// once when the coefficients' signs are certain: none for no sign change, exactly one for
+/// one. For two sign changes there are two or none: none when the discriminant
+/// `c1^2 - 4 c0 c2` is certainly negative, two (distinct, and positive) when it is certainly
+/// positive. The roots are enclosed by the stable formulas `q / c2` and `c0 / q`,
+/// `q = -(c1 + sign(c1) sqrt(D)) / 2` (`-c0 / c1` for degree 1, `sqrt(-c0 / c2)` for
+/// `c1 = 0`), evaluated in intervals: they hold the roots of every polynomial in the box. Each
+/// enclosure, widened by a relative `2^-30`, is an isolating interval if the polynomial's
+/// value has certain, opposite signs at its ends (which refinement needs) and the intervals
+/// are disjoint.
+fn low_degree(p: &IPoly) -> Option<Vec<(f64, f64)>> {
+    let c = p.coeffs();
+    let widen = 1.0 / (1u64 << 30) as f64;
+    let bracket = |r: I| -> Option<(f64, f64)> {
+        let (lo, hi) = (next_down(r.lo - r.lo * widen), next_up(r.hi + r.hi * widen));
+        let (a, b) = (p.eval(I::point(lo)).sign()?, p.eval(I::point(hi)).sign()?);
+        (lo > 0.0 && hi.is_finite() && a != b).then_some((lo, hi))
+    };
+    let signs: Vec<Option<f64>> = c
+        .iter()
+        .filter(|x| !x.is_exact_zero())
+        .map(|x| x.sign())
+        .collect();
+    let changes = sign_changes(signs.iter().copied())?;
+    if changes == 0 {
+        return Some(Vec::new());
+    }
+    let mut roots: Vec<I> = match c {
+        [c0, c1] => vec![(-*c0).checked_div(*c1)?],
+        [c0, c1, c2] if c1.is_exact_zero() => vec![I::sqrt((-*c0).checked_div(*c2)?)?],
+        [c0, c1, c2] => {
+            let d = c1.sqr() - I::point(4.0) * *c0 * *c2;
+            if d.hi < 0.0 {
+                return (changes == 2).then(Vec::new);
+            }
+            if d.lo.is_nan() || d.lo <= 0.0 {
+                return None;
+            }
+            let root = d.sqrt()?;
+            let q = -(*c1 + root * I::point(c1.sign()?)).scale2(-1);
+            vec![q.checked_div(*c2)?, c0.checked_div(q)?]
+        }
+        _ => return None,
+    };
+    // The negative roots (two roots of opposite signs for one sign change) are not asked for.
+    roots.retain(|r| r.hi >= 0.0);
+    if roots.len() != changes {
+        return None;
+    }
+    let mut out = roots
+        .into_iter()
+        .map(bracket)
+        .collect::<Option<Vec<(f64, f64)>>>()?;
+    out.sort_by(|x, y| x.0.total_cmp(&y.0));
+    if out.windows(2).any(|w| w[0].1 >= w[1].0) {
+        return None;
+    }
+    Some(out)
 }
 
 /// Fujiwara's bound, `2 max |a_{n-i} / a_n|^(1/i)` (every root modulus is below it), rounded up
@@ -1150,6 +1217,64 @@ mod tests {
                             node.c[j]
                         );
                     }
+                }
+            }
+        }
+    }
+
+    proptest::proptest! {
+        /// Degrees 1 and 2 in closed form: every answer counts the exact positive roots (in
+        /// rationals: Descartes' count and the discriminant's sign) of the polynomial at the
+        /// enclosures' lower ends, upper ends and midpoints, and each bracket holds a sign
+        /// change of each; refusals only where the enclosures decide nothing.
+        #[test]
+        fn closed_forms_isolate_the_exact_positive_roots(
+            c in proptest::collection::vec((-1.0f64..1.0, -6i32..6, 0u8..4), 2..4),
+            rel in proptest::sample::select(vec![0.0, 1e-15, 1e-6]),
+        ) {
+            use num_rational::BigRational;
+            let q = |v: f64| BigRational::from_float(v).expect("finite");
+            let zero = || BigRational::from_integer(0.into());
+            let last = c.len() - 1;
+            let box_: Vec<I> = c
+                .iter()
+                .enumerate()
+                .map(|(i, (m, e, kind))| {
+                    let m = m * 10f64.powi(*e);
+                    // The middle coefficient of a quadratic may be an exact zero.
+                    if *kind == 0 && i != 0 && i != last {
+                        return I::point(0.0);
+                    }
+                    I::new(m - m.abs() * rel, m + m.abs() * rel)
+                })
+                .collect();
+            proptest::prop_assume!(!box_[0].contains_zero() && !box_[last].contains_zero());
+            let Some(found) = low_degree(&IPoly::new(box_.clone())) else {
+                return Ok(());
+            };
+            for pick in 0..3 {
+                let e: Vec<BigRational> = box_
+                    .iter()
+                    .map(|x| match pick {
+                        0 => q(x.lo),
+                        1 => q(x.hi),
+                        _ => (q(x.lo) + q(x.hi)) / BigRational::from_integer(2.into()),
+                    })
+                    .collect();
+                let value = |x: f64| e.iter().rev().fold(zero(), |acc, c| acc * q(x) + c);
+                let positive = if e.len() == 2 {
+                    usize::from(e[0].clone() * &e[1] < zero())
+                } else {
+                    let d = e[1].clone() * &e[1] - BigRational::from_integer(4.into()) * &e[0] * &e[2];
+                    let changes = super::sign_changes(
+                        e.iter().filter(|x| **x != zero()).map(|x| Some(if *x > zero() { 1.0 } else { -1.0 })),
+                    )
+                    .expect("exact signs");
+                    if changes == 2 && d < zero() { 0 } else { changes }
+                };
+                proptest::prop_assert_eq!(found.len(), positive, "{:?} at {:?}", found, e);
+                for (lo, hi) in &found {
+                    proptest::prop_assert!(value(*lo) * value(*hi) < zero(), "no sign change on [{lo}, {hi}]");
                 }
             }
         }

@@ -109,16 +109,18 @@ impl I {
         }
     }
 
-    /// [`I::from_q`] for `n / d` with `|n|` and `d` below 2^53 (the data of every aircraft file
-    /// written in decimals), without big integers: `x = fl(n / d)` is the nearest double, and
-    /// the exact sign of `n - x d` says on which side of it `q` lies. `x d` is split exactly
-    /// into `p + e` (Dekker's product, no overflow or underflow here: `x d` is within a factor
-    /// `1 + 2^-52` of `n`, an integer), and `n - p` is exact (within a factor two of each
+    /// [`I::from_q`] for `n / d` with `|n|` and `d` below 2^53 (typical aircraft data: a
+    /// decimal with at most 15 digits, integers and simple fractions; longer decimals take the
+    /// big-integer path of [`I::from_q`]), without big integers: `x = fl(n / d)` is the
+    /// nearest double (normal: `|x| > 2^-53` as `|n| >= 1` and `d < 2^53`), and the exact sign
+    /// of `n - x d` says on which side of it `q` lies. `x d` is split exactly into `p + e`
+    /// (Dekker's product; no overflow or underflow here: `x d` is within a relative `2^-53` of
+    /// `n`, a nonzero integer below 2^53), and `n - p` is exact (within a factor two of each
     /// other, Sterbenz), so the sign of `(n - p) - e` is that of `n - x d`.
     fn from_small_q(q: &BigRational) -> Option<I> {
         const LIMIT: i64 = 1 << 53;
         let (n, d) = (q.numer().to_i64()?, q.denom().to_i64()?);
-        if !(n.abs() < LIMIT && d > 0 && d < LIMIT) {
+        if !(n.unsigned_abs() < LIMIT as u64 && d > 0 && d < LIMIT) {
             return None;
         }
         if n == 0 {
@@ -392,6 +394,9 @@ mod tests {
         }
         let big = BigRational::new((1i64 << 53).into(), 3.into());
         assert!(I::from_small_q(&big).is_none());
+        let most_negative = BigRational::new(i64::MIN.into(), 7.into());
+        assert!(I::from_small_q(&most_negative).is_none());
+        assert_eq!(I::from_q(&most_negative), I::from_big_q(&most_negative));
     }
 
     /// The neighbours are the standard library's (`f64::next_up`, `f64::next_down`) on the

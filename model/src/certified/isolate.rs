@@ -439,6 +439,10 @@ fn isolate_positive(c: &[I]) -> Result<Vec<(f64, f64)>, Uncertified> {
     for (tl, tr) in isolate_unit(&reverse)? {
         let lo = next_down(s / tr);
         let hi = if tl == 0.0 { bound } else { next_up(s / tl) };
+        // A root bound that overflows leaves the last root unbounded: no answer to refine.
+        if !hi.is_finite() {
+            return Err(Uncertified::Wide);
+        }
         out.push((lo, hi));
     }
     Ok(out)
@@ -1226,10 +1230,11 @@ mod tests {
         /// Degrees 1 and 2 in closed form: every answer counts the exact positive roots (in
         /// rationals: Descartes' count and the discriminant's sign) of the polynomial at the
         /// enclosures' lower ends, upper ends and midpoints, and each bracket holds a sign
-        /// change of each; refusals only where the enclosures decide nothing.
+        /// change of each; the brackets are finite, positive, sorted and disjoint. A refusal
+        /// (`None`) is always allowed: the bisection takes the polynomial.
         #[test]
         fn closed_forms_isolate_the_exact_positive_roots(
-            c in proptest::collection::vec((-1.0f64..1.0, -6i32..6, 0u8..4), 2..4),
+            c in proptest::collection::vec((-1.0f64..1.0, -40i32..40, 0u8..4), 2..4),
             rel in proptest::sample::select(vec![0.0, 1e-15, 1e-6]),
         ) {
             use num_rational::BigRational;
@@ -1252,6 +1257,12 @@ mod tests {
             let Some(found) = low_degree(&IPoly::new(box_.clone())) else {
                 return Ok(());
             };
+            for (k, (lo, hi)) in found.iter().enumerate() {
+                proptest::prop_assert!(0.0 < *lo && lo < hi && hi.is_finite(), "{:?}", found);
+                if k > 0 {
+                    proptest::prop_assert!(found[k - 1].1 < *lo, "overlap in {:?}", found);
+                }
+            }
             for pick in 0..3 {
                 let e: Vec<BigRational> = box_
                     .iter()
@@ -1404,5 +1415,23 @@ mod tests {
         assert_eq!(positive_roots(&z), Err(Uncertified::Degenerate));
         // No positive roots: x^2 + 1.
         assert_eq!(positive_roots(&p(&[1.0, 0.0, 1.0])), Ok(Vec::new()));
+    }
+
+    /// A root beyond the range of doubles' bound: -1e10 + 1e-300 x^3 has its root near
+    /// 2.2e103, but the root bound overflows; a bracket is finite or the answer is an error.
+    #[test]
+    fn brackets_are_finite_or_refused() {
+        let c = p(&[-1e10, 0.0, 0.0, 1e-300]);
+        match positive_roots(&c) {
+            Ok(found) => {
+                for b in &found {
+                    assert!(
+                        b.lo.is_finite() && b.hi.is_finite() && b.value.is_finite(),
+                        "{b:?}"
+                    );
+                }
+            }
+            Err(e) => assert_eq!(e, Uncertified::Wide),
+        }
     }
 }

@@ -724,6 +724,21 @@ impl Node {
         Some(())
     }
 
+    /// A split weight in `(0, 1)` between the first two zero crossings of the control polygon
+    /// (the points `(j / n, m_j)`), rounded to a multiple of 1/16, when there are two: the
+    /// roots sit near the crossings, so splitting there tends to separate the first root
+    /// from the others at once. A heuristic for speed only: any split is sound.
+    fn guide(&self) -> Option<f64> {
+        let n = (self.c.len() - 1) as f64;
+        let mut crossings = self.c.windows(2).enumerate().filter_map(|(j, w)| {
+            let (m0, m1) = (w[0].0, w[1].0);
+            ((m0 < 0.0) != (m1 < 0.0) && m0 != m1).then(|| (j as f64 + m0 / (m0 - m1)) / n)
+        });
+        let (x1, x2) = (crossings.next()?, crossings.next()?);
+        let t = (8.0 * (x1 + x2)).round() / 16.0;
+        (t > 0.0 && t < 1.0 && t.is_finite()).then_some(t)
+    }
+
     /// Sign changes of the coefficients, all of whose signs are certain; `None` if some sign
     /// is not.
     fn variations(&self) -> Option<usize> {
@@ -815,13 +830,17 @@ fn isolate_unit_ends(
             }
             _ => {}
         }
-        // Split where the value has a certain sign, so that no root sits on the split point.
-        let (t, (l, r)) = [0.5, 0.4375, 0.5625, 0.375, 0.625]
+        // Split between the first two roots the control polygon suggests, else near the
+        // middle; always where the value has a certain sign, so that no root sits on the split
+        // point, and where the split point is exact.
+        let (tm, (l, r)) = b
+            .guide()
             .into_iter()
-            .map(|t| (t, b.split(t, &mut w)))
+            .chain([0.5, 0.4375, 0.5625, 0.375, 0.625])
+            .filter_map(|t| split_point(tl, tr, t).map(|tm| (tm, t)))
+            .map(|(tm, t)| (tm, b.split(t, &mut w)))
             .find(|(_, (l, _))| l.sign(l.c.len() - 1).is_some())
             .ok_or(Uncertified::Sign)?;
-        let tm = split_point(tl, tr, t).ok_or(Uncertified::Budget)?;
         stack.push((tm, tr, r, depth + 1));
         stack.push((tl, tm, l, depth + 1));
     }

@@ -833,11 +833,18 @@ fn isolate_unit_ends(
         // Split between the first two roots the control polygon suggests, else near the
         // middle; always where the value has a certain sign, so that no root sits on the split
         // point, and where the split point is exact.
-        let (tm, (l, r)) = b
+        let at = |t: f64| split_point(tl, tr, t).map(|tm| (tm, t));
+        let guided = b
             .guide()
+            .and_then(at)
+            .filter(|(tm, _)| keeps_bits(tl, *tm, tr));
+        let (tm, (l, r)) = guided
             .into_iter()
-            .chain([0.5, 0.4375, 0.5625, 0.375, 0.625])
-            .filter_map(|t| split_point(tl, tr, t).map(|tm| (tm, t)))
+            .chain(
+                [0.5, 0.4375, 0.5625, 0.375, 0.625]
+                    .into_iter()
+                    .filter_map(at),
+            )
             .map(|(tm, t)| (tm, b.split(t, &mut w)))
             .find(|(_, (l, _))| l.sign(l.c.len() - 1).is_some())
             .ok_or(Uncertified::Sign)?;
@@ -890,6 +897,33 @@ impl Local<'_> {
     fn df(&self, x: f64) -> f64 {
         self.df.eval(x - self.x0)
     }
+}
+
+/// Whether the split of `[tl, tr]` at `tm` leaves every end on the grid of `2^-20` of the
+/// width (rounded down to a power of two), so that at least 20 bisections of the children stay
+/// exact. A split at a sixteenth adds four bits to the ends but may shrink a node only to 15/16;
+/// near a cluster of roots, a run of such splits would use up the 53 bits of the ends within
+/// about 14 levels, after which no split point is exact and the node is refused. The guided
+/// split yields to bisection before that. In integers: the exponent of each end's lowest set
+/// bit against that of the width's leading bit (a width that is not a normal double: no
+/// guided split).
+fn keeps_bits(tl: f64, tm: f64, tr: f64) -> bool {
+    /// The exponent of the lowest set bit of `x` (`i32::MAX` for zero).
+    fn lowest_bit(x: f64) -> i32 {
+        let bits = x.to_bits();
+        let (exponent, mantissa) = (((bits >> 52) & 0x7ff) as i32, bits & ((1 << 52) - 1));
+        match (exponent, mantissa) {
+            (0, 0) => i32::MAX,
+            (0, m) => -1074 + m.trailing_zeros() as i32,
+            (e, m) => e - 1075 + (m | 1 << 52).trailing_zeros() as i32,
+        }
+    }
+    let w = tr - tl;
+    if !w.is_normal() {
+        return false;
+    }
+    let grid = ((w.to_bits() >> 52) & 0x7ff) as i32 - 1023 - 20;
+    [tl, tm, tr].iter().all(|x| lowest_bit(*x) >= grid)
 }
 
 /// `tl + t (tr - tl)` when it is exact in f64 and strictly inside `(tl, tr)`, else `None`. The
@@ -1220,12 +1254,13 @@ mod tests {
             rel in proptest::sample::select(vec![0.0, 1e-15, 1e-9, 1e-3]),
             scale in proptest::sample::select(SCALES.to_vec()),
             corner in proptest::collection::vec(proptest::bool::ANY, 24),
-            which in 0usize..5,
+            which in 0usize..15,
         ) {
             use num_rational::BigRational;
             let q = |v: f64| BigRational::from_float(v).expect("finite");
             let b = enclosures(&coefficients, rel, scale);
-            let t = [0.5, 0.4375, 0.5625, 0.375, 0.625][which];
+            // The guided splits' sixteenths (which include the fixed weights 0.4375 ... 0.625).
+            let t = (which + 1) as f64 / 16.0;
             let (left, right) = Node::of(&b).split(t, &mut Vec::new());
             let (left_right, _) = right.split(t, &mut Vec::new());
             for chosen in corners(&b, &corner) {
@@ -1308,6 +1343,31 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Guided splits keep 20 bits of the ends for bisection: a sixteenth of [0, 1] does; a
+    /// node of width 2^-10 whose end has a bit at 2^-45 (finer than its grid 2^-30) does not;
+    /// ends of every sign and zero are read by their lowest set bit.
+    #[test]
+    fn guided_splits_keep_bits_for_bisection() {
+        assert!(keeps_bits(0.0, 0.4375, 1.0));
+        assert!(keeps_bits(-1.0, -0.125, 1.0));
+        let tl = 0.5 + 2f64.powi(-45);
+        let tr = tl + 2f64.powi(-10);
+        assert!(!keeps_bits(tl, tl + 7.0 * 2f64.powi(-14), tr));
+        let tl = 0.5 + 2f64.powi(-30);
+        assert!(keeps_bits(
+            tl,
+            tl + 7.0 * 2f64.powi(-14),
+            tl + 2f64.powi(-10)
+        ));
+        // Width 2^-40: the grid is 2^-60, and ends that are multiples of 2^-60 pass.
+        let a = 2f64.powi(-20) + 2f64.powi(-60);
+        let b = a + 2f64.powi(-40);
+        assert!(keeps_bits(a, a + 2f64.powi(-41), b));
+        assert!(!keeps_bits(a, a + 2f64.powi(-61), b));
+        // A subnormal width: no guided split.
+        assert!(!keeps_bits(0.0, f64::from_bits(1), f64::from_bits(2)));
     }
 
     /// A split point is exact or there is no split: 7/16 of an interval whose width needs all
@@ -1434,6 +1494,28 @@ mod tests {
         assert_eq!(positive_roots(&z), Err(Uncertified::Degenerate));
         // No positive roots: x^2 + 1.
         assert_eq!(positive_roots(&p(&[1.0, 0.0, 1.0])), Ok(Vec::new()));
+    }
+
+    /// Two roots 1.8e-7 apart (0.62795908, 0.62795926) and a third at 1.8933: guided splits at
+    /// sixteenths alone would use up the bits of the nodes' ends near the pair (no exact split
+    /// point after 15 levels, found by review); yielding to bisection isolates all three.
+    #[test]
+    fn guided_splits_leave_clustered_roots_isolable() {
+        let c = [
+            -0.7465876718488366,
+            2.7721550534404242,
+            -3.149212077114739,
+            1.0,
+        ];
+        let found = positive_roots(&p(&c)).expect("bisection certifies these roots");
+        assert_eq!(found.len(), 3, "{found:?}");
+        for (b, (root, tolerance)) in
+            found
+                .iter()
+                .zip([(0.62795908, 5e-8), (0.62795926, 5e-8), (1.8932937, 1e-7)])
+        {
+            assert!((b.value - root).abs() < tolerance, "{b:?} against {root}");
+        }
     }
 
     /// A root beyond the range of doubles' bound: -1e10 + 1e-300 x^3 has its root near

@@ -736,7 +736,7 @@ impl Node {
         });
         let (x1, x2) = (crossings.next()?, crossings.next()?);
         let t = (8.0 * (x1 + x2)).round() / 16.0;
-        (t > 0.0 && t < 1.0 && t.is_finite()).then_some(t)
+        (t > 0.0 && t < 1.0).then_some(t)
     }
 
     /// Sign changes of the coefficients, all of whose signs are certain; `None` if some sign
@@ -904,25 +904,25 @@ impl Local<'_> {
 /// exact. A split at a sixteenth adds four bits to the ends but may shrink a node only to 15/16;
 /// near a cluster of roots, a run of such splits would use up the 53 bits of the ends within
 /// about 14 levels, after which no split point is exact and the node is refused. The guided
-/// split yields to bisection before that. In integers: the exponent of each end's lowest set
+/// split yields to bisection before that. In integers, from each double's `m 2^e`
+/// (`integer_decode`, as [`I::from_q`] reads doubles): the exponent of each end's lowest set
 /// bit against that of the width's leading bit (a width that is not a normal double: no
 /// guided split).
 fn keeps_bits(tl: f64, tm: f64, tr: f64) -> bool {
+    use num_traits::float::FloatCore;
     /// The exponent of the lowest set bit of `x` (`i32::MAX` for zero).
     fn lowest_bit(x: f64) -> i32 {
-        let bits = x.to_bits();
-        let (exponent, mantissa) = (((bits >> 52) & 0x7ff) as i32, bits & ((1 << 52) - 1));
-        match (exponent, mantissa) {
-            (0, 0) => i32::MAX,
-            (0, m) => -1074 + m.trailing_zeros() as i32,
-            (e, m) => e - 1075 + (m | 1 << 52).trailing_zeros() as i32,
+        match x.integer_decode() {
+            (0, _, _) => i32::MAX,
+            (m, e, _) => i32::from(e) + m.trailing_zeros() as i32,
         }
     }
     let w = tr - tl;
     if !w.is_normal() {
         return false;
     }
-    let grid = ((w.to_bits() >> 52) & 0x7ff) as i32 - 1023 - 20;
+    // A normal double's mantissa holds 53 bits: its leading bit is 2^(e + 52).
+    let grid = i32::from(w.integer_decode().1) + 52 - 20;
     [tl, tm, tr].iter().all(|x| lowest_bit(*x) >= grid)
 }
 

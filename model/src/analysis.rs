@@ -39,7 +39,7 @@ use serde::Serialize;
 
 mod departure;
 pub mod fast;
-mod primary;
+pub(crate) mod primary;
 pub use crate::specialise::{
     cancel, exact_f64, in_aileron, in_aileron_all, parametric, parametric_characteristic,
     quadratic_roots, specialisation, univariate, InAileron,

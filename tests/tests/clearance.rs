@@ -167,3 +167,46 @@ fn coefficient_boxes_of_a_tilted_aircraft_are_sound() {
     let hi = c.critical_p0.hi.unwrap();
     assert!((j.p0 - hi).abs() <= 1e-9 * hi, "{} vs {hi}", j.p0);
 }
+
+/// A box in which no aircraft has a critical jump: `aircraft/a_uncertain.toml` at delta_e = 0,
+/// where the primary branch of aircraft A reaches 90 deg of aileron without a jump. The proof
+/// says so (lo infinite, the minimum over an empty set, null in JSON; converged; cleared) in a
+/// bounded number of slabs, and the exact path agrees on every corner of the box and on random
+/// samples of it: none of them has a critical jump.
+#[test]
+fn a_box_without_a_critical_jump_is_proven_to_have_none() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../aircraft/a_uncertain.toml");
+    let a = model::aircraft::load(&path).unwrap();
+    let settings = Settings {
+        delta_e_rad: 0.0,
+        candidates: 4,
+        ..Settings::default()
+    };
+    let c = clear(&a, &settings, &mut |_| {}).unwrap();
+    assert!(c.no_critical_jump, "{c:?}");
+    assert_eq!(c.critical_p0.lo, f64::INFINITY);
+    assert_eq!(c.critical_delta_a_deg.lo, f64::INFINITY);
+    assert!(c.critical_p0.converged && c.critical_delta_a_deg.converged);
+    assert_eq!((c.critical_p0.hi, c.worst_case.is_none()), (None, true));
+    assert_eq!(c.cleared, Some(true));
+    assert!(c.slabs < 10_000, "{} slabs", c.slabs);
+    let json = serde_json::to_value(&c).unwrap();
+    assert_eq!(json["critical_p0"]["lo"], serde_json::Value::Null);
+    assert_eq!(json["no_critical_jump"], serde_json::Value::Bool(true));
+
+    let (base, params) = split_box(&a);
+    let n = params.len();
+    let corners = (0..1usize << n).map(|m| {
+        let x: Vec<BigRational> = (params.iter().enumerate())
+            .map(|(i, u)| if m >> i & 1 == 1 { &u.hi } else { &u.lo }.clone())
+            .collect();
+        model::clearance::at(&base, &params, &x)
+    });
+    let mut rng = Rng::new(3);
+    let random: Vec<Aircraft> = (0..24).map(|_| sample(&base, &params, &mut rng)).collect();
+    for (i, s) in corners.chain(random).enumerate() {
+        let r = model::analysis::analyze_with(&s, 0.0, false).unwrap();
+        assert!(r.critical.is_none(), "aircraft {i}: {:?}", r.critical);
+    }
+}

@@ -27,6 +27,12 @@ pub enum Outcome {
     Lost(&'static str),
 }
 
+/// The largest step in P0 of [`follow`], rad/s: the aileron bound is checked at steps at most
+/// this far apart, so a branch that passes the bound at P0 ends (`Unbounded`, unless a jump or
+/// a divergence comes first) by P0 + `MAX_STEP`, and if the f64 value there rounds onto the
+/// bound, by the next step (clearance uses this to prove that a branch has no critical jump).
+pub const MAX_STEP: f64 = 2e-2;
+
 /// Follows the primary branch from `(0, 0)` and returns how it ends.
 ///
 /// `g` is the trim condition, `det_a` the trim's denominator (scaled for f64 evaluation),
@@ -45,7 +51,7 @@ pub fn follow(
     max_abs_delta_a: f64,
 ) -> Outcome {
     let graph = g.0.len() <= 2 && det_a.0.len() <= 1;
-    let max_step: f64 = if graph { 2e-2 } else { 1e-3 };
+    let max_step: f64 = if graph { MAX_STEP } else { 1e-3 };
     const MAX_STEPS: usize = 2_000_000;
     let nearest = |roots: &[f64], target: f64| -> Option<f64> {
         roots

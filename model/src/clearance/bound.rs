@@ -67,6 +67,9 @@ pub struct BoxPolys {
     delta_e_rad: f64,
     /// Whether the trim at P0 = 0 is delta_a = 0 for every aircraft of the box (exactly).
     pub symmetric: bool,
+    /// Whether some aircraft of the box may have aileron yaw (n_delta_a != 0): then the trim
+    /// condition is quadratic in delta_a and the primary branch may turn in P0.
+    pub aileron_yaw: bool,
 }
 
 /// A box of uncertain data lifted for the chain (see [`BoxPolys::lift`]).
@@ -154,8 +157,11 @@ impl BoxPolys {
             Coordinate::Coefficient { .. } => true,
         }));
         let moved: Vec<Param> = coordinates.iter().flat_map(Coordinate::params).collect();
+        let fixed = Values::data(aircraft);
         BoxPolys {
-            fixed: Values::data(aircraft),
+            aileron_yaw: moved.contains(&Param::NDeltaA)
+                || !fixed[Param::NDeltaA.index()].is_exact_zero(),
+            fixed,
             delta_e_rad,
             symmetric: trim_at_rest_is_level(aircraft, &moved, delta_e_rad),
             coordinates,

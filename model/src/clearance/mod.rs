@@ -78,7 +78,8 @@ impl Default for Settings {
 /// A certified interval for a minimum over the box.
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct Bounds {
-    /// Proven lower bound.
+    /// Proven lower bound (infinite, null in JSON, when no aircraft of the box has a critical
+    /// jump).
     pub lo: f64,
     /// Attained by the worst-case aircraft (null when no aircraft of the box has a critical jump).
     pub hi: Option<f64>,
@@ -126,6 +127,10 @@ pub struct Clearance {
     pub worst_case_aileron: Option<CaseAircraft>,
     /// Cleared against the aileron limit (null without a limit, or when undecided).
     pub cleared: Option<bool>,
+    /// Proven: no aircraft of the box has a critical jump (every primary branch leaves the
+    /// aileron range `analyze` follows it to before any jump). Then both `lo` are infinite
+    /// (null in JSON: the minimum over an empty set), both `hi` null, and `converged` true.
+    pub no_critical_jump: bool,
     /// An aircraft of the box with a critical jump within the aileron limit.
     pub counterexample: Option<CaseAircraft>,
     /// Why the branch and bound stopped (and, when not converged, what limited it).
@@ -373,7 +378,65 @@ struct Leaf {
     step: f64,
     /// Lower bound of |delta_a| (rad) of the primary branch at `depth` over the box.
     da_lo: f64,
+    /// The depth at which `da_lo` first exceeded the aileron range `analyze` follows the
+    /// primary branch to (`None` while it has not, or when the trim at P0 = 0 needs aileron).
+    beyond_at: Option<f64>,
+    /// Why its latest slab failed (`None` after a certified one).
+    last: Option<Failure>,
     stuck: Option<Failure>,
+}
+
+/// How far past the roll rate where |delta_a| exceeds the aileron range a sub-box must be
+/// certified before it is finished: two steps of the primary-branch walk of `analyze`, which
+/// checks the range at steps at most [`MAX_STEP`](crate::analysis::primary::MAX_STEP) apart
+/// (the second step in case the f64 value at the first rounds onto the range).
+const BEYOND_MARGIN: f64 = 2.0 * crate::analysis::primary::MAX_STEP;
+
+/// The largest roll rate the proof certifies to, rad/s. A sub-box is followed until its
+/// branch leaves the aileron range, which for a box without jumps can lie far out (aircraft A
+/// at delta_e = 0 reaches 90 deg of aileron near 80 rad/s); this cap keeps every enclosure
+/// finite (the criterion polynomials have degree up to about 30 in P0) and the work bounded. A
+/// sub-box that reaches it unfinished keeps it as its depth: no jump below it is proven.
+pub const MAX_ROLL_RATE: f64 = 1000.0;
+
+impl Leaf {
+    /// Whether the sub-box is proven to have no critical jump: along every aircraft's primary
+    /// branch, |delta_a| (monotone before the first fold, Section 5 of docs/clearance.md)
+    /// exceeds the aileron range at `beyond_at` with no jump, fold or divergence up to
+    /// `beyond_at + BEYOND_MARGIN`, so `analyze`'s walk ends beyond the range (`Unbounded`)
+    /// before it can meet a jump.
+    fn finished(&self) -> bool {
+        self.beyond_at
+            .is_some_and(|d| self.depth >= d + BEYOND_MARGIN)
+    }
+
+    /// The certified depth, or infinity for a finished sub-box (no critical jump at all: the
+    /// minimum over an empty set).
+    fn p0_key(&self) -> f64 {
+        if self.finished() {
+            f64::INFINITY
+        } else {
+            self.depth
+        }
+    }
+
+    /// The lower bound of |delta_a| at the critical jump, or infinity for a finished sub-box.
+    fn da_key(&self) -> f64 {
+        if self.finished() {
+            f64::INFINITY
+        } else {
+            self.da_lo
+        }
+    }
+
+    /// Raises `da_lo` to `lower` (a lower bound at `depth`) and records where it first exceeds
+    /// `range`, the aileron range (infinite when |delta_a| is not monotone from 0).
+    fn raise_aileron(&mut self, lower: f64, range: f64) {
+        self.da_lo = self.da_lo.max(lower);
+        if self.beyond_at.is_none() && self.da_lo > range * (1.0 + 1e-9) {
+            self.beyond_at = Some(self.depth);
+        }
+    }
 }
 
 /// Leaves of the branch and bound stepped at once (in parallel on rayon's threads).
@@ -387,6 +450,9 @@ struct Walk<'a> {
     limit: f64,
     min_step: f64,
     first_step: f64,
+    /// The aileron range `analyze` follows the primary branch to, rad (infinite when the trim
+    /// at P0 = 0 needs aileron for some aircraft: then |delta_a| is not bounded from 0).
+    range: f64,
 }
 
 impl Walk<'_> {
@@ -399,15 +465,18 @@ impl Walk<'_> {
         let slab = I::new(leaf.depth, top);
         let why = match polys.certify(&leaf.lifted, slab) {
             Ok(_) => {
+                leaf.last = None;
                 leaf.depth = top;
                 leaf.step *= 2.0;
                 if let Ok(d) = polys.aileron(&leaf.lifted, I::point(top)) {
-                    leaf.da_lo = leaf.da_lo.max(polys.aileron_lower(&leaf.lifted, top, d));
+                    let lower = polys.aileron_lower(&leaf.lifted, top, d);
+                    leaf.raise_aileron(lower, self.range);
                 }
                 return (leaf, None);
             }
             Err(why) => why,
         };
+        leaf.last = Some(why);
         if leaf.step > self.min_step {
             leaf.step = (leaf.step / 4.0).max(self.min_step);
             return (leaf, None);
@@ -441,7 +510,7 @@ impl Walk<'_> {
             half.lifted = std::sync::Arc::new(polys.lift(&half.theta));
             if let Ok(d) = polys.aileron(&half.lifted, I::point(half.depth)) {
                 let lower = polys.aileron_lower(&half.lifted, half.depth, d);
-                half.da_lo = half.da_lo.max(lower);
+                half.raise_aileron(lower, self.range);
             }
         }
         (leaf, Some(other))
@@ -480,13 +549,16 @@ pub fn clear(
                   boxes: usize,
                   slabs: usize|
      -> Clearance {
+        // No critical jump anywhere in the box (proven): the minimum over an empty set, lo =
+        // infinity (null in JSON), exact.
+        let none = p0_lo == f64::INFINITY && worst.p0.is_none();
         let bounds = |lo: f64, hi: Option<f64>, tol: f64| {
             let gap = hi.map(|h| (h - lo).max(0.0));
             Bounds {
                 lo,
                 hi,
                 gap,
-                converged: gap.is_some_and(|g| g <= tol),
+                converged: gap.is_some_and(|g| g <= tol) || none,
             }
         };
         let hi_p0 = worst.p0.as_ref().map(|(p, _)| *p);
@@ -509,6 +581,7 @@ pub fn clear(
             worst_case: worst.p0.map(|(_, c)| c),
             worst_case_aileron: worst.da.map(|(_, c)| c),
             cleared,
+            no_critical_jump: none,
             counterexample: worst.limit_hit,
             note,
             boxes,
@@ -524,12 +597,7 @@ pub fn clear(
             None => (f64::INFINITY, f64::INFINITY),
         };
         let note = "zero-width box: the exact analysis of its one aircraft".to_string();
-        let mut c = finish(worst, lo, da, note, 0, 0);
-        if !lo.is_finite() {
-            c.critical_p0.lo = 0.0;
-            c.critical_delta_a_deg.lo = 0.0;
-        }
-        return Ok(c);
+        return Ok(finish(worst, lo, da, note, 0, 0));
     }
 
     // Candidates for the worst case: the centre, seeded random points, and a greedy vertex
@@ -586,8 +654,23 @@ pub fn clear(
         depth: 0.0,
         step: first_step,
         da_lo: 0.0,
+        beyond_at: None,
+        last: None,
         stuck: None,
     }];
+    let range = if polys.symmetric {
+        crate::analysis::aileron_range(aircraft)
+    } else {
+        f64::INFINITY
+    };
+    // How deep every sub-box must be certified: to the worst case found (less the tolerance),
+    // or, when no aircraft tried has a critical jump, until every sub-box is finished (its
+    // branch leaves the aileron range first) or reaches the cap.
+    let reach = if hi_p0.is_finite() {
+        hi_p0 - settings.tolerance_p0
+    } else {
+        MAX_ROLL_RATE
+    };
     let (mut boxes, mut slabs) = (1usize, 0usize);
     let hi_da_rad = worst
         .da
@@ -596,15 +679,25 @@ pub fn clear(
     let tol_da = settings.tolerance_deg.to_radians();
     let note;
     loop {
-        let lo = leaves.iter().map(|l| l.depth).fold(f64::INFINITY, f64::min);
-        let lo_da = leaves.iter().map(|l| l.da_lo).fold(f64::INFINITY, f64::min);
-        let done_p0 = lo >= hi_p0 - settings.tolerance_p0;
-        let done_da = !polys.symmetric || lo_da >= hi_da_rad - tol_da;
-        if hi_p0.is_finite() {
-            progress(0.1 + 0.9 * (lo / hi_p0).clamp(0.0, 1.0));
-        }
+        let lo = leaves
+            .iter()
+            .map(Leaf::p0_key)
+            .fold(f64::INFINITY, f64::min);
+        let lo_da = leaves
+            .iter()
+            .map(Leaf::da_key)
+            .fold(f64::INFINITY, f64::min);
+        let done_p0 = lo >= reach;
+        // Without a worst case (hi), the aileron bound rides on the roll-rate walk.
+        let done_da = !polys.symmetric || lo_da >= hi_da_rad - tol_da || !hi_p0.is_finite();
+        progress(0.1 + 0.9 * (lo / reach).clamp(0.0, 1.0));
         if done_p0 && done_da {
-            note = "converged: both gaps within the tolerance".to_string();
+            note = if lo == f64::INFINITY {
+                "converged: every box's primary branch leaves the aileron range before any jump"
+            } else {
+                "converged: both gaps within the tolerance"
+            }
+            .to_string();
             break;
         }
         if start.elapsed().as_secs_f64() > settings.time_budget_s {
@@ -624,14 +717,13 @@ pub fn clear(
         // not depend on the number of cores; every leaf has to reach the target anyway, so
         // taking the next-lowest ones along adds little work.
         let by_p0 = !done_p0;
-        let key = |l: &Leaf| if by_p0 { l.depth } else { l.da_lo };
-        let target = if by_p0 {
-            hi_p0 - settings.tolerance_p0
-        } else {
-            hi_da_rad - tol_da
-        };
+        let key = |l: &Leaf| if by_p0 { l.p0_key() } else { l.da_key() };
+        let target = if by_p0 { reach } else { hi_da_rad - tol_da };
         let mut batch: Vec<usize> = (0..leaves.len())
-            .filter(|i| leaves[*i].stuck.is_none())
+            .filter(|i| {
+                let l = &leaves[*i];
+                l.stuck.is_none() && !l.finished() && l.depth < MAX_ROLL_RATE
+            })
             .collect();
         let lowest =
             |a: &usize, b: &usize| key(&leaves[*a]).total_cmp(&key(&leaves[*b])).then(a.cmp(b));
@@ -641,18 +733,27 @@ pub fn clear(
         }
         batch.sort_by(lowest);
         let Some(first) = batch.first().copied() else {
-            note = "every remaining box is stuck at a point where the proof cannot continue"
-                .to_string();
+            note = if leaves.iter().any(|l| l.stuck.is_some()) {
+                "every remaining box is stuck at a point where the proof cannot continue"
+            } else {
+                "every remaining box reached the cap of the proof, P0 = 1000 rad/s"
+            }
+            .to_string();
             break;
         };
         batch.retain(|i| *i == first || key(&leaves[*i]) < target);
-        let limit = if by_p0 { hi_p0 } else { f64::INFINITY };
+        let limit = if by_p0 && hi_p0.is_finite() {
+            hi_p0.min(MAX_ROLL_RATE)
+        } else {
+            MAX_ROLL_RATE
+        };
         let walk = Walk {
             polys: &polys,
             theta0: &theta0,
             limit,
             min_step,
             first_step,
+            range,
         };
         let steps: Vec<(Leaf, Option<Leaf>)> =
             batch.par_iter().map(|i| walk.step(&leaves[*i])).collect();
@@ -665,17 +766,26 @@ pub fn clear(
             }
         }
     }
-    let mut lo = leaves.iter().map(|l| l.depth).fold(f64::INFINITY, f64::min);
-    let mut lo_da = leaves.iter().map(|l| l.da_lo).fold(f64::INFINITY, f64::min);
+    let mut lo = leaves
+        .iter()
+        .map(Leaf::p0_key)
+        .fold(f64::INFINITY, f64::min);
+    let mut lo_da = leaves
+        .iter()
+        .map(Leaf::da_key)
+        .fold(f64::INFINITY, f64::min);
     let mut note = note;
     if !polys.symmetric {
         lo_da = 0.0;
         note += "; the trim at P0 = 0 needs aileron for some aircraft of the box, so |delta_a| \
                  is not monotone from 0 along the branch and its lower bound is 0";
     }
+    // Any sub-box held up where its branch may turn (its latest slab failed so, stuck there or
+    // not), whatever its depth: past the turn the branch may come back below every depth.
     if let Some(l) = leaves
         .iter()
-        .find(|l| l.depth <= lo && l.stuck == Some(Failure::Turn))
+        .filter(|l| !l.finished())
+        .find(|l| l.stuck == Some(Failure::Turn) || l.last == Some(Failure::Turn))
     {
         // A branch that may turn in P0 can come back to lower roll rates on its other trim.
         note += &format!(
@@ -685,6 +795,11 @@ pub fn clear(
         );
         lo = 0.0;
         lo_da = 0.0;
+    }
+    if polys.aileron_yaw && lo > 0.0 && lo.is_finite() {
+        note += "; with aileron yaw the primary branch may turn in P0 (two trims merge) beyond \
+                 a box's certified depth and come back on its other trim: lo bounds the jumps \
+                 met before the branch's first turn (docs/clearance.md, step 6)";
     }
     if let Some(hi) = worst.p0.as_ref().map(|(p, _)| *p) {
         lo = lo.min(hi);

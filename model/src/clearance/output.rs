@@ -24,6 +24,9 @@ pub struct Run {
 }
 
 fn bounds(name: &str, unit: &str, b: &Bounds, digits: usize) -> String {
+    if b.lo == f64::INFINITY {
+        return format!("{name}: none (proven: no aircraft of the box has a critical jump)\n");
+    }
     let hi = b.hi.map_or("none".to_string(), |h| fixed(h, digits));
     let gap = b.gap.map_or("-".to_string(), |g| format!("{g:.2e}"));
     format!(
@@ -70,6 +73,10 @@ pub fn text(r: &Run) -> String {
         "  proof: {} boxes, {} slabs, {:.2} s; {}\n\n",
         c.boxes, c.slabs, c.seconds, c.note
     );
+    if c.no_critical_jump {
+        s += "No critical jump: the primary branch of every aircraft of the box leaves the \
+              aileron range (the limit in [limits], at least 90 deg) before any jump.\n";
+    }
     if let Some(w) = &c.worst_case {
         s += &aircraft("Worst case (roll rate)", w);
     }
@@ -157,12 +164,21 @@ fn panel(title: &str, x: Axis, y: Axis, lines: Vec<Line>) -> Panel {
 pub fn histogram(r: &Run) -> Figure {
     let v: Vec<f64> = r.monte_carlo.values.iter().filter_map(|s| s.p0).collect();
     let c = &r.clearance;
-    let lo = c.critical_p0.lo;
-    let hi = c.critical_p0.hi.unwrap_or(lo);
-    let vmax = v.iter().copied().fold(hi, f64::max);
+    // The bounds drawn where they exist: no `lo` line when no aircraft of the box has a
+    // critical jump (lo infinite), no `hi` line without a worst case.
+    let lo = Some(c.critical_p0.lo).filter(|l| l.is_finite());
+    let hi = c.critical_p0.hi;
+    let xs = || v.iter().copied().chain(lo).chain(hi);
+    let (xmin, xmax) = match (
+        xs().fold(f64::INFINITY, f64::min),
+        xs().fold(f64::NEG_INFINITY, f64::max),
+    ) {
+        (a, b) if a.is_finite() && b.is_finite() => (a, b),
+        _ => (0.0, 1.0),
+    };
     let (x0, x1) = (
-        lo - 0.05 * (vmax - lo).max(1e-3),
-        vmax + 0.05 * (vmax - lo).max(1e-3),
+        xmin - 0.05 * (xmax - xmin).max(1e-3),
+        xmax + 0.05 * (xmax - xmin).max(1e-3),
     );
     let bins = 40;
     let w = (x1 - x0) / bins as f64;
@@ -191,21 +207,29 @@ pub fn histogram(r: &Run) -> Figure {
             "",
             Axis::linear("critical jump P0 (rad/s)", x0, x1),
             Axis::linear("Monte Carlo samples (count)", 0.0, top),
-            vec![
-                line(&format!("{} samples", v.len()), steps, blue, Dash::Solid),
+            std::iter::once(line(
+                &format!("{} samples", v.len()),
+                steps,
+                blue,
+                Dash::Solid,
+            ))
+            .chain(lo.map(|lo| {
                 line(
                     "proven lower bound lo",
                     vec![(lo, 0.0), (lo, top)],
                     red,
                     Dash::Dashed,
-                ),
+                )
+            }))
+            .chain(hi.map(|hi| {
                 line(
                     "worst case found hi",
                     vec![(hi, 0.0), (hi, top)],
                     green,
                     Dash::Dotted,
-                ),
-            ],
+                )
+            }))
+            .collect(),
         )],
         legend_area: None,
         note: String::new(),
@@ -258,7 +282,8 @@ pub fn map(runs: &[Run]) -> Figure {
                 r.clearance.critical_p0.clone()
             }
         };
-        let lo = series(&|r| Some(b(r).lo));
+        // A setting without any critical jump in its box (lo infinite) has no point.
+        let lo = series(&|r| Some(b(r).lo).filter(|l| l.is_finite()));
         let hi = series(&|r| b(r).hi);
         let mc = series(&|r| {
             if k == 0 {
@@ -292,6 +317,24 @@ pub fn map(runs: &[Run]) -> Figure {
         ),
         panels,
         legend_area: None,
-        note: String::new(),
+        note: none_note(runs),
+    }
+}
+
+/// The map's note on the settings whose box has no critical jump at all (proven), which
+/// have no point on its lines.
+fn none_note(runs: &[Run]) -> String {
+    let none: Vec<String> = runs
+        .iter()
+        .filter(|r| r.clearance.no_critical_jump)
+        .map(|r| format!("{:.2}", r.clearance.delta_e_rad.to_degrees()))
+        .collect();
+    if none.is_empty() {
+        String::new()
+    } else {
+        format!(
+            "No critical jump for any aircraft of the box (proven) at delta_e = {} deg",
+            none.join(", ")
+        )
     }
 }

@@ -62,13 +62,25 @@ fn resolve_links(path: &Path) -> std::io::Result<PathBuf> {
     )))
 }
 
+/// `std::fs::create_dir_all`, saying what is wrong when `dir` is an existing file (the OS only
+/// says "File exists").
+pub fn create_dir_all(dir: &Path) -> std::io::Result<()> {
+    std::fs::create_dir_all(dir).map_err(|e| {
+        if e.kind() == std::io::ErrorKind::AlreadyExists && !dir.is_dir() {
+            std::io::Error::new(e.kind(), "it exists and is not a directory")
+        } else {
+            e
+        }
+    })
+}
+
 /// Writes `contents` to `path` through a temporary file in the same directory and a rename,
 /// creating the directory if needed; an existing file keeps its permissions. On any error the
 /// temporary file is removed and `path` keeps its previous contents (or stays absent).
 /// Temporary files that killed runs left for `path` are removed first.
 pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
     if let Some(dir) = parent(path) {
-        std::fs::create_dir_all(dir)?;
+        create_dir_all(dir)?;
     }
     remove_stale_temporaries(path);
     let tmp = temp_path(path, "");
@@ -173,7 +185,7 @@ pub fn replace_all(root: &Path, journal: &str, files: &[(PathBuf, &[u8])]) -> st
         for (rel, contents) in files {
             let path = root.join(rel);
             if let Some(dir) = parent(&path) {
-                std::fs::create_dir_all(dir)?;
+                create_dir_all(dir)?;
             }
             let tmp = temp_path(&path, "");
             staged.push((tmp.clone(), path.clone()));

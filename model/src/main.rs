@@ -136,19 +136,25 @@ enum Command {
         /// Path of an aircraft TOML file with an `[uncertainty]` table (or `A`/`B`: a point).
         aircraft: String,
         /// Elevator deflection in degrees.
-        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
+        #[arg(
+            long,
+            default_value_t = 2.0,
+            allow_hyphen_values = true,
+            conflicts_with = "delta_e_range"
+        )]
         delta_e_deg: f64,
         /// A range of elevator deflections `A:B:STEP` in degrees (a clearance map).
         #[arg(long, value_name = "A:B:STEP", allow_hyphen_values = true)]
         delta_e_range: Option<String>,
-        /// Monte Carlo samples (certified route; the exact path where a certificate fails).
-        #[arg(long, default_value_t = 1000)]
+        /// Monte Carlo samples (certified route; the exact path where a certificate fails), 0
+        /// to 10^7 per setting.
+        #[arg(long, default_value_t = 1000, allow_hyphen_values = true)]
         samples: usize,
         /// Tolerance on the roll-rate gap, rad/s (the aileron gap is 10 times it, in deg).
-        #[arg(long, default_value_t = 1e-3)]
+        #[arg(long, default_value_t = 1e-3, allow_hyphen_values = true)]
         tolerance: f64,
         /// Seed of the Monte Carlo samples and of the worst-case search.
-        #[arg(long, default_value_t = 1)]
+        #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
         seed: u64,
         /// Print JSON instead of text.
         #[arg(long)]
@@ -472,6 +478,13 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
                     "--tolerance = {tolerance}: expected a finite tolerance > 0 in rad/s"
                 )));
             }
+            // Each sample's draws and result are kept (samples.csv): about 300 bytes apiece.
+            const MAX_SAMPLES: usize = 10_000_000;
+            if samples > MAX_SAMPLES {
+                return Err(Failure::Input(format!(
+                    "--samples = {samples}: expected 0 to {MAX_SAMPLES} Monte Carlo samples"
+                )));
+            }
             let bar = progress_bar("clear");
             let mut runs = Vec::new();
             for (k, de) in settings.iter().enumerate() {
@@ -509,8 +522,19 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
                 .map_err(|e| e.to_string())?,
             )
             .map_err(|e| e.to_string())?;
+            // The result first, so that a proof of up to a minute is not lost to a failing
+            // --out; the files are written even when stdout is closed (the quiet end of a
+            // closed pipe comes after them).
+            let printed = if json {
+                writeln!(out, "{text}")
+            } else {
+                runs.iter()
+                    .try_for_each(|r| write!(out, "{}", model::clearance::output::text(r)))
+            }
+            .and_then(|()| out.flush())
+            .map_err(stdout_error);
             if let Some(dir) = dir {
-                std::fs::create_dir_all(&dir).map_err(|e| {
+                model::files::create_dir_all(&dir).map_err(|e| {
                     Failure::Output(format!("cannot create {}: {e}", dir.display()))
                 })?;
                 write_file(&dir.join("summary.json"), format!("{text}\n").as_bytes())?;
@@ -535,13 +559,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
                         .map_err(|e| Failure::Output(e.to_string()))?;
                 }
             }
-            if json {
-                say!(out, "{text}");
-            } else {
-                for r in &runs {
-                    write!(out, "{}", model::clearance::output::text(r)).map_err(stdout_error)?;
-                }
-            }
+            printed?;
             Ok(ExitCode::SUCCESS)
         }
         Command::Convert { file } => {

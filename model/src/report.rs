@@ -333,7 +333,7 @@ pub fn report(
     if !(max_da.is_finite() && max_da > 0.0) {
         return Err(ReportError::AileronRange(max_da));
     }
-    std::fs::create_dir_all(out).map_err(|source| ReportError::Io {
+    crate::files::create_dir_all(out).map_err(|source| ReportError::Io {
         path: out.to_path_buf(),
         source,
     })?;

@@ -42,6 +42,7 @@ fn bad_uncertainty_entries_exit_2_naming_file_line_and_key() {
         ("E = [0.5, 1.2]", "unphysical"),
         ("l_p = [1.0]", "two numbers"),
         ("l_p = true", "half-width"),
+        ("n_beta = \"1e310%\"", "finite doubles"),
     ];
     for (i, (entry, needle)) in cases.iter().enumerate() {
         let path = aircraft_a_with(
@@ -205,4 +206,59 @@ fn bad_coefficient_uncertainties_exit_2_naming_file_line_and_key() {
     assert_eq!(c["box"][1][0], "Cl_delta_r");
     let cl_delta_r = c["worst_case"]["Cl_delta_r"].as_f64().unwrap();
     assert!((0.009..=0.011).contains(&cl_delta_r), "{cl_delta_r}");
+}
+
+/// Bad flags of `clear` exit 2 with a message saying what is expected, before any work; an
+/// `--out` that is an existing file fails with a line naming it (after the result is printed).
+#[test]
+fn bad_clear_flags_exit_2_saying_what_is_expected() {
+    let a = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../aircraft/a_uncertain.toml");
+    let a = a.to_str().unwrap();
+    let cases: [(&[&str], &str); 5] = [
+        (
+            &["--samples", "18446744073709551615"],
+            "expected 0 to 10000000",
+        ),
+        (&["--samples", "-1"], "--samples"),
+        (&["--tolerance", "-1"], "expected a finite tolerance > 0"),
+        (&["--tolerance", "-1e-3"], "--tolerance = -0.001"),
+        (
+            &["--delta-e-deg", "500", "--delta-e-range", "0:1:1"],
+            "cannot be used with",
+        ),
+    ];
+    for (flags, needle) in cases {
+        let out = model(&[&["clear", a], flags].concat());
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{flags:?}: {err}");
+        assert!(err.contains(needle), "{flags:?}: {err}");
+        assert!(!err.contains("panicked"), "{flags:?}: {err}");
+    }
+
+    // No samples: no fraction within the limit (0/0 is not a measurement).
+    let c = clear_json(std::path::Path::new(a), 0);
+    assert_eq!(c["monte_carlo"]["samples"], 0);
+    assert!(c["monte_carlo"]["fraction_within_limit"].is_null());
+
+    let file = std::env::temp_dir().join(format!("model-clear-out-{}", std::process::id()));
+    std::fs::write(&file, "a file, not a directory").unwrap();
+    let out = model(&[
+        "clear",
+        a,
+        "--samples",
+        "2",
+        "--out",
+        file.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains(&format!(
+            "cannot create {}: it exists and is not a directory",
+            file.display()
+        )),
+        "{err}"
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).contains("Minimum over the box"));
+    std::fs::remove_file(&file).unwrap();
 }

@@ -213,10 +213,11 @@ pub enum AircraftError {
         /// The value as written.
         value: String,
     },
-    /// Body-axis inertias whose principal moments are not those of a rigid body.
+    /// Inertias (body-axis, or principal moments given directly) that are not those of a
+    /// rigid body.
     #[error(
         "{at}: table `[inertia]`: {problem}; expected principal moments > 0 that satisfy the \
-         triangle inequalities ix' + iy >= iz', ix' + iz' >= iy, iy + iz' >= ix'"
+         triangle inequalities (each at most the sum of the other two)"
     )]
     UnphysicalInertia {
         /// The `[inertia]` header.
@@ -944,27 +945,6 @@ impl Cx<'_> {
         self.positive(table, entry, what)
     }
 
-    /// C, D, E computed from moments of inertia, refused when one does not fit in f64 (moments
-    /// of wildly different sizes, such as ix = 1e-308).
-    fn finite_coefficients(
-        &self,
-        table: &Table<'_>,
-        coeffs: [BigRational; 3],
-    ) -> Result<Vec<BigRational>, AircraftError> {
-        for (name, c) in ["C", "D", "E"].iter().zip(&coeffs) {
-            let x = rational_to_f64(c);
-            if !x.is_finite() {
-                return Err(AircraftError::InvalidValue {
-                    at: self.at(table.span.as_ref()),
-                    key: format!("inertia.{name} (computed from the moments)"),
-                    expected: format!("{F64_RANGE}: moments of inertia of comparable size"),
-                    value: format!("{x:e}"),
-                });
-            }
-        }
-        Ok(coeffs.to_vec())
-    }
-
     fn mixed(&self, key: &Key, problem: String) -> AircraftError {
         AircraftError::MixedFormats {
             at: self.at_key(key),
@@ -1050,11 +1030,38 @@ impl Cx<'_> {
                     value: n.written.clone(),
                 });
             }
+            // |C|, |D|, |E| <= 1 are the triangle inequalities of the principal moments
+            // (C = (Iz - Ix)/Iy <= 1 is Iz <= Ix + Iy, and so on).
+            if moments.is_empty() && n.exact.abs() > BigRational::from_integer(1.into()) {
+                return Err(AircraftError::InvalidValue {
+                    at: self.at_value(key, value),
+                    key: qualified(table.name, &key.name),
+                    expected: "an inertia coefficient within [-1, 1] (the triangle inequalities \
+                               of the principal moments; outside, the inertia is unphysical)"
+                        .to_string(),
+                    value: n.written.clone(),
+                });
+            }
             out.push(n.exact.clone());
         }
         match out.as_slice() {
             [c, d, e] if moments.is_empty() => Ok(vec![c.clone(), d.clone(), e.clone()]),
-            [ix, iy, iz] => self.finite_coefficients(table, inertia_coefficients(ix, iy, iz)),
+            [ix, iy, iz] => {
+                for (a, b, c, text) in [
+                    (ix, iy, iz, "ix + iy < iz"),
+                    (ix, iz, iy, "ix + iz < iy"),
+                    (iy, iz, ix, "iy + iz < ix"),
+                ] {
+                    if a + b < *c {
+                        return Err(AircraftError::UnphysicalInertia {
+                            at: self.at(table.span.as_ref()),
+                            problem: text.to_string(),
+                        });
+                    }
+                }
+                // Within the triangle inequalities every coefficient lies in [-1, 1].
+                Ok(inertia_coefficients(ix, iy, iz).to_vec())
+            }
             _ => Err(AircraftError::InertiaSet {
                 at: self.at(table.span.as_ref()),
                 problem: "incomplete set".to_string(),
@@ -1320,7 +1327,8 @@ impl Cx<'_> {
                 });
             }
         }
-        let mut values = self.finite_coefficients(inertia, inertia_coefficients(ix, iy, iz))?;
+        // Within the triangle inequalities (checked above) every coefficient lies in [-1, 1].
+        let mut values = inertia_coefficients(ix, iy, iz).to_vec();
         values.extend(converted.derivatives.iter().cloned());
         Ok(Aircraft::new(name, values, converted.speed_f64()))
     }
@@ -1605,14 +1613,14 @@ speed = 150.0
     fn moments_of_inertia_give_exact_coefficients() {
         let text = replace(
             "C = 0.959\nD = 0.786\nE = 0.705\n",
-            "ix = 0.1\niy = 3\niz = 0.7\n",
+            "ix = 0.4\niy = 0.5\niz = 0.7\n",
         );
         let a = parse(&text, FILE).unwrap();
         let q = |s: &str| decimal_to_rational(s).unwrap();
-        // C = (iz - ix)/iy = 0.6/3 = 1/5; D = (iy - ix)/iz = 2.9/0.7 = 29/7; E = (iz - iy)/ix = -23
-        assert_eq!(*a.exact(Param::C), q("0.2"));
-        assert_eq!(*a.exact(Param::D), BigRational::new(29.into(), 7.into()));
-        assert_eq!(*a.exact(Param::E), q("-23"));
+        // C = (iz - ix)/iy = 0.3/0.5 = 3/5; D = (iy - ix)/iz = 0.1/0.7 = 1/7; E = (iz - iy)/ix = 1/2
+        assert_eq!(*a.exact(Param::C), q("0.6"));
+        assert_eq!(*a.exact(Param::D), BigRational::new(1.into(), 7.into()));
+        assert_eq!(*a.exact(Param::E), q("0.5"));
         // 0.1 + 0.2 style binary rounding never enters
         assert_ne!(a.value(Param::D), 0.0);
     }
@@ -1890,16 +1898,30 @@ speed = 150.0
     }
 
     #[test]
-    fn inertia_ratios_beyond_f64_are_refused() {
+    fn inertias_must_be_those_of_a_rigid_body() {
+        // ix + iy < iz (and ratios beyond f64 without the check: E = 0.6 / 1e-309).
         let text = replace(
             "C = 0.959\nD = 0.786\nE = 0.705\n",
-            "ix = 1e-309\niy = 5.5\niz = 6.1\n", // E = 0.6 / ix = 6e308
+            "ix = 1e-309\niy = 5.5\niz = 6.1\n",
         );
-        err(
+        let e = err(
             &text,
             2,
-            &["inertia.E (computed from the moments)", "range of f64"],
+            &["[inertia]", "ix + iy < iz", "triangle inequalities"],
         );
+        assert!(matches!(e, AircraftError::UnphysicalInertia { .. }));
+        for (bad, key) in [("C = 1.5", "inertia.C"), ("E = -1.01", "inertia.E")] {
+            let line = if key == "inertia.C" {
+                "C = 0.959"
+            } else {
+                "E = 0.705"
+            };
+            err(
+                &replace(line, bad),
+                if key == "inertia.C" { 3 } else { 5 },
+                &[key, "within [-1, 1]", "unphysical"],
+            );
+        }
     }
 
     #[test]

@@ -165,13 +165,16 @@ pub fn run(
     let exact_fallbacks = results.iter().filter(|(_, f)| *f).count();
     let values: Vec<Sample> = results.into_iter().map(|(s, _)| s).collect();
     let min = |f: fn(&Sample) -> Option<f64>| values.iter().filter_map(f).reduce(f64::min);
-    let fraction_within_limit = aircraft.limits.aileron_deg.map(|l| {
-        values
-            .iter()
-            .filter(|s| s.abs_delta_a_deg.is_some_and(|d| d <= l))
-            .count() as f64
-            / values.len().max(1) as f64
-    });
+    // No samples, no fraction (0/0 is not a measurement).
+    let fraction_within_limit = (aircraft.limits.aileron_deg)
+        .filter(|_| !values.is_empty())
+        .map(|l| {
+            values
+                .iter()
+                .filter(|s| s.abs_delta_a_deg.is_some_and(|d| d <= l))
+                .count() as f64
+                / values.len() as f64
+        });
     MonteCarlo {
         samples: values.len(),
         min_p0: min(|s| s.p0),

@@ -29,7 +29,7 @@ use crate::aircraft::convert::{convert, slopes, BodyAxisInput, Coefficient, Conv
 use crate::aircraft::{decimal_to_rational, Aircraft, CoefficientMap, Param, Uncertain};
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 impl Cx<'_> {
     /// `[uncertainty]` of a dimensional file: the interval of each parameter named, in the
@@ -153,7 +153,7 @@ impl Cx<'_> {
             expected: expected.to_string(),
             value: shorten(&written),
         };
-        Ok(match &value.kind {
+        let (lo, hi) = match &value.kind {
             Kind::String(s) if s.trim().ends_with('%') => {
                 let pct = s.trim().trim_end_matches('%').trim();
                 let r = decimal_to_rational(pct)
@@ -195,7 +195,18 @@ impl Cx<'_> {
                 }
                 (nominal - &n.exact, nominal + &n.exact)
             }
-        })
+        };
+        // A width written within f64 can still carry an end past it ("1e310%", or a half-width
+        // near f64::MAX about a large nominal): the proof encloses the ends in doubles.
+        let finite = |q: &BigRational| q.to_f64().is_some_and(f64::is_finite);
+        if !(finite(&lo) && finite(&hi)) {
+            return Err(bad(
+                "an interval whose ends are finite doubles (nominal -/+ the width leaves the \
+                 range of f64)",
+                self.written(value),
+            ));
+        }
+        Ok((lo, hi))
     }
 
     /// `param` in `[lo, hi]`, or the error (at `key`) for an interval that flips the sign of

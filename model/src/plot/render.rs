@@ -118,8 +118,10 @@ pub(crate) fn render(
     }
     let mut written = Vec::new();
     let mut failed = Vec::new();
+    // Each failure is listed with its file: an I/O error by the system's message alone.
     let mut outcome = |target: PathBuf, r: Result<(), PlotError>| match r {
         Ok(()) => written.push(target),
+        Err(PlotError::Io { message, .. }) => failed.push((target, message)),
         Err(e) => failed.push((target, e.to_string())),
     };
     if style.svg {
@@ -142,6 +144,9 @@ pub(crate) fn render(
         crate::files::remove_stale_temporaries(&target);
         let tmp = crate::files::temp_path(&target, ".png");
         let r = (|| {
+            // plotters reports a file it cannot create in its own debug format: create it
+            // first, for the system's message.
+            std::fs::File::create(&tmp).map_err(|e| io_err(&target, e))?;
             let root = BitMapBackend::new(&tmp, (w, h)).into_drawing_area();
             draw(&root, fig)?;
             root.present().map_err(draw_err)?;

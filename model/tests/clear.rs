@@ -43,6 +43,7 @@ fn bad_uncertainty_entries_exit_2_naming_file_line_and_key() {
         ("l_p = [1.0]", "two numbers"),
         ("l_p = true", "half-width"),
         ("n_beta = \"1e310%\"", "finite doubles"),
+        ("n_beta = [3.5, 1.7976931348623158e308]", "finite doubles"),
     ];
     for (i, (entry, needle)) in cases.iter().enumerate() {
         let path = aircraft_a_with(

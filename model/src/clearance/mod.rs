@@ -694,6 +694,10 @@ pub fn clear(
         if done_p0 && done_da {
             note = if lo == f64::INFINITY {
                 "converged: every box's primary branch leaves the aileron range before any jump"
+            } else if !hi_p0.is_finite() {
+                // No worst case, and some sub-box stopped at the cap unfinished.
+                "stopped: no aircraft tried has a critical jump, and a box reached the cap of \
+                 the proof, P0 = 1000 rad/s, without leaving the aileron range"
             } else {
                 "converged: both gaps within the tolerance"
             }

@@ -74,8 +74,8 @@ pub fn text(r: &Run) -> String {
         c.boxes, c.slabs, c.seconds, c.note
     );
     if c.no_critical_jump {
-        s += "No critical jump: the primary branch of every aircraft of the box leaves the \
-              aileron range (the limit in [limits], at least 90 deg) before any jump.\n";
+        s += "No critical jump (proven): along its primary branch no aircraft of the box meets \
+              a jump within the aileron range (the limit in [limits], at least 90 deg).\n";
     }
     if let Some(w) = &c.worst_case {
         s += &aircraft("Worst case (roll rate)", w);
@@ -102,7 +102,11 @@ pub fn text(r: &Run) -> String {
         m.exact_fallbacks,
         opt(m.min_p0, 6),
         opt(m.min_abs_delta_a_deg, 4),
-        m.fraction_within_limit.map_or("no limit".to_string(), |f| format!("{:.4}", f))
+        match (m.fraction_within_limit, m.samples) {
+            (Some(f), _) => format!("{f:.4}"),
+            (None, 0) => "none (no samples)".to_string(),
+            (None, _) => "no limit".to_string(),
+        }
     );
     s
 }

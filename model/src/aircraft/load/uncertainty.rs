@@ -27,9 +27,10 @@
 use super::{qualified, shorten, AircraftError, Cx, Key, Kind, Node, Table};
 use crate::aircraft::convert::{convert, slopes, BodyAxisInput, Coefficient, Converted};
 use crate::aircraft::{decimal_to_rational, Aircraft, CoefficientMap, Param, Uncertain};
+use crate::interval::I;
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, Zero};
 
 impl Cx<'_> {
     /// `[uncertainty]` of a dimensional file: the interval of each parameter named, in the
@@ -198,7 +199,12 @@ impl Cx<'_> {
         };
         // A width written within f64 can still carry an end past it ("1e310%", or a half-width
         // near f64::MAX about a large nominal): the proof encloses the ends in doubles.
-        let finite = |q: &BigRational| q.to_f64().is_some_and(f64::is_finite);
+        // Enclosed as the proof encloses it: an end just above f64::MAX rounds to MAX but is
+        // enclosed up to infinity.
+        let finite = |q: &BigRational| {
+            let i = I::from_q(q);
+            i.lo.is_finite() && i.hi.is_finite()
+        };
         if !(finite(&lo) && finite(&hi)) {
             return Err(bad(
                 "an interval whose ends are finite doubles (nominal -/+ the width leaves the \

@@ -272,6 +272,13 @@ impl I {
     /// `self * 2^k` (exact for normal results; outward otherwise).
     pub fn scale2(self, k: i32) -> I {
         let f = 2f64.powi(k);
+        if f == 0.0 || !f.is_finite() {
+            // 2^k itself is no double (it underflows to 0 or overflows to inf, which would
+            // give an exact 0 or an infinite end for any input): two factors that are, each
+            // product rounded outwards.
+            let h = k / 2;
+            return self.scale2(h).scale2(k - h);
+        }
         let r = I::new(self.lo * f, self.hi * f);
         if r.lo / f == self.lo && r.hi / f == self.hi && r.lo.is_finite() && r.hi.is_finite() {
             r
@@ -373,6 +380,43 @@ impl Mul for I {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `scale2` encloses x 2^k for every k, exactly where the result is a normal double, also
+    /// where 2^k alone under- or overflows (which gave an exact 0, or an infinite end for a
+    /// finite result, when 2^k was taken as one factor).
+    #[test]
+    fn scale2_encloses_every_power_of_two() {
+        use num_bigint::BigInt;
+        let two = BigRational::from_integer(BigInt::from(2));
+        let q = |x: f64| BigRational::from_float(x).unwrap();
+        for x in [1.0, -3.0, 1e-300, -7.5e300, 5e-324, 0.1] {
+            for k in (-2300..=2300).step_by(37).chain([-1100, 1100, -1075, 1024]) {
+                let r = I::point(x).scale2(k);
+                let exact = q(x) * num_traits::pow::Pow::pow(&two, k);
+                assert!(
+                    r.lo == f64::NEG_INFINITY || q(r.lo) <= exact,
+                    "{x} 2^{k}: {r:?}"
+                );
+                assert!(
+                    r.hi == f64::INFINITY || q(r.hi) >= exact,
+                    "{x} 2^{k}: {r:?}"
+                );
+                let e = exact.to_f64().unwrap();
+                if e.is_normal() {
+                    assert_eq!((r.lo, r.hi), (e, e), "{x} 2^{k}: exact, a normal double");
+                }
+                if e.is_finite() {
+                    assert!(r.lo.is_finite() && r.hi.is_finite(), "{x} 2^{k}: {r:?}");
+                }
+                if exact != BigRational::from_integer(0.into()) {
+                    assert!(
+                        !r.is_exact_zero(),
+                        "{x} 2^{k}: a nonzero value enclosed as 0"
+                    );
+                }
+            }
+        }
+    }
 
     /// Small rationals are rounded without big integers exactly as with them.
     #[test]

@@ -429,6 +429,13 @@ impl Leaf {
         }
     }
 
+    /// The proven minima over `leaves`: of the critical jump roll rate and of |delta_a| at it
+    /// (each infinite when every sub-box is finished).
+    fn minima(leaves: &[Leaf]) -> (f64, f64) {
+        let min = |key: fn(&Leaf) -> f64| leaves.iter().map(key).fold(f64::INFINITY, f64::min);
+        (min(Leaf::p0_key), min(Leaf::da_key))
+    }
+
     /// Raises `da_lo` to `lower` (a lower bound at `depth`) and records where it first exceeds
     /// `range`, the aileron range (infinite when |delta_a| is not monotone from 0).
     fn raise_aileron(&mut self, lower: f64, range: f64) {
@@ -679,14 +686,7 @@ pub fn clear(
     let tol_da = settings.tolerance_deg.to_radians();
     let note;
     loop {
-        let lo = leaves
-            .iter()
-            .map(Leaf::p0_key)
-            .fold(f64::INFINITY, f64::min);
-        let lo_da = leaves
-            .iter()
-            .map(Leaf::da_key)
-            .fold(f64::INFINITY, f64::min);
+        let (lo, lo_da) = Leaf::minima(&leaves);
         let done_p0 = lo >= reach;
         // Without a worst case (hi), the aileron bound rides on the roll-rate walk.
         let done_da = !polys.symmetric || lo_da >= hi_da_rad - tol_da || !hi_p0.is_finite();
@@ -694,14 +694,16 @@ pub fn clear(
         if done_p0 && done_da {
             note = if lo == f64::INFINITY {
                 "converged: every box's primary branch leaves the aileron range before any jump"
+                    .to_string()
             } else if !hi_p0.is_finite() {
                 // No worst case, and some sub-box stopped at the cap unfinished.
-                "stopped: no aircraft tried has a critical jump, and a box reached the cap of \
-                 the proof, P0 = 1000 rad/s, without leaving the aileron range"
+                format!(
+                    "stopped: no aircraft tried has a critical jump, and a box reached the cap \
+                     of the proof, P0 = {MAX_ROLL_RATE} rad/s, without leaving the aileron range"
+                )
             } else {
-                "converged: both gaps within the tolerance"
-            }
-            .to_string();
+                "converged: both gaps within the tolerance".to_string()
+            };
             break;
         }
         if start.elapsed().as_secs_f64() > settings.time_budget_s {
@@ -739,18 +741,16 @@ pub fn clear(
         let Some(first) = batch.first().copied() else {
             note = if leaves.iter().any(|l| l.stuck.is_some()) {
                 "every remaining box is stuck at a point where the proof cannot continue"
+                    .to_string()
             } else {
-                "every remaining box reached the cap of the proof, P0 = 1000 rad/s"
-            }
-            .to_string();
+                format!(
+                    "every remaining box reached the cap of the proof, P0 = {MAX_ROLL_RATE} rad/s"
+                )
+            };
             break;
         };
         batch.retain(|i| *i == first || key(&leaves[*i]) < target);
-        let limit = if by_p0 && hi_p0.is_finite() {
-            hi_p0.min(MAX_ROLL_RATE)
-        } else {
-            MAX_ROLL_RATE
-        };
+        let limit = if by_p0 { hi_p0 } else { f64::INFINITY }.min(MAX_ROLL_RATE);
         let walk = Walk {
             polys: &polys,
             theta0: &theta0,
@@ -770,14 +770,7 @@ pub fn clear(
             }
         }
     }
-    let mut lo = leaves
-        .iter()
-        .map(Leaf::p0_key)
-        .fold(f64::INFINITY, f64::min);
-    let mut lo_da = leaves
-        .iter()
-        .map(Leaf::da_key)
-        .fold(f64::INFINITY, f64::min);
+    let (mut lo, mut lo_da) = Leaf::minima(&leaves);
     let mut note = note;
     if !polys.symmetric {
         lo_da = 0.0;

@@ -197,10 +197,9 @@ impl Cx<'_> {
                 (nominal - &n.exact, nominal + &n.exact)
             }
         };
-        // A width written within f64 can still carry an end past it ("1e310%", or a half-width
-        // near f64::MAX about a large nominal): the proof encloses the ends in doubles.
-        // Enclosed as the proof encloses it: an end just above f64::MAX rounds to MAX but is
-        // enclosed up to infinity.
+        // A width written within f64 can still carry an end past it ("1e310%", or an end just
+        // above f64::MAX, which rounds to MAX but is enclosed up to infinity): each end is
+        // enclosed as the proof encloses it.
         let finite = |q: &BigRational| {
             let i = I::from_q(q);
             i.lo.is_finite() && i.hi.is_finite()

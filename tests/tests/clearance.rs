@@ -210,3 +210,120 @@ fn a_box_without_a_critical_jump_is_proven_to_have_none() {
         assert!(r.critical.is_none(), "aircraft {i}: {:?}", r.critical);
     }
 }
+
+/// Aircraft B with aileron yaw `n_delta_a` (1/s^2), the rest as in the paper.
+fn b_with_aileron_yaw(n_delta_a: i64) -> Aircraft {
+    Aircraft::b().with(Param::NDeltaA, BigRational::from_integer(n_delta_a.into()))
+}
+
+/// With aileron yaw the trim condition is quadratic in delta_a, and a branch may turn in P0
+/// (its two trims merge) and come back on its other trim. A slab of roll rates that holds a
+/// jump point (exact path) within the aileron range on either trim is never certified with its
+/// other trim clear: on the primary trim `certify` fails, on the other `other_trim_clear` does.
+/// The variants are aircraft A and B with aileron yaw large enough that the other trim's jump
+/// points come within the range below 90 deg.
+#[test]
+fn a_jump_on_the_other_trim_is_never_cleared() {
+    use model::clearance::bound::BoxPolys;
+    use model::interval::I;
+    let a = |n: i64| Aircraft::a().with(Param::NDeltaA, BigRational::from_integer(n.into()));
+    let cases = [
+        (a(600), -2.0),
+        (a(450), -2.0),
+        (a(300), 0.0),
+        (a(150), 0.0),
+        (b_with_aileron_yaw(22), 0.0),
+        (b_with_aileron_yaw(-40), 2.0),
+    ];
+    let mut on_other_trim = 0;
+    for (aircraft, de_deg) in cases {
+        let de = f64::to_radians(de_deg);
+        let range = model::analysis::aileron_range(&aircraft);
+        let polys = BoxPolys::new(&aircraft, &[Param::NDeltaA], de);
+        let n = aircraft.value(Param::NDeltaA);
+        let point = polys.lift(&[I::point(n)]);
+        let jumps = model::analysis::analyze_with(&aircraft, de, false)
+            .unwrap()
+            .jump;
+        for j in jumps.iter().filter(|j| j.delta_a_rad.abs() <= range) {
+            let slab = I::new(j.p0 - 1e-4, j.p0 + 1e-4);
+            if polys.certify(&point, slab).is_ok() {
+                on_other_trim += 1;
+                assert!(
+                    !polys.other_trim_clear(&point, slab, range),
+                    "{} at {de_deg} deg: the jump at P0 = {}, delta_a = {} deg is cleared",
+                    aircraft.name,
+                    j.p0,
+                    j.delta_a_deg
+                );
+            }
+        }
+    }
+    assert!(
+        on_other_trim >= 4,
+        "only {on_other_trim} jumps on the other trim"
+    );
+}
+
+/// The check is not blind: the fighter's other trim holds jumps only far beyond its aileron
+/// range (tens of thousands of degrees, exact path), so every slab below its critical jump is
+/// certified with the other trim clear.
+#[test]
+fn the_fighters_other_trim_is_cleared_below_its_critical_jump() {
+    use model::clearance::bound::BoxPolys;
+    let fighter = fighter_with("-0.38", "0.12", "");
+    let de = 2f64.to_radians();
+    let analysis = model::analysis::analyze_with(&fighter, de, false).unwrap();
+    let critical = analysis.critical.unwrap().p0;
+    let range = model::analysis::aileron_range(&fighter);
+    assert!(analysis
+        .jump
+        .iter()
+        .all(|j| j.p0 >= critical || j.delta_a_rad.abs() > 100.0 * range));
+    let polys = BoxPolys::new(&fighter, &[], de);
+    let point = polys.lift(&[]);
+    let steps = 40;
+    for k in 0..steps {
+        let p = |k: usize| 0.95 * critical * k as f64 / steps as f64;
+        let slab = model::interval::I::new(p(k), p(k + 1));
+        assert!(polys.certify(&point, slab).is_ok(), "slab {slab:?}");
+        assert!(polys.other_trim_clear(&point, slab, range), "slab {slab:?}");
+    }
+}
+
+/// A box whose branch turns in P0 before its critical jump (aircraft B with n_delta_a = 22 +- 1 %
+/// at delta_e = 0: past the turn, near 1.1 to 1.2 rad/s, the branch comes back on its other
+/// trim and meets its critical jump there, at about 1.63 rad/s) keeps a proven bound above 0:
+/// every slab below it has its other trim cleared. No aircraft sampled from the box (exact
+/// path) jumps below it.
+#[test]
+fn a_box_whose_branch_turns_keeps_a_proven_bound() {
+    let mut a = b_with_aileron_yaw(22);
+    let (lo, hi) = (
+        BigRational::new(2178.into(), 100.into()),
+        BigRational::new(2222.into(), 100.into()),
+    );
+    a.uncertainty = vec![Uncertain::param(Param::NDeltaA, lo, hi)];
+    let settings = Settings {
+        delta_e_rad: 0.0,
+        max_boxes: 300,
+        candidates: 4,
+        ..Settings::default()
+    };
+    let c = clear(&a, &settings, &mut |_| {}).unwrap();
+    let (lo, lo_da) = (c.critical_p0.lo, c.critical_delta_a_deg.lo);
+    assert!(lo > 1.0, "{c:?}");
+    assert!(lo_da > 40.0, "{c:?}");
+    assert!(c.note.contains("may turn in P0"), "{}", c.note);
+    let (base, params) = split_box(&a);
+    let mut rng = Rng::new(5);
+    for i in 0..40 {
+        let s = sample(&base, &params, &mut rng);
+        let j = analyze(&s, 0.0).unwrap().critical.unwrap();
+        assert!(j.p0 >= lo, "sample {i}: P0 = {} below lo = {lo}", j.p0);
+        assert!(
+            j.delta_a_deg.abs() >= lo_da,
+            "sample {i}: {j:?} below {lo_da}"
+        );
+    }
+}

@@ -33,6 +33,11 @@ pub enum Outcome {
 /// bound, by the next step (clearance uses this to prove that a branch has no critical jump).
 pub const MAX_STEP: f64 = 2e-2;
 
+/// The largest step in P0 of [`follow`] where the curve may turn (aileron yaw), rad/s: the
+/// aileron bound is checked at steps at most this far apart there (clearance uses this to
+/// prove that a branch coming back on its other trim leaves the range before a jump).
+pub const TURN_STEP: f64 = 1e-3;
+
 /// Follows the primary branch from `(0, 0)` and returns how it ends.
 ///
 /// `g` is the trim condition, `det_a` the trim's denominator (scaled for f64 evaluation),
@@ -51,7 +56,7 @@ pub fn follow(
     max_abs_delta_a: f64,
 ) -> Outcome {
     let graph = g.0.len() <= 2 && det_a.0.len() <= 1;
-    let max_step: f64 = if graph { MAX_STEP } else { 1e-3 };
+    let max_step: f64 = if graph { MAX_STEP } else { TURN_STEP };
     const MAX_STEPS: usize = 2_000_000;
     let nearest = |roots: &[f64], target: f64| -> Option<f64> {
         roots

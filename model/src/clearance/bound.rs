@@ -13,6 +13,10 @@
 //! 3. `J = det J5 det(A)^2`, evaluated on that root, has no zero: no fold (saddle-node,
 //!    det J5 = 0) of the primary branch in the slab.
 //!
+//! With aileron yaw a branch that turns in P0 beyond the certified slabs comes back on the
+//! other root of `G`; [`BoxPolys::other_trim_clear`] checks that it meets no jump there
+//! (docs/clearance.md, step 6).
+//!
 //! Each quantity is computed by the certified route's one construction
 //! ([`crate::certified::at_roll_rate`]) in [`Dual`] numbers: an enclosure over the whole slab
 //! and box together with enclosures of its partial derivatives in every uncertain parameter and
@@ -39,6 +43,7 @@
 
 use super::Coordinate;
 use crate::aircraft::{Aircraft, Param, Uncertain};
+use crate::analysis::primary::TURN_STEP;
 use crate::certified::dense::horner;
 use crate::certified::num::{Dual, Num, GRADIENT};
 use crate::certified::{at_roll_rate, AtRollRate, Values};
@@ -55,6 +60,9 @@ pub enum Failure {
     Turn,
     /// J may vanish: a jump may lie in the slab.
     Jump,
+    /// J may vanish on the slab's *other* trim within the aileron range, where the branch
+    /// could come back after turning in P0 beyond it ([`BoxPolys::other_trim_clear`]).
+    OtherTrim,
 }
 
 /// The criterion of a box of aircraft, ready for enclosures over slabs of roll rates.
@@ -68,7 +76,8 @@ pub struct BoxPolys {
     /// Whether the trim at P0 = 0 is delta_a = 0 for every aircraft of the box (exactly).
     pub symmetric: bool,
     /// Whether some aircraft of the box may have aileron yaw (n_delta_a != 0): then the trim
-    /// condition is quadratic in delta_a and the primary branch may turn in P0.
+    /// condition is quadratic in delta_a, the primary branch may turn in P0, and each slab's
+    /// other trim is checked too ([`BoxPolys::other_trim_clear`]).
     pub aileron_yaw: bool,
 }
 
@@ -88,13 +97,27 @@ impl LiftedBox {
     }
 }
 
-/// The quantities of the chain, each either over the box or at its centre.
+/// The quantities of the chain over the box.
 struct Chain<T> {
     det_a: T,
-    g1: T,
-    disc: T,
     da: T,
     jump: T,
+}
+
+/// The trim condition's part of the chain ([`BoxPolys::trim`]): each quantity over the box and
+/// at its centre.
+struct Trim {
+    /// The criterion's quantities over the box and at the centre.
+    at: (AtRollRate<Dual>, AtRollRate<I>),
+    /// The box with P0 last, and its centre.
+    x: Vec<I>,
+    c: Vec<f64>,
+    det_a: Dual,
+    /// `g0` and `g2`, over the box and at the centre.
+    g: (Dual, Dual),
+    g_c: (I, I),
+    /// `g1 + sign(g1) sqrt(disc)`, over the box and at the centre.
+    den: (Dual, I),
 }
 
 impl BoxPolys {
@@ -200,9 +223,10 @@ impl BoxPolys {
         }
     }
 
-    /// The chain over `p x` the box, every value tightened by its mean-value form around the
-    /// centre, or the first link that fails.
-    fn chain(&self, bx: &LiftedBox, p: I) -> Result<Chain<Dual>, Failure> {
+    /// The trim condition's part of the chain over `p x` the box (det A, the coefficients of
+    /// `G` in delta_a and its discriminant), every value tightened by its mean-value form around
+    /// the centre, or the first link that fails.
+    fn trim(&self, bx: &LiftedBox, p: I) -> Result<Trim, Failure> {
         let n = self.coordinates.len() + 1;
         let x: Vec<I> = bx.theta.iter().copied().chain([p]).collect();
         let c: Vec<f64> = bx.centre.iter().copied().chain([p.mid()]).collect();
@@ -210,14 +234,7 @@ impl BoxPolys {
         let (vc, pc) = (&bx.at_centre, I::point(c[n - 1]));
         let b = at_roll_rate(vb, pb).map_err(|_| Failure::Divergence)?;
         let m = at_roll_rate(vc, pc).map_err(|_| Failure::Divergence)?;
-        // Each link: the box value tightened by the mean-value form (both enclose it).
-        let tight = |q: Dual, centre: I| -> Result<Dual, Failure> {
-            let mut q = q;
-            let mv = mean_value(&q, centre, &x, &c);
-            q.v = q.v.intersect(mv).ok_or(Failure::Divergence)?;
-            Ok(q)
-        };
-        let det_a = tight(b.det_a, m.det_a)?;
+        let det_a = tight(b.det_a, m.det_a, &x, &c)?;
         if det_a.v.contains_zero() {
             return Err(Failure::Divergence);
         }
@@ -227,7 +244,11 @@ impl BoxPolys {
                 .unwrap_or_else(|| Dual::constant(I::point(0.0)))
         };
         let coef_c = |a: &AtRollRate<I>, i: usize| a.g.get(i).copied().unwrap_or(I::point(0.0));
-        let (g0, g1, g2) = (coef(&b, 0), tight(coef(&b, 1), coef_c(&m, 1))?, coef(&b, 2));
+        let (g0, g1, g2) = (
+            coef(&b, 0),
+            tight(coef(&b, 1), coef_c(&m, 1), &x, &c)?,
+            coef(&b, 2),
+        );
         let (g0c, g1c, g2c) = (coef_c(&m, 0), coef_c(&m, 1), coef_c(&m, 2));
         let Some(s) = g1.v.sign() else {
             return Err(Failure::Turn);
@@ -236,29 +257,88 @@ impl BoxPolys {
         let disc = tight(
             g1 * g1 - Dual::constant(four) * g0 * g2,
             g1c * g1c - four * g0c * g2c,
+            &x,
+            &c,
         )?;
         if disc.v.lo <= 0.0 {
             return Err(Failure::Turn);
         }
         let root = Num::sqrt(disc).ok_or(Failure::Turn)?;
         let root_c = I::sqrt(g1c * g1c - four * g0c * g2c).ok_or(Failure::Turn)?;
-        let sign = Dual::constant(I::point(s));
-        let den = g1 + sign * root;
+        // g1 + sign(g1) sqrt(disc): no cancellation, and of g1's sign on the whole slab.
+        let den = g1 + Dual::constant(I::point(s)) * root;
         let den_c = g1c + I::point(s) * root_c;
+        Ok(Trim {
+            at: (b, m),
+            x,
+            c,
+            det_a,
+            g: (g0, g2),
+            g_c: (g0c, g2c),
+            den: (den, den_c),
+        })
+    }
+
+    /// The chain over `p x` the box, every value tightened by its mean-value form around the
+    /// centre, or the first link that fails.
+    fn chain(&self, bx: &LiftedBox, p: I) -> Result<Chain<Dual>, Failure> {
+        let t = self.trim(bx, p)?;
+        let ((b, m), (x, c)) = (&t.at, (&t.x, &t.c));
+        let ((g0, _), (g0c, _), (den, den_c)) = (t.g, t.g_c, t.den);
         let minus_two = I::point(-2.0);
         let da_box = (Dual::constant(minus_two) * g0)
             .div(den)
             .ok_or(Failure::Turn)?;
         let da_c = (minus_two * g0c).checked_div(den_c).ok_or(Failure::Turn)?;
-        let da = tight(da_box, da_c)?;
-        let jump = tight(horner(&b.jump_at, da), horner(&m.jump_at, da_c))?;
+        let da = tight(da_box, da_c, x, c)?;
+        let jump = tight(horner(&b.jump_at, da), horner(&m.jump_at, da_c), x, c)?;
         Ok(Chain {
-            det_a,
-            g1,
-            disc,
+            det_a: t.det_a,
             da,
             jump,
         })
+    }
+
+    /// Whether a primary branch that comes back into the slab `p x` the box on its *other*
+    /// trim (after turning in P0 beyond it, aileron yaw) meets no jump there: J has no zero on
+    /// the other root `delta_a = -(g1 + sign(g1) sqrt(disc)) / (2 g2)`, or that root lies
+    /// beyond the aileron `range` (1e-9 relative margin, as for `finished`) on the slab and two
+    /// steps of `analyze`'s walk above it (a walk on the other trim checks the range at steps
+    /// at most `analysis::primary::TURN_STEP` apart, and the step that would reach a jump in the slab starts
+    /// from a point within the range, at most one step above it; the second step covers a
+    /// turn's own point, where the walk changes trims without checking the range). Without
+    /// aileron yaw (g2 = 0 for every aircraft) there is no other trim.
+    pub fn other_trim_clear(&self, bx: &LiftedBox, p: I, range: f64) -> bool {
+        if !self.aileron_yaw {
+            return true;
+        }
+        let Ok(t) = self.trim(bx, p) else {
+            return false;
+        };
+        let ((b, m), (g2, g2c), (den, den_c)) = (&t.at, (t.g.1, t.g_c.1), t.den);
+        let two = I::point(2.0);
+        if !g2.v.contains_zero() {
+            let other = (-den).div(Dual::constant(two) * g2);
+            let other_c = (-den_c).checked_div(two * g2c);
+            if let (Some(o), Some(oc)) = (other, other_c) {
+                let j = tight(horner(&b.jump_at, o), horner(&m.jump_at, oc), &t.x, &t.c);
+                if j.is_ok_and(|j| !j.v.contains_zero()) {
+                    return true;
+                }
+            }
+        }
+        let above = I::new(p.lo, next_up(p.hi + 2.0 * TURN_STEP));
+        let Ok(t) = self.trim(bx, above) else {
+            return false;
+        };
+        let (g2, den) = (t.g.1.v, t.den.0.v);
+        if g2.is_exact_zero() {
+            return true;
+        }
+        // |other root| >= min |g1 + sign(g1) sqrt(disc)| / (2 max |g2|), rounded down.
+        I::point(den.mig())
+            .checked_div(two * I::point(g2.mag()))
+            .is_some_and(|least| least.lo > range * (1.0 + 1e-9))
     }
 
     /// An enclosure of the primary branch's aileron over `p x` the box, or why there is none.
@@ -302,8 +382,7 @@ impl BoxPolys {
     /// enclosure of the primary branch's aileron on it.
     pub fn certify(&self, bx: &LiftedBox, p: I) -> Result<I, Failure> {
         let chain = self.chain(bx, p)?;
-        debug_assert!(!chain.det_a.v.contains_zero() && chain.g1.v.sign().is_some());
-        debug_assert!(chain.disc.v.lo > 0.0);
+        debug_assert!(!chain.det_a.v.contains_zero());
         if !chain.jump.v.contains_zero() {
             return Ok(chain.da.v);
         }
@@ -364,6 +443,15 @@ impl BoxPolys {
                 smear(*a).total_cmp(&smear(*b))
             })
     }
+}
+
+/// `q` (over the box `x`) tightened by its mean-value form around the centre `c`, where its
+/// value is enclosed by `centre`: both enclose it.
+fn tight(q: Dual, centre: I, x: &[I], c: &[f64]) -> Result<Dual, Failure> {
+    let mut q = q;
+    let mv = mean_value(&q, centre, x, c);
+    q.v = q.v.intersect(mv).ok_or(Failure::Divergence)?;
+    Ok(q)
 }
 
 /// The mean-value form of `q` (value and gradient over the box `x`) around the centre `c`,

@@ -384,6 +384,10 @@ struct Leaf {
     /// Why its latest slab failed (`None` after a certified one).
     last: Option<Failure>,
     stuck: Option<Failure>,
+    /// Certified slabs whose *other* trim may hold a jump within the aileron range
+    /// ([`BoxPolys::other_trim_clear`]), in increasing P0: a branch that turns in P0 beyond the
+    /// depth and comes back on that trim could meet it, so the sub-box's bound is the lowest.
+    doubts: Vec<I>,
 }
 
 /// How far past the roll rate where |delta_a| exceeds the aileron range a sub-box must be
@@ -410,13 +414,16 @@ impl Leaf {
             .is_some_and(|d| self.depth >= d + BEYOND_MARGIN)
     }
 
-    /// The certified depth, or infinity for a finished sub-box (no critical jump at all: the
-    /// minimum over an empty set).
+    /// The proven lower bound of the critical jump roll rate on the sub-box: the certified
+    /// depth or, below it, the lowest slab whose other trim may hold a jump; infinity for a
+    /// finished sub-box (no critical jump at all: the minimum over an empty set).
     fn p0_key(&self) -> f64 {
         if self.finished() {
             f64::INFINITY
         } else {
-            self.depth
+            self.doubts
+                .first()
+                .map_or(self.depth, |d| d.lo.min(self.depth))
         }
     }
 
@@ -468,10 +475,28 @@ impl Walk<'_> {
     /// when it cannot be). Returns the leaf and the other half of a split.
     fn step(&self, leaf: &Leaf) -> (Leaf, Option<Leaf>) {
         let (polys, mut leaf) = (self.polys, leaf.clone());
+        if let Some(doubt) = leaf.doubts.first().copied() {
+            // The doubt, not the depth, bounds this sub-box: resolve it first, on halves of
+            // the slab while it is wider than the smallest step, then on halves of the box.
+            if doubt.width() > self.min_step {
+                let m = doubt.mid();
+                let halves = [I::new(doubt.lo, m), I::new(m, doubt.hi)];
+                let left: Vec<I> = halves
+                    .into_iter()
+                    .filter(|h| !polys.other_trim_clear(&leaf.lifted, *h, self.range))
+                    .collect();
+                leaf.doubts.splice(0..1, left);
+                return (leaf, None);
+            }
+            return self.split(leaf, doubt, Failure::OtherTrim);
+        }
         let top = (leaf.depth + leaf.step).min(self.limit.max(leaf.depth + self.min_step));
         let slab = I::new(leaf.depth, top);
         let why = match polys.certify(&leaf.lifted, slab) {
             Ok(_) => {
+                if !polys.other_trim_clear(&leaf.lifted, slab, self.range) {
+                    leaf.doubts.push(slab);
+                }
                 leaf.last = None;
                 leaf.depth = top;
                 leaf.step *= 2.0;
@@ -488,6 +513,14 @@ impl Walk<'_> {
             leaf.step = (leaf.step / 4.0).max(self.min_step);
             return (leaf, None);
         }
+        self.split(leaf, slab, why)
+    }
+
+    /// Splits `leaf` in two because the slab `slab` failed with `why` at the smallest step (or
+    /// the leaf stuck when it cannot be split); each half re-checks the other trim of its
+    /// doubtful slabs on its smaller box.
+    fn split(&self, leaf: Leaf, slab: I, why: Failure) -> (Leaf, Option<Leaf>) {
+        let (polys, mut leaf) = (self.polys, leaf);
         // Split the coordinate that spreads the failing quantity most (its partial derivative
         // times the coordinate's width); the widest one (relative to the initial box) when that
         // cannot be told.
@@ -512,9 +545,13 @@ impl Walk<'_> {
         other.theta[k] = I::new(m, t.hi);
         leaf.step = self.first_step.max(self.min_step);
         other.step = leaf.step;
-        // The halves bound |delta_a| at their depth more tightly than the whole.
+        // The halves bound |delta_a| at their depth more tightly than the whole, and may clear
+        // the other trim where the whole could not.
         for half in [&mut leaf, &mut other] {
             half.lifted = std::sync::Arc::new(polys.lift(&half.theta));
+            let lifted = &half.lifted;
+            half.doubts
+                .retain(|d| !polys.other_trim_clear(lifted, *d, self.range));
             if let Ok(d) = polys.aileron(&half.lifted, I::point(half.depth)) {
                 let lower = polys.aileron_lower(&half.lifted, half.depth, d);
                 half.raise_aileron(lower, self.range);
@@ -664,6 +701,7 @@ pub fn clear(
         beyond_at: None,
         last: None,
         stuck: None,
+        doubts: Vec::new(),
     }];
     let range = if polys.symmetric {
         crate::analysis::aileron_range(aircraft)
@@ -777,26 +815,34 @@ pub fn clear(
         note += "; the trim at P0 = 0 needs aileron for some aircraft of the box, so |delta_a| \
                  is not monotone from 0 along the branch and its lower bound is 0";
     }
-    // Any sub-box held up where its branch may turn (its latest slab failed so, stuck there or
-    // not), whatever its depth: past the turn the branch may come back below every depth.
+    // A sub-box held up where its branch may turn (its latest slab failed so, stuck there or
+    // not) keeps its bound: past the turn the branch comes back on its other trim, and every
+    // slab below the bound has that trim certified free of jumps within the aileron range
+    // (docs/clearance.md, step 6).
     if let Some(l) = leaves
         .iter()
         .filter(|l| !l.finished())
         .find(|l| l.stuck == Some(Failure::Turn) || l.last == Some(Failure::Turn))
     {
-        // A branch that may turn in P0 can come back to lower roll rates on its other trim.
         note += &format!(
-            "; the primary branch may turn in P0 near {:.4} rad/s for part of the box, after \
-             which a jump could lie at a lower roll rate: no lower bound above 0 is claimed",
+            "; the primary branch may turn in P0 near {:.4} rad/s for part of the box: lo also \
+             bounds the jumps met after the turn, on the other trim",
             l.depth
         );
-        lo = 0.0;
-        lo_da = 0.0;
     }
-    if polys.aileron_yaw && lo > 0.0 && lo.is_finite() {
-        note += "; with aileron yaw the primary branch may turn in P0 (two trims merge) beyond \
-                 a box's certified depth and come back on its other trim: lo bounds the jumps \
-                 met before the branch's first turn (docs/clearance.md, step 6)";
+    if let Some(d) = leaves
+        .iter()
+        .filter(|l| !l.finished() && l.doubts.first().is_some_and(|d| d.lo < l.depth))
+        .map(|l| l.doubts[0])
+        .min_by(|a, b| a.lo.total_cmp(&b.lo))
+        .filter(|d| d.lo <= lo)
+    {
+        note += &format!(
+            "; lo is held at {:.6} rad/s by a possible jump on the other trim of the trim \
+             condition (P0 in [{:.6}, {:.6}]), which a branch turning in P0 beyond its \
+             certified depth could come back to",
+            d.lo, d.lo, d.hi
+        );
     }
     if let Some(hi) = worst.p0.as_ref().map(|(p, _)| *p) {
         lo = lo.min(hi);

@@ -14,7 +14,7 @@
 //!    det J5 = 0) of the primary branch in the slab.
 //!
 //! With aileron yaw a branch that turns in P0 beyond the certified slabs comes back on the
-//! other root of `G`; [`BoxPolys::other_trim_clear`] checks that it meets no jump there
+//! other root of `G`; [`BoxPolys::other_trim`] checks that it meets no jump there
 //! (docs/clearance.md, step 6).
 //!
 //! Each quantity is computed by the certified route's one construction
@@ -60,9 +60,25 @@ pub enum Failure {
     Turn,
     /// J may vanish: a jump may lie in the slab.
     Jump,
-    /// J may vanish on the slab's *other* trim within the aileron range, where the branch
-    /// could come back after turning in P0 beyond it ([`BoxPolys::other_trim_clear`]).
-    OtherTrim,
+}
+
+/// What a branch coming back on its other trim meets in a slab ([`BoxPolys::other_trim`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OtherTrim {
+    /// No jump: J has no zero on the other root (or there is no other trim).
+    NoJump,
+    /// The end of the aileron range: the other root lies beyond it, so `analyze`'s walk ends
+    /// there (and below the slab it cannot come back up).
+    BeyondRange,
+    /// Possibly a jump within the aileron range.
+    MayJump,
+}
+
+impl OtherTrim {
+    /// Whether a branch coming back meets no jump in the slab.
+    pub fn is_clear(self) -> bool {
+        self != OtherTrim::MayJump
+    }
 }
 
 /// The criterion of a box of aircraft, ready for enclosures over slabs of roll rates.
@@ -77,7 +93,7 @@ pub struct BoxPolys {
     pub symmetric: bool,
     /// Whether some aircraft of the box may have aileron yaw (n_delta_a != 0): then the trim
     /// condition is quadratic in delta_a, the primary branch may turn in P0, and each slab's
-    /// other trim is checked too ([`BoxPolys::other_trim_clear`]).
+    /// other trim is checked too ([`BoxPolys::other_trim`]).
     pub aileron_yaw: bool,
 }
 
@@ -299,46 +315,52 @@ impl BoxPolys {
         })
     }
 
-    /// Whether a primary branch that comes back into the slab `p x` the box on its *other*
-    /// trim (after turning in P0 beyond it, aileron yaw) meets no jump there: J has no zero on
-    /// the other root `delta_a = -(g1 + sign(g1) sqrt(disc)) / (2 g2)`, or that root lies
-    /// beyond the aileron `range` (1e-9 relative margin, as for `finished`) on the slab and two
-    /// steps of `analyze`'s walk above it (a walk on the other trim checks the range at steps
-    /// at most `analysis::primary::TURN_STEP` apart, and the step that would reach a jump in the slab starts
-    /// from a point within the range, at most one step above it; the second step covers a
-    /// turn's own point, where the walk changes trims without checking the range). Without
-    /// aileron yaw (g2 = 0 for every aircraft) there is no other trim.
-    pub fn other_trim_clear(&self, bx: &LiftedBox, p: I, range: f64) -> bool {
+    /// What a primary branch that comes back into the slab `p x` the box on its *other* trim
+    /// (after turning in P0 beyond it, aileron yaw) meets there: no jump, as J has no zero on
+    /// the other root `delta_a = -(g1 + sign(g1) sqrt(disc)) / (2 g2)` ([`OtherTrim::NoJump`]);
+    /// or the end of the aileron range, as that root lies beyond the `range` (1e-9 relative
+    /// margin, as for `finished`) on the slab and two steps of `analyze`'s walk above it
+    /// ([`OtherTrim::BeyondRange`]); or possibly a jump ([`OtherTrim::MayJump`]). The walk on
+    /// the other trim checks the range at steps at most `analysis::primary::TURN_STEP` apart;
+    /// the extension, certified free of turns and divergences, keeps any turn of the branch two
+    /// such steps above the slab, so every step that could reach a jump in the slab starts from
+    /// a point checked against the range where the root is proven beyond it. Without aileron
+    /// yaw (g2 = 0 for every aircraft) there is no other trim.
+    pub fn other_trim(&self, bx: &LiftedBox, p: I, range: f64) -> OtherTrim {
         if !self.aileron_yaw {
-            return true;
+            return OtherTrim::NoJump;
+        }
+        let two = I::point(2.0);
+        // The range first: a run of such slabs also shields the slabs below it.
+        let above = I::new(p.lo, next_up(p.hi + 2.0 * TURN_STEP));
+        if let Ok(t) = self.trim(bx, above) {
+            let (g2, den) = (t.g.1.v, t.den.0.v);
+            if g2.is_exact_zero() {
+                return OtherTrim::NoJump;
+            }
+            // |other root| >= min |g1 + sign(g1) sqrt(disc)| / (2 max |g2|), rounded down.
+            let beyond = I::point(den.mig())
+                .checked_div(two * I::point(g2.mag()))
+                .is_some_and(|least| least.lo > range * (1.0 + 1e-9));
+            if beyond {
+                return OtherTrim::BeyondRange;
+            }
         }
         let Ok(t) = self.trim(bx, p) else {
-            return false;
+            return OtherTrim::MayJump;
         };
         let ((b, m), (g2, g2c), (den, den_c)) = (&t.at, (t.g.1, t.g_c.1), t.den);
-        let two = I::point(2.0);
         if !g2.v.contains_zero() {
             let other = (-den).div(Dual::constant(two) * g2);
             let other_c = (-den_c).checked_div(two * g2c);
             if let (Some(o), Some(oc)) = (other, other_c) {
                 let j = tight(horner(&b.jump_at, o), horner(&m.jump_at, oc), &t.x, &t.c);
                 if j.is_ok_and(|j| !j.v.contains_zero()) {
-                    return true;
+                    return OtherTrim::NoJump;
                 }
             }
         }
-        let above = I::new(p.lo, next_up(p.hi + 2.0 * TURN_STEP));
-        let Ok(t) = self.trim(bx, above) else {
-            return false;
-        };
-        let (g2, den) = (t.g.1.v, t.den.0.v);
-        if g2.is_exact_zero() {
-            return true;
-        }
-        // |other root| >= min |g1 + sign(g1) sqrt(disc)| / (2 max |g2|), rounded down.
-        I::point(den.mig())
-            .checked_div(two * I::point(g2.mag()))
-            .is_some_and(|least| least.lo > range * (1.0 + 1e-9))
+        OtherTrim::MayJump
     }
 
     /// An enclosure of the primary branch's aileron over `p x` the box, or why there is none.

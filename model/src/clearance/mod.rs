@@ -34,9 +34,10 @@ pub mod bound;
 pub mod monte_carlo;
 
 use crate::aircraft::{Aircraft, Param, Uncertain};
+use crate::analysis::primary::TURN_STEP;
 use crate::analysis::{analyze_with, AnalysisError, JumpPoint};
 use crate::interval::I;
-use bound::{BoxPolys, Failure, LiftedBox};
+use bound::{BoxPolys, Failure, LiftedBox, OtherTrim};
 use num_rational::BigRational;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -385,9 +386,20 @@ struct Leaf {
     last: Option<Failure>,
     stuck: Option<Failure>,
     /// Certified slabs whose *other* trim may hold a jump within the aileron range
-    /// ([`BoxPolys::other_trim_clear`]), in increasing P0: a branch that turns in P0 beyond the
-    /// depth and comes back on that trim could meet it, so the sub-box's bound is the lowest.
+    /// ([`BoxPolys::other_trim`]), in increasing P0, above `barrier`: a branch that turns in
+    /// P0 beyond the depth and comes back on that trim could meet it, so the sub-box's bound
+    /// is the lowest.
     doubts: Vec<I>,
+    /// The top of the highest run of consecutive slabs, at least `TURN_STEP` long, whose other
+    /// trim lies beyond the aileron range ([`OtherTrim::BeyondRange`]): a branch coming back
+    /// down on that trim has a step end in it, checked against the range, so it ends there
+    /// and never reaches the slabs below.
+    barrier: f64,
+    /// Where the current run of such slabs (up to the depth) starts.
+    run_from: Option<f64>,
+    /// The depth at which the search for a barrier above the lowest doubt
+    /// ([`Walk::search_barrier`]) last failed (not tried again there).
+    searched_at: Option<f64>,
 }
 
 /// How far past the roll rate where |delta_a| exceeds the aileron range a sub-box must be
@@ -421,9 +433,31 @@ impl Leaf {
         if self.finished() {
             f64::INFINITY
         } else {
-            self.doubts
-                .first()
-                .map_or(self.depth, |d| d.lo.min(self.depth))
+            self.doubt().map_or(self.depth, |d| d.lo.min(self.depth))
+        }
+    }
+
+    /// The lowest doubtful slab, which bounds the sub-box.
+    fn doubt(&self) -> Option<I> {
+        self.doubts.first().copied()
+    }
+
+    /// Records the other trim of the certified slab `slab`, the deepest so far.
+    fn record_other_trim(&mut self, slab: I, other: OtherTrim) {
+        match other {
+            OtherTrim::BeyondRange => {
+                let from = *self.run_from.get_or_insert(slab.lo);
+                if slab.hi - from >= TURN_STEP {
+                    self.barrier = slab.hi;
+                    let barrier = self.barrier;
+                    self.doubts.retain(|d| d.lo >= barrier);
+                }
+            }
+            OtherTrim::NoJump => self.run_from = None,
+            OtherTrim::MayJump => {
+                self.run_from = None;
+                self.doubts.push(slab);
+            }
         }
     }
 
@@ -475,28 +509,35 @@ impl Walk<'_> {
     /// when it cannot be). Returns the leaf and the other half of a split.
     fn step(&self, leaf: &Leaf) -> (Leaf, Option<Leaf>) {
         let (polys, mut leaf) = (self.polys, leaf.clone());
-        if let Some(doubt) = leaf.doubts.first().copied() {
-            // The doubt, not the depth, bounds this sub-box: resolve it first, on halves of
-            // the slab while it is wider than the smallest step, then on halves of the box.
+        if let Some(doubt) = leaf.doubt() {
+            // The doubt, not the depth, bounds this sub-box. Look for a barrier above it (once
+            // per depth), else clear the doubt on halves of its slab while it is wider than the
+            // smallest step. A doubt that neither clears stays, and the sub-box goes deeper as
+            // usual: it may be finished (its branch leaves the range first), find a barrier
+            // further up, reach a jump, or split (its halves check the doubt again).
+            if leaf.searched_at != Some(leaf.depth) {
+                leaf.searched_at = Some(leaf.depth);
+                if self.search_barrier(&mut leaf, doubt.hi) {
+                    return (leaf, None);
+                }
+            }
             if doubt.width() > self.min_step {
                 let m = doubt.mid();
                 let halves = [I::new(doubt.lo, m), I::new(m, doubt.hi)];
                 let left: Vec<I> = halves
                     .into_iter()
-                    .filter(|h| !polys.other_trim_clear(&leaf.lifted, *h, self.range))
+                    .filter(|h| !polys.other_trim(&leaf.lifted, *h, self.range).is_clear())
                     .collect();
                 leaf.doubts.splice(0..1, left);
                 return (leaf, None);
             }
-            return self.split(leaf, doubt, Failure::OtherTrim);
         }
         let top = (leaf.depth + leaf.step).min(self.limit.max(leaf.depth + self.min_step));
         let slab = I::new(leaf.depth, top);
         let why = match polys.certify(&leaf.lifted, slab) {
             Ok(_) => {
-                if !polys.other_trim_clear(&leaf.lifted, slab, self.range) {
-                    leaf.doubts.push(slab);
-                }
+                let other = polys.other_trim(&leaf.lifted, slab, self.range);
+                leaf.record_other_trim(slab, other);
                 leaf.last = None;
                 leaf.depth = top;
                 leaf.step *= 2.0;
@@ -514,6 +555,27 @@ impl Walk<'_> {
             return (leaf, None);
         }
         self.split(leaf, slab, why)
+    }
+
+    /// Looks, from the depth down to `from` (the top of the lowest doubt), for a slab of at
+    /// least `TURN_STEP` whose other trim lies beyond the aileron range
+    /// ([`OtherTrim::BeyondRange`]; a sub-box's own slabs may not show one where its halves
+    /// do), in 32 slabs at most; the highest one found becomes the barrier, and the doubts
+    /// below it are dropped. Returns whether one was found.
+    fn search_barrier(&self, leaf: &mut Leaf, from: f64) -> bool {
+        let w = ((leaf.depth - from) / 32.0).max(TURN_STEP);
+        let mut hi = leaf.depth;
+        while hi - w >= from {
+            let slab = I::new(hi - w, hi);
+            if self.polys.other_trim(&leaf.lifted, slab, self.range) == OtherTrim::BeyondRange {
+                let barrier = leaf.barrier.max(slab.hi);
+                leaf.barrier = barrier;
+                leaf.doubts.retain(|d| d.lo >= barrier);
+                return true;
+            }
+            hi -= w;
+        }
+        false
     }
 
     /// Splits `leaf` in two because the slab `slab` failed with `why` at the smallest step (or
@@ -551,7 +613,8 @@ impl Walk<'_> {
             half.lifted = std::sync::Arc::new(polys.lift(&half.theta));
             let lifted = &half.lifted;
             half.doubts
-                .retain(|d| !polys.other_trim_clear(lifted, *d, self.range));
+                .retain(|d| !polys.other_trim(lifted, *d, self.range).is_clear());
+            half.searched_at = None;
             if let Ok(d) = polys.aileron(&half.lifted, I::point(half.depth)) {
                 let lower = polys.aileron_lower(&half.lifted, half.depth, d);
                 half.raise_aileron(lower, self.range);
@@ -702,6 +765,9 @@ pub fn clear(
         last: None,
         stuck: None,
         doubts: Vec::new(),
+        searched_at: None,
+        barrier: 0.0,
+        run_from: None,
     }];
     let range = if polys.symmetric {
         crate::analysis::aileron_range(aircraft)
@@ -832,8 +898,8 @@ pub fn clear(
     }
     if let Some(d) = leaves
         .iter()
-        .filter(|l| !l.finished() && l.doubts.first().is_some_and(|d| d.lo < l.depth))
-        .map(|l| l.doubts[0])
+        .filter(|l| !l.finished())
+        .filter_map(|l| l.doubt().filter(|d| d.lo < l.depth))
         .min_by(|a, b| a.lo.total_cmp(&b.lo))
         .filter(|d| d.lo <= lo)
     {

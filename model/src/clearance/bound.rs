@@ -330,26 +330,15 @@ impl BoxPolys {
         if !self.aileron_yaw {
             return OtherTrim::NoJump;
         }
-        let two = I::point(2.0);
         // The range first: a run of such slabs also shields the slabs below it.
-        let above = I::new(p.lo, next_up(p.hi + 2.0 * TURN_STEP));
-        if let Ok(t) = self.trim(bx, above) {
-            let (g2, den) = (t.g.1.v, t.den.0.v);
-            if g2.is_exact_zero() {
-                return OtherTrim::NoJump;
-            }
-            // |other root| >= min |g1 + sign(g1) sqrt(disc)| / (2 max |g2|), rounded down.
-            let beyond = I::point(den.mig())
-                .checked_div(two * I::point(g2.mag()))
-                .is_some_and(|least| least.lo > range * (1.0 + 1e-9));
-            if beyond {
-                return OtherTrim::BeyondRange;
-            }
+        if self.other_beyond_range(bx, p, range) {
+            return OtherTrim::BeyondRange;
         }
         let Ok(t) = self.trim(bx, p) else {
             return OtherTrim::MayJump;
         };
         let ((b, m), (g2, g2c), (den, den_c)) = (&t.at, (t.g.1, t.g_c.1), t.den);
+        let two = I::point(2.0);
         if !g2.v.contains_zero() {
             let other = (-den).div(Dual::constant(two) * g2);
             let other_c = (-den_c).checked_div(two * g2c);
@@ -361,6 +350,23 @@ impl BoxPolys {
             }
         }
         OtherTrim::MayJump
+    }
+
+    /// Whether the other root of `G` lies beyond the aileron `range` (1e-9 relative margin) on
+    /// the slab `p x` the box and two walk steps above it, with the trim certified there
+    /// ([`OtherTrim::BeyondRange`] of [`BoxPolys::other_trim`]). Where g2 = 0 exactly there is
+    /// no other root at all (it has gone to infinity), which counts as beyond.
+    pub fn other_beyond_range(&self, bx: &LiftedBox, p: I, range: f64) -> bool {
+        let above = I::new(p.lo, next_up(p.hi + 2.0 * TURN_STEP));
+        let Ok(t) = self.trim(bx, above) else {
+            return false;
+        };
+        let (g2, den) = (t.g.1.v, t.den.0.v);
+        // |other root| >= min |g1 + sign(g1) sqrt(disc)| / (2 max |g2|), rounded down.
+        g2.is_exact_zero()
+            || I::point(den.mig())
+                .checked_div(I::point(2.0) * I::point(g2.mag()))
+                .is_some_and(|least| least.lo > range * (1.0 + 1e-9))
     }
 
     /// An enclosure of the primary branch's aileron over `p x` the box, or why there is none.

@@ -448,9 +448,7 @@ impl Leaf {
             OtherTrim::BeyondRange => {
                 let from = *self.run_from.get_or_insert(slab.lo);
                 if slab.hi - from >= TURN_STEP {
-                    self.barrier = slab.hi;
-                    let barrier = self.barrier;
-                    self.doubts.retain(|d| d.lo >= barrier);
+                    self.raise_barrier(slab.hi);
                 }
             }
             OtherTrim::NoJump => self.run_from = None,
@@ -468,6 +466,13 @@ impl Leaf {
         } else {
             self.da_lo
         }
+    }
+
+    /// Raises the barrier to `top` and drops the doubts it shields (those below it).
+    fn raise_barrier(&mut self, top: f64) {
+        self.barrier = self.barrier.max(top);
+        let barrier = self.barrier;
+        self.doubts.retain(|d| d.lo >= barrier);
     }
 
     /// The proven minima over `leaves`: of the critical jump roll rate and of |delta_a| at it
@@ -559,18 +564,19 @@ impl Walk<'_> {
 
     /// Looks, from the depth down to `from` (the top of the lowest doubt), for a slab of at
     /// least `TURN_STEP` whose other trim lies beyond the aileron range
-    /// ([`OtherTrim::BeyondRange`]; a sub-box's own slabs may not show one where its halves
-    /// do), in 32 slabs at most; the highest one found becomes the barrier, and the doubts
+    /// ([`BoxPolys::other_beyond_range`]; a sub-box's own slabs may not show one where its
+    /// halves do), in 32 slabs at most; the highest one found becomes the barrier, and the doubts
     /// below it are dropped. Returns whether one was found.
     fn search_barrier(&self, leaf: &mut Leaf, from: f64) -> bool {
         let w = ((leaf.depth - from) / 32.0).max(TURN_STEP);
         let mut hi = leaf.depth;
         while hi - w >= from {
             let slab = I::new(hi - w, hi);
-            if self.polys.other_trim(&leaf.lifted, slab, self.range) == OtherTrim::BeyondRange {
-                let barrier = leaf.barrier.max(slab.hi);
-                leaf.barrier = barrier;
-                leaf.doubts.retain(|d| d.lo >= barrier);
+            if self
+                .polys
+                .other_beyond_range(&leaf.lifted, slab, self.range)
+            {
+                leaf.raise_barrier(slab.hi);
                 return true;
             }
             hi -= w;
@@ -581,8 +587,8 @@ impl Walk<'_> {
     /// Splits `leaf` in two because the slab `slab` failed with `why` at the smallest step (or
     /// the leaf stuck when it cannot be split); each half re-checks the other trim of its
     /// doubtful slabs on its smaller box.
-    fn split(&self, leaf: Leaf, slab: I, why: Failure) -> (Leaf, Option<Leaf>) {
-        let (polys, mut leaf) = (self.polys, leaf);
+    fn split(&self, mut leaf: Leaf, slab: I, why: Failure) -> (Leaf, Option<Leaf>) {
+        let polys = self.polys;
         // Split the coordinate that spreads the failing quantity most (its partial derivative
         // times the coordinate's width); the widest one (relative to the initial box) when that
         // cannot be told.
@@ -899,7 +905,7 @@ pub fn clear(
     if let Some(d) = leaves
         .iter()
         .filter(|l| !l.finished())
-        .filter_map(|l| l.doubt().filter(|d| d.lo < l.depth))
+        .filter_map(Leaf::doubt)
         .min_by(|a, b| a.lo.total_cmp(&b.lo))
         .filter(|d| d.lo <= lo)
     {

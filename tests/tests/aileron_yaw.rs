@@ -280,3 +280,89 @@ fn generated_zero_sideslip_trim_holds_with_aileron_yaw_and_roll_due_to_rudder() 
     }
     assert_eq!(checked, 60);
 }
+
+/// How the primary branch ends, traced by the oracle: `Some(p0)` for a jump (a sign change of
+/// det J5 along the branch), `None` when |delta_a| passes `bound` first; and the roll rate of
+/// the first turn, if any. The curve is followed on a uniform grid of P0 through the oracle's
+/// trims ([`trim_branches`], ascending in delta_a), from one grid point to the next by the
+/// nearest trim. Where the two trims of a roll rate merge (none at the next grid point) the
+/// curve turns and goes on with the other one, P0 running back: at the first point back it is
+/// the trim on the other one's side in the ascending order (the two straddle the fold, and the
+/// order holds over one step), then the nearest again.
+fn oracle_primary(k: &Params, de: f64, bound: f64, p_max: f64) -> (Option<f64>, Option<f64>) {
+    let step = 1e-4;
+    let at = |p: f64| trim_branches(k, p, de, 0.0);
+    let nearest = |t: &[([f64; 5], f64)], da: f64| {
+        (0..t.len()).min_by(|a, b| (t[*a].1 - da).abs().total_cmp(&(t[*b].1 - da).abs()))
+    };
+    let (mut p, mut dir, mut turn) = (0.0f64, 1.0, None);
+    let (mut da, mut det, mut turned) = (0.0, None, None);
+    while p.abs() < p_max {
+        let next = at(p + dir * step);
+        let i = match turned.take() {
+            Some(side) if next.len() == 2 => Some(side),
+            _ => nearest(&next, da),
+        };
+        let Some(i) = i else {
+            // The fold: continue on the other trim of the last roll rate, running back.
+            assert!(turn.is_none(), "a second turn within the bound");
+            let last = at(p);
+            assert_eq!(last.len(), 2, "two trims next to the fold at {p}");
+            let mine = nearest(&last, da).unwrap();
+            turn = Some(p);
+            dir = -dir;
+            turned = Some(1 - mine);
+            da = last[1 - mine].1;
+            continue;
+        };
+        p += dir * step;
+        let (x, next_da) = next[i];
+        da = next_da;
+        if da.abs() > bound {
+            return (None, turn);
+        }
+        let d = det_j5_at(k, &x, da, de);
+        if det.is_some_and(|e: f64| d * e < 0.0) {
+            return (Some(p), turn);
+        }
+        det = Some(d);
+    }
+    panic!("the oracle's primary branch has no end below P0 = {p_max}");
+}
+
+fn det_j5_at(k: &Params, x: &[f64; 5], da: f64, de: f64) -> f64 {
+    fd_jacobian(k, x, &[da, de, 0.0]).determinant()
+}
+
+/// A branch that turns in P0 goes on along its other trim, not back along itself. Aircraft A
+/// with n_delta_a = 40 /s^2 at delta_e = -4 deg: the primary branch turns near P0 = 3.88 rad/s
+/// at delta_a = 72.5 deg, and its other trim reaches the aileron range (90 deg) before any jump.
+/// Both routes of `analyze` must say so; following the nearest trim at the first step back
+/// (the two straddle the fold almost symmetrically) walked back down the primary branch, to the
+/// mirror fold at -3.88 and up again, until the walk gave up after 2e6 steps ("not defined").
+#[test]
+fn a_branch_that_turns_goes_on_along_its_other_trim() {
+    let mut k = Aircraft::a().values_f64();
+    k[ix::NDA] = 40.0;
+    let a = aircraft(&k, "A, n_delta_a = 40");
+    let de = (-4f64).to_radians();
+    let bound = model::analysis::aileron_range(&a);
+    let (jump, turn) = oracle_primary(&k, de, bound, 8.0);
+    let turn = turn.expect("the oracle's branch turns");
+    assert!((3.8..3.95).contains(&turn), "turn at {turn}");
+    assert_eq!(jump, None, "the oracle meets a jump first");
+    for (route, r) in [
+        ("exact", analyze(&a, de).unwrap()),
+        (
+            "certified",
+            model::analysis::fast::analyze_fast(&a, de).unwrap(),
+        ),
+    ] {
+        assert!(r.critical.is_none(), "{route}: {:?}", r.critical);
+        let note = r.critical_note.unwrap_or_default();
+        assert!(
+            note.contains("reaches |delta_a| = 90.0 deg"),
+            "{route}: {note}"
+        );
+    }
+}

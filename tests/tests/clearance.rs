@@ -392,6 +392,9 @@ fn a_barrier_found_above_a_doubt_lets_the_bound_reach_the_turn() {
     let de = (-2f64).to_radians();
     let nominal = model::analysis::analyze_with(&a, de, false).unwrap();
     assert!(nominal.critical.is_none());
+    // Not "not defined": the walk follows the branch past its turn to the end of the range.
+    let note = nominal.critical_note.as_deref().unwrap_or_default();
+    assert!(note.contains("reaches |delta_a|"), "{note}");
     let range = model::analysis::aileron_range(&a);
     assert!(nominal
         .jump

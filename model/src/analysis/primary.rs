@@ -12,7 +12,7 @@
 //! the two trims of a roll rate merge), where it continues on the other root with P0 running
 //! back. Without aileron yaw the curve is a graph over P0 and never turns.
 
-use crate::specialise::InAileron;
+use crate::specialise::{quadratic_roots, InAileron, Roots};
 
 /// How the primary branch ends.
 #[derive(Clone, Debug, PartialEq)]
@@ -44,8 +44,8 @@ pub const TURN_STEP: f64 = 1e-3;
 /// `divergence` the positive roots of det A (the divergence roll rates), `jumps` the jump roots
 /// as `(p0, delta_a)` (in any order), `max_abs_delta_a` the aileron bound in rad.
 ///
-/// Steps keep the change of P0 and of delta_a below 1e-3 where the curve may turn or meet its
-/// other trim (aileron yaw); without aileron yaw the curve is the graph of a rational function
+/// Steps keep the change of P0 below 1e-3, and that of delta_a about as small (the step is set
+/// by the slope of the last one), where the curve may turn or meet its other trim (aileron yaw); without aileron yaw the curve is the graph of a rational function
 /// of P0, and steps of 2e-2 only look for the aileron bound (the jumps and divergence roll rates
 /// between two steps are found from their lists).
 pub fn follow(
@@ -73,12 +73,28 @@ pub fn follow(
         );
     }
     let (mut p, mut dir, mut slope) = (0.0f64, 1.0f64, 0.0f64);
+    // After a turn: the side of the fold (+1 above, -1 below in delta_a) the curve continues on.
+    let mut turned: Option<f64> = None;
     let sign_det_a = det_a.eval(0.0, 0.0).signum();
+    let mut ahead = Ahead::new(g, det_a);
     for _ in 0..MAX_STEPS {
         let h = max_step.min(max_step / slope.abs().max(1e-300)).max(1e-10);
-        let p_new = p + dir * h;
-        let roots = g.aileron_roots(p_new);
-        let Some(da_new) = nearest(roots.as_slice(), da + slope * dir * h) else {
+        let (p_new, roots, det_a_new) = ahead.step(p, dir * h, h == max_step);
+        let back_from_turn = turned.take();
+        let next = match (back_from_turn, roots.as_slice()) {
+            // The first step back from a turn: the two roots straddle the fold, and the curve
+            // goes on with the one on the other root's side of it. The nearest root to a
+            // prediction is no guide here (the pair is nearly symmetric about the fold, so a
+            // step lands about as close to either): choosing by it could hop back onto the
+            // branch just followed and walk it again, back and forth, without end.
+            (Some(side), &[lower, upper]) => Some(if side > 0.0 { upper } else { lower }),
+            (_, r) => nearest(r, da + slope * dir * h),
+        };
+        let Some(da_new) = next else {
+            if back_from_turn.is_some() {
+                // No trim a step to either side: the curve closes within one step of P0.
+                return Outcome::Lost("the equilibrium curve turns twice within one step");
+            }
             // The two trims of this roll rate merged and vanished: the curve turns in P0 and
             // continues on the other root, P0 running back.
             dir = -dir;
@@ -89,7 +105,11 @@ pub fn follow(
                 .min_by(|a, b| (a - da).abs().total_cmp(&(b - da).abs()))
             {
                 Some(other) => {
-                    slope = 0.0;
+                    // Near the fold delta_a - delta_a_f ~ -+sqrt(P0_f - P0): the other root
+                    // leaves it as fast as this one came, the other way in delta_a per P0.
+                    // Keeping that slope keeps the first steps back as short as the last ones.
+                    turned = Some((other - da).signum());
+                    slope = -slope;
                     da = other;
                     continue;
                 }
@@ -99,7 +119,7 @@ pub fn follow(
         // A jump root between p and p_new whose aileron is this branch's.
         let (lo, hi) = if p < p_new { (p, p_new) } else { (p_new, p) };
         let diverges = divergence.iter().any(|d| *d > lo && *d <= hi);
-        if diverges || det_a.eval(p_new, 0.0).signum() != sign_det_a {
+        if diverges || det_a_new.signum() != sign_det_a {
             return Outcome::Divergence(p_new);
         }
         let hit = jumps
@@ -123,4 +143,130 @@ pub fn follow(
         p = p_new;
     }
     Outcome::Lost("the primary branch was followed for 2e6 steps without an end")
+}
+
+/// How many full steps [`Ahead`] evaluates at once.
+const LANES: usize = 4;
+
+/// The walk's evaluations (the roots in delta_a of the trim condition and the value of det A)
+/// at the roll rate of each step, made [`LANES`] full steps ahead at a time.
+///
+/// A step's length follows from the slope of the last one, so the walk is a chain of dependent
+/// evaluations, each a Horner scheme whose operations wait on one another: most of the walk's
+/// time is that latency. While the steps stay full (|slope| <= 1, the usual case) the roll rates
+/// of the next steps are known in advance, `p + h`, `p + h + h`, ..., and their evaluations are
+/// independent; made together, lane by lane, they overlap. Each lane performs the operations of
+/// the one-at-a-time evaluation in the same order ([`F64Poly::eval`](crate::roots::F64Poly),
+/// [`InAileron::aileron_roots`], [`InAileron::eval`] at delta_a = 0), so every value is the same
+/// to the bit and the walk takes the same steps to the same outcome; evaluations past a step that
+/// is not full are dropped.
+struct Ahead<'a> {
+    g: &'a InAileron,
+    det_a: &'a InAileron,
+    /// For each step ahead: the roll rate it starts from, its signed length, and the roll rate,
+    /// roots and det A value it reaches.
+    steps: [(f64, f64, f64, Roots, f64); LANES],
+    /// The next unused entry of `steps` (`LANES`: none).
+    next: usize,
+}
+
+impl<'a> Ahead<'a> {
+    fn new(g: &'a InAileron, det_a: &'a InAileron) -> Ahead<'a> {
+        Ahead {
+            g,
+            det_a,
+            steps: [(0.0, 0.0, 0.0, Roots::default(), 0.0); LANES],
+            next: LANES,
+        }
+    }
+
+    /// The step of signed length `dh` from `p`: the roll rate it reaches, the roots in delta_a
+    /// there and det A there; `full` says the step has the largest length, so that the next
+    /// ones may be evaluated with it.
+    fn step(&mut self, p: f64, dh: f64, full: bool) -> (f64, Roots, f64) {
+        if let Some(&(from, d, p_new, roots, det)) = self.steps.get(self.next) {
+            if from == p && d == dh {
+                self.next += 1;
+                return (p_new, roots, det);
+            }
+        }
+        if !full {
+            self.next = LANES;
+            let p_new = p + dh;
+            return (
+                p_new,
+                self.g.aileron_roots(p_new),
+                self.det_a.eval(p_new, 0.0),
+            );
+        }
+        let mut at = [0.0; LANES];
+        let mut from = p;
+        for (i, x) in at.iter_mut().enumerate() {
+            *x = from + dh;
+            self.steps[i].0 = from;
+            from = *x;
+        }
+        let coefficients = |f: &InAileron, i: usize| match f.0.get(i) {
+            Some(c) => c.0.iter().rev().fold([0.0; LANES], |acc, c| {
+                std::array::from_fn(|l| acc[l] * at[l] + c)
+            }),
+            None => [0.0; LANES],
+        };
+        let (g0, g1, g2) = (
+            coefficients(self.g, 0),
+            coefficients(self.g, 1),
+            coefficients(self.g, 2),
+        );
+        let mut det = [0.0; LANES];
+        for i in (0..self.det_a.0.len()).rev() {
+            let c = coefficients(self.det_a, i);
+            det = std::array::from_fn(|l| det[l] * 0.0 + c[l]);
+        }
+        for l in 0..LANES {
+            let roots = quadratic_roots(g2[l], g1[l], g0[l]);
+            self.steps[l] = (self.steps[l].0, dh, at[l], roots, det[l]);
+        }
+        self.next = 1;
+        (at[0], self.steps[0].3, det[0])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::roots::F64Poly;
+
+    /// The evaluations made ahead are those of the one-at-a-time evaluation, to the bit, for
+    /// full steps, shorter ones and a change of direction, with aileron yaw (quadratic in
+    /// delta_a) and without.
+    #[test]
+    fn evaluations_made_ahead_are_the_same_to_the_bit() {
+        let poly = |c: &[f64]| F64Poly(c.to_vec());
+        let yawing = InAileron(vec![
+            poly(&[0.0, -0.7, 0.3, 1.1e-3]),
+            poly(&[-2.1, 0.05, 0.4]),
+            poly(&[0.0, 0.013, 0.0, -0.002]),
+        ]);
+        let linear = InAileron(vec![poly(&[0.0, -0.7, 0.3]), poly(&[-2.1, 0.05, 0.4])]);
+        let det_a = InAileron(vec![poly(&[3.0, 0.0, -1.7, 0.0, 0.21])]);
+        for g in [&yawing, &linear] {
+            let mut ahead = Ahead::new(g, &det_a);
+            let mut p = 0.0f64;
+            let full = 2e-2;
+            let steps = [
+                full, full, 3e-3, full, full, full, full, full, -full, -full, full,
+            ];
+            for (k, h) in steps.into_iter().cycle().take(60).enumerate() {
+                let (p_new, roots, det) = ahead.step(p, h, h.abs() == full);
+                assert_eq!(p_new.to_bits(), (p + h).to_bits(), "step {k}");
+                let want = g.aileron_roots(p_new);
+                assert_eq!(roots.len(), want.len(), "step {k}");
+                for (a, b) in roots.as_slice().iter().zip(want.as_slice()) {
+                    assert_eq!(a.to_bits(), b.to_bits(), "step {k}");
+                }
+                assert_eq!(det.to_bits(), det_a.eval(p_new, 0.0).to_bits(), "step {k}");
+                p = p_new;
+            }
+        }
+    }
 }

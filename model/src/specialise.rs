@@ -209,17 +209,30 @@ impl InAileron {
 
     /// Value at `(p0, delta_a)` in f64 (Horner in delta_a over Horner in P0).
     pub fn eval(&self, p0: f64, delta_a: f64) -> f64 {
-        self.0
-            .iter()
-            .rev()
-            .fold(0.0, |acc, c| acc * delta_a + c.eval(p0))
+        self.eval_lanes([p0], delta_a)[0]
+    }
+
+    /// [`InAileron::eval`] at each roll rate of `p0` (at the same `delta_a`), lane by lane with
+    /// [`F64Poly::eval_lanes`]: the same values to the bit.
+    pub fn eval_lanes<const N: usize>(&self, p0: [f64; N], delta_a: f64) -> [f64; N] {
+        self.0.iter().rev().fold([0.0; N], |acc, c| {
+            let c = c.eval_lanes(p0);
+            std::array::from_fn(|l| acc[l] * delta_a + c[l])
+        })
     }
 
     /// The real roots in delta_a at `p0` (at most two: the trim condition is at most quadratic),
     /// by the cancellation-free form of the quadratic formula.
     pub fn aileron_roots(&self, p0: f64) -> Roots {
-        let get = |i: usize| self.0.get(i).map_or(0.0, |c| c.eval(p0));
-        quadratic_roots(get(2), get(1), get(0))
+        self.aileron_roots_lanes([p0])[0]
+    }
+
+    /// [`InAileron::aileron_roots`] at each roll rate of `p0`, the coefficients evaluated lane by
+    /// lane with [`F64Poly::eval_lanes`]: the same roots to the bit.
+    pub fn aileron_roots_lanes<const N: usize>(&self, p0: [f64; N]) -> [Roots; N] {
+        let get = |i: usize| self.0.get(i).map_or([0.0; N], |c| c.eval_lanes(p0));
+        let (c2, c1, c0) = (get(2), get(1), get(0));
+        std::array::from_fn(|l| quadratic_roots(c2[l], c1[l], c0[l]))
     }
 }
 

@@ -12,7 +12,7 @@
 //! the two trims of a roll rate merge), where it continues on the other root with P0 running
 //! back. Without aileron yaw the curve is a graph over P0 and never turns.
 
-use crate::specialise::{quadratic_roots, InAileron, Roots};
+use crate::specialise::{InAileron, Roots};
 
 /// How the primary branch ends.
 #[derive(Clone, Debug, PartialEq)]
@@ -45,9 +45,10 @@ pub const TURN_STEP: f64 = 1e-3;
 /// as `(p0, delta_a)` (in any order), `max_abs_delta_a` the aileron bound in rad.
 ///
 /// Steps keep the change of P0 below 1e-3, and that of delta_a about as small (the step is set
-/// by the slope of the last one), where the curve may turn or meet its other trim (aileron yaw); without aileron yaw the curve is the graph of a rational function
-/// of P0, and steps of 2e-2 only look for the aileron bound (the jumps and divergence roll rates
-/// between two steps are found from their lists).
+/// by the slope of the last one), where the curve may turn or meet its other trim (aileron
+/// yaw); without aileron yaw the curve is the graph of a rational function of P0, and steps of
+/// 2e-2 only look for the aileron bound (the jumps and divergence roll rates between two steps
+/// are found from their lists).
 pub fn follow(
     g: &InAileron,
     det_a: &InAileron,
@@ -155,19 +156,29 @@ const LANES: usize = 4;
 /// evaluations, each a Horner scheme whose operations wait on one another: most of the walk's
 /// time is that latency. While the steps stay full (|slope| <= 1, the usual case) the roll rates
 /// of the next steps are known in advance, `p + h`, `p + h + h`, ..., and their evaluations are
-/// independent; made together, lane by lane, they overlap. Each lane performs the operations of
-/// the one-at-a-time evaluation in the same order ([`F64Poly::eval`](crate::roots::F64Poly),
-/// [`InAileron::aileron_roots`], [`InAileron::eval`] at delta_a = 0), so every value is the same
-/// to the bit and the walk takes the same steps to the same outcome; evaluations past a step that
-/// is not full are dropped.
+/// independent; made together by the lane forms of the evaluations
+/// ([`InAileron::aileron_roots_lanes`], [`InAileron::eval_lanes`]) they overlap, with the same
+/// values to the bit, so the walk takes the same steps to the same outcome. Evaluations past a
+/// step that is not full are dropped.
 struct Ahead<'a> {
     g: &'a InAileron,
     det_a: &'a InAileron,
-    /// For each step ahead: the roll rate it starts from, its signed length, and the roll rate,
-    /// roots and det A value it reaches.
-    steps: [(f64, f64, f64, Roots, f64); LANES],
+    /// The steps evaluated ahead, in walk order.
+    steps: [AheadStep; LANES],
     /// The next unused entry of `steps` (`LANES`: none).
     next: usize,
+}
+
+/// One step evaluated by [`Ahead`].
+#[derive(Clone, Copy, Default)]
+struct AheadStep {
+    /// The roll rate it starts from and its signed length.
+    from: f64,
+    dh: f64,
+    /// The roll rate it reaches, the roots in delta_a there and det A there.
+    to: f64,
+    roots: Roots,
+    det_a: f64,
 }
 
 impl<'a> Ahead<'a> {
@@ -175,7 +186,7 @@ impl<'a> Ahead<'a> {
         Ahead {
             g,
             det_a,
-            steps: [(0.0, 0.0, 0.0, Roots::default(), 0.0); LANES],
+            steps: [AheadStep::default(); LANES],
             next: LANES,
         }
     }
@@ -184,50 +195,34 @@ impl<'a> Ahead<'a> {
     /// there and det A there; `full` says the step has the largest length, so that the next
     /// ones may be evaluated with it.
     fn step(&mut self, p: f64, dh: f64, full: bool) -> (f64, Roots, f64) {
-        if let Some(&(from, d, p_new, roots, det)) = self.steps.get(self.next) {
-            if from == p && d == dh {
-                self.next += 1;
-                return (p_new, roots, det);
+        let s = match self.steps.get(self.next) {
+            Some(s) if s.from == p && s.dh == dh => *s,
+            _ if !full => {
+                self.next = LANES;
+                let to = p + dh;
+                return (to, self.g.aileron_roots(to), self.det_a.eval(to, 0.0));
             }
-        }
-        if !full {
-            self.next = LANES;
-            let p_new = p + dh;
-            return (
-                p_new,
-                self.g.aileron_roots(p_new),
-                self.det_a.eval(p_new, 0.0),
-            );
-        }
-        let mut at = [0.0; LANES];
-        let mut from = p;
-        for (i, x) in at.iter_mut().enumerate() {
-            *x = from + dh;
-            self.steps[i].0 = from;
-            from = *x;
-        }
-        let coefficients = |f: &InAileron, i: usize| match f.0.get(i) {
-            Some(c) => c.0.iter().rev().fold([0.0; LANES], |acc, c| {
-                std::array::from_fn(|l| acc[l] * at[l] + c)
-            }),
-            None => [0.0; LANES],
+            _ => {
+                let mut from = [p; LANES];
+                for l in 1..LANES {
+                    from[l] = from[l - 1] + dh;
+                }
+                let to = from.map(|f| f + dh);
+                let roots = self.g.aileron_roots_lanes(to);
+                let det_a = self.det_a.eval_lanes(to, 0.0);
+                self.steps = std::array::from_fn(|l| AheadStep {
+                    from: from[l],
+                    dh,
+                    to: to[l],
+                    roots: roots[l],
+                    det_a: det_a[l],
+                });
+                self.next = 0;
+                self.steps[0]
+            }
         };
-        let (g0, g1, g2) = (
-            coefficients(self.g, 0),
-            coefficients(self.g, 1),
-            coefficients(self.g, 2),
-        );
-        let mut det = [0.0; LANES];
-        for i in (0..self.det_a.0.len()).rev() {
-            let c = coefficients(self.det_a, i);
-            det = std::array::from_fn(|l| det[l] * 0.0 + c[l]);
-        }
-        for l in 0..LANES {
-            let roots = quadratic_roots(g2[l], g1[l], g0[l]);
-            self.steps[l] = (self.steps[l].0, dh, at[l], roots, det[l]);
-        }
-        self.next = 1;
-        (at[0], self.steps[0].3, det[0])
+        self.next += 1;
+        (s.to, s.roots, s.det_a)
     }
 }
 

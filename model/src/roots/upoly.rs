@@ -30,7 +30,16 @@ pub struct F64Poly(pub Vec<f64>);
 impl F64Poly {
     /// Value at `x` by Horner's scheme.
     pub fn eval(&self, x: f64) -> f64 {
-        self.0.iter().rev().fold(0.0, |acc, c| acc * x + c)
+        self.eval_lanes([x])[0]
+    }
+
+    /// Values at the `N` points `x`, lane by lane: each lane is [`F64Poly::eval`] at its point,
+    /// the same operations in the same order (so the same value to the bit), and the lanes'
+    /// Horner chains are independent, so they overlap instead of waiting on one another.
+    pub fn eval_lanes<const N: usize>(&self, x: [f64; N]) -> [f64; N] {
+        self.0.iter().rev().fold([0.0; N], |acc, c| {
+            std::array::from_fn(|l| acc[l] * x[l] + c)
+        })
     }
 }
 

@@ -5,17 +5,20 @@
 //! enclosure outward-rounded ([`crate::interval`]):
 //!
 //! 1. det A has no zero on it (the trim exists and is finite);
-//! 2. `g1` has no zero and the discriminant `g1^2 - 4 g0 g2` of the trim condition
-//!    `G = g0 + g1 delta_a + g2 delta_a^2` is positive: the root
-//!    `delta_a = -2 g0 / (g1 + sign(g1) sqrt(disc))` (the root of smaller magnitude, 0 at P0 = 0)
-//!    is a continuous function on the slab with `dG/d delta_a != 0`, so it *is* the primary
-//!    branch there (implicit function theorem, continued from P0 = 0 through certified slabs);
+//! 2. the discriminant `g1^2 - 4 g0 g2` of the trim condition
+//!    `G = g0 + g1 delta_a + g2 delta_a^2` is positive and `g1 + s sqrt(disc)` has no zero, `s`
+//!    the sign of `g1` at P0 = 0 over the box (the branch's side): the root
+//!    `delta_a = -2 g0 / (g1 + s sqrt(disc))` (0 at P0 = 0; the root of smaller magnitude while
+//!    `g1` keeps the sign `s`, the larger one after `g1` changes sign) is a continuous function
+//!    on the slab with `dG/d delta_a = s sqrt(disc) != 0`, so it *is* the primary branch there
+//!    (implicit function theorem, continued from P0 = 0 through certified slabs);
 //! 3. `J = det J5 det(A)^2`, evaluated on that root, has no zero: no fold (saddle-node,
 //!    det J5 = 0) of the primary branch in the slab.
 //!
 //! With aileron yaw a branch that turns in P0 beyond the certified slabs comes back on the
-//! other root of `G`; [`BoxPolys::other_trim`] checks that it meets no jump there
-//! (docs/clearance.md, step 6).
+//! other root of `G`; [`BoxPolys::other_trim`] checks that it meets no jump there, and
+//! [`BoxPolys::turn_back`] proves, where it can, that every branch of the box turns back within
+//! a zone above the slabs that holds no jump (docs/clearance.md, step 6).
 //!
 //! Each quantity is computed by the certified route's one construction
 //! ([`crate::certified::at_roll_rate`]) in [`Dual`] numbers: an enclosure over the whole slab
@@ -56,7 +59,8 @@ use crate::specialise::parametric;
 pub enum Failure {
     /// det A may vanish: the trim may diverge (Eq. 5) in the slab.
     Divergence,
-    /// `dG/d delta_a` may vanish: the primary branch may turn in P0 (two trims merge).
+    /// `dG/d delta_a` may vanish (the primary branch may turn in P0: two trims merge), or the
+    /// branch's root cannot be told from the other's.
     Turn,
     /// J may vanish: a jump may lie in the slab.
     Jump,
@@ -104,6 +108,10 @@ pub struct LiftedBox {
     centre: Vec<f64>,
     over: Values<Dual>,
     at_centre: Values<I>,
+    /// The side of the primary branch, the sign of `g1` at P0 = 0 over the box (`None` when
+    /// it is not certain): the branch is the root `-2 g0 / (g1 + side sqrt(disc))` of the trim
+    /// condition on every certified slab ([`BoxPolys::trim`]).
+    side: Option<f64>,
 }
 
 impl LiftedBox {
@@ -134,6 +142,19 @@ struct Trim {
     g_c: (I, I),
     /// `g1 + sign(g1) sqrt(disc)`, over the box and at the centre.
     den: (Dual, I),
+}
+
+/// det A and the trim condition's coefficients over a slab and the box ([`BoxPolys::coefficients`]).
+struct Coefficients {
+    /// The criterion's quantities over the box and at the centre.
+    at: (AtRollRate<Dual>, AtRollRate<I>),
+    /// The box with P0 last, and its centre.
+    x: Vec<I>,
+    c: Vec<f64>,
+    det_a: Dual,
+    /// `g0, g1, g2` over the box (`g1` tightened) and at the centre.
+    g: [Dual; 3],
+    g_c: [I; 3],
 }
 
 impl BoxPolys {
@@ -210,6 +231,16 @@ impl BoxPolys {
     /// The box `theta` lifted once for every slab of roll rates: over the box (a gradient seed in
     /// each uncertain coordinate, P0 the last) and at its centre.
     pub fn lift(&self, theta: &[I]) -> LiftedBox {
+        self.lift_in(theta, None)
+    }
+
+    /// [`BoxPolys::lift`] of a part `theta` of the lifted box `whole`: the branch's side is the
+    /// whole's where that is certain (the same sign of `g1` at P0 = 0 holds on every part).
+    pub fn lift_part(&self, theta: &[I], whole: &LiftedBox) -> LiftedBox {
+        self.lift_in(theta, whole.side)
+    }
+
+    fn lift_in(&self, theta: &[I], side: Option<f64>) -> LiftedBox {
         let n = self.coordinates.len() + 1;
         let mut over: [Dual; 18] = std::array::from_fn(|i| Dual::constant(self.fixed[i]));
         let mut at = self.fixed;
@@ -231,18 +262,26 @@ impl BoxPolys {
                 }
             }
         }
-        LiftedBox {
+        let mut bx = LiftedBox {
             theta: theta.to_vec(),
             centre,
             over: Values::new(over, self.delta_e_rad, 0.0),
             at_centre: Values::new(at, self.delta_e_rad, 0.0),
+            side,
+        };
+        if side.is_none() {
+            bx.side = self
+                .coefficients(&bx, I::point(0.0))
+                .ok()
+                .and_then(|k| k.g[1].v.sign());
         }
+        bx
     }
 
-    /// The trim condition's part of the chain over `p x` the box (det A, the coefficients of
-    /// `G` in delta_a and its discriminant), every value tightened by its mean-value form around
-    /// the centre, or the first link that fails.
-    fn trim(&self, bx: &LiftedBox, p: I) -> Result<Trim, Failure> {
+    /// det A and the coefficients of the trim condition over `p x` the box, det A and `g1`
+    /// tightened by their mean-value forms around the centre and det A proven nonzero, or the
+    /// first link that fails.
+    fn coefficients(&self, bx: &LiftedBox, p: I) -> Result<Coefficients, Failure> {
         let n = self.coordinates.len() + 1;
         let x: Vec<I> = bx.theta.iter().copied().chain([p]).collect();
         let c: Vec<f64> = bx.centre.iter().copied().chain([p.mid()]).collect();
@@ -260,35 +299,55 @@ impl BoxPolys {
                 .unwrap_or_else(|| Dual::constant(I::point(0.0)))
         };
         let coef_c = |a: &AtRollRate<I>, i: usize| a.g.get(i).copied().unwrap_or(I::point(0.0));
-        let (g0, g1, g2) = (
-            coef(&b, 0),
-            tight(coef(&b, 1), coef_c(&m, 1), &x, &c)?,
-            coef(&b, 2),
-        );
-        let (g0c, g1c, g2c) = (coef_c(&m, 0), coef_c(&m, 1), coef_c(&m, 2));
-        let Some(s) = g1.v.sign() else {
-            return Err(Failure::Turn);
-        };
-        let four = I::point(4.0);
-        let disc = tight(
-            g1 * g1 - Dual::constant(four) * g0 * g2,
-            g1c * g1c - four * g0c * g2c,
-            &x,
-            &c,
-        )?;
-        if disc.v.lo <= 0.0 {
-            return Err(Failure::Turn);
-        }
-        let root = Num::sqrt(disc).ok_or(Failure::Turn)?;
-        let root_c = I::sqrt(g1c * g1c - four * g0c * g2c).ok_or(Failure::Turn)?;
-        // g1 + sign(g1) sqrt(disc): no cancellation, and of g1's sign on the whole slab.
-        let den = g1 + Dual::constant(I::point(s)) * root;
-        let den_c = g1c + I::point(s) * root_c;
-        Ok(Trim {
+        let g1 = tight(coef(&b, 1), coef_c(&m, 1), &x, &c)?;
+        Ok(Coefficients {
+            g: [coef(&b, 0), g1, coef(&b, 2)],
+            g_c: [coef_c(&m, 0), coef_c(&m, 1), coef_c(&m, 2)],
             at: (b, m),
             x,
             c,
             det_a,
+        })
+    }
+
+    /// The discriminant `g1^2 - 4 g0 g2` of the trim condition, tightened by its mean-value
+    /// form, and its enclosure at the centre.
+    fn discriminant(k: &Coefficients) -> Result<(Dual, I), Failure> {
+        let four = I::point(4.0);
+        let ([g0, g1, g2], [g0c, g1c, g2c]) = (k.g, k.g_c);
+        let centre = g1c * g1c - four * g0c * g2c;
+        let disc = tight(g1 * g1 - Dual::constant(four) * g0 * g2, centre, &k.x, &k.c)?;
+        Ok((disc, centre))
+    }
+
+    /// The trim condition's part of the chain over `p x` the box (det A, the coefficients of
+    /// `G` in delta_a and its discriminant), every value tightened by its mean-value form around
+    /// the centre, or the first link that fails.
+    fn trim(&self, bx: &LiftedBox, p: I) -> Result<Trim, Failure> {
+        let k = self.coefficients(bx, p)?;
+        let ([g0, g1, g2], [g0c, g1c, g2c]) = (k.g, k.g_c);
+        let Some(s) = bx.side else {
+            return Err(Failure::Turn);
+        };
+        let (disc, disc_c) = BoxPolys::discriminant(&k)?;
+        if disc.v.lo <= 0.0 {
+            return Err(Failure::Turn);
+        }
+        let root = Num::sqrt(disc).ok_or(Failure::Turn)?;
+        let root_c = I::sqrt(disc_c).ok_or(Failure::Turn)?;
+        // g1 + side sqrt(disc): without cancellation while g1 keeps the side's sign (the root
+        // of smaller magnitude); past a change of g1's sign the same root, now the larger one,
+        // as long as the sum keeps clear of zero (g0 g2 != 0).
+        let den = g1 + Dual::constant(I::point(s)) * root;
+        let den_c = g1c + I::point(s) * root_c;
+        if den.v.contains_zero() {
+            return Err(Failure::Turn);
+        }
+        Ok(Trim {
+            at: k.at,
+            x: k.x,
+            c: k.c,
+            det_a: k.det_a,
             g: (g0, g2),
             g_c: (g0c, g2c),
             den: (den, den_c),
@@ -369,6 +428,88 @@ impl BoxPolys {
                 .is_some_and(|least| least.lo > range * (1.0 + 1e-9))
     }
 
+    /// Where every aircraft's primary branch, certified from P0 = 0 up to `from`, turns back in
+    /// P0 without a jump: the smallest `top = from + w` (`w = min_width, 2 min_width, ...` up
+    /// to `max_width`) at which the trim condition has no real root for any aircraft of the box
+    /// (its discriminant is negative, `g2` nonzero), provided the *turn zone* `[from, top]`
+    /// clears ([`BoxPolys::turn_zone_clear`]); `None` otherwise, or without aileron yaw (no
+    /// turn). Then every branch comes back down through `from` on its other trim, and the other
+    /// trims checked below `from` ([`BoxPolys::other_trim`]) are all it can meet a jump on
+    /// (docs/clearance.md, step 6).
+    pub fn turn_back(
+        &self,
+        bx: &LiftedBox,
+        from: f64,
+        min_width: f64,
+        max_width: f64,
+    ) -> Option<f64> {
+        if !self.aileron_yaw || min_width.is_nan() || min_width <= 0.0 {
+            return None;
+        }
+        let mut w = min_width;
+        while w <= max_width {
+            let top = from + w;
+            if self.no_trim_at(bx, top) {
+                return self.turn_zone_clear(bx, I::new(from, top)).then_some(top);
+            }
+            w *= 2.0;
+        }
+        None
+    }
+
+    /// Whether the trim condition has no real root in delta_a at the roll rate `p` for any
+    /// aircraft of the box: `g2` of one sign and the discriminant negative.
+    fn no_trim_at(&self, bx: &LiftedBox, p: f64) -> bool {
+        let Ok(k) = self.coefficients(bx, I::point(p)) else {
+            return false;
+        };
+        let g2 = tight(k.g[2], k.g_c[2], &k.x, &k.c);
+        let disc = BoxPolys::discriminant(&k);
+        matches!((g2, disc), (Ok(g2), Ok((d, _))) if g2.v.sign().is_some() && d.v.hi < 0.0)
+    }
+
+    /// Whether the turn zone `u x` the box holds no jump on any trim: det A and `g2` have no
+    /// zero on it, and J has no zero for delta_a anywhere between the two roots of the trim
+    /// condition, `(-g1 +- sqrt(max(disc, 0))) / (2 g2)`, which holds every real root (both
+    /// trims, wherever they exist). Then `G_P0 = J / det A` (step 5 of docs/clearance.md) has no
+    /// zero on the equilibrium curve in the zone: the curve is a graph over delta_a there, so a
+    /// branch entering the zone at its bottom on one trim, unable to leave it at the top (no
+    /// root there, as `turn_back` checks) or to run off in delta_a (`g2 != 0` bounds the
+    /// roots), leaves it at the bottom again, on the other trim, and meets no jump (`J = 0`) on
+    /// the way. J is enclosed over the box, the zone and that whole range of delta_a (the range
+    /// as one interval, J's mean-value form in the box and P0 around the centre, where it is
+    /// evaluated over the same range of delta_a).
+    pub fn turn_zone_clear(&self, bx: &LiftedBox, u: I) -> bool {
+        let Ok(k) = self.coefficients(bx, u) else {
+            return false;
+        };
+        let Ok(g2) = tight(k.g[2], k.g_c[2], &k.x, &k.c) else {
+            return false;
+        };
+        let Ok((disc, _)) = BoxPolys::discriminant(&k) else {
+            return false;
+        };
+        if g2.v.contains_zero() {
+            return false;
+        }
+        // Every real root: between the two roots where disc >= 0 (none where disc < 0).
+        let Some(root) = I::new(0.0, disc.v.hi.max(0.0)).sqrt() else {
+            return false;
+        };
+        let spread = I::new(-root.hi, root.hi);
+        let Some(da) = (-k.g[1].v + spread).checked_div(I::point(2.0) * g2.v) else {
+            return false;
+        };
+        let (b, m) = &k.at;
+        let j = tight(
+            horner(&b.jump_at, Dual::constant(da)),
+            horner(&m.jump_at, da),
+            &k.x,
+            &k.c,
+        );
+        j.is_ok_and(|j| !j.v.contains_zero())
+    }
+
     /// An enclosure of the primary branch's aileron over `p x` the box, or why there is none.
     pub fn aileron(&self, bx: &LiftedBox, p: I) -> Result<I, Failure> {
         self.chain(bx, p).map(|c| c.da.v)
@@ -396,13 +537,15 @@ impl BoxPolys {
                 None => *t,
             })
             .collect();
-        let on_face = self.chain(&self.lift(&face), I::point(p)).map_or(0.0, |c| {
-            if c.da.v.sign() == Some(sign) {
-                c.da.v.mig()
-            } else {
-                0.0
-            }
-        });
+        let on_face = self
+            .chain(&self.lift_part(&face, bx), I::point(p))
+            .map_or(0.0, |c| {
+                if c.da.v.sign() == Some(sign) {
+                    c.da.v.mig()
+                } else {
+                    0.0
+                }
+            });
         on_face.max(da.mig())
     }
 
@@ -438,7 +581,8 @@ impl BoxPolys {
         if !moved {
             return Err(Failure::Jump);
         }
-        let on_face = self.chain(&self.lift(&face[..face.len() - 1]), face[face.len() - 1])?;
+        let face_box = self.lift_part(&face[..face.len() - 1], bx);
+        let on_face = self.chain(&face_box, face[face.len() - 1])?;
         match on_face.jump.v.sign() {
             Some(s) if s == centre_sign => Ok(chain.da.v),
             _ => Err(Failure::Jump),

@@ -400,6 +400,10 @@ struct Leaf {
     /// The depth at which the search for a barrier above the lowest doubt
     /// ([`Walk::search_barrier`]) last failed (not tried again there).
     searched_at: Option<f64>,
+    /// The top of the certified turn zone above the depth ([`BoxPolys::turn_back`]): every
+    /// aircraft's branch turns back in P0 below it with no jump, and comes back down through
+    /// the depth on its other trim, so only the doubts bound the sub-box (and none: finished).
+    turned: Option<f64>,
 }
 
 /// How far past the roll rate where |delta_a| exceeds the aileron range a sub-box must be
@@ -420,10 +424,13 @@ impl Leaf {
     /// branch, |delta_a| (monotone before the first fold, Section 5 of docs/clearance.md)
     /// exceeds the aileron range at `beyond_at` with no jump, fold or divergence up to
     /// `beyond_at + BEYOND_MARGIN`, so `analyze`'s walk ends beyond the range (`Unbounded`)
-    /// before it can meet a jump.
+    /// before it can meet a jump; or every branch turns back in P0 above the depth with no jump
+    /// ([`Leaf::turned`]) and comes back down on an other trim that holds no jump within the
+    /// range or ends at a barrier (no doubt left, docs/clearance.md step 6).
     fn finished(&self) -> bool {
         self.beyond_at
             .is_some_and(|d| self.depth >= d + BEYOND_MARGIN)
+            || (self.turned.is_some() && self.doubts.is_empty())
     }
 
     /// The proven lower bound of the critical jump roll rate on the sub-box: the certified
@@ -492,6 +499,10 @@ impl Leaf {
     }
 }
 
+/// The widest turn zone tried above a sub-box held where its branch may turn
+/// ([`BoxPolys::turn_back`]), rad/s.
+const TURN_ZONE: f64 = 0.5;
+
 /// Leaves of the branch and bound stepped at once (in parallel on rayon's threads).
 const BATCH: usize = 8;
 
@@ -536,6 +547,11 @@ impl Walk<'_> {
                 leaf.doubts.splice(0..1, left);
                 return (leaf, None);
             }
+            if leaf.turned.is_some() {
+                // The branch turns back below the turn zone's top: going deeper proves nothing
+                // more. The halves check the doubt again on their smaller boxes.
+                return self.split(leaf, doubt, Failure::Jump);
+            }
         }
         let top = (leaf.depth + leaf.step).min(self.limit.max(leaf.depth + self.min_step));
         let slab = I::new(leaf.depth, top);
@@ -558,6 +574,15 @@ impl Walk<'_> {
         if leaf.step > self.min_step {
             leaf.step = (leaf.step / 4.0).max(self.min_step);
             return (leaf, None);
+        }
+        if why == Failure::Turn {
+            // Before splitting: the branch may turn back, for every aircraft of the sub-box,
+            // within a zone that holds no jump.
+            let zone = polys.turn_back(&leaf.lifted, leaf.depth, self.min_step, TURN_ZONE);
+            if let Some(top) = zone {
+                leaf.turned = Some(top);
+                return (leaf, None);
+            }
         }
         self.split(leaf, slab, why)
     }
@@ -609,6 +634,7 @@ impl Walk<'_> {
             return (leaf, None);
         }
         let mut other = leaf.clone();
+        let leaf_lifted = std::sync::Arc::clone(&leaf.lifted);
         leaf.theta[k] = I::new(t.lo, m);
         other.theta[k] = I::new(m, t.hi);
         leaf.step = self.first_step.max(self.min_step);
@@ -616,7 +642,7 @@ impl Walk<'_> {
         // The halves bound |delta_a| at their depth more tightly than the whole, and may clear
         // the other trim where the whole could not.
         for half in [&mut leaf, &mut other] {
-            half.lifted = std::sync::Arc::new(polys.lift(&half.theta));
+            half.lifted = std::sync::Arc::new(polys.lift_part(&half.theta, &leaf_lifted));
             let lifted = &half.lifted;
             half.doubts
                 .retain(|d| !polys.other_trim(lifted, *d, self.range).is_clear());
@@ -774,6 +800,7 @@ pub fn clear(
         searched_at: None,
         barrier: 0.0,
         run_from: None,
+        turned: None,
     }];
     let range = if polys.symmetric {
         crate::analysis::aileron_range(aircraft)
@@ -803,7 +830,8 @@ pub fn clear(
         progress(0.1 + 0.9 * (lo / reach).clamp(0.0, 1.0));
         if done_p0 && done_da {
             note = if lo == f64::INFINITY {
-                "converged: every box's primary branch leaves the aileron range before any jump"
+                "converged: no box's primary branch meets a jump before it leaves the aileron \
+                 range"
                     .to_string()
             } else if !hi_p0.is_finite() {
                 // No worst case, and some sub-box stopped at the cap unfinished.
@@ -893,13 +921,32 @@ pub fn clear(
     // (docs/clearance.md, step 6).
     if let Some(l) = leaves
         .iter()
-        .filter(|l| !l.finished())
+        .filter(|l| !l.finished() && l.turned.is_none())
         .find(|l| l.stuck == Some(Failure::Turn) || l.last == Some(Failure::Turn))
     {
         note += &format!(
             "; the primary branch may turn in P0 near {:.4} rad/s for part of the box: lo also \
              bounds the jumps met after the turn, on the other trim",
             l.depth
+        );
+    }
+    // Sub-boxes whose branch turns back in P0 (certified zones, step 6 of docs/clearance.md).
+    let zones = leaves
+        .iter()
+        .filter_map(|l| l.turned.map(|top| (l.depth, top)))
+        .fold(None, |z: Option<(f64, f64)>, (a, b)| {
+            Some(z.map_or((a, b), |(lo, hi)| (lo.min(a), hi.max(b))))
+        });
+    if let Some((from, to)) = zones {
+        let whose = if leaves.iter().all(|l| l.turned.is_some()) {
+            "for every aircraft of the box"
+        } else {
+            "for part of the box"
+        };
+        note += &format!(
+            "; {whose} the primary branch turns back in P0 between {from:.4} and {to:.4} rad/s \
+             (proven, with no jump there) and comes back down on its other trim, whose jumps \
+             within the aileron range, if any, bound lo"
         );
     }
     if let Some(d) = leaves

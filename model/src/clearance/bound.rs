@@ -140,7 +140,8 @@ struct Trim {
     /// `g0` and `g2`, over the box and at the centre.
     g: (Dual, Dual),
     g_c: (I, I),
-    /// `g1 + sign(g1) sqrt(disc)`, over the box and at the centre.
+    /// `g1 + s sqrt(disc)`, `s` the branch's side ([`LiftedBox`]), over the box and at the
+    /// centre.
     den: (Dual, I),
 }
 
@@ -237,6 +238,14 @@ impl BoxPolys {
     /// [`BoxPolys::lift`] of a part `theta` of the lifted box `whole`: the branch's side is the
     /// whole's where that is certain (the same sign of `g1` at P0 = 0 holds on every part).
     pub fn lift_part(&self, theta: &[I], whole: &LiftedBox) -> LiftedBox {
+        debug_assert!(
+            theta.len() == whole.theta.len()
+                && theta
+                    .iter()
+                    .zip(&whole.theta)
+                    .all(|(t, w)| w.lo <= t.lo && t.hi <= w.hi),
+            "a part of the box"
+        );
         self.lift_in(theta, whole.side)
     }
 
@@ -376,7 +385,8 @@ impl BoxPolys {
 
     /// What a primary branch that comes back into the slab `p x` the box on its *other* trim
     /// (after turning in P0 beyond it, aileron yaw) meets there: no jump, as J has no zero on
-    /// the other root `delta_a = -(g1 + sign(g1) sqrt(disc)) / (2 g2)` ([`OtherTrim::NoJump`]);
+    /// the other root `delta_a = -(g1 + s sqrt(disc)) / (2 g2)`, `s` the branch's side
+    /// ([`OtherTrim::NoJump`]);
     /// or the end of the aileron range, as that root lies beyond the `range` (1e-9 relative
     /// margin, as for `finished`) on the slab and two steps of `analyze`'s walk above it
     /// ([`OtherTrim::BeyondRange`]); or possibly a jump ([`OtherTrim::MayJump`]). The walk on
@@ -421,7 +431,7 @@ impl BoxPolys {
             return false;
         };
         let (g2, den) = (t.g.1.v, t.den.0.v);
-        // |other root| >= min |g1 + sign(g1) sqrt(disc)| / (2 max |g2|), rounded down.
+        // |other root| >= min |g1 + s sqrt(disc)| / (2 max |g2|), rounded down.
         g2.is_exact_zero()
             || I::point(den.mig())
                 .checked_div(I::point(2.0) * I::point(g2.mag()))
@@ -430,12 +440,14 @@ impl BoxPolys {
 
     /// Where every aircraft's primary branch, certified from P0 = 0 up to `from`, turns back in
     /// P0 without a jump: the smallest `top = from + w` (`w = min_width, 2 min_width, ...` up
-    /// to `max_width`) at which the trim condition has no real root for any aircraft of the box
-    /// (its discriminant is negative, `g2` nonzero), provided the *turn zone* `[from, top]`
-    /// clears ([`BoxPolys::turn_zone_clear`]); `None` otherwise, or without aileron yaw (no
-    /// turn). Then every branch comes back down through `from` on its other trim, and the other
-    /// trims checked below `from` ([`BoxPolys::other_trim`]) are all it can meet a jump on
-    /// (docs/clearance.md, step 6).
+    /// to `max_width`) such that the trim condition has no real root for any aircraft of the box
+    /// on `[top, top + 2 TURN_STEP]` (its discriminant is negative, `g2` nonzero), provided the
+    /// *turn zone* `[from, top]` clears ([`BoxPolys::turn_zone_clear`]); `None` otherwise, or
+    /// without aileron yaw (no turn). Then every branch comes back down through `from` on its
+    /// other trim, and the other trims checked below `from` ([`BoxPolys::other_trim`]) are all it
+    /// can meet a jump on (docs/clearance.md, step 6). The band without trims is two steps of
+    /// `analyze`'s walk wide (it steps at most `TURN_STEP` where the branch may turn), so that
+    /// the walk cannot step over it onto trims beyond, where the exact curve never goes.
     pub fn turn_back(
         &self,
         bx: &LiftedBox,
@@ -449,7 +461,7 @@ impl BoxPolys {
         let mut w = min_width;
         while w <= max_width {
             let top = from + w;
-            if self.no_trim_at(bx, top) {
+            if self.no_trim_on(bx, I::new(top, next_up(top + 2.0 * TURN_STEP))) {
                 return self.turn_zone_clear(bx, I::new(from, top)).then_some(top);
             }
             w *= 2.0;
@@ -457,10 +469,10 @@ impl BoxPolys {
         None
     }
 
-    /// Whether the trim condition has no real root in delta_a at the roll rate `p` for any
+    /// Whether the trim condition has no real root in delta_a at any roll rate of `p` for any
     /// aircraft of the box: `g2` of one sign and the discriminant negative.
-    fn no_trim_at(&self, bx: &LiftedBox, p: f64) -> bool {
-        let Ok(k) = self.coefficients(bx, I::point(p)) else {
+    fn no_trim_on(&self, bx: &LiftedBox, p: I) -> bool {
+        let Ok(k) = self.coefficients(bx, p) else {
             return false;
         };
         let g2 = tight(k.g[2], k.g_c[2], &k.x, &k.c);

@@ -420,6 +420,25 @@ const BEYOND_MARGIN: f64 = 2.0 * crate::analysis::primary::MAX_STEP;
 pub const MAX_ROLL_RATE: f64 = 1000.0;
 
 impl Leaf {
+    /// The sub-box `theta` of `polys`, certified nowhere yet, its first slab `step` wide.
+    fn new(polys: &BoxPolys, theta: &[I], step: f64) -> Leaf {
+        Leaf {
+            lifted: std::sync::Arc::new(polys.lift(theta)),
+            theta: theta.to_vec(),
+            depth: 0.0,
+            step,
+            da_lo: 0.0,
+            beyond_at: None,
+            last: None,
+            stuck: None,
+            doubts: Vec::new(),
+            searched_at: None,
+            barrier: 0.0,
+            run_from: None,
+            turned: None,
+        }
+    }
+
     /// Whether the sub-box is proven to have no critical jump: along every aircraft's primary
     /// branch, |delta_a| (monotone before the first fold, Section 5 of docs/clearance.md)
     /// exceeds the aileron range at `beyond_at` with no jump, fold or divergence up to
@@ -475,11 +494,16 @@ impl Leaf {
         }
     }
 
-    /// Raises the barrier to `top` and drops the doubts it shields (those below it).
+    /// Raises the barrier to `top` and drops what it shields of the doubts: those below it
+    /// whole, and the part below it of one it cuts (a barrier found by
+    /// [`Walk::search_barrier`] need not end on a slab's edge).
     fn raise_barrier(&mut self, top: f64) {
         self.barrier = self.barrier.max(top);
         let barrier = self.barrier;
-        self.doubts.retain(|d| d.lo >= barrier);
+        self.doubts.retain(|d| d.hi > barrier);
+        for d in &mut self.doubts {
+            *d = I::new(d.lo.max(barrier), d.hi);
+        }
     }
 
     /// The proven minima over `leaves`: of the critical jump roll rate and of |delta_a| at it
@@ -787,21 +811,7 @@ pub fn clear(
         0.05
     };
     let min_step = settings.tolerance_p0 / 8.0;
-    let mut leaves = vec![Leaf {
-        lifted: std::sync::Arc::new(polys.lift(&theta0)),
-        theta: theta0.clone(),
-        depth: 0.0,
-        step: first_step,
-        da_lo: 0.0,
-        beyond_at: None,
-        last: None,
-        stuck: None,
-        doubts: Vec::new(),
-        searched_at: None,
-        barrier: 0.0,
-        run_from: None,
-        turned: None,
-    }];
+    let mut leaves = vec![Leaf::new(&polys, &theta0, first_step)];
     let range = if polys.symmetric {
         crate::analysis::aileron_range(aircraft)
     } else {
@@ -963,6 +973,22 @@ pub fn clear(
             d.lo, d.lo, d.hi
         );
     }
+    let cases: Vec<&CaseAircraft> = [&worst.p0, &worst.da]
+        .into_iter()
+        .filter_map(|c| c.as_ref().map(|(_, c)| c))
+        .collect();
+    if let Some(c) = contradiction(&leaves, &cases) {
+        // Never expected: the exact path found a critical jump where the proof says there is
+        // none, so an assumption of the proof (docs/clearance.md: that `analyze`'s walk follows
+        // the exact curve) fails for this box, and nothing below is proven.
+        lo = 0.0;
+        lo_da = 0.0;
+        note += &format!(
+            "; INCONSISTENT: an aircraft of the box has a critical jump (exact path, P0 = {:.6} \
+             rad/s) inside a sub-box the proof found free of them, so no bound is proven (lo = 0)",
+            c.p0
+        );
+    }
     if let Some(hi) = worst.p0.as_ref().map(|(p, _)| *p) {
         lo = lo.min(hi);
     }
@@ -971,6 +997,26 @@ pub fn clear(
     }
     progress(1.0);
     Ok(finish(worst, lo, lo_da.to_degrees(), note, boxes, slabs))
+}
+
+/// The first of `cases` (aircraft the exact path found a critical jump for) that lies in a
+/// finished sub-box of `leaves`, one the proof found free of critical jumps: a contradiction.
+fn contradiction<'a>(leaves: &[Leaf], cases: &[&'a CaseAircraft]) -> Option<&'a CaseAircraft> {
+    use num_traits::ToPrimitive;
+    cases.iter().copied().find(|c| {
+        let x: Vec<f64> = c
+            .coordinates
+            .iter()
+            .map(|v| v.to_f64().unwrap_or(f64::NAN))
+            .collect();
+        leaves.iter().filter(|l| l.finished()).any(|l| {
+            l.theta.len() == x.len()
+                && l.theta
+                    .iter()
+                    .zip(&x)
+                    .all(|(t, v)| t.lo <= *v && *v <= t.hi)
+        })
+    })
 }
 
 #[cfg(feature = "cli")]
@@ -985,6 +1031,43 @@ pub(crate) mod tests {
         let path =
             std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../aircraft/a_uncertain.toml");
         crate::aircraft::load(&path).expect("the committed uncertain aircraft")
+    }
+
+    /// An aircraft the exact path finds a critical jump for, inside a sub-box the proof calls
+    /// free of them (here one turned without doubts), is a contradiction; outside every such
+    /// sub-box, or inside an unfinished one, it is not.
+    #[test]
+    fn a_jump_inside_a_box_proven_free_of_jumps_is_a_contradiction() {
+        let a = Aircraft::a();
+        let polys = BoxPolys::new(&a, &[Param::Lp], 0.0);
+        let mut finished = Leaf::new(&polys, &[I::new(-22.0, -21.0)], 0.1);
+        finished.turned = Some(1.5);
+        let unfinished = Leaf::new(&polys, &[I::new(-21.0, -20.0)], 0.1);
+        let case = |l_p: f64| CaseAircraft {
+            parameters: Default::default(),
+            p0: 1.7,
+            delta_a_deg: 10.0,
+            aircraft: a.clone(),
+            coordinates: vec![BigRational::from_float(l_p).expect("finite")],
+        };
+        let leaves = [finished, unfinished];
+        let (inside, outside, unproven) = (case(-21.5), case(-23.0), case(-20.5));
+        assert_eq!(contradiction(&leaves, &[&outside, &inside]), Some(&inside));
+        assert_eq!(contradiction(&leaves, &[&outside, &unproven]), None);
+    }
+
+    /// A barrier shields only what lies below it: a doubt it cuts keeps its part above it, and
+    /// one wholly below it goes.
+    #[test]
+    fn a_barrier_shields_only_what_lies_below_it() {
+        let polys = BoxPolys::new(&Aircraft::a(), &[Param::Lp], 0.0);
+        let mut leaf = Leaf::new(&polys, &[I::new(-22.0, -21.0)], 0.1);
+        leaf.doubts = vec![I::new(1.0, 1.5), I::new(2.0, 2.4)];
+        leaf.raise_barrier(2.375);
+        assert_eq!(leaf.doubts, vec![I::new(2.375, 2.4)]);
+        assert_eq!(leaf.doubt().map(|d| d.lo), Some(2.375));
+        leaf.raise_barrier(2.4);
+        assert!(leaf.doubts.is_empty());
     }
 
     /// The branch and bound steps a fixed number of leaves at a time, so its answer (bounds,

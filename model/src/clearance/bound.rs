@@ -366,7 +366,11 @@ impl BoxPolys {
     /// The chain over `p x` the box, every value tightened by its mean-value form around the
     /// centre, or the first link that fails.
     fn chain(&self, bx: &LiftedBox, p: I) -> Result<Chain<Dual>, Failure> {
-        let t = self.trim(bx, p)?;
+        self.chain_on(&self.trim(bx, p)?)
+    }
+
+    /// The chain on the trim condition's part `t` of it.
+    fn chain_on(&self, t: &Trim) -> Result<Chain<Dual>, Failure> {
         let ((b, m), (x, c)) = (&t.at, (&t.x, &t.c));
         let ((g0, _), (g0c, _), (den, den_c)) = (t.g, t.g_c, t.den);
         let minus_two = I::point(-2.0);
@@ -403,9 +407,15 @@ impl BoxPolys {
         if self.other_beyond_range(bx, p, range) {
             return OtherTrim::BeyondRange;
         }
-        let Ok(t) = self.trim(bx, p) else {
-            return OtherTrim::MayJump;
-        };
+        match self.trim(bx, p) {
+            Ok(t) => BoxPolys::other_on(&t),
+            Err(_) => OtherTrim::MayJump,
+        }
+    }
+
+    /// Whether J has no zero on the other root over the slab of the trim condition's part `t`
+    /// of the chain ([`OtherTrim::NoJump`], else [`OtherTrim::MayJump`]).
+    fn other_on(t: &Trim) -> OtherTrim {
         let ((b, m), (g2, g2c), (den, den_c)) = (&t.at, (t.g.1, t.g_c.1), t.den);
         let two = I::point(2.0);
         if !g2.v.contains_zero() {
@@ -522,21 +532,15 @@ impl BoxPolys {
         j.is_ok_and(|j| !j.v.contains_zero())
     }
 
-    /// An enclosure of the primary branch's aileron over `p x` the box, or why there is none.
-    pub fn aileron(&self, bx: &LiftedBox, p: I) -> Result<I, Failure> {
-        self.chain(bx, p).map(|c| c.da.v)
-    }
-
-    /// A lower bound of |delta_a| on the primary branch at roll rate `p` over `theta`, given the
-    /// enclosure `da` of it there: the smallest magnitude on the face of the box towards which
-    /// |delta_a| decreases in every coordinate where it is monotone (the mean-value form there),
-    /// and at least that of `da`.
-    pub fn aileron_lower(&self, bx: &LiftedBox, p: f64, da: I) -> f64 {
+    /// A lower bound of |delta_a| on the primary branch at roll rate `p` over the box (`None`
+    /// when the chain fails there): the smallest magnitude of its enclosure over the box, or on
+    /// the face of the box towards which |delta_a| decreases in every coordinate where it is
+    /// monotone (the mean-value form there), whichever is larger.
+    pub fn aileron_lower(&self, bx: &LiftedBox, p: f64) -> Option<f64> {
+        let chain = self.chain(bx, I::point(p)).ok()?;
+        let da = chain.da.v;
         let Some(sign) = da.sign() else {
-            return 0.0;
-        };
-        let Ok(chain) = self.chain(bx, I::point(p)) else {
-            return da.mig();
+            return Some(0.0);
         };
         let face: Vec<I> = bx
             .theta
@@ -558,13 +562,39 @@ impl BoxPolys {
                     0.0
                 }
             });
-        on_face.max(da.mig())
+        Some(on_face.max(da.mig()))
     }
 
     /// Certifies the slab `p x theta` (see the module documentation); on success returns the
     /// enclosure of the primary branch's aileron on it.
     pub fn certify(&self, bx: &LiftedBox, p: I) -> Result<I, Failure> {
         let chain = self.chain(bx, p)?;
+        self.certified(bx, p, chain)
+    }
+
+    /// [`BoxPolys::certify`] and, on success, [`BoxPolys::other_trim`] of the same slab, from
+    /// one evaluation of the trim condition's part of the chain on it.
+    pub fn certify_with_other(
+        &self,
+        bx: &LiftedBox,
+        p: I,
+        range: f64,
+    ) -> Result<(I, OtherTrim), Failure> {
+        let t = self.trim(bx, p)?;
+        let da = self.certified(bx, p, self.chain_on(&t)?)?;
+        let other = if !self.aileron_yaw {
+            OtherTrim::NoJump
+        } else if self.other_beyond_range(bx, p, range) {
+            OtherTrim::BeyondRange
+        } else {
+            BoxPolys::other_on(&t)
+        };
+        Ok((da, other))
+    }
+
+    /// The last link of [`BoxPolys::certify`]: J of the `chain` over the slab `p` free of zeros
+    /// (tried again on a face of the box where J is monotone).
+    fn certified(&self, bx: &LiftedBox, p: I, chain: Chain<Dual>) -> Result<I, Failure> {
         debug_assert!(!chain.det_a.v.contains_zero());
         if !chain.jump.v.contains_zero() {
             return Ok(chain.da.v);

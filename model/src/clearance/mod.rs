@@ -579,15 +579,13 @@ impl Walk<'_> {
         }
         let top = (leaf.depth + leaf.step).min(self.limit.max(leaf.depth + self.min_step));
         let slab = I::new(leaf.depth, top);
-        let why = match polys.certify(&leaf.lifted, slab) {
-            Ok(_) => {
-                let other = polys.other_trim(&leaf.lifted, slab, self.range);
+        let why = match polys.certify_with_other(&leaf.lifted, slab, self.range) {
+            Ok((_, other)) => {
                 leaf.record_other_trim(slab, other);
                 leaf.last = None;
                 leaf.depth = top;
                 leaf.step *= 2.0;
-                if let Ok(d) = polys.aileron(&leaf.lifted, I::point(top)) {
-                    let lower = polys.aileron_lower(&leaf.lifted, top, d);
+                if let Some(lower) = polys.aileron_lower(&leaf.lifted, top) {
                     leaf.raise_aileron(lower, self.range);
                 }
                 return (leaf, None);
@@ -671,8 +669,7 @@ impl Walk<'_> {
             half.doubts
                 .retain(|d| !polys.other_trim(lifted, *d, self.range).is_clear());
             half.searched_at = None;
-            if let Ok(d) = polys.aileron(&half.lifted, I::point(half.depth)) {
-                let lower = polys.aileron_lower(&half.lifted, half.depth, d);
+            if let Some(lower) = polys.aileron_lower(&half.lifted, half.depth) {
                 half.raise_aileron(lower, self.range);
             }
         }

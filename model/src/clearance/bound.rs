@@ -400,6 +400,12 @@ impl BoxPolys {
     /// a point checked against the range where the root is proven beyond it. Without aileron
     /// yaw (g2 = 0 for every aircraft) there is no other trim.
     pub fn other_trim(&self, bx: &LiftedBox, p: I, range: f64) -> OtherTrim {
+        self.other_trim_with(bx, p, range, None)
+    }
+
+    /// [`BoxPolys::other_trim`], from the trim condition's part `t` of the chain on the slab
+    /// when it is at hand (else evaluated here, if it comes to that).
+    fn other_trim_with(&self, bx: &LiftedBox, p: I, range: f64, t: Option<&Trim>) -> OtherTrim {
         if !self.aileron_yaw {
             return OtherTrim::NoJump;
         }
@@ -407,9 +413,12 @@ impl BoxPolys {
         if self.other_beyond_range(bx, p, range) {
             return OtherTrim::BeyondRange;
         }
-        match self.trim(bx, p) {
-            Ok(t) => BoxPolys::other_on(&t),
-            Err(_) => OtherTrim::MayJump,
+        match t {
+            Some(t) => BoxPolys::other_on(t),
+            None => match self.trim(bx, p) {
+                Ok(t) => BoxPolys::other_on(&t),
+                Err(_) => OtherTrim::MayJump,
+            },
         }
     }
 
@@ -482,12 +491,19 @@ impl BoxPolys {
     /// Whether the trim condition has no real root in delta_a at any roll rate of `p` for any
     /// aircraft of the box: `g2` of one sign and the discriminant negative.
     fn no_trim_on(&self, bx: &LiftedBox, p: I) -> bool {
-        let Ok(k) = self.coefficients(bx, p) else {
-            return false;
-        };
-        let g2 = tight(k.g[2], k.g_c[2], &k.x, &k.c);
-        let disc = BoxPolys::discriminant(&k);
-        matches!((g2, disc), (Ok(g2), Ok((d, _))) if g2.v.sign().is_some() && d.v.hi < 0.0)
+        self.quadratic(bx, p)
+            .is_some_and(|(_, _, disc)| disc.v.hi < 0.0)
+    }
+
+    /// The trim condition over `p x` the box as a quadratic in delta_a: its coefficients, `g2`
+    /// and the discriminant, both tightened by their mean-value forms; `None` when a link
+    /// fails or `g2` may vanish.
+    fn quadratic(&self, bx: &LiftedBox, p: I) -> Option<(Coefficients, Dual, Dual)> {
+        let k = self.coefficients(bx, p).ok()?;
+        let g2 = tight(k.g[2], k.g_c[2], &k.x, &k.c).ok()?;
+        let (disc, _) = BoxPolys::discriminant(&k).ok()?;
+        g2.v.sign()?;
+        Some((k, g2, disc))
     }
 
     /// Whether the turn zone `u x` the box holds no jump on any trim: det A and `g2` have no
@@ -502,18 +518,9 @@ impl BoxPolys {
     /// as one interval, J's mean-value form in the box and P0 around the centre, where it is
     /// evaluated over the same range of delta_a).
     pub fn turn_zone_clear(&self, bx: &LiftedBox, u: I) -> bool {
-        let Ok(k) = self.coefficients(bx, u) else {
+        let Some((k, g2, disc)) = self.quadratic(bx, u) else {
             return false;
         };
-        let Ok(g2) = tight(k.g[2], k.g_c[2], &k.x, &k.c) else {
-            return false;
-        };
-        let Ok((disc, _)) = BoxPolys::discriminant(&k) else {
-            return false;
-        };
-        if g2.v.contains_zero() {
-            return false;
-        }
         // Every real root: between the two roots where disc >= 0 (none where disc < 0).
         let Some(root) = I::new(0.0, disc.v.hi.max(0.0)).sqrt() else {
             return false;
@@ -582,14 +589,7 @@ impl BoxPolys {
     ) -> Result<(I, OtherTrim), Failure> {
         let t = self.trim(bx, p)?;
         let da = self.certified(bx, p, self.chain_on(&t)?)?;
-        let other = if !self.aileron_yaw {
-            OtherTrim::NoJump
-        } else if self.other_beyond_range(bx, p, range) {
-            OtherTrim::BeyondRange
-        } else {
-            BoxPolys::other_on(&t)
-        };
-        Ok((da, other))
+        Ok((da, self.other_trim_with(bx, p, range, Some(&t))))
     }
 
     /// The last link of [`BoxPolys::certify`]: J of the `chain` over the slab `p` free of zeros

@@ -466,3 +466,65 @@ fn a_barrier_found_above_a_doubt_lets_the_proof_pass_the_turn() {
         .any(|j| j.p0 < 3.1 && j.delta_a_rad.abs() <= range));
     proven_free_of_critical_jumps_past_a_turn(&a, de, 23);
 }
+
+/// Aircraft A with n_delta_a in [20, 40] at delta_e = -4 deg: the critical jump's fold pair
+/// merges (a cusp) near n_delta_a = 24.49, past which no aircraft has a critical jump, and
+/// |delta_a| at the jump falls towards that point. The minimum over the box is the limit at the
+/// cusp, attained by no aircraft and out of reach of the candidates and the vertex search
+/// (which stopped hi at 4.93 deg while the proof's lo reached 4.62 deg, unconverged at the
+/// budget). The proof's lowest sub-box closes in on the cusp, and so must hi.
+///
+/// Independent of the proof: the cusp bracketed by bisection on n_delta_a with the exact path
+/// (a critical jump on one side, none on the other), and the |delta_a| of the last aircraft
+/// with a jump. Both bounds must hold it, within the tolerance.
+#[test]
+fn a_minimum_where_the_jump_vanishes_is_attained_within_the_tolerance() {
+    let de = (-4f64).to_radians();
+    let mut a = Aircraft::a();
+    a.uncertainty = vec![Uncertain::param(
+        Param::NDeltaA,
+        BigRational::from_integer(20.into()),
+        BigRational::from_integer(40.into()),
+    )];
+    let settings = Settings {
+        delta_e_rad: de,
+        max_boxes: 400,
+        candidates: 4,
+        ..Settings::default()
+    };
+    let c = clear(&a, &settings, &mut |_| {}).unwrap();
+    assert!(
+        c.critical_p0.converged && c.critical_delta_a_deg.converged,
+        "{c:?}"
+    );
+    let critical = |n: f64| {
+        let s = a.with(Param::NDeltaA, BigRational::from_float(n).unwrap());
+        analyze(&s, de).unwrap().critical
+    };
+    let (mut yes, mut no) = (20.0, 40.0);
+    let mut at_cusp = critical(yes).expect("a critical jump at n_delta_a = 20");
+    for _ in 0..30 {
+        let m = 0.5 * (yes + no);
+        match critical(m) {
+            Some(j) => (yes, at_cusp) = (m, j),
+            None => no = m,
+        }
+    }
+    assert!((24.0..25.0).contains(&yes), "the cusp at {yes}");
+    let near = at_cusp.delta_a_deg.abs();
+    let (lo, hi) = (
+        c.critical_delta_a_deg.lo,
+        c.critical_delta_a_deg.hi.unwrap(),
+    );
+    assert!(lo <= near, "lo = {lo} above {near}, attained at {yes}");
+    assert!(
+        hi <= near + settings.tolerance_deg,
+        "hi = {hi}: the cusp's {near} (n_delta_a = {yes}) not reached"
+    );
+    let w = c.worst_case_aileron.expect("a worst case for the aileron");
+    let j = analyze(&w.aircraft, de).unwrap().critical.unwrap();
+    assert_eq!(j.delta_a_deg.abs(), hi);
+    // The roll-rate minimum is at the vertex n_delta_a = 20.
+    let at_20 = critical(20.0).unwrap().p0;
+    assert!(c.critical_p0.lo <= at_20 && at_20 <= c.critical_p0.hi.unwrap() + 1e-12);
+}

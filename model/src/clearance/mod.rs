@@ -329,7 +329,109 @@ impl Worst<'_> {
         }
         Some((j.p0, da))
     }
+
+    /// Tries the sub-box `theta` for the worst case of the minimum `by_p0` works on (the
+    /// critical roll rate, else |delta_a|): the branch and bound's lowest sub-box is where that
+    /// minimum lies, and hi, unlike lo, moves only when an aircraft attains a lower value. A
+    /// minimum inside the box is out of reach of the candidates and the vertex search; so is
+    /// one where the critical jump vanishes (a cusp, where the fold pair of the jump merges:
+    /// |delta_a| at the jump tends to its infimum there, attained by no aircraft), which the
+    /// lowest sub-box closes in on while its centre has no jump at all. So: the centre first;
+    /// without a critical jump there, a bisection between the best aircraft so far and the
+    /// centre for the last aircraft with one, the nearest to where the jump vanishes.
+    ///
+    /// Each point is screened by the certified route (about a hundredth of the exact path's
+    /// time); the best one found, if it would lower either minimum or hit the limit, is
+    /// analysed by the exact path, which alone sets hi.
+    fn probe(&mut self, theta: &[I], by_p0: bool) -> Result<(), ClearError> {
+        let key = |f: &Screened| if by_p0 { f.p0 } else { f.da_deg };
+        let centre: Vec<f64> = theta.iter().map(|t| t.mid()).collect();
+        if let Some(found) = self.screen(&centre) {
+            return self.offer(found);
+        }
+        let best = if by_p0 { &self.p0 } else { &self.da };
+        let Some((_, case)) = best else {
+            return Ok(());
+        };
+        let mut yes: Vec<f64> = case
+            .coordinates
+            .iter()
+            .map(|q| I::from_q(q).mid())
+            .collect();
+        let mut no = centre;
+        let mut found: Option<Screened> = None;
+        for _ in 0..PROBE_BISECTIONS {
+            let m: Vec<f64> = yes
+                .iter()
+                .zip(&no)
+                .map(|(a, b)| 0.5 * a + 0.5 * b)
+                .collect();
+            if m == yes || m == no {
+                break;
+            }
+            match self.screen(&m) {
+                Some(f) => {
+                    if found.as_ref().is_none_or(|b| key(&f) < key(b)) {
+                        found = Some(f);
+                    }
+                    yes = m;
+                }
+                None => no = m,
+            }
+        }
+        match found {
+            Some(f) => self.offer(f),
+            None => Ok(()),
+        }
+    }
+
+    /// The aircraft at the f64 coordinates `x` (each clamped into the box as an exact value)
+    /// if the certified route proves that it has a critical jump (the Monte Carlo's lean
+    /// route, [`crate::analysis::fast::critical`], without the exact path's fallback: next to
+    /// a cusp that fallback is the slow one, and an uncertified point only ends a bisection).
+    fn screen(&self, x: &[f64]) -> Option<Screened> {
+        let x: Vec<BigRational> = self
+            .params
+            .iter()
+            .zip(x)
+            .map(|(u, v)| clamp_exact(u, *v))
+            .collect();
+        let aircraft = at(self.base, self.params, &x);
+        let v = crate::certified::Values::of(&aircraft, self.delta_e_rad, 0.0);
+        let bound = crate::analysis::aileron_range(&aircraft);
+        let (p0, da) =
+            crate::analysis::fast::critical(&v, bound, crate::analysis::fast::MAX_WIDTH).ok()??;
+        Some(Screened {
+            x,
+            p0,
+            da_deg: da.to_degrees().abs(),
+        })
+    }
+
+    /// Analyses a screened aircraft by the exact path if it would lower a minimum or hit the
+    /// limit (its exact answer, not the screen's, is what is kept).
+    fn offer(&mut self, f: Screened) -> Result<(), ClearError> {
+        let lower = self.p0.as_ref().is_none_or(|(p, _)| f.p0 < *p)
+            || self.da.as_ref().is_none_or(|(d, _)| f.da_deg < *d)
+            || (self.limit_hit.is_none() && self.limit_deg.is_some_and(|l| f.da_deg <= l));
+        if lower {
+            self.try_at(&f.x)?;
+        }
+        Ok(())
+    }
 }
+
+/// An aircraft of the box with a critical jump, found by [`Worst::screen`]: its exact
+/// coordinates, and its critical roll rate and |delta_a| (deg) by the certified route.
+struct Screened {
+    x: Vec<BigRational>,
+    p0: f64,
+    da_deg: f64,
+}
+
+/// Bisection steps of [`Worst::probe`] towards where the critical jump vanishes: 2^-40 of the
+/// segment, far below any tolerance, at about 40 certified analyses.
+const PROBE_BISECTIONS: usize = 40;
 
 /// Greedy vertex search from `start`: each coordinate in turn moved to the end of its interval
 /// that lowers `key` (the critical p0 or |delta_a|), repeated while it improves.
@@ -404,6 +506,9 @@ struct Leaf {
     /// aircraft's branch turns back in P0 below it with no jump, and comes back down through
     /// the depth on its other trim, so only the doubts bound the sub-box (and none: finished).
     turned: Option<f64>,
+    /// Whether the sub-box has been probed for the worst case ([`Worst::probe`]), which is
+    /// done once, the first time it is the lowest.
+    probed: bool,
 }
 
 /// How far past the roll rate where |delta_a| exceeds the aileron range a sub-box must be
@@ -436,6 +541,7 @@ impl Leaf {
             barrier: 0.0,
             run_from: None,
             turned: None,
+            probed: false,
         }
     }
 
@@ -661,6 +767,7 @@ impl Walk<'_> {
         other.theta[k] = I::new(m, t.hi);
         leaf.step = self.first_step.max(self.min_step);
         other.step = leaf.step;
+        (leaf.probed, other.probed) = (false, false);
         // The halves bound |delta_a| at their depth more tightly than the whole, and may clear
         // the other trim where the whole could not.
         for half in [&mut leaf, &mut other] {
@@ -814,22 +921,24 @@ pub fn clear(
     } else {
         f64::INFINITY
     };
-    // How deep every sub-box must be certified: to the worst case found (less the tolerance),
-    // or, when no aircraft tried has a critical jump, until every sub-box is finished (its
-    // branch leaves the aileron range first) or reaches the cap.
-    let reach = if hi_p0.is_finite() {
-        hi_p0 - settings.tolerance_p0
-    } else {
-        MAX_ROLL_RATE
-    };
     let (mut boxes, mut slabs) = (1usize, 0usize);
-    let hi_da_rad = worst
-        .da
-        .as_ref()
-        .map_or(f64::INFINITY, |(d, _)| d.to_radians());
     let tol_da = settings.tolerance_deg.to_radians();
     let note;
     loop {
+        // How deep every sub-box must be certified: to the worst case found (less the
+        // tolerance), or, when no aircraft tried has a critical jump, until every sub-box is
+        // finished (its branch leaves the aileron range first) or reaches the cap. The worst
+        // case found only ever goes down (`Worst::probe`).
+        let hi_p0 = worst.p0.as_ref().map_or(f64::INFINITY, |(p, _)| *p);
+        let reach = if hi_p0.is_finite() {
+            hi_p0 - settings.tolerance_p0
+        } else {
+            MAX_ROLL_RATE
+        };
+        let hi_da_rad = worst
+            .da
+            .as_ref()
+            .map_or(f64::INFINITY, |(d, _)| d.to_radians());
         let (lo, lo_da) = Leaf::minima(&leaves);
         let done_p0 = lo >= reach;
         // Without a worst case (hi), the aileron bound rides on the roll-rate walk.
@@ -895,6 +1004,10 @@ pub fn clear(
             break;
         };
         batch.retain(|i| *i == first || key(&leaves[*i]) < target);
+        if !leaves[first].probed {
+            leaves[first].probed = true;
+            worst.probe(&leaves[first].theta, by_p0)?;
+        }
         let limit = if by_p0 { hi_p0 } else { f64::INFINITY }.min(MAX_ROLL_RATE);
         let walk = Walk {
             polys: &polys,

@@ -864,8 +864,54 @@ struct Local<'a> {
     x0: f64,
     /// `q` made ready for evaluation at doubles (`x0 = 0`: `y = x` exactly).
     at_point: Option<PointEnclosure<'a>>,
-    f: F64Poly,
-    df: F64Poly,
+    /// The midpoint polynomial for Newton's method, in `y^2` where it is even or odd in `y`
+    /// (the criterion polynomials are, about P0 = 0): half the steps of Horner's scheme.
+    f: Midpoint,
+}
+
+/// A polynomial of doubles `f(y)`, given as `g(y^2)` (even), `y g(y^2)` (odd) or itself.
+enum Midpoint {
+    Even(F64Poly),
+    Odd(F64Poly),
+    General(F64Poly),
+}
+
+impl Midpoint {
+    /// The midpoints of `q`'s coefficients, with the parity their exact zeros show.
+    fn of(q: &IPoly) -> Midpoint {
+        let m = q.mid();
+        let zero_at =
+            |parity: usize| m.0.len() > 2 && m.0.iter().skip(parity).step_by(2).all(|c| *c == 0.0);
+        let half = |from: usize| F64Poly(m.0.iter().skip(from).step_by(2).copied().collect());
+        if zero_at(1) {
+            Midpoint::Even(half(0))
+        } else if zero_at(0) {
+            Midpoint::Odd(half(1))
+        } else {
+            Midpoint::General(m)
+        }
+    }
+
+    /// The value and the derivative at `y`, by Horner's scheme for both at once.
+    fn value_slope(&self, y: f64) -> (f64, f64) {
+        let horner = |c: &[f64], t: f64| {
+            c.iter()
+                .rev()
+                .fold((0.0, 0.0), |(v, d), c| (v * t + c, d * t + v))
+        };
+        match self {
+            Midpoint::Even(g) => {
+                let (v, d) = horner(&g.0, y * y);
+                (v, 2.0 * y * d)
+            }
+            Midpoint::Odd(g) => {
+                let u = y * y;
+                let (v, d) = horner(&g.0, u);
+                (y * v, v + 2.0 * u * d)
+            }
+            Midpoint::General(f) => horner(&f.0, y),
+        }
+    }
 }
 
 impl Local<'_> {
@@ -875,8 +921,7 @@ impl Local<'_> {
             q,
             x0,
             at_point: (x0 == 0.0).then(|| PointEnclosure::new(q)),
-            f: q.mid(),
-            df: q.derivative().mid(),
+            f: Midpoint::of(q),
         }
     }
 
@@ -888,14 +933,9 @@ impl Local<'_> {
         }
     }
 
-    /// The floating-point value at `x` (nothing certified).
-    fn f(&self, x: f64) -> f64 {
-        self.f.eval(x - self.x0)
-    }
-
-    /// The floating-point derivative at `x` (nothing certified).
-    fn df(&self, x: f64) -> f64 {
-        self.df.eval(x - self.x0)
+    /// The floating-point value and derivative at `x` (nothing certified).
+    fn f_df(&self, x: f64) -> (f64, f64) {
+        self.f.value_slope(x - self.x0)
     }
 }
 
@@ -935,6 +975,9 @@ fn split_point(tl: f64, tr: f64, t: f64) -> Option<f64> {
     (p.lo == p.hi && p.lo > tl && p.lo < tr).then_some(p.lo)
 }
 
+/// How many ulps a Newton step of [`refine_local`] may move and still count as converged.
+const NEWTON_ULPS: f64 = 16.0;
+
 /// Refines the bracket `[lo, hi]` of the single root of `p` in it, to relative width `target`
 /// if the enclosures allow.
 ///
@@ -962,13 +1005,13 @@ fn refine_local(
     if slo == shi || lo >= hi || lo.is_nan() || hi.is_nan() {
         return Err(Uncertified::Sign);
     }
-    let (f, df) = (|x: f64| p.f(x), |x: f64| p.df(x));
+    let f = |x: f64| p.f_df(x).0;
     let inside = |x: f64, lo: f64, hi: f64| x > lo && x < hi;
     let (mut a, mut b) = (lo, hi);
     let fa_sign = f(a).signum();
     let mut x = 0.5 * a + 0.5 * b;
     for _ in 0..100 {
-        let fx = f(x);
+        let (fx, dfx) = p.f_df(x);
         if fx == 0.0 || b <= next_up(a) {
             break;
         }
@@ -977,13 +1020,18 @@ fn refine_local(
         } else {
             b = x;
         }
-        let newton = x - fx / df(x);
+        let newton = x - fx / dfx;
         let next = if inside(newton, a, b) {
             newton
         } else {
             0.5 * a + 0.5 * b
         };
-        if next == x {
+        // A Newton step within a few ulps: converged as far as doubles go (further steps only
+        // wander in the rounding noise, far inside the narrowest bracket the enclosures can
+        // certify).
+        let close = NEWTON_ULPS * (next_up(x.abs()) - x.abs());
+        if (next - x).abs() <= close {
+            x = next;
             break;
         }
         x = next;
@@ -991,7 +1039,7 @@ fn refine_local(
     if !inside(x, lo, hi) {
         x = 0.5 * lo + 0.5 * hi;
     }
-    let slope = df(x).abs();
+    let slope = p.f_df(x).1.abs();
     let certify = |enclose: &dyn Fn(f64) -> I, x: f64| -> (f64, f64, f64) {
         certified_bracket(enclose, (lo, slo), (hi, shi), x, slope)
     };

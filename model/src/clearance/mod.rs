@@ -41,6 +41,7 @@ use bound::{BoxPolys, Failure, LiftedBox, OtherTrim};
 use num_rational::BigRational;
 use rayon::prelude::*;
 use serde::Serialize;
+use std::sync::Arc;
 use std::time::Instant;
 
 /// Settings of a clearance run.
@@ -475,8 +476,10 @@ fn descend(
 #[derive(Clone, Debug)]
 struct Leaf {
     theta: Vec<I>,
-    /// The box lifted once for all its slabs.
-    lifted: std::sync::Arc<LiftedBox>,
+    /// The box lifted once for all its slabs; dropped once the sub-box is retired
+    /// ([`Leaf::retired`]: about 125 kB each with 17 uncertain parameters, which thousands of
+    /// sub-boxes held to the end), and made again from `theta` should it be stepped after all.
+    lifted: Option<Arc<LiftedBox>>,
     depth: f64,
     step: f64,
     /// Lower bound of |delta_a| (rad) of the primary branch at `depth` over the box.
@@ -528,7 +531,7 @@ impl Leaf {
     /// The sub-box `theta` of `polys`, certified nowhere yet, its first slab `step` wide.
     fn new(polys: &BoxPolys, theta: &[I], step: f64) -> Leaf {
         Leaf {
-            lifted: std::sync::Arc::new(polys.lift(theta)),
+            lifted: Some(Arc::new(polys.lift(theta))),
             theta: theta.to_vec(),
             depth: 0.0,
             step,
@@ -543,6 +546,24 @@ impl Leaf {
             turned: None,
             probed: false,
         }
+    }
+
+    /// The box lifted, made again from `theta` if it was dropped.
+    fn lifted(&mut self, polys: &BoxPolys) -> Arc<LiftedBox> {
+        let theta = &self.theta;
+        Arc::clone(
+            self.lifted
+                .get_or_insert_with(|| Arc::new(polys.lift(theta))),
+        )
+    }
+
+    /// Whether the sub-box will not be stepped again: finished or stuck, or at or past both
+    /// targets, the roll rate `reach` and the aileron bound `da_target` (which only go down
+    /// while a worst case is known, as hi does).
+    fn retired(&self, reach: f64, da_target: f64) -> bool {
+        self.finished()
+            || self.stuck.is_some()
+            || (self.p0_key() >= reach && self.da_key() >= da_target)
     }
 
     /// Whether the sub-box is proven to have no critical jump: along every aircraft's primary
@@ -655,6 +676,7 @@ impl Walk<'_> {
     /// when it cannot be). Returns the leaf and the other half of a split.
     fn step(&self, leaf: &Leaf) -> (Leaf, Option<Leaf>) {
         let (polys, mut leaf) = (self.polys, leaf.clone());
+        let lifted = leaf.lifted(polys);
         if let Some(doubt) = leaf.doubt() {
             // The doubt, not the depth, bounds this sub-box. Look for a barrier above it (once
             // per depth), else clear the doubt on halves of its slab while it is wider than the
@@ -663,7 +685,7 @@ impl Walk<'_> {
             // further up, reach a jump, or split (its halves check the doubt again).
             if leaf.searched_at != Some(leaf.depth) {
                 leaf.searched_at = Some(leaf.depth);
-                if self.search_barrier(&mut leaf, doubt.hi) {
+                if self.search_barrier(&mut leaf, &lifted, doubt.hi) {
                     return (leaf, None);
                 }
             }
@@ -672,7 +694,7 @@ impl Walk<'_> {
                 let halves = [I::new(doubt.lo, m), I::new(m, doubt.hi)];
                 let left: Vec<I> = halves
                     .into_iter()
-                    .filter(|h| !polys.other_trim(&leaf.lifted, *h, self.range).is_clear())
+                    .filter(|h| !polys.other_trim(&lifted, *h, self.range).is_clear())
                     .collect();
                 leaf.doubts.splice(0..1, left);
                 return (leaf, None);
@@ -680,18 +702,18 @@ impl Walk<'_> {
             if leaf.turned.is_some() {
                 // The branch turns back below the turn zone's top: going deeper proves nothing
                 // more. The halves check the doubt again on their smaller boxes.
-                return self.split(leaf, doubt, Failure::Jump);
+                return self.split(leaf, &lifted, doubt, Failure::Jump);
             }
         }
         let top = (leaf.depth + leaf.step).min(self.limit.max(leaf.depth + self.min_step));
         let slab = I::new(leaf.depth, top);
-        let why = match polys.certify_with_other(&leaf.lifted, slab, self.range) {
+        let why = match polys.certify_with_other(&lifted, slab, self.range) {
             Ok((_, other)) => {
                 leaf.record_other_trim(slab, other);
                 leaf.last = None;
                 leaf.depth = top;
                 leaf.step *= 2.0;
-                if let Some(lower) = polys.aileron_lower(&leaf.lifted, top) {
+                if let Some(lower) = polys.aileron_lower(&lifted, top) {
                     leaf.raise_aileron(lower, self.range);
                 }
                 return (leaf, None);
@@ -706,13 +728,13 @@ impl Walk<'_> {
         if why == Failure::Turn {
             // Before splitting: the branch may turn back, for every aircraft of the sub-box,
             // within a zone that holds no jump.
-            let zone = polys.turn_back(&leaf.lifted, leaf.depth, self.min_step, TURN_ZONE);
+            let zone = polys.turn_back(&lifted, leaf.depth, self.min_step, TURN_ZONE);
             if let Some(top) = zone {
                 leaf.turned = Some(top);
                 return (leaf, None);
             }
         }
-        self.split(leaf, slab, why)
+        self.split(leaf, &lifted, slab, why)
     }
 
     /// Looks, from the depth down to `from` (the top of the lowest doubt), for a slab of at
@@ -720,15 +742,12 @@ impl Walk<'_> {
     /// ([`BoxPolys::other_beyond_range`]; a sub-box's own slabs may not show one where its
     /// halves do), in 32 slabs at most; the highest one found becomes the barrier, and the doubts
     /// below it are dropped. Returns whether one was found.
-    fn search_barrier(&self, leaf: &mut Leaf, from: f64) -> bool {
+    fn search_barrier(&self, leaf: &mut Leaf, lifted: &LiftedBox, from: f64) -> bool {
         let w = ((leaf.depth - from) / 32.0).max(TURN_STEP);
         let mut hi = leaf.depth;
         while hi - w >= from {
             let slab = I::new(hi - w, hi);
-            if self
-                .polys
-                .other_beyond_range(&leaf.lifted, slab, self.range)
-            {
+            if self.polys.other_beyond_range(lifted, slab, self.range) {
                 leaf.raise_barrier(slab.hi);
                 return true;
             }
@@ -737,10 +756,16 @@ impl Walk<'_> {
         false
     }
 
-    /// Splits `leaf` in two because the slab `slab` failed with `why` at the smallest step (or
-    /// the leaf stuck when it cannot be split); each half re-checks the other trim of its
-    /// doubtful slabs on its smaller box.
-    fn split(&self, mut leaf: Leaf, slab: I, why: Failure) -> (Leaf, Option<Leaf>) {
+    /// Splits `leaf` (lifted: `parent`) in two because the slab `slab` failed with `why` at the
+    /// smallest step (or the leaf stuck when it cannot be split); each half re-checks the other
+    /// trim of its doubtful slabs on its smaller box.
+    fn split(
+        &self,
+        mut leaf: Leaf,
+        parent: &LiftedBox,
+        slab: I,
+        why: Failure,
+    ) -> (Leaf, Option<Leaf>) {
         let polys = self.polys;
         // Split the coordinate that spreads the failing quantity most (its partial derivative
         // times the coordinate's width); the widest one (relative to the initial box) when that
@@ -752,9 +777,7 @@ impl Walk<'_> {
                 r(*a).total_cmp(&r(*b))
             })
             .unwrap_or(0);
-        let k = polys
-            .split_coordinate(&leaf.lifted, slab, why)
-            .unwrap_or(widest);
+        let k = polys.split_coordinate(parent, slab, why).unwrap_or(widest);
         let t = leaf.theta[k];
         let m = t.mid();
         if m <= t.lo || m >= t.hi {
@@ -762,7 +785,6 @@ impl Walk<'_> {
             return (leaf, None);
         }
         let mut other = leaf.clone();
-        let leaf_lifted = std::sync::Arc::clone(&leaf.lifted);
         leaf.theta[k] = I::new(t.lo, m);
         other.theta[k] = I::new(m, t.hi);
         leaf.step = self.first_step.max(self.min_step);
@@ -771,14 +793,14 @@ impl Walk<'_> {
         // The halves bound |delta_a| at their depth more tightly than the whole, and may clear
         // the other trim where the whole could not.
         for half in [&mut leaf, &mut other] {
-            half.lifted = std::sync::Arc::new(polys.lift_part(&half.theta, &leaf_lifted));
-            let lifted = &half.lifted;
+            let lifted = Arc::new(polys.lift_part(&half.theta, parent));
             half.doubts
-                .retain(|d| !polys.other_trim(lifted, *d, self.range).is_clear());
+                .retain(|d| !polys.other_trim(&lifted, *d, self.range).is_clear());
             half.searched_at = None;
-            if let Some(lower) = polys.aileron_lower(&half.lifted, half.depth) {
+            if let Some(lower) = polys.aileron_lower(&lifted, half.depth) {
                 half.raise_aileron(lower, self.range);
             }
+            half.lifted = Some(lifted);
         }
         (leaf, Some(other))
     }
@@ -1019,11 +1041,24 @@ pub fn clear(
         };
         let steps: Vec<(Leaf, Option<Leaf>)> =
             batch.par_iter().map(|i| walk.step(&leaves[*i])).collect();
+        // Sub-boxes done with drop their lifted data (the targets are those this batch
+        // worked to; they only go down while a worst case is known).
+        let da_target = if polys.symmetric && hi_p0.is_finite() {
+            hi_da_rad - tol_da
+        } else {
+            f64::NEG_INFINITY
+        };
+        let keep = |mut leaf: Leaf| {
+            if leaf.retired(reach, da_target) {
+                leaf.lifted = None;
+            }
+            leaf
+        };
         for (i, (leaf, other)) in batch.into_iter().zip(steps) {
             slabs += 1;
-            leaves[i] = leaf;
+            leaves[i] = keep(leaf);
             if let Some(other) = other {
-                leaves.push(other);
+                leaves.push(keep(other));
                 boxes += 1;
             }
         }
@@ -1178,6 +1213,36 @@ pub(crate) mod tests {
         assert_eq!(leaf.doubt().map(|d| d.lo), Some(2.375));
         leaf.raise_barrier(2.4);
         assert!(leaf.doubts.is_empty());
+    }
+
+    /// A sub-box that dropped its lifted data (retired) and is stepped after all is lifted
+    /// again from its box, and steps as it would have: the same depth, step, aileron bound and
+    /// failure, slab after slab.
+    #[test]
+    fn a_retired_sub_box_stepped_again_steps_as_before() {
+        let a = Aircraft::a();
+        let polys = BoxPolys::new(&a, &[Param::Lp], 0.0);
+        let theta0 = [I::new(-22.0, -21.0)];
+        let walk = Walk {
+            polys: &polys,
+            theta0: &theta0,
+            limit: 1.8,
+            min_step: 1e-4,
+            first_step: 0.05,
+            range: crate::analysis::aileron_range(&a),
+        };
+        let (mut kept, mut dropped) = (Leaf::new(&polys, &theta0, 0.05), None);
+        for slab in 0..12 {
+            let mut again = dropped.unwrap_or_else(|| kept.clone());
+            again.lifted = None;
+            let (k, _) = walk.step(&kept);
+            let (d, _) = walk.step(&again);
+            let show = |l: &Leaf| (l.depth, l.step, l.da_lo, l.last, l.theta.clone());
+            assert_eq!(show(&k), show(&d), "slab {slab}");
+            assert!(d.lifted.is_some(), "slab {slab}: lifted again");
+            (kept, dropped) = (k, Some(d));
+        }
+        assert!(kept.depth > 1.0, "the walk went on: {}", kept.depth);
     }
 
     /// The branch and bound steps a fixed number of leaves at a time, so its answer (bounds,

@@ -343,8 +343,10 @@ impl Worst<'_> {
     ///
     /// Each point is screened by the certified route (about a hundredth of the exact path's
     /// time); the best one found, if it would lower either minimum or hit the limit, is
-    /// analysed by the exact path, which alone sets hi.
-    fn probe(&mut self, theta: &[I], by_p0: bool) -> Result<(), ClearError> {
+    /// analysed by the exact path, which alone sets hi. A probe is only ever a candidate: one
+    /// the exact path refuses (e.g. two jump roots that round to the same double, next to a
+    /// cusp) is dropped, and the proof goes on.
+    fn probe(&mut self, theta: &[I], by_p0: bool) {
         let key = |f: &Screened| if by_p0 { f.p0 } else { f.da_deg };
         let centre: Vec<f64> = theta.iter().map(|t| t.mid()).collect();
         if let Some(found) = self.screen(&centre) {
@@ -352,7 +354,7 @@ impl Worst<'_> {
         }
         let best = if by_p0 { &self.p0 } else { &self.da };
         let Some((_, case)) = best else {
-            return Ok(());
+            return;
         };
         let mut yes: Vec<f64> = case
             .coordinates
@@ -380,9 +382,8 @@ impl Worst<'_> {
                 None => no = m,
             }
         }
-        match found {
-            Some(f) => self.offer(f),
-            None => Ok(()),
+        if let Some(f) = found {
+            self.offer(f);
         }
     }
 
@@ -410,15 +411,16 @@ impl Worst<'_> {
     }
 
     /// Analyses a screened aircraft by the exact path if it would lower a minimum or hit the
-    /// limit (its exact answer, not the screen's, is what is kept).
-    fn offer(&mut self, f: Screened) -> Result<(), ClearError> {
+    /// limit (its exact answer, not the screen's, is what is kept; nothing, if the exact path
+    /// refuses it).
+    fn offer(&mut self, f: Screened) {
         let lower = self.p0.as_ref().is_none_or(|(p, _)| f.p0 < *p)
             || self.da.as_ref().is_none_or(|(d, _)| f.da_deg < *d)
             || (self.limit_hit.is_none() && self.limit_deg.is_some_and(|l| f.da_deg <= l));
         if lower {
-            self.try_at(&f.x)?;
+            // An aircraft the exact path refuses is no candidate (hi is only ever its answer).
+            let _ = self.try_at(&f.x);
         }
-        Ok(())
     }
 }
 
@@ -1028,7 +1030,7 @@ pub fn clear(
         batch.retain(|i| *i == first || key(&leaves[*i]) < target);
         if !leaves[first].probed {
             leaves[first].probed = true;
-            worst.probe(&leaves[first].theta, by_p0)?;
+            worst.probe(&leaves[first].theta, by_p0);
         }
         let limit = if by_p0 { hi_p0 } else { f64::INFINITY }.min(MAX_ROLL_RATE);
         let walk = Walk {

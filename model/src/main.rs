@@ -501,10 +501,15 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
                         b.set_position((1000.0 * (k as f64 + f) / n) as u64);
                     }
                 };
+                // 0: every core, on rayon's global pool (one set of threads for every run). The
+                // Monte Carlo first: its lowest samples are candidates for the worst case.
+                let monte_carlo = model::clearance::monte_carlo::run(&ac, *de, samples, seed, 0);
+                let s = model::clearance::Settings {
+                    candidates_at: monte_carlo.lowest_at.clone(),
+                    ..s
+                };
                 let clearance =
                     model::clearance::clear(&ac, &s, &mut tick).map_err(|e| named(&ac, e))?;
-                // 0: every core, on rayon's global pool (one set of threads for every run).
-                let monte_carlo = model::clearance::monte_carlo::run(&ac, *de, samples, seed, 0);
                 runs.push(model::clearance::output::Run {
                     clearance,
                     monte_carlo,

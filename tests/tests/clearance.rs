@@ -467,6 +467,17 @@ fn a_barrier_found_above_a_doubt_lets_the_proof_pass_the_turn() {
     proven_free_of_critical_jumps_past_a_turn(&a, de, 23);
 }
 
+/// Aircraft A with n_delta_a in [20, 40], and delta_e = -4 deg (rad): the box of the cusp.
+fn a_with_a_cusp() -> (Aircraft, f64) {
+    let mut a = Aircraft::a();
+    a.uncertainty = vec![Uncertain::param(
+        Param::NDeltaA,
+        BigRational::from_integer(20.into()),
+        BigRational::from_integer(40.into()),
+    )];
+    (a, (-4f64).to_radians())
+}
+
 /// Aircraft A with n_delta_a in [20, 40] at delta_e = -4 deg: the critical jump's fold pair
 /// merges (a cusp) near n_delta_a = 24.49, past which no aircraft has a critical jump, and
 /// |delta_a| at the jump falls towards that point. The minimum over the box is the limit at the
@@ -479,13 +490,7 @@ fn a_barrier_found_above_a_doubt_lets_the_proof_pass_the_turn() {
 /// with a jump. Both bounds must hold it, within the tolerance.
 #[test]
 fn a_minimum_where_the_jump_vanishes_is_attained_within_the_tolerance() {
-    let de = (-4f64).to_radians();
-    let mut a = Aircraft::a();
-    a.uncertainty = vec![Uncertain::param(
-        Param::NDeltaA,
-        BigRational::from_integer(20.into()),
-        BigRational::from_integer(40.into()),
-    )];
+    let (a, de) = a_with_a_cusp();
     let settings = Settings {
         delta_e_rad: de,
         max_boxes: 400,
@@ -527,4 +532,46 @@ fn a_minimum_where_the_jump_vanishes_is_attained_within_the_tolerance() {
     // The roll-rate minimum is at the vertex n_delta_a = 20.
     let at_20 = critical(20.0).unwrap().p0;
     assert!(c.critical_p0.lo <= at_20 && at_20 <= c.critical_p0.hi.unwrap() + 1e-12);
+}
+
+/// The Monte Carlo's lowest samples are candidates for the worst case (as `model clear` passes
+/// them), so no sample attains less than hi: here a proof cut short after two sub-boxes, on the
+/// cusp box of the test above, whose vertex search alone leaves hi at 4.93 deg while samples
+/// reach 4.64 deg. Each minimum of the samples (certified route) is matched by hi (exact path)
+/// to within the certified brackets' relative width.
+#[test]
+fn no_monte_carlo_sample_attains_less_than_hi() {
+    let (a, de) = a_with_a_cusp();
+    let mc = model::clearance::monte_carlo::run(&a, de, 100, 1, 1);
+    let settings = Settings {
+        delta_e_rad: de,
+        max_boxes: 2,
+        candidates: 4,
+        candidates_at: mc.lowest_at.clone(),
+        ..Settings::default()
+    };
+    let c = clear(&a, &settings, &mut |_| {}).unwrap();
+    let within = |hi: Option<f64>, sample: Option<f64>| {
+        let (hi, sample) = (hi.unwrap(), sample.unwrap());
+        assert!(
+            hi <= sample * (1.0 + 1e-9),
+            "hi = {hi} above a sample's {sample}"
+        );
+    };
+    within(c.critical_p0.hi, mc.min_p0);
+    within(c.critical_delta_a_deg.hi, mc.min_abs_delta_a_deg);
+    let without = clear(
+        &a,
+        &Settings {
+            candidates_at: Vec::new(),
+            ..settings
+        },
+        &mut |_| {},
+    )
+    .unwrap();
+    assert!(
+        without.critical_delta_a_deg.hi > mc.min_abs_delta_a_deg,
+        "the samples must reach below the search alone for this test to test anything: {:?}",
+        without.critical_delta_a_deg
+    );
 }

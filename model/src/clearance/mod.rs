@@ -61,6 +61,11 @@ pub struct Settings {
     pub seed: u64,
     /// Random candidates tried for the worst case (exact analyses).
     pub candidates: usize,
+    /// Further candidates for the worst case, as box coordinates (one per `[uncertainty]`
+    /// entry, in its order; each clamped into the box): `model clear` passes the Monte Carlo's
+    /// lowest samples ([`monte_carlo::MonteCarlo::lowest_at`]), so that no sample it reports
+    /// attains less than hi. One of another length, or that the exact path refuses, is skipped.
+    pub candidates_at: Vec<Vec<f64>>,
 }
 
 impl Default for Settings {
@@ -73,6 +78,7 @@ impl Default for Settings {
             max_boxes: 20_000,
             seed: 1,
             candidates: 64,
+            candidates_at: Vec::new(),
         }
     }
 }
@@ -913,6 +919,19 @@ pub fn clear(
         .collect();
     for ((x, a), j) in candidates.iter().zip(found) {
         worst.record(a, x, j?);
+    }
+    for x in settings
+        .candidates_at
+        .iter()
+        .filter(|x| x.len() == params.len())
+    {
+        let x: Vec<BigRational> = params
+            .iter()
+            .zip(x)
+            .map(|(u, v)| clamp_exact(u, *v))
+            .collect();
+        // An aircraft the exact path refuses is no candidate (hi is only ever its answer).
+        let _ = worst.try_at(&x);
     }
     progress(0.05);
     let coords = |c: &Option<(f64, CaseAircraft)>| -> Vec<BigRational> {

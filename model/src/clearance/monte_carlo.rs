@@ -47,6 +47,11 @@ pub struct MonteCarlo {
     /// Every sample, in order.
     #[serde(skip)]
     pub values: Vec<Sample>,
+    /// The box coordinates (one per `[uncertainty]` entry) of the sample with the lowest
+    /// critical roll rate and of the one with the lowest |delta_a|, if any sample has a
+    /// critical jump: candidates for the proof's worst case ([`super::Settings::candidates_at`]).
+    #[serde(skip)]
+    pub lowest_at: Vec<Vec<f64>>,
 }
 
 /// `n` seeded uniform samples of the box, each analysed by the certified route
@@ -165,6 +170,15 @@ pub fn run(
     let exact_fallbacks = results.iter().filter(|(_, f)| *f).count();
     let values: Vec<Sample> = results.into_iter().map(|(s, _)| s).collect();
     let min = |f: fn(&Sample) -> Option<f64>| values.iter().filter_map(f).reduce(f64::min);
+    // The first sample attaining each minimum (in the seeded order).
+    let lowest_at = [|s: &Sample| s.p0, |s: &Sample| s.abs_delta_a_deg]
+        .into_iter()
+        .filter_map(|f| {
+            let m = min(f)?;
+            let i = values.iter().position(|s| f(s) == Some(m))?;
+            Some(draws[i].clone())
+        })
+        .collect();
     // No samples, no fraction (0/0 is not a measurement).
     let fraction_within_limit = (aircraft.limits.aileron_deg)
         .filter(|_| !values.is_empty())
@@ -182,6 +196,7 @@ pub fn run(
         fraction_within_limit,
         exact_fallbacks,
         values,
+        lowest_at,
     }
 }
 

@@ -119,6 +119,11 @@ impl LiftedBox {
     pub fn theta(&self) -> &[I] {
         &self.theta
     }
+
+    /// The side of the primary branch (see [`BoxPolys::lift_on_side`]).
+    pub fn side(&self) -> Option<f64> {
+        self.side
+    }
 }
 
 /// The quantities of the chain over the box.
@@ -247,6 +252,13 @@ impl BoxPolys {
             "a part of the box"
         );
         self.lift_in(theta, whole.side)
+    }
+
+    /// [`BoxPolys::lift`] of a box on the branch's side `side` (that of the lifted box it was
+    /// a part of, [`LiftedBox::side`]), computed as in [`BoxPolys::lift`] when `None`: a
+    /// sub-box lifted again, as [`BoxPolys::lift_part`] lifted it first.
+    pub fn lift_on_side(&self, theta: &[I], side: Option<f64>) -> LiftedBox {
+        self.lift_in(theta, side)
     }
 
     fn lift_in(&self, theta: &[I], side: Option<f64>) -> LiftedBox {

@@ -63,8 +63,9 @@ pub struct Settings {
     pub candidates: usize,
     /// Further candidates for the worst case, as box coordinates (one per `[uncertainty]`
     /// entry, in its order; each clamped into the box): `model clear` passes the Monte Carlo's
-    /// lowest samples ([`monte_carlo::MonteCarlo::lowest_at`]), so that no sample it reports
-    /// attains less than hi. One of another length, or that the exact path refuses, is skipped.
+    /// lowest samples ([`monte_carlo::MonteCarlo::lowest_at`]), so that hi is at most what
+    /// they attain (to within the certified route's brackets, 1e-9 relative). One of another
+    /// length, or that the exact path refuses, is skipped.
     pub candidates_at: Vec<Vec<f64>>,
 }
 
@@ -345,7 +346,7 @@ impl Worst<'_> {
     /// |delta_a| at the jump tends to its infimum there, attained by no aircraft), which the
     /// lowest sub-box closes in on while its centre has no jump at all. So: the centre first;
     /// without a critical jump there, a bisection between the best aircraft so far and the
-    /// centre for the last aircraft with one, the nearest to where the jump vanishes.
+    /// centre towards where the jump vanishes, keeping the lowest aircraft with one it meets.
     ///
     /// Each point is screened by the certified route (about a hundredth of the exact path's
     /// time); the best one found, if it would lower either minimum or hit the limit, is
@@ -443,7 +444,8 @@ struct Screened {
 const PROBE_BISECTIONS: usize = 40;
 
 /// Greedy vertex search from `start`: each coordinate in turn moved to the end of its interval
-/// that lowers `key` (the critical p0 or |delta_a|), repeated while it improves.
+/// that lowers `key` (the critical p0 or |delta_a|), repeated while it improves. A point the
+/// exact path refuses is no candidate and is passed over (`start` itself must be analysed).
 fn descend(
     worst: &mut Worst,
     params: &[Uncertain],
@@ -464,7 +466,7 @@ fn descend(
                 }
                 let mut y = x.clone();
                 y[i] = end.clone();
-                if let Some((p, d)) = worst.try_at(&y)? {
+                if let Ok(Some((p, d))) = worst.try_at(&y) {
                     if key(p, d) < best {
                         best = key(p, d);
                         x = y;
@@ -486,8 +488,12 @@ struct Leaf {
     theta: Vec<I>,
     /// The box lifted once for all its slabs; dropped once the sub-box is retired
     /// ([`Leaf::retired`]: about 125 kB each with 17 uncertain parameters, which thousands of
-    /// sub-boxes held to the end), and made again from `theta` should it be stepped after all.
+    /// sub-boxes held to the end), and made again from `theta` and `side` should it be
+    /// stepped after all.
     lifted: Option<Arc<LiftedBox>>,
+    /// The branch's side of the dropped lifted data ([`LiftedBox::side`]), to lift it again as
+    /// it was.
+    side: Option<f64>,
     depth: f64,
     step: f64,
     /// Lower bound of |delta_a| (rad) of the primary branch at `depth` over the box.
@@ -540,6 +546,7 @@ impl Leaf {
     fn new(polys: &BoxPolys, theta: &[I], step: f64) -> Leaf {
         Leaf {
             lifted: Some(Arc::new(polys.lift(theta))),
+            side: None,
             theta: theta.to_vec(),
             depth: 0.0,
             step,
@@ -556,18 +563,27 @@ impl Leaf {
         }
     }
 
-    /// The box lifted, made again from `theta` if it was dropped.
+    /// The box lifted, made again from `theta` and `side` if it was dropped.
     fn lifted(&mut self, polys: &BoxPolys) -> Arc<LiftedBox> {
-        let theta = &self.theta;
+        let (theta, side) = (&self.theta, self.side);
         Arc::clone(
             self.lifted
-                .get_or_insert_with(|| Arc::new(polys.lift(theta))),
+                .get_or_insert_with(|| Arc::new(polys.lift_on_side(theta, side))),
         )
     }
 
-    /// Whether the sub-box will not be stepped again: finished or stuck, or at or past both
-    /// targets, the roll rate `reach` and the aileron bound `da_target` (which only go down
-    /// while a worst case is known, as hi does).
+    /// Drops the lifted data, keeping the branch's side to lift it again with.
+    fn drop_lifted(&mut self) {
+        if let Some(l) = self.lifted.take() {
+            self.side = l.side();
+        }
+    }
+
+    /// Whether the sub-box is done with: finished or stuck, or at or past both targets, the
+    /// roll rate `reach` and the aileron bound `da_target` (which only go down while a worst
+    /// case is known, as hi does). It may still be stepped: as the lowest sub-box while a stuck
+    /// one holds a bound below the target, or when a first worst case sets the aileron target;
+    /// it is then lifted again (and the proof is the same, only slower).
     fn retired(&self, reach: f64, da_target: f64) -> bool {
         self.finished()
             || self.stuck.is_some()
@@ -1071,7 +1087,7 @@ pub fn clear(
         };
         let keep = |mut leaf: Leaf| {
             if leaf.retired(reach, da_target) {
-                leaf.lifted = None;
+                leaf.drop_lifted();
             }
             leaf
         };
@@ -1237,8 +1253,8 @@ pub(crate) mod tests {
     }
 
     /// A sub-box that dropped its lifted data (retired) and is stepped after all is lifted
-    /// again from its box, and steps as it would have: the same depth, step, aileron bound and
-    /// failure, slab after slab.
+    /// again from its box and its branch's side, and steps as it would have: the same depth,
+    /// step, aileron bound and failure, slab after slab.
     #[test]
     fn a_retired_sub_box_stepped_again_steps_as_before() {
         let a = Aircraft::a();
@@ -1264,6 +1280,14 @@ pub(crate) mod tests {
             (kept, dropped) = (k, Some(d));
         }
         assert!(kept.depth > 1.0, "the walk went on: {}", kept.depth);
+        // Lifted again, a part keeps the branch's side it was given (by `lift_part`, its
+        // parent's), not one computed afresh: a side the fresh lift would not give it.
+        let fresh = polys.lift(&theta0).side().expect("a certain side");
+        let mut part = Leaf::new(&polys, &theta0, 0.05);
+        part.lifted = Some(Arc::new(polys.lift_on_side(&theta0, Some(-fresh))));
+        part.drop_lifted();
+        assert!(part.lifted.is_none());
+        assert_eq!(part.lifted(&polys).side(), Some(-fresh));
     }
 
     /// The branch and bound steps a fixed number of leaves at a time, so its answer (bounds,

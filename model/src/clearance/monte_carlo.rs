@@ -48,8 +48,9 @@ pub struct MonteCarlo {
     #[serde(skip)]
     pub values: Vec<Sample>,
     /// The box coordinates (one per `[uncertainty]` entry) of the sample with the lowest
-    /// critical roll rate and of the one with the lowest |delta_a|, if any sample has a
-    /// critical jump: candidates for the proof's worst case ([`super::Settings::candidates_at`]).
+    /// critical roll rate and of the one with the lowest |delta_a| (once when they are the
+    /// same), if any sample has a critical jump: candidates for the proof's worst case
+    /// ([`super::Settings::candidates_at`]).
     #[serde(skip)]
     pub lowest_at: Vec<Vec<f64>>,
 }
@@ -175,9 +176,16 @@ pub fn run(
         .into_iter()
         .filter_map(|f| {
             let m = min(f)?;
-            let i = values.iter().position(|s| f(s) == Some(m))?;
-            Some(draws[i].clone())
+            values.iter().position(|s| f(s) == Some(m))
         })
+        .fold(Vec::new(), |mut at: Vec<usize>, i| {
+            if !at.contains(&i) {
+                at.push(i);
+            }
+            at
+        })
+        .into_iter()
+        .map(|i| draws[i].clone())
         .collect();
     // No samples, no fraction (0/0 is not a measurement).
     let fraction_within_limit = (aircraft.limits.aileron_deg)

@@ -237,7 +237,7 @@ impl BoxPolys {
     /// The box `theta` lifted once for every slab of roll rates: over the box (a gradient seed in
     /// each uncertain coordinate, P0 the last) and at its centre.
     pub fn lift(&self, theta: &[I]) -> LiftedBox {
-        self.lift_in(theta, None)
+        self.lift_on_side(theta, None)
     }
 
     /// [`BoxPolys::lift`] of a part `theta` of the lifted box `whole`: the branch's side is the
@@ -251,17 +251,13 @@ impl BoxPolys {
                     .all(|(t, w)| w.lo <= t.lo && t.hi <= w.hi),
             "a part of the box"
         );
-        self.lift_in(theta, whole.side)
+        self.lift_on_side(theta, whole.side)
     }
 
     /// [`BoxPolys::lift`] of a box on the branch's side `side` (that of the lifted box it was
-    /// a part of, [`LiftedBox::side`]), computed as in [`BoxPolys::lift`] when `None`: a
-    /// sub-box lifted again, as [`BoxPolys::lift_part`] lifted it first.
+    /// a part of, [`LiftedBox::side`]), computed from the box when `None`: a sub-box lifted
+    /// again, as [`BoxPolys::lift_part`] lifted it first.
     pub fn lift_on_side(&self, theta: &[I], side: Option<f64>) -> LiftedBox {
-        self.lift_in(theta, side)
-    }
-
-    fn lift_in(&self, theta: &[I], side: Option<f64>) -> LiftedBox {
         let n = self.coordinates.len() + 1;
         let mut over: [Dual; 18] = std::array::from_fn(|i| Dual::constant(self.fixed[i]));
         let mut at = self.fixed;

@@ -223,6 +223,15 @@ pub fn at(base: &Aircraft, params: &[Uncertain], x: &[BigRational]) -> Aircraft 
         .fold(base.clone(), |a, (u, v)| u.moved(a, v))
 }
 
+/// f64 coordinates of the box as exact values within the exact ends ([`clamp_exact`] each).
+pub fn exact_coordinates(params: &[Uncertain], x: &[f64]) -> Vec<BigRational> {
+    params
+        .iter()
+        .zip(x)
+        .map(|(u, v)| clamp_exact(u, *v))
+        .collect()
+}
+
 /// An f64 coordinate of the box as an exact value within the exact ends.
 pub fn clamp_exact(u: &Uncertain, v: f64) -> BigRational {
     let q = BigRational::from_float(v).unwrap_or_else(|| u.lo.clone());
@@ -324,18 +333,32 @@ impl Worst<'_> {
         let j = j?;
         let da = j.delta_a_deg.abs();
         let case = |a: &Aircraft| case(a, self.params, x, &j);
-        if self.p0.as_ref().is_none_or(|(p, _)| j.p0 < *p) {
+        if self.lowers_p0(j.p0) {
             self.p0 = Some((j.p0, case(a)));
         }
-        if self.da.as_ref().is_none_or(|(d, _)| da < *d) {
+        if self.lowers_da(da) {
             self.da = Some((da, case(a)));
         }
-        if let Some(l) = self.limit_deg {
-            if da <= l && self.limit_hit.is_none() {
-                self.limit_hit = Some(case(a));
-            }
+        if self.first_within_limit(da) {
+            self.limit_hit = Some(case(a));
         }
         Some((j.p0, da))
+    }
+
+    /// Whether a critical roll rate `p0` is below the lowest so far.
+    fn lowers_p0(&self, p0: f64) -> bool {
+        self.p0.as_ref().is_none_or(|(p, _)| p0 < *p)
+    }
+
+    /// Whether an |delta_a| (deg) at a critical jump is below the lowest so far.
+    fn lowers_da(&self, da: f64) -> bool {
+        self.da.as_ref().is_none_or(|(d, _)| da < *d)
+    }
+
+    /// Whether an |delta_a| (deg) at a critical jump is within the aileron limit, and the first
+    /// such.
+    fn first_within_limit(&self, da: f64) -> bool {
+        self.limit_hit.is_none() && self.limit_deg.is_some_and(|l| da <= l)
     }
 
     /// Tries the sub-box `theta` for the worst case of the minimum `by_p0` works on (the
@@ -399,12 +422,7 @@ impl Worst<'_> {
     /// route, [`crate::analysis::fast::critical`], without the exact path's fallback: next to
     /// a cusp that fallback is the slow one, and an uncertified point only ends a bisection).
     fn screen(&self, x: &[f64]) -> Option<Screened> {
-        let x: Vec<BigRational> = self
-            .params
-            .iter()
-            .zip(x)
-            .map(|(u, v)| clamp_exact(u, *v))
-            .collect();
+        let x = exact_coordinates(self.params, x);
         let aircraft = at(self.base, self.params, &x);
         let v = crate::certified::Values::of(&aircraft, self.delta_e_rad, 0.0);
         let bound = crate::analysis::aileron_range(&aircraft);
@@ -421,10 +439,7 @@ impl Worst<'_> {
     /// limit (its exact answer, not the screen's, is what is kept; nothing, if the exact path
     /// refuses it).
     fn offer(&mut self, f: Screened) {
-        let lower = self.p0.as_ref().is_none_or(|(p, _)| f.p0 < *p)
-            || self.da.as_ref().is_none_or(|(d, _)| f.da_deg < *d)
-            || (self.limit_hit.is_none() && self.limit_deg.is_some_and(|l| f.da_deg <= l));
-        if lower {
+        if self.lowers_p0(f.p0) || self.lowers_da(f.da_deg) || self.first_within_limit(f.da_deg) {
             // An aircraft the exact path refuses is no candidate (hi is only ever its answer).
             let _ = self.try_at(&f.x);
         }
@@ -941,13 +956,8 @@ pub fn clear(
         .iter()
         .filter(|x| x.len() == params.len())
     {
-        let x: Vec<BigRational> = params
-            .iter()
-            .zip(x)
-            .map(|(u, v)| clamp_exact(u, *v))
-            .collect();
         // An aircraft the exact path refuses is no candidate (hi is only ever its answer).
-        let _ = worst.try_at(&x);
+        let _ = worst.try_at(&exact_coordinates(&params, x));
     }
     progress(0.05);
     let coords = |c: &Option<(f64, CaseAircraft)>| -> Vec<BigRational> {

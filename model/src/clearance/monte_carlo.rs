@@ -14,7 +14,7 @@
 //! assert!(mc.values.iter().all(|s| s.p0 == mc.min_p0 && s.p0.is_some()));
 //! ```
 
-use super::{clamp_exact, critical, split_box, Coordinate, Rng};
+use super::{clamp_exact, critical, exact_coordinates, split_box, Coordinate, Rng};
 use crate::aircraft::{Aircraft, Param};
 use crate::analysis::fast;
 use crate::certified::{Sampler, Values};
@@ -136,12 +136,7 @@ pub fn run(
         let (point, fell_back) = match fast::critical(&v, bound, fast::MAX_WIDTH) {
             Ok(c) => (c, false),
             Err(_) => {
-                let exact: Vec<_> = params
-                    .iter()
-                    .zip(x)
-                    .map(|(u, xi)| clamp_exact(u, *xi))
-                    .collect();
-                let a = super::at(&base, &params, &exact);
+                let a = super::at(&base, &params, &exact_coordinates(&params, x));
                 let c = critical(&a, delta_e_rad)
                     .ok()
                     .flatten()
@@ -172,21 +167,15 @@ pub fn run(
     let values: Vec<Sample> = results.into_iter().map(|(s, _)| s).collect();
     let min = |f: fn(&Sample) -> Option<f64>| values.iter().filter_map(f).reduce(f64::min);
     // The first sample attaining each minimum (in the seeded order).
-    let lowest_at = [|s: &Sample| s.p0, |s: &Sample| s.abs_delta_a_deg]
+    let mut lowest_at = [|s: &Sample| s.p0, |s: &Sample| s.abs_delta_a_deg]
         .into_iter()
         .filter_map(|f| {
             let m = min(f)?;
             values.iter().position(|s| f(s) == Some(m))
         })
-        .fold(Vec::new(), |mut at: Vec<usize>, i| {
-            if !at.contains(&i) {
-                at.push(i);
-            }
-            at
-        })
-        .into_iter()
-        .map(|i| draws[i].clone())
-        .collect();
+        .collect::<Vec<usize>>();
+    lowest_at.dedup();
+    let lowest_at = lowest_at.into_iter().map(|i| draws[i].clone()).collect();
     // No samples, no fraction (0/0 is not a measurement).
     let fraction_within_limit = (aircraft.limits.aileron_deg)
         .filter(|_| !values.is_empty())

@@ -4,6 +4,9 @@
 //!
 //! - `analyze_exact` / `analyze_fast`: the jump part of `analyze` (divergence, jumps, poles,
 //!   critical jump, zero-sideslip departure) by big rationals and by the certified route;
+//! - `enclose_lifted` / `enclose_tape`: the criterion polynomials of the jump analysis,
+//!   enclosed by lifting the data into the parametric results and by the criterion program's
+//!   tape (`analyze_fast`'s route without aileron yaw);
 //! - `critical_lean`: the Monte Carlo's per-sample route (critical jump only);
 //! - `monte_carlo_1000`: 1000 seeded samples of `aircraft/a_uncertain.toml` on every core
 //!   (samples per second = 1000 / median);
@@ -78,4 +81,26 @@ fn clear_a_uncertain(bencher: divan::Bencher) {
     let a = aircraft("a_uncertain.toml");
     let settings = model::clearance::Settings::default();
     bencher.bench(|| model::clearance::clear(&a, &settings, &mut |_| {}).map(|r| r.boxes));
+}
+
+/// The criterion polynomials of the jump analysis enclosed the general way: the whole data
+/// lifted into the parametric results, cleared in interval polynomials (`EnclosedPolys::new`).
+#[divan::bench(args = ["A", "B"])]
+fn enclose_lifted(bencher: divan::Bencher, name: &str) {
+    let a = aircraft(name);
+    bencher.bench(|| {
+        let v = Values::of(divan::black_box(&a), DELTA_E, 0.0);
+        model::certified::EnclosedPolys::new(&v).map(|e| e.jump.0.len())
+    });
+}
+
+/// The same polynomials from the criterion program's tape (`EnclosedPolys::by_tape`), the
+/// route `analyze_fast` takes without aileron yaw.
+#[divan::bench(args = ["A", "B"])]
+fn enclose_tape(bencher: divan::Bencher, name: &str) {
+    let a = aircraft(name);
+    bencher.bench(|| {
+        let data = Values::data(divan::black_box(&a));
+        model::certified::EnclosedPolys::by_tape(&data, DELTA_E).map(|e| e.map(|e| e.jump.0.len()))
+    });
 }

@@ -98,15 +98,43 @@ pub fn analyze_routed_with(
 }
 
 /// The certified route and its widest relative bracket, or why it cannot certify.
+///
+/// The criterion polynomials come from the tape ([`EnclosedPolys::by_tape`]) where it applies,
+/// and the whole data are lifted ([`Values::of`]) only when something needs them: a root whose
+/// bracket the coefficients' enclosures cannot narrow enough (refined on the values at a point,
+/// [`value_at`]), the departures, or a tape whose enclosures fail to certify, when the general
+/// route ([`EnclosedPolys::new`]) is tried before the exact path.
 fn certified(
     aircraft: &Aircraft,
     delta_e_rad: f64,
     departures: bool,
 ) -> Result<(Analysis, f64), Uncertified> {
-    let v = Values::of(aircraft, delta_e_rad, 0.0);
-    let e = EnclosedPolys::new(&v)?;
+    let lifted = std::cell::OnceCell::new();
+    let v = || lifted.get_or_init(|| Values::of(aircraft, delta_e_rad, 0.0));
+    if let Some(Ok(e)) = EnclosedPolys::by_tape(&Values::data(aircraft), delta_e_rad) {
+        if let Ok(answer) = certified_with(aircraft, delta_e_rad, departures, &e, &v) {
+            return Ok(answer);
+        }
+    }
+    certified_with(
+        aircraft,
+        delta_e_rad,
+        departures,
+        &EnclosedPolys::new(v())?,
+        &v,
+    )
+}
+
+/// [`certified`] on the criterion polynomials `e` of the data `v` (lifted on first use).
+fn certified_with<'v>(
+    aircraft: &Aircraft,
+    delta_e_rad: f64,
+    departures: bool,
+    e: &EnclosedPolys,
+    v: &dyn Fn() -> &'v Values,
+) -> Result<(Analysis, f64), Uncertified> {
     let roots = |p: &IPoly, which: Criterion| {
-        positive_roots_by(p, Some(&|x| value_at(&v, which, x)), MAX_WIDTH)
+        positive_roots_by(p, Some(&|x| value_at(v(), which, x)), MAX_WIDTH)
     };
     let divergence = roots(&e.det_a, Criterion::DetA)?;
     let jump = roots(&e.jump, Criterion::Jump)?;
@@ -188,7 +216,7 @@ fn certified(
     let local = LocalPolys::parametric();
     let mut values: Vec<(Sym, f64)> = s.params.iter().copied().zip(data).collect();
     values.extend([(s.delta_e, delta_e_rad), (s.delta_r, 0.0)]);
-    let input = certified_departures(&v, &e, &divergence, &analysis.jump, local.at(&values))?;
+    let input = certified_departures(v(), e, &divergence, &analysis.jump, local.at(&values))?;
     found.add_departures(&mut analysis, critical, &input.0, (aircraft, delta_e_rad));
     Ok((analysis, width.max(input.1)))
 }

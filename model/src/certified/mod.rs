@@ -38,6 +38,7 @@ pub mod compiled;
 pub mod dense;
 pub mod isolate;
 pub mod num;
+pub(crate) mod tape;
 
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::MAX_SYMS;
@@ -648,6 +649,99 @@ impl EnclosedPolys {
     }
 }
 
+impl EnclosedPolys {
+    /// The criterion polynomials of the data `params` (in [`Param::ALL`] order) at elevator
+    /// `delta_e_rad` and `delta_r = 0`, from one evaluation of the criterion program (the
+    /// emitter's straight-line program of their coefficients, `emit::functions::certified`) in
+    /// f64 with an a priori bound on its rounding (`certified::tape`): the same exact
+    /// polynomials as [`EnclosedPolys::new`] on the same data, in enclosures of about the same
+    /// width, at a small fraction of the cost. `None` where the tape does not apply: aileron
+    /// yaw (`n_delta_a` not exactly zero), or data the tape's bound does not cover (an
+    /// enclosure wider than an ulp, a magnitude outside its gate); [`EnclosedPolys::new`]
+    /// answers those.
+    pub fn by_tape(
+        params: &[I; 18],
+        delta_e_rad: f64,
+    ) -> Option<Result<EnclosedPolys, Uncertified>> {
+        let yaw = Param::ALL.iter().position(|p| *p == Param::NDeltaA)?;
+        if !params[yaw].is_exact_zero() {
+            return None;
+        }
+        let t = CriterionTape::get();
+        let inputs: Vec<I> = std::iter::once(I::point(delta_e_rad))
+            .chain(params.iter().copied())
+            .collect();
+        let mut values = t.tape.eval(&inputs)?.into_iter();
+        let mut next = |n: usize| IPoly::new(values.by_ref().take(n).collect());
+        let mut lengths = t.lengths.iter().copied();
+        let mut take = || next(lengths.next().unwrap_or(0));
+        let det_a = take();
+        let trim: [IPoly2; 4] = std::array::from_fn(|_| IPoly2::new(vec![take()]));
+        let trim_condition = IPoly2::new(vec![take(), take()]);
+        let jump_at = IPoly2::new(vec![take()]);
+        let d_at = IPoly2::new(vec![take()]);
+        let zs_det = take();
+        let zs_trim: [IPoly; 3] = std::array::from_fn(|_| take());
+        let (zs_jump, zs_d_det) = (take(), take());
+        let at = |p: Param| params[Param::ALL.iter().position(|q| *q == p).unwrap_or(0)];
+        let lateral =
+            at(Param::LDeltaA) * at(Param::NDeltaR) - at(Param::LDeltaR) * at(Param::NDeltaA);
+        // As the general route: delta_a eliminated from the trim condition (linear here).
+        let eliminate =
+            |f: &IPoly2| eliminate(&trim_condition.0, &f.0, &det_a).map(|p: IPoly| p.symmetric());
+        Some((|| {
+            Ok(EnclosedPolys {
+                jump: eliminate(&jump_at)?,
+                poles: eliminate(&d_at)?,
+                det_a: det_a.symmetric(),
+                trim,
+                trim_condition: trim_condition.clone(),
+                jump_at,
+                d_at,
+                zs_det: zs_det.symmetric(),
+                zs_trim,
+                zs_jump: zs_jump.symmetric(),
+                zs_d_det: zs_d_det.symmetric(),
+                lateral,
+            })
+        })())
+    }
+}
+
+/// The criterion program ([`crate::emit::functions::criterion_program`]) of the process's
+/// parametric derivation, compiled once, with the number of coefficients of each of its
+/// polynomials (in the order of [`crate::emit::functions::CriterionProgram::polys`]).
+struct CriterionTape {
+    tape: tape::Tape,
+    lengths: Vec<usize>,
+}
+
+impl CriterionTape {
+    fn get() -> &'static CriterionTape {
+        static T: std::sync::OnceLock<CriterionTape> = std::sync::OnceLock::new();
+        T.get_or_init(|| {
+            let p = crate::emit::functions::criterion_program(crate::specialise::parametric());
+            // The inputs the data are given in: delta_e, then the parameters.
+            let names: Vec<String> = std::iter::once("delta_e".to_string())
+                .chain(
+                    Param::ALL
+                        .iter()
+                        .map(|p| format!("k.{}", p.key().to_lowercase())),
+                )
+                .collect();
+            assert_eq!(
+                p.dag.inputs(),
+                names.as_slice(),
+                "the criterion program's inputs"
+            );
+            CriterionTape {
+                lengths: p.polys().iter().map(|c| c.len()).collect(),
+                tape: tape::Tape::new(&p.dag, &p.outputs()),
+            }
+        })
+    }
+}
+
 /// The part of [`EnclosedPolys`] the critical jump needs: det A, the trim condition, det J5 on
 /// the trim and the jump polynomial (the Monte Carlo's lean route).
 pub struct JumpPolys {
@@ -975,6 +1069,9 @@ pub fn eliminate<C: Coeff>(g: &[C], f: &[C], det_a: &C) -> Result<C, Uncertified
     };
     let at = |p: &[C], i: usize| p.get(i).cloned().unwrap_or_else(C::zero);
     match (dg, df) {
+        // f free of delta_a (no aileron yaw): the resultant is f itself, kept as it is (each
+        // product by the exact 1 = g1^0 would widen it by an ulp).
+        (1, 0) => Ok(f[0].clone()),
         (1, _) => {
             // g1^n f(-g0 / g1) = sum_i f_i (-g0)^i g1^(n - i).
             let (g0, g1) = (C::zero().sub(&g[0]), &g[1]);
@@ -1000,6 +1097,65 @@ pub fn eliminate<C: Coeff>(g: &[C], f: &[C], det_a: &C) -> Result<C, Uncertified
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every coefficient of two sets of criterion polynomials, as pairs (a missing one is an
+    /// exact zero).
+    fn polynomial_pairs(a: &EnclosedPolys, b: &EnclosedPolys) -> Vec<(I, I)> {
+        let all = |e: &EnclosedPolys| -> Vec<IPoly> {
+            let mut v = vec![e.det_a.clone(), e.jump.clone(), e.poles.clone()];
+            v.extend([e.zs_det.clone(), e.zs_jump.clone(), e.zs_d_det.clone()]);
+            v.extend(e.zs_trim.iter().cloned());
+            for p in e
+                .trim
+                .iter()
+                .chain([&e.trim_condition, &e.jump_at, &e.d_at])
+            {
+                v.extend((0..p.0.len().max(2)).map(|i| p.coeff(i)));
+            }
+            v
+        };
+        let zero = I::point(0.0);
+        let (a, b) = (all(a), all(b));
+        assert_eq!(a.len(), b.len());
+        a.iter()
+            .zip(&b)
+            .flat_map(|(p, q)| {
+                (0..p.0.len().max(q.0.len())).map(|i| {
+                    let at = |d: &IPoly| d.0.get(i).copied().unwrap_or(zero);
+                    (at(p), at(q))
+                })
+            })
+            .collect()
+    }
+
+    /// The tape ([`EnclosedPolys::by_tape`]) and the general route ([`EnclosedPolys::new`])
+    /// enclose the same exact coefficients of every criterion polynomial (every pair of
+    /// enclosures overlaps), the tape's as tightly: on the paper's aircraft, none wider than
+    /// 1e-12 relative to its magnitude, against which the general route's widest is given.
+    #[test]
+    fn the_tape_encloses_what_the_general_route_encloses() {
+        for (name, ac) in [("A", Aircraft::a()), ("B", Aircraft::b())] {
+            let de = 2f64.to_radians();
+            let general = EnclosedPolys::new(&Values::of(&ac, de, 0.0)).unwrap();
+            let tape = EnclosedPolys::by_tape(&Values::data(&ac), de)
+                .expect("the tape covers the paper's aircraft")
+                .unwrap();
+            let relative = |c: I| c.width() / c.mag().max(f64::MIN_POSITIVE);
+            let (mut widest_tape, mut widest_general) = (0.0f64, 0.0f64);
+            for (t, g) in polynomial_pairs(&tape, &general) {
+                assert!(
+                    t.intersect(g).is_some(),
+                    "{name}: tape {t:?} vs general {g:?}"
+                );
+                widest_tape = widest_tape.max(relative(t));
+                widest_general = widest_general.max(relative(g));
+            }
+            println!(
+                "{name}: widest relative width: tape {widest_tape:e}, general {widest_general:e}"
+            );
+            assert!(widest_tape <= 1e-12, "{name}: {widest_tape:e}");
+        }
+    }
 
     /// Every coefficient of every polynomial of two liftings, as pairs (a missing one is an
     /// exact zero).

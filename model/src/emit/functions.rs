@@ -12,8 +12,10 @@ use crate::algebra::{Matrix, Poly, Sym, Q};
 use crate::derivation::{clear_trim, Clearing, Derivation, TRIM_DEGREE};
 use crate::equations::symbols;
 
+mod certified;
 mod hopf;
 mod prepared;
+pub(crate) use certified::criterion_program;
 pub(crate) use hopf::polynomial as hopf_polynomial;
 pub use prepared::{prepared, Prepared, TYPE as PREPARED_TYPE};
 

@@ -74,12 +74,21 @@ pub fn follow(
         );
     }
     let (mut p, mut dir, mut slope) = (0.0f64, 1.0f64, 0.0f64);
+    // Whether the last step's change of delta_a was at most its length: then |slope| <= 1 and
+    // the next step is full, `max_step / |slope| >= max_step` (the division rounds
+    // monotonically), without waiting for the division that gives the slope (its latency was
+    // most of a step's time; the slope itself is only the prediction's, off the chain).
+    let mut full = true;
     // After a turn: the side of the fold (+1 above, -1 below in delta_a) the curve continues on.
     let mut turned: Option<f64> = None;
     let sign_det_a = det_a.eval(0.0, 0.0).signum();
     let mut ahead = Ahead::new(g, det_a);
     for _ in 0..MAX_STEPS {
-        let h = max_step.min(max_step / slope.abs().max(1e-300)).max(1e-10);
+        let h = if full {
+            max_step
+        } else {
+            max_step.min(max_step / slope.abs().max(1e-300)).max(1e-10)
+        };
         let (p_new, roots, det_a_new) = ahead.step(p, dir * h, h == max_step);
         let back_from_turn = turned.take();
         let next = match (back_from_turn, roots.as_slice()) {
@@ -140,6 +149,7 @@ pub fn follow(
             return Outcome::Unbounded;
         }
         slope = (da_new - da) / (dir * h);
+        full = (da_new - da).abs() <= h;
         da = da_new;
         p = p_new;
     }

@@ -187,16 +187,6 @@ impl Tape {
         }
     }
 
-    /// The number of outputs.
-    pub fn len(&self) -> usize {
-        self.outputs.len()
-    }
-
-    /// Whether the tape has no output.
-    pub fn is_empty(&self) -> bool {
-        self.outputs.is_empty()
-    }
-
     /// Encloses every output at the enclosures `inputs` (in the program's input order), or
     /// `None` when the bound cannot be promised: an input wider than one ulp, not finite, or
     /// outside the gate, or a value or radius that is not finite.

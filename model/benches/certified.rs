@@ -104,24 +104,3 @@ fn enclose_tape(bencher: divan::Bencher, name: &str) {
         model::certified::EnclosedPolys::by_tape(&data, DELTA_E).map(|e| e.map(|e| e.jump.0.len()))
     });
 }
-
-#[divan::bench(args = ["det_a", "jump", "poles", "zs_jump", "zs_d_det", "zs_det"])]
-fn zz_roots_b(bencher: divan::Bencher, which: &str) {
-    use model::certified::{positive_roots_by, value_at, Criterion};
-    let a = aircraft("B");
-    let v = Values::of(&a, DELTA_E, 0.0);
-    let e = model::certified::EnclosedPolys::new(&v).unwrap();
-    let (p, w) = match which {
-        "det_a" => (&e.det_a, Criterion::DetA),
-        "jump" => (&e.jump, Criterion::Jump),
-        "poles" => (&e.poles, Criterion::Poles),
-        "zs_jump" => (&e.zs_jump, Criterion::ZsJump),
-        "zs_d_det" => (&e.zs_d_det, Criterion::ZsDDet),
-        _ => (&e.zs_det, Criterion::ZsDet),
-    };
-    bencher.bench(|| {
-        positive_roots_by(divan::black_box(p), Some(&|x| value_at(&v, w, x)), 1e-9)
-            .map(|r| r.len())
-            .unwrap_or(0)
-    });
-}

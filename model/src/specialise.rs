@@ -263,6 +263,29 @@ impl Roots {
         self.as_slice().to_vec()
     }
 
+    /// The root nearest to `target` (the first of two equally near ones, as
+    /// [`Iterator::min_by`] picks), without going through memory: the walk of the primary
+    /// branch asks this every step.
+    pub fn nearest(&self, target: f64) -> Option<f64> {
+        let [r0, r1] = self.r;
+        match self.n {
+            0 => None,
+            1 => Some(r0),
+            _ => Some(
+                if (r1 - target).abs().total_cmp(&(r0 - target).abs()).is_lt() {
+                    r1
+                } else {
+                    r0
+                },
+            ),
+        }
+    }
+
+    /// The two roots `[lower, upper]` when there are two.
+    pub fn pair(&self) -> Option<[f64; 2]> {
+        (self.n == 2).then_some(self.r)
+    }
+
     /// Whether there is no root.
     pub fn is_empty(&self) -> bool {
         self.n == 0

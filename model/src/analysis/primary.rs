@@ -59,13 +59,7 @@ pub fn follow(
     let graph = g.0.len() <= 2 && det_a.0.len() <= 1;
     let max_step: f64 = if graph { MAX_STEP } else { TURN_STEP };
     const MAX_STEPS: usize = 2_000_000;
-    let nearest = |roots: &[f64], target: f64| -> Option<f64> {
-        roots
-            .iter()
-            .copied()
-            .min_by(|a, b| (a - target).abs().total_cmp(&(b - target).abs()))
-    };
-    let Some(mut da) = nearest(g.aileron_roots(0.0).as_slice(), 0.0) else {
+    let Some(mut da) = g.aileron_roots(0.0).nearest(0.0) else {
         return Outcome::Lost("no trim at P0 = 0");
     };
     if da.abs() > 1e-9 {
@@ -91,14 +85,14 @@ pub fn follow(
         };
         let (p_new, roots, det_a_new) = ahead.step(p, dir * h, h == max_step);
         let back_from_turn = turned.take();
-        let next = match (back_from_turn, roots.as_slice()) {
+        let next = match (back_from_turn, roots.pair()) {
             // The first step back from a turn: the two roots straddle the fold, and the curve
             // goes on with the one on the other root's side of it. The nearest root to a
             // prediction is no guide here (the pair is nearly symmetric about the fold, so a
             // step lands about as close to either): choosing by it could hop back onto the
             // branch just followed and walk it again, back and forth, without end.
-            (Some(side), &[lower, upper]) => Some(if side > 0.0 { upper } else { lower }),
-            (_, r) => nearest(r, da + slope * dir * h),
+            (Some(side), Some([lower, upper])) => Some(if side > 0.0 { upper } else { lower }),
+            _ => roots.nearest(da + slope * dir * h),
         };
         let Some(da_new) = next else {
             if back_from_turn.is_some() {

@@ -319,35 +319,103 @@ fn apart(a: &[Bracket], b: &[Bracket]) -> Result<(), Uncertified> {
 /// proven free of poles of det K.
 pub fn critical(v: &Values, bound: f64, width: f64) -> Result<Option<(f64, f64)>, Uncertified> {
     let e = JumpPolys::new(v)?;
-    let divergence =
-        positive_roots_by(&e.det_a, Some(&|x| value_at(v, Criterion::DetA, x)), width)?;
-    let jump = positive_roots_by(&e.jump, Some(&|x| value_at(v, Criterion::Jump, x)), width)?;
-    apart(&jump, &divergence)?;
-    let f64s = |p: &IPoly2| InAileron(p.0.iter().map(|c| c.mid()).collect());
-    let g = f64s(&e.trim_condition);
-    let jump_at = f64s(&e.jump_at);
-    let det_a = f64s(e.trim().0);
-    let points: Vec<(f64, f64, Bracket)> = jump
-        .iter()
-        .map(|b| (b.value, super::aileron_of_root(&g, &jump_at, b.value), *b))
-        .filter(|(_, da, _)| da.is_finite())
-        .collect();
-    let roots: Vec<(f64, f64)> = points.iter().map(|(p, da, _)| (*p, *da)).collect();
-    let divergence: Vec<f64> = divergence.iter().map(|b| b.value).collect();
-    match super::primary::follow(&g, &det_a, &divergence, &roots, bound) {
-        super::Outcome::Jump(i) => {
-            let (p0, da, b) = points[i];
-            if b.relative_width() > width {
-                return Err(Uncertified::Wide);
-            }
-            // A common root of the jump and pole polynomials is no jump (the exact path cancels
-            // it): the pole polynomial must keep its sign over the critical bracket.
-            if e.poles(v)?.eval(I::new(b.lo, b.hi)).contains_zero() {
-                return Err(Uncertified::Sign);
-            }
-            Ok(Some((p0, da)))
+    let lean = Lean {
+        det_a: &e.det_a,
+        det_a_value: e.trim().0,
+        trim_condition: &e.trim_condition,
+        jump_at: &e.jump_at,
+        jump: &e.jump,
+    };
+    lean.critical(&|| v, &|| e.poles(v), bound, width)
+}
+
+/// [`critical`] of the data `data` (in [`crate::aircraft::Param::ALL`] order) at elevator
+/// `delta_e_rad` and `delta_r = 0`, from the criterion program's tape
+/// ([`EnclosedPolys::by_tape`]) where it applies; `lift` gives the data's [`Values`] (lifted on
+/// first need: a root the tape's enclosures cannot pin down, or data the tape does not cover,
+/// or a certificate that fails on the tape's enclosures, when [`critical`] answers on them).
+pub fn critical_of(
+    data: &[I; 18],
+    delta_e_rad: f64,
+    lift: &dyn Fn() -> Values,
+    bound: f64,
+    width: f64,
+) -> Result<Option<(f64, f64)>, Uncertified> {
+    let lifted = std::cell::OnceCell::new();
+    let v = || lifted.get_or_init(lift);
+    if let Some(Ok(e)) = EnclosedPolys::by_tape(data, delta_e_rad) {
+        let det_a_value = IPoly2::new(vec![e.det_a.clone()]);
+        let lean = Lean {
+            det_a: &e.det_a,
+            det_a_value: &det_a_value,
+            trim_condition: &e.trim_condition,
+            jump_at: &e.jump_at,
+            jump: &e.jump,
+        };
+        if let Ok(answer) = lean.critical(&v, &|| Ok(e.poles.clone()), bound, width) {
+            return Ok(answer);
         }
-        super::Outcome::Lost(_) => Err(Uncertified::Degenerate),
-        _ => Ok(None),
+    }
+    critical(v(), bound, width)
+}
+
+/// What [`critical`] reads of the criterion polynomials, from either route.
+struct Lean<'a> {
+    det_a: &'a IPoly,
+    /// det A as the walk evaluates it (a polynomial in P0 and delta_a).
+    det_a_value: &'a IPoly2,
+    trim_condition: &'a IPoly2,
+    jump_at: &'a IPoly2,
+    jump: &'a IPoly,
+}
+
+impl Lean<'_> {
+    /// [`critical`] on these polynomials of the data `v` (asked for only to refine a root the
+    /// enclosures cannot pin down), with `poles` the pole polynomial.
+    fn critical<'v>(
+        &self,
+        v: &dyn Fn() -> &'v Values,
+        poles: &dyn Fn() -> Result<IPoly, Uncertified>,
+        bound: f64,
+        width: f64,
+    ) -> Result<Option<(f64, f64)>, Uncertified> {
+        let divergence = positive_roots_by(
+            self.det_a,
+            Some(&|x| value_at(v(), Criterion::DetA, x)),
+            width,
+        )?;
+        let jump = positive_roots_by(
+            self.jump,
+            Some(&|x| value_at(v(), Criterion::Jump, x)),
+            width,
+        )?;
+        apart(&jump, &divergence)?;
+        let f64s = |p: &IPoly2| InAileron(p.0.iter().map(|c| c.mid()).collect());
+        let g = f64s(self.trim_condition);
+        let jump_at = f64s(self.jump_at);
+        let det_a = f64s(self.det_a_value);
+        let points: Vec<(f64, f64, Bracket)> = jump
+            .iter()
+            .map(|b| (b.value, super::aileron_of_root(&g, &jump_at, b.value), *b))
+            .filter(|(_, da, _)| da.is_finite())
+            .collect();
+        let roots: Vec<(f64, f64)> = points.iter().map(|(p, da, _)| (*p, *da)).collect();
+        let divergence: Vec<f64> = divergence.iter().map(|b| b.value).collect();
+        match super::primary::follow(&g, &det_a, &divergence, &roots, bound) {
+            super::Outcome::Jump(i) => {
+                let (p0, da, b) = points[i];
+                if b.relative_width() > width {
+                    return Err(Uncertified::Wide);
+                }
+                // A common root of the jump and pole polynomials is no jump (the exact path
+                // cancels it): the pole polynomial must keep its sign over the critical bracket.
+                if poles()?.eval(I::new(b.lo, b.hi)).contains_zero() {
+                    return Err(Uncertified::Sign);
+                }
+                Ok(Some((p0, da)))
+            }
+            super::Outcome::Lost(_) => Err(Uncertified::Degenerate),
+            _ => Ok(None),
+        }
     }
 }

@@ -848,17 +848,21 @@ impl<C: AsRef<[(f64, f64)]>> Node<C> {
         let (a, b) = (1.0 - t, t);
         let u = 2.01 * f64::EPSILON / 2.0;
         let grow = 1.0 + 8.0 * f64::EPSILON / 2.0;
+        // The halves' coefficients pass through `entry` as they are written; the levels in
+        // between need not: an infinity or NaN never turns finite again in these convex
+        // combinations (positive weights, nonnegative radii), so it reaches the coefficient it
+        // feeds, which `entry` then makes sign-free, as a level-by-level `entry` would.
         for level in 1..=n {
             for j in 0..=n - level {
                 let ((m0, r0), (m1, r1)) = (w[j], w[j + 1]);
                 let mu = m0.abs().max(m1.abs());
-                w[j] = entry(
+                w[j] = (
                     a * m0 + b * m1,
                     (a * r0 + b * r1 + u * mu + NODE_FLOOR) * grow,
                 );
             }
-            left[level] = w[0];
-            right[n - level] = w[n - level];
+            left[level] = entry(w[0].0, w[0].1);
+            right[n - level] = entry(w[n - level].0, w[n - level].1);
         }
     }
 }

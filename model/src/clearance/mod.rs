@@ -419,15 +419,18 @@ impl Worst<'_> {
 
     /// The aircraft at the f64 coordinates `x` (each clamped into the box as an exact value)
     /// if the certified route proves that it has a critical jump (the Monte Carlo's lean
-    /// route, [`crate::analysis::fast::critical`], without the exact path's fallback: next to
+    /// route, [`crate::analysis::fast::critical_of`], without the exact path's fallback: next to
     /// a cusp that fallback is the slow one, and an uncertified point only ends a bisection).
     fn screen(&self, x: &[f64]) -> Option<Screened> {
         let x = exact_coordinates(self.params, x);
         let aircraft = at(self.base, self.params, &x);
-        let v = crate::certified::Values::of(&aircraft, self.delta_e_rad, 0.0);
+        let lift = || crate::certified::Values::of(&aircraft, self.delta_e_rad, 0.0);
         let bound = crate::analysis::aileron_range(&aircraft);
+        let data = crate::certified::Values::data(&aircraft);
+        let width = crate::analysis::fast::MAX_WIDTH;
         let (p0, da) =
-            crate::analysis::fast::critical(&v, bound, crate::analysis::fast::MAX_WIDTH).ok()??;
+            crate::analysis::fast::critical_of(&data, self.delta_e_rad, &lift, bound, width)
+                .ok()??;
         Some(Screened {
             x,
             p0,

@@ -132,18 +132,25 @@ pub fn run(
                 }
             }
         }
-        let v = sampler.values(&data);
-        let (point, fell_back) = match fast::critical(&v, bound, fast::MAX_WIDTH) {
-            Ok(c) => (c, false),
-            Err(_) => {
-                let a = super::at(&base, &params, &exact_coordinates(&params, x));
-                let c = critical(&a, delta_e_rad)
-                    .ok()
-                    .flatten()
-                    .map(|j| (j.p0, j.delta_a_rad));
-                (c, true)
-            }
-        };
+        // The whole data of the sample, for the tape (which folds nothing); the sampler lifts
+        // the varying part only should the tape not answer.
+        let mut all = fixed;
+        for (p, d) in varying.iter().zip(&data) {
+            all[p.index()] = *d;
+        }
+        let lift = || sampler.values(&data);
+        let (point, fell_back) =
+            match fast::critical_of(&all, delta_e_rad, &lift, bound, fast::MAX_WIDTH) {
+                Ok(c) => (c, false),
+                Err(_) => {
+                    let a = super::at(&base, &params, &exact_coordinates(&params, x));
+                    let c = critical(&a, delta_e_rad)
+                        .ok()
+                        .flatten()
+                        .map(|j| (j.p0, j.delta_a_rad));
+                    (c, true)
+                }
+            };
         let sample = Sample {
             p0: point.map(|(p, _)| p),
             abs_delta_a_deg: point.map(|(_, da)| da.to_degrees().abs()),

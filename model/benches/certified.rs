@@ -66,7 +66,9 @@ fn critical_lean(bencher: divan::Bencher, name: &str) {
         let a = divan::black_box(&a);
         let lift = || Values::of(a, DELTA_E, 0.0);
         let data = Values::data(a);
-        fast::critical_of(&data, DELTA_E, &lift, bound, fast::MAX_WIDTH).ok().flatten()
+        fast::critical_of(&data, DELTA_E, &lift, bound, fast::MAX_WIDTH)
+            .ok()
+            .flatten()
     });
 }
 

@@ -198,6 +198,7 @@ impl<'a> Ahead<'a> {
     /// The step of signed length `dh` from `p`: the roll rate it reaches, the roots in delta_a
     /// there and det A there; `full` says the step has the largest length, so that the next
     /// ones may be evaluated with it.
+    #[inline(always)]
     fn step(&mut self, p: f64, dh: f64, full: bool) -> (f64, Roots, f64) {
         let s = match self.steps.get(self.next) {
             Some(s) if s.from == p && s.dh == dh => *s,

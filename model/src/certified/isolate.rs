@@ -466,14 +466,18 @@ fn isolate_positive(c: &[I]) -> Result<Vec<Isolating>, Uncertified> {
         .map(|(i, a)| a.scale2(k * i as i32))
         .collect();
     let reverse: Vec<I> = forward.iter().rev().copied().collect();
-    let bound = root_bound(c);
     let mut out: Vec<Isolating> = isolate_unit(&forward)?
         .into_iter()
         .map(|(tl, tr, t)| (s * tl, s * tr, s * t))
         .collect();
     for (tl, tr, t) in isolate_unit(&reverse)? {
         let lo = next_down(s / tr);
-        let hi = if tl == 0.0 { bound } else { next_up(s / tl) };
+        // The root bound (a root per coefficient: made only for the largest root's interval).
+        let hi = if tl == 0.0 {
+            root_bound(c)
+        } else {
+            next_up(s / tl)
+        };
         // A root bound that overflows leaves the last root unbounded: no answer to refine.
         if !hi.is_finite() {
             return Err(Uncertified::Wide);

@@ -144,20 +144,26 @@ pub fn positive_roots_by(
             isolating
                 .into_iter()
                 .map(|(ylo, yhi, guess)| {
-                    let b = refine_local(&local_q, None, target, (ylo, yhi, guess))?;
-                    let x = Bracket {
-                        lo: next_down(b.lo.sqrt()),
-                        hi: next_up(b.hi.sqrt()),
-                        value: b.value.sqrt(),
+                    // A bracket [y0, y1] (with a value in it) as one in x.
+                    let in_x = |(y0, y1, y): Isolating| {
+                        let (lo, hi) = (next_down(y0.sqrt()), next_up(y1.sqrt()));
+                        (lo, hi, y.sqrt().clamp(lo, hi))
                     };
-                    let x = Bracket {
-                        value: x.value.clamp(x.lo, x.hi),
-                        ..x
+                    let x = match refine_local(&local_q, None, target, (ylo, yhi, guess)) {
+                        Ok(b) => in_x((b.lo, b.hi, b.value)),
+                        // q's enclosures cannot decide an end: the isolating interval in x,
+                        // where `value` can.
+                        Err(_) => in_x((ylo, yhi, guess)),
                     };
-                    if x.relative_width() <= target {
-                        Ok(x)
+                    let bracket = Bracket {
+                        lo: x.0,
+                        hi: x.1,
+                        value: x.2,
+                    };
+                    if bracket.relative_width() <= target {
+                        Ok(bracket)
                     } else {
-                        refine_local(local(), value, target, (x.lo, x.hi, x.value))
+                        refine_local(local(), value, target, x)
                     }
                 })
                 .collect::<Result<Vec<_>, _>>()?

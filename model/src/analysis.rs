@@ -683,7 +683,7 @@ fn strip(p: &UPoly, q: &UPoly) -> UPoly {
         if g.degree().unwrap_or(0) == 0 {
             return p;
         }
-        p = p.div_rem(&g).0;
+        p = p.div_exact(&g).expect("the gcd divides p");
     }
 }
 

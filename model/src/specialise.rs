@@ -94,8 +94,8 @@ pub fn cancel(num: &UPoly, den: &UPoly) -> (UPoly, UPoly) {
         if g.degree().unwrap_or(0) == 0 {
             return (n, d);
         }
-        n = n.div_rem(&g).0;
-        d = d.div_rem(&g).0;
+        n = n.div_exact(&g).expect("the gcd divides the numerator");
+        d = d.div_exact(&g).expect("the gcd divides the denominator");
     }
 }
 

@@ -17,6 +17,7 @@
 //! assert!((&lhs - &rhs).is_zero());
 //! ```
 
+pub mod big_rational;
 mod matrix;
 mod mono;
 mod poly;

@@ -4,8 +4,9 @@
 //! Z[parameters] and almost every coefficient fits an `i64`; only an aircraft's decimal data
 //! (`-13.52504 = -338126/25000`) and their products need big rationals. [`Q`] keeps integers that
 //! fit in an `i64` inline and promotes to a [`BigRational`] on overflow or division, so exactness
-//! is never traded for speed.
+//! is never traded for speed. Big values reduce by Lehmer's gcd ([`big_rational`]).
 
+use super::big_rational;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -101,6 +102,14 @@ impl Q {
         }
     }
 
+    /// This value as a big rational, borrowed where it is one.
+    fn big(&self) -> std::borrow::Cow<'_, BigRational> {
+        match &self.0 {
+            Repr::Int(n) => std::borrow::Cow::Owned(BigRational::from_integer(BigInt::from(*n))),
+            Repr::Big(b) => std::borrow::Cow::Borrowed(b),
+        }
+    }
+
     /// Nearest f64.
     pub fn to_f64(&self) -> f64 {
         match &self.0 {
@@ -119,7 +128,11 @@ impl Q {
                 }
             }
         }
-        Q::from_big(self.to_big() / other.to_big())
+        let inverse = match &other.0 {
+            Repr::Int(n) => BigRational::new(BigInt::one(), BigInt::from(*n)),
+            Repr::Big(b) => b.recip(),
+        };
+        Q::from_big(big_rational::mul(&self.to_big(), &inverse))
     }
 
     /// `self^k` exactly.
@@ -179,7 +192,7 @@ impl Add for &Q {
                 return Q::int(s);
             }
         }
-        Q::from_big(self.to_big() + o.to_big())
+        Q::from_big(big_rational::add(&self.big(), &o.big()))
     }
 }
 
@@ -191,7 +204,7 @@ impl Sub for &Q {
                 return Q::int(s);
             }
         }
-        Q::from_big(self.to_big() - o.to_big())
+        Q::from_big(big_rational::add(&self.big(), &(-o).big()))
     }
 }
 
@@ -208,7 +221,7 @@ impl Mul for &Q {
             (Repr::Int(0), _) | (_, Repr::Int(0)) => Q::ZERO,
             (Repr::Int(1), _) => o.clone(),
             (_, Repr::Int(1)) => self.clone(),
-            _ => Q::from_big(self.to_big() * o.to_big()),
+            _ => Q::from_big(big_rational::mul(&self.big(), &o.big())),
         }
     }
 }

@@ -363,9 +363,7 @@ pub fn resultant_in_aileron(g: &Poly, f: &Poly) -> UPoly {
         .sub(&g1.mul(&r0.mul(r1)))
         .add(&g0.mul(&r1.mul(r1)));
     for _ in 0..n - 1 {
-        let (q, r) = res.div_rem(g2);
-        assert!(r.is_zero(), "Res(g, R) carries g2^(n-1)");
-        res = q;
+        res = res.div_exact(g2).expect("Res(g, R) carries g2^(n-1)");
     }
     res
 }

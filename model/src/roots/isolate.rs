@@ -173,7 +173,9 @@ pub(super) fn isolate(
     for i in 1..=n {
         binom[i] = &binom[i - 1] * BigInt::from(n + 1 - i) / BigInt::from(i);
     }
-    let lcm = binom.iter().fold(BigInt::one(), |acc, c| int_lcm(&acc, c));
+    let lcm = binom.iter().fold(BigInt::one(), |acc, c| {
+        crate::algebra::big_rational::lcm(&acc, c)
+    });
     let mut bern: ZPoly = (0..=n).map(|i| &t[n - i] * (&lcm / &binom[i])).collect();
     strip_pow2(&mut bern);
     // Node (j, d) is the sub-interval (l + j·w/2^d, l + (j+1)·w/2^d) at scale k.

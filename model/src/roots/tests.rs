@@ -2,7 +2,6 @@
 
 use super::*;
 use num_bigint::{BigInt, Sign};
-use num_integer::Integer;
 use num_traits::ToPrimitive;
 
 fn q(n: i64, d: i64) -> BigRational {
@@ -468,22 +467,6 @@ fn rational_arithmetic_is_exact() {
     }
 }
 
-#[test]
-fn lehmer_gcd_agrees_with_binary_gcd() {
-    let mut rng = Lcg(7);
-    let mut big = |limbs: usize| -> BigInt {
-        (0..limbs).fold(BigInt::zero(), |acc, _| {
-            (acc << 64u32) + rng.next() * rng.next()
-        })
-    };
-    for i in 0..200 {
-        let common = big(1 + i % 5);
-        let (a, b) = (big(1 + i % 13) * &common, -big(1 + i % 7) * &common);
-        assert_eq!(int_gcd(&a, &b), a.gcd(&b));
-        assert_eq!(int_gcd(&b, &BigInt::zero()), b.abs());
-    }
-}
-
 /// Degree-12 polynomial with twelve real rational roots (coefficients up to ~126 digits).
 fn timing_poly(rng: &mut Lcg) -> UPoly {
     let roots: Vec<_> = (0..12)
@@ -570,4 +553,52 @@ fn timing() {
         })
         .collect();
     time_positive_roots("random dense degree 16, 30-decimal coefficients", &polys);
+}
+
+/// A random polynomial of degree `deg` with rational coefficients of up to six digits.
+fn random_upoly(rng: &mut Lcg, deg: usize) -> UPoly {
+    let mut c: Vec<BigRational> = (0..=deg)
+        .map(|_| {
+            q(
+                rng.below(2_000_001) as i64 - 1_000_000,
+                1 + rng.below(999) as i64,
+            )
+        })
+        .collect();
+    if c[deg].is_zero() {
+        c[deg] = int(1);
+    }
+    UPoly::new(c)
+}
+
+/// `div_exact` gives the quotient of every exact division (the same as `div_rem`'s, with no
+/// remainder) and refuses every inexact one, including a divisor that is a rational multiple
+/// of a factor and a remainder of one unit in the constant term.
+#[test]
+fn exact_division_returns_the_quotient_or_refuses() {
+    let mut rng = Lcg(31);
+    for case in 0..200 {
+        let (da, db) = (rng.below(7) as usize, 1 + rng.below(5) as usize);
+        let (a, b) = (random_upoly(&mut rng, da), random_upoly(&mut rng, db));
+        let product = a.mul(&b);
+        assert_eq!(product.div_exact(&b), Some(a.clone()), "case {case}");
+        assert_eq!(
+            product.div_rem(&b),
+            (a.clone(), UPoly::zero()),
+            "case {case}"
+        );
+        let scaled = b.scale(&q(-7, 3));
+        assert_eq!(
+            product.div_exact(&scaled),
+            Some(a.scale(&q(-3, 7))),
+            "case {case}"
+        );
+        let off = product.add(&UPoly::constant(int(1)));
+        assert_eq!(off.div_exact(&b), None, "case {case}");
+    }
+    assert_eq!(UPoly::from_i64s(&[1, 1]).div_exact(&UPoly::zero()), None);
+    assert_eq!(
+        UPoly::zero().div_exact(&UPoly::from_i64s(&[1, 1])),
+        Some(UPoly::zero())
+    );
 }

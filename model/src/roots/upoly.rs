@@ -2,6 +2,7 @@
 //! decomposition), and [`F64Poly`], their `f64` rounding for Horner evaluation.
 
 use super::*;
+use crate::algebra::big_rational;
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -114,7 +115,7 @@ impl UPoly {
             pw *= den;
             acc = acc * num + c * &pw;
         }
-        reduced(acc, l * pw)
+        big_rational::reduced(acc, l * pw)
     }
 
     /// Approximate value at `x` in `f64` (coefficients rounded to `f64`, then Horner).
@@ -141,7 +142,7 @@ impl UPoly {
                 .iter()
                 .enumerate()
                 .skip(1)
-                .map(|(i, c)| mul_q(c, &BigRational::from_integer(i.into())))
+                .map(|(i, c)| big_rational::mul(c, &BigRational::from_integer(i.into())))
                 .collect(),
         )
     }
@@ -153,7 +154,7 @@ impl UPoly {
         Self::new(
             (0..n)
                 .map(|i| match (self.coeffs.get(i), o.coeffs.get(i)) {
-                    (Some(a), Some(b)) => add_q(a, b),
+                    (Some(a), Some(b)) => big_rational::add(a, b),
                     (Some(a), None) => a.clone(),
                     (None, Some(b)) => b.clone(),
                     (None, None) => BigRational::zero(),
@@ -183,12 +184,21 @@ impl UPoly {
             }
         }
         let den = la * lb;
-        Self::new(out.into_iter().map(|c| reduced(c, den.clone())).collect())
+        Self::new(
+            out.into_iter()
+                .map(|c| big_rational::reduced(c, den.clone()))
+                .collect(),
+        )
     }
 
     /// The scalar multiple `c · self`.
     pub fn scale(&self, c: &BigRational) -> UPoly {
-        Self::new(self.coeffs.iter().map(|a| mul_q(a, c)).collect())
+        Self::new(
+            self.coeffs
+                .iter()
+                .map(|a| big_rational::mul(a, c))
+                .collect(),
+        )
     }
 
     /// `self` divided by its leading coefficient (zero stays zero).
@@ -200,6 +210,20 @@ impl UPoly {
             }
             _ => self.clone(),
         }
+    }
+
+    /// The exact quotient `self / d` when `d` divides `self`, `None` otherwise (and for `d = 0`).
+    /// It divides in `ℤ[x]` by the primitive part of `d` (Gauss's lemma: a primitive divisor in
+    /// `ℚ[x]` divides in `ℤ[x]`), so no coefficient outgrows the quotient's, where the
+    /// pseudo-division of [`UPoly::div_rem`] multiplies every coefficient by `lc(d)` at each step.
+    pub fn div_exact(&self, d: &UPoly) -> Option<UPoly> {
+        let lc = d.leading_coeff()?;
+        let dz = to_primitive_z(d);
+        let (pz, lp) = common_denominator(self);
+        let q = z_checked_div(&pz, &dz)?;
+        // d = dz · lc / lc(dz), self = pz / lp.
+        let scale = big_rational::mul(&BigRational::new(dz[dz.len() - 1].clone(), lp), &lc.recip());
+        Some(z_to_upoly(&q).scale(&scale))
     }
 
     /// Euclidean division: `(q, r)` with `self = q·d + r` and `deg r < deg d`.
@@ -239,8 +263,10 @@ impl UPoly {
         }
         r.truncate(n);
         let den = lc_pow * lp;
-        let q = q.into_iter().map(|c| reduced(c * &ld, den.clone()));
-        let r = r.into_iter().map(|c| reduced(c, den.clone()));
+        let q = q
+            .into_iter()
+            .map(|c| big_rational::reduced(c * &ld, den.clone()));
+        let r = r.into_iter().map(|c| big_rational::reduced(c, den.clone()));
         (Self::new(q.collect()), Self::new(r.collect()))
     }
 
@@ -275,30 +301,5 @@ impl UPoly {
             .into_iter()
             .map(|(f, i)| (z_to_upoly(&f).monic(), i))
             .collect()
-    }
-}
-
-/// `a + b`, reduced by the Lehmer gcd, and without any gcd when both are integers: the exact
-/// Hopf polynomial's coefficients run to thousands of bits, where num-rational's reduction (a
-/// binary gcd, quadratic in the length even against a denominator of 1) dominated.
-fn add_q(a: &BigRational, b: &BigRational) -> BigRational {
-    if a.denom().is_one() && b.denom().is_one() {
-        BigRational::new_raw(a.numer() + b.numer(), BigInt::one())
-    } else if a.denom() == b.denom() {
-        reduced(a.numer() + b.numer(), a.denom().clone())
-    } else {
-        reduced(
-            a.numer() * b.denom() + b.numer() * a.denom(),
-            a.denom() * b.denom(),
-        )
-    }
-}
-
-/// `a * b`, as [`add_q`].
-fn mul_q(a: &BigRational, b: &BigRational) -> BigRational {
-    if a.denom().is_one() && b.denom().is_one() {
-        BigRational::new_raw(a.numer() * b.numer(), BigInt::one())
-    } else {
-        reduced(a.numer() * b.numer(), a.denom() * b.denom())
     }
 }

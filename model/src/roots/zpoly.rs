@@ -1,13 +1,14 @@
 //! Primitive integer polynomials (`ℤ[x]`, ascending coefficients): the integer form every
-//! exact step works on, the Lehmer gcd of their contents, pseudo-remainder gcds and Yun's
+//! exact step works on, the contents, pseudo-remainder gcds and Yun's
 //! square-free decomposition (step 2 of the method, the exact fallback).
 
 use super::*;
+use crate::algebra::big_rational;
 
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, Zero};
 
 pub(super) type ZPoly = Vec<BigInt>;
 
@@ -16,7 +17,7 @@ pub(super) fn common_denominator(p: &UPoly) -> (ZPoly, BigInt) {
     let l = p
         .coeffs()
         .iter()
-        .fold(BigInt::one(), |l, c| int_lcm(&l, c.denom()));
+        .fold(BigInt::one(), |l, c| big_rational::lcm(&l, c.denom()));
     let z = p
         .coeffs()
         .iter()
@@ -31,84 +32,10 @@ pub(super) fn common_denominator(p: &UPoly) -> (ZPoly, BigInt) {
     (z, l)
 }
 
-/// The least common multiple of two positive integers (by the fast gcd).
-pub(super) fn int_lcm(a: &BigInt, b: &BigInt) -> BigInt {
-    if b.is_one() || a == b {
-        a.clone()
-    } else {
-        a / int_gcd(a, b) * b
-    }
-}
-
-/// The reduced rational `n / d` (`d ≠ 0`), using the fast gcd.
-pub(super) fn reduced(mut n: BigInt, mut d: BigInt) -> BigRational {
-    if n.is_zero() {
-        return BigRational::zero();
-    }
-    if d.is_negative() {
-        n = -n;
-        d = -d;
-    }
-    if d.is_one() {
-        return BigRational::new_raw(n, d);
-    }
-    let g = int_gcd(&n, &d);
-    if !g.is_one() {
-        n /= &g;
-        d /= &g;
-    }
-    BigRational::new_raw(n, d)
-}
-
 fn trim_z(v: &mut ZPoly) {
     while v.last().is_some_and(Zero::is_zero) {
         v.pop();
     }
-}
-
-/// Non-negative gcd of two integers by Lehmer's algorithm (Knuth, TAOCP 4.5.2, Algorithm L):
-/// Euclid's quotients are simulated on 63-bit leading parts and applied to the full numbers as
-/// one unimodular 2×2 step (a real division only when the simulation makes no progress), and
-/// the tail runs in `u128`. num-bigint's binary gcd is quadratic with a large constant, which
-/// dominated the exact square-free decomposition.
-pub(super) fn int_gcd(a: &BigInt, b: &BigInt) -> BigInt {
-    let (mut u, mut v) = (a.magnitude().clone(), b.magnitude().clone());
-    if u < v {
-        std::mem::swap(&mut u, &mut v);
-    }
-    while !v.is_zero() {
-        if let (Some(x), Some(y)) = (u.to_u128(), v.to_u128()) {
-            return BigInt::from(x.gcd(&y));
-        }
-        // u ≥ v and u > 2^128, so the shift is positive and both leading parts fit in 63 bits.
-        let s = u.bits() - 63;
-        let mut uh = i128::from((&u >> s).to_u64().unwrap_or(0));
-        let mut vh = i128::from((&v >> s).to_u64().unwrap_or(0));
-        let (mut ca, mut cb, mut cc, mut cd) = (1i128, 0i128, 0i128, 1i128);
-        while vh + cc > 0 && vh + cd > 0 && uh + ca >= 0 && uh + cb >= 0 {
-            let q = (uh + ca) / (vh + cc);
-            if q != (uh + cb) / (vh + cd) {
-                break;
-            }
-            (ca, cc) = (cc, ca - q * cc);
-            (cb, cd) = (cd, cb - q * cd);
-            (uh, vh) = (vh, uh - q * vh);
-        }
-        if cb == 0 {
-            let r = &u % &v;
-            u = std::mem::replace(&mut v, r);
-        } else {
-            // The step matrix is unimodular, so the gcd is preserved whatever happens.
-            let (bu, bv) = (BigInt::from(u), BigInt::from(v));
-            let nu = &bu * BigInt::from(ca) + &bv * BigInt::from(cb);
-            let nv = &bu * BigInt::from(cc) + &bv * BigInt::from(cd);
-            (u, v) = (nu.magnitude().clone(), nv.magnitude().clone());
-            if u < v {
-                std::mem::swap(&mut u, &mut v);
-            }
-        }
-    }
-    BigInt::from(u)
 }
 
 /// Positive gcd of the coefficients (zero for the zero polynomial). Starts from the smallest
@@ -123,7 +50,7 @@ fn content(v: &[BigInt]) -> BigInt {
             break;
         }
         if !c.is_zero() {
-            g = int_gcd(c, &g);
+            g = big_rational::gcd(c, &g);
         }
     }
     g
@@ -158,7 +85,7 @@ pub(super) fn to_primitive_z(p: &UPoly) -> ZPoly {
         g = if g.is_zero() {
             c.numer().abs()
         } else {
-            int_gcd(&g, c.numer())
+            big_rational::gcd(&g, c.numer())
         };
         if g.is_one() {
             break;
@@ -264,6 +191,30 @@ fn z_exact_div(a: &[BigInt], b: &[BigInt]) -> ZPoly {
         q[s] = c;
     }
     q
+}
+
+/// The quotient `a / b` in `ℤ[x]` if `b` (non-zero) divides `a` there, `None` otherwise: every
+/// step's leading division must be exact and nothing may remain.
+pub(super) fn z_checked_div(a: &[BigInt], b: &[BigInt]) -> Option<ZPoly> {
+    let n = b.len().checked_sub(1)?;
+    if a.len() <= n {
+        return a.iter().all(Zero::is_zero).then(Vec::new);
+    }
+    let mut r = a.to_vec();
+    let mut q = vec![BigInt::zero(); a.len() - n];
+    for s in (0..q.len()).rev() {
+        let (c, rest) = r[s + n].div_rem(&b[n]);
+        if !rest.is_zero() {
+            return None;
+        }
+        if !c.is_zero() {
+            for (j, bc) in b.iter().enumerate() {
+                r[s + j] -= &c * bc;
+            }
+        }
+        q[s] = c;
+    }
+    r[..n].iter().all(Zero::is_zero).then_some(q)
 }
 
 /// Yun's square-free decomposition of a primitive `f` (degree ≥ 1), entirely in `ℤ[x]`: every gcd

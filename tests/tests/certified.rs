@@ -11,12 +11,11 @@
 //! or the comparison would be empty. Its brackets are checked against the exact isolating
 //! intervals of the exact polynomials on part of the sample.
 //!
-//! Release builds (the README's test command runs this file with `--release`) check 10^4
-//! aircraft; debug builds a smaller sample.
+//! The default run checks 10^3 aircraft, the full-size run (`ROLL_FULL_SIZE=1`) 10^4.
 
 mod support;
 
-use support::{close, close_roots, random_aircraft, same_analysis, Rng};
+use support::{close, close_roots, random_aircraft, same_analysis, size, Rng};
 
 use model::aircraft::Param;
 use model::analysis::fast::{analyze_routed, Route, MAX_WIDTH};
@@ -26,15 +25,18 @@ use model::interval::I;
 use num_rational::BigRational;
 
 /// Aircraft in the random sample.
-const N: usize = if cfg!(debug_assertions) { 300 } else { 10_000 };
+fn n() -> usize {
+    size(1000, 10_000)
+}
 
 #[test]
 fn certified_analysis_agrees_with_the_exact_path_on_random_aircraft() {
+    let n = n();
     let mut rng = Rng(2026);
     let (mut certified, mut fallbacks, mut refused) = (0usize, Vec::new(), 0usize);
     let mut widest = 0.0f64;
     let mut times = (0.0, 0.0);
-    for i in 0..N {
+    for i in 0..n {
         let ac = random_aircraft(&mut rng, i);
         let de = rng.uniform(-5.0, 5.0).to_radians();
         let t = std::time::Instant::now();
@@ -73,7 +75,7 @@ fn certified_analysis_agrees_with_the_exact_path_on_random_aircraft() {
         }
     }
     println!(
-        "{N} aircraft: {certified} certified (widest bracket {widest:e} relative), {} fallbacks \
+        "{n} aircraft: {certified} certified (widest bracket {widest:e} relative), {} fallbacks \
          ({fallbacks:?}), {refused} refused by both; exact {:.1} s, certified route {:.1} s",
         fallbacks.len(),
         times.0,
@@ -84,9 +86,9 @@ fn certified_analysis_agrees_with_the_exact_path_on_random_aircraft() {
     // aircraft with two jump roots closer than f64 enclosures resolve, or roots next to a
     // divergence roll rate that f64 cannot pin to 1e-9).
     assert!(
-        certified as f64 >= 0.95 * (N - refused) as f64,
+        certified as f64 >= 0.95 * (n - refused) as f64,
         "only {certified} of {} certified",
-        N - refused
+        n - refused
     );
 }
 
@@ -136,7 +138,7 @@ fn certified_brackets_hold_the_exact_roots() {
 fn lean_critical_route_gives_the_exact_critical_jump() {
     let mut rng = Rng(11);
     let (mut answered, mut total) = (0usize, 0usize);
-    for i in 0..N / 10 {
+    for i in 0..n() / 10 {
         let ac = random_aircraft(&mut rng, i);
         let de = rng.uniform(-4.0, 4.0).to_radians();
         let Ok(exact) = analyze_with(&ac, de, false) else {
@@ -190,7 +192,7 @@ fn same_critical(
 fn sampler_gives_the_exact_critical_jump_of_each_sample() {
     let mut rng = Rng(13);
     let (mut answered, mut total) = (0usize, 0usize);
-    for i in 0..N / 20 {
+    for i in 0..n() / 20 {
         let base = random_aircraft(&mut rng, i);
         let other = random_aircraft(&mut rng, i);
         let varying: Vec<Param> = if i % 5 == 0 {

@@ -2,6 +2,8 @@
 //! box and analysed by the exact path has a critical jump below the proven `lo`, and the reported
 //! worst case reproduces `hi` by the exact path.
 
+mod support;
+
 use model::aircraft::{Aircraft, Param, Uncertain};
 use model::analysis::analyze;
 use model::clearance::{clear, sample, split_box, Rng, Settings};
@@ -83,14 +85,10 @@ fn no_sample_of_a_random_box_jumps_below_the_proven_bound() {
     }
 }
 
-/// The full version: 10^4 exact samples per box, three boxes of three parameters (minutes in
-/// debug, so release builds only: the README's test command runs this file with `--release`).
+/// Three boxes of three parameters, 10^3 exact samples per box (10^4 in the full-size run,
+/// `ROLL_FULL_SIZE=1`).
 #[test]
-#[cfg_attr(
-    debug_assertions,
-    ignore = "10^4 exact samples per box: run with --release"
-)]
-fn no_sample_of_a_random_box_jumps_below_the_proven_bound_10k() {
+fn no_sample_of_a_random_box_of_three_parameters_jumps_below_the_proven_bound() {
     let mut rng = Rng::new(11);
     let pool = POOL;
     for b in 0..3 {
@@ -98,7 +96,7 @@ fn no_sample_of_a_random_box_jumps_below_the_proven_bound_10k() {
         let k2 = (k1 + 1) % pool.len();
         let k3 = (k1 + 2) % pool.len();
         let a = boxed(&[(pool[k1], 0.03), (pool[k2], 0.03), (pool[k3], 0.02)]);
-        check_box(&a, 10_000, b);
+        check_box(&a, support::size(1000, 10_000), b);
     }
 }
 
@@ -119,10 +117,6 @@ fn fighter_with(cl_p: &str, cn_beta: &str, extra: &str) -> Aircraft {
 /// its sampled coefficients and converted by the loader (not by the box's linear map), has a
 /// critical jump below the proven `lo`; the worst case, written the same way, reproduces `hi`.
 #[test]
-#[cfg_attr(
-    debug_assertions,
-    ignore = "an aircraft with aileron yaw, 80 exact analyses: run with --release"
-)]
 fn coefficient_boxes_of_a_tilted_aircraft_are_sound() {
     let a = fighter_with(
         "-0.38",

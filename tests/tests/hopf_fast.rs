@@ -19,10 +19,12 @@ use model::derivation::hopf::{cleared_coefficients, TRIM_FACTOR_POWERS};
 use model::equations::symbols;
 use model::specialise::specialisation;
 use num_rational::BigRational;
-use support::{close, close_roots, random_aircraft, same_analysis, Rng};
+use support::{close, close_roots, random_aircraft, same_analysis, size, Rng};
 
-/// Aircraft in the random sample.
-const N: usize = if cfg!(debug_assertions) { 100 } else { 1000 };
+/// Aircraft in the random sample (the full-size run: `ROLL_FULL_SIZE=1`).
+fn n() -> usize {
+    size(300, 1000)
+}
 
 /// The aircraft without aileron yaw (n_delta_a = 0), the certified route's whole domain.
 fn without_aileron_yaw(ac: Aircraft) -> Aircraft {
@@ -92,10 +94,11 @@ fn same_departures(e: &Analysis, f: &Analysis, w: f64) -> Result<(), String> {
 
 #[test]
 fn certified_full_analysis_agrees_with_the_exact_path_on_random_aircraft() {
+    let n = n();
     let mut rng = Rng(1010);
     let (mut certified, mut total, mut fallbacks) = (0usize, 0usize, Vec::new());
     let (mut hopf_points, mut uncovered) = (0usize, 0usize);
-    for i in 0..N {
+    for i in 0..n {
         let ac = random_aircraft(&mut rng, i);
         // Three in four without aileron yaw (the certified route's domain), the rest with it
         // (which must fall back, and then equal the exact path trivially).
@@ -141,7 +144,7 @@ fn certified_full_analysis_agrees_with_the_exact_path_on_random_aircraft() {
         }
     }
     println!(
-        "{N} aircraft, {total} without aileron yaw: {certified} certified ({hopf_points} Hopf \
+        "{n} aircraft, {total} without aileron yaw: {certified} certified ({hopf_points} Hopf \
          points among them), fallbacks {fallbacks:?}; {uncovered} with aileron yaw uncovered"
     );
     assert!(uncovered > 0, "aileron yaw goes to the exact path");
@@ -163,10 +166,7 @@ fn trim_factor_powers_divide_the_cleared_characteristic_coefficients() {
     let s = symbols();
     let mut rng = Rng(99);
     let mut sample = vec![Aircraft::a(), Aircraft::b()];
-    sample.extend(
-        (0..if cfg!(debug_assertions) { 6 } else { 40 })
-            .map(|i| without_aileron_yaw(random_aircraft(&mut rng, i))),
-    );
+    sample.extend((0..size(6, 40)).map(|i| without_aileron_yaw(random_aircraft(&mut rng, i))));
     let de = 2f64.to_radians();
     for (i, ac) in sample.iter().enumerate() {
         let cp = CriterionPolys::new(parametric(), ac, de);

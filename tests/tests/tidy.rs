@@ -93,3 +93,33 @@ fn the_citation_check_sees_each_stray_form() {
     assert!(stray_citation("Eq 5").is_some());
     assert!(stray_citation("Eq. 1-2").is_some());
 }
+
+/// The README's test command is what CI runs: `.ci/run` runs it stage by stage (to time each),
+/// and its stages joined by ` && ` are the command of the README's fenced block, letter for
+/// letter.
+#[test]
+fn ci_runs_the_readme_test_command_stage_by_stage() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let ci = std::fs::read_to_string(root.join(".ci/run")).expect(".ci/run");
+    let block = ci
+        .split_once("STAGES=(\n")
+        .and_then(|(_, rest)| rest.split_once("\n)\n"))
+        .expect("a STAGES=( ... ) array in .ci/run")
+        .0;
+    let stages: Vec<String> = block
+        .lines()
+        .map(|line| {
+            let quoted = line.trim();
+            let inner = &quoted[1..quoted.len() - 1];
+            inner.split_once('|').expect("name|command").1.to_string()
+        })
+        .collect();
+    assert!(stages.len() >= 5, "{stages:?}");
+    let command = stages.join(" && ");
+    let readme = std::fs::read_to_string(root.join("README.md")).expect("README.md");
+    let fenced = format!("```sh\n{command}\n```");
+    assert!(
+        readme.contains(&fenced),
+        "the README's test command is not the stages of .ci/run:\n{command}"
+    );
+}

@@ -1,11 +1,25 @@
-//! Shared by the certified-route agreement tests (`certified.rs`, `hopf_fast.rs`): random
-//! aircraft around A and B, and the comparison of an exact and a certified analysis.
+//! Shared by the randomised tests (`certified.rs`, `hopf_fast.rs`, `clearance.rs`): their size,
+//! random aircraft around A and B, and the comparison of an exact and a certified analysis.
 
 #![allow(dead_code)]
 
 use model::aircraft::{Aircraft, Param};
 use model::analysis::{Analysis, JumpPoint};
 use num_rational::BigRational;
+
+/// The environment variable that asks the randomised tests for their full size.
+pub const FULL_SIZE: &str = "ROLL_FULL_SIZE";
+
+/// `full` when `ROLL_FULL_SIZE=1` is set, else `default`: a randomised property is checked on a
+/// sample sized for a check in the default run (seconds), and on a sample sized for a proof in
+/// the full-size run (minutes; the README's contributing section gives the command).
+pub fn size(default: usize, full: usize) -> usize {
+    if std::env::var(FULL_SIZE).is_ok_and(|v| v == "1") {
+        full
+    } else {
+        default
+    }
+}
 
 /// A small deterministic generator (SplitMix64).
 pub struct Rng(pub u64);

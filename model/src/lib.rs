@@ -34,3 +34,5 @@ pub mod roots;
 #[cfg(feature = "cli")]
 pub mod simulation;
 pub mod specialise;
+#[cfg(any(feature = "analysis", feature = "continuation"))]
+pub mod spectrum;

@@ -824,3 +824,63 @@ fn readme_shows_the_real_output_of_the_main_job() {
         String::from_utf8_lossy(&json.stdout)
     );
 }
+
+/// `model args` killed after `limit`: `Some(output)` when it ended in time, `None` on a hang.
+fn model_within(args: &[&str], limit: std::time::Duration) -> Option<Output> {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_model"))
+        .args(args)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while start.elapsed() < limit {
+        if child.try_wait().unwrap().is_some() {
+            return Some(child.wait_with_output().unwrap());
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    None
+}
+
+/// Aircraft A without yaw stiffness, yaw damping and side force (all three, or two of them)
+/// once made `analyze` and `report` loop forever in an eigenvalue decomposition. Every command
+/// ends within 120 s with an answer or a refusal (exit 0 or 2), never a panic or a hang.
+#[test]
+fn aircraft_without_yaw_stiffness_damping_and_side_force_end_every_command() {
+    let limit = std::time::Duration::from_secs(120);
+    let zero = [
+        ("n_beta = 3.716", "n_beta = 0.0"),
+        ("n_r = -0.2608", "n_r = 0.0"),
+        ("y_beta = -0.0558", "y_beta = 0.0"),
+    ];
+    for (tag, skip) in [("yaw-all", 3), ("yaw-no-nbeta", 0), ("yaw-no-nr", 1)] {
+        let replace: Vec<_> = (0..3).filter(|i| *i != skip).map(|i| zero[i]).collect();
+        let (dir, file) = variant(tag, &replace);
+        let file = file.to_str().unwrap();
+        let out_dir = dir.join("report");
+        let out_dir = out_dir.to_str().unwrap();
+        for args in [
+            vec!["analyze", file],
+            vec!["analyze", file, "--json"],
+            vec!["analyze", file, "--exact"],
+            vec!["continue", file],
+            vec!["simulate", file, "--delta-a-deg", "-5"],
+            vec!["report", file, "--out", out_dir],
+        ] {
+            let out = model_within(&args, limit).unwrap_or_else(|| {
+                panic!("`model {}` still running after {limit:?}", args.join(" "))
+            });
+            let err = stderr(&out);
+            assert!(matches!(out.status.code(), Some(0 | 2)), "{args:?}: {err}");
+            assert!(!err.contains("panicked"), "{args:?}: {err}");
+            assert!(
+                !String::from_utf8_lossy(&out.stdout).contains("NaN"),
+                "{args:?}"
+            );
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

@@ -9,7 +9,7 @@
 use model::aircraft::{parse, Aircraft, Param};
 use model::analysis::{analyze, Analysis};
 use proptest::prelude::*;
-use proptest::test_runner::{Config, TestRunner};
+use proptest::test_runner::{Config, TestCaseError, TestRunner};
 use std::path::PathBuf;
 
 fn shipped(name: &str) -> String {
@@ -409,4 +409,109 @@ fn simulation_and_continuation_settings_are_checked_not_trusted() {
         )
         .unwrap();
     println!("settings: {cases} random simulation and continuation settings");
+}
+
+/// A shipped aircraft made degenerate: one to six derivatives set to exactly zero (yaw
+/// stiffness, damping and side force among them), possibly equal inertias (C = D = E = 0) and
+/// data scaled by huge ratios, at a random elevator.
+fn degenerate_aircraft() -> impl Strategy<Value = (String, f64)> {
+    const ZEROABLE: [&str; 10] = [
+        "n_beta", "n_r", "y_beta", "l_r", "l_beta", "m_q", "z_alpha", "l_p", "m_alpha", "n_p",
+    ];
+    (
+        prop::sample::select(vec!["a.toml", "b.toml"]),
+        prop::sample::subsequence(ZEROABLE.to_vec(), 1..=6),
+        any::<bool>(),
+        prop::option::of((
+            prop::sample::select(ZEROABLE.to_vec()),
+            prop_oneof![Just(1e6), Just(1e-6)],
+        )),
+        prop_oneof![Just(0.0), -5.0..5.0f64],
+    )
+        .prop_map(|(base, zeros, equal_inertias, scaled, de)| {
+            let set = |text: String, key: &str, value: &dyn Fn(f64) -> f64| -> String {
+                text.lines()
+                    .map(|l| match l.split_once(" = ") {
+                        Some((k, rest)) if k.trim() == key => {
+                            let v: f64 = rest.split('#').next().unwrap().trim().parse().unwrap();
+                            format!("{k} = {:?}", value(v))
+                        }
+                        _ => l.to_string(),
+                    })
+                    .collect::<Vec<_>>()
+                    .join("\n")
+                    + "\n"
+            };
+            let mut text = shipped(base);
+            for key in zeros {
+                text = set(text, key, &|_| 0.0);
+            }
+            if equal_inertias {
+                for key in ["C", "D", "E"] {
+                    text = set(text, key, &|_| 0.0);
+                }
+            }
+            if let Some((key, factor)) = scaled {
+                text = set(text, key, &|v| v * factor);
+            }
+            (text, de)
+        })
+}
+
+/// No aircraft makes `analyze` hang: 2000 degenerate aircraft, each analysed in a worker
+/// thread the test waits for at most 60 s (a hang fails the test and names the file). Every
+/// answer is finite or a refusal that names its reason.
+#[test]
+fn analyze_ends_on_degenerate_aircraft() {
+    let cases = 2000;
+    let (to_worker, jobs) = std::sync::mpsc::channel::<(Aircraft, f64)>();
+    let (to_test, answers) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for (ac, de) in jobs {
+            let answer = analyze(&ac, de).map_err(|e| e.to_string());
+            if to_test.send(answer).is_err() {
+                return;
+            }
+        }
+    });
+    let counts = std::cell::Cell::new((0usize, 0usize));
+    // No shrinking: after a hang the worker is stuck, and every further case would wait too.
+    let mut runner = runner(cases);
+    let config = Config {
+        max_shrink_iters: 0,
+        ..runner.config().clone()
+    };
+    let mut runner = TestRunner::new_with_rng(config, runner.new_rng());
+    runner
+        .run(&degenerate_aircraft(), |(text, de_deg)| {
+            let Ok(ac) = parse(&text, "degenerate.toml") else {
+                return Ok(());
+            };
+            to_worker.send((ac, de_deg.to_radians())).unwrap();
+            let Ok(answer) = answers.recv_timeout(std::time::Duration::from_secs(60)) else {
+                return Err(TestCaseError::fail(format!(
+                    "analyze hangs (60 s) on\n{text}\ndelta_e {de_deg} deg"
+                )));
+            };
+            let (mut ok, mut refused) = counts.get();
+            match answer {
+                Ok(a) => {
+                    ok += 1;
+                    prop_assert!(finite_analysis(&a), "{text}\ndelta_e {de_deg} deg: {a:?}");
+                }
+                Err(msg) => {
+                    refused += 1;
+                    prop_assert!(
+                        names_a_key_or_value(&msg) || msg.contains("P0") || msg.contains("det "),
+                        "{msg}"
+                    );
+                }
+            }
+            counts.set((ok, refused));
+            Ok(())
+        })
+        .unwrap();
+    let (ok, refused) = counts.get();
+    assert_eq!(ok + refused, cases as usize, "every degenerate file parses");
+    println!("analyze: {cases} degenerate aircraft ({ok} analysed, {refused} refused)");
 }

@@ -311,12 +311,10 @@ impl AtTrim<'_> {
         l1.is_finite().then_some(l1)
     }
 
-    /// Whether the trim is asymptotically stable (every eigenvalue of J5 in the left half-plane).
-    pub fn stable(&self, trim: &[f64; 5]) -> bool {
-        self.j5(trim)
-            .complex_eigenvalues()
-            .iter()
-            .all(|l| l.re < 0.0)
+    /// Whether the trim is asymptotically stable (every eigenvalue of J5 in the left half-plane);
+    /// `None` when J5's eigenvalues cannot be computed ([`crate::spectrum::eigenvalues`]).
+    pub fn stable(&self, trim: &[f64; 5]) -> Option<bool> {
+        crate::spectrum::stable(&self.j5(trim))
     }
 }
 
@@ -524,7 +522,8 @@ pub(crate) fn fold_window(fold: &JumpPoint) -> (f64, f64) {
 
 /// Every stable equilibrium at the aileron of the fold `fold` other than the fold itself: of the
 /// real roots `roots` of the trim condition at that aileron ([`landing_roots`]), those outside
-/// [`fold_window`] with finite trims and all eigenvalues of J5 in the left half-plane.
+/// [`fold_window`] with finite trims and all eigenvalues of J5 in the left half-plane (a trim
+/// whose eigenvalues cannot be computed is not offered as a landing).
 pub(crate) fn landings(
     at: &AtTrim<'_>,
     trims: &[InAileron],
@@ -541,7 +540,7 @@ pub(crate) fn landings(
             let [alpha, beta, q, r] =
                 std::array::from_fn(|i| trims[i + 1].eval(p0, fold.delta_a_rad) / dv);
             let t = [alpha, beta, p0, q, r];
-            (t.iter().all(|v| v.is_finite()) && at.stable(&t)).then_some(Landing {
+            (t.iter().all(|v| v.is_finite()) && at.stable(&t) == Some(true)).then_some(Landing {
                 p0,
                 alpha,
                 beta,
@@ -557,7 +556,8 @@ pub(crate) fn landings(
 /// With delta_r = 0 the model is symmetric under `(P0, beta, r, delta_a) -> -(...)`, so the other
 /// aileron direction meets the mirror point (-P0, -delta_a) with the same kind, omega and l1
 /// (the symmetry maps J5 to a similar matrix). `None` when the wings-level trim is itself
-/// unstable, or the branch diverges or runs off the aileron range first.
+/// unstable (or its stability cannot be computed), or the branch diverges or runs off the
+/// aileron range first.
 pub(crate) fn first_departure(
     h: &AtTrim<'_>,
     g: &InAileron,
@@ -575,7 +575,7 @@ pub(crate) fn first_departure(
         trims[3].eval(0.0, 0.0) / dv,
         trims[4].eval(0.0, 0.0) / dv,
     ];
-    if !h.stable(&origin) {
+    if h.stable(&origin) != Some(true) {
         return None;
     }
     let hits: Vec<(f64, f64)> = jump

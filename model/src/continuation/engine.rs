@@ -164,16 +164,6 @@ fn bialternate(eig: &[Complex<f64>; 5]) -> f64 {
     prod.re
 }
 
-/// Eigenvalues of a 5x5 matrix, `None` if the QR iteration does not converge.
-pub(crate) fn eigenvalues(m: &Matrix5<f64>) -> Option<[Complex<f64>; 5]> {
-    if !m.iter().all(|v| v.is_finite()) {
-        return None;
-    }
-    let schur = nalgebra::linalg::Schur::try_new(*m, f64::EPSILON, 2000)?;
-    let e = schur.complex_eigenvalues();
-    Some(std::array::from_fn(|i| e[i]))
-}
-
 /// A unit vector spanning the kernel of the 5x6 matrix `[jy, fmu]` when it has rank 5 (the
 /// generalized cross product of its rows: signed 5x5 minors).
 pub(crate) fn kernel(e: &Eval) -> Option<V6> {
@@ -232,7 +222,7 @@ impl<S: System> Engine<'_, S> {
             return None;
         }
         let (eig, stable, hopf) = if self.sys.dynamic() {
-            let eig = eigenvalues(&e.jy)?;
+            let eig = crate::spectrum::eigenvalues(&e.jy)?;
             (eig, eig.iter().all(|l| l.re < 0.0), bialternate(&eig))
         } else {
             ([Complex::new(0.0, 0.0); 5], false, 0.0)
@@ -522,7 +512,7 @@ impl<S: System> Engine<'_, S> {
             .normalize();
         let e = self.sys.eval(&z)?;
         let eig = if self.sys.dynamic() {
-            eigenvalues(&e.jy)?
+            crate::spectrum::eigenvalues(&e.jy)?
         } else {
             [Complex::new(0.0, 0.0); 5]
         };

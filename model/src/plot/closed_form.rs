@@ -47,22 +47,35 @@ use nalgebra::Matrix5;
 /// Samples of the P0 sweep of a diagram.
 const SAMPLES: usize = 3001;
 
-/// Unstable eigenvalue counts: (real, complex), and whether all eigenvalues are stable.
+/// Unstable eigenvalue counts: (real, complex), and whether all eigenvalues are stable; or
+/// undecided, when J5's eigenvalues cannot be computed (drawn as not stable, never a Hopf
+/// point's end).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct Spectrum {
     real_unstable: usize,
     complex_unstable: usize,
+    decided: bool,
 }
 
 impl Spectrum {
+    const UNDECIDED: Spectrum = Spectrum {
+        real_unstable: 0,
+        complex_unstable: 0,
+        decided: false,
+    };
+
     fn of(model: &PssModel, e: &Equilibrium) -> Spectrum {
         let j = model.jacobian(&e.x, &e.controls);
         let m = Matrix5::from_fn(|i, k| j[i][k]);
         let mut s = Spectrum {
             real_unstable: 0,
             complex_unstable: 0,
+            decided: true,
         };
-        for ev in m.complex_eigenvalues().iter() {
+        let Some(eigenvalues) = crate::spectrum::eigenvalues(&m) else {
+            return Spectrum::UNDECIDED;
+        };
+        for ev in eigenvalues.iter() {
             if ev.re >= 0.0 {
                 if ev.im.abs() > 1e-9 * (1.0 + ev.re.abs()) {
                     s.complex_unstable += 1;
@@ -75,7 +88,7 @@ impl Spectrum {
     }
 
     fn stable(self) -> bool {
-        self.real_unstable + self.complex_unstable == 0
+        self.decided && self.real_unstable + self.complex_unstable == 0
     }
 }
 
@@ -235,7 +248,10 @@ fn trim_num(v: f64) -> String {
 /// while the real ones stay; located by bisection on the counts.
 fn hopf_between(trims: &Trims, a: f64, sa: Spectrum, b: f64, sb: Spectrum) -> Option<SpecialPoint> {
     let total = |s: Spectrum| s.real_unstable + s.complex_unstable;
-    if sa.real_unstable != sb.real_unstable || total(sa).abs_diff(total(sb)) != 2 {
+    if !(sa.decided && sb.decided)
+        || sa.real_unstable != sb.real_unstable
+        || total(sa).abs_diff(total(sb)) != 2
+    {
         return None;
     }
     let (mut lo, mut hi) = (a, b);

@@ -263,3 +263,53 @@ fn bad_clear_flags_exit_2_saying_what_is_expected() {
     assert!(String::from_utf8_lossy(&out.stdout).contains("Minimum over the box"));
     std::fs::remove_file(&file).unwrap();
 }
+
+/// `model clear FILE --json` prints the same bytes alone and with seven copies running beside
+/// it (on a 2-core machine each copy gets a quarter of a core): every budget of the proof is a
+/// budget of work, and the wall-clock time is not in the JSON. The default run proves
+/// `aircraft/a_uncertain.toml`; the full-size run (`ROLL_FULL_SIZE=1`) also
+/// `aircraft/fighter_uncertain.toml`, whose worst-case search alone outlasts a wall-clock
+/// budget of 50 s under that load.
+#[test]
+fn clear_json_is_the_same_bytes_alone_and_beside_seven_copies() {
+    let full = std::env::var("ROLL_FULL_SIZE").is_ok_and(|v| v == "1");
+    let files: &[&str] = if full {
+        &["a_uncertain.toml", "fighter_uncertain.toml"]
+    } else {
+        &["a_uncertain.toml"]
+    };
+    for file in files {
+        let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join("../aircraft")
+            .join(file);
+        let run = || {
+            std::process::Command::new(env!("CARGO_BIN_EXE_model"))
+                .args(["clear", path.to_str().unwrap(), "--json"])
+                .stdout(std::process::Stdio::piped())
+                .stderr(std::process::Stdio::piped())
+                .spawn()
+                .unwrap()
+        };
+        let alone = run().wait_with_output().unwrap();
+        assert!(
+            alone.status.success(),
+            "{}",
+            String::from_utf8_lossy(&alone.stderr)
+        );
+        let copies: Vec<_> = (0..8).map(|_| run()).collect();
+        for (i, copy) in copies.into_iter().enumerate() {
+            let out = copy.wait_with_output().unwrap();
+            assert!(
+                out.status.success(),
+                "{}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            assert!(
+                out.stdout == alone.stdout,
+                "{file}: copy {i} of 8 differs from the run alone:\n{}\n---\n{}",
+                String::from_utf8_lossy(&out.stdout),
+                String::from_utf8_lossy(&alone.stdout)
+            );
+        }
+    }
+}

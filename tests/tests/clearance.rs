@@ -27,7 +27,6 @@ fn check_box(a: &Aircraft, samples: usize, seed: u64) {
         tolerance_p0: 1e-2,
         tolerance_deg: 0.1,
         max_boxes: 200,
-        time_budget_s: 20.0,
         candidates: 4,
         seed,
         ..Settings::default()

@@ -53,10 +53,14 @@ pub struct Settings {
     pub tolerance_p0: f64,
     /// Tolerance on the aileron gap, deg.
     pub tolerance_deg: f64,
-    /// Wall-clock budget of the branch and bound, s.
-    pub time_budget_s: f64,
+    /// An outer guard on the wall-clock time of the branch and bound, s: not a budget (the
+    /// budgets are of work, so that the same input gives the same answer on any machine under
+    /// any load); a run it stops says so in its note, as an answer that depends on the machine.
+    pub wall_clock_guard_s: f64,
     /// Most boxes the branch and bound may hold.
     pub max_boxes: usize,
+    /// Most slabs the branch and bound may certify.
+    pub max_slabs: usize,
     /// Seed of the random candidates for the worst case.
     pub seed: u64,
     /// Random candidates tried for the worst case (exact analyses).
@@ -75,8 +79,9 @@ impl Default for Settings {
             delta_e_rad: 2f64.to_radians(),
             tolerance_p0: 1e-3,
             tolerance_deg: 0.01,
-            time_budget_s: 50.0,
+            wall_clock_guard_s: 600.0,
             max_boxes: 20_000,
+            max_slabs: 500_000,
             seed: 1,
             candidates: 64,
             candidates_at: Vec::new(),
@@ -148,7 +153,9 @@ pub struct Clearance {
     pub boxes: usize,
     /// Slabs tried.
     pub slabs: usize,
-    /// Wall-clock time of the proof, s.
+    /// Wall-clock time of the proof, s: in the text output only, so that the JSON of one input
+    /// is the same bytes on every machine and run.
+    #[serde(skip)]
     pub seconds: f64,
 }
 
@@ -1032,16 +1039,21 @@ pub fn clear(
             };
             break;
         }
-        if start.elapsed().as_secs_f64() > settings.time_budget_s {
-            note = format!(
-                "stopped at the time budget of {} s with {} boxes",
-                settings.time_budget_s,
-                leaves.len()
-            );
-            break;
-        }
         if leaves.len() >= settings.max_boxes {
             note = format!("stopped at the budget of {} boxes", settings.max_boxes);
+            break;
+        }
+        if slabs >= settings.max_slabs {
+            note = format!("stopped at the budget of {} slabs", settings.max_slabs);
+            break;
+        }
+        if start.elapsed().as_secs_f64() > settings.wall_clock_guard_s {
+            note = format!(
+                "stopped by the wall-clock guard of {} s with {} boxes and {slabs} slabs, not \
+                 by a budget of work: this answer depends on the machine's speed and load",
+                settings.wall_clock_guard_s,
+                leaves.len()
+            );
             break;
         }
         // Work on the leaves that limit the larger relative gap: the lowest few still short
@@ -1325,5 +1337,36 @@ pub(crate) mod tests {
         assert!(one.boxes > 1, "the box is split: {one:?}");
         assert_eq!(run(2), one);
         assert_eq!(run(3), one);
+    }
+
+    /// A budget of work stops the proof at the same place on every run, and says which budget
+    /// it was; the wall-clock guard, when it stops a proof, says that the answer depends on
+    /// the machine.
+    #[test]
+    fn the_budgets_are_of_work_and_the_wall_clock_guard_says_so() {
+        let a = a_uncertain();
+        let run = |settings: &Settings| {
+            let mut c = clear(&a, settings, &mut |_| {}).expect("a proof");
+            c.seconds = 0.0;
+            c
+        };
+        let few_slabs = Settings {
+            max_slabs: 3,
+            ..Settings::default()
+        };
+        let stopped = run(&few_slabs);
+        assert!(!stopped.critical_p0.converged, "{stopped:?}");
+        assert_eq!(stopped.note, "stopped at the budget of 3 slabs");
+        assert!(stopped.slabs >= 3 && stopped.slabs < 3 + 64, "{stopped:?}");
+        assert_eq!(run(&few_slabs), stopped);
+        let guarded = run(&Settings {
+            wall_clock_guard_s: 0.0,
+            ..Settings::default()
+        });
+        assert!(
+            guarded.note.contains("wall-clock guard") && guarded.note.contains("depends on"),
+            "{}",
+            guarded.note
+        );
     }
 }

@@ -125,6 +125,11 @@ pub struct ZeroSideslip {
     pub departure: Vec<DeparturePoint>,
     /// Hopf roll rates of the zero-sideslip trims (omega^2 > 0), rad/s, ascending.
     pub hopf_roll_rates: Vec<f64>,
+    /// Why the section is withheld (its numbers are not finite in f64, or two of its roots
+    /// cannot be told apart there; both lists are then empty), `None` when it is answered. A
+    /// secondary input such as a tiny elevator deflection can do that to this section alone,
+    /// and the rest of the analysis stands.
+    pub withheld: Option<String>,
 }
 
 /// Everything `model analyze` reports (angles in rad, rates in rad/s, lists ascending in P0).
@@ -263,6 +268,7 @@ pub fn analyze_with(
         };
         found.add_departures(&mut analysis, critical, &input, (aircraft, delta_e_rad));
     }
+    withhold_zero_sideslip(&mut analysis);
     check(&analysis)?;
     Ok(analysis)
 }
@@ -419,6 +425,7 @@ impl Found {
             zero_sideslip: ZeroSideslip {
                 departure,
                 hopf_roll_rates: Vec::new(),
+                withheld: None,
             },
             hopf: Vec::new(),
             first_departure: None,
@@ -461,8 +468,59 @@ impl Found {
     }
 }
 
+/// Empties the zero-sideslip section and says why when it fails its checks (every number
+/// finite, no two distinct roots the same in f64), so that the rest of the analysis is
+/// reported.
+pub(crate) fn withhold_zero_sideslip(a: &mut Analysis) {
+    if let Err(e) = check_zero_sideslip(&a.zero_sideslip) {
+        a.zero_sideslip = ZeroSideslip {
+            departure: Vec::new(),
+            hopf_roll_rates: Vec::new(),
+            withheld: Some(e.to_string()),
+        };
+    }
+}
+
+/// The checks of the zero-sideslip section (see [`check`]).
+fn check_zero_sideslip(z: &ZeroSideslip) -> Result<(), AnalysisError> {
+    let departures: Vec<f64> = z.departure.iter().map(|d| d.p0).collect();
+    if let Some(w) = departures.windows(2).find(|w| w[0] == w[1]) {
+        return Err(AnalysisError::Indistinct {
+            what: "two zero-sideslip departure roots".to_string(),
+            p0: w[0],
+            ulp: f64::from_bits(w[0].to_bits() + 1) - w[0],
+        });
+    }
+    for (i, d) in z.departure.iter().enumerate() {
+        let v = [
+            d.p0,
+            d.delta_a_rad,
+            d.delta_a_deg,
+            d.alpha,
+            d.q,
+            d.r,
+            d.delta_r_rad,
+            d.delta_r_deg,
+        ];
+        if !v.iter().all(|x| x.is_finite()) {
+            return Err(AnalysisError::NotFinite(format!(
+                "the trim of zero-sideslip departure {} (P0 = {:e} rad/s)",
+                i + 1,
+                d.p0
+            )));
+        }
+    }
+    if !z.hopf_roll_rates.iter().all(|x| x.is_finite()) {
+        return Err(AnalysisError::NotFinite(
+            "a zero-sideslip Hopf roll rate".into(),
+        ));
+    }
+    Ok(())
+}
+
 /// The checks every answer passes before it is reported: every number finite, and no two
 /// distinct exact roots (of one list, or a jump root and a pole) that look the same in f64.
+/// The zero-sideslip section has its own ([`withhold_zero_sideslip`]).
 fn check(a: &Analysis) -> Result<(), AnalysisError> {
     // The message is written only when a number is not finite (this runs on every answer).
     let finite = |what: &dyn Fn() -> String, v: &[f64]| {
@@ -474,7 +532,6 @@ fn check(a: &Analysis) -> Result<(), AnalysisError> {
     };
     let jumps: Vec<f64> = a.jump.iter().map(|j| j.p0).collect();
     let poles: Vec<f64> = a.det_k_poles.iter().map(|j| j.p0).collect();
-    let departures: Vec<f64> = a.zero_sideslip.departure.iter().map(|d| d.p0).collect();
     let same = |what: &str, x: f64| AnalysisError::Indistinct {
         what: what.to_string(),
         p0: x,
@@ -484,7 +541,6 @@ fn check(a: &Analysis) -> Result<(), AnalysisError> {
         ("two divergence roll rates", &a.divergence_roll_rates),
         ("two poles of det K", &poles),
         ("two jump roots", &jumps),
-        ("two zero-sideslip departure roots", &departures),
     ] {
         if let Some(w) = v.windows(2).find(|w| w[0] == w[1]) {
             return Err(same(what, w[0]));
@@ -505,28 +561,6 @@ fn check(a: &Analysis) -> Result<(), AnalysisError> {
         )?;
     }
     departure::check_finite(a).map_err(AnalysisError::NotFinite)?;
-    for (i, d) in a.zero_sideslip.departure.iter().enumerate() {
-        let v = [
-            d.p0,
-            d.delta_a_rad,
-            d.delta_a_deg,
-            d.alpha,
-            d.q,
-            d.r,
-            d.delta_r_rad,
-            d.delta_r_deg,
-        ];
-        finite(
-            &|| {
-                format!(
-                    "the trim of zero-sideslip departure {} (P0 = {:e} rad/s)",
-                    i + 1,
-                    d.p0
-                )
-            },
-            &v,
-        )?;
-    }
     Ok(())
 }
 

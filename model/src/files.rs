@@ -4,8 +4,9 @@
 //! the next run.
 //!
 //! Temporary files are named `.NAME.tmp-PID-N[.EXT]` next to their target `NAME` (PID: the
-//! writing process). A run that writes `NAME` first removes every such file of a process that
-//! no longer exists.
+//! writing process). A run that writes into a folder first removes every such file there of a
+//! process that no longer exists, whatever its target: a killed `report` leaves megabytes of
+//! figure temporaries that the next `simulate --csv` into that folder removes.
 //!
 //! ```
 //! use model::files::write_atomic;
@@ -77,12 +78,12 @@ pub fn create_dir_all(dir: &Path) -> std::io::Result<()> {
 /// Writes `contents` to `path` through a temporary file in the same directory and a rename,
 /// creating the directory if needed; an existing file keeps its permissions. On any error the
 /// temporary file is removed and `path` keeps its previous contents (or stays absent).
-/// Temporary files that killed runs left for `path` are removed first.
+/// Temporary files that killed runs left in `path`'s folder are removed first.
 pub fn write_atomic(path: &Path, contents: &[u8]) -> std::io::Result<()> {
     if let Some(dir) = parent(path) {
         create_dir_all(dir)?;
     }
-    remove_stale_temporaries(path);
+    remove_stale_temporaries_in(parent(path).unwrap_or(Path::new(".")));
     let tmp = temp_path(path, "");
     let result = stage(&tmp, path, contents).and_then(|()| std::fs::rename(&tmp, path));
     if result.is_err() {
@@ -278,7 +279,7 @@ mod tests {
     }
 
     #[test]
-    fn temporaries_of_dead_processes_are_removed_by_the_next_write() {
+    fn temporaries_of_dead_processes_are_removed_by_the_next_write_into_their_folder() {
         let dir = temp_dir("stale");
         let path = dir.join("out.csv");
         // PID 0 and PIDs above the kernel's limit (2^22) belong to no process.
@@ -286,19 +287,18 @@ mod tests {
         for d in dead {
             std::fs::write(dir.join(d), b"partial").unwrap();
         }
-        // One of a live process (this one) and one of another file are kept.
+        // One of another file (a killed report's figure) goes too; one of a live process
+        // (this one) is kept.
         let live = format!(".out.csv.tmp-{}-99", std::process::id());
         std::fs::write(dir.join(&live), b"in progress").unwrap();
-        std::fs::write(dir.join(".other.csv.tmp-4194305"), b"x").unwrap();
+        std::fs::write(dir.join(".fig01.png.tmp-4194305-1.png"), b"x").unwrap();
         write_atomic(&path, b"data").unwrap();
-        let mut expected = vec![
-            ".other.csv.tmp-4194305".to_string(),
-            live.clone(),
-            "out.csv".into(),
-        ];
-        expected.sort();
-        assert_eq!(names(&dir), expected);
-        // A folder sweep removes the dead ones of every file, and keeps the live one.
+        assert_eq!(names(&dir), [live.clone(), "out.csv".to_string()]);
+        assert_eq!(remove_stale_temporaries_in(&dir), 0);
+        // The sweep of one target's temporaries keeps those of other files.
+        std::fs::write(dir.join(".other.csv.tmp-4194305"), b"x").unwrap();
+        std::fs::write(dir.join(".out.csv.tmp-4194305"), b"x").unwrap();
+        assert_eq!(remove_stale_temporaries(&path), 1);
         assert_eq!(remove_stale_temporaries_in(&dir), 1);
         assert_eq!(names(&dir), [live, "out.csv".to_string()]);
         std::fs::remove_dir_all(&dir).unwrap();

@@ -841,7 +841,9 @@ fn table(a: &Analysis) -> String {
     }
     s += &hopf_table(a);
     s += "\nZero-sideslip departure, det K = 0 at beta = 0 (section V):\n";
-    if a.zero_sideslip.departure.is_empty() {
+    if let Some(why) = &a.zero_sideslip.withheld {
+        s += &format!("  withheld: {why}\n");
+    } else if a.zero_sideslip.departure.is_empty() {
         s += "  none\n";
     } else {
         s += "     P0 rad/s   delta_a deg   delta_r deg   alpha deg     q rad/s     r rad/s\n";

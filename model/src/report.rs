@@ -780,6 +780,9 @@ fn markdown(s: &Summary, de: f64) -> String {
     for d in &a.zero_sideslip.departure {
         m += &md_row(&departure_cells(d));
     }
+    if let Some(why) = &a.zero_sideslip.withheld {
+        m += &format!("\nWithheld: {why}\n");
+    }
     for (title, rows) in [
         (
             "Special points of the continuation (p >= 0)",

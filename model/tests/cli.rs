@@ -884,3 +884,53 @@ fn aircraft_without_yaw_stiffness_damping_and_side_force_end_every_command() {
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }
+
+/// A tiny elevator deflection makes two zero-sideslip departure roots round to the same f64:
+/// that section alone is withheld, with the reason, and the main answer is printed (text and
+/// JSON, exit 0).
+#[test]
+fn a_tiny_elevator_withholds_the_zero_sideslip_section_only() {
+    let out = model(&["analyze", "A", "--delta-e-deg", "1e-300"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    // At delta_e = 0 aircraft A's primary branch has no fold: that is the main answer.
+    assert!(
+        text.contains("No critical jump: the primary branch reaches |delta_a| = 90.0 deg"),
+        "{text}"
+    );
+    assert!(
+        text.contains("  withheld: two zero-sideslip departure roots"),
+        "{text}"
+    );
+    let v = json(&model(&[
+        "analyze",
+        "A",
+        "--delta-e-deg",
+        "1e-300",
+        "--json",
+    ]));
+    assert!(v["critical"].is_null(), "{v}");
+    assert!(
+        v["critical_note"]
+            .as_str()
+            .unwrap()
+            .contains("without a jump"),
+        "{v}"
+    );
+    let zs = &v["zero_sideslip"];
+    assert!(
+        zs["withheld"]
+            .as_str()
+            .unwrap()
+            .contains("cannot be told apart"),
+        "{zs}"
+    );
+    assert_eq!(zs["departure"], serde_json::json!([]));
+    // An ordinary elevator answers the section.
+    let v = json(&model(&["analyze", "A", "--json"]));
+    assert!(v["zero_sideslip"]["withheld"].is_null());
+    assert!(!v["zero_sideslip"]["departure"]
+        .as_array()
+        .unwrap()
+        .is_empty());
+}

@@ -169,12 +169,13 @@ fn finite_aircraft(ac: &Aircraft) -> bool {
 fn finite_analysis(a: &Analysis) -> bool {
     // Null is a number that did not make it (NaN or inf in serde_json), except where it means
     // "none": no critical jump (and then no note's absence), no limit given, no loss of
-    // stability on the primary branch.
-    const MAY_BE_NULL: [&str; 4] = [
+    // stability on the primary branch, a zero-sideslip section not withheld.
+    const MAY_BE_NULL: [&str; 5] = [
         "critical",
         "critical_note",
         "within_limits",
         "first_departure",
+        "withheld",
     ];
     fn walk(v: &serde_json::Value) -> bool {
         match v {

@@ -651,13 +651,5 @@ pub(super) fn check_finite(a: &super::Analysis) -> Result<(), String> {
             }
         }
     }
-    if !a
-        .zero_sideslip
-        .hopf_roll_rates
-        .iter()
-        .all(|x| x.is_finite())
-    {
-        return Err("a zero-sideslip Hopf roll rate".into());
-    }
     Ok(())
 }

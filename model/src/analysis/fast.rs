@@ -20,8 +20,8 @@
 
 use super::departure::fold_window;
 use super::{
-    analyze_with, check, parametric, Analysis, AnalysisError, AtTrim, Departures, Found, InAileron,
-    JumpPoint, LocalPolys,
+    analyze_with, check, parametric, withhold_zero_sideslip, Analysis, AnalysisError, AtTrim,
+    Departures, Found, InAileron, JumpPoint, LocalPolys,
 };
 use crate::aircraft::Aircraft;
 use crate::algebra::{PolyF64, Sym, MAX_SYMS};
@@ -86,12 +86,16 @@ pub fn analyze_routed_with(
         return Err(AnalysisError::DeltaE(delta_e_rad));
     }
     let why = match certified(aircraft, delta_e_rad, departures) {
-        Ok((a, width)) => match check(&a) {
-            Ok(()) => return Ok((a, Route::Certified(width))),
-            // Values the checks refuse (not finite, indistinct in f64) are the exact path's
-            // to refuse, with its own message.
-            Err(_) => Uncertified::Sign,
-        },
+        Ok((mut a, width)) => {
+            withhold_zero_sideslip(&mut a);
+            match check(&a) {
+                // A withheld section, and values the checks refuse (not finite, indistinct in
+                // f64), are the exact path's to withhold or refuse, with its own message.
+                Ok(()) if a.zero_sideslip.withheld.is_some() => Uncertified::Sign,
+                Ok(()) => return Ok((a, Route::Certified(width))),
+                Err(_) => Uncertified::Sign,
+            }
+        }
         Err(why) => why,
     };
     analyze_with(aircraft, delta_e_rad, departures).map(|a| (a, Route::Exact(why)))

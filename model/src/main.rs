@@ -487,7 +487,11 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
             }
             let bar = progress_bar("clear");
             let mut runs = Vec::new();
+            let started = std::time::Instant::now();
             for (k, de) in settings.iter().enumerate() {
+                if k == 1 {
+                    say_how_long(settings.len(), started.elapsed().as_secs_f64());
+                }
                 let s = model::clearance::Settings {
                     delta_e_rad: *de,
                     tolerance_p0: tolerance,
@@ -638,6 +642,24 @@ fn elevator(deg: f64) -> Result<f64, Failure> {
              (delta_e)"
         )))
     }
+}
+
+/// Tells on stderr, once the first of `n` elevator settings took `first_s` seconds, how long
+/// the others will take at that pace (each proof is bounded by its budgets of work, so a map
+/// of many settings can take minutes).
+fn say_how_long(n: usize, first_s: f64) {
+    let rest = first_s * (n - 1) as f64;
+    let _ = writeln!(
+        std::io::stderr(),
+        "clear: {n} elevator settings; the first took {first_s:.1} s, so the other {} will \
+         take about {} at that pace",
+        n - 1,
+        if rest < 120.0 {
+            format!("{rest:.0} s")
+        } else {
+            format!("{:.1} min", rest / 60.0)
+        }
+    );
 }
 
 /// `A:B:STEP` in degrees as the list of elevator deflections in rad.

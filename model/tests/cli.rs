@@ -235,7 +235,8 @@ fn report_writes_every_figure_and_a_summary() {
             "{stem}.png"
         );
         let svg = std::fs::read_to_string(dir.join(format!("{stem}.svg"))).unwrap();
-        assert!(svg.contains("<svg"), "{stem}.svg");
+        let doc = roxmltree::Document::parse(&svg).unwrap_or_else(|e| panic!("{stem}.svg: {e}"));
+        assert_eq!(doc.root_element().tag_name().name(), "svg", "{stem}.svg");
     }
     let md = std::fs::read_to_string(dir.join("summary.md")).unwrap();
     // B's first jump (Fig. 8) and its Hopf points (Fig. 2) are in the report.
@@ -933,4 +934,30 @@ fn a_tiny_elevator_withholds_the_zero_sideslip_section_only() {
         .as_array()
         .unwrap()
         .is_empty());
+}
+
+/// A clearance map over several elevator settings says on stderr, once the first is proven,
+/// how long the others will take at that pace; the result on stdout is unchanged.
+#[test]
+fn a_clearance_map_says_how_long_it_will_take() {
+    let file = repo("aircraft/a_uncertain.toml");
+    let args = [
+        "clear",
+        &file,
+        "--delta-e-range",
+        "0:2:1",
+        "--samples",
+        "10",
+        "--json",
+    ];
+    let out = model(&args);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(
+        err.starts_with("clear: 3 elevator settings; the first took ")
+            && err.contains(" s, so the other 2 will take about "),
+        "{err}"
+    );
+    let runs = json(&out);
+    assert_eq!(runs.as_array().map(Vec::len), Some(3), "{runs}");
 }

@@ -9,7 +9,7 @@
 //! * Zero sideslip (Fig. 10): with the rudder on the schedule, the sideslip stays small for small
 //!   aileron and builds up to tens of degrees beyond a threshold just inside the transcritical
 //!   point of the criterion (-8.164 deg for A).
-//! * Figures: files exist, are well-formed SVG (root `<svg>` of the requested size) and PNG
+//! * Figures: files exist, are SVG an XML parser reads (root `<svg>` of the requested size) and PNG
 //!   (signature, IHDR of the requested size, > 10 kB), are byte-identical between runs, and the
 //!   plotted series are the library's numbers.
 
@@ -338,47 +338,14 @@ fn out_dir(name: &str) -> PathBuf {
     d
 }
 
-/// Minimal XML well-formedness: balanced tags, one root element `<svg>`; returns the root's
-/// opening tag.
-fn check_xml(text: &str) -> String {
-    let mut stack: Vec<String> = Vec::new();
-    let mut root = None;
-    let mut rest = text;
-    while let Some(i) = rest.find('<') {
-        rest = &rest[i..];
-        let end = rest.find('>').expect("unterminated tag");
-        let tag = &rest[1..end];
-        rest = &rest[end + 1..];
-        if tag.starts_with('?') || tag.starts_with('!') {
-            continue;
-        }
-        if let Some(name) = tag.strip_prefix('/') {
-            assert_eq!(
-                stack.pop().as_deref(),
-                Some(name.trim()),
-                "mismatched </{name}>"
-            );
-            continue;
-        }
-        let name = tag
-            .split_whitespace()
-            .next()
-            .unwrap_or("")
-            .trim_end_matches('/')
-            .to_string();
-        assert!(!name.is_empty(), "empty tag");
-        if stack.is_empty() {
-            assert!(root.is_none(), "second root element <{name}>");
-            root = Some(tag.to_string());
-        }
-        if !tag.ends_with('/') {
-            stack.push(name);
-        }
-    }
-    assert!(stack.is_empty(), "unclosed elements {stack:?}");
-    let root = root.expect("a root element");
-    assert!(root.starts_with("svg "), "root is <{root}>");
-    root
+/// The SVG parsed by an XML parser: well-formed, its root element `<svg>`; returns the root's
+/// width and height attributes.
+fn check_xml(text: &str) -> (String, String) {
+    let doc = roxmltree::Document::parse(text).unwrap_or_else(|e| panic!("not XML: {e}"));
+    let root = doc.root_element();
+    assert_eq!(root.tag_name().name(), "svg");
+    let attribute = |k: &str| root.attribute(k).expect("width and height").to_string();
+    (attribute("width"), attribute("height"))
 }
 
 fn check_files(files: &[PathBuf], style: &PlotStyle) {
@@ -390,15 +357,8 @@ fn check_files(files: &[PathBuf], style: &PlotStyle) {
     assert!(csv.lines().count() > 10);
     let svg = std::fs::read_to_string(&files[0]).unwrap();
     assert!(files[0].extension().unwrap() == "svg");
-    let root = check_xml(&svg);
-    assert!(
-        root.contains(&format!("width=\"{}\"", style.width)),
-        "{root}"
-    );
-    assert!(
-        root.contains(&format!("height=\"{}\"", style.height)),
-        "{root}"
-    );
+    let size = check_xml(&svg);
+    assert_eq!(size, (style.width.to_string(), style.height.to_string()));
     assert!(svg.contains("font-family=\"DejaVu Sans, sans-serif\""));
     let png = std::fs::read(&files[1]).unwrap();
     assert!(files[1].extension().unwrap() == "png");
@@ -488,7 +448,7 @@ fn every_figure_is_written_as_valid_svg_and_png_and_is_deterministic() {
     let r = plot::det_k(&dir.join("small"), &det_k, &small).unwrap();
     assert_eq!(r.files.len(), 2, "the SVG and the CSV of its data");
     let svg = std::fs::read_to_string(&r.files[0]).unwrap();
-    assert!(check_xml(&svg).contains("width=\"640\""));
+    assert_eq!(check_xml(&svg).0, "640");
     assert!(svg.contains(
         "@font-face{font-family:\"DejaVu Sans Embedded\";src:url(data:font/ttf;base64,AAEAAA"
     ));

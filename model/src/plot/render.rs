@@ -9,6 +9,10 @@
 use super::axis::{label, Coord};
 use super::spec::{Dash, Figure, LegendPlace, Line, Marker, Panel, Rgb, Shape, TextAt};
 use super::{PlotError, PlotStyle};
+// Titles carry the aircraft's name, whose control characters XML forbids in an SVG even as
+// character references (plotters escapes `<`, `&` and quotes, not those): they are drawn
+// escaped, as the terminal shows them.
+use crate::aircraft::shown;
 use plotters::coord::{CoordTranslate, Shift};
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
@@ -254,7 +258,10 @@ where
     let (_, h) = root.dim_in_pixel();
     let sz = Sizes::for_height(h);
     let body = root
-        .titled(&fig.title, (FAMILY, sz.title).into_font().color(&BLACK))
+        .titled(
+            &shown(&fig.title),
+            (FAMILY, sz.title).into_font().color(&BLACK),
+        )
         .map_err(draw_err)?;
     let (bw, bh) = body.dim_in_pixel();
     let (main, note) = if fig.note.is_empty() {
@@ -320,7 +327,7 @@ where
 {
     let mut builder = ChartBuilder::on(area);
     if !panel.title.is_empty() {
-        builder.caption(&panel.title, (FAMILY, sz.caption).into_font());
+        builder.caption(shown(&panel.title), (FAMILY, sz.caption).into_font());
     }
     let mut chart = builder
         .margin(8)
@@ -556,6 +563,29 @@ mod tests {
         let stem = dir.join("fig07_det_k");
         let r = crate::plot::det_k(&stem, &data, &PlotStyle::default()).unwrap();
         (stem, r)
+    }
+
+    /// Whatever the title (an aircraft's name with markup, quotes, a bell and an escape), the
+    /// SVG is well-formed XML and shows the title as the terminal does.
+    #[test]
+    fn an_svg_is_xml_whatever_its_title() {
+        let dir = std::env::temp_dir().join(format!("render-xml-{}", std::process::id()));
+        let (_, r) = det_k_of_a(&dir);
+        let mut fig = r.figure.clone();
+        fig.title = "A <b> & \"q\" 'r' \u{7}\u{1b}[31m \u{3b4}".to_string();
+        let stem = dir.join("named");
+        render(&stem, &fig, &PlotStyle::default()).unwrap();
+        let svg = std::fs::read_to_string(with_ext(&stem, "svg")).unwrap();
+        let doc = roxmltree::Document::parse(&svg).unwrap_or_else(|e| panic!("not XML: {e}"));
+        assert_eq!(doc.root_element().tag_name().name(), "svg");
+        let texts: Vec<&str> = doc.descendants().filter_map(|n| n.text()).collect();
+        assert!(
+            texts
+                .iter()
+                .any(|t| t.contains("A <b> & \"q\" 'r' \\u{7}\\u{1b}[31m \u{3b4}")),
+            "{texts:?}"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

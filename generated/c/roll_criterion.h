@@ -29,8 +29,8 @@
 // branches, one return, nothing from the C library but sqrt and copysign (C99). A named
 // constant KN is a folded exact rational rounded once; its comment gives the exact value.
 // Results are bit-identical to the Rust crate when FLT_EVAL_METHOD == 0 and
-// floating-point contraction is off (gcc/clang: -ffp-contract=off); otherwise they
-// differ by rounding only.
+// floating-point contraction is off (gcc/clang: -ffp-contract=off), at any optimisation
+// level and -march (not with -ffast-math); otherwise they differ by rounding only.
 // Define ROLL_CRITERION_API before the include to choose the linkage of the functions
 // (default: static inline); the built-in aircraft data are static const objects.
 
@@ -42,6 +42,15 @@
 
 #ifndef ROLL_CRITERION_API
 #define ROLL_CRITERION_API static inline
+#endif
+
+// gcc's vectoriser fuses a multiply into an add/subtract pair (vfmaddsub, vfmsubadd on x86
+// with FMA) even under -ffp-contract=off, which would round differently from the Rust code:
+// gcc compiles the functions below without it, and so does not inline them into code
+// compiled with other options. Clang honours -ffp-contract=off in vectorised code too.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("no-tree-vectorize")
 #endif
 
 #ifdef __cplusplus
@@ -3787,6 +3796,10 @@ ROLL_CRITERION_API double rc_aircraft_b_hopf_polynomial(double p0, double delta_
 
 #ifdef __cplusplus
 }
+#endif
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
 #endif
 
 #endif // ROLL_CRITERION_H

@@ -3,7 +3,9 @@
 //! The functions are printed from the same [`super::program::Program`] as the Rust crate, so
 //! they perform the same IEEE operations in the same order; with `FLT_EVAL_METHOD == 0` (every
 //! SSE2 or AArch64 target) and no floating-point contraction (`-ffp-contract=off`) their results
-//! are bit-identical to Rust's. Nothing here knows a function, a struct or a parameter by name:
+//! are bit-identical to Rust's at every optimisation level. gcc's vectoriser fuses multiplies
+//! into add/subtract pairs whatever `-ffp-contract` says, so the header compiles its functions
+//! without it (`NO_VECTORISER`). Nothing here knows a function, a struct or a parameter by name:
 //! whatever [`super::functions::functions`], [`super::functions::structs`] and [`Param::ALL`]
 //! hold is printed.
 
@@ -20,6 +22,26 @@ pub const HEADER: &str = "roll_criterion.h";
 
 /// The linkage macro users may define before including the header.
 const API: &str = "ROLL_CRITERION_API";
+
+/// The header's functions are compiled by gcc without its vectoriser: gcc 12's SLP vectoriser
+/// turns a multiply feeding one lane of an add/subtract pair into a fused multiply-add-subtract
+/// (`vfmaddsub`, `vfmsubadd` on x86 with FMA, e.g. `-O3 -march=x86-64-v3`) even under
+/// `-ffp-contract=off`, which rounds once where the Rust code rounds twice. gcc does not inline
+/// a function with its own optimisation options into code compiled with others, so the caller's
+/// vectoriser does not see the arithmetic either. Clang keeps its vectorised code uncontracted
+/// under `-ffp-contract=off`, and does not know the pragma (`-Wunknown-pragmas`), so the
+/// condition names gcc proper (clang also defines `__GNUC__`).
+const NO_VECTORISER: (&str, &str) = (
+    "// gcc's vectoriser fuses a multiply into an add/subtract pair (vfmaddsub, vfmsubadd on x86\n\
+     // with FMA) even under -ffp-contract=off, which would round differently from the Rust code:\n\
+     // gcc compiles the functions below without it, and so does not inline them into code\n\
+     // compiled with other options. Clang honours -ffp-contract=off in vectorised code too.\n\
+     #if defined(__GNUC__) && !defined(__clang__)\n\
+     #pragma GCC push_options\n\
+     #pragma GCC optimize(\"no-tree-vectorize\")\n\
+     #endif\n",
+    "#if defined(__GNUC__) && !defined(__clang__)\n#pragma GCC pop_options\n#endif\n",
+);
 
 /// Lines longer than this are broken between tokens (C99 only promises 4095 characters).
 const WIDTH: usize = 100;
@@ -330,8 +352,8 @@ pub fn header(param: &[Function], prepared: &Prepared, builtins: &[Builtin]) -> 
          // branches, one return, nothing from the C library but sqrt and copysign (C99). A named\n\
          // constant KN is a folded exact rational rounded once; its comment gives the exact value.\n\
          // Results are bit-identical to the Rust crate when FLT_EVAL_METHOD == 0 and\n\
-         // floating-point contraction is off (gcc/clang: -ffp-contract=off); otherwise they\n\
-         // differ by rounding only.\n\
+         // floating-point contraction is off (gcc/clang: -ffp-contract=off), at any optimisation\n\
+         // level and -march (not with -ffast-math); otherwise they differ by rounding only.\n\
          // Define ROLL_CRITERION_API before the include to choose the linkage of the functions\n\
          // (default: static inline); the built-in aircraft data are static const objects.\n\n",
     );
@@ -339,7 +361,8 @@ pub fn header(param: &[Function], prepared: &Prepared, builtins: &[Builtin]) -> 
         "#ifndef ROLL_CRITERION_H\n#define ROLL_CRITERION_H\n\n#include <math.h>\n#include <stddef.h>\n\n",
     );
     writeln!(out, "#ifndef {API}\n#define {API} static inline\n#endif\n").expect("write to String");
-    out.push_str("#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n");
+    out.push_str(NO_VECTORISER.0);
+    out.push_str("\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n");
     out.push_str(&derivatives_struct());
     let all = param
         .iter()
@@ -370,7 +393,9 @@ pub fn header(param: &[Function], prepared: &Prepared, builtins: &[Builtin]) -> 
             out.push_str(&function(f, Some(b.module)));
         }
     }
-    out.push_str("\n#ifdef __cplusplus\n}\n#endif\n\n#endif // ROLL_CRITERION_H\n");
+    out.push_str("\n#ifdef __cplusplus\n}\n#endif\n\n");
+    out.push_str(NO_VECTORISER.1);
+    out.push_str("\n#endif // ROLL_CRITERION_H\n");
     out
 }
 

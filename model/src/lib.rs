@@ -25,11 +25,11 @@ pub mod numeric;
 // tests and for the generator of `generated/tests/values.rs` in `emit`.
 #[cfg(feature = "cli")]
 pub mod plot;
+#[cfg(feature = "cli")]
+pub mod present;
 #[allow(dead_code)]
 #[path = "../tests/support/reference.rs"]
 mod reference;
-#[cfg(feature = "cli")]
-pub mod report;
 pub mod roots;
 #[cfg(feature = "cli")]
 pub mod simulation;

@@ -2,13 +2,10 @@
 
 use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use model::aircraft::{self, Aircraft};
+use model::analysis::analyze;
 use model::analysis::fast::analyze_routed_with;
-use model::analysis::{analyze, Analysis};
-use model::continuation::{continue_equilibria, ContinuationParam, Diagram, Settings};
-use model::report::{
-    departure_cells, first_departure_text, fixed, hopf_cells, jump_cells, list, report,
-    ReportError, ReportSettings,
-};
+use model::continuation::{continue_equilibria, ContinuationParam, Settings};
+use model::present::report::{fixed, report, ReportError, ReportSettings};
 use model::simulation::{simulate, Model, Rudder, SimError, SimSettings};
 use std::io::Write;
 use std::path::Path;
@@ -280,7 +277,8 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
                 let text = serde_json::to_string_pretty(&result).map_err(|e| e.to_string())?;
                 say!(out, "{text}");
             } else {
-                write!(out, "{}", table(&result)).map_err(stdout_error)?;
+                write!(out, "{}", model::present::tables::analysis(&result))
+                    .map_err(stdout_error)?;
             }
             Ok(ExitCode::SUCCESS)
         }
@@ -329,7 +327,8 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
                 let text = serde_json::to_string_pretty(&diagram).map_err(|e| e.to_string())?;
                 say!(out, "{text}");
             } else {
-                write!(out, "{}", diagram_summary(&diagram)).map_err(stdout_error)?;
+                write!(out, "{}", model::present::tables::diagram(&diagram))
+                    .map_err(stdout_error)?;
             }
             Ok(ExitCode::SUCCESS)
         }
@@ -486,39 +485,22 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
                 )));
             }
             let bar = progress_bar("clear");
-            let mut runs = Vec::new();
-            let started = std::time::Instant::now();
-            for (k, de) in settings.iter().enumerate() {
-                if k == 1 {
-                    say_how_long(settings.len(), started.elapsed().as_secs_f64());
-                }
-                let s = model::clearance::Settings {
-                    delta_e_rad: *de,
-                    tolerance_p0: tolerance,
-                    tolerance_deg: 10.0 * tolerance,
-                    seed,
-                    ..Default::default()
-                };
-                let n = settings.len() as f64;
-                let mut tick = |f: f64| {
+            let runs = model::clearance::run::clear_each(
+                &ac,
+                &settings,
+                (samples, seed, tolerance),
+                &mut |f| {
                     if let Some(b) = &bar {
-                        b.set_position((1000.0 * (k as f64 + f) / n) as u64);
+                        b.set_position((1000.0 * f) as u64);
                     }
-                };
-                // 0: every core, on rayon's global pool (one set of threads for every run). The
-                // Monte Carlo first: its lowest samples are candidates for the worst case.
-                let monte_carlo = model::clearance::monte_carlo::run(&ac, *de, samples, seed, 0);
-                let s = model::clearance::Settings {
-                    candidates_at: monte_carlo.lowest_at.clone(),
-                    ..s
-                };
-                let clearance =
-                    model::clearance::clear(&ac, &s, &mut tick).map_err(|e| named(&ac, e))?;
-                runs.push(model::clearance::output::Run {
-                    clearance,
-                    monte_carlo,
-                });
-            }
+                },
+                &mut |k, seconds| {
+                    if k == 0 && settings.len() > 1 {
+                        say_how_long(settings.len(), seconds);
+                    }
+                },
+            )
+            .map_err(|e| named(&ac, e))?;
             if let Some(b) = bar {
                 b.finish_and_clear();
             }
@@ -538,35 +520,13 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
                 writeln!(out, "{text}")
             } else {
                 runs.iter()
-                    .try_for_each(|r| write!(out, "{}", model::clearance::output::text(r)))
+                    .try_for_each(|r| write!(out, "{}", model::present::clearance::text(r)))
             }
             .and_then(|()| out.flush())
             .map_err(stdout_error);
             if let Some(dir) = dir {
-                model::files::create_dir_all(&dir).map_err(|e| {
-                    Failure::Output(format!("cannot create {}: {e}", dir.display()))
-                })?;
-                write_file(&dir.join("summary.json"), format!("{text}\n").as_bytes())?;
-                write_file(
-                    &dir.join("summary.md"),
-                    model::clearance::output::markdown(&runs).as_bytes(),
-                )?;
-                write_file(
-                    &dir.join("samples.csv"),
-                    model::clearance::output::samples_csv(&runs).as_bytes(),
-                )?;
-                let style = model::plot::PlotStyle::default();
-                let mut figures = vec![(
-                    "clearance_histogram",
-                    model::clearance::output::histogram(&runs[0]),
-                )];
-                if runs.len() > 1 {
-                    figures.push(("clearance_map", model::clearance::output::map(&runs)));
-                }
-                for (stem, f) in figures {
-                    model::plot::render(&dir.join(stem), &f, &style)
-                        .map_err(|e| Failure::Output(e.to_string()))?;
-                }
+                model::present::clearance::write_folder(&dir, &runs, &text)
+                    .map_err(Failure::Output)?;
             }
             printed?;
             Ok(ExitCode::SUCCESS)
@@ -713,48 +673,6 @@ fn progress_bar(what: &str) -> Option<indicatif::ProgressBar> {
     Some(bar)
 }
 
-fn diagram_summary(d: &Diagram) -> String {
-    let points: usize = d.branches.iter().map(|b| b.points.len()).sum();
-    let count =
-        |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
-    let mut s = format!(
-        "{}: {}, {}, continuation in {}\n\n",
-        shown(&d.aircraft),
-        count(d.branches.len(), "branch", "branches"),
-        count(points, "point", "points"),
-        d.parameter
-    );
-    if d.special_points.is_empty() {
-        s += "No special points.\n";
-        return s;
-    }
-    s += &format!(
-        "  kind    {:>12} {:>10} {:>10} {:>10} {:>10} {:>10} {:>12}\n",
-        format!("{} deg", d.parameter),
-        "p rad/s",
-        "alpha deg",
-        "beta deg",
-        "q rad/s",
-        "r rad/s",
-        "freq rad/s"
-    );
-    for p in &d.special_points {
-        s += &format!(
-            "  {:<7} {:>12} {:>10} {:>10} {:>10} {:>10} {:>10} {:>12}{}\n",
-            p.kind.name(),
-            fixed(p.param.to_degrees(), 4),
-            fixed(p.p, 6),
-            fixed(p.alpha.to_degrees(), 4),
-            fixed(p.beta.to_degrees(), 4),
-            fixed(p.q, 5),
-            fixed(p.r, 5),
-            p.frequency.map_or(String::new(), |f| fixed(f, 5)),
-            marks(p.within_limits, p.valid)
-        );
-    }
-    s
-}
-
 /// `A`/`B` (any case) name the built-in aircraft; anything else is a TOML file. A name that is
 /// neither a built-in nor a file gets the list of built-ins and the shipped file it may mean.
 fn load_aircraft(arg: &str) -> Result<Aircraft, String> {
@@ -783,101 +701,6 @@ fn load_aircraft(arg: &str) -> Result<Aircraft, String> {
         }
         msg
     })
-}
-
-/// The marks of a reported point: beyond the control limits, outside the validity range.
-fn marks(within_limits: Option<bool>, valid: bool) -> String {
-    let mut m = String::new();
-    if within_limits == Some(false) {
-        m += "  [beyond limits]";
-    }
-    if !valid {
-        m += "  [outside validity range]";
-    }
-    m
-}
-
-/// The Hopf points (complex pair on the imaginary axis), with omega and l1.
-fn hopf_table(a: &Analysis) -> String {
-    let mut s = "\nHopf points, Delta4 = 0 with omega^2 > 0 (oscillatory departure):\n".to_string();
-    if a.hopf.is_empty() {
-        return s + "  none\n";
-    }
-    s += "     P0 rad/s   delta_a deg   alpha deg    beta deg  omega rad/s    period s          l1  kind\n";
-    for h in &a.hopf {
-        let [p0, da, alpha, beta, omega, period, l1, kind] = hopf_cells(h);
-        s += &format!(
-            "  {p0:>11} {da:>13} {alpha:>11} {beta:>11} {omega:>12} {period:>11} {l1:>11}  {kind}{}\n",
-            marks(h.point.within_limits, h.point.valid)
-        );
-    }
-    s
-}
-
-fn table(a: &Analysis) -> String {
-    let mut s = String::new();
-    let list = |v: &[f64]| list(v, 6, "rad/s");
-    s += &format!(
-        "{}  (delta_e = {} deg, delta_r = 0)\n\n",
-        shown(&a.aircraft),
-        fixed(a.delta_e_rad.to_degrees(), 4)
-    );
-    match (&a.critical, &a.critical_note) {
-        (Some(c), _) => {
-            s += &format!(
-                "Critical jump (first fold of the primary branch): P0 = {:.6} rad/s at delta_a = {:.4} deg (and the mirror point -P0 at {:+.4} deg){}\n\n",
-                c.p0,
-                c.delta_a_deg,
-                -c.delta_a_deg,
-                match c.within_limits {
-                    Some(true) => ", within the aileron limit",
-                    Some(false) => ", OUTSIDE the aileron limit",
-                    None => "",
-                }
-            );
-        }
-        (None, Some(note)) => s += &format!("No critical jump: {note}.\n\n"),
-        (None, None) => {}
-    }
-    s += &first_departure_text(a);
-    s += &format!(
-        "Divergence roll rates, Eq. 5:   {}\n",
-        list(&a.divergence_roll_rates)
-    );
-    s += &format!(
-        "Poles of det K, d = 0:          {}\n\n",
-        list(&a.det_k_poles.iter().map(|j| j.p0).collect::<Vec<_>>())
-    );
-    s += "Jump points, det K = 0 (saddle-nodes of the PSS equilibria):\n";
-    if a.jump.is_empty() {
-        s += "  none\n";
-    } else {
-        s += "     P0 rad/s   delta_a deg   alpha deg    beta deg     q rad/s     r rad/s\n";
-        for j in &a.jump {
-            let [p0, da, alpha, beta, q, r] = jump_cells(j);
-            s += &format!(
-                "  {p0:>11} {da:>13} {alpha:>11} {beta:>11} {q:>11} {r:>11}{}\n",
-                marks(j.within_limits, j.valid)
-            );
-        }
-    }
-    s += &hopf_table(a);
-    s += "\nZero-sideslip departure, det K = 0 at beta = 0 (section V):\n";
-    if let Some(why) = &a.zero_sideslip.withheld {
-        s += &format!("  withheld: {why}\n");
-    } else if a.zero_sideslip.departure.is_empty() {
-        s += "  none\n";
-    } else {
-        s += "     P0 rad/s   delta_a deg   delta_r deg   alpha deg     q rad/s     r rad/s\n";
-        for j in &a.zero_sideslip.departure {
-            let [p0, da, dr, alpha, q, r] = departure_cells(j);
-            s += &format!(
-                "  {p0:>11} {da:>13} {dr:>13} {alpha:>11} {q:>11} {r:>11}{}\n",
-                marks(j.within_limits, j.valid)
-            );
-        }
-    }
-    s
 }
 
 #[cfg(test)]

@@ -551,20 +551,8 @@ fn report_with_no_yaw_stiffness_is_bounded_by_the_aileron_range_and_says_what_it
 
 #[test]
 fn answers_that_are_not_finite_or_cannot_be_told_apart_are_refused() {
-    let out = model(&["analyze", "A", "--delta-e-deg", "1e-300", "--json"]);
-    assert_eq!(
-        out.status.code(),
-        Some(2),
-        "{}",
-        String::from_utf8_lossy(&out.stdout)
-    );
-    // Its two departure roots near P0 = 4.449 round to one f64 and its trims underflow.
-    let err = stderr(&out);
-    assert!(
-        err.contains("not a finite number") || err.contains("cannot be told apart in f64"),
-        "{err}"
-    );
-    assert!(out.stdout.is_empty());
+    // A main answer that is not finite is refused; a secondary section alone is withheld
+    // (`a_tiny_elevator_withholds_the_zero_sideslip_section_only`).
     let dir = scratch("tiny-ix");
     let c = std::fs::read_to_string(repo("aircraft/c.toml")).unwrap();
     let ix = dir.join("ix.toml");

@@ -340,7 +340,7 @@ fn fig_2_hopf_points_of_aircraft_b_with_their_frequencies() {
 /// series, apart from the continuation's; each row is `(delta_a deg, p rad/s)`.
 fn closed_form_hopf_rows(ac: &Aircraft, d: &Diagram) -> Vec<(f64, f64)> {
     let a = analyze(ac, de()).unwrap();
-    let data = model::report::bifurcation_data(d, &a, &ac.name);
+    let data = model::present::report::bifurcation_data(d, &a, &ac.name);
     // Figs 3, 4 mark them in each state panel too: those in the figures' aileron range, each
     // with its mirror image.
     let (lo, hi) = data.delta_a_range_deg.unwrap();

@@ -32,6 +32,7 @@
 
 pub mod bound;
 pub mod monte_carlo;
+pub mod run;
 
 use crate::aircraft::{Aircraft, Param, Uncertain};
 use crate::analysis::primary::TURN_STEP;
@@ -1225,9 +1226,6 @@ fn contradiction<'a>(leaves: &[Leaf], cases: &[&'a CaseAircraft]) -> Option<&'a 
         })
     })
 }
-
-#[cfg(feature = "cli")]
-pub mod output;
 
 #[cfg(test)]
 pub(crate) mod tests {

@@ -8,7 +8,7 @@
 //! jump; [`crate::plot`] draws.
 //!
 //! ```
-//! use model::report::{fixed, list, ReportSettings};
+//! use model::present::report::{fixed, list, ReportSettings};
 //!
 //! // Numbers as the summary prints them: never "-0.0000", and "none" for an empty list.
 //! assert_eq!(fixed(-0.00001, 4), "0.0000");

@@ -2,26 +2,15 @@
 //! CSV of the Monte Carlo samples.
 //!
 //! ```
-//! use model::clearance::output::samples_csv;
+//! use model::present::clearance::samples_csv;
 //!
 //! // The CSV's columns, with their units: one row per Monte Carlo sample of each run.
 //! assert_eq!(samples_csv(&[]), "delta_e_deg,sample,p0_rad_s,abs_delta_a_deg\n");
 //! ```
 
-use super::monte_carlo::MonteCarlo;
-use super::{Bounds, CaseAircraft, Clearance};
-use crate::report::fixed;
-use serde::Serialize;
-
-/// One elevator setting's clearance with its Monte Carlo comparison.
-#[derive(Clone, Debug, Serialize)]
-pub struct Run {
-    /// The certified bounds and worst cases.
-    #[serde(flatten)]
-    pub clearance: Clearance,
-    /// The Monte Carlo comparison.
-    pub monte_carlo: MonteCarlo,
-}
+use crate::clearance::run::Run;
+use crate::clearance::{Bounds, CaseAircraft};
+use crate::present::report::fixed;
 
 fn bounds(name: &str, unit: &str, b: &Bounds, digits: usize) -> String {
     if b.lo == f64::INFINITY {
@@ -138,6 +127,32 @@ pub fn samples_csv(runs: &[Run]) -> String {
         }
     }
     s
+}
+
+/// Writes the folder of `model clear --out DIR`: `summary.json` (the JSON `json` printed),
+/// `summary.md`, `samples.csv`, the first setting's histogram and, for several settings, the
+/// clearance map (each figure as SVG, PNG and CSV). Every file is written whole or not at all;
+/// the error names the file that failed and why.
+pub fn write_folder(dir: &std::path::Path, runs: &[Run], json: &str) -> Result<(), String> {
+    let write = |name: &str, contents: String| {
+        let path = dir.join(name);
+        crate::files::write_output(&path, contents.as_bytes())
+            .map_err(|e| format!("cannot write {}: {e}", path.display()))
+    };
+    crate::files::create_dir_all(dir)
+        .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    write("summary.json", format!("{json}\n"))?;
+    write("summary.md", markdown(runs))?;
+    write("samples.csv", samples_csv(runs))?;
+    let mut figures = vec![("clearance_histogram", histogram(&runs[0]))];
+    if runs.len() > 1 {
+        figures.push(("clearance_map", map(runs)));
+    }
+    let style = crate::plot::PlotStyle::default();
+    for (stem, f) in figures {
+        crate::plot::render(&dir.join(stem), &f, &style).map_err(|e| e.to_string())?;
+    }
+    Ok(())
 }
 
 use crate::plot::{Axis, Dash, Figure, LegendPlace, Line, Panel, Rgb};

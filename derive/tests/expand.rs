@@ -60,8 +60,8 @@ fn assert_close(got: f64, want: f64, rel: f64, what: &str) {
 }
 
 /// det K of aircraft A changes sign at its jump roll rates, Fig. 7 of the paper (1.70 and
-/// 3.03 rad/s at delta_e = 2 deg, delta_r = 0), as the independent computation of issue 2
-/// gives them (`reference`, also pinned in tests/tests/paper.rs).
+/// 3.03 rad/s at delta_e = 2 deg, delta_r = 0), as an independent numeric computation
+/// (continuation and eigenvalues) gives them (`reference`, also pinned in tests/tests/paper.rs).
 #[test]
 fn fig_7_det_k_aircraft_a_changes_sign_at_the_jump_roll_rates() {
     for p in reference::A_JUMP_P0 {
@@ -93,7 +93,7 @@ fn parametric_det_k_with_b_data_equals_specialised_aircraft_b() {
         );
     }
     // Table 1 of the paper: B's pitch-yaw divergence roll rates, 2.98 and 4.78 rad/s, as
-    // independently computed (issue 2).
+    // independently computed.
     let got = parametric::divergence_roll_rates(&B);
     let want = b::divergence_roll_rates();
     for ((g, w), table_1) in got.iter().zip(want).zip(reference::B_DIVERGENCE_P0) {

@@ -1026,8 +1026,8 @@ ROLL_CRITERION_API struct rc_array9 rc_zero_sideslip_jump_polynomial(const struc
 
 /// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
 /// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
-/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3
-/// to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (the Hopf criterion). c1 and c2
+/// below (c3 to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
 ///
 /// Formulas, printed from the derivation (model/src/derivation.rs):
 /// ```text
@@ -1488,7 +1488,7 @@ ROLL_CRITERION_API double rc_hopf_omega_squared(const struct rc_derivatives *k, 
     return (t101 + (t100 + k->m_alpha * t99) + t102) / t104;
 }
 
-/// det K (Eq. 27) of one aircraft and control setting, prepared for many roll rates (issue 11):
+/// det K (Eq. 27) of one aircraft and control setting, prepared for many roll rates:
 /// `Prepared::new(k, delta_e, delta_r)` computes once everything of `det_k` that does not
 /// depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch
 /// of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is
@@ -2397,8 +2397,8 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_a_zero_sideslip_jump_polynomial(
 
 /// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
 /// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
-/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3
-/// to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (the Hopf criterion). c1 and c2
+/// below (c3 to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
 ///
 /// Formulas, printed from the derivation (model/src/derivation.rs):
 /// ```text
@@ -2661,8 +2661,8 @@ ROLL_CRITERION_API double rc_aircraft_a_hopf_omega_squared(double p0, double del
     return t29 / (26.8921 * (t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774)) - t28);
 }
 
-/// The Hopf polynomial `det(A)^10 Delta4` (issue 10) of this aircraft at the trim of `p0`
-/// (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
+/// The Hopf polynomial `det(A)^10 Delta4` (beyond the paper) of this aircraft at the trim of
+/// `p0` (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
 /// [`hurwitz_delta4`], so its sign is that of Delta4 wherever det A != 0. Its real roots
 /// are the Hopf points (where [`hopf_omega_squared`] > 0), the neutral saddles (omega^2 < 0)
 /// and the roots of det A (the divergence roll rates).
@@ -3478,8 +3478,8 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_b_zero_sideslip_jump_polynomial(
 
 /// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
 /// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
-/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3
-/// to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (the Hopf criterion). c1 and c2
+/// below (c3 to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
 ///
 /// Formulas, printed from the derivation (model/src/derivation.rs):
 /// ```text
@@ -3698,8 +3698,8 @@ ROLL_CRITERION_API double rc_aircraft_b_hopf_omega_squared(double p0, double del
     return t29 / (6.507 * (t14 + (41.025041 + t15 + t10 * 9.99 + t16 * 1.679484)) - t28);
 }
 
-/// The Hopf polynomial `det(A)^10 Delta4` (issue 10) of this aircraft at the trim of `p0`
-/// (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
+/// The Hopf polynomial `det(A)^10 Delta4` (beyond the paper) of this aircraft at the trim of
+/// `p0` (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
 /// [`hurwitz_delta4`], so its sign is that of Delta4 wherever det A != 0. Its real roots
 /// are the Hopf points (where [`hopf_omega_squared`] > 0), the neutral saddles (omega^2 < 0)
 /// and the roots of det A (the divergence roll rates).

@@ -718,8 +718,8 @@ pub fn zero_sideslip_jump_polynomial(delta_e: f64) -> [f64; 9] {
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
 /// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
-/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3
-/// to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (the Hopf criterion). c1 and c2
+/// below (c3 to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
 ///
 /// Formulas, printed from the derivation (model/src/derivation.rs):
 /// ```text
@@ -992,8 +992,8 @@ pub fn hopf_omega_squared(p0: f64, delta_e: f64, delta_r: f64) -> f64 {
     t29 / (26.8921 * (t14 + (136.03372548 + t15 + t10 * 110.45 + t16 * 1.753774)) - t28)
 }
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
-/// The Hopf polynomial `det(A)^10 Delta4` (issue 10) of this aircraft at the trim of `p0`
-/// (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
+/// The Hopf polynomial `det(A)^10 Delta4` (beyond the paper) of this aircraft at the trim of
+/// `p0` (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times
 /// [`hurwitz_delta4`], so its sign is that of Delta4 wherever det A != 0. Its real roots
 /// are the Hopf points (where [`hopf_omega_squared`] > 0), the neutral saddles (omega^2 < 0)
 /// and the roots of det A (the divergence roll rates).

@@ -992,8 +992,8 @@ pub fn zero_sideslip_jump_polynomial(k: &Derivatives, delta_e: f64) -> [f64; 9] 
 #[cfg_attr(feature = "no-panic-check", no_panic::no_panic)]
 /// Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim
 /// of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);
-/// `c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3
-/// to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
+/// `c5 = -det J5`, the jump criterion. Beyond the paper (the Hopf criterion). c1 and c2
+/// below (c3 to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).
 ///
 /// Formulas, printed from the derivation (model/src/derivation.rs):
 /// ```text
@@ -1503,7 +1503,7 @@ pub fn hopf_omega_squared(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) 
             + t68) + t103;
     (t101 + (t100 + k.m_alpha * t99) + t102) / t104
 }
-/// det K (Eq. 27) of one aircraft and control setting, prepared for many roll rates (issue 11):
+/// det K (Eq. 27) of one aircraft and control setting, prepared for many roll rates:
 /// `Prepared::new(k, delta_e, delta_r)` computes once everything of `det_k` that does not
 /// depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch
 /// of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is

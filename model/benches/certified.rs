@@ -1,4 +1,4 @@
-//! Benchmarks of issue 11: the certified floating-point route against the exact path, measured
+//! Benchmarks of the certified floating-point route against the exact path, measured
 //! in the same run (the ratio of the medians is the speed-up), and what clearance builds on it.
 //! Run with `cargo bench -p model --bench certified`.
 //!

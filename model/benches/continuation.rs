@@ -1,4 +1,4 @@
-//! Benchmarks of issue 4: the whole bifurcation diagram of aircraft B over delta_a in
+//! Benchmarks of the continuation: the whole bifurcation diagram of aircraft B over delta_a in
 //! [-0.8, 0.8] rad (Fig. 2 of AIAA 2006-6267: every branch, found automatically from the
 //! roll-rate grid, with folds, Hopf points and branch points located), against a baseline
 //! measured in the same run: one `analyze(B)` (the closed-form criterion of section IV, which

@@ -1,9 +1,9 @@
-//! Benchmarks of issue 2: the whole parametric derivation (steps 1-8, including the degree-12
+//! Benchmarks of the whole parametric derivation (steps 1-8, including the degree-12
 //! jump polynomial) and `analyze` on one aircraft, against a numeric baseline measured in the
 //! same run (one LU trim plus the eigenvalues of the 5x5 Jacobian: the route the criterion
 //! replaces, at a single P0).
 //!
-//! Also `emit` end to end (issue 3). Run with `cargo bench -p model --bench derivation`.
+//! Also `emit` end to end. Run with `cargo bench -p model --bench derivation`.
 
 use model::aircraft::Aircraft;
 use model::analysis::analyze;
@@ -95,7 +95,7 @@ fn baseline_numeric_trim_and_eigenvalues_one_p0() -> f64 {
         .fold(f64::MIN, f64::max)
 }
 
-/// Issue 3: `emit` end to end (derive, CSE, print, format, write to a scratch directory).
+/// `emit` end to end (derive, CSE, print, format, write to a scratch directory).
 #[divan::bench]
 fn emit_end_to_end() -> usize {
     let dir = std::env::temp_dir().join(format!("emit-bench-{}", std::process::id()));

@@ -1,8 +1,8 @@
-//! Benchmarks of issue 10: deriving the Hopf criterion parametrically (Orlando's Delta4 of the
-//! characteristic coefficients of J5, in the trim symbols and every parameter), the Hopf part of
-//! `analyze` per aircraft, and `analyze` with and without it, measured in the same run (the
-//! ratio of the medians is the cost of the new answer), and the full `analyze` on the certified
-//! route against the exact one (issue 10: under 2 ms per aircraft). Run with
+//! Benchmarks of the Hopf criterion (beyond the paper): deriving it parametrically (Orlando's
+//! Delta4 of the characteristic coefficients of J5, in the trim symbols and every parameter),
+//! the Hopf part of `analyze` per aircraft, and `analyze` with and without it, measured in the
+//! same run (the ratio of the medians is the cost of the Hopf answer), and the full `analyze` on
+//! the certified route against the exact one (target: under 2 ms per aircraft). Run with
 //! `cargo bench -p model --bench hopf`. Everything runs under the command-line tool's allocator
 //! (mimalloc), as `model` does.
 
@@ -52,7 +52,7 @@ fn analyze_with_hopf(name: &str) -> usize {
         .len()
 }
 
-/// `analyze` as before issue 10 (jump analysis only), the baseline of the ratio.
+/// `analyze` without the Hopf part (jump analysis only), the baseline of the ratio.
 #[divan::bench(args = ["A", "B"])]
 fn analyze_without_hopf(name: &str) -> usize {
     let ac = Aircraft::builtin(name).unwrap();

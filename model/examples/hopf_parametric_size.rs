@@ -1,4 +1,4 @@
-//! Size and derivation time of the parametric Hopf polynomial (issue 10), release build:
+//! Size and derivation time of the parametric Hopf polynomial, release build:
 //! `cargo run --release -p model --example hopf_parametric_size [full]`. Without `full` it stops
 //! at Delta4 in the trim symbols; with it, it also substitutes the trim (n_delta_a = 0) and
 //! clears det(A)^10.

@@ -1,4 +1,4 @@
-//! Timing breakdown of the Hopf part of `analyze` (issue 10), release build:
+//! Timing breakdown of the Hopf part of `analyze`, release build:
 //! `cargo run --release -p model --example hopf_timing`.
 use model::aircraft::Aircraft;
 use model::analysis::{analyze, analyze_with, parametric, CriterionPolys, HopfPolys};

@@ -204,7 +204,7 @@ pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, Analys
     analyze_with(aircraft, delta_e_rad, true)
 }
 
-/// [`analyze`], with the Hopf points, landings and first departure (issue 10) only when
+/// [`analyze`], with the Hopf points, landings and first departure (beyond the paper) only when
 /// `departures` is true; `false` gives the jump analysis alone (empty `hopf`, no `lands_at`,
 /// no `first_departure`), the baseline of the benchmark.
 pub fn analyze_with(
@@ -284,9 +284,9 @@ pub fn aileron_range(aircraft: &Aircraft) -> f64 {
         })
 }
 
-/// What the departure part of the analysis (issue 10) needs beyond the jump part, from either
-/// route: the f64 evaluation at trims, the positive roots of the Hopf polynomials and the real
-/// roots of the trim condition at each fold's aileron.
+/// What the departure part of the analysis (Hopf points, landings, first departure) needs beyond
+/// the jump part, from either route: the f64 evaluation at trims, the positive roots of the Hopf
+/// polynomials and the real roots of the trim condition at each fold's aileron.
 pub(crate) struct Departures<'a> {
     /// J5, `c1..c5` and the model's derivatives at trims.
     pub at: AtTrim<'a>,

@@ -244,7 +244,7 @@ fn report_writes_every_figure_and_a_summary() {
     assert!(md.contains(&jump) && md.contains("hopf"), "{md}");
     assert!(md.contains("![Figs 1, 2](fig01_bifurcation.png)"));
     // Which instability comes first on the primary branch: B's first fold, before its Hopf
-    // points (issue 10).
+    // points.
     let first = format!(
         "First loss of stability on the primary branch: JUMP at P0 = {jump} rad/s, delta_a = {:.4} deg",
         reference::B_FOLD_DELTA_A_DEG
@@ -525,7 +525,7 @@ fn plot_writes_what_it_can_names_each_failed_file_and_removes_stale_temporaries(
 
 #[test]
 fn report_with_no_yaw_stiffness_is_bounded_by_the_aileron_range_and_says_what_it_skipped() {
-    // n_beta = 0 puts A's fold at delta_a = -110905 deg: the old report swept out to it.
+    // n_beta = 0 puts A's fold at delta_a = -110905 deg, far outside the aileron range.
     let (dir, path) = variant("nbeta0", &[("n_beta = 3.716", "n_beta = 0.0")]);
     let start = std::time::Instant::now();
     let out = model(&[

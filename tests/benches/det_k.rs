@@ -1,4 +1,4 @@
-//! Issues 3 and 11's speed targets, measured in one run: the generated parametric det K (trim
+//! The speed of det K, measured in one run: the generated parametric det K (trim
 //! included), the prepared det K (`Prepared::det_k` per call, and the slice form
 //! `Prepared::det_k_into`), CasADi's generated C for the same det K (tests/oracle/casadi_det_k.py,
 //! compiled at -O2 by tests/build.rs; left out without a C compiler) and numeric routes in Rust

@@ -1,5 +1,5 @@
 //! Aileron yaw (`n_delta_a != 0`) and roll due to rudder (`l_delta_r`) in the closed form
-//! (issue 8, part 1), checked against an independent numeric computation written here: trim
+//! (beyond the paper), checked against an independent numeric computation written here: trim
 //! branches from nalgebra LU solves ([`paper_tests::trim_branches`]), det J5 from
 //! finite-difference Jacobians, sign changes refined by bisection. Nothing here calls the
 //! symbolic layer except the code under test.

@@ -421,7 +421,8 @@ fn header_functions_are_straight_line_with_one_return_and_only_sqrt_and_copysign
     }
 }
 
-/// The random value of an argument, by name (the issue's ranges for P0 and delta_e).
+/// The random value of an argument, by name (P0 in [0, 6] rad/s, the elevator and rudder
+/// within 10 deg).
 fn sample(name: &str, rng: &mut Lcg) -> f64 {
     let deg10 = 10f64.to_radians();
     match name {
@@ -673,7 +674,7 @@ fn readme_c_example_compiles_warning_free() {
     assert!(symbols.contains(" T criterion\n"), "{symbols}");
 }
 
-/// Issue 12: no expression of the header is longer than the emitter's cap (the same programs
+/// No expression of the header is longer than the emitter's cap (the same programs
 /// as the Rust crate, so the same split): the right-hand side of every `const double` and
 /// `result` assignment and every `return`, on one line.
 #[test]

@@ -1,4 +1,4 @@
-//! Issue 11: the certified floating-point analysis (`model::analysis::fast`) gives the exact
+//! The certified floating-point analysis (`model::analysis::fast`) gives the exact
 //! analysis' answer.
 //!
 //! Random aircraft around A and B (every derivative and inertia coefficient moved by up to 30 %,

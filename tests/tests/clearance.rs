@@ -298,9 +298,9 @@ fn the_fighters_other_trim_is_cleared_below_its_critical_jump() {
 /// n_delta_a = 22 +- 1 % at delta_e = 0: near 1.1 to 1.2 rad/s its two trims pass through equal
 /// magnitudes without merging, and past that the branch is the trim of larger magnitude; its
 /// critical jump lies near 1.63 rad/s). The proof follows the branch on its side of the
-/// quadratic formula through the change and converges (before, it took the change for a
-/// possible turn and held the bound near 1.14 rad/s at its budget). No aircraft sampled from
-/// the box (exact path) jumps below the bound, and the worst case reproduces hi.
+/// quadratic formula through the change and converges (taken for a possible turn, the change
+/// would hold the bound near 1.14 rad/s at the budget). No aircraft sampled from the box (exact
+/// path) jumps below the bound, and the worst case reproduces hi.
 #[test]
 fn a_box_whose_g1_changes_sign_converges() {
     let mut a = b_with_aileron_yaw(22);
@@ -373,8 +373,9 @@ fn proven_free_of_critical_jumps_past_a_turn(a: &Aircraft, de: f64, seed: u64) {
 /// n_delta_a = 40 +- 1 % at delta_e = -4 deg: the branch turns near 3.9 rad/s at about 63 deg
 /// of aileron and comes back on its other trim to the end of the range). The proof certifies a
 /// turn zone above the depth where every branch of the box turns back with no jump, and the
-/// other trim below it: no critical jump is proven (before turn zones: lo = 3.879 rad/s, the
-/// turn, at the budget of 20 000 boxes). No aircraft of the box (exact path) has one.
+/// other trim below it: no critical jump is proven (without turn zones the bound would stay at
+/// the turn, lo = 3.879 rad/s, at the budget of 20 000 boxes). No aircraft of the box (exact
+/// path) has one.
 #[test]
 fn a_branch_that_turns_back_without_a_jump_is_proven_free_of_critical_jumps() {
     let mut a = Aircraft::a().with(Param::NDeltaA, BigRational::from_integer(40.into()));
@@ -390,9 +391,9 @@ fn a_branch_that_turns_back_without_a_jump_is_proven_free_of_critical_jumps() {
 /// (aircraft A with n_delta_a = -45.8 +- 1 % at delta_e = -2 deg: a jump on the other trim near
 /// 3.03 rad/s at about 84 deg, the critical jump near 5.36 rad/s) still converges: above that
 /// jump the other trim lies beyond the aileron range on a run of slabs at least one walk step
-/// long (a barrier), where a branch coming back down on it ends, so none reaches the jump. (The
-/// first version of the other-trim check held this proof at 3.03 rad/s.) No exact sample jumps
-/// below the bound, and the worst case reproduces hi.
+/// long (a barrier), where a branch coming back down on it ends, so none reaches the jump.
+/// (Without the barrier, a doubt on the other trim would hold this proof at 3.03 rad/s.) No
+/// exact sample jumps below the bound, and the worst case reproduces hi.
 #[test]
 fn a_jump_on_the_other_trim_below_the_critical_jump_does_not_hold_the_proof() {
     let mut a = Aircraft::a().with(Param::NDeltaA, BigRational::new((-458).into(), 10.into()));
@@ -436,8 +437,8 @@ fn a_jump_on_the_other_trim_below_the_critical_jump_does_not_hold_the_proof() {
 /// barrier above the jump (their other trim is proven jump-free there, not beyond the range);
 /// the search for one on each sub-box (`search_barrier`) finds it, so the doubt at the other
 /// trim's jump is dropped. Every branch then turns back in a certified turn zone, and no
-/// critical jump is proven (before turn zones the bound stayed at the turn, 4.0744 rad/s, at
-/// the budget; before the search, at the other trim's jump).
+/// critical jump is proven (without turn zones the bound would stay at the turn, 4.0744 rad/s,
+/// at the budget; without the search, at the other trim's jump).
 #[test]
 fn a_barrier_found_above_a_doubt_lets_the_proof_pass_the_turn() {
     let mut a = Aircraft::a().with(Param::NDeltaA, BigRational::from_integer(300.into()));

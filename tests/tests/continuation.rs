@@ -1,4 +1,4 @@
-//! The continuation of issue 4 (`model::continuation`) against the paper's continuation results
+//! The continuation (`model::continuation`) against the paper's continuation results
 //! (Figs 1, 2 and 9 of AIAA 2006-6267, computed there with AUTO2000; sections II.B and V.B) and
 //! against the analytical criterion of section IV (`model::analysis`): every fold must be a root
 //! of the jump polynomial, every zero-sideslip branch point a departure root, for the paper's
@@ -335,7 +335,7 @@ fn fig_2_hopf_points_of_aircraft_b_with_their_frequencies() {
     }
 }
 
-/// The closed-form Hopf points as the report's Figs 1-4 mark them (issue 10): the figure data
+/// The closed-form Hopf points as the report's Figs 1-4 mark them: the figure data
 /// of `model report`, drawn and written as the CSV beside the figure, holds them as their own
 /// series, apart from the continuation's; each row is `(delta_a deg, p rad/s)`.
 fn closed_form_hopf_rows(ac: &Aircraft, d: &Diagram) -> Vec<(f64, f64)> {
@@ -614,7 +614,7 @@ fn a_with_aileron_yaw(n_delta_a: f64) -> Aircraft {
 
 #[test]
 fn folds_of_aileron_yaw_aircraft_are_the_closed_form_jump_roots_to_1e_8() {
-    // Issue 8: with n_delta_a != 0 the closed form eliminates delta_a by a resultant; the
+    // With n_delta_a != 0 the closed form eliminates delta_a by a resultant; the
     // continuation knows nothing of it and must find the same folds, state and aileron.
     let s = Settings::default();
     let mut checked = 0;

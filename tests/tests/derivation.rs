@@ -167,7 +167,7 @@ fn trim_formulas_solve_the_pss_equations() {
 
 #[test]
 fn jump_polynomial_is_even_in_p0_with_delta_r_zero() {
-    // Check value of issue 2: A(-P) = S A(P) S with S = diag(1,-1,1,-1) makes the jump
+    // The symmetry A(-P) = S A(P) S with S = diag(1,-1,1,-1) makes the jump
     // polynomial even when delta_r = 0; degree 12, 7 nonzero coefficients.
     let s = symbols();
     let d = Derivation::derive(&[(s.delta_r, Q::ZERO)]);

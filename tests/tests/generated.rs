@@ -499,7 +499,7 @@ fn body_expressions(block: &syn::Block, out: &mut Vec<String>) {
     }
 }
 
-/// Issue 12: no expression of the generated crate is longer than the emitter's cap, so that a
+/// No expression of the generated crate is longer than the emitter's cap, so that a
 /// reviewer can follow each against the derivation (the split into temporaries is checked to
 /// change no bit by the C cross-check and the emitter's own tests).
 #[test]
@@ -572,7 +572,7 @@ fn named_constants(text: &str) -> Vec<(Exact, f64)> {
         .collect()
 }
 
-/// Issue 12: every folded constant that is not written exactly carries its exact rational, and
+/// Every folded constant that is not written exactly carries its exact rational, and
 /// its literal is that rational rounded once to the nearest double; the constants written inline
 /// are the data of Table A.1 and small integers, whose literals are exact (checked in the
 /// emitter, `model::emit::program`).
@@ -683,7 +683,7 @@ fn parse_formula(rhs: &str) -> Vec<model::algebra::Poly> {
     vec![parse(rhs)]
 }
 
-/// Issue 12: every formula in the generated crate's doc comments is the derivation's (parsed
+/// Every formula in the generated crate's doc comments is the derivation's (parsed
 /// back with the paper-formula parser of `model::emit::paper` and compared exactly), and where
 /// the paper prints the same quantity correctly, the paper's (Eqs 2, 16 and 22): no formula of
 /// the docs is typed by hand.

@@ -1,8 +1,9 @@
-//! Issue 10: the closed-form Hopf criterion (Delta4 = 0 with omega^2 > 0), its first Lyapunov
-//! coefficient and where a jump lands, against independent numerics written here or in
+//! The closed-form Hopf criterion (beyond the paper: Delta4 = 0 with omega^2 > 0), its first
+//! Lyapunov coefficient and where a jump lands, against independent numerics written here or in
 //! `paper_tests`: finite-difference Jacobians and nalgebra eigenvalues, RK4 integration of the
-//! hand-written PSS model, and the numeric continuation of issue 4 (which knows nothing of the
-//! closed form). Expected numbers for aircraft B are the issue's (AUTO-07p).
+//! hand-written PSS model, and the numeric continuation of `model::continuation` (which knows
+//! nothing of the closed form). Expected numbers for aircraft B are an independent AUTO-07p
+//! continuation's.
 
 use model::aircraft::{f64_to_rational, Aircraft};
 use model::analysis::{analyze, parametric, Analysis, CriterionPolys, HopfPolys};
@@ -45,7 +46,7 @@ fn closest_pair(eig: &[Complex<f64>]) -> (Complex<f64>, Complex<f64>) {
 #[test]
 fn hopf_points_of_b_are_autos_and_a_has_none_at_delta_e_2_deg() {
     let b = analyze(&Aircraft::b(), de()).unwrap();
-    // AUTO-07p (the issue): P0, delta_a and omega of each Hopf point.
+    // An independent AUTO-07p continuation: P0, delta_a and omega of each Hopf point.
     for (p0, da_deg, omega) in reference::B_HOPF {
         let h = b
             .hopf
@@ -264,9 +265,9 @@ fn a_jump_lands_on_a_reported_stable_equilibrium_for_a_and_b() {
 
 #[test]
 fn generated_characteristic_coefficients_delta4_and_omega_squared_match_nalgebra() {
-    // At the issue's first Hopf point of B: the generated coefficients are those of
+    // At B's first Hopf point by AUTO-07p: the generated coefficients are those of
     // prod (s - l_i) over the oracle's eigenvalues, Delta4 changes sign across it, and omega^2
-    // is the square of the issue's omega.
+    // is the square of AUTO-07p's omega.
     let k = Aircraft::b().values_f64();
     let kd = paper_tests::generated_derivatives(&k);
     let (p0, _, omega) = reference::B_HOPF[0];
@@ -378,7 +379,7 @@ fn permutations4() -> Vec<[usize; 4]> {
     out
 }
 
-/// Issue 10: the folded per-aircraft Hopf polynomial `det(A)^10 Delta4` of the generated crate
+/// The folded per-aircraft Hopf polynomial `det(A)^10 Delta4` of the generated crate
 /// changes sign at B's Hopf points of AUTO-07p (P0 = 3.129030 and 4.731306 rad/s at delta_e = 2
 /// deg), and at random roll rates, elevator and rudder settings, where the value is well away
 /// from zero

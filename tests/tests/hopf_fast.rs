@@ -1,4 +1,4 @@
-//! Issue 10: the full analysis (Hopf points with omega and l1, landings, first departure,
+//! The full analysis (Hopf points with omega and l1, landings, first departure,
 //! zero-sideslip Hopf roll rates) on the certified route (`analyze_routed_with(.., true)`)
 //! gives the exact path's answer (`analyze_with(.., true)`, big rationals), and the structural
 //! factors of det A it divides by hold.

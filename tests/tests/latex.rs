@@ -1,4 +1,4 @@
-//! The LaTeX dump (`docs/formulas.tex`, issue 3): the document carries the paper's equation
+//! The LaTeX dump (`docs/formulas.tex`): the document carries the paper's equation
 //! numbers, is deterministic, states the comparisons with the paper's print, and compiles.
 //!
 //! The compile test typesets `model::emit::latex::document()` in a temporary directory (never

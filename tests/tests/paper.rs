@@ -1,9 +1,9 @@
 //! The paper's numbers, reproduced from the derived formulas (`model::analysis`).
 //!
-//! Expected values: the paper (Table 1, Figs 7, 8, 11; its data are rounded, so about 0.1 %)
-//! and an independent numeric computation quoted in the project's issue 2 (AUTO-style
-//! continuation and eigenvalues, 6-7 digits). Each is also re-checked here against the
-//! independent oracle in `paper_tests` (hand-written model, LU trims, nalgebra eigenvalues).
+//! Expected values: the paper (Table 1, Figs 7, 8, 11; its data are rounded, so about 0.1 %) and an
+//! independent numeric computation (AUTO-style continuation and eigenvalues, 6-7 digits). Each is
+//! also re-checked here against the independent oracle in `paper_tests` (hand-written model, LU
+//! trims, nalgebra eigenvalues).
 
 use model::aircraft::Aircraft;
 use model::analysis::{analyze, Analysis};
@@ -35,7 +35,7 @@ fn table_1_divergence_roll_rates_aircraft_a_none() {
 #[test]
 fn table_1_divergence_roll_rates_aircraft_b() {
     let got = at_2deg(&Aircraft::b()).divergence_roll_rates;
-    // Independent computation (issue 2) and the paper.
+    // The independent numeric computation and the paper.
     assert_close(
         &got,
         &reference::B_DIVERGENCE_P0,
@@ -51,7 +51,8 @@ fn fig_7_det_k_roots_aircraft_a_are_the_saddle_nodes_of_fig_1() {
     let p0: Vec<f64> = a.jump.iter().map(|j| j.p0).collect();
     assert_close(&p0, &reference::A_JUMP_P0, 1e-6, "Fig. 7 (independent)");
     assert_close(&p0, &[1.70, 3.03], 4e-3, "Fig. 7 (paper)");
-    // Fig. 1: saddle-nodes near delta_a = -4 deg and +8 deg; the issue gives the first.
+    // Fig. 1: saddle-nodes near delta_a = -4 deg and +8 deg; the independent computation
+    // gives the first.
     let fold = reference::A_FOLD_DELTA_A_DEG;
     assert!(
         (a.jump[0].delta_a_deg - fold).abs() < 1e-3,

@@ -1,4 +1,4 @@
-//! Issue 11: `roll_criterion::Prepared`, det K with everything that depends only on the aircraft
+//! `roll_criterion::Prepared`, det K with everything that depends only on the aircraft
 //! and the controls computed once, against an independent computation written here: the trim by
 //! LU and the roll equation (`paper_tests::trim_branches`), J5 by central differences of the
 //! hand-written PSS model, det J5 by nalgebra, d from J5's entries

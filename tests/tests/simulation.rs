@@ -712,7 +712,7 @@ fn a_sweep_past_its_run_limit_is_refused_before_any_run() {
 
 #[test]
 fn zero_sideslip_schedule_saturates_at_the_rudder_limit() {
-    // Issue 8: with `[limits] rudder`, the scheduled rudder stops at the limit. Where it gets
+    // With `[limits] rudder`, the scheduled rudder stops at the limit. Where it gets
     // there is found independently here: the oracle's zero-sideslip trims along P0 (LU and the
     // 2x2 lateral solve), bisected on |delta_r| = limit.
     let mut ac = Aircraft::a();

@@ -1,7 +1,8 @@
 //! Tidy checks of the hand-written sources (rust-analyzer's habit): every Rust file opens with a
 //! `//!` line saying what it is, and comments cite equations in one form, "Eq. N" or "Eqs N-M",
-//! so that a search for "Eq. 27" finds every mention. Generated files (`// @generated`) are
-//! exempt; they are checked by `model emit --check`.
+//! so that a search for "Eq. 27" finds every mention; and no comment cites an issue number
+//! (comments describe the code as it is, git keeps its history). Generated files
+//! (`// @generated`) are exempt; they are checked by `model emit --check`.
 
 use std::path::{Path, PathBuf};
 
@@ -92,6 +93,64 @@ fn the_citation_check_sees_each_stray_form() {
     assert!(stray_citation("Eqs. 6-10").is_some());
     assert!(stray_citation("Eq 5").is_some());
     assert!(stray_citation("Eq. 1-2").is_some());
+}
+
+/// A comment's citation of an issue number ("issue N", "issues N", "issue #N", any case; also
+/// "issue-N" and "issue#N" in one word), if any, in lower case. Comments describe the code as it
+/// is: the paper's section or equation, the claim, the source of a number; git keeps which
+/// issue asked for what.
+fn issue_citation(comment: &str) -> Option<String> {
+    let bare = |w: &str| {
+        w.trim_matches(|c: char| !c.is_ascii_alphanumeric())
+            .to_lowercase()
+    };
+    let words: Vec<String> = comment.split_whitespace().map(bare).collect();
+    let number = |s: &str| s.starts_with(|c: char| c.is_ascii_digit());
+    for (i, word) in words.iter().enumerate() {
+        let Some(rest) = word
+            .strip_prefix("issues")
+            .or_else(|| word.strip_prefix("issue"))
+        else {
+            continue;
+        };
+        match (rest, words.get(i + 1)) {
+            ("", Some(next)) if number(next) => return Some(format!("{word} {next}")),
+            (joined, _) if joined.starts_with(['-', '#']) && number(&joined[1..]) => {
+                return Some(word.clone())
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+#[test]
+fn comments_cite_no_issue_numbers() {
+    let mut cited = Vec::new();
+    for (p, text) in hand_written() {
+        for (i, line) in text.lines().enumerate() {
+            if let Some(at) = line.find("//") {
+                if let Some(what) = issue_citation(&line[at..]) {
+                    cited.push(format!("{}:{}: cites \"{what}\"", p.display(), i + 1));
+                }
+            }
+        }
+    }
+    assert!(cited.is_empty(), "{cited:#?}");
+}
+
+#[test]
+fn the_issue_check_sees_each_citation_form() {
+    assert!(issue_citation("Eq. 27, section V: an issue of 3 roots, tissue 4").is_none());
+    let hopf = issue_citation("the Hopf criterion (issue 10), beyond the paper");
+    assert_eq!(hopf.as_deref(), Some("issue 10"));
+    assert!(issue_citation("Issue 11: the certified route").is_some());
+    assert!(issue_citation("Issues 3 and 11's speed targets").is_some());
+    assert!(issue_citation("as in issue #12").is_some());
+    assert_eq!(
+        issue_citation("(the issue-10).").as_deref(),
+        Some("issue-10")
+    );
 }
 
 /// The README's test command is what CI runs: `.ci/run` runs it stage by stage (to time each),

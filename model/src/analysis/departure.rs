@@ -631,7 +631,7 @@ pub(crate) fn zs_hopf_roll_rates(
         .collect()
 }
 
-/// The issue-10 part of the checks every answer passes: every Hopf point, landing and
+/// The departure part of the checks every answer passes: every Hopf point, landing and
 /// zero-sideslip Hopf roll rate finite; `Err` names the value.
 pub(super) fn check_finite(a: &super::Analysis) -> Result<(), String> {
     for h in &a.hopf {

@@ -1551,7 +1551,7 @@ mod tests {
         assert_eq!(split_point(1.0, 1.0 + f64::EPSILON, 0.5), None);
     }
 
-    /// A sum that overflows is no sign (found in review): the Bernstein coefficients of this
+    /// A sum that overflows is no sign: the Bernstein coefficients of this
     /// polynomial of degree 10 with coefficients near `f64::MAX` overflow to +inf while two of
     /// the exact ones are negative, and a node that read +inf as positive proved "no roots". It
     /// has two positive roots, near 0.82 and 0.9 (exact values of opposite signs at 0.8, 0.85
@@ -1668,7 +1668,7 @@ mod tests {
 
     /// Two roots 1.8e-7 apart (0.62795908, 0.62795926) and a third at 1.8933: guided splits at
     /// sixteenths alone would use up the bits of the nodes' ends near the pair (no exact split
-    /// point after 15 levels, found by review); yielding to bisection isolates all three.
+    /// point after 15 levels); yielding to bisection isolates all three.
     #[test]
     fn guided_splits_leave_clustered_roots_isolable() {
         let c = [

@@ -1,6 +1,6 @@
 //! A straight-line program of the emitter ([`crate::emit::expr::Dag`]) evaluated in f64 with an
 //! a priori bound on its rounding: the certified route's fast enclosure of the criterion
-//! polynomials' coefficients (issue 11).
+//! polynomials' coefficients.
 //!
 //! Each node is evaluated twice in one pass, on two lanes: its value `v` from the inputs, and
 //! `V`, the same program on the inputs' magnitudes with every subtraction made an addition (all

@@ -1,4 +1,4 @@
-//! Continuation and bifurcation analysis of the PSS equilibria (issue 4): what the paper does
+//! Continuation and bifurcation analysis of the PSS equilibria: what the paper does
 //! with AUTO2000 for Figs 1-4 (section II.B) and Fig. 9 (section V.B), so that every special
 //! point can be set against the analytical criterion of section IV (`model::analysis`).
 //!

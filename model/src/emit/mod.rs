@@ -7,8 +7,8 @@
 //! formats it.
 //!
 //! ```
-//! // The proc-macro's expansion of the parametric functions holds det K (Eq. 27) and the
-//! // prepared form of issue 11.
+//! // The proc-macro's expansion of the parametric functions holds det K (Eq. 27) and its
+//! // prepared form.
 //! let items = model::emit::macro_items(None).to_string();
 //! assert!(items.contains("fn det_k") && items.contains("struct Prepared"));
 //! ```
@@ -196,7 +196,7 @@ pub fn macro_items(aircraft: Option<&Aircraft>) -> TokenStream {
     out
 }
 
-/// The prepared det K of the parametric derivation (issue 11).
+/// The prepared det K of the parametric derivation.
 pub fn prepared() -> Prepared {
     functions::prepared(crate::specialise::parametric())
 }
@@ -252,11 +252,15 @@ fn prepared_items(p: &Prepared, attrs: &TokenStream) -> TokenStream {
 /// The doc of the `Prepared` type, in every language.
 pub fn prepared_doc(p: &Prepared) -> Vec<String> {
     vec![
-        "det K (Eq. 27) of one aircraft and control setting, prepared for many roll rates (issue 11):".into(),
-        "`Prepared::new(k, delta_e, delta_r)` computes once everything of `det_k` that does not".into(),
-        "depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch".into(),
-        "of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is".into(),
-        "the roll-rate-dependent part of one straight-line program (model/src/emit/stage.rs), with".into(),
+        "det K (Eq. 27) of one aircraft and control setting, prepared for many roll rates:".into(),
+        "`Prepared::new(k, delta_e, delta_r)` computes once everything of `det_k` that does not"
+            .into(),
+        "depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch"
+            .into(),
+        "of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is"
+            .into(),
+        "the roll-rate-dependent part of one straight-line program (model/src/emit/stage.rs), with"
+            .into(),
         format!(
             "{} fields; per call {} operations against {} for `Prepared::new`.",
             p.new.outputs.len(),

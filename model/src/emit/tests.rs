@@ -3,8 +3,8 @@
 //! Expected values are computed here by exact rational arithmetic along a different route than
 //! the emitted f64 code: det K from the jump polynomial, `det K = jump / (d det(A)^2)`,
 //! evaluated exactly at a rational P0 and rounded once; trims from their exact numerators over
-//! det A. The paper's values (Table 1) and the independent numeric roots quoted in issue 2
-//! are checked too.
+//! det A. The paper's values (Table 1) and the roots of an independent numeric computation
+//! (continuation and eigenvalues, in `reference`) are checked too.
 
 use super::functions::{Function, Prepared};
 use super::rust::{float_literal, pretty};

@@ -1,4 +1,4 @@
-//! The Hopf polynomial `det(A)^10 Delta4` of a specialised aircraft (issue 10), in dense
+//! The Hopf polynomial `det(A)^10 Delta4` of a specialised aircraft (beyond the paper), in dense
 //! univariate arithmetic: for `analyze` at one elevator setting, and for the emitter as an
 //! exact polynomial in P0 and delta_e interpolated from such univariate ones.
 //!

@@ -3,8 +3,8 @@
 //! Sources: the paper (AIAA 2006-6267: Table 1, Figs 1-11, given there to two or three digits)
 //! and computations that share no code with `model`: the independent numeric oracle of
 //! `paper_tests` (hand-written PSS model, LU trims, scan and bisection of det J5 on its
-//! finite-difference Jacobian; `tests/tests/paper.rs` recomputes its numbers) and AUTO-07p (the
-//! Hopf points of issue 10), to the digits printed.
+//! finite-difference Jacobian; `tests/tests/paper.rs` recomputes its numbers) and an independent
+//! AUTO-07p continuation (the Hopf points of B), to the digits printed.
 //!
 //! One file, included by path wherever the numbers are needed, so that no crate under test
 //! depends on another for them: `paper_tests::reference` (tests/src/lib.rs), the unit tests and
@@ -28,6 +28,6 @@ pub const A_ZERO_SIDESLIP_DELTA_A_DEG: f64 = -8.1639;
 pub const B_DIVERGENCE_P0: [f64; 2] = [2.986460, 4.783697];
 /// Aircraft B: the divergence roll rates as Table 1 of the paper prints them, rad/s.
 pub const TABLE_1_B: [f64; 2] = [2.98, 4.78];
-/// Aircraft B: the Hopf points by AUTO-07p (issue 10): trim roll rate P0 (rad/s), aileron
-/// (deg) and the frequency omega of the imaginary pair (rad/s).
+/// Aircraft B: the Hopf points by an independent AUTO-07p continuation: trim roll rate P0
+/// (rad/s), aileron (deg) and the frequency omega of the imaginary pair (rad/s).
 pub const B_HOPF: [(f64, f64, f64); 2] = [(3.129030, -20.70, 0.8796), (4.731306, -12.71, 5.1854)];

@@ -1,4 +1,4 @@
-//! The criterion polynomials of the certified route (issue 11) as one straight-line program of
+//! The criterion polynomials of the certified route as one straight-line program of
 //! the aircraft data: the coefficients in P0 of det A, the trim numerators, the trim condition,
 //! the jump and pole polynomials and the zero-sideslip ones, built by step 8 in the ring of
 //! polynomials in P0 with coefficient nodes (the ring `jump_polynomial` is built in), every

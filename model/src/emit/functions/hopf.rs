@@ -1,5 +1,5 @@
-//! The generated functions of the Hopf criterion (issue 10): the characteristic coefficients of
-//! J5 at the trim, the fourth Hurwitz determinant and omega^2, all derived in
+//! The generated functions of the Hopf criterion (beyond the paper): the characteristic
+//! coefficients of J5 at the trim, the fourth Hurwitz determinant and omega^2, all derived in
 //! [`crate::derivation::hopf`] and emitted through the same DAG as the jump criterion.
 //!
 //! The parametric Hopf polynomial in P0 is not emitted. Fully parametric it is far too large:
@@ -46,8 +46,8 @@ pub(super) fn functions(d: &Derivation, t: bool) -> Vec<Function> {
                 &[
                     "Coefficients [c1, c2, c3, c4, c5] of the characteristic polynomial of J5 at the trim",
                     "of `p0`, `det(s I - J5) = s^5 + c1 s^4 + c2 s^3 + c3 s^2 + c4 s + c5` (c_k in 1/s^k);",
-                    "`c5 = -det J5`, the jump criterion. Beyond the paper (issue 10). c1 and c2 below (c3",
-                    "to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).",
+                    "`c5 = -det J5`, the jump criterion. Beyond the paper (the Hopf criterion). c1 and c2",
+                    "below (c3 to c5 follow from the same `det(s I - J5)`, with J5 as in [`jacobian5`]).",
                 ],
                 &[
                     ("c1", Formula::Poly(&par_coeffs[0])),
@@ -125,8 +125,8 @@ pub(crate) fn polynomial(aircraft: &Aircraft, d: &Derivation) -> Function {
     let args = vec![P0, DE, DR];
     let mut c = Ctx::new(false, &args);
     let mut doc = lines(&[
-        "The Hopf polynomial `det(A)^10 Delta4` (issue 10) of this aircraft at the trim of `p0`",
-        "(1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times",
+        "The Hopf polynomial `det(A)^10 Delta4` (beyond the paper) of this aircraft at the trim of",
+        "`p0` (1/s^10 times det A's units to the tenth): det A (Eq. 4) to the tenth times",
         "[`hurwitz_delta4`], so its sign is that of Delta4 wherever det A != 0. Its real roots",
         "are the Hopf points (where [`hopf_omega_squared`] > 0), the neutral saddles (omega^2 < 0)",
         "and the roots of det A (the divergence roll rates).",

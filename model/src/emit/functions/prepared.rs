@@ -1,4 +1,4 @@
-//! `Prepared` (issue 11): det K at the trim of a roll rate, on the trim branch of `det_k`
+//! `Prepared`: det K at the trim of a roll rate, on the trim branch of `det_k`
 //! (branch 0, with aileron yaw too), with everything that depends only on the aircraft and the
 //! controls computed once by `Prepared::new` and only the roll-rate-dependent rest per call.
 //!

@@ -1,4 +1,4 @@
-//! The LaTeX section of the Hopf criterion (issue 10): the characteristic polynomial of J5,
+//! The LaTeX section of the Hopf criterion (beyond the paper): the characteristic polynomial of J5,
 //! Orlando's formula for the fourth Hurwitz determinant and the omega^2 expression, each typeset
 //! from [`crate::derivation::hopf`].
 

@@ -44,6 +44,16 @@ fn bad_uncertainty_entries_exit_2_naming_file_line_and_key() {
         ("l_p = true", "half-width"),
         ("n_beta = \"1e310%\"", "finite doubles"),
         ("n_beta = [3.5, 1.7976931348623158e308]", "finite doubles"),
+        (
+            "l_p = \"1e300%\"",
+            "1000 times the largest nominal derivative",
+        ),
+        ("l_p = 1e308", "1000 times the largest nominal derivative"),
+        ("l_p = \"5%%\"", "one number followed by exactly one `%`"),
+        (
+            "l_p = \"5% junk\"",
+            "one number followed by exactly one `%`",
+        ),
     ];
     for (i, (entry, needle)) in cases.iter().enumerate() {
         let path = aircraft_a_with(
@@ -310,6 +320,29 @@ fn clear_json_is_the_same_bytes_alone_and_beside_seven_copies() {
                 String::from_utf8_lossy(&out.stdout),
                 String::from_utf8_lossy(&alone.stdout)
             );
+        }
+    }
+}
+
+/// A coefficient's interval is refused at load time, naming the coefficient and its line, when
+/// a derivative it moves leaves 1000 times the largest nominal derivative magnitude somewhere in
+/// the box: a coefficient that scales one derivative (ixz = 0) and one that moves several
+/// (ixz != 0) alike.
+#[test]
+fn oversized_coefficient_boxes_exit_2_naming_the_coefficient_and_line() {
+    for (ixz, entry) in [("0", "Cl_p = \"1e300%\""), ("1000", "Cl_p = 1e300")] {
+        let path = body_axis_with(ixz, entry, &format!("oversized{ixz}.toml"));
+        let out = model(&["clear", path.to_str().unwrap(), "--samples", "1"]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{entry}: {err}");
+        let text = std::fs::read_to_string(&path).unwrap();
+        let line = text.lines().position(|l| l == entry).unwrap() + 1;
+        for needle in [
+            format!("oversized{ixz}.toml:{line}:"),
+            "key `uncertainty.Cl_p`".to_string(),
+            "1000 times the largest nominal derivative".to_string(),
+        ] {
+            assert!(err.contains(&needle), "{entry}: no `{needle}` in {err}");
         }
     }
 }

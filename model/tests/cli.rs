@@ -316,7 +316,11 @@ fn variant(tag: &str, replace: &[(&str, &str)]) -> (PathBuf, PathBuf) {
 #[test]
 fn degenerate_aircraft_give_errors_or_partial_reports_never_panics() {
     // C D = 0 (the P0^4 coefficient of det A): det A is only quadratic in P0.
-    let (dir, cd0) = variant("cd0", &[("D = 0.786", "D = 0.0")]);
+    // D = 0 makes E = C for a rigid body.
+    let (dir, cd0) = variant(
+        "cd0",
+        &[("D = 0.786", "D = 0.0"), ("E = 0.705", "E = 0.959")],
+    );
     let out = model(&["analyze", cd0.to_str().unwrap(), "--json"]);
     assert!(
         out.status.success(),
@@ -364,11 +368,13 @@ fn degenerate_aircraft_give_errors_or_partial_reports_never_panics() {
     );
     assert!(md.contains("fig01_bifurcation.png"));
 
-    // No roll damping, stiffness or coupling: det J5 vanishes along the whole trim curve.
+    // No roll damping, stiffness or coupling: det J5 vanishes along the whole trim curve. (E = 0
+    // needs C = D for a rigid body.)
     let (dir3, flat) = variant(
         "flat",
         &[
             ("E = 0.705", "E = 0.0"),
+            ("C = 0.959", "C = 0.786"),
             ("l_p = -21.7529", "l_p = 0.0"),
             ("l_r = 1.5207", "l_r = 0.0"),
             ("l_beta = -110.45", "l_beta = 0.0"),
@@ -648,7 +654,15 @@ fn names_are_escaped_and_unknown_names_get_the_built_ins() {
             "name = \"Evil\\u001b[31m red\\u0007\"",
         )],
     );
+    // A name with control characters is refused, naming the key.
     let out = model(&["analyze", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(stderr(&out).contains("key `name`"), "{}", stderr(&out));
+    // A file without a name is named by its file name, printed escaped.
+    let text = std::fs::read_to_string(repo("aircraft/a.toml")).unwrap();
+    let unnamed = dir.join("Evil\u{1b}[31m red\u{7}.toml");
+    std::fs::write(&unnamed, text.replace("name = \"Aircraft A\"\n", "")).unwrap();
+    let out = model(&["analyze", unnamed.to_str().unwrap()]);
     assert!(out.status.success(), "{}", stderr(&out));
     assert!(!out.stdout.contains(&0x1b) && !out.stdout.contains(&0x07));
     assert!(String::from_utf8_lossy(&out.stdout).contains("Evil\\u{1b}[31m red\\u{7}"));

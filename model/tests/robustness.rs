@@ -516,3 +516,30 @@ fn analyze_ends_on_degenerate_aircraft() {
     assert_eq!(ok + refused, cases as usize, "every degenerate file parses");
     println!("analyze: {cases} degenerate aircraft ({ok} analysed, {refused} refused)");
 }
+
+/// The inertia coefficients of random rigid bodies (principal moments that satisfy the
+/// triangle inequalities), rounded to three decimals as in the paper's Table A.1, always load:
+/// rounding never takes them beyond the loader's tolerance for C, D, E of one body.
+#[test]
+fn rounded_inertia_coefficients_of_rigid_bodies_load() {
+    let cases = 1000;
+    let a = shipped("a.toml");
+    let body = (0.01..10.0f64, 0.01..10.0f64, 0.0..=1.0f64).prop_map(|(ix, iy, t)| {
+        let iz = (ix - iy).abs() + t * (ix + iy - (ix - iy).abs());
+        (ix, iy, iz)
+    });
+    runner(cases)
+        .run(&body, |(ix, iy, iz)| {
+            let (c, d, e) = ((iz - ix) / iy, (iy - ix) / iz, (iz - iy) / ix);
+            let text = a
+                .replacen("C = 0.959", &format!("C = {c:.3}"), 1)
+                .replacen("D = 0.786", &format!("D = {d:.3}"), 1)
+                .replacen("E = 0.705", &format!("E = {e:.3}"), 1);
+            if let Err(err) = parse(&text, "rounded.toml") {
+                prop_assert!(false, "ix {ix}, iy {iy}, iz {iz}: {err}");
+            }
+            Ok(())
+        })
+        .unwrap();
+    println!("inertia: {cases} rounded rigid bodies");
+}

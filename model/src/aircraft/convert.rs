@@ -1,5 +1,5 @@
 //! Nondimensional body-axis coefficients to the dimensional principal-axis derivatives of the
-//! model (issue 8 §2; the formulas are in `docs/nondimensional.md`).
+//! model (the formulas are in `docs/nondimensional.md`).
 //!
 //! Engineers hold coefficients per rad in body axes (DATCOM, wind tunnel, CFD), a product of
 //! inertia `ixz`, a flight condition and a geometry; the PSS model of the paper wants dimensional
@@ -939,8 +939,8 @@ Cn_delta_r = -0.05
     fn conversions_beyond_f64_are_refused_and_nothing_panics() {
         err(
             &body("mass = 10000", "mass = 1e-310"), // z_alpha = -6000 / m = -6e313
-            15,
-            &["derivatives.z_alpha (converted)", "range of f64"],
+            6,
+            &["key `geometry.mass`", "rho V S / (2 m)", "overflows"],
         );
         // principal axes at 45 deg (ix = iz), and every prefix of two files: no panic
         let _ = parse(
@@ -952,6 +952,54 @@ Cn_delta_r = -0.05
                 let _ = parse(&text[..i], FILE);
             }
         }
+    }
+
+    #[test]
+    fn a_flight_condition_that_makes_the_derivatives_underflow_names_its_key() {
+        // g/V = 9.8e320 leaves f64 before any derivative is computed
+        let e = err(
+            &body("speed = 100", "speed = 1e-320"),
+            3,
+            &["key `flight.speed`", "`1e-320`"],
+        );
+        assert!(!e.to_string().contains("Cl_delta_a"), "{e}");
+        // rho V^2 / 2 = 6e-321: every static lateral derivative underflows
+        err(
+            &body("speed = 100", "speed = 1e-160"),
+            3,
+            &[
+                "key `flight.speed`",
+                "rho V^2 S b / (2 ix')",
+                "underflows",
+                "`1e-160`",
+            ],
+        );
+        err(
+            &body("density = 1.2", "density = 1e-320"),
+            4,
+            &["key `flight.density`", "rho V S / (2 m)", "underflows"],
+        );
+    }
+
+    #[test]
+    fn geometry_inertia_and_coefficients_that_take_a_derivative_beyond_f64_name_their_key() {
+        // l_p per unit Cl_p = rho V S b^2 / (4 ix') = 1.2e601
+        err(
+            &body("span = 10", "span = 1e300"),
+            8,
+            &["key `geometry.span`", "rho V S b^2 / (4 ix')", "overflows"],
+        );
+        let tiny = body(
+            "ix = 10000\niy = 40000\niz = 50000",
+            "ix = 1e-316\niy = 4e-316\niz = 5e-316",
+        );
+        err(&tiny, 11, &["key `inertia.ix`", "overflows"]);
+        // l_p = 6 Cl_p
+        err(
+            &body("Cl_p = -0.4", "Cl_p = 1e308"),
+            19,
+            &["key `coefficients.Cl_p`", "l_p", "range of f64"],
+        );
     }
 
     #[test]

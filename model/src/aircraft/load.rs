@@ -25,8 +25,11 @@
 //! Every number enters as the exact rational of the decimal literal the user wrote (the literal
 //! text comes from `toml_edit`'s spans, never from an f64); a string `"p/q"` is the exact fraction
 //! p/q (what `convert` writes where a value is not a terminating decimal). `C = (iz - ix)/iy`,
-//! `D = (iy - ix)/iz` and `E = (iz - iy)/ix` are computed in exact rational arithmetic. Every error
-//! names the file, the line and column, the key with its table, and what was expected.
+//! `D = (iy - ix)/iz` and `E = (iz - iy)/ix` are computed in exact rational arithmetic; given
+//! C, D, E must be those of one rigid body to within the rounding of tabled data (`inertia.rs`).
+//! A nondimensional file's flight condition, geometry and inertia must keep every conversion
+//! factor within the normal range of f64 (`scale.rs`). Every error names the file, the line and
+//! column, the key with its table, and what was expected.
 
 use super::convert::{self, BodyAxisInput, Coefficient, Density};
 use super::{
@@ -41,7 +44,11 @@ use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
+mod inertia;
+mod scale;
 mod uncertainty;
+
+use inertia::INERTIA_TOLERANCE;
 
 /// Where in an aircraft file an error was found (1-based line and column, in characters).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -225,6 +232,20 @@ pub enum AircraftError {
         /// Which condition fails, with the principal moments.
         problem: String,
     },
+    /// Inertia coefficients `C`, `D`, `E` that no rigid body has, not even to within the
+    /// rounding of tabled data (see `load/inertia.rs`).
+    #[error(
+        "{at}: table `[inertia]`: {problem}; expected `C`, `D`, `E` each within \
+         {INERTIA_TOLERANCE} of those of one rigid body (C = (iz - ix)/iy and D = (iy - ix)/iz \
+         fix iy/ix = (1 + D)/(1 - C D) and iz/ix = (1 + C)/(1 - C D), and so E; data rounded to \
+         three decimals, as in Table A.1, are within it), or the moments `ix`, `iy`, `iz`"
+    )]
+    InconsistentInertia {
+        /// The key of the coefficient that does not fit (`E`, or `D` for C = D = 1).
+        at: Location,
+        /// The coefficients as written and what C and D imply.
+        problem: String,
+    },
     /// A flight speed that is zero or negative.
     #[error("{at}: key `{key}`: expected a speed in m/s > 0, found `{value}`")]
     InvalidSpeed {
@@ -273,6 +294,7 @@ impl AircraftError {
             | AircraftError::InertiaSet { at, .. }
             | AircraftError::NonPositiveInertia { at, .. }
             | AircraftError::UnphysicalInertia { at, .. }
+            | AircraftError::InconsistentInertia { at, .. }
             | AircraftError::InvalidSpeed { at, .. }
             | AircraftError::MixedFormats { at, .. }
             | AircraftError::AlreadyDimensional { at } => Some(at),
@@ -324,6 +346,14 @@ fn read(path: &Path) -> Result<String, AircraftError> {
     })
 }
 
+/// The four tables of a nondimensional body-axis file.
+struct BodyAxisTables<'t, 'n> {
+    flight: &'t Table<'n>,
+    geometry: &'t Table<'n>,
+    inertia: &'t Table<'n>,
+    coefficients: &'t Table<'n>,
+}
+
 /// A body-axis file: the aircraft and the conversion it came from (for `convert`).
 struct BodyAxis {
     aircraft: Aircraft,
@@ -348,6 +378,17 @@ fn read_document(text: &str, file: &str) -> Result<Parsed, AircraftError> {
     for (key, value) in &entries {
         match key.name.as_str() {
             "name" => match &value.kind {
+                Kind::String(s) if s.chars().any(char::is_control) => {
+                    return Err(AircraftError::InvalidValue {
+                        at: cx.at_value(key, value),
+                        key: "name".to_string(),
+                        expected: "a name without control characters (written or escaped, \
+                                   such as `\\t`, `\\n` or `\\u001b`: a name is printed in \
+                                   reports and on terminals)"
+                            .to_string(),
+                        value: shorten(&super::shown(s)),
+                    })
+                }
                 Kind::String(s) if !s.trim().is_empty() => name = Some(s.clone()),
                 Kind::String(_) => {
                     return Err(AircraftError::WrongType {
@@ -414,13 +455,15 @@ fn read_document(text: &str, file: &str) -> Result<Parsed, AircraftError> {
                 .map(|(_, t)| t)
                 .ok_or_else(|| missing(t, format!("`[{t}]` with keys {}", list(&keys_of(t)))))
         };
-        let flight = table("flight")?;
-        let geometry = table("geometry")?;
-        let inertia = table("inertia")?;
-        let coefficients = table("coefficients")?;
-        let input = cx.body_axis(flight, geometry, inertia, coefficients)?;
+        let tables = BodyAxisTables {
+            flight: table("flight")?,
+            geometry: table("geometry")?,
+            inertia: table("inertia")?,
+            coefficients: table("coefficients")?,
+        };
+        let input = cx.body_axis(&tables)?;
         let converted = convert::convert(&input);
-        let aircraft = cx.body_axis_aircraft(name, &converted, inertia, coefficients)?;
+        let aircraft = cx.body_axis_aircraft(name, &input, &converted, &tables)?;
         let uncertainty = match find("uncertainty") {
             Some((_, t)) => cx.body_axis_uncertainty(t, &input, &converted)?,
             None => Vec::new(),
@@ -667,8 +710,8 @@ struct Cx<'a> {
 /// What a number key accepts when the literal cannot be read as a finite f64-range number.
 const F64_RANGE: &str =
     "a finite number within the range of f64 (magnitude at most 1.7976931348623157e308)";
-const I64_RANGE: &str = "an integer within the 64-bit range (magnitude at most \
-     9223372036854775807; write larger values as decimals, e.g. `1.5e20`)";
+const I64_RANGE: &str = "an integer within the 64-bit range (-9223372036854775808 to \
+     9223372036854775807; write larger magnitudes as decimals, e.g. `1.5e20`)";
 
 impl Cx<'_> {
     fn at(&self, span: Option<&Range<usize>>) -> Location {
@@ -725,9 +768,13 @@ impl Cx<'_> {
     fn syntax_error(&self, e: &toml_edit::TomlError) -> AircraftError {
         let message = one_line(e.message());
         let span = e.span();
-        let number_message = ["number too large", "invalid floating-point number"]
-            .iter()
-            .any(|m| message.contains(m));
+        let number_message = [
+            "number too large",
+            "number too small",
+            "invalid floating-point number",
+        ]
+        .iter()
+        .any(|m| message.contains(m));
         if let (true, Some(span)) = (number_message, span.as_ref()) {
             let start = span.start.min(self.text.len());
             let rest = self.text.get(start..).unwrap_or("");
@@ -1045,7 +1092,10 @@ impl Cx<'_> {
             out.push(n.exact.clone());
         }
         match out.as_slice() {
-            [c, d, e] if moments.is_empty() => Ok(vec![c.clone(), d.clone(), e.clone()]),
+            [c, d, e] if moments.is_empty() => {
+                self.one_rigid_body(table, given)?;
+                Ok(vec![c.clone(), d.clone(), e.clone()])
+            }
             [ix, iy, iz] => {
                 for (a, b, c, text) in [
                     (ix, iy, iz, "ix + iy < iz"),
@@ -1129,7 +1179,32 @@ impl Cx<'_> {
                 value: n.written,
             });
         }
+        self.gravity_term(table, &(key, value), &n)?;
         Ok(n.float)
+    }
+
+    /// The speed `n` of `entry`, refused when the gravity term g/V of the 7th-order model is
+    /// not a finite double (a speed below 5.5e-308 m/s, or one that rounds to 0).
+    fn gravity_term(
+        &self,
+        table: &Table<'_>,
+        entry: &(&Key, &Node),
+        n: &Number,
+    ) -> Result<(), AircraftError> {
+        if (crate::equations::G / n.float).is_finite() {
+            return Ok(());
+        }
+        let (key, value) = entry;
+        Err(AircraftError::InvalidValue {
+            at: self.at_value(key, value),
+            key: qualified(table.name, &key.name),
+            expected: format!(
+                "a speed in m/s at which the gravity term g/V of the 7th-order model is a \
+                 finite double (about {:.1e} m/s or more)",
+                crate::equations::G / f64::MAX
+            ),
+            value: shorten(&n.written),
+        })
     }
 
     /// `[limits]`: deflection limits in degrees, each optional and > 0.
@@ -1167,13 +1242,13 @@ impl Cx<'_> {
     }
 
     /// The inputs of a nondimensional body-axis file, each checked where it is written.
-    fn body_axis(
-        &self,
-        flight: &Table<'_>,
-        geometry: &Table<'_>,
-        inertia: &Table<'_>,
-        coefficients: &Table<'_>,
-    ) -> Result<BodyAxisInput, AircraftError> {
+    fn body_axis(&self, tables: &BodyAxisTables<'_, '_>) -> Result<BodyAxisInput, AircraftError> {
+        let BodyAxisTables {
+            flight,
+            geometry,
+            inertia,
+            coefficients,
+        } = *tables;
         for k in ["C", "D", "E"] {
             if let Some((key, _)) = inertia.get(k) {
                 return Err(self.mixed(
@@ -1186,6 +1261,9 @@ impl Cx<'_> {
             }
         }
         let speed = self.required_positive(flight, "speed", "a speed in m/s > 0")?;
+        if let Some((key, value)) = flight.get("speed") {
+            self.gravity_term(flight, &(key, value), &speed)?;
+        }
         let density = match (flight.get("density"), flight.get("altitude")) {
             (Some(_), Some((key, value))) => {
                 return Err(AircraftError::InvalidValue {
@@ -1268,14 +1346,16 @@ impl Cx<'_> {
     }
 
     /// The aircraft of a converted body-axis file, refused when the principal moments are not
-    /// those of a rigid body or the aileron has no roll authority in principal axes.
+    /// those of a rigid body, a conversion factor or derivative leaves f64 (see `load/scale.rs`),
+    /// or the aileron has no roll authority in principal axes.
     fn body_axis_aircraft(
         &self,
         name: String,
+        input: &BodyAxisInput,
         converted: &convert::Converted,
-        inertia: &Table<'_>,
-        coefficients: &Table<'_>,
+        tables: &BodyAxisTables<'_, '_>,
     ) -> Result<Aircraft, AircraftError> {
+        let (inertia, coefficients) = (tables.inertia, tables.coefficients);
         let [ix, iy, iz] = &converted.principal;
         let f = rational_to_f64;
         let moments = format!(
@@ -1302,6 +1382,7 @@ impl Cx<'_> {
                 return Err(unphysical(text.to_string()));
             }
         }
+        self.conversion_factors(input, converted, tables)?;
         let l_delta_a = &converted.derivatives[Param::LDeltaA.index() - 3];
         if l_delta_a.is_zero() {
             let at = coefficients.get(Coefficient::ClDeltaA.key()).map_or_else(
@@ -1658,7 +1739,7 @@ speed = 150.0
 
     #[test]
     fn a_value_cut_off_at_the_end_of_the_file_names_its_key() {
-        // The parser stops there without a message of its own (issue 9).
+        // The parser stops there without a message of its own.
         let cut = "name = \"x\"\n[inertia]\nC = 0.9\nD = 0.7\nE = ";
         let e = err(cut, 5, &["inertia.E", "expected a number"]);
         assert!(matches!(e, AircraftError::Syntax { .. }));
@@ -1925,6 +2006,67 @@ speed = 150.0
     }
 
     #[test]
+    fn inertia_coefficients_no_rigid_body_has_are_refused() {
+        // C = D = 0 is ix = iy = iz, so E = 0.
+        let e = err(
+            &replace("C = 0.959\nD = 0.786\nE = 0.705", "C = 0\nD = 0\nE = 0.9"),
+            5,
+            &[
+                "`inertia.E` = 0.9",
+                "C and D imply E = (C - D)/(1 - C D) = 0",
+                "within 0.001 of those of one rigid body",
+            ],
+        );
+        assert!(matches!(e, AircraftError::InconsistentInertia { .. }));
+        // C = D = 1: iz = ix + iy and iy = ix + iz, so ix = 0 and E = (iz - iy)/ix is undefined.
+        let e = err(
+            &replace("C = 0.959\nD = 0.786\nE = 0.705", "C = 1\nD = 1\nE = 0.5"),
+            4,
+            &[
+                "`inertia.C` = 1 and `inertia.D` = 1",
+                "ix = 0",
+                "rigid body",
+            ],
+        );
+        assert!(matches!(e, AircraftError::InconsistentInertia { .. }));
+    }
+
+    #[test]
+    fn inertia_coefficients_within_rounding_of_a_rigid_body_are_accepted() {
+        // Table A.1's A: C and D imply E = 0.7026, E = 0.705 is within its three decimals.
+        assert!(parse(GOOD, FILE).is_ok());
+        // C = D = 0.5 imply E = 0; C, D within 0.001 reach E = 0.002/0.750001 = 0.00267, so E
+        // within 0.001 of that passes and beyond it does not.
+        let with_e = |e: &str| {
+            replace(
+                "C = 0.959\nD = 0.786\nE = 0.705",
+                &format!("C = 0.5\nD = 0.5\nE = {e}"),
+            )
+        };
+        assert!(parse(&with_e("0.0036"), FILE).is_ok());
+        assert!(parse(&with_e("-0.0036"), FILE).is_ok());
+        err(
+            &with_e("0.0037"),
+            5,
+            &["C and D imply E = (C - D)/(1 - C D) = 0"],
+        );
+        // C = D = -1 is a lamina in the y-z plane (ix = iy + iz): every E in [-1, 1] is one.
+        let lamina = replace("C = 0.959\nD = 0.786\nE = 0.705", "C = -1\nD = -1\nE = 0.3");
+        assert!(parse(&lamina, FILE).is_ok());
+    }
+
+    #[test]
+    fn a_speed_whose_g_over_v_leaves_f64_names_flight_speed() {
+        for tiny in ["1e-320", "1e-400"] {
+            err(
+                &replace("speed = 150.0", &format!("speed = {tiny}")),
+                21,
+                &["key `flight.speed`", "g/V", tiny],
+            );
+        }
+    }
+
+    #[test]
     fn speed_must_be_positive() {
         let e = err(
             &replace("speed = 150.0", "speed = 0"),
@@ -2070,7 +2212,7 @@ speed = 150.0
     }
 
     #[test]
-    fn numbers_the_parser_cannot_hold_name_their_key_issue_9() {
+    fn numbers_the_parser_cannot_hold_name_their_key() {
         let e = err(
             &replace("l_p = -21.7529", "l_p = 99999999999999999999"),
             9,
@@ -2119,7 +2261,7 @@ speed = 150.0
     }
 
     #[test]
-    fn control_characters_name_their_key_issue_9() {
+    fn control_characters_name_their_key() {
         let e = err(
             &replace("name = \"T\"", "name = \"T\0\""),
             1,
@@ -2137,6 +2279,79 @@ speed = 150.0
             7,
             &["line 7", "U+001B (ESC)"],
         );
+    }
+
+    #[test]
+    fn an_integer_below_i64_names_its_key_and_range_as_one_above_does() {
+        let below = err(
+            &replace("l_beta = -110.45", "l_beta = -9223372036854775809"),
+            11,
+            &[
+                "key `derivatives.l_beta`",
+                "expected an integer within the 64-bit range (-9223372036854775808 to \
+                 9223372036854775807",
+                "found `-9223372036854775809`",
+            ],
+        );
+        let above = err(
+            &replace("l_beta = -110.45", "l_beta = 9223372036854775808"),
+            11,
+            &["key `derivatives.l_beta`"],
+        );
+        let parts = |e: &AircraftError| match e {
+            AircraftError::InvalidValue {
+                at, key, expected, ..
+            } => Some((at.clone(), key.clone(), expected.clone())),
+            _ => None,
+        };
+        assert!(parts(&below).is_some(), "{below}");
+        assert_eq!(parts(&below), parts(&above));
+    }
+
+    #[test]
+    fn a_name_with_escaped_control_characters_is_refused() {
+        for (escaped, found) in [
+            ("Air\\u0007craft", "Air\\u{7}craft"),
+            ("Evil\\u001b[31m", "Evil\\u{1b}[31m"),
+            ("two\\nlines", "two\\nlines"),
+            ("tab\\there", "tab\\there"),
+        ] {
+            let e = err(
+                &replace("name = \"T\"", &format!("name = \"{escaped}\"")),
+                1,
+                &[
+                    "key `name`",
+                    "expected a name without control characters",
+                    &format!("found `{found}`"),
+                ],
+            );
+            assert!(matches!(e, AircraftError::InvalidValue { .. }));
+        }
+    }
+
+    #[test]
+    fn a_percentage_is_one_number_and_one_percent_sign() {
+        let with = |entry: &str| format!("{GOOD}[uncertainty]\nl_p = {entry}\n");
+        let five = parse(&with("\"5%\""), FILE).unwrap().uncertainty;
+        for same in ["\" 5 % \"", "\"5 %\"", "\"+5%\""] {
+            assert_eq!(
+                parse(&with(same), FILE).unwrap().uncertainty,
+                five,
+                "{same}"
+            );
+        }
+        for bad in ["5%%", "5% junk", "%5", "5%5", "%", "5 % %"] {
+            let e = err(
+                &with(&format!("\"{bad}\"")),
+                23,
+                &[
+                    "key `uncertainty.l_p`",
+                    "one number followed by exactly one `%`",
+                    &format!("found `\"{bad}\"`"),
+                ],
+            );
+            assert!(matches!(e, AircraftError::InvalidValue { .. }));
+        }
     }
 
     #[test]

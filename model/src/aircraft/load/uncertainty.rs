@@ -9,12 +9,16 @@
 //!
 //! Keys are those of [`Param::ALL`] in a dimensional file (its `[inertia]` C, D, E and
 //! `[derivatives]`), and the `[coefficients]` keys in a nondimensional body-axis file. Every
-//! end is exact (the literals as written). Rejected, with file, line and key: an unknown key, a
-//! negative width or percentage, an empty interval (lo > hi), an interval of `l_delta_a` that
-//! contains zero, or coefficient intervals that let it reach zero (that flips the sign of the
-//! aileron authority), and an interval of C, D or E outside [-1, 1] (no rigid body has such an
-//! inertia coefficient: the triangle inequalities of the principal moments bound |C|, |D|, |E|
-//! by 1).
+//! end is exact (the literals as written). A relative width is one number followed by exactly
+//! one `%` (whitespace allowed around either). Rejected, with file, line and key: an unknown
+//! key, a string that is no such percentage, a negative width or percentage, an empty interval
+//! (lo > hi), ends beyond f64, an interval of `l_delta_a` that contains zero, or coefficient
+//! intervals that let it reach zero (that flips the sign of the aileron authority), an interval
+//! of C, D or E outside [-1, 1] (no rigid body has such an inertia coefficient: the triangle
+//! inequalities of the principal moments bound |C|, |D|, |E| by 1), and a box that takes a
+//! derivative beyond [`SANE_FACTOR`] times the largest nominal derivative magnitude ([`Sane`]).
+//! C, D and E move independently in a box: the consistency of the three (`inertia.rs`) is a
+//! condition on the nominal aircraft only.
 //!
 //! A nondimensional file's coefficient enters the model through the conversion of
 //! [`convert`](crate::aircraft::convert), which is linear in the coefficients. A coefficient that
@@ -40,6 +44,7 @@ impl Cx<'_> {
         table: &Table<'_>,
         aircraft: &Aircraft,
     ) -> Result<Vec<Uncertain>, AircraftError> {
+        let sane = Sane::of(Param::ALL.iter().skip(3).map(|p| (*p, aircraft.exact(*p))));
         let mut out = Vec::new();
         for (key, value) in table.entries {
             let param = Param::ALL
@@ -48,7 +53,7 @@ impl Cx<'_> {
                 .find(|p| p.key() == key.name)
                 .ok_or_else(|| self.unknown_uncertain(table, key, false))?;
             let (lo, hi) = self.interval(table, key, value, aircraft.exact(param))?;
-            out.push(self.checked(table, key, value, param, lo, hi)?);
+            out.push(self.checked(table, (key, value), param, (lo, hi), &sane)?);
         }
         Ok(out)
     }
@@ -63,9 +68,15 @@ impl Cx<'_> {
         input: &BodyAxisInput,
         converted: &Converted,
     ) -> Result<Vec<Uncertain>, AircraftError> {
+        let sane = Sane::of(
+            Param::ALL
+                .iter()
+                .skip(3)
+                .map(|p| (*p, converted.derivative(*p))),
+        );
         let mut out = Vec::new();
-        // The last coefficient coordinate that moves l_delta_a, for the joint check below.
-        let mut aileron: Option<(&Key, &Node)> = None;
+        // The entries of the coefficient coordinates, for the joint check below.
+        let mut coordinates: Vec<(&Key, &Node, usize)> = Vec::new();
         for (key, value) in table.entries {
             let c = Coefficient::ALL
                 .iter()
@@ -77,9 +88,7 @@ impl Cx<'_> {
             let moves = slopes(input, c);
             if moves.iter().any(|(p, _)| *p != param) {
                 // Several derivatives move together: the coordinate is the coefficient.
-                if moves.iter().any(|(p, _)| *p == Param::LDeltaA) {
-                    aileron = Some((key, value));
-                }
+                coordinates.push((key, value, out.len()));
                 out.push(Uncertain {
                     param,
                     lo,
@@ -95,48 +104,70 @@ impl Cx<'_> {
             let at = |x: &BigRational| {
                 let mut i = input.clone();
                 i.coefficients[c as usize] = x.clone();
-                convert(&i)
+                convert(&i).derivative(param).clone()
             };
-            let (at_lo, at_hi) = (at(&lo), at(&hi));
-            let (a, b) = (at_lo.derivative(param), at_hi.derivative(param));
-            let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
-            out.push(self.checked(table, key, value, param, lo.clone(), hi.clone())?);
+            let (a, b) = (at(&lo), at(&hi));
+            let ends = if a <= b { (a, b) } else { (b, a) };
+            out.push(self.checked(table, (key, value), param, ends, &sane)?);
         }
-        // The aileron authority keeps its sign over the whole box: l_delta_a's exact range,
-        // its nominal value plus each coefficient's extreme moves.
-        if let Some((key, value)) = aileron {
-            let nominal = converted.derivative(Param::LDeltaA).clone();
-            let (lo, hi) = out
-                .iter()
-                .filter_map(|u| Some((u, u.coefficient.as_ref()?)))
-                .flat_map(|(u, c)| {
-                    c.moves
-                        .iter()
-                        .filter(|(p, _)| *p == Param::LDeltaA)
-                        .map(move |(_, a)| {
-                            let (x, y) = (a * (&u.lo - &c.nominal), a * (&u.hi - &c.nominal));
-                            if x <= y {
-                                (x, y)
-                            } else {
-                                (y, x)
-                            }
-                        })
-                })
-                .fold((nominal.clone(), nominal), |(lo, hi), (x, y)| {
-                    (lo + x, hi + y)
-                });
-            if !keeps_sign(&lo, &hi) {
-                return Err(AircraftError::InvalidValue {
-                    at: self.at_value(key, value),
-                    key: qualified(table.name, &key.name),
-                    expected: "coefficient intervals that keep the sign of l_delta_a over the \
-                               box (0 inside flips the sign of the aileron authority)"
-                        .to_string(),
-                    value: format!("l_delta_a in [{}, {}]", show(&lo), show(&hi)),
-                });
-            }
+        for p in Param::ALL.iter().skip(3) {
+            self.joint_range(table, *p, &coordinates, &out, converted, &sane)?;
         }
         Ok(out)
+    }
+
+    /// The exact range of derivative `p` over the box of the coefficient coordinates (its
+    /// nominal value plus each coordinate's extreme moves), refused, at the coordinate that
+    /// moves it most, when it may make the aileron authority vanish or leaves the sane range.
+    fn joint_range(
+        &self,
+        table: &Table<'_>,
+        p: Param,
+        coordinates: &[(&Key, &Node, usize)],
+        out: &[Uncertain],
+        converted: &Converted,
+        sane: &Sane,
+    ) -> Result<(), AircraftError> {
+        let moves: Vec<(&Key, &Node, BigRational, BigRational)> = coordinates
+            .iter()
+            .filter_map(|&(key, value, i)| {
+                let u = &out[i];
+                let c = u.coefficient.as_ref()?;
+                let (_, a) = c.moves.iter().find(|(q, _)| *q == p)?;
+                let (x, y) = (a * (&u.lo - &c.nominal), a * (&u.hi - &c.nominal));
+                Some(if x <= y {
+                    (key, value, x, y)
+                } else {
+                    (key, value, y, x)
+                })
+            })
+            .collect();
+        let Some((key, value, _, _)) = moves
+            .iter()
+            .max_by(|a, b| (&a.3 - &a.2).cmp(&(&b.3 - &b.2)))
+        else {
+            return Ok(());
+        };
+        let nominal = converted.derivative(p);
+        let lo = moves.iter().fold(nominal.clone(), |s, m| s + &m.2);
+        let hi = moves.iter().fold(nominal.clone(), |s, m| s + &m.3);
+        let bad = |expected: String| AircraftError::InvalidValue {
+            at: self.at_value(key, value),
+            key: qualified(table.name, &key.name),
+            expected,
+            value: format!("{} in [{}, {}]", p.key(), show(&lo), show(&hi)),
+        };
+        if p == Param::LDeltaA && !keeps_sign(&lo, &hi) {
+            return Err(bad(
+                "coefficient intervals that keep the sign of l_delta_a over the box (0 inside \
+                 flips the sign of the aileron authority)"
+                    .to_string(),
+            ));
+        }
+        if !sane.contains(&lo, &hi) {
+            return Err(bad(sane.expected()));
+        }
+        Ok(())
     }
 
     /// The interval `[lo, hi]` written for `key`: a relative `"10%"` or an absolute half-width
@@ -155,12 +186,19 @@ impl Cx<'_> {
             value: shorten(&written),
         };
         let (lo, hi) = match &value.kind {
-            Kind::String(s) if s.trim().ends_with('%') => {
-                let pct = s.trim().trim_end_matches('%').trim();
-                let r = decimal_to_rational(pct)
-                    .ok_or_else(|| bad("a relative uncertainty such as \"10%\"", s.clone()))?;
+            Kind::String(s) if s.contains('%') => {
+                let r = percentage(s).ok_or_else(|| {
+                    bad(
+                        "a relative uncertainty: one number followed by exactly one `%` \
+                         (whitespace allowed around either), e.g. \"10%\"",
+                        self.written(value),
+                    )
+                })?;
                 if r.is_negative() {
-                    return Err(bad("a percentage >= 0 (a negative width)", s.clone()));
+                    return Err(bad(
+                        "a percentage >= 0 (a negative width)",
+                        self.written(value),
+                    ));
                 }
                 let half = nominal.abs() * r / BigRational::from_integer(BigInt::from(100));
                 (nominal - &half, nominal + &half)
@@ -214,30 +252,37 @@ impl Cx<'_> {
         Ok((lo, hi))
     }
 
-    /// `param` in `[lo, hi]`, or the error (at `key`) for an interval that flips the sign of
-    /// l_delta_a or makes the inertia unphysical.
+    /// `param` in `[lo, hi]`, or the error (at `key`) for an interval that leaves the sane
+    /// range, flips the sign of l_delta_a or makes the inertia unphysical.
     fn checked(
         &self,
         table: &Table<'_>,
-        key: &Key,
-        value: &Node,
+        (key, value): (&Key, &Node),
         param: Param,
-        lo: BigRational,
-        hi: BigRational,
+        (lo, hi): (BigRational, BigRational),
+        sane: &Sane,
     ) -> Result<Uncertain, AircraftError> {
         let bad = |expected: &str| AircraftError::InvalidValue {
             at: self.at_value(key, value),
             key: qualified(table.name, &key.name),
             expected: expected.to_string(),
-            value: format!("[{}, {}]", show(&lo), show(&hi)),
+            value: if key.name == param.key() {
+                format!("[{}, {}]", show(&lo), show(&hi))
+            } else {
+                format!("{} in [{}, {}]", param.key(), show(&lo), show(&hi))
+            },
         };
+        let inertia = matches!(param, Param::C | Param::D | Param::E);
+        if !inertia && !sane.contains(&lo, &hi) {
+            return Err(bad(&sane.expected()));
+        }
         if param == Param::LDeltaA && !keeps_sign(&lo, &hi) {
             return Err(bad(
                 "an interval of l_delta_a that keeps its sign (0 inside flips the sign of the \
                  aileron authority)",
             ));
         }
-        if matches!(param, Param::C | Param::D | Param::E) {
+        if inertia {
             let one = BigRational::one();
             if hi > one || lo < -one {
                 return Err(bad(
@@ -285,12 +330,73 @@ impl Cx<'_> {
     }
 }
 
+/// The number of a relative width: one number followed by exactly one `%`, whitespace allowed
+/// around either.
+fn percentage(s: &str) -> Option<BigRational> {
+    let number = s.trim().strip_suffix('%')?;
+    if number.contains('%') {
+        return None;
+    }
+    decimal_to_rational(number)
+}
+
+/// How far beyond the nominal aircraft's scale a box may take a derivative.
+const SANE_FACTOR: i64 = 1000;
+
+/// The range every derivative of a box must stay within: [`SANE_FACTOR`] times the largest
+/// magnitude among the nominal aircraft's derivatives (its scale, in its own units; nonzero,
+/// since l_delta_a is). Beyond it a box is no uncertainty of this aircraft but other aircraft,
+/// and the powers of its ends that the proof's interval arithmetic forms run out of f64 (a
+/// width of "1e300%" has finite ends, yet no proof over it means anything).
+struct Sane {
+    /// The nominal derivative of largest magnitude.
+    largest: Param,
+    /// Its magnitude.
+    magnitude: BigRational,
+}
+
+impl Sane {
+    fn of<'q>(derivatives: impl Iterator<Item = (Param, &'q BigRational)>) -> Sane {
+        let (largest, magnitude) = derivatives
+            .map(|(p, v)| (p, v.abs()))
+            .max_by(|a, b| a.1.cmp(&b.1))
+            .unwrap_or((Param::LDeltaA, BigRational::one()));
+        Sane { largest, magnitude }
+    }
+
+    fn bound(&self) -> BigRational {
+        &self.magnitude * BigRational::from_integer(BigInt::from(SANE_FACTOR))
+    }
+
+    fn contains(&self, lo: &BigRational, hi: &BigRational) -> bool {
+        let bound = self.bound();
+        -&bound <= *lo && *hi <= bound
+    }
+
+    fn expected(&self) -> String {
+        format!(
+            "a box whose derivatives stay within {SANE_FACTOR} times the largest nominal \
+             derivative magnitude (|{}| = {}: within [-{b}, {b}]), so that it is an uncertainty \
+             of this aircraft and the proof's arithmetic stays within f64",
+            self.largest.key(),
+            show(&self.magnitude),
+            b = show(&self.bound()),
+        )
+    }
+}
+
 /// Whether every value of `[lo, hi]` has the same nonzero sign (the aileron authority l_delta_a
 /// may not vanish or flip anywhere in the box).
 fn keeps_sign(lo: &BigRational, hi: &BigRational) -> bool {
     !lo.is_zero() && !hi.is_zero() && lo.is_negative() == hi.is_negative()
 }
 
+/// An end for messages: as f64, in scientific notation when its digits would be many.
 fn show(q: &BigRational) -> String {
-    format!("{}", crate::aircraft::rational_to_f64(q))
+    let x = crate::aircraft::rational_to_f64(q);
+    if x != 0.0 && !(1e-4..1e16).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
 }

@@ -61,7 +61,7 @@ fn analyze_fast(bencher: divan::Bencher, name: &str) {
 #[divan::bench(args = ["A", "B"])]
 fn critical_lean(bencher: divan::Bencher, name: &str) {
     let a = aircraft(name);
-    let bound = model::analysis::aileron_range(&a);
+    let bound = a.aileron_range();
     bencher.bench(|| {
         let a = divan::black_box(&a);
         let lift = || Values::of(a, DELTA_E, 0.0);

@@ -168,6 +168,10 @@ pub const DEFAULT_SPEED_M_S: f64 = 150.0;
 /// aerodynamics of a fighter-like aircraft are no longer trusted (stall, vortex breakdown).
 pub const VALIDITY_DEFAULT_DEG: f64 = 30.0;
 
+/// How far the primary branch is followed when the aircraft gives no aileron limit, rad: a
+/// quarter turn of the aileron, where the small-angle model has long stopped meaning anything.
+pub const DEFAULT_AILERON_RANGE: f64 = std::f64::consts::FRAC_PI_2;
+
 /// Control-surface deflection limits from the optional `[limits]` table, degrees (None: no limit).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Limits {
@@ -277,6 +281,14 @@ impl Uncertain {
 }
 
 impl Aircraft {
+    /// How far the primary branch is followed: the aileron limit of `[limits]`, at least
+    /// [`DEFAULT_AILERON_RANGE`], rad.
+    pub fn aileron_range(&self) -> f64 {
+        self.limits.aileron_deg.map_or(DEFAULT_AILERON_RANGE, |l| {
+            l.to_radians().max(DEFAULT_AILERON_RANGE)
+        })
+    }
+
     /// Whether control deflections (rad) are within the `[limits]`: the aileron and elevator
     /// always, the rudder when given. `None` when the file sets none of the limits that apply.
     pub fn within_limits(&self, delta_a: f64, delta_e: f64, delta_r: Option<f64>) -> Option<bool> {

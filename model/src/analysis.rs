@@ -196,9 +196,6 @@ pub enum AnalysisError {
     },
 }
 
-/// How far the primary branch is followed when the aircraft gives no aileron limit, rad.
-pub const DEFAULT_AILERON_RANGE: f64 = std::f64::consts::FRAC_PI_2;
-
 /// Runs the analysis for one aircraft at elevator deflection `delta_e_rad`.
 pub fn analyze(aircraft: &Aircraft, delta_e_rad: f64) -> Result<Analysis, AnalysisError> {
     analyze_with(aircraft, delta_e_rad, true)
@@ -271,17 +268,6 @@ pub fn analyze_with(
     withhold_zero_sideslip(&mut analysis);
     check(&analysis)?;
     Ok(analysis)
-}
-
-/// How far the primary branch is followed: the aileron limit, at least
-/// [`DEFAULT_AILERON_RANGE`], rad.
-pub fn aileron_range(aircraft: &Aircraft) -> f64 {
-    aircraft
-        .limits
-        .aileron_deg
-        .map_or(DEFAULT_AILERON_RANGE, |l| {
-            l.to_radians().max(DEFAULT_AILERON_RANGE)
-        })
 }
 
 /// What the departure part of the analysis (Hopf points, landings, first departure) needs beyond
@@ -360,7 +346,7 @@ impl Found {
             .filter(|j| j.delta_a_rad.is_finite())
             .collect();
         let roots: Vec<(f64, f64)> = jump.iter().map(|j| (j.p0, j.delta_a_rad)).collect();
-        let bound = aileron_range(aircraft);
+        let bound = aircraft.aileron_range();
         let (critical, critical_note) =
             match primary::follow(&self.g, &self.trims[0], &self.divergence, &roots, bound) {
                 Outcome::Jump(i) => (Some(i), None),
@@ -458,7 +444,7 @@ impl Found {
             &self.divergence,
             &analysis.jump,
             &analysis.hopf,
-            aileron_range(marks.0),
+            marks.0.aileron_range(),
         );
         analysis.zero_sideslip.hopf_roll_rates =
             departure::zs_hopf_roll_rates(&d.at, &d.zs_hopf_roots, &self.zs_trims)

@@ -27,6 +27,7 @@ pub mod numeric;
 pub mod plot;
 #[cfg(feature = "cli")]
 pub mod present;
+pub mod random;
 #[allow(dead_code)]
 #[path = "../tests/support/reference.rs"]
 mod reference;

@@ -346,3 +346,62 @@ fn oversized_coefficient_boxes_exit_2_naming_the_coefficient_and_line() {
         }
     }
 }
+
+/// Any Monte Carlo sample of `samples.csv` is reproduced by `analyze` on the aircraft file
+/// with the sample's values of the `[uncertainty]` keys: the same critical jump (the Monte
+/// Carlo's certified brackets are 1e-9 relative).
+#[test]
+fn a_sample_of_samples_csv_is_reproduced_by_analyze() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    let dir = std::env::temp_dir().join(format!("model-clear-samples-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let boxed = root.join("aircraft/a_uncertain.toml");
+    let out = model(&[
+        "clear",
+        boxed.to_str().unwrap(),
+        "--samples",
+        "12",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let csv = std::fs::read_to_string(dir.join("samples.csv")).unwrap();
+    let mut rows = csv.lines();
+    let header: Vec<&str> = rows.next().unwrap().split(',').collect();
+    assert_eq!(header[..2], ["delta_e_deg", "sample"]);
+    assert_eq!(header[header.len() - 2..], ["p0_rad_s", "abs_delta_a_deg"]);
+    let keys = &header[2..header.len() - 2];
+    assert_eq!(keys, ["l_p", "n_beta", "l_beta", "m_alpha"]);
+    let nominal = std::fs::read_to_string(&boxed).unwrap();
+    let nominal = nominal.split("[uncertainty]").next().unwrap();
+    let mut checked = 0;
+    for row in rows.take(6) {
+        let cells: Vec<&str> = row.split(',').collect();
+        let mut text = nominal.to_string();
+        for (k, v) in keys.iter().zip(&cells[2..]) {
+            let line = text
+                .lines()
+                .find(|l| l.starts_with(&format!("{k} = ")))
+                .unwrap()
+                .to_string();
+            text = text.replace(&line, &format!("{k} = {v}"));
+        }
+        let file = dir.join(format!("sample-{}.toml", cells[1]));
+        std::fs::write(&file, text).unwrap();
+        let a = json(&model(&["analyze", file.to_str().unwrap(), "--json"]));
+        let want: f64 = cells[cells.len() - 2].parse().unwrap();
+        let got = a["critical"]["p0"].as_f64().unwrap();
+        assert!(
+            (got - want).abs() <= 1e-8 * want,
+            "sample {}: {got} vs {want}",
+            cells[1]
+        );
+        checked += 1;
+    }
+    assert_eq!(checked, 6);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -939,10 +939,13 @@ fn a_tiny_elevator_withholds_the_zero_sideslip_section_only() {
 }
 
 /// A clearance map over several elevator settings says on stderr, once the first is proven,
-/// how long the others will take at that pace; the result on stdout is unchanged.
+/// how long the others will take at that pace, and draws a histogram for each setting beside
+/// the map; the result on stdout is the JSON array of the settings.
 #[test]
-fn a_clearance_map_says_how_long_it_will_take() {
+fn a_clearance_map_says_how_long_it_will_take_and_draws_every_setting() {
     let file = repo("aircraft/a_uncertain.toml");
+    let dir = scratch("clear-map");
+    let out_dir = dir.join("out");
     let args = [
         "clear",
         &file,
@@ -951,6 +954,8 @@ fn a_clearance_map_says_how_long_it_will_take() {
         "--samples",
         "10",
         "--json",
+        "--out",
+        out_dir.to_str().unwrap(),
     ];
     let out = model(&args);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
@@ -962,4 +967,16 @@ fn a_clearance_map_says_how_long_it_will_take() {
     );
     let runs = json(&out);
     assert_eq!(runs.as_array().map(Vec::len), Some(3), "{runs}");
+    for stem in [
+        "clearance_histogram_1",
+        "clearance_histogram_2",
+        "clearance_histogram_3",
+        "clearance_map",
+    ] {
+        let svg = std::fs::read_to_string(out_dir.join(format!("{stem}.svg"))).unwrap();
+        let doc = roxmltree::Document::parse(&svg).unwrap_or_else(|e| panic!("{stem}: {e}"));
+        assert_eq!(doc.root_element().tag_name().name(), "svg");
+    }
+    assert!(!out_dir.join("clearance_histogram.svg").exists());
+    std::fs::remove_dir_all(&dir).unwrap();
 }

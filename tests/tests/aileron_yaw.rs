@@ -346,7 +346,7 @@ fn a_branch_that_turns_goes_on_along_its_other_trim() {
     k[ix::NDA] = 40.0;
     let a = aircraft(&k, "A, n_delta_a = 40");
     let de = (-4f64).to_radians();
-    let bound = model::analysis::aileron_range(&a);
+    let bound = a.aileron_range();
     let (jump, turn) = oracle_primary(&k, de, bound, 8.0);
     let turn = turn.expect("the oracle's branch turns");
     assert!((3.8..3.95).contains(&turn), "turn at {turn}");

@@ -32,7 +32,7 @@ fn n() -> usize {
 #[test]
 fn certified_analysis_agrees_with_the_exact_path_on_random_aircraft() {
     let n = n();
-    let mut rng = Rng(2026);
+    let mut rng = Rng::new(2026);
     let (mut certified, mut fallbacks, mut refused) = (0usize, Vec::new(), 0usize);
     let mut widest = 0.0f64;
     let mut times = (0.0, 0.0);
@@ -94,7 +94,7 @@ fn certified_analysis_agrees_with_the_exact_path_on_random_aircraft() {
 
 #[test]
 fn certified_brackets_hold_the_exact_roots() {
-    let mut rng = Rng(7);
+    let mut rng = Rng::new(7);
     let de = 2f64.to_radians();
     for i in 0..40 {
         let ac = random_aircraft(&mut rng, i);
@@ -136,7 +136,7 @@ fn certified_brackets_hold_the_exact_roots() {
 /// critical jump, or says it cannot certify.
 #[test]
 fn lean_critical_route_gives_the_exact_critical_jump() {
-    let mut rng = Rng(11);
+    let mut rng = Rng::new(11);
     let (mut answered, mut total) = (0usize, 0usize);
     for i in 0..n() / 10 {
         let ac = random_aircraft(&mut rng, i);
@@ -146,7 +146,7 @@ fn lean_critical_route_gives_the_exact_critical_jump() {
         };
         total += 1;
         let v = Values::of(&ac, de, 0.0);
-        let bound = model::analysis::aileron_range(&ac);
+        let bound = ac.aileron_range();
         let Ok(lean) = model::analysis::fast::critical(&v, bound, MAX_WIDTH) else {
             continue;
         };
@@ -190,7 +190,7 @@ fn same_critical(
 /// aircraft, the varying parameters (a random handful, or all 18) taken from another.
 #[test]
 fn sampler_gives_the_exact_critical_jump_of_each_sample() {
-    let mut rng = Rng(13);
+    let mut rng = Rng::new(13);
     let (mut answered, mut total) = (0usize, 0usize);
     for i in 0..n() / 20 {
         let base = random_aircraft(&mut rng, i);
@@ -217,7 +217,7 @@ fn sampler_gives_the_exact_critical_jump_of_each_sample() {
             .iter()
             .map(|p| Values::data(&other)[p.index()])
             .collect();
-        let bound = model::analysis::aileron_range(&sample);
+        let bound = sample.aileron_range();
         let Ok(lean) = model::analysis::fast::critical(&sampler.values(&x), bound, MAX_WIDTH)
         else {
             continue;

@@ -231,7 +231,7 @@ fn a_jump_on_the_other_trim_is_never_cleared() {
     let mut on_other_trim = 0;
     for (aircraft, de_deg) in cases {
         let de = f64::to_radians(de_deg);
-        let range = model::analysis::aileron_range(&aircraft);
+        let range = aircraft.aileron_range();
         let polys = BoxPolys::new(&aircraft, &[Param::NDeltaA], de);
         let n = aircraft.value(Param::NDeltaA);
         let point = polys.lift(&[I::point(n)]);
@@ -275,7 +275,7 @@ fn the_fighters_other_trim_is_cleared_below_its_critical_jump() {
     let de = 2f64.to_radians();
     let analysis = model::analysis::analyze_with(&fighter, de, false).unwrap();
     let critical = analysis.critical.unwrap().p0;
-    let range = model::analysis::aileron_range(&fighter);
+    let range = fighter.aileron_range();
     assert!(analysis
         .jump
         .iter()
@@ -405,7 +405,7 @@ fn a_jump_on_the_other_trim_below_the_critical_jump_does_not_hold_the_proof() {
     let de = (-2f64).to_radians();
     let other = model::analysis::analyze_with(&a, de, false).unwrap();
     let critical = other.critical.as_ref().unwrap().p0;
-    let range = model::analysis::aileron_range(&a);
+    let range = a.aileron_range();
     assert!(other
         .jump
         .iter()
@@ -453,7 +453,7 @@ fn a_barrier_found_above_a_doubt_lets_the_proof_pass_the_turn() {
     // Not "not defined": the walk follows the branch past its turn to the end of the range.
     let note = nominal.critical_note.as_deref().unwrap_or_default();
     assert!(note.contains("reaches |delta_a|"), "{note}");
-    let range = model::analysis::aileron_range(&a);
+    let range = a.aileron_range();
     assert!(nominal
         .jump
         .iter()

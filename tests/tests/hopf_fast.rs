@@ -95,7 +95,7 @@ fn same_departures(e: &Analysis, f: &Analysis, w: f64) -> Result<(), String> {
 #[test]
 fn certified_full_analysis_agrees_with_the_exact_path_on_random_aircraft() {
     let n = n();
-    let mut rng = Rng(1010);
+    let mut rng = Rng::new(1010);
     let (mut certified, mut total, mut fallbacks) = (0usize, 0usize, Vec::new());
     let (mut hopf_points, mut uncovered) = (0usize, 0usize);
     for i in 0..n {
@@ -164,7 +164,7 @@ fn certified_full_analysis_agrees_with_the_exact_path_on_random_aircraft() {
 #[test]
 fn trim_factor_powers_divide_the_cleared_characteristic_coefficients() {
     let s = symbols();
-    let mut rng = Rng(99);
+    let mut rng = Rng::new(99);
     let mut sample = vec![Aircraft::a(), Aircraft::b()];
     sample.extend((0..size(6, 40)).map(|i| without_aileron_yaw(random_aircraft(&mut rng, i))));
     let de = 2f64.to_radians();

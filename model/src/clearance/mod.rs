@@ -273,26 +273,8 @@ fn case(a: &Aircraft, params: &[Uncertain], x: &[BigRational], j: &JumpPoint) ->
     }
 }
 
-/// A small deterministic generator (SplitMix64) for seeded samples.
-#[derive(Clone, Debug)]
-pub struct Rng(u64);
-
-impl Rng {
-    /// A generator from a seed.
-    pub fn new(seed: u64) -> Rng {
-        Rng(seed)
-    }
-
-    /// Uniform in [0, 1).
-    pub fn unit(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
+/// The seeded generator of the samples and candidates.
+pub use crate::random::Rng;
 
 /// A uniform random aircraft of the box.
 pub fn sample(base: &Aircraft, params: &[Uncertain], rng: &mut Rng) -> Aircraft {
@@ -433,7 +415,7 @@ impl Worst<'_> {
         let x = exact_coordinates(self.params, x);
         let aircraft = at(self.base, self.params, &x);
         let lift = || crate::certified::Values::of(&aircraft, self.delta_e_rad, 0.0);
-        let bound = crate::analysis::aileron_range(&aircraft);
+        let bound = aircraft.aileron_range();
         let data = crate::certified::Values::data(&aircraft);
         let width = crate::analysis::fast::MAX_WIDTH;
         let (p0, da) =
@@ -997,7 +979,7 @@ pub fn clear(
     let min_step = settings.tolerance_p0 / 8.0;
     let mut leaves = vec![Leaf::new(&polys, &theta0, first_step)];
     let range = if polys.symmetric {
-        crate::analysis::aileron_range(aircraft)
+        aircraft.aileron_range()
     } else {
         f64::INFINITY
     };
@@ -1289,7 +1271,7 @@ pub(crate) mod tests {
             limit: 1.8,
             min_step: 1e-4,
             first_step: 0.05,
-            range: crate::analysis::aileron_range(&a),
+            range: a.aileron_range(),
         };
         let (mut kept, mut dropped) = (Leaf::new(&polys, &theta0, 0.05), None);
         for slab in 0..12 {

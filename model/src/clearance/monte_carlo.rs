@@ -47,6 +47,10 @@ pub struct MonteCarlo {
     /// Every sample, in order.
     #[serde(skip)]
     pub values: Vec<Sample>,
+    /// Every sample's box coordinates (one per `[uncertainty]` entry, in its order), in the
+    /// order of `values`: with them `samples.csv` lets `analyze` reproduce any sample.
+    #[serde(skip)]
+    pub draws: Vec<Vec<f64>>,
     /// The box coordinates (one per `[uncertainty]` entry) of the sample with the lowest
     /// critical roll rate and of the one with the lowest |delta_a| (once when they are the
     /// same), if any sample has a critical jump: candidates for the proof's worst case
@@ -87,7 +91,7 @@ pub fn run(
                 .collect()
         })
         .collect();
-    let bound = crate::analysis::aileron_range(aircraft);
+    let bound = aircraft.aileron_range();
     // The parameters the coordinates move, each once (the sampler's varying data), and for
     // each coordinate the indices of those it moves.
     let coordinates: Vec<Coordinate> = params.iter().map(Coordinate::of).collect();
@@ -201,6 +205,7 @@ pub fn run(
         exact_fallbacks,
         values,
         lowest_at,
+        draws,
     }
 }
 

@@ -111,27 +111,44 @@ pub fn markdown(runs: &[Run]) -> String {
     s
 }
 
-/// The CSV of the Monte Carlo samples (every run).
+/// The CSV of the Monte Carlo samples (every run): each sample's box coordinates by their
+/// `[uncertainty]` keys, written to the last digit, so that the aircraft file with those values
+/// analyses to the sample's critical jump.
 pub fn samples_csv(runs: &[Run]) -> String {
-    let mut s = String::from("delta_e_deg,sample,p0_rad_s,abs_delta_a_deg\n");
+    // Every run is of the same box: the coordinates' keys from the first.
+    let keys: Vec<&str> = runs
+        .first()
+        .map(|r| {
+            r.clearance
+                .box_
+                .iter()
+                .map(|(k, _, _)| k.as_str())
+                .collect()
+        })
+        .unwrap_or_default();
+    let mut s = String::from("delta_e_deg,sample,");
+    for k in &keys {
+        s += &format!("{k},");
+    }
+    s += "p0_rad_s,abs_delta_a_deg\n";
     for r in runs {
+        let draws = &r.monte_carlo.draws;
         for (i, v) in r.monte_carlo.values.iter().enumerate() {
             let o = |x: Option<f64>| x.map_or(String::new(), |v| v.to_string());
-            s += &format!(
-                "{},{},{},{}\n",
-                r.clearance.delta_e_rad.to_degrees(),
-                i,
-                o(v.p0),
-                o(v.abs_delta_a_deg)
-            );
+            s += &format!("{},{i},", r.clearance.delta_e_rad.to_degrees());
+            for x in draws.get(i).into_iter().flatten() {
+                s += &format!("{x:?},");
+            }
+            s += &format!("{},{}\n", o(v.p0), o(v.abs_delta_a_deg));
         }
     }
     s
 }
 
 /// Writes the folder of `model clear --out DIR`: `summary.json` (the JSON `json` printed),
-/// `summary.md`, `samples.csv`, the first setting's histogram and, for several settings, the
-/// clearance map (each figure as SVG, PNG and CSV). Every file is written whole or not at all;
+/// `summary.md`, `samples.csv`, the histogram (`clearance_histogram`; for several elevator
+/// settings one per setting, `clearance_histogram_K` numbered from 1 in their order, and the
+/// clearance map), each figure as SVG, PNG and CSV. Every file is written whole or not at all;
 /// the error names the file that failed and why.
 pub fn write_folder(dir: &std::path::Path, runs: &[Run], json: &str) -> Result<(), String> {
     let write = |name: &str, contents: String| {
@@ -144,9 +161,14 @@ pub fn write_folder(dir: &std::path::Path, runs: &[Run], json: &str) -> Result<(
     write("summary.json", format!("{json}\n"))?;
     write("summary.md", markdown(runs))?;
     write("samples.csv", samples_csv(runs))?;
-    let mut figures = vec![("clearance_histogram", histogram(&runs[0]))];
-    if runs.len() > 1 {
-        figures.push(("clearance_map", map(runs)));
+    let mut figures = Vec::new();
+    if let [run] = runs {
+        figures.push(("clearance_histogram".to_string(), histogram(run)));
+    } else {
+        for (k, run) in runs.iter().enumerate() {
+            figures.push((format!("clearance_histogram_{}", k + 1), histogram(run)));
+        }
+        figures.push(("clearance_map".to_string(), map(runs)));
     }
     let style = crate::plot::PlotStyle::default();
     for (stem, f) in figures {

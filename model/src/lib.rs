@@ -20,13 +20,13 @@ pub mod emit;
 pub mod equations;
 pub mod files;
 pub mod interval;
-pub mod numeric;
 // The tests' reference numbers (one file, shared with the other crates' tests): for the unit
 // tests and for the generator of `generated/tests/values.rs` in `emit`.
 #[cfg(feature = "cli")]
 pub mod plot;
 #[cfg(feature = "cli")]
 pub mod present;
+pub mod pss_model;
 pub mod random;
 #[allow(dead_code)]
 #[path = "../tests/support/reference.rs"]

@@ -48,7 +48,7 @@ pub use trim::{Equilibrium, RudderSchedule, Trims};
 
 use crate::aircraft::Aircraft;
 use crate::equations::gravity_and_attitude;
-use crate::numeric::{Controls, PssModel};
+use crate::pss_model::{Controls, PssModel};
 use ode_solvers::continuous_output_model::ContinuousOutputModel;
 use ode_solvers::{Dopri5, SVector, System};
 use serde::Serialize;

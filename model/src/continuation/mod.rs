@@ -5,7 +5,7 @@
 //! * Equilibria of the PSS model of Appendix A.2, `f(x, u) = 0` with `x = [alpha, beta, p, q,
 //!   r]`, are continued in one control ([`ContinuationParam`]: delta_a by default) by
 //!   pseudo-arclength continuation with an adaptive step and a Newton corrector on the bordered
-//!   system, using the model's symbolic Jacobian ([`crate::numeric::PssModel`]); no finite
+//!   system, using the model's symbolic Jacobian ([`crate::pss_model::PssModel`]); no finite
 //!   differences anywhere.
 //! * Stability of every point from the eigenvalues of J5. Folds (saddle-nodes: the jump points of
 //!   section IV, Figs 1, 2, 7, 8), Hopf points (with their frequency; the filled squares of
@@ -48,7 +48,7 @@ mod seeds;
 mod systems;
 
 use crate::aircraft::Aircraft;
-use crate::numeric::{Controls, PssModel};
+use crate::pss_model::{Controls, PssModel};
 use engine::{End, Engine, Found, Half, Kind, Limits, Node, System, Verdict, V6};
 use seeds::{Sections, SeedBook};
 use serde::ser::{SerializeMap, SerializeSeq};

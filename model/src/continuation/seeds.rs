@@ -22,7 +22,7 @@
 use super::engine::V6;
 use super::systems::with_control;
 use super::ContinuationError;
-use crate::numeric::{Controls, PssModel};
+use crate::pss_model::{Controls, PssModel};
 use nalgebra::{Matrix5, SMatrix, Vector5, Vector6};
 
 type M56 = SMatrix<f64, 5, 6>;

@@ -8,7 +8,7 @@
 //! delta_r from the yaw equation), differentiated in P0 exactly through the same linear system.
 
 use super::engine::{Eval, System, V6};
-use crate::numeric::{Controls, PssModel};
+use crate::pss_model::{Controls, PssModel};
 use nalgebra::{Matrix3, Matrix5, Vector3, Vector5};
 
 fn mat5(a: &[[f64; 5]; 5]) -> Matrix5<f64> {

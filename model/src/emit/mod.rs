@@ -14,7 +14,7 @@
 //! ```
 
 pub(crate) mod c;
-pub(crate) mod c_test;
+pub(crate) mod c_self_test;
 pub(crate) mod cross;
 pub(crate) mod expr;
 pub(crate) mod formulas;
@@ -481,11 +481,11 @@ pub fn generate() -> Result<Vec<Output>, EmitError> {
     });
     outputs.push(Output {
         path: "generated/tests/values.rs".into(),
-        contents: tests::values()?,
+        contents: generated_tests::values()?,
     });
     outputs.push(Output {
         path: "generated/tests/compiled.rs".into(),
-        contents: tests::compiled(&param, &prepared, &builtins)?,
+        contents: generated_tests::compiled(&param, &prepared, &builtins)?,
     });
     outputs.push(Output {
         path: format!("generated/c/{}", c::HEADER).into(),
@@ -493,7 +493,7 @@ pub fn generate() -> Result<Vec<Output>, EmitError> {
     });
     outputs.push(Output {
         path: "generated/c/test_roll_criterion.c".into(),
-        contents: c_test::self_test(&param, &prepared, &builtins),
+        contents: c_self_test::self_test(&param, &prepared, &builtins),
     });
     outputs.push(Output {
         path: "tests/tests/c_header/calls.rs".into(),
@@ -506,7 +506,7 @@ pub fn generate() -> Result<Vec<Output>, EmitError> {
     Ok(outputs)
 }
 
-mod tests;
+mod generated_tests;
 
 fn cargo_toml() -> String {
     format!(

@@ -38,7 +38,7 @@ use crate::aircraft::Aircraft;
 use crate::analysis::{analyze, Analysis};
 use crate::derivation::Derivation;
 use crate::equations::symbols;
-use crate::numeric::PssModel;
+use crate::pss_model::PssModel;
 use crate::roots::{positive_roots, UPoly};
 use crate::simulation::{bisect, Equilibrium, RudderSchedule, Trims};
 use crate::specialise::{cancel, in_aileron, specialisation, univariate, InAileron};

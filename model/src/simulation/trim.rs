@@ -13,7 +13,7 @@ use crate::aircraft::Aircraft;
 use crate::algebra::Poly;
 use crate::derivation::Derivation;
 use crate::equations::symbols;
-use crate::numeric::{Controls, PssModel};
+use crate::pss_model::{Controls, PssModel};
 use crate::roots::F64Poly;
 use crate::specialise::{exact_f64, specialisation, univariate};
 

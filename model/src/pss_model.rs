@@ -8,7 +8,7 @@
 //!
 //! ```
 //! use model::aircraft::Aircraft;
-//! use model::numeric::{Controls, PssModel};
+//! use model::pss_model::{Controls, PssModel};
 //!
 //! let m = PssModel::new(&Aircraft::a());
 //! let u = Controls { delta_a: 0.0, delta_e: 0.0, delta_r: 0.0 };

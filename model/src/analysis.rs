@@ -470,12 +470,8 @@ pub(crate) fn withhold_zero_sideslip(a: &mut Analysis) {
 /// The checks of the zero-sideslip section (see [`check`]).
 fn check_zero_sideslip(z: &ZeroSideslip) -> Result<(), AnalysisError> {
     let departures: Vec<f64> = z.departure.iter().map(|d| d.p0).collect();
-    if let Some(w) = departures.windows(2).find(|w| w[0] == w[1]) {
-        return Err(AnalysisError::Indistinct {
-            what: "two zero-sideslip departure roots".to_string(),
-            p0: w[0],
-            ulp: f64::from_bits(w[0].to_bits() + 1) - w[0],
-        });
+    if let Some(x) = first_repeat(&departures) {
+        return Err(indistinct("two zero-sideslip departure roots", x));
     }
     for (i, d) in z.departure.iter().enumerate() {
         let v = [
@@ -488,52 +484,40 @@ fn check_zero_sideslip(z: &ZeroSideslip) -> Result<(), AnalysisError> {
             d.delta_r_rad,
             d.delta_r_deg,
         ];
-        if !v.iter().all(|x| x.is_finite()) {
-            return Err(AnalysisError::NotFinite(format!(
-                "the trim of zero-sideslip departure {} (P0 = {:e} rad/s)",
-                i + 1,
-                d.p0
-            )));
-        }
+        finite(
+            &|| {
+                format!(
+                    "the trim of zero-sideslip departure {} (P0 = {:e} rad/s)",
+                    i + 1,
+                    d.p0
+                )
+            },
+            &v,
+        )?;
     }
-    if !z.hopf_roll_rates.iter().all(|x| x.is_finite()) {
-        return Err(AnalysisError::NotFinite(
-            "a zero-sideslip Hopf roll rate".into(),
-        ));
-    }
-    Ok(())
+    finite(
+        &|| "a zero-sideslip Hopf roll rate".into(),
+        &z.hopf_roll_rates,
+    )
 }
 
 /// The checks every answer passes before it is reported: every number finite, and no two
 /// distinct exact roots (of one list, or a jump root and a pole) that look the same in f64.
 /// The zero-sideslip section has its own ([`withhold_zero_sideslip`]).
 fn check(a: &Analysis) -> Result<(), AnalysisError> {
-    // The message is written only when a number is not finite (this runs on every answer).
-    let finite = |what: &dyn Fn() -> String, v: &[f64]| {
-        if v.iter().all(|x| x.is_finite()) {
-            Ok(())
-        } else {
-            Err(AnalysisError::NotFinite(what()))
-        }
-    };
     let jumps: Vec<f64> = a.jump.iter().map(|j| j.p0).collect();
     let poles: Vec<f64> = a.det_k_poles.iter().map(|j| j.p0).collect();
-    let same = |what: &str, x: f64| AnalysisError::Indistinct {
-        what: what.to_string(),
-        p0: x,
-        ulp: f64::from_bits(x.to_bits() + 1) - x,
-    };
     for (what, v) in [
         ("two divergence roll rates", &a.divergence_roll_rates),
         ("two poles of det K", &poles),
         ("two jump roots", &jumps),
     ] {
-        if let Some(w) = v.windows(2).find(|w| w[0] == w[1]) {
-            return Err(same(what, w[0]));
+        if let Some(x) = first_repeat(v) {
+            return Err(indistinct(what, x));
         }
     }
     if let Some(x) = jumps.iter().find(|x| poles.contains(x)) {
-        return Err(same("a jump root and a pole of det K", *x));
+        return Err(indistinct("a jump root and a pole of det K", *x));
     }
     finite(
         &|| "a divergence roll rate".into(),
@@ -548,6 +532,30 @@ fn check(a: &Analysis) -> Result<(), AnalysisError> {
     }
     departure::check_finite(a).map_err(AnalysisError::NotFinite)?;
     Ok(())
+}
+
+/// `Ok` when every number of `v` is finite, else [`AnalysisError::NotFinite`] naming `what`
+/// (written only then: the checks run on every answer).
+fn finite(what: &dyn Fn() -> String, v: &[f64]) -> Result<(), AnalysisError> {
+    if v.iter().all(|x| x.is_finite()) {
+        Ok(())
+    } else {
+        Err(AnalysisError::NotFinite(what()))
+    }
+}
+
+/// The first value of the ascending list `v` that is also the next one.
+fn first_repeat(v: &[f64]) -> Option<f64> {
+    v.windows(2).find(|w| w[0] == w[1]).map(|w| w[0])
+}
+
+/// Two distinct exact roots `what` that round to the same f64 `x`.
+fn indistinct(what: &str, x: f64) -> AnalysisError {
+    AnalysisError::Indistinct {
+        what: what.to_string(),
+        p0: x,
+        ulp: f64::from_bits(x.to_bits() + 1) - x,
+    }
 }
 
 /// The aileron of the trim at a root `p0` of the resultant of `g` and `f` in delta_a: their

@@ -72,18 +72,23 @@ fn stray_citation(comment: &str) -> Option<&'static str> {
     None
 }
 
-#[test]
-fn comments_cite_equations_as_eq_n_or_eqs_n_m() {
-    let mut stray = Vec::new();
+/// `file:line: why` for every comment (from `//` to the end of its line) of the hand-written
+/// sources that `check` flags with `why`.
+fn flagged_comments(check: impl Fn(&str) -> Option<String>) -> Vec<String> {
+    let mut flagged = Vec::new();
     for (p, text) in hand_written() {
         for (i, line) in text.lines().enumerate() {
-            if let Some(at) = line.find("//") {
-                if let Some(why) = stray_citation(&line[at..]) {
-                    stray.push(format!("{}:{}: {why}", p.display(), i + 1));
-                }
+            if let Some(why) = line.find("//").and_then(|at| check(&line[at..])) {
+                flagged.push(format!("{}:{}: {why}", p.display(), i + 1));
             }
         }
     }
+    flagged
+}
+
+#[test]
+fn comments_cite_equations_as_eq_n_or_eqs_n_m() {
+    let stray = flagged_comments(|c| stray_citation(c).map(str::to_string));
     assert!(stray.is_empty(), "{stray:#?}");
 }
 
@@ -126,16 +131,7 @@ fn issue_citation(comment: &str) -> Option<String> {
 
 #[test]
 fn comments_cite_no_issue_numbers() {
-    let mut cited = Vec::new();
-    for (p, text) in hand_written() {
-        for (i, line) in text.lines().enumerate() {
-            if let Some(at) = line.find("//") {
-                if let Some(what) = issue_citation(&line[at..]) {
-                    cited.push(format!("{}:{}: cites \"{what}\"", p.display(), i + 1));
-                }
-            }
-        }
-    }
+    let cited = flagged_comments(|c| issue_citation(c).map(|what| format!("cites \"{what}\"")));
     assert!(cited.is_empty(), "{cited:#?}");
 }
 

@@ -172,27 +172,6 @@ pub(super) fn z_gcd(a: &[BigInt], b: &[BigInt]) -> ZPoly {
     }
 }
 
-/// Exact quotient `a / b` in `ℤ[x]`; `b` must divide `a` (e.g. `b` primitive and a divisor of `a`
-/// in `ℚ[x]`, by Gauss's lemma).
-fn z_exact_div(a: &[BigInt], b: &[BigInt]) -> ZPoly {
-    let n = b.len() - 1;
-    if a.len() <= n {
-        return Vec::new();
-    }
-    let mut r = a.to_vec();
-    let mut q = vec![BigInt::zero(); a.len() - n];
-    for s in (0..q.len()).rev() {
-        let c = &r[s + n] / &b[n];
-        if !c.is_zero() {
-            for (j, bc) in b.iter().enumerate() {
-                r[s + j] -= &c * bc;
-            }
-        }
-        q[s] = c;
-    }
-    q
-}
-
 /// The quotient `a / b` in `ℤ[x]` if `b` (non-zero) divides `a` there, `None` otherwise: every
 /// step's leading division must be exact and nothing may remain.
 pub(super) fn z_checked_div(a: &[BigInt], b: &[BigInt]) -> Option<ZPoly> {
@@ -215,6 +194,12 @@ pub(super) fn z_checked_div(a: &[BigInt], b: &[BigInt]) -> Option<ZPoly> {
         q[s] = c;
     }
     r[..n].iter().all(Zero::is_zero).then_some(q)
+}
+
+/// Exact quotient `a / b` in `ℤ[x]` where `b` is known to divide `a` (e.g. `b` primitive and a
+/// divisor of `a` in `ℚ[x]`, by Gauss's lemma).
+fn z_exact_div(a: &[BigInt], b: &[BigInt]) -> ZPoly {
+    z_checked_div(a, b).expect("the divisor divides in Z[x]")
 }
 
 /// Yun's square-free decomposition of a primitive `f` (degree ≥ 1), entirely in `ℤ[x]`: every gcd

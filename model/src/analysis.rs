@@ -38,8 +38,12 @@ use crate::roots::{positive_roots, RealRoot, UPoly};
 use serde::Serialize;
 
 mod departure;
+#[cfg(feature = "cli")]
+pub mod diagram;
 pub mod fast;
 pub(crate) mod primary;
+#[cfg(feature = "cli")]
+pub mod trim_curves;
 pub use crate::specialise::{
     cancel, exact_f64, in_aileron, in_aileron_all, parametric, parametric_characteristic,
     quadratic_roots, specialisation, univariate, InAileron,

@@ -14,7 +14,7 @@
 //! markers in plot units: angles in deg, rates in rad/s) and renders it to `<stem>.svg` and
 //! `<stem>.png`, with the series drawn in `<stem>.csv` for replotting elsewhere, written
 //! atomically; the returned [`Rendered`] holds the files and the figure, so
-//! callers and tests see exactly the series that were drawn. [`closed_form`] computes the data
+//! callers and tests see exactly the series that were drawn. [`crate::analysis::trim_curves`] computes the data
 //! of Figs 1-4, 7-9 and 11 from the closed-form trims; a continuation can supply the same
 //! [`BifurcationData`].
 //!
@@ -47,7 +47,6 @@
 //! std::fs::remove_dir_all(&dir).unwrap();
 //! ```
 
-pub mod closed_form;
 pub mod data;
 pub mod figures;
 pub mod spec;
@@ -62,6 +61,7 @@ pub use data::{
 };
 pub use spec::{Axis, Dash, Figure, LegendPlace, Line, Marker, Panel, Rgb, Scale, Shape, TextAt};
 
+use crate::analysis::diagram::DiagramError;
 use crate::analysis::AnalysisError;
 use crate::simulation::SimError;
 use std::path::{Path, PathBuf};
@@ -139,6 +139,15 @@ pub enum PlotError {
         /// Each file that could not be written, and why.
         failed: Vec<(PathBuf, String)>,
     },
+}
+
+impl From<DiagramError> for PlotError {
+    fn from(e: DiagramError) -> PlotError {
+        match e {
+            DiagramError::Analysis(e) => PlotError::Analysis(e),
+            DiagramError::Simulation(e) => PlotError::Simulation(e),
+        }
+    }
 }
 
 /// A rendered figure: the files written and the figure as drawn.

@@ -15,7 +15,8 @@
 
 use model::aircraft::{f64_to_rational, Aircraft, Param};
 use model::analysis::analyze;
-use model::plot::{self, closed_form, PlotError, PlotStyle, State, TimeHistoryData, Variable};
+use model::analysis::trim_curves;
+use model::plot::{self, PlotError, PlotStyle, State, TimeHistoryData, Variable};
 use model::simulation::{
     jump_sweep, Aileron, Model, Rudder, SimError, SimSettings, Simulator, SweepSettings,
     TimeHistory,
@@ -385,10 +386,10 @@ fn every_figure_is_written_as_valid_svg_and_png_and_is_deterministic() {
     let style = PlotStyle::default();
     let ac = Aircraft::a();
     let sim = Simulator::new(&ac, DE).unwrap();
-    let diagram = closed_form::unconstrained_diagram(&ac, DE).unwrap();
-    let det_k = closed_form::det_k_curve(&ac, DE).unwrap();
-    let zs_det_k = closed_form::zero_sideslip_det_k_curve(&ac, DE).unwrap();
-    let zs = closed_form::zero_sideslip_diagram(&ac, DE).unwrap();
+    let diagram = trim_curves::unconstrained_diagram(&ac, DE).unwrap();
+    let det_k = trim_curves::det_k_curve(&ac, DE).unwrap();
+    let zs_det_k = trim_curves::zero_sideslip_det_k_curve(&ac, DE).unwrap();
+    let zs = trim_curves::zero_sideslip_diagram(&ac, DE).unwrap();
     let steps: Vec<f64> = [-1.0, -3.0, -4.0, -6.0].map(deg).to_vec();
     let runs = sim
         .step_family(&SimSettings::step(Model::SeventhOrder, DE, 0.0), &steps)
@@ -473,7 +474,7 @@ fn plotted_series_are_the_library_numbers() {
 
     // Figs 1, 2: every plotted point of p vs delta_a is an equilibrium (or a clipped boundary
     // point between two); the folds are marked where the criterion puts them.
-    let d = closed_form::unconstrained_diagram(&ac, DE).unwrap();
+    let d = trim_curves::unconstrained_diagram(&ac, DE).unwrap();
     let fig = plot::bifurcation(&dir.join("fig1"), &d, &style)
         .unwrap()
         .figure;
@@ -532,7 +533,7 @@ fn plotted_series_are_the_library_numbers() {
 
     // Figs 7, 8: the det K samples inside the clipped range are plotted unchanged; the roots are
     // the analysis' jump points.
-    let k = closed_form::det_k_curve(&ac, DE).unwrap();
+    let k = trim_curves::det_k_curve(&ac, DE).unwrap();
     let fig = plot::det_k(&dir.join("fig7"), &k, &style).unwrap().figure;
     let p = &fig.panels[0];
     let curve: Vec<(f64, f64)> = p
@@ -555,7 +556,7 @@ fn plotted_series_are_the_library_numbers() {
     assert!(k.det_k[0] > 0.0);
 
     // Fig. 9: the transcritical point is the zero-sideslip departure point of the criterion.
-    let zs = closed_form::zero_sideslip_diagram(&ac, DE).unwrap();
+    let zs = trim_curves::zero_sideslip_diagram(&ac, DE).unwrap();
     let fig = plot::zero_sideslip(&dir.join("fig9"), &zs, &style)
         .unwrap()
         .figure;
@@ -648,10 +649,10 @@ fn det_k_figures_of_aircraft_with_e_or_d_zero_are_the_independent_det_k() {
         let k = ac.values_f64();
         assert_eq!(k[param.index()], 0.0);
         for (zero_sideslip, data) in [
-            (false, closed_form::det_k_curve(&ac, DE).unwrap()),
+            (false, trim_curves::det_k_curve(&ac, DE).unwrap()),
             (
                 true,
-                closed_form::zero_sideslip_det_k_curve(&ac, DE).unwrap(),
+                trim_curves::zero_sideslip_det_k_curve(&ac, DE).unwrap(),
             ),
         ] {
             let what = format!("{param:?} = 0, zero sideslip {zero_sideslip}");

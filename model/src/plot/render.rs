@@ -555,7 +555,7 @@ mod tests {
     fn det_k_of_a(dir: &Path) -> (PathBuf, super::super::Rendered) {
         let _ = std::fs::remove_dir_all(dir);
         std::fs::create_dir_all(dir).unwrap();
-        let data = crate::plot::closed_form::det_k_curve(
+        let data = crate::analysis::trim_curves::det_k_curve(
             &crate::aircraft::Aircraft::a(),
             2f64.to_radians(),
         )
@@ -642,7 +642,7 @@ mod tests {
         let png = with_ext(&stem, "png");
         std::fs::remove_file(&png).unwrap();
         std::fs::create_dir(&png).unwrap();
-        let data = crate::plot::closed_form::det_k_curve(
+        let data = crate::analysis::trim_curves::det_k_curve(
             &crate::aircraft::Aircraft::a(),
             2f64.to_radians(),
         )

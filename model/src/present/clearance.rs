@@ -10,7 +10,7 @@
 
 use crate::clearance::run::Run;
 use crate::clearance::{Bounds, CaseAircraft};
-use crate::present::report::fixed;
+use crate::present::numbers::fixed;
 
 fn bounds(name: &str, unit: &str, b: &Bounds, digits: usize) -> String {
     if b.lo == f64::INFINITY {

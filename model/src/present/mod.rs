@@ -4,5 +4,6 @@
 //! calls one of them per command, then prints or writes through this one.
 
 pub mod clearance;
+pub mod numbers;
 pub mod report;
 pub mod tables;

@@ -1,6 +1,6 @@
 //! The text tables of `model analyze` and `model continue`.
 
-use super::report::{departure_cells, first_departure_text, fixed, hopf_cells, jump_cells, list};
+use super::numbers::{departure_cells, first_departure_text, fixed, hopf_cells, jump_cells, list};
 use crate::aircraft::shown;
 use crate::analysis::Analysis;
 use crate::continuation::Diagram;

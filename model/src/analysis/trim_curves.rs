@@ -1,5 +1,6 @@
-//! Plot data from the closed-form trims, until (and alongside) continuation: the equilibrium
-//! curves of Figs 1-4 and 9 and the det K curves of Figs 7, 8, 11.
+//! The closed-form trims traced as curves, alongside continuation: the equilibrium curves of
+//! Figs 1-4 and 9 and the det K curves of Figs 7, 8, 11, as the data `plot` draws
+//! ([`super::diagram`]).
 //!
 //! * Unconstrained roll (Figs 1-4): the trim is a function of P0 (Eqs 3-4), so sweeping P0
 //!   through the closed form traces every PSS equilibrium with delta_r = 0; the aileron that
@@ -18,7 +19,7 @@
 //!   common factors cancelled, evaluated in f64.
 //!
 //! ```
-//! use model::plot::closed_form::det_k_ratio;
+//! use model::analysis::trim_curves::det_k_ratio;
 //! use model::roots::UPoly;
 //!
 //! // A common factor (P0 - 1) of numerator and denominator cancels exactly: P0 = 1 is neither
@@ -30,12 +31,12 @@
 //! assert_eq!(num.eval_f64(1.0) / den.eval_f64(1.0), -0.25);
 //! ```
 
-use super::data::{
-    BifurcationData, Branch, BranchPoint, DetKData, SpecialKind, SpecialPoint, ZeroSideslipData,
+use super::diagram::{
+    BifurcationData, DetKData, DiagramError, SpecialKind, SpecialPoint, ZeroSideslipData,
 };
-use super::PlotError;
 use crate::aircraft::Aircraft;
 use crate::analysis::{analyze, Analysis};
+use crate::continuation::{Branch, Point as BranchPoint};
 use crate::derivation::Derivation;
 use crate::equations::symbols;
 use crate::pss_model::PssModel;
@@ -117,9 +118,9 @@ fn round_up(v: f64, step: f64) -> f64 {
 pub fn unconstrained_diagram(
     aircraft: &Aircraft,
     delta_e: f64,
-) -> Result<BifurcationData, PlotError> {
-    let analysis = analyze(aircraft, delta_e).map_err(PlotError::Analysis)?;
-    let trims = Trims::new(aircraft, delta_e).map_err(PlotError::Simulation)?;
+) -> Result<BifurcationData, DiagramError> {
+    let analysis = analyze(aircraft, delta_e).map_err(DiagramError::Analysis)?;
+    let trims = Trims::new(aircraft, delta_e).map_err(DiagramError::Simulation)?;
     let model = trims.model();
     let specials = analysis
         .jump
@@ -310,8 +311,8 @@ fn zs_det_k_ratio(d: &Derivation) -> (UPoly, UPoly) {
 }
 
 /// Figs 7, 8: det K versus P0 for delta_r = 0, with its roots (the jump points) and poles.
-pub fn det_k_curve(aircraft: &Aircraft, delta_e: f64) -> Result<DetKData, PlotError> {
-    let analysis = analyze(aircraft, delta_e).map_err(PlotError::Analysis)?;
+pub fn det_k_curve(aircraft: &Aircraft, delta_e: f64) -> Result<DetKData, DiagramError> {
+    let analysis = analyze(aircraft, delta_e).map_err(DiagramError::Analysis)?;
     let d = Derivation::derive(&specialisation(aircraft, delta_e));
     let roots: Vec<f64> = analysis.jump.iter().map(|j| j.p0).collect();
     let poles: Vec<f64> = analysis.det_k_poles.iter().map(|j| j.p0).collect();
@@ -354,8 +355,11 @@ pub fn det_k_curve(aircraft: &Aircraft, delta_e: f64) -> Result<DetKData, PlotEr
 
 /// Fig. 11: det K versus P0 along the zero-sideslip trims, with its roots (the departure points)
 /// and poles.
-pub fn zero_sideslip_det_k_curve(aircraft: &Aircraft, delta_e: f64) -> Result<DetKData, PlotError> {
-    let analysis = analyze(aircraft, delta_e).map_err(PlotError::Analysis)?;
+pub fn zero_sideslip_det_k_curve(
+    aircraft: &Aircraft,
+    delta_e: f64,
+) -> Result<DetKData, DiagramError> {
+    let analysis = analyze(aircraft, delta_e).map_err(DiagramError::Analysis)?;
     let d = Derivation::derive(&specialisation(aircraft, delta_e));
     let (num, den) = zs_det_k_ratio(&d);
     let roots: Vec<f64> = analysis
@@ -390,10 +394,10 @@ pub fn zero_sideslip_det_k_curve(aircraft: &Aircraft, delta_e: f64) -> Result<De
 pub fn zero_sideslip_diagram(
     aircraft: &Aircraft,
     delta_e: f64,
-) -> Result<ZeroSideslipData, PlotError> {
-    let analysis = analyze(aircraft, delta_e).map_err(PlotError::Analysis)?;
-    let trims = Trims::new(aircraft, delta_e).map_err(PlotError::Simulation)?;
-    let schedule = RudderSchedule::new(trims.clone()).map_err(PlotError::Simulation)?;
+) -> Result<ZeroSideslipData, DiagramError> {
+    let analysis = analyze(aircraft, delta_e).map_err(DiagramError::Analysis)?;
+    let trims = Trims::new(aircraft, delta_e).map_err(DiagramError::Simulation)?;
+    let schedule = RudderSchedule::new(trims.clone()).map_err(DiagramError::Simulation)?;
     let (slo, shi) = schedule.range();
     let departure: Vec<_> = analysis
         .zero_sideslip

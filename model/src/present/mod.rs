@@ -1,9 +1,14 @@
-//! Presentation: the report folder, the clearance's text, Markdown, CSV and figures, and the
-//! text tables of `analyze`. The computing modules (`analysis`, `clearance`, `continuation`,
-//! `simulation`) return results and never import this module; `main.rs` parses arguments and
-//! calls one of them per command, then prints or writes through this one.
+//! Presentation: the commands of `model` (their options, and one function per command that
+//! computes, prints and writes), the report folder, the clearance's text, Markdown, CSV and
+//! figures, the text tables of `analyze`, and how numbers print. The computing modules
+//! (`analysis`, `clearance`, `continuation`, `simulation`) return results and never import this
+//! module; `main.rs` parses the arguments and calls one function of [`commands`] per command.
 
 pub mod clearance;
+pub mod commands;
+pub mod failure;
 pub mod numbers;
+pub mod options;
+pub mod progress;
 pub mod report;
 pub mod tables;

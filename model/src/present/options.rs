@@ -1,0 +1,231 @@
+//! The options of each command of `model` (clap), and the checks that turn their values into
+//! what a computation takes: angles in rad (refused, naming the option, when not finite or out
+//! of range), the elevator range of a clearance map, and the aircraft argument (`A`, `B` or a
+//! file).
+
+use crate::aircraft::{self, Aircraft};
+use crate::present::failure::Failure;
+use clap::Args;
+use std::path::{Path, PathBuf};
+
+/// Options of `analyze`.
+#[derive(Args)]
+pub struct AnalyzeArgs {
+    /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
+    pub aircraft: String,
+    /// Elevator deflection in degrees.
+    #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
+    pub delta_e_deg: f64,
+    /// Print JSON instead of a table. JSON carries every digit of every number, so it comes
+    /// from the exact path (correctly rounded roots) unless the table's route is asked for
+    /// with --certified.
+    #[arg(long)]
+    pub json: bool,
+    /// Force the exact (big-rational) path; by default the table comes from the certified
+    /// floating-point route, which falls back to the exact path whenever a certificate fails.
+    #[arg(long, conflicts_with = "certified")]
+    pub exact: bool,
+    /// With --json: the certified route's numbers (each roll rate within its certified bracket
+    /// of about 1e-10 relative width, the trim evaluated from the enclosures' midpoints, so
+    /// the last digits differ from the exact path's).
+    #[arg(long)]
+    pub certified: bool,
+}
+
+/// Options of `continue`.
+#[derive(Args)]
+pub struct ContinueArgs {
+    /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
+    pub aircraft: String,
+    /// The continuation parameter: delta_a, delta_e or delta_r.
+    #[arg(long, default_value = "delta_a")]
+    pub param: String,
+    /// Lower end of the parameter range, deg (default -0.8 rad).
+    #[arg(long, default_value_t = -45.8366, allow_hyphen_values = true)]
+    pub min_deg: f64,
+    /// Upper end of the parameter range, deg (default 0.8 rad).
+    #[arg(long, default_value_t = 45.8366, allow_hyphen_values = true)]
+    pub max_deg: f64,
+    /// Elevator deflection in degrees (when it is not the parameter).
+    #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
+    pub delta_e_deg: f64,
+    /// Zero-sideslip manoeuvre by extended bifurcation analysis (section V.B, Fig. 9).
+    #[arg(long)]
+    pub zero_sideslip: bool,
+    /// Print JSON instead of a summary.
+    #[arg(long)]
+    pub json: bool,
+    /// Also write every point as CSV to this file (units in the header).
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+}
+
+/// Options of `report` and `plot`.
+#[derive(Args)]
+pub struct FiguresArgs {
+    /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
+    pub aircraft: String,
+    /// Output folder DIR (created if needed).
+    #[arg(long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// Elevator deflection in degrees.
+    #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
+    pub delta_e_deg: f64,
+}
+
+/// Options of `simulate`.
+#[derive(Args)]
+pub struct SimulateArgs {
+    /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
+    pub aircraft: String,
+    /// Aileron step, degrees.
+    #[arg(long, allow_hyphen_values = true)]
+    pub delta_a_deg: f64,
+    /// Elevator deflection in degrees.
+    #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
+    pub delta_e_deg: f64,
+    /// Length of the run, s.
+    #[arg(long, default_value_t = 20.0, allow_hyphen_values = true)]
+    pub t_end: f64,
+    /// Rudder on the zero-sideslip schedule (aileron-rudder interconnect, Fig. 10).
+    #[arg(long)]
+    pub zero_sideslip: bool,
+    /// Integrate the PSS model instead of the 7th-order model.
+    #[arg(long)]
+    pub pss: bool,
+    /// Write the time history as CSV to this file (units in the header).
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+}
+
+/// Options of `clear`.
+#[derive(Args)]
+pub struct ClearArgs {
+    /// Path of an aircraft TOML file with an `[uncertainty]` table (or `A`/`B`: a point).
+    pub aircraft: String,
+    /// Elevator deflection in degrees.
+    #[arg(
+        long,
+        default_value_t = 2.0,
+        allow_hyphen_values = true,
+        conflicts_with = "delta_e_range"
+    )]
+    pub delta_e_deg: f64,
+    /// A range of elevator deflections `A:B:STEP` in degrees (a clearance map).
+    #[arg(long, value_name = "A:B:STEP", allow_hyphen_values = true)]
+    pub delta_e_range: Option<String>,
+    /// Monte Carlo samples (certified route; the exact path where a certificate fails), 0
+    /// to 10^7 per setting.
+    #[arg(long, default_value_t = 1000, allow_hyphen_values = true)]
+    pub samples: usize,
+    /// Tolerance on the roll-rate gap, rad/s (the aileron gap is 10 times it, in deg).
+    #[arg(long, default_value_t = 1e-3, allow_hyphen_values = true)]
+    pub tolerance: f64,
+    /// Seed of the Monte Carlo samples and of the worst-case search.
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
+    pub seed: u64,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
+    /// Write summary.md, summary.json and samples.csv into DIR.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+}
+
+/// Options of `convert`.
+#[derive(Args)]
+pub struct ConvertArgs {
+    /// Path of a nondimensional body-axis aircraft TOML file.
+    pub file: PathBuf,
+}
+
+/// Options of `emit`.
+#[derive(Args)]
+pub struct EmitArgs {
+    /// Write nothing; exit 1 naming every stale file (first finishes an emit that was killed
+    /// after staging every file, and removes temporaries of killed runs).
+    #[arg(long)]
+    pub check: bool,
+    /// Workspace root (default: the workspace this binary was built from).
+    #[arg(long, value_name = "DIR")]
+    pub root: Option<PathBuf>,
+}
+
+/// An elevator deflection in degrees converted to rad, or an error in degrees.
+pub fn elevator(deg: f64) -> Result<f64, Failure> {
+    if deg.is_finite() && deg.abs() <= 90.0 {
+        Ok(deg.to_radians())
+    } else {
+        Err(Failure::Input(format!(
+            "--delta-e-deg = {deg}: expected a finite elevator deflection of at most 90 deg \
+             (delta_e)"
+        )))
+    }
+}
+
+/// `A:B:STEP` in degrees as the list of elevator deflections in rad.
+pub fn delta_e_list(r: &str) -> Result<Vec<f64>, Failure> {
+    let bad = || {
+        Failure::Input(format!(
+            "--delta-e-range = {r:?}: expected A:B:STEP in degrees with A <= B, STEP > 0, at most \
+             1000 settings, each of at most 90 deg"
+        ))
+    };
+    let v: Vec<f64> = r
+        .split(':')
+        .map(|x| x.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| bad())?;
+    let [a, b, step] = v[..] else {
+        return Err(bad());
+    };
+    if !(a <= b && step > 0.0 && ((b - a) / step) < 1000.0) {
+        return Err(bad());
+    }
+    let n = ((b - a) / step + 1e-9).floor() as usize;
+    (0..=n)
+        .map(|i| elevator(a + i as f64 * step).map_err(|_| bad()))
+        .collect()
+}
+
+/// An angle in degrees converted to rad, or an error naming the option.
+pub fn finite_angle(name: &str, deg: f64) -> Result<f64, Failure> {
+    if deg.is_finite() {
+        Ok(deg.to_radians())
+    } else {
+        Err(Failure::Input(format!(
+            "--{}-deg = {deg}: expected a finite angle in degrees",
+            name.replace('_', "-")
+        )))
+    }
+}
+
+/// `A`/`B` (any case) name the built-in aircraft; anything else is a TOML file. A name that is
+/// neither a built-in nor a file gets the list of built-ins and the shipped file it may mean.
+pub fn load_aircraft(arg: &str) -> Result<Aircraft, String> {
+    if let Some(ac) = Aircraft::builtin(arg) {
+        return Ok(ac);
+    }
+    let path = Path::new(arg);
+    aircraft::load(path).map_err(|e| {
+        let looks_like_name =
+            !path.exists() && path.components().count() == 1 && path.extension().is_none();
+        if !looks_like_name {
+            return e.to_string();
+        }
+        let mut msg = format!(
+            "{arg:?} is neither a built-in aircraft nor a file; the built-in aircraft are A and B \
+             (the paper's), and any other argument is read as the path of an aircraft TOML file"
+        );
+        let shipped = Path::new("aircraft").join(format!("{}.toml", arg.to_ascii_lowercase()));
+        let in_repo = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("..")
+            .join(&shipped);
+        if shipped.is_file() {
+            msg += &format!(" (did you mean {}?)", shipped.display());
+        } else if in_repo.is_file() {
+            msg += &format!(" (did you mean {}?)", in_repo.display());
+        }
+        msg
+    })
+}

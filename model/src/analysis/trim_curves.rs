@@ -426,50 +426,7 @@ pub fn zero_sideslip_diagram(
     }
     let p_hi = zs.points.iter().map(|p| p.p.abs()).fold(2.0, f64::max) * 1.6;
 
-    // Equilibria off the zero-sideslip branch: F(delta_a, P0) = 0.
-    let f = |da: f64, p0: f64| -> Option<f64> {
-        let dr = schedule.delta_r(da).ok()?;
-        trims.unconstrained(p0, dr).map(|e| e.controls.delta_a - da)
-    };
-    let tracer = Tracer {
-        f: &f,
-        scale: (ahi - alo, 2.0 * p_hi),
-        lo: (alo, -p_hi),
-        hi: (ahi, p_hi),
-    };
-    let mut curves: Vec<Vec<(f64, f64)>> = Vec::new();
-    const LINES: usize = 24;
-    const SCAN: usize = 240;
-    for i in 0..LINES {
-        let da = alo + (ahi - alo) * (i as f64 + 0.5) / LINES as f64;
-        let Ok(on_zs) = schedule.trim(da) else {
-            continue;
-        };
-        let p_zs = on_zs.x[2];
-        let Ok(dr) = schedule.delta_r(da) else {
-            continue;
-        };
-        let g = |p0: f64| trims.unconstrained(p0, dr).map(|e| e.controls.delta_a - da);
-        let mut prev: Option<(f64, f64)> = None;
-        for k in 0..=SCAN {
-            let p0 = -p_hi + 2.0 * p_hi * k as f64 / SCAN as f64;
-            let cur = g(p0).map(|v| (p0, v));
-            if let (Some((pa, va)), Some((pb, vb))) = (prev, cur) {
-                let pole = trims.det_a(pa) * trims.det_a(pb) <= 0.0;
-                let contains_zs = (pa - p_zs) * (pb - p_zs) <= 0.0;
-                if va * vb < 0.0 && !pole && !contains_zs {
-                    let seed = (da, bisect(&|p| g(p).unwrap_or(f64::NAN), pa, pb, va));
-                    if !curves.iter().any(|c| tracer.near(c, seed)) {
-                        let c = tracer.trace(seed);
-                        if c.len() > 1 {
-                            curves.push(c);
-                        }
-                    }
-                }
-            }
-            prev = cur;
-        }
-    }
+    let curves = off_branch_curves(&trims, &schedule, (alo, ahi), p_hi);
     let mut branches = vec![zs];
     for c in curves {
         let mut b = Branch::default();
@@ -522,6 +479,64 @@ pub fn zero_sideslip_diagram(
             delta_a_range_deg: Some((-half, half)),
         },
     })
+}
+
+/// The equilibria off the zero-sideslip branch with the rudder on `schedule`, the zero set of
+/// F(delta_a, P0) = delta_a(P0, delta_r(delta_a)) - delta_a over the aileron range `alo..ahi`
+/// (rad) and |P0| up to `p_hi`: seeds by sign changes of F along lines of constant aileron
+/// (away from det A = 0 and from the zero-sideslip trim), each traced by [`Tracer`] unless a
+/// curve already traced passes near it. Each curve is a list of (delta_a, P0).
+fn off_branch_curves(
+    trims: &Trims,
+    schedule: &RudderSchedule,
+    (alo, ahi): (f64, f64),
+    p_hi: f64,
+) -> Vec<Vec<(f64, f64)>> {
+    // F(delta_a, P0) = 0.
+    let f = |da: f64, p0: f64| -> Option<f64> {
+        let dr = schedule.delta_r(da).ok()?;
+        trims.unconstrained(p0, dr).map(|e| e.controls.delta_a - da)
+    };
+    let tracer = Tracer {
+        f: &f,
+        scale: (ahi - alo, 2.0 * p_hi),
+        lo: (alo, -p_hi),
+        hi: (ahi, p_hi),
+    };
+    let mut curves: Vec<Vec<(f64, f64)>> = Vec::new();
+    const LINES: usize = 24;
+    const SCAN: usize = 240;
+    for i in 0..LINES {
+        let da = alo + (ahi - alo) * (i as f64 + 0.5) / LINES as f64;
+        let Ok(on_zs) = schedule.trim(da) else {
+            continue;
+        };
+        let p_zs = on_zs.x[2];
+        let Ok(dr) = schedule.delta_r(da) else {
+            continue;
+        };
+        let g = |p0: f64| trims.unconstrained(p0, dr).map(|e| e.controls.delta_a - da);
+        let mut prev: Option<(f64, f64)> = None;
+        for k in 0..=SCAN {
+            let p0 = -p_hi + 2.0 * p_hi * k as f64 / SCAN as f64;
+            let cur = g(p0).map(|v| (p0, v));
+            if let (Some((pa, va)), Some((pb, vb))) = (prev, cur) {
+                let pole = trims.det_a(pa) * trims.det_a(pb) <= 0.0;
+                let contains_zs = (pa - p_zs) * (pb - p_zs) <= 0.0;
+                if va * vb < 0.0 && !pole && !contains_zs {
+                    let seed = (da, bisect(&|p| g(p).unwrap_or(f64::NAN), pa, pb, va));
+                    if !curves.iter().any(|c| tracer.near(c, seed)) {
+                        let c = tracer.trace(seed);
+                        if c.len() > 1 {
+                            curves.push(c);
+                        }
+                    }
+                }
+            }
+            prev = cur;
+        }
+    }
+    curves
 }
 
 /// Traces the zero set of a scalar function of two variables (pseudo-arclength: tangent

@@ -15,7 +15,7 @@
 //! ```
 
 use super::{clamp_exact, critical, exact_coordinates, split_box, Coordinate, Rng};
-use crate::aircraft::{Aircraft, Param};
+use crate::aircraft::{Aircraft, Param, Uncertain};
 use crate::analysis::fast;
 use crate::certified::{Sampler, Values};
 use crate::interval::I;
@@ -71,53 +71,111 @@ pub fn run(
     seed: u64,
     threads: usize,
 ) -> MonteCarlo {
-    let (base, params) = split_box(aircraft);
-    let fixed = Values::data(&base);
-    let ends: Vec<(I, I, I)> = params
-        .iter()
-        .map(|u| {
-            (
-                I::from_q_pair(&u.lo, &u.hi),
-                I::from_q(&u.lo),
-                I::from_q(&u.hi),
-            )
-        })
-        .collect();
+    let sampled = SampledBox::of(aircraft, delta_e_rad);
     let mut rng = Rng::new(seed);
     let draws: Vec<Vec<f64>> = (0..n)
         .map(|_| {
-            ends.iter()
+            sampled
+                .ends
+                .iter()
                 .map(|(b, _, _)| b.lo + rng.unit() * (b.hi - b.lo))
                 .collect()
         })
         .collect();
-    let bound = aircraft.aileron_range();
-    // The parameters the coordinates move, each once (the sampler's varying data), and for
-    // each coordinate the indices of those it moves.
-    let coordinates: Vec<Coordinate> = params.iter().map(Coordinate::of).collect();
-    let mut varying: Vec<Param> = Vec::new();
-    let slots: Vec<Vec<usize>> = coordinates
-        .iter()
-        .map(|c| {
-            c.params()
-                .into_iter()
-                .map(|p| match varying.iter().position(|v| *v == p) {
-                    Some(i) => i,
-                    None => {
-                        varying.push(p);
-                        varying.len() - 1
-                    }
-                })
-                .collect()
-        })
-        .collect();
-    let sampler = Sampler::new(fixed, &varying, delta_e_rad, 0.0);
-    let one = |x: &Vec<f64>| -> (Sample, bool) {
+    let one = |x: &Vec<f64>| sampled.analyse(x);
+    let results: Vec<(Sample, bool)> = if threads == 1 {
+        draws.iter().map(one).collect()
+    } else if threads == 0 {
+        // All cores: rayon's global pool, whose threads (and their allocator arenas) outlive
+        // this call, so repeated runs do not pay for new ones.
+        draws.par_iter().map(one).collect()
+    } else {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build();
+        match pool {
+            Ok(pool) => pool.install(|| draws.par_iter().map(one).collect()),
+            Err(_) => draws.iter().map(one).collect(),
+        }
+    };
+    summary(aircraft, results, draws)
+}
+
+/// The box of an aircraft as the samples see it: the exact aircraft's parts (for the exact
+/// path's fallback), each coordinate's ends, and the certified route's sampler of the data the
+/// coordinates move.
+struct SampledBox {
+    base: Aircraft,
+    params: Vec<Uncertain>,
+    /// Each coordinate's interval and its exact ends, enclosed.
+    ends: Vec<(I, I, I)>,
+    coordinates: Vec<Coordinate>,
+    /// The parameters the coordinates move, each once (the sampler's varying data).
+    varying: Vec<Param>,
+    /// For each coordinate the indices in `varying` of those it moves.
+    slots: Vec<Vec<usize>>,
+    /// The data of the aircraft without its box.
+    fixed: [I; 18],
+    sampler: Sampler,
+    delta_e_rad: f64,
+    /// The aileron range the primary branch is followed to, rad.
+    bound: f64,
+}
+
+impl SampledBox {
+    /// The box of `aircraft` at the elevator deflection `delta_e_rad` (rad).
+    fn of(aircraft: &Aircraft, delta_e_rad: f64) -> SampledBox {
+        let (base, params) = split_box(aircraft);
+        let fixed = Values::data(&base);
+        let ends: Vec<(I, I, I)> = params
+            .iter()
+            .map(|u| {
+                (
+                    I::from_q_pair(&u.lo, &u.hi),
+                    I::from_q(&u.lo),
+                    I::from_q(&u.hi),
+                )
+            })
+            .collect();
+        let coordinates: Vec<Coordinate> = params.iter().map(Coordinate::of).collect();
+        let mut varying: Vec<Param> = Vec::new();
+        let slots: Vec<Vec<usize>> = coordinates
+            .iter()
+            .map(|c| {
+                c.params()
+                    .into_iter()
+                    .map(|p| match varying.iter().position(|v| *v == p) {
+                        Some(i) => i,
+                        None => {
+                            varying.push(p);
+                            varying.len() - 1
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        let sampler = Sampler::new(fixed, &varying, delta_e_rad, 0.0);
+        SampledBox {
+            base,
+            params,
+            ends,
+            coordinates,
+            varying,
+            slots,
+            fixed,
+            sampler,
+            delta_e_rad,
+            bound: aircraft.aileron_range(),
+        }
+    }
+
+    /// The sample at the box coordinates `x` and whether it fell back to the exact path.
+    fn analyse(&self, x: &[f64]) -> (Sample, bool) {
+        let (params, delta_e_rad) = (&self.params, self.delta_e_rad);
         // A draw strictly inside the exact ends is its own exact value; one at an end is
         // clamped to the exact end, as the exact path's sample.
-        let mut data: Vec<I> = varying.iter().map(|p| fixed[p.index()]).collect();
-        let how = coordinates.iter().zip(&slots);
-        for (((u, xi), (_, lo, hi)), (how, slots)) in params.iter().zip(x).zip(&ends).zip(how) {
+        let mut data: Vec<I> = self.varying.iter().map(|p| self.fixed[p.index()]).collect();
+        let how = self.coordinates.iter().zip(&self.slots);
+        for (((u, xi), (_, lo, hi)), (how, slots)) in params.iter().zip(x).zip(&self.ends).zip(how)
+        {
             let xi = if *xi > lo.hi && *xi < hi.lo {
                 I::point(*xi)
             } else {
@@ -138,16 +196,16 @@ pub fn run(
         }
         // The whole data of the sample, for the tape (which folds nothing); the sampler lifts
         // the varying part only should the tape not answer.
-        let mut all = fixed;
-        for (p, d) in varying.iter().zip(&data) {
+        let mut all = self.fixed;
+        for (p, d) in self.varying.iter().zip(&data) {
             all[p.index()] = *d;
         }
-        let lift = || sampler.values(&data);
+        let lift = || self.sampler.values(&data);
         let (point, fell_back) =
-            match fast::critical_of(&all, delta_e_rad, &lift, bound, fast::MAX_WIDTH) {
+            match fast::critical_of(&all, delta_e_rad, &lift, self.bound, fast::MAX_WIDTH) {
                 Ok(c) => (c, false),
                 Err(_) => {
-                    let a = super::at(&base, &params, &exact_coordinates(&params, x));
+                    let a = super::at(&self.base, params, &exact_coordinates(params, x));
                     let c = critical(&a, delta_e_rad)
                         .ok()
                         .flatten()
@@ -160,20 +218,12 @@ pub fn run(
             abs_delta_a_deg: point.map(|(_, da)| da.to_degrees().abs()),
         };
         (sample, fell_back)
-    };
-    let results: Vec<(Sample, bool)> = if threads == 1 {
-        draws.iter().map(one).collect()
-    } else if threads == 0 {
-        // All cores: rayon's global pool, whose threads (and their allocator arenas) outlive
-        // this call, so repeated runs do not pay for new ones.
-        draws.par_iter().map(one).collect()
-    } else {
-        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build();
-        match pool {
-            Ok(pool) => pool.install(|| draws.par_iter().map(one).collect()),
-            Err(_) => draws.iter().map(one).collect(),
-        }
-    };
+    }
+}
+
+/// The Monte Carlo summary of the samples `results` (each with whether it fell back to the
+/// exact path) drawn at `draws`, against `aircraft`'s aileron limit.
+fn summary(aircraft: &Aircraft, results: Vec<(Sample, bool)>, draws: Vec<Vec<f64>>) -> MonteCarlo {
     let exact_fallbacks = results.iter().filter(|(_, f)| *f).count();
     let values: Vec<Sample> = results.into_iter().map(|(s, _)| s).collect();
     let min = |f: fn(&Sample) -> Option<f64>| values.iter().filter_map(f).reduce(f64::min);

@@ -3,6 +3,7 @@
 //! simulated jumps against the criterion, and Figs 1-11 with their captions.
 
 use super::Summary;
+use crate::analysis::Analysis;
 use crate::present::numbers::{
     departure_cells, first_departure_text, fixed, hopf_cells, jump_cells, list,
 };
@@ -25,40 +26,7 @@ pub(super) fn markdown(s: &Summary, de: f64) -> String {
         "## First loss of stability\n\n```text\n{}\n```\n\n",
         first_departure_text(a).trim_end()
     );
-    m += "## Critical roll rates\n\n";
-    m += &format!(
-        "- Pitch-yaw divergence, Eq. 5 (Table 1): {}\n",
-        list(&a.divergence_roll_rates, 6, "rad/s")
-    );
-    m += &format!(
-        "- Poles of det K (d = 0): {}\n\n",
-        list(
-            &a.det_k_poles.iter().map(|j| j.p0).collect::<Vec<_>>(),
-            6,
-            "rad/s"
-        )
-    );
-    m += "### Jump points (det K = 0, saddle-nodes)\n\n| P0 rad/s | delta_a deg | alpha deg | beta deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|---:|\n";
-    for j in &a.jump {
-        m += &md_row(&jump_cells(j));
-    }
-    if a.jump.is_empty() {
-        m += "| none | | | | | |\n";
-    }
-    m += "\n### Hopf points (closed form, Delta4 = 0 with omega^2 > 0)\n\n| P0 rad/s | delta_a deg | alpha deg | beta deg | omega rad/s | period s | l1 | kind |\n|---:|---:|---:|---:|---:|---:|---:|---|\n";
-    for h in &a.hopf {
-        m += &md_row(&hopf_cells(h));
-    }
-    if a.hopf.is_empty() {
-        m += "| none | | | | | | | |\n";
-    }
-    m += "\n### Zero-sideslip departure (det K = 0 at beta = 0)\n\n| P0 rad/s | delta_a deg | delta_r deg | alpha deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|---:|\n";
-    for d in &a.zero_sideslip.departure {
-        m += &md_row(&departure_cells(d));
-    }
-    if let Some(why) = &a.zero_sideslip.withheld {
-        m += &format!("\nWithheld: {why}\n");
-    }
+    m += &critical_roll_rates(a);
     for (title, rows) in [
         (
             "Special points of the continuation (p >= 0)",
@@ -114,6 +82,47 @@ pub(super) fn markdown(s: &Summary, de: f64) -> String {
         if let Some(p) = png {
             m += &format!("![{}]({})\n", f.paper, p);
         }
+    }
+    m
+}
+
+/// The section on the critical roll rates of `a`: divergence, poles of det K, and the tables of
+/// jump, Hopf and zero-sideslip departure points.
+fn critical_roll_rates(a: &Analysis) -> String {
+    let mut m = String::new();
+    m += "## Critical roll rates\n\n";
+    m += &format!(
+        "- Pitch-yaw divergence, Eq. 5 (Table 1): {}\n",
+        list(&a.divergence_roll_rates, 6, "rad/s")
+    );
+    m += &format!(
+        "- Poles of det K (d = 0): {}\n\n",
+        list(
+            &a.det_k_poles.iter().map(|j| j.p0).collect::<Vec<_>>(),
+            6,
+            "rad/s"
+        )
+    );
+    m += "### Jump points (det K = 0, saddle-nodes)\n\n| P0 rad/s | delta_a deg | alpha deg | beta deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|---:|\n";
+    for j in &a.jump {
+        m += &md_row(&jump_cells(j));
+    }
+    if a.jump.is_empty() {
+        m += "| none | | | | | |\n";
+    }
+    m += "\n### Hopf points (closed form, Delta4 = 0 with omega^2 > 0)\n\n| P0 rad/s | delta_a deg | alpha deg | beta deg | omega rad/s | period s | l1 | kind |\n|---:|---:|---:|---:|---:|---:|---:|---|\n";
+    for h in &a.hopf {
+        m += &md_row(&hopf_cells(h));
+    }
+    if a.hopf.is_empty() {
+        m += "| none | | | | | | | |\n";
+    }
+    m += "\n### Zero-sideslip departure (det K = 0 at beta = 0)\n\n| P0 rad/s | delta_a deg | delta_r deg | alpha deg | q rad/s | r rad/s |\n|---:|---:|---:|---:|---:|---:|\n";
+    for d in &a.zero_sideslip.departure {
+        m += &md_row(&departure_cells(d));
+    }
+    if let Some(why) = &a.zero_sideslip.withheld {
+        m += &format!("\nWithheld: {why}\n");
     }
     m
 }

@@ -5,8 +5,8 @@
 # the shipped boxes. Only the proof's wall-clock seconds in the clearance's summary.md are
 # masked. Usage: .ci/same_outputs.sh OLD_BINARY NEW_BINARY
 set -euo pipefail
-old=$1
-new=$2
+old=$(realpath "$1")
+new=$(realpath "$2")
 root="$(cd "$(dirname "$0")/.." && pwd)"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

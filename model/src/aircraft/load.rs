@@ -30,10 +30,14 @@
 //! A nondimensional file's flight condition, geometry and inertia must keep every conversion
 //! factor within the normal range of f64 (`scale.rs`). Every error names the file, the line and
 //! column, the key with its table, and what was expected.
+//!
+//! The reading is in files of one concept each: the document as a tree with spans
+//! (`toml_tree.rs`), the valid keys (`keys.rs`), the reader every error takes its place from
+//! (`reader.rs`), text the parser refuses (`syntax.rs`), exact numbers (`number.rs`), the two
+//! formats (`principal_axis.rs`, `body_axis.rs`) and the tables they share (`flight.rs`,
+//! `limits.rs`, `uncertainty.rs`).
 
-use super::convert;
-use super::{Aircraft, Limits, Validity, DEFAULT_SPEED_M_S};
-use num_rational::BigRational;
+use super::{Aircraft, Limits, Validity};
 use std::path::Path;
 
 mod body_axis;
@@ -51,9 +55,8 @@ mod syntax;
 mod toml_tree;
 mod uncertainty;
 
-use body_axis::BodyAxisTables;
+use body_axis::{BodyAxis, BodyAxisTables};
 pub use error::{AircraftError, Location};
-use flight::ALTITUDE_RANGE_M;
 use keys::{derivative_keys, keys_of, list, qualified, tables_of_format, TOP_KEYS};
 use number::{Number, F64_RANGE, I64_RANGE};
 use principal_axis::inertia_coefficients;
@@ -76,7 +79,7 @@ pub fn parse(text: &str, file: &str) -> Result<Aircraft, AircraftError> {
 }
 
 /// Reads a nondimensional body-axis file and writes the equivalent dimensional principal-axis
-/// TOML (see [`convert::Converted::to_toml`]); a dimensional file is refused.
+/// TOML (see [`Converted::to_toml`](super::convert::Converted::to_toml)); a dimensional file is refused.
 pub fn convert_file(path: &Path) -> Result<String, AircraftError> {
     let file = path.display().to_string();
     match read_document(&read(path)?, &file)? {
@@ -98,15 +101,48 @@ fn read(path: &Path) -> Result<String, AircraftError> {
     })
 }
 
-/// A body-axis file: the aircraft and the conversion it came from (for `convert`).
-struct BodyAxis {
-    aircraft: Aircraft,
-    converted: convert::Converted,
-}
-
 enum Parsed {
     Dimensional(Aircraft),
     BodyAxis(Box<BodyAxis>),
+}
+
+/// The top-level tables of a file, each checked to hold only its valid keys, in document order.
+struct Tables<'k, 'n> {
+    tables: Vec<(&'k Key, Table<'n>)>,
+}
+
+impl<'k, 'n> Tables<'k, 'n> {
+    /// The table `name` with its key, if the file has it.
+    fn find(&self, name: &str) -> Option<&(&'k Key, Table<'n>)> {
+        self.tables.iter().find(|(k, _)| k.name == name)
+    }
+
+    /// The table `name`, if the file has it.
+    fn get(&self, name: &str) -> Option<&Table<'n>> {
+        self.find(name).map(|(_, t)| t)
+    }
+
+    /// The table `name`, which the file's format requires: `expected` says what it holds.
+    fn required(
+        &self,
+        cx: &Cx<'_>,
+        name: &str,
+        expected: String,
+    ) -> Result<&Table<'n>, AircraftError> {
+        self.get(name).ok_or_else(|| AircraftError::MissingTable {
+            at: cx.at(None),
+            table: name.to_string(),
+            expected,
+        })
+    }
+}
+
+/// What a file says besides its format's own tables: its name and the optional `[limits]` and
+/// `[validity]`.
+struct Common {
+    name: String,
+    limits: Limits,
+    validity: Validity,
 }
 
 fn read_document(text: &str, file: &str) -> Result<Parsed, AircraftError> {
@@ -118,137 +154,93 @@ fn read_document(text: &str, file: &str) -> Result<Parsed, AircraftError> {
     let entries = entries_of(doc.as_table());
 
     let mut name = None;
-    let mut tables: Vec<(&Key, Table<'_>)> = Vec::new();
+    let mut tables = Tables { tables: Vec::new() };
     for (key, value) in &entries {
         match key.name.as_str() {
-            "name" => match &value.kind {
-                Kind::String(s) if s.chars().any(char::is_control) => {
-                    return Err(AircraftError::InvalidValue {
-                        at: cx.at_value(key, value),
-                        key: "name".to_string(),
-                        expected: "a name without control characters (written or escaped, \
-                                   such as `\\t`, `\\n` or `\\u001b`: a name is printed in \
-                                   reports and on terminals)"
-                            .to_string(),
-                        value: shorten(&super::shown(s)),
-                    })
-                }
-                Kind::String(s) if !s.trim().is_empty() => name = Some(s.clone()),
-                Kind::String(_) => {
-                    return Err(AircraftError::WrongType {
-                        at: cx.at_value(key, value),
-                        key: "name".to_string(),
-                        expected: "a non-empty string",
-                        found: "an empty string",
-                    })
-                }
-                other => {
-                    return Err(AircraftError::WrongType {
-                        at: cx.at_value(key, value),
-                        key: "name".to_string(),
-                        expected: "a string",
-                        found: other.describe(),
-                    })
-                }
-            },
+            "name" => name = Some(cx.aircraft_name(key, value)?),
             table => match tables_of_format()
                 .iter()
                 .find(|(t, _)| !t.is_empty() && *t == table)
             {
-                Some((_, keys)) => tables.push((key, cx.table(key, value, keys)?)),
+                Some((_, keys)) => tables.tables.push((key, cx.table(key, value, keys)?)),
                 None => return Err(cx.unknown("", key)),
             },
         }
     }
-    let find = |t: &str| tables.iter().find(|(k, _)| k.name == t);
-    let body_axis = ["geometry", "coefficients"]
-        .iter()
-        .find_map(|t| find(t).map(|(k, _)| *k));
-    if let (Some(b), Some((d, _))) = (body_axis, find("derivatives").map(|(k, t)| (*k, t))) {
-        let (first, second) = if b.start() <= d.start() {
-            (b, d)
-        } else {
-            (d, b)
-        };
-        return Err(AircraftError::MixedFormats {
-            at: cx.at_key(second),
-            problem: format!(
-                "table `[{}]` given together with `[{}]`",
-                second.name, first.name
-            ),
-        });
+    let body_axis = cx.one_format(&tables)?;
+    let common = Common {
+        name: name.unwrap_or_else(|| default_name(file)),
+        limits: match tables.get("limits") {
+            Some(t) => cx.limits(t)?,
+            None => Limits::default(),
+        },
+        validity: match tables.get("validity") {
+            Some(t) => cx.validity(t)?,
+            None => Validity::default(),
+        },
+    };
+    if body_axis {
+        let body_axis = cx.body_axis_document(&tables, common)?;
+        return Ok(Parsed::BodyAxis(Box::new(body_axis)));
     }
-    let name = name.unwrap_or_else(|| default_name(file));
-    let limits = match find("limits") {
-        Some((_, t)) => cx.limits(t)?,
-        None => Limits::default(),
-    };
-    let validity = match find("validity") {
-        Some((_, t)) => cx.validity(t)?,
-        None => Validity::default(),
-    };
-    let missing = |table: &str, expected: String| AircraftError::MissingTable {
-        at: cx.at(None),
-        table: table.to_string(),
-        expected,
-    };
+    Ok(Parsed::Dimensional(
+        cx.dimensional_document(&tables, common)?,
+    ))
+}
 
-    if body_axis.is_some() {
-        let table = |t: &'static str| {
-            find(t)
-                .map(|(_, t)| t)
-                .ok_or_else(|| missing(t, format!("`[{t}]` with keys {}", list(&keys_of(t)))))
-        };
-        let tables = BodyAxisTables {
-            flight: table("flight")?,
-            geometry: table("geometry")?,
-            inertia: table("inertia")?,
-            coefficients: table("coefficients")?,
-        };
-        let input = cx.body_axis(&tables)?;
-        let converted = convert::convert(&input);
-        let aircraft = cx.body_axis_aircraft(name, &input, &converted, &tables)?;
-        let uncertainty = match find("uncertainty") {
-            Some((_, t)) => cx.body_axis_uncertainty(t, &input, &converted)?,
-            None => Vec::new(),
-        };
-        let aircraft = Aircraft {
-            limits,
-            validity,
-            uncertainty,
-            ..aircraft
-        };
-        return Ok(Parsed::BodyAxis(Box::new(BodyAxis {
-            aircraft,
-            converted,
-        })));
+impl Cx<'_> {
+    /// The `name` key: a non-empty string without control characters.
+    fn aircraft_name(&self, key: &Key, value: &Node) -> Result<String, AircraftError> {
+        match &value.kind {
+            Kind::String(s) if s.chars().any(char::is_control) => {
+                Err(AircraftError::InvalidValue {
+                    at: self.at_value(key, value),
+                    key: "name".to_string(),
+                    expected: "a name without control characters (written or escaped, \
+                               such as `\\t`, `\\n` or `\\u001b`: a name is printed in \
+                               reports and on terminals)"
+                        .to_string(),
+                    value: shorten(&super::shown(s)),
+                })
+            }
+            Kind::String(s) if !s.trim().is_empty() => Ok(s.clone()),
+            Kind::String(_) => Err(AircraftError::WrongType {
+                at: self.at_value(key, value),
+                key: "name".to_string(),
+                expected: "a non-empty string",
+                found: "an empty string",
+            }),
+            other => Err(AircraftError::WrongType {
+                at: self.at_value(key, value),
+                key: "name".to_string(),
+                expected: "a string",
+                found: other.describe(),
+            }),
+        }
     }
 
-    let inertia = find("inertia").map(|(_, t)| t).ok_or_else(|| {
-        missing(
-            "inertia",
-            "`[inertia]` with either `C`, `D`, `E` or `ix`, `iy`, `iz`".to_string(),
-        )
-    })?;
-    let derivatives = find("derivatives").map(|(_, t)| t).ok_or_else(|| {
-        missing(
-            "derivatives",
-            format!("`[derivatives]` with keys {}", list(&derivative_keys())),
-        )
-    })?;
-    let mut values: Vec<BigRational> = cx.inertia(inertia)?;
-    values.extend(cx.derivatives(derivatives)?);
-    let speed = match find("flight") {
-        Some((_, flight)) => cx.flight(flight)?,
-        None => DEFAULT_SPEED_M_S,
-    };
-    let mut aircraft = Aircraft::new(name, values, speed);
-    aircraft.limits = limits;
-    aircraft.validity = validity;
-    if let Some((_, t)) = find("uncertainty") {
-        aircraft.uncertainty = cx.uncertainty(t, &aircraft)?;
+    /// Whether the file is in the body-axis format (it has `[geometry]` or `[coefficients]`);
+    /// refused when it also has the dimensional `[derivatives]`, naming the later of the two.
+    fn one_format(&self, tables: &Tables<'_, '_>) -> Result<bool, AircraftError> {
+        let body_axis = ["geometry", "coefficients"]
+            .iter()
+            .find_map(|t| tables.find(t).map(|(k, _)| *k));
+        if let (Some(b), Some((d, _))) = (body_axis, tables.find("derivatives")) {
+            let (first, second) = if b.start() <= d.start() {
+                (b, *d)
+            } else {
+                (*d, b)
+            };
+            return Err(AircraftError::MixedFormats {
+                at: self.at_key(second),
+                problem: format!(
+                    "table `[{}]` given together with `[{}]`",
+                    second.name, first.name
+                ),
+            });
+        }
+        Ok(body_axis.is_some())
     }
-    Ok(Parsed::Dimensional(aircraft))
 }
 
 /// The name of an aircraft whose file has no `name` key: the file's stem.

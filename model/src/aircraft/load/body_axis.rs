@@ -2,12 +2,19 @@
 //! `[inertia]` ix, iy, iz, ixz and `[coefficients]`, read into the input of
 //! [`convert`](crate::aircraft::convert), and the aircraft of its conversion checked.
 
-use super::super::convert::{self, BodyAxisInput, Coefficient, Density};
+use super::super::convert::{self, BodyAxisInput, Coefficient};
 use super::super::{rational_to_f64, Aircraft, Param};
 use super::{
-    inertia_coefficients, qualified, shorten, AircraftError, Cx, Table, ALTITUDE_RANGE_M, F64_RANGE,
+    inertia_coefficients, keys_of, list, qualified, AircraftError, Common, Cx, Table, Tables,
+    F64_RANGE,
 };
 use num_traits::{Signed, Zero};
+
+/// A body-axis file: the aircraft and the conversion it came from (for `convert`).
+pub(super) struct BodyAxis {
+    pub(super) aircraft: Aircraft,
+    pub(super) converted: convert::Converted,
+}
 
 /// The four tables of a nondimensional body-axis file.
 pub(super) struct BodyAxisTables<'t, 'n> {
@@ -18,6 +25,41 @@ pub(super) struct BodyAxisTables<'t, 'n> {
 }
 
 impl Cx<'_> {
+    /// The aircraft of a body-axis file and its conversion: the four tables of the format,
+    /// converted and checked, and the optional `[uncertainty]`.
+    pub(super) fn body_axis_document(
+        &self,
+        tables: &Tables<'_, '_>,
+        common: Common,
+    ) -> Result<BodyAxis, AircraftError> {
+        let table = |t: &'static str| {
+            tables.required(self, t, format!("`[{t}]` with keys {}", list(&keys_of(t))))
+        };
+        let format = BodyAxisTables {
+            flight: table("flight")?,
+            geometry: table("geometry")?,
+            inertia: table("inertia")?,
+            coefficients: table("coefficients")?,
+        };
+        let input = self.body_axis(&format)?;
+        let converted = convert::convert(&input);
+        let aircraft = self.body_axis_aircraft(common.name, &input, &converted, &format)?;
+        let uncertainty = match tables.get("uncertainty") {
+            Some(t) => self.body_axis_uncertainty(t, &input, &converted)?,
+            None => Vec::new(),
+        };
+        let aircraft = Aircraft {
+            limits: common.limits,
+            validity: common.validity,
+            uncertainty,
+            ..aircraft
+        };
+        Ok(BodyAxis {
+            aircraft,
+            converted,
+        })
+    }
+
     /// The inputs of a nondimensional body-axis file, each checked where it is written.
     pub(super) fn body_axis(
         &self,
@@ -44,44 +86,7 @@ impl Cx<'_> {
         if let Some((key, value)) = flight.get("speed") {
             self.gravity_term(flight, &(key, value), &speed)?;
         }
-        let density = match (flight.get("density"), flight.get("altitude")) {
-            (Some(_), Some((key, value))) => {
-                return Err(AircraftError::InvalidValue {
-                    at: self.at_key(key),
-                    key: "flight.altitude".to_string(),
-                    expected: "either `flight.density` or `flight.altitude`, not both".to_string(),
-                    value: shorten(&self.written(value)),
-                })
-            }
-            (Some(entry), None) => Density::Given(
-                self.positive(flight, entry, "a density in kg/m^3 > 0")?
-                    .exact,
-            ),
-            (None, Some((key, value))) => {
-                let n = self.number(flight.name, key, value)?;
-                let (low, high) = ALTITUDE_RANGE_M;
-                if !(n.float >= low && n.float <= high) {
-                    return Err(AircraftError::InvalidValue {
-                        at: self.at_value(key, value),
-                        key: qualified(flight.name, &key.name),
-                        expected: format!(
-                            "an altitude in m within the ISA troposphere, {low} to {high}"
-                        ),
-                        value: shorten(&n.written),
-                    });
-                }
-                Density::Altitude(n.float)
-            }
-            (None, None) => {
-                return Err(self.missing_key(
-                    flight,
-                    "density",
-                    "`density = <number>` in kg/m^3, or `altitude = <number>` in m (ISA \
-                     troposphere, 0 to 11000)"
-                        .to_string(),
-                ))
-            }
-        };
+        let density = self.density(flight)?;
         let length = |k: &str, what: &str| self.required_positive(geometry, k, what);
         let moment = |k: &str| {
             self.required_positive(inertia, k, "a body-axis moment of inertia in kg m^2 > 0")

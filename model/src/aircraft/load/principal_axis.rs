@@ -1,8 +1,8 @@
 //! The dimensional principal-axis format of Table A.1: `[inertia]` (C, D, E, or ix, iy, iz from
 //! which they are computed exactly) and `[derivatives]`, the 15 dimensional derivatives.
 
-use super::super::Param;
-use super::{qualified, AircraftError, Cx, Table};
+use super::super::{Aircraft, Param, DEFAULT_SPEED_M_S};
+use super::{derivative_keys, list, qualified, AircraftError, Common, Cx, Table, Tables};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
@@ -11,6 +11,38 @@ use num_traits::{Signed, Zero};
 const DEFAULT_N_DELTA_R: i64 = -1;
 
 impl Cx<'_> {
+    /// The aircraft of a dimensional file: `[inertia]`, `[derivatives]`, the speed of the
+    /// optional `[flight]` and the optional `[uncertainty]`.
+    pub(super) fn dimensional_document(
+        &self,
+        tables: &Tables<'_, '_>,
+        common: Common,
+    ) -> Result<Aircraft, AircraftError> {
+        let inertia = tables.required(
+            self,
+            "inertia",
+            "`[inertia]` with either `C`, `D`, `E` or `ix`, `iy`, `iz`".to_string(),
+        )?;
+        let derivatives = tables.required(
+            self,
+            "derivatives",
+            format!("`[derivatives]` with keys {}", list(&derivative_keys())),
+        )?;
+        let mut values: Vec<BigRational> = self.inertia(inertia)?;
+        values.extend(self.derivatives(derivatives)?);
+        let speed = match tables.get("flight") {
+            Some(flight) => self.flight(flight)?,
+            None => DEFAULT_SPEED_M_S,
+        };
+        let mut aircraft = Aircraft::new(common.name, values, speed);
+        aircraft.limits = common.limits;
+        aircraft.validity = common.validity;
+        if let Some(t) = tables.get("uncertainty") {
+            aircraft.uncertainty = self.uncertainty(t, &aircraft)?;
+        }
+        Ok(aircraft)
+    }
+
     /// C, D, E, given or computed from ix, iy, iz.
     pub(super) fn inertia(&self, table: &Table<'_>) -> Result<Vec<BigRational>, AircraftError> {
         if let Some((key, _)) = table.get("ixz") {
@@ -108,27 +140,35 @@ impl Cx<'_> {
                 self.one_rigid_body(table, given)?;
                 Ok(vec![c.clone(), d.clone(), e.clone()])
             }
-            [ix, iy, iz] => {
-                for (a, b, c, text) in [
-                    (ix, iy, iz, "ix + iy < iz"),
-                    (ix, iz, iy, "ix + iz < iy"),
-                    (iy, iz, ix, "iy + iz < ix"),
-                ] {
-                    if a + b < *c {
-                        return Err(AircraftError::UnphysicalInertia {
-                            at: self.at(table.span.as_ref()),
-                            problem: text.to_string(),
-                        });
-                    }
-                }
-                // Within the triangle inequalities every coefficient lies in [-1, 1].
-                Ok(inertia_coefficients(ix, iy, iz).to_vec())
-            }
+            [ix, iy, iz] => self.coefficients_of_moments(table, [ix, iy, iz]),
             _ => Err(AircraftError::InertiaSet {
                 at: self.at(table.span.as_ref()),
                 problem: "incomplete set".to_string(),
             }),
         }
+    }
+
+    /// C, D, E of principal moments ix, iy, iz, refused unless they satisfy the triangle
+    /// inequalities of a rigid body.
+    fn coefficients_of_moments(
+        &self,
+        table: &Table<'_>,
+        [ix, iy, iz]: [&BigRational; 3],
+    ) -> Result<Vec<BigRational>, AircraftError> {
+        for (a, b, c, text) in [
+            (ix, iy, iz, "ix + iy < iz"),
+            (ix, iz, iy, "ix + iz < iy"),
+            (iy, iz, ix, "iy + iz < ix"),
+        ] {
+            if a + b < *c {
+                return Err(AircraftError::UnphysicalInertia {
+                    at: self.at(table.span.as_ref()),
+                    problem: text.to_string(),
+                });
+            }
+        }
+        // Within the triangle inequalities every coefficient lies in [-1, 1].
+        Ok(inertia_coefficients(ix, iy, iz).to_vec())
     }
 
     /// The 15 derivatives in [`Param::ALL`] order.

@@ -2,7 +2,8 @@
 //! defaults, dotted and inline tables, `[limits]` and `[validity]`.
 
 use super::*;
-use crate::aircraft::{decimal_to_rational, Param};
+use crate::aircraft::{decimal_to_rational, Param, DEFAULT_SPEED_M_S};
+use num_rational::BigRational;
 use num_traits::Zero;
 
 #[test]

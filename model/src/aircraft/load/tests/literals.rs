@@ -4,6 +4,7 @@
 use super::super::suggest::edit_distance;
 use super::*;
 use crate::aircraft::{decimal_to_rational, Param};
+use num_rational::BigRational;
 
 #[test]
 fn garbage_never_panics() {

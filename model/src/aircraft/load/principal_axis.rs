@@ -2,7 +2,9 @@
 //! which they are computed exactly) and `[derivatives]`, the 15 dimensional derivatives.
 
 use super::super::{Aircraft, Param, DEFAULT_SPEED_M_S};
-use super::{derivative_keys, list, qualified, AircraftError, Common, Cx, Table, Tables};
+use super::{
+    derivative_keys, list, qualified, AircraftError, Common, Cx, Key, Node, Number, Table, Tables,
+};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
@@ -88,27 +90,10 @@ impl Cx<'_> {
         } else {
             (&["ix", "iy", "iz"], &moments)
         };
-        let find = |name: &str| given.iter().find(|(k, _, _)| k.name == name);
-        let missing: Vec<&str> = set.iter().copied().filter(|k| find(k).is_none()).collect();
-        if !missing.is_empty() {
-            let present: Vec<String> = set
-                .iter()
-                .filter(|k| find(k).is_some())
-                .map(|k| format!("`inertia.{k}`"))
-                .collect();
-            return Err(AircraftError::InertiaSet {
-                at: self.at(table.span.as_ref()),
-                problem: format!(
-                    "missing {} (only {} given)",
-                    missing
-                        .iter()
-                        .map(|k| format!("`inertia.{k}`"))
-                        .collect::<Vec<_>>()
-                        .join(", "),
-                    present.join(", ")
-                ),
-            });
+        if let Some(e) = self.incomplete_set(table, set, given) {
+            return Err(e);
         }
+        let find = |name: &str| given.iter().find(|(k, _, _)| k.name == name);
         let mut out = Vec::with_capacity(3);
         for k in set {
             let Some((key, value, n)) = find(k) else {
@@ -146,6 +131,37 @@ impl Cx<'_> {
                 problem: "incomplete set".to_string(),
             }),
         }
+    }
+
+    /// The error for a set (`C`, `D`, `E` or `ix`, `iy`, `iz`) of which only some are given.
+    fn incomplete_set(
+        &self,
+        table: &Table<'_>,
+        set: &[&str],
+        given: &[(&Key, &Node, Number)],
+    ) -> Option<AircraftError> {
+        let find = |name: &str| given.iter().find(|(k, _, _)| k.name == name);
+        let missing: Vec<&str> = set.iter().copied().filter(|k| find(k).is_none()).collect();
+        if missing.is_empty() {
+            return None;
+        }
+        let present: Vec<String> = set
+            .iter()
+            .filter(|k| find(k).is_some())
+            .map(|k| format!("`inertia.{k}`"))
+            .collect();
+        Some(AircraftError::InertiaSet {
+            at: self.at(table.span.as_ref()),
+            problem: format!(
+                "missing {} (only {} given)",
+                missing
+                    .iter()
+                    .map(|k| format!("`inertia.{k}`"))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                present.join(", ")
+            ),
+        })
     }
 
     /// C, D, E of principal moments ix, iy, iz, refused unless they satisfy the triangle

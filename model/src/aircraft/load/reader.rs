@@ -8,6 +8,8 @@ use super::{
 };
 use std::ops::Range;
 
+/// The reader of one file: its text, which every span indexes, and its name, which every message
+/// starts with.
 pub(super) struct Cx<'a> {
     pub(super) text: &'a str,
     pub(super) file: &'a str,
@@ -22,6 +24,7 @@ pub(super) struct Table<'n> {
 }
 
 impl Table<'_> {
+    /// The entry of `key`, if the table has it.
     pub(super) fn get(&self, key: &str) -> Option<&(Key, Node)> {
         self.entries.iter().find(|(k, _)| k.name == key)
     }

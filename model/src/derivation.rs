@@ -144,32 +144,8 @@ impl Derivation {
     /// delta_r applies to the unconstrained roll only: the zero-sideslip trim frees the rudder.
     pub fn derive(values: &[(Sym, Q)]) -> Derivation {
         let s = symbols();
-        let base_values: Vec<(Sym, Q)> = values
-            .iter()
-            .filter(|(v, _)| *v != s.delta_r)
-            .cloned()
-            .collect();
-        let model = pss().map(|f| f.subs_values(&base_values));
-        // The unconstrained roll holds the rudder at the given value. With n_delta_a != 0 the
-        // aileron also enters the yaw equation: for a given P0 the four trim equations stay linear
-        // in (alpha, beta, q, r), with a constant part affine in delta_a, and the roll equation
-        // becomes quadratic in delta_a (the trim condition below).
-        let unc_values: Vec<(Sym, Q)> = values
-            .iter()
-            .filter(|(v, _)| *v == s.delta_r)
-            .cloned()
-            .collect();
-        let unc = model.clone().map(|f| f.subs_values(&unc_values));
-
-        let at_trim = |f: &Poly| -> Poly {
-            f.subs_all(
-                &s.states()
-                    .iter()
-                    .zip(s.trims())
-                    .map(|(x, t)| (*x, Poly::var(t)))
-                    .collect::<Vec<_>>(),
-            )
-        };
+        let (model, unc) = models(s, values);
+        let at_trim = |f: &Poly| at_trim(s, f);
 
         // Step 1, Eqs 1-5: the trim system with p = P0 is linear in [alpha, beta, q, r].
         let unknowns = [s.alpha, s.beta, s.q, s.r];
@@ -179,17 +155,7 @@ impl Derivation {
             .collect();
         let (a, a_rhs) = linear_system(&at_p0, &unknowns);
         let (trim, det_a) = solve(&a, &a_rhs);
-        let biquadratic = {
-            // The P0^4 coefficient is C D, which a user's aircraft may make zero (Ix = Iy or
-            // Ix = Iz): missing coefficients are zero, odd ones vanish identically.
-            let c = det_a.coeffs(s.p0);
-            let at = |k: usize| c.get(k).cloned().unwrap_or_default();
-            assert!(
-                c.len() <= 5 && at(1).is_zero() && at(3).is_zero(),
-                "Eq. 5: det A must be a biquadratic in P0"
-            );
-            [at(0), at(2), at(4)]
-        };
+        let biquadratic = biquadratic(s, &det_a);
         let roll_at_trim = at_trim(&unc[2]);
         let delta_a = solve_for(&roll_at_trim, s.delta_a);
 
@@ -230,55 +196,26 @@ impl Derivation {
         });
 
         // Step 5, Eqs 16, 27-31: stiffness matrix with p = p_s substituted.
-        let y = [s.alpha, s.beta];
-        let k0: [[Poly; 2]; 2] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| coefficient_of(&second_order[i], y[j]))
-        });
-        let g: [Poly; 2] = std::array::from_fn(|i| coefficient_of(&second_order[i], s.p));
-        let k_times_d: [[Poly; 2]; 2] =
-            std::array::from_fn(|i| std::array::from_fn(|j| &(&d * &k0[i][j]) - &(&g[i] * &h[j])));
-        let k0m = Matrix::from_rows(k0.iter().map(|r| r.to_vec()).collect());
-        let adj = k0m.adjugate();
-        let h_adj_g = (0..2).fold(Poly::zero(), |acc, i| {
-            (0..2).fold(acc, |acc, j| &acc + &(&(&h[i] * adj.get(i, j)) * &g[j]))
-        });
-        let d_det_k = &(&d * &k0m.det()) - &h_adj_g;
+        let Stiffness {
+            k0,
+            g,
+            k_times_d,
+            d_det_k,
+        } = stiffness(s, &second_order, &d, &h);
 
         // Step 7: det J5 = d det K, identically in the trim symbols.
         let det_j5 = jacobian.det();
         let identity_residual = &det_j5 - &d_det_k;
 
         // Step 6, Eqs 32-35: zero sideslip; the rudder is freed and beta = 0.
-        let zs_eqs: Vec<Poly> = [0usize, 1, 3]
-            .iter()
-            .map(|&i| model[i].subs_all(&[(s.p, Poly::var(s.p0)), (s.beta, Poly::zero())]))
-            .collect();
-        assert!(
-            zs_eqs.iter().all(|e| !e.contains(s.delta_r)),
-            "Eq. 34: A1 is block-triangular, the rudder only enters the yaw equation"
-        );
-        let (zs_a, zs_rhs) = linear_system(&zs_eqs, &[s.alpha, s.q, s.r]);
-        let (zs_trim_v, zs_det) = solve(&zs_a, &zs_rhs);
-        let zs_trim: [Poly; 3] = [
-            zs_trim_v[0].clone(),
-            zs_trim_v[1].clone(),
-            zs_trim_v[2].clone(),
-        ];
-        let zs_at_trim = |f: &Poly| at_trim(f).subs(s.beta0, &Poly::zero());
-        // The roll and yaw equations hold the trim with the two lateral controls together.
-        let (zs_controls, zs_controls_det) = {
-            let eqs = [zs_at_trim(&model[2]), zs_at_trim(&model[4])];
-            let (m, c) = linear_system(&eqs, &[s.delta_a, s.delta_r]);
-            solve(&m, &c)
-        };
-        let zs_delta_a = Ratio {
-            num: zs_controls[0].clone(),
-            den: zs_controls_det.clone(),
-        };
-        let zs_delta_r = Ratio {
-            num: zs_controls[1].clone(),
-            den: zs_controls_det,
-        };
+        let ZeroSideslip {
+            zs_a,
+            zs_rhs,
+            zs_det,
+            zs_trim,
+            zs_delta_r,
+            zs_delta_a,
+        } = zero_sideslip(s, &model);
 
         Derivation {
             model,
@@ -438,6 +375,133 @@ impl Ratio {
             .as_constant()
             .expect("denominator is a constant by construction");
         self.num.scale(&Q::ONE.div(&c))
+    }
+}
+
+/// The model with the aircraft's values, and the unconstrained model (the rudder also at its
+/// value). The unconstrained roll holds the rudder at the given value. With n_delta_a != 0 the
+/// aileron also enters the yaw equation: for a given P0 the four trim equations stay linear in
+/// (alpha, beta, q, r), with a constant part affine in delta_a, and the roll equation becomes
+/// quadratic in delta_a (the trim condition).
+fn models(s: &Symbols, values: &[(Sym, Q)]) -> ([Poly; 5], [Poly; 5]) {
+    let base_values: Vec<(Sym, Q)> = values
+        .iter()
+        .filter(|(v, _)| *v != s.delta_r)
+        .cloned()
+        .collect();
+    let model = pss().map(|f| f.subs_values(&base_values));
+    let unc_values: Vec<(Sym, Q)> = values
+        .iter()
+        .filter(|(v, _)| *v == s.delta_r)
+        .cloned()
+        .collect();
+    let unc = model.clone().map(|f| f.subs_values(&unc_values));
+    (model, unc)
+}
+
+/// `f` with the states replaced by their trim symbols.
+fn at_trim(s: &Symbols, f: &Poly) -> Poly {
+    f.subs_all(
+        &s.states()
+            .iter()
+            .zip(s.trims())
+            .map(|(x, t)| (*x, Poly::var(t)))
+            .collect::<Vec<_>>(),
+    )
+}
+
+/// Eq. 5: the coefficients of P0^0, P0^2 and P0^4 of det A. The P0^4 coefficient is C D, which a
+/// user's aircraft may make zero (Ix = Iy or Ix = Iz): missing coefficients are zero, odd ones
+/// vanish identically.
+fn biquadratic(s: &Symbols, det_a: &Poly) -> [Poly; 3] {
+    let c = det_a.coeffs(s.p0);
+    let at = |k: usize| c.get(k).cloned().unwrap_or_default();
+    assert!(
+        c.len() <= 5 && at(1).is_zero() && at(3).is_zero(),
+        "Eq. 5: det A must be a biquadratic in P0"
+    );
+    [at(0), at(2), at(4)]
+}
+
+/// Step 5 (Eqs 16, 27-31): the stiffness matrix K = K0 - g h^T / d with p = p_s substituted.
+struct Stiffness {
+    k0: [[Poly; 2]; 2],
+    g: [Poly; 2],
+    k_times_d: [[Poly; 2]; 2],
+    d_det_k: Poly,
+}
+
+/// Step 5 from the second-order equations and the roll mode's static residual `d`, `h`.
+fn stiffness(s: &Symbols, second_order: &[Poly; 2], d: &Poly, h: &[Poly; 2]) -> Stiffness {
+    let y = [s.alpha, s.beta];
+    let k0: [[Poly; 2]; 2] =
+        std::array::from_fn(|i| std::array::from_fn(|j| coefficient_of(&second_order[i], y[j])));
+    let g: [Poly; 2] = std::array::from_fn(|i| coefficient_of(&second_order[i], s.p));
+    let k_times_d: [[Poly; 2]; 2] =
+        std::array::from_fn(|i| std::array::from_fn(|j| &(d * &k0[i][j]) - &(&g[i] * &h[j])));
+    let k0m = Matrix::from_rows(k0.iter().map(|r| r.to_vec()).collect());
+    let adj = k0m.adjugate();
+    let h_adj_g = (0..2).fold(Poly::zero(), |acc, i| {
+        (0..2).fold(acc, |acc, j| &acc + &(&(&h[i] * adj.get(i, j)) * &g[j]))
+    });
+    let d_det_k = &(d * &k0m.det()) - &h_adj_g;
+    Stiffness {
+        k0,
+        g,
+        k_times_d,
+        d_det_k,
+    }
+}
+
+/// Step 6 (Eqs 32-35): the zero-sideslip trim, with the rudder freed and beta = 0.
+struct ZeroSideslip {
+    zs_a: Matrix,
+    zs_rhs: Vec<Poly>,
+    zs_det: Poly,
+    zs_trim: [Poly; 3],
+    zs_delta_r: Ratio,
+    zs_delta_a: Ratio,
+}
+
+/// Step 6 from the model with the aircraft's values.
+fn zero_sideslip(s: &Symbols, model: &[Poly; 5]) -> ZeroSideslip {
+    let zs_eqs: Vec<Poly> = [0usize, 1, 3]
+        .iter()
+        .map(|&i| model[i].subs_all(&[(s.p, Poly::var(s.p0)), (s.beta, Poly::zero())]))
+        .collect();
+    assert!(
+        zs_eqs.iter().all(|e| !e.contains(s.delta_r)),
+        "Eq. 34: A1 is block-triangular, the rudder only enters the yaw equation"
+    );
+    let (zs_a, zs_rhs) = linear_system(&zs_eqs, &[s.alpha, s.q, s.r]);
+    let (zs_trim_v, zs_det) = solve(&zs_a, &zs_rhs);
+    let zs_trim: [Poly; 3] = [
+        zs_trim_v[0].clone(),
+        zs_trim_v[1].clone(),
+        zs_trim_v[2].clone(),
+    ];
+    let zs_at_trim = |f: &Poly| at_trim(s, f).subs(s.beta0, &Poly::zero());
+    // The roll and yaw equations hold the trim with the two lateral controls together.
+    let (zs_controls, zs_controls_det) = {
+        let eqs = [zs_at_trim(&model[2]), zs_at_trim(&model[4])];
+        let (m, c) = linear_system(&eqs, &[s.delta_a, s.delta_r]);
+        solve(&m, &c)
+    };
+    let zs_delta_a = Ratio {
+        num: zs_controls[0].clone(),
+        den: zs_controls_det.clone(),
+    };
+    let zs_delta_r = Ratio {
+        num: zs_controls[1].clone(),
+        den: zs_controls_det,
+    };
+    ZeroSideslip {
+        zs_a,
+        zs_rhs,
+        zs_det,
+        zs_trim,
+        zs_delta_r,
+        zs_delta_a,
     }
 }
 

@@ -16,146 +16,16 @@
 //! assert_eq!(a.exact(Param::Lp).to_string(), "-217529/10000");
 //! ```
 
-use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{ToPrimitive, Zero};
-use std::str::FromStr;
 use std::sync::OnceLock;
 
 pub mod convert;
+mod exact;
 mod load;
+mod param;
+pub use exact::{decimal_to_rational, f64_to_rational, rational_to_f64};
 pub use load::{convert_file, load, parse, AircraftError, Location};
-
-/// The eighteen parameters of the PSS model (Appendix A.2), in the paper's notation.
-///
-/// The order is the order of the fields of the generated `Derivatives` struct and of the
-/// TOML keys in error messages; it never changes silently.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum Param {
-    /// Inertia coupling coefficient in pitch, C = (Iz - Ix)/Iy.
-    C,
-    /// Inertia coupling coefficient in yaw, D = (Iy - Ix)/Iz.
-    D,
-    /// Inertia coupling coefficient in roll, E = (Iz - Iy)/Ix.
-    E,
-    /// z_alpha, 1/s.
-    ZAlpha,
-    /// y_beta, 1/s.
-    YBeta,
-    /// l_p, 1/s.
-    Lp,
-    /// l_r, 1/s.
-    Lr,
-    /// l_beta, 1/s^2.
-    LBeta,
-    /// l_delta_a, 1/s^2.
-    LDeltaA,
-    /// m_q, 1/s.
-    Mq,
-    /// m_alpha, 1/s^2.
-    MAlpha,
-    /// m_delta_e, 1/s^2.
-    MDeltaE,
-    /// n_p, 1/s.
-    Np,
-    /// n_r, 1/s.
-    Nr,
-    /// n_beta, 1/s^2.
-    NBeta,
-    /// n_delta_a, 1/s^2.
-    NDeltaA,
-    /// n_delta_r, 1/s^2.
-    NDeltaR,
-    /// l_delta_r, 1/s^2 (roll due to rudder; optional, default 0).
-    LDeltaR,
-}
-
-impl Param {
-    /// All parameters in their fixed order.
-    pub const ALL: [Param; 18] = [
-        Param::C,
-        Param::D,
-        Param::E,
-        Param::ZAlpha,
-        Param::YBeta,
-        Param::Lp,
-        Param::Lr,
-        Param::LBeta,
-        Param::LDeltaA,
-        Param::Mq,
-        Param::MAlpha,
-        Param::MDeltaE,
-        Param::Np,
-        Param::Nr,
-        Param::NBeta,
-        Param::NDeltaA,
-        Param::NDeltaR,
-        Param::LDeltaR,
-    ];
-
-    /// Snake-case name: the TOML key (`[derivatives]` or `[inertia]`) and the Rust field name.
-    pub fn key(self) -> &'static str {
-        match self {
-            Param::C => "C",
-            Param::D => "D",
-            Param::E => "E",
-            Param::ZAlpha => "z_alpha",
-            Param::YBeta => "y_beta",
-            Param::Lp => "l_p",
-            Param::Lr => "l_r",
-            Param::LBeta => "l_beta",
-            Param::LDeltaA => "l_delta_a",
-            Param::Mq => "m_q",
-            Param::MAlpha => "m_alpha",
-            Param::MDeltaE => "m_delta_e",
-            Param::Np => "n_p",
-            Param::Nr => "n_r",
-            Param::NBeta => "n_beta",
-            Param::NDeltaA => "n_delta_a",
-            Param::NDeltaR => "n_delta_r",
-            Param::LDeltaR => "l_delta_r",
-        }
-    }
-
-    /// LaTeX symbol as printed in the paper.
-    pub fn latex(self) -> &'static str {
-        match self {
-            Param::C => "C",
-            Param::D => "D",
-            Param::E => "E",
-            Param::ZAlpha => "z_\\alpha",
-            Param::YBeta => "y_\\beta",
-            Param::Lp => "l_p",
-            Param::Lr => "l_r",
-            Param::LBeta => "l_\\beta",
-            Param::LDeltaA => "l_{\\delta a}",
-            Param::Mq => "m_q",
-            Param::MAlpha => "m_\\alpha",
-            Param::MDeltaE => "m_{\\delta e}",
-            Param::Np => "n_p",
-            Param::Nr => "n_r",
-            Param::NBeta => "n_\\beta",
-            Param::NDeltaA => "n_{\\delta a}",
-            Param::NDeltaR => "n_{\\delta r}",
-            Param::LDeltaR => "l_{\\delta r}",
-        }
-    }
-
-    /// Unit of the parameter, for documentation.
-    pub fn unit(self) -> &'static str {
-        match self {
-            Param::C | Param::D | Param::E => "1",
-            Param::ZAlpha | Param::YBeta | Param::Lp | Param::Lr | Param::Mq | Param::Np => "1/s",
-            Param::Nr => "1/s",
-            _ => "1/s^2",
-        }
-    }
-
-    /// Position in [`Param::ALL`].
-    pub fn index(self) -> usize {
-        self as usize
-    }
-}
+pub use param::Param;
 
 /// Speed used for the g/V terms of the 7th-order model when a file gives none.
 ///
@@ -404,89 +274,9 @@ pub fn shown(name: &str) -> String {
         .collect()
 }
 
-/// Parses a decimal literal (`-13.52504`, `1e-3`, `2.5E+2`) into the exact rational it denotes.
-pub fn decimal_to_rational(s: &str) -> Option<BigRational> {
-    let s = s.trim();
-    let (mantissa, exp) = match s.find(['e', 'E']) {
-        Some(i) => (&s[..i], i64::from_str(&s[i + 1..]).ok()?),
-        None => (s, 0),
-    };
-    let (neg, digits) = match mantissa.strip_prefix('-') {
-        Some(rest) => (true, rest),
-        None => (false, mantissa.strip_prefix('+').unwrap_or(mantissa)),
-    };
-    let (int_part, frac_part) = match digits.find('.') {
-        Some(i) => (&digits[..i], &digits[i + 1..]),
-        None => (digits, ""),
-    };
-    if int_part.is_empty() && frac_part.is_empty() {
-        return None;
-    }
-    if !int_part
-        .chars()
-        .chain(frac_part.chars())
-        .all(|c| c.is_ascii_digit())
-    {
-        return None;
-    }
-    let all = format!("{int_part}{frac_part}");
-    let mut num = BigInt::from_str(if all.is_empty() { "0" } else { &all }).ok()?;
-    if neg {
-        num = -num;
-    }
-    let scale = exp - frac_part.len() as i64;
-    if scale.unsigned_abs() > 400 {
-        return None;
-    }
-    let ten = BigInt::from(10);
-    let p = num_traits::pow(ten, scale.unsigned_abs() as usize);
-    Some(if scale >= 0 {
-        BigRational::from_integer(num * p)
-    } else {
-        BigRational::new(num, p)
-    })
-}
-
-/// The exact rational denoted by the shortest decimal that round-trips to `x`.
-///
-/// For values computed in f64 (the ISA density, the principal-axis rotation, random test
-/// aircraft): Rust prints the shortest decimal that round-trips, so this is the simplest exact
-/// rational that rounds to `x`. (TOML numbers do not go through it: the loader reads the literal
-/// the user wrote.) Returns `None` for NaN or inf.
-pub fn f64_to_rational(x: f64) -> Option<BigRational> {
-    if !x.is_finite() {
-        return None;
-    }
-    decimal_to_rational(&format!("{x:e}"))
-}
-
-/// Rounds an exact rational to the nearest f64 (within one ulp).
-pub fn rational_to_f64(q: &BigRational) -> f64 {
-    if q.is_zero() {
-        return 0.0;
-    }
-    q.to_f64().unwrap_or(f64::NAN)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn decimals_enter_as_the_exact_rational_they_denote() {
-        let q = decimal_to_rational("-13.52504").unwrap();
-        assert_eq!(q, BigRational::new((-1352504).into(), 100000.into()));
-        assert_eq!(
-            decimal_to_rational("2.5e-3").unwrap(),
-            BigRational::new(1.into(), 400.into())
-        );
-        assert_eq!(
-            f64_to_rational(-110.45).unwrap(),
-            decimal_to_rational("-110.45").unwrap()
-        );
-        assert!(f64_to_rational(f64::NAN).is_none());
-        assert!(decimal_to_rational("1.2.3").is_none());
-    }
 
     #[test]
     fn builtin_aircraft_are_table_a1() {

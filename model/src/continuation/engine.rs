@@ -417,11 +417,30 @@ impl<S: System> Engine<'_, S> {
         if s_end.is_nan() || s_end <= 0.0 {
             return None;
         }
+        let bracket = self.bracket(a, b, &g, s_end, singular);
+        if !singular {
+            return bracket.best.map(|(_, n)| n);
+        }
+        self.branch_point_by_cubic(a, &g, s_end, bracket)
+    }
+
+    /// The point at pseudo-arclength `s` along `a`'s tangent, corrected onto the branch from `z0`.
+    fn along(&self, a: &Node, s: f64, z0: V6) -> Option<Node> {
         let base = a.t.dot(&a.z);
-        let at = |s: f64, z0: V6| {
-            self.correct(z0, &a.t, base + s)
-                .and_then(|(z, _)| self.node(z, &a.t))
-        };
+        self.correct(z0, &a.t, base + s)
+            .and_then(|(z, _)| self.node(z, &a.t))
+    }
+
+    /// Illinois regula falsi on `g` in `[0, s_end]` along `a`'s tangent (see [`Engine::locate`]),
+    /// to `locate_tol`, or to 1e-6 at a branch point (`singular`).
+    fn bracket(
+        &self,
+        a: &Node,
+        b: &Node,
+        g: &impl Fn(&Node) -> f64,
+        s_end: f64,
+        singular: bool,
+    ) -> Bracket {
         let (mut lo, mut glo, mut hi, mut ghi) = (0.0, g(a), s_end, g(b));
         let (mut zlo, mut zhi) = (a.z, b.z);
         let mut best: Option<(f64, Node)> = None;
@@ -440,7 +459,7 @@ impl<S: System> Engine<'_, S> {
                 s = 0.5 * (lo + hi);
             }
             let z0 = zlo + (zhi - zlo) * ((s - lo) / (hi - lo));
-            let Some(n) = at(s, z0) else {
+            let Some(n) = self.along(a, s, z0) else {
                 break;
             };
             let gs = g(&n);
@@ -463,9 +482,31 @@ impl<S: System> Engine<'_, S> {
                 side = 1;
             }
         }
-        if !singular {
-            return best.map(|(_, n)| n);
+        Bracket {
+            lo,
+            hi,
+            zlo,
+            zhi,
+            best,
         }
+    }
+
+    /// The branch point near the narrowed `bracket`: the zero of a cubic through four points
+    /// around the estimate, away from the singular point, with z and the tangent interpolated.
+    fn branch_point_by_cubic(
+        &self,
+        a: &Node,
+        g: &impl Fn(&Node) -> f64,
+        s_end: f64,
+        bracket: Bracket,
+    ) -> Option<Node> {
+        let Bracket {
+            lo,
+            hi,
+            zlo,
+            zhi,
+            best,
+        } = bracket;
         // Cubic through four points around the estimate, away from the singular point.
         let (s0, z_near, t_near) = match &best {
             Some((s, n)) => (*s, n.z, n.t),
@@ -477,7 +518,7 @@ impl<S: System> Engine<'_, S> {
             let s = s0 + o * h;
             // Tangent predictor from the point nearest the branch point, on this branch.
             let z0 = z_near + t_near * ((s - s0) / t_near.dot(&a.t));
-            pts.push((s, at(s, z0)?));
+            pts.push((s, self.along(a, s, z0)?));
         }
         let vals: Vec<f64> = pts.iter().map(|(_, n)| g(n)).collect();
         let xs: Vec<f64> = pts.iter().map(|(s, _)| *s).collect();
@@ -581,4 +622,14 @@ pub(crate) fn dist_to_segment(p: &V6, a: &V6, b: &V6) -> f64 {
         0.0
     };
     (a + d * theta - p).norm()
+}
+
+/// The bracket of a zero that [`Engine::locate`] narrows: its ends in pseudo-arclength and their
+/// points, and the last point corrected inside it.
+struct Bracket {
+    lo: f64,
+    hi: f64,
+    zlo: V6,
+    zhi: V6,
+    best: Option<(f64, Node)>,
 }

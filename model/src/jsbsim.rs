@@ -8,17 +8,27 @@
 //! evaluation, in the integration tests.
 
 pub mod aerodynamics;
+pub mod atmosphere;
 pub mod catalogue;
+pub mod cli;
+pub mod coefficients;
+pub mod condition;
+pub mod derivatives;
 pub mod error;
 pub mod evaluate;
 pub mod function;
+pub mod import;
 pub mod mass;
 pub mod metrics;
 pub mod model;
+pub mod surfaces;
 pub mod table;
 pub mod table_xml;
 pub mod units;
+pub mod write;
 pub mod xml;
 
 pub use error::JsbsimError;
 pub use model::Model;
+#[cfg(test)]
+mod tests;

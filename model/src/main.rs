@@ -165,6 +165,15 @@ enum Command {
         /// Path of a nondimensional body-axis aircraft TOML file.
         file: std::path::PathBuf,
     },
+    /// Write an aircraft file from another tool's model: `import jsbsim <MODEL> --altitude-m H
+    /// (--mach M | --speed V) (--alpha-deg A | --level-flight) [--set PROPERTY=VALUE]...
+    /// [--out FILE] [--jsbsim-root DIR]`, or `import jsbsim --list`.
+    #[command(disable_help_flag = true)]
+    Import {
+        /// The source (`jsbsim`) and its arguments.
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true, num_args = 0..)]
+        args: Vec<String>,
+    },
     /// Write the generated criterion crate (generated/) and docs/formulas.tex.
     Emit {
         /// Write nothing; exit 1 naming every stale file (first finishes an emit that was killed
@@ -531,6 +540,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
             printed?;
             Ok(ExitCode::SUCCESS)
         }
+        Command::Import { args } => Ok(ExitCode::from(model::jsbsim::cli::run(&args, out))),
         Command::Convert { file } => {
             let text = aircraft::convert_file(&file).map_err(|e| e.to_string())?;
             write!(out, "{text}").map_err(stdout_error)?;
@@ -789,7 +799,9 @@ mod tests {
                         ..
                     } => vec![elevator(delta_e_deg), finite_angle("delta_a", delta_a_deg)],
                     Command::Clear { delta_e_deg, .. } => vec![elevator(delta_e_deg)],
-                    Command::Emit { .. } | Command::Convert { .. } => vec![],
+                    Command::Emit { .. } | Command::Convert { .. } | Command::Import { .. } => {
+                        vec![]
+                    }
                 };
                 for c in checks {
                     match c {

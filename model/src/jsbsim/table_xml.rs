@@ -31,7 +31,10 @@ pub fn parse_table(src: Source, node: Node, symbols: &mut Symbols) -> Result<Tab
     let blocks: Vec<Node> = children(node, "tableData").collect();
     let data = match blocks.as_slice() {
         [] => return Err(src.error(node, "no <tableData> (expected the table's data)")),
-        [one] if one.attribute("breakPoint").is_none() => leaf(src, *one)?,
+        [one] if one.attribute("breakPoint").is_none() => {
+            let declared = keys.iter().filter(|k| k.is_some()).count();
+            leaf(src, *one, declared == 1)?
+        }
         many => three(src, many)?,
     };
     let n = data.dimension();
@@ -60,7 +63,7 @@ fn three(src: Source, blocks: &[Node]) -> Result<TableData, JsbsimError> {
         if breakpoints.last().is_some_and(|&last| bp <= last) {
             return Err(src.error(*block, "breakPoints must increase strictly"));
         }
-        let table = leaf(src, *block)?;
+        let table = leaf(src, *block, false)?;
         if table.dimension() != 2 {
             return Err(src.error(
                 *block,
@@ -106,13 +109,23 @@ fn increasing(keys: &[f64]) -> bool {
     keys.windows(2).all(|w| w[0] < w[1])
 }
 
-/// One block of data: two numbers a line (one variable) or a header of column keys and rows one
-/// longer (two variables).
-fn leaf(src: Source, node: Node) -> Result<TableData, JsbsimError> {
+/// One block of data: two numbers a line (one variable, always so when `one` says the table
+/// declares one independent variable) or a header of column keys and rows one longer (two
+/// variables).
+fn leaf(src: Source, node: Node, one: bool) -> Result<TableData, JsbsimError> {
     let rows = lines(src, node)?;
     let bad = |msg: String| src.error(node, msg);
     if rows.is_empty() {
         return Err(bad("empty table data".into()));
+    }
+    if one {
+        if let Some((k, r)) = rows.iter().enumerate().find(|(_, r)| r.len() != 2) {
+            return Err(bad(format!(
+                "data line {} has {} numbers (expected 2 in a table of one variable: key and value)",
+                k + 1,
+                r.len()
+            )));
+        }
     }
     let width = rows[0].len();
     let data = if width == 2 && rows.iter().all(|r| r.len() == 2) {

@@ -1,0 +1,128 @@
+//! `model import jsbsim ...`: the command line of the import, parsed here so that the binary's
+//! own parser only hands over the arguments. `--list` prints the catalogue, every model with
+//! whether it reads and, if not, why.
+
+use super::catalogue;
+use super::condition::Speed;
+use super::import::{import, Alpha, Request};
+use std::io::Write;
+use std::path::PathBuf;
+
+/// Usage, for errors.
+pub const USAGE: &str = "usage: model import jsbsim <MODEL> --altitude-m H (--mach M | --speed V) \
+     [--alpha-deg A | --level-flight] [--set PROPERTY=VALUE]... [--out FILE] [--jsbsim-root DIR]\n       \
+     model import jsbsim --list [--jsbsim-root DIR]";
+
+/// The exit code of bad input.
+pub const BAD_INPUT: u8 = 2;
+
+/// Runs `model import` with `args` (after `import`), writing to `out`; returns the exit code.
+/// Errors go to standard error.
+pub fn run(args: &[String], out: &mut dyn Write) -> u8 {
+    match parse_and_run(args, out) {
+        Ok(()) => 0,
+        Err(msg) => {
+            eprintln!("error: {msg}");
+            BAD_INPUT
+        }
+    }
+}
+
+/// The value after flag `flag` at `args[*i]`.
+fn value<'a>(args: &'a [String], i: &mut usize, flag: &str) -> Result<&'a str, String> {
+    *i += 1;
+    args.get(*i)
+        .map(String::as_str)
+        .ok_or_else(|| format!("{flag} needs a value\n{USAGE}"))
+}
+
+/// A finite number given for `flag`.
+fn number(text: &str, flag: &str) -> Result<f64, String> {
+    text.parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite())
+        .ok_or_else(|| format!("{flag} {text}: not a number (expected a finite decimal)"))
+}
+
+/// Parses the arguments and runs the import or the listing.
+fn parse_and_run(args: &[String], out: &mut dyn Write) -> Result<(), String> {
+    if args.first().map(String::as_str) != Some("jsbsim") {
+        return Err(format!("the only import source is `jsbsim`\n{USAGE}"));
+    }
+    let (mut model, mut root, mut altitude, mut speed) = (None, None, None, None);
+    let (mut alpha, mut list, mut file) = (None, false, None);
+    let mut settings = Vec::new();
+    let mut i = 1;
+    while i < args.len() {
+        let a = args[i].as_str();
+        match a {
+            "--list" => list = true,
+            "--level-flight" => alpha = Some(Alpha::LevelFlight),
+            "--jsbsim-root" => root = Some(PathBuf::from(value(args, &mut i, a)?)),
+            "--out" => file = Some(PathBuf::from(value(args, &mut i, a)?)),
+            "--altitude-m" => altitude = Some(number(value(args, &mut i, a)?, a)?),
+            "--mach" => speed = Some(Speed::Mach(number(value(args, &mut i, a)?, a)?)),
+            "--speed" => speed = Some(Speed::True(number(value(args, &mut i, a)?, a)?)),
+            "--alpha-deg" => {
+                alpha = Some(Alpha::Given(
+                    number(value(args, &mut i, a)?, a)?.to_radians(),
+                ))
+            }
+            "--set" => {
+                let kv = value(args, &mut i, a)?;
+                let (k, v) = kv.split_once('=').ok_or_else(|| {
+                    format!("--set {kv}: expected PROPERTY=VALUE, e.g. fcs/flap-pos-norm=0.5")
+                })?;
+                settings.push((
+                    k.trim().to_string(),
+                    number(v.trim(), &format!("--set {k}"))?,
+                ));
+            }
+            _ if a.starts_with("--") => return Err(format!("unknown option {a}\n{USAGE}")),
+            _ if model.is_none() => model = Some(a.to_string()),
+            _ => return Err(format!("unexpected argument {a}\n{USAGE}")),
+        }
+        i += 1;
+    }
+    if list {
+        return listing(root, out);
+    }
+    let model = model.ok_or_else(|| format!("no model given\n{USAGE}"))?;
+    let altitude_m = altitude.ok_or_else(|| format!("--altitude-m is required\n{USAGE}"))?;
+    let speed = speed.ok_or_else(|| format!("--mach or --speed is required\n{USAGE}"))?;
+    let alpha =
+        alpha.ok_or_else(|| format!("--alpha-deg or --level-flight is required\n{USAGE}"))?;
+    let text = import(&Request {
+        model,
+        root,
+        altitude_m,
+        speed,
+        alpha,
+        settings,
+    })?;
+    match file {
+        Some(path) => std::fs::write(&path, text)
+            .map_err(|e| format!("{}: cannot write: {e}", path.display())),
+        None => out.write_all(text.as_bytes()).map_err(|e| e.to_string()),
+    }
+}
+
+/// Prints the catalogue.
+fn listing(root: Option<PathBuf>, out: &mut dyn Write) -> Result<(), String> {
+    let root = catalogue::root(root.as_deref()).ok_or_else(|| catalogue::HOW_TO_GET.to_string())?;
+    let entries = catalogue::listing(&root);
+    let ok = entries.iter().filter(|(_, m)| m.is_ok()).count();
+    let mut text = format!(
+        "{} ({} models, {ok} readable)\n",
+        root.join("aircraft").display(),
+        entries.len()
+    );
+    for (name, model) in entries {
+        let line = match model {
+            Ok(m) => format!("{name:<18} ok      {}\n", m.name),
+            Err(e) => format!("{name:<18} refused {e}\n"),
+        };
+        text.push_str(&line);
+    }
+    out.write_all(text.as_bytes()).map_err(|e| e.to_string())
+}

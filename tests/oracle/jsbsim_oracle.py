@@ -5,6 +5,10 @@ at given flight states and prints every value the Rust evaluation is compared wi
 Input (stdin, JSON): {"root": DIR, "model": NAME, "inputs": [property, ...],
 "functions": [property, ...], "states": [{"h_ft", "mach", "alpha_deg", "beta_deg",
 "p", "q", "r" (rad/s), "set": {property: value}}, ...]}.
+With "quasi_steady": true the copy's aerodynamics read zero for alpha-dot and beta-dot (their
+properties renamed to ones held at zero) and run_ic is repeated until the fed-back
+aero/cl-squared settles, so that JSBSim gives the quasi-steady coefficients the import
+differentiates.
 Output (stdout, JSON): one object per state with "inputs" (the value JSBSim's aerodynamics
 read for each requested input), "functions" (each named function's value), "forces" (body
 axes, lbs), "moments" (about the CG, body axes, lbs ft), "mass" (weight, CG, inertia) and
@@ -36,7 +40,18 @@ def strip_systems(text):
     return text
 
 
-def prepared_root(root, model):
+RATES = ("aero/alphadot-rad_sec", "aero/betadot-rad_sec", "aero/alphadot-deg_sec",
+         "aero/betadot-deg_sec")
+
+
+def held_rates(text):
+    """The model XML with its alpha-dot and beta-dot reads renamed to properties held at zero."""
+    for rate in RATES:
+        text = text.replace(rate, "oracle/" + rate.split("/")[1])
+    return text
+
+
+def prepared_root(root, model, quasi_steady=False):
     """A temporary JSBSim root holding the stripped model, with engine/ and systems/ linked."""
     tmp = tempfile.mkdtemp(prefix="jsbsim-oracle-")
     os.makedirs(os.path.join(tmp, "aircraft"))
@@ -47,14 +62,15 @@ def prepared_root(root, model):
     with open(xml, encoding="utf-8") as f:
         text = f.read()
     with open(xml, "w", encoding="utf-8") as f:
-        f.write(strip_systems(text))
+        text = strip_systems(text)
+        f.write(held_rates(text) if quasi_steady else text)
     for d in ("engine", "systems"):
         if os.path.isdir(os.path.join(root, d)):
             os.symlink(os.path.join(root, d), os.path.join(tmp, d))
     return tmp
 
 
-def evaluate(fdm, state, inputs, functions):
+def evaluate(fdm, state, inputs, functions, passes=2):
     """Sets the state, runs the initial conditions twice (so that values fed back from the
     previous pass, such as aero/cl-squared, are those the last pass used) and reads the values."""
     for name, value in state.get("set", {}).items():
@@ -66,10 +82,10 @@ def evaluate(fdm, state, inputs, functions):
     fdm["ic/p-rad_sec"] = state["p"]
     fdm["ic/q-rad_sec"] = state["q"]
     fdm["ic/r-rad_sec"] = state["r"]
-    fdm.run_ic()
-    for name, value in state.get("set", {}).items():
-        fdm[name] = value
-    fdm.run_ic()
+    for _ in range(passes):
+        fdm.run_ic()
+        for name, value in state.get("set", {}).items():
+            fdm[name] = value
     get = fdm.get_property_value
     return {
         "inputs": {n: get(n) for n in inputs},
@@ -98,7 +114,8 @@ def evaluate(fdm, state, inputs, functions):
 
 def main():
     request = json.load(sys.stdin)
-    root = prepared_root(request["root"], request["model"])
+    quasi_steady = request.get("quasi_steady", False)
+    root = prepared_root(request["root"], request["model"], quasi_steady)
     try:
         fdm = jsbsim.FGFDMExec(root)
         fdm.set_debug_level(0)
@@ -106,9 +123,14 @@ def main():
         for name in request["inputs"]:
             if not fdm.get_property_manager().hasNode(name):
                 fdm[name] = 0.0
+        if quasi_steady:
+            for rate in RATES:
+                fdm["oracle/" + rate.split("/")[1]] = 0.0
         if not fdm.load_model(request["model"]):
             sys.exit("JSBSim could not load %s" % request["model"])
-        out = [evaluate(fdm, s, request["inputs"], request["functions"]) for s in request["states"]]
+        passes = 40 if quasi_steady else 2
+        out = [evaluate(fdm, s, request["inputs"], request["functions"], passes)
+               for s in request["states"]]
     finally:
         shutil.rmtree(root, ignore_errors=True)
     json.dump(out, sys.stdout)

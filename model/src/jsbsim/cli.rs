@@ -4,7 +4,7 @@
 
 use super::catalogue;
 use super::condition::Speed;
-use super::import::{import, Alpha, Request};
+use super::import::{evaluates, import, Alpha, Request, REFERENCE};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -110,16 +110,27 @@ fn parse_and_run(args: &[String], out: &mut dyn Write) -> Result<(), String> {
 /// Prints the catalogue.
 fn listing(root: Option<PathBuf>, out: &mut dyn Write) -> Result<(), String> {
     let root = catalogue::root(root.as_deref()).ok_or_else(|| catalogue::HOW_TO_GET.to_string())?;
-    let entries = catalogue::listing(&root);
+    let entries: Vec<(String, Result<String, String>)> = catalogue::listing(&root)
+        .into_iter()
+        .map(|(name, model)| {
+            let path = root
+                .join("aircraft")
+                .join(&name)
+                .join(format!("{name}.xml"));
+            let checked = model.and_then(|m| evaluates(&m, &path).map(|()| m.name));
+            (name, checked)
+        })
+        .collect();
     let ok = entries.iter().filter(|(_, m)| m.is_ok()).count();
+    let (h, mach, alpha) = REFERENCE;
     let mut text = format!(
-        "{} ({} models, {ok} readable)\n",
+        "{} ({} models, {ok} importable: read and evaluated at {h} m, Mach {mach}, alpha {alpha} deg)\n",
         root.join("aircraft").display(),
         entries.len()
     );
     for (name, model) in entries {
         let line = match model {
-            Ok(m) => format!("{name:<18} ok      {}\n", m.name),
+            Ok(full) => format!("{name:<18} ok      {full}\n"),
             Err(e) => format!("{name:<18} refused {e}\n"),
         };
         text.push_str(&line);

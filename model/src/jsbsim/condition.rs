@@ -136,6 +136,9 @@ pub fn set_state(
             "velocities/ve-kts",
             (2.0 * qbar / 0.002_376_9).sqrt() / FPS_PER_KT,
         ),
+        ("velocities/vc-kts", calibrated_kts(condition)),
+        ("aero/Re", reynolds(condition, m.chord * M_PER_FT)),
+        ("aero/stall-hyst-norm", 0.0),
         ("atmosphere/rho-slugs_ft3", rho),
         ("atmosphere/a-fps", condition.air.sound_speed * FT_PER_M),
         ("position/h-sl-ft", h_ft),
@@ -167,6 +170,27 @@ pub fn set_state(
         env.set(name, 0.0);
     }
     Ok(zeroed)
+}
+
+/// Calibrated airspeed, knots: the sea-level speed whose impact pressure equals the one at
+/// the condition (isentropic, subsonic; Rayleigh pitot above Mach 1).
+fn calibrated_kts(c: &Condition) -> f64 {
+    let sl = standard(0.0).expect("sea level is in the atmosphere");
+    let m = c.mach;
+    let qc = if m <= 1.0 {
+        c.air.pressure * ((1.0 + 0.2 * m * m).powf(3.5) - 1.0)
+    } else {
+        c.air.pressure * (166.921_58 * m.powi(7) / (7.0 * m * m - 1.0).powf(2.5) - 1.0)
+    };
+    let vc = sl.sound_speed * (5.0 * ((qc / sl.pressure + 1.0).powf(2.0 / 7.0) - 1.0)).sqrt();
+    vc / 0.514_444_444_444_444_5
+}
+
+/// Reynolds number on the chord `chord_m` m, with Sutherland's law for the viscosity.
+fn reynolds(c: &Condition, chord_m: f64) -> f64 {
+    let t = c.air.temperature;
+    let mu = 1.458e-6 * t.powf(1.5) / (t + 110.4);
+    c.air.density * c.speed * chord_m / mu
 }
 
 /// Whether `name` is an output of a system (flight controls, gear, other systems, engines):

@@ -242,7 +242,8 @@ pub fn property_ref(
     node: Node,
     symbols: &mut Symbols,
 ) -> Result<PropertyRef, JsbsimError> {
-    let text = node.text().unwrap_or("").trim();
+    let text = super::xml::text(node);
+    let text = text.trim();
     let (negated, name) = match text.strip_prefix('-') {
         Some(rest) => (true, rest.trim()),
         None => (false, text),

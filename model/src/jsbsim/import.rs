@@ -79,6 +79,31 @@ pub fn import(request: &Request) -> Result<String, String> {
     .toml())
 }
 
+/// The reference condition of the catalogue listing: 3,000 m, Mach 0.3, alpha 2 deg.
+pub const REFERENCE: (f64, f64, f64) = (3000.0, 0.3, 2.0);
+
+/// Whether `model` (read from `path`) evaluates at the [`REFERENCE`] condition with nothing set
+/// by the user; the error says which input is missing.
+pub fn evaluates(model: &Model, path: &std::path::Path) -> Result<(), String> {
+    let (h, mach, alpha) = REFERENCE;
+    let setup = Setup {
+        model,
+        condition: Condition::new(h, Speed::Mach(mach))?,
+        surfaces: surfaces(model, path),
+        settings: Vec::new(),
+    };
+    let state = State {
+        alpha: alpha.to_radians(),
+        beta: 0.0,
+        rates: [0.0; 3],
+        surfaces: [0.0; 3],
+    };
+    setup
+        .coefficients(&state)
+        .map(|_| ())
+        .map_err(|e| e.to_string())
+}
+
 /// The angle of attack (rad) at which lift equals weight, surfaces neutral: the first sign
 /// change of CL - W/(qbar S) from -5 deg up to 30 deg, refined by bisection.
 pub fn level_flight(setup: &Setup) -> Result<f64, String> {

@@ -79,26 +79,27 @@ fn three(src: Source, blocks: &[Node]) -> Result<TableData, JsbsimError> {
     })
 }
 
-/// The numbers of each non-empty line of `node`'s text.
+/// The numbers of each non-empty line of `node`'s text (comments between the lines skipped).
 fn lines(src: Source, node: Node) -> Result<Vec<Vec<f64>>, JsbsimError> {
-    let text = node.text().unwrap_or("");
-    let first = src.line(node);
     let mut rows = Vec::new();
-    for (k, line) in text.lines().enumerate() {
-        let mut row = Vec::new();
-        for token in line.split_whitespace() {
-            let v = parse_number(token).ok_or_else(|| {
-                JsbsimError::new(
-                    src.file,
-                    first + k as u32,
-                    "tableData",
-                    format!("`{token}` is not a number"),
-                )
-            })?;
-            row.push(v);
-        }
-        if !row.is_empty() {
-            rows.push(row);
+    for text in node.children().filter(|c| c.is_text()) {
+        let first = src.line(text);
+        for (k, line) in text.text().unwrap_or("").lines().enumerate() {
+            let mut row = Vec::new();
+            for token in line.split_whitespace() {
+                let v = parse_number(token).ok_or_else(|| {
+                    JsbsimError::new(
+                        src.file,
+                        first + k as u32,
+                        "tableData",
+                        format!("`{token}` is not a number"),
+                    )
+                })?;
+                row.push(v);
+            }
+            if !row.is_empty() {
+                rows.push(row);
+            }
         }
     }
     Ok(rows)

@@ -25,7 +25,8 @@ impl Source<'_> {
 
     /// The number that is the whole text of `node`.
     pub fn number(&self, node: Node) -> Result<f64, JsbsimError> {
-        let text = node.text().unwrap_or("").trim();
+        let text = text(node);
+        let text = text.trim();
         parse_number(text)
             .ok_or_else(|| self.error(node, format!("`{text}` is not a number (expected one)")))
     }
@@ -78,6 +79,14 @@ impl Source<'_> {
         }
         Ok(xyz)
     }
+}
+
+/// The text of `node` without its comments (every text child joined).
+pub fn text(node: Node) -> String {
+    node.children()
+        .filter(|c| c.is_text())
+        .filter_map(|c| c.text())
+        .collect()
 }
 
 /// The first child element of `node` named `name`.

@@ -71,10 +71,10 @@ def prepared_root(root, model, quasi_steady=False):
 
 
 def evaluate(fdm, state, inputs, functions, passes=2):
-    """Sets the state, runs the initial conditions twice (so that values fed back from the
-    previous pass, such as aero/cl-squared, are those the last pass used) and reads the values."""
-    for name, value in state.get("set", {}).items():
-        fdm[name] = value
+    """Sets the state and runs the initial conditions `passes` times, the values set before each
+    pass (so that values fed back from the previous pass, such as aero/cl-squared, are those the
+    last pass used), then reads what the last pass used: an input that a model run before the
+    aerodynamics overwrites (the throttle's position, from its command) is read as overwritten."""
     fdm["ic/h-sl-ft"] = state["h_ft"]
     fdm["ic/mach"] = state["mach"]
     fdm["ic/alpha-deg"] = state["alpha_deg"]
@@ -83,9 +83,9 @@ def evaluate(fdm, state, inputs, functions, passes=2):
     fdm["ic/q-rad_sec"] = state["q"]
     fdm["ic/r-rad_sec"] = state["r"]
     for _ in range(passes):
-        fdm.run_ic()
         for name, value in state.get("set", {}).items():
             fdm[name] = value
+        fdm.run_ic()
     get = fdm.get_property_value
     return {
         "inputs": {n: get(n) for n in inputs},

@@ -166,6 +166,35 @@ fn check(root: &Path, name: &str, seed: u64, n: usize) -> [f64; 3] {
     worst_all
 }
 
+/// Every model of the catalogue that the import reads, at three states each (run with
+/// `--ignored`: about a minute on one core).
+#[test]
+#[ignore]
+fn every_importable_catalogue_model_agrees_with_jsbsim() {
+    let Some(root) = root() else {
+        eprintln!("skipped: {}", catalogue::HOW_TO_GET);
+        return;
+    };
+    let mut agreed = Vec::new();
+    for (k, (name, model)) in catalogue::listing(&root).into_iter().enumerate() {
+        let path = root
+            .join("aircraft")
+            .join(&name)
+            .join(format!("{name}.xml"));
+        let Ok(model) = model else { continue };
+        if model::jsbsim::import::evaluates(&model, &path).is_err() {
+            continue;
+        }
+        let w = check(&root, &name, 100 + k as u64, 3);
+        eprintln!(
+            "{name}: worst relative difference forces {:.1e}, moments {:.1e}, mass {:.1e}",
+            w[0], w[1], w[2]
+        );
+        agreed.push(name);
+    }
+    eprintln!("{} models agree: {}", agreed.len(), agreed.join(", "));
+}
+
 #[test]
 fn forces_moments_and_mass_agree_with_jsbsim() {
     let Some(root) = root() else {

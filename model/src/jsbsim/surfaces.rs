@@ -100,7 +100,7 @@ pub struct Range {
 }
 
 /// How a control is set: by its angle (the forms in rad, deg, magnitude, and normalised travel
-/// through its range) or, when the aerodynamics read only its normalised travel and no range is
+/// through its range) or, when the aerodynamics read its normalised travel and no range is
 /// known, by the travel itself.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Surface {
@@ -152,8 +152,10 @@ pub fn surfaces(model: &Model, path: &Path) -> Vec<Surface> {
                     .iter()
                     .any(|(n, f, _)| *f == form && model.functions.symbols.get(n).is_some())
             };
-            let angle_read = reads(Form::Rad) || reads(Form::Deg) || reads(Form::Mag);
-            let per_unit_travel = range.is_none() && !angle_read && reads(Form::Norm);
+            // Without a range the angle and the travel are unrelated (JSBSim's flight control
+            // system then writes one of them only): the travel is the variable, and an angle
+            // form the aerodynamics also read stays at zero, as in JSBSim.
+            let per_unit_travel = range.is_none() && reads(Form::Norm);
             Surface {
                 control,
                 range,

@@ -88,6 +88,7 @@ def evaluate(fdm, state, inputs, functions, passes=2):
         fdm.run_ic()
     get = fdm.get_property_value
     return {
+        "h_ft": state["h_ft"],
         "inputs": {n: get(n) for n in inputs},
         "functions": {n: get(n) for n in functions},
         "forces": [get("forces/fb%s-aero-lbs" % a) for a in "xyz"],

@@ -100,6 +100,23 @@ fn norm(v: &[f64]) -> f64 {
     v.iter().map(|x| x * x).sum::<f64>().sqrt()
 }
 
+/// The standard atmosphere against JSBSim's at `h_ft`: density and speed of sound to 1e-6
+/// relative (the same model; the constants are written in different units and digits).
+fn check_atmosphere(atm: &Value, h_ft: f64) {
+    let air = model::jsbsim::atmosphere::standard(h_ft * 0.3048).unwrap();
+    let rho = air.density / 515.378_818_393_196_1;
+    let a = air.sound_speed / 0.3048;
+    let (rj, aj) = (f(&atm["rho"]), f(&atm["a"]));
+    assert!(
+        (rho - rj).abs() < 1e-6 * rj,
+        "density at {h_ft} ft: ours {rho}, JSBSim {rj}"
+    );
+    assert!(
+        (a - aj).abs() < 1e-6 * aj,
+        "speed of sound at {h_ft} ft: ours {a}, JSBSim {aj}"
+    );
+}
+
 /// Compares one model at `n` states; returns the worst relative differences (forces, moments,
 /// mass).
 fn check(root: &Path, name: &str, seed: u64, n: usize) -> [f64; 3] {
@@ -125,6 +142,7 @@ fn check(root: &Path, name: &str, seed: u64, n: usize) -> [f64; 3] {
             }
         }
         let atm = &out["atmosphere"];
+        check_atmosphere(atm, f(&out["h_ft"]));
         let loads = model
             .loads(&mut env, f(&atm["alpha"]), f(&atm["beta"]))
             .unwrap();

@@ -18,10 +18,11 @@ const LAYERS: [(f64, f64); 7] = [
 pub const TOP_M: f64 = 84_852.0;
 /// Sea-level temperature, K.
 const T0: f64 = 288.15;
-/// Sea-level pressure, Pa.
-const P0: f64 = 101_325.0;
-/// Gas constant of dry air, J/(kg K).
-const R: f64 = 287.052_87;
+/// Sea-level pressure, Pa: JSBSim's 2116.228 psf, 5e-6 above the standard's 101,325 Pa.
+const P0: f64 = 2116.228 * 47.880_258_980_335_84;
+/// Gas constant of dry air, J/(kg K): the universal gas constant 8.31432 J/(mol K) over the
+/// molar mass 28.9645 g/mol, the values JSBSim uses.
+const R: f64 = 8.314_32 / 0.028_964_5;
 /// Standard gravity, m/s^2.
 const G0: f64 = 9.806_65;
 /// Ratio of specific heats.

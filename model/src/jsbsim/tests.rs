@@ -160,3 +160,66 @@ fn a_function_that_reads_itself_is_an_error_not_a_hang() {
     let e = m.environment().property("a").unwrap_err().to_string();
     assert!(e.contains("property loop"), "{e}");
 }
+
+/// Runs the import's command line; returns the exit code and what it wrote.
+fn cli(args: &[&str]) -> (u8, String) {
+    let args: Vec<String> = args.iter().map(|s| s.to_string()).collect();
+    let mut out = Vec::new();
+    let code = super::cli::run(&args, &mut out);
+    (code, String::from_utf8(out).unwrap())
+}
+
+#[test]
+fn bad_input_on_the_command_line_exits_2() {
+    let dir = std::env::temp_dir().join(format!("jsbsim-cli-{}", std::process::id()));
+    let bad = dir.join("aircraft/Cut");
+    std::fs::create_dir_all(&bad).unwrap();
+    std::fs::write(bad.join("Cut.xml"), "<fdm_config><metrics>").unwrap();
+    let good = dir.join("good.xml");
+    std::fs::write(
+        &good,
+        model_xml(
+            r#"<axis name="LIFT"><function name="a"><value>1</value></function></axis>"#,
+            "",
+        ),
+    )
+    .unwrap();
+    let root = dir.to_str().unwrap();
+    let good = good.to_str().unwrap();
+    let condition = "--altitude-m 1000 --mach 0.5 --alpha-deg 2";
+    for case in [
+        format!("jsbsim Cut --jsbsim-root {root} {condition}"),
+        format!("jsbsim Nope --jsbsim-root {root} {condition}"),
+        format!("jsbsim {good} --altitude-m x --mach 0.5 --alpha-deg 2"),
+        format!("jsbsim {good} --altitude-m 1000 --alpha-deg 2"),
+        format!("jsbsim {good} --altitude-m -500 --mach 0.5 --alpha-deg 2"),
+        format!("jsbsim {good} {condition} --frob"),
+        format!("jsbsim {good} {condition} --set x"),
+        format!("xplane {good}"),
+    ] {
+        let args: Vec<&str> = case.split_whitespace().collect();
+        assert_eq!(cli(&args).0, 2, "{case}");
+    }
+    let (code, text) = cli(&[
+        "jsbsim",
+        good,
+        "--altitude-m",
+        "1000",
+        "--mach",
+        "0.5",
+        "--alpha-deg",
+        "2",
+    ]);
+    assert_eq!(code, 0);
+    assert!(
+        text.contains("[coefficients]") && text.contains("CL_alpha = "),
+        "{text}"
+    );
+    let (code, text) = cli(&["jsbsim", "--list", "--jsbsim-root", root]);
+    assert_eq!(code, 0);
+    assert!(
+        text.contains("Cut") && text.contains("refused") && text.contains("XML"),
+        "{text}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

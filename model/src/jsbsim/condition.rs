@@ -145,6 +145,8 @@ pub fn set_state(
         ("attitude/roll-rad", 0.0),
         ("attitude/pitch-rad", a),
         ("flight-path/gamma-rad", 0.0),
+        ("velocities/v-down-fps", 0.0),
+        ("velocities/h-dot-fps", 0.0),
     ];
     for (name, value) in values {
         env.set(name, value);

@@ -122,6 +122,13 @@ pub fn level_flight(setup: &Setup) -> Result<f64, String> {
     let step = 0.25f64.to_radians();
     let mut lo = (-5.0f64).to_radians();
     let mut f_lo = excess(lo)?;
+    if f_lo > 0.0 {
+        return Err(format!(
+            "no level flight: at -5 deg alpha the lift coefficient {:.4} already exceeds the \
+             {need:.4} the weight ({weight:.0} lbs) needs (fly slower or higher)",
+            f_lo + need
+        ));
+    }
     let mut best = f_lo;
     while lo < 30f64.to_radians() {
         let hi = lo + step;

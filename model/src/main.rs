@@ -25,7 +25,9 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
     version,
     about = "Roll-coupling jump criterion (Mahale & Ananthkrishnan, AIAA 2006-6267)",
     after_help = "AIRCRAFT is `A` or `B` (the paper's aircraft, any case) or else the path of an \
-                  aircraft TOML file (e.g. aircraft/c.toml); write ./A to read a file named A."
+                  aircraft TOML file (e.g. aircraft/c.toml); write ./A to read a file named A. \
+                  \"jsbsim:MODEL --altitude-m H --mach M --level-flight\" (the arguments of \
+                  `import jsbsim`, quoted as one) imports a JSBSim model at that condition."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -688,6 +690,9 @@ fn progress_bar(what: &str) -> Option<indicatif::ProgressBar> {
 fn load_aircraft(arg: &str) -> Result<Aircraft, String> {
     if let Some(ac) = Aircraft::builtin(arg) {
         return Ok(ac);
+    }
+    if arg.starts_with("jsbsim:") {
+        return model::jsbsim::cli::source(arg);
     }
     let path = Path::new(arg);
     aircraft::load(path).map_err(|e| {

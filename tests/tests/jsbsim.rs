@@ -332,7 +332,8 @@ fn derivatives_agree_with_central_differences_in_jsbsim() {
     }
 }
 
-/// The imported file loads with the aircraft loader and `analyze` runs on it.
+/// The imported file loads with the aircraft loader and `analyze` runs on it; the `jsbsim:`
+/// source gives the same aircraft.
 #[test]
 fn imported_files_load_and_analyze() {
     let Some(root) = root() else {
@@ -353,5 +354,15 @@ fn imported_files_load_and_analyze() {
             model::aircraft::parse(&text, name).unwrap_or_else(|e| panic!("{name}: {e}\n{text}"));
         let analysis = model::analysis::analyze(&aircraft, 2f64.to_radians());
         assert!(analysis.is_ok(), "{name}: analyze failed");
+        let spec = format!(
+            "jsbsim:{name} --jsbsim-root {} --altitude-m 6000 --mach 0.5 --level-flight",
+            root.display()
+        );
+        let source = model::jsbsim::cli::source(&spec).unwrap();
+        assert_eq!(
+            source.values_f64(),
+            aircraft.values_f64(),
+            "{name}: the jsbsim: source differs"
+        );
     }
 }

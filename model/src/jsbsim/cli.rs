@@ -1,5 +1,6 @@
 //! `model import jsbsim ...`: the command line of the import, parsed here so that the binary's
-//! own parser only hands over the arguments. `--list` prints the catalogue, every model with
+//! own parser only hands over the arguments; the same arguments after `jsbsim:` name an aircraft
+//! source for the other commands ([`source`]). `--list` prints the catalogue, every model with
 //! whether it reads and, if not, why.
 
 use super::catalogue;
@@ -44,8 +45,16 @@ fn number(text: &str, flag: &str) -> Result<f64, String> {
         .ok_or_else(|| format!("{flag} {text}: not a number (expected a finite decimal)"))
 }
 
-/// Parses the arguments and runs the import or the listing.
-fn parse_and_run(args: &[String], out: &mut dyn Write) -> Result<(), String> {
+/// What the command line asks for.
+enum Command {
+    /// The catalogue listing, from the root if given.
+    List(Option<PathBuf>),
+    /// An import, written to the file if given.
+    Import(Request, Option<PathBuf>),
+}
+
+/// Parses the arguments after `import` (`jsbsim` first).
+fn parse(args: &[String]) -> Result<Command, String> {
     if args.first().map(String::as_str) != Some("jsbsim") {
         return Err(format!("the only import source is `jsbsim`\n{USAGE}"));
     }
@@ -68,16 +77,7 @@ fn parse_and_run(args: &[String], out: &mut dyn Write) -> Result<(), String> {
                     number(value(args, &mut i, a)?, a)?.to_radians(),
                 ))
             }
-            "--set" => {
-                let kv = value(args, &mut i, a)?;
-                let (k, v) = kv.split_once('=').ok_or_else(|| {
-                    format!("--set {kv}: expected PROPERTY=VALUE, e.g. fcs/flap-pos-norm=0.5")
-                })?;
-                settings.push((
-                    k.trim().to_string(),
-                    number(v.trim(), &format!("--set {k}"))?,
-                ));
-            }
+            "--set" => settings.push(setting(value(args, &mut i, a)?)?),
             _ if a.starts_with("--") => return Err(format!("unknown option {a}\n{USAGE}")),
             _ if model.is_none() => model = Some(a.to_string()),
             _ => return Err(format!("unexpected argument {a}\n{USAGE}")),
@@ -85,25 +85,65 @@ fn parse_and_run(args: &[String], out: &mut dyn Write) -> Result<(), String> {
         i += 1;
     }
     if list {
-        return listing(root, out);
+        return Ok(Command::List(root));
     }
     let model = model.ok_or_else(|| format!("no model given\n{USAGE}"))?;
     let altitude_m = altitude.ok_or_else(|| format!("--altitude-m is required\n{USAGE}"))?;
     let speed = speed.ok_or_else(|| format!("--mach or --speed is required\n{USAGE}"))?;
     let alpha =
         alpha.ok_or_else(|| format!("--alpha-deg or --level-flight is required\n{USAGE}"))?;
-    let text = import(&Request {
+    let request = Request {
         model,
         root,
         altitude_m,
         speed,
         alpha,
         settings,
+    };
+    Ok(Command::Import(request, file))
+}
+
+/// One `--set PROPERTY=VALUE`.
+fn setting(kv: &str) -> Result<(String, f64), String> {
+    let (k, v) = kv.split_once('=').ok_or_else(|| {
+        format!("--set {kv}: expected PROPERTY=VALUE, e.g. fcs/flap-pos-norm=0.5")
     })?;
-    match file {
-        Some(path) => std::fs::write(&path, text)
-            .map_err(|e| format!("{}: cannot write: {e}", path.display())),
-        None => out.write_all(text.as_bytes()).map_err(|e| e.to_string()),
+    Ok((
+        k.trim().to_string(),
+        number(v.trim(), &format!("--set {k}"))?,
+    ))
+}
+
+/// Parses the arguments and runs the import or the listing.
+fn parse_and_run(args: &[String], out: &mut dyn Write) -> Result<(), String> {
+    match parse(args)? {
+        Command::List(root) => listing(root, out),
+        Command::Import(request, file) => {
+            let text = import(&request)?;
+            match file {
+                Some(path) => std::fs::write(&path, text)
+                    .map_err(|e| format!("{}: cannot write: {e}", path.display())),
+                None => out.write_all(text.as_bytes()).map_err(|e| e.to_string()),
+            }
+        }
+    }
+}
+
+/// The aircraft of a `jsbsim:` source, the import's arguments after the colon in one string
+/// (`"jsbsim:f104 --altitude-m 6096 --mach 0.53 --level-flight"`): what `analyze`, `continue`,
+/// `simulate` and `report` accept in place of an aircraft file.
+pub fn source(spec: &str) -> Result<crate::aircraft::Aircraft, String> {
+    let rest = spec
+        .strip_prefix("jsbsim:")
+        .ok_or_else(|| format!("{spec}: not a jsbsim: source"))?;
+    let mut args = vec!["jsbsim".to_string()];
+    args.extend(rest.split_whitespace().map(str::to_string));
+    match parse(&args)? {
+        Command::Import(request, None) => {
+            let text = import(&request)?;
+            crate::aircraft::parse(&text, spec).map_err(|e| e.to_string())
+        }
+        _ => Err(format!("{spec}: a jsbsim: source takes the import's model and flight condition, not --list or --out")),
     }
 }
 

@@ -49,6 +49,10 @@ impl Functions {
     }
 }
 
+/// How many functions may read one another in a chain before the evaluation refuses (the
+/// catalogue's longest chains are a few functions; this keeps the stack bounded).
+pub const MAX_CHAIN: usize = 100;
+
 /// The state of one function's value during an evaluation.
 #[derive(Clone, Copy, Debug)]
 enum Slot {
@@ -63,6 +67,7 @@ pub struct Env<'m> {
     file: &'m str,
     inputs: Vec<Option<f64>>,
     slots: Vec<Slot>,
+    depth: usize,
 }
 
 impl<'m> Env<'m> {
@@ -73,6 +78,7 @@ impl<'m> Env<'m> {
             file,
             inputs: vec![None; functions.symbols.len()],
             slots: vec![Slot::Unknown; functions.list.len()],
+            depth: 0,
         }
     }
 
@@ -120,8 +126,23 @@ impl<'m> Env<'m> {
                 ))
             }
             Slot::Unknown => {
+                let func = &self.functions.list[f];
+                if self.depth >= MAX_CHAIN {
+                    return Err(JsbsimError::new(
+                        self.file,
+                        func.line,
+                        "function",
+                        format!(
+                            "`{}` is read through a chain of more than {MAX_CHAIN} functions",
+                            func.name
+                        ),
+                    ));
+                }
                 self.slots[f] = Slot::Busy;
-                let v = self.eval(&self.functions.list[f].expr)?;
+                self.depth += 1;
+                let v = self.eval(&func.expr);
+                self.depth -= 1;
+                let v = v?;
                 self.slots[f] = Slot::Done(v);
                 Ok(v)
             }

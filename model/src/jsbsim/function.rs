@@ -278,9 +278,16 @@ fn parse_args(src: Source, node: Node, symbols: &mut Symbols) -> Result<Vec<Expr
         .collect()
 }
 
+/// How deep elements may nest in a model: far beyond the catalogue's (about 12), shallow enough
+/// that reading and evaluating cannot exhaust the stack.
+pub const MAX_DEPTH: usize = 200;
+
 /// One expression element.
 pub fn parse_expr(src: Source, node: Node, symbols: &mut Symbols) -> Result<Expr, JsbsimError> {
     let name = node.tag_name().name();
+    if node.ancestors().nth(MAX_DEPTH).is_some() {
+        return Err(src.error(node, format!("elements nested more than {MAX_DEPTH} deep")));
+    }
     match name {
         "value" | "v" => Ok(Expr::Value(src.number(node)?)),
         "pi" => Ok(Expr::Value(std::f64::consts::PI)),

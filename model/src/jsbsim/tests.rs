@@ -152,6 +152,32 @@ fn refusals_name_the_file_line_and_element() {
 }
 
 #[test]
+fn deep_nesting_and_long_chains_are_refused_not_a_stack_overflow() {
+    let deep = format!(
+        "<function name=\"d\">{}<value>1</value>{}</function>",
+        "<sum>".repeat(5000),
+        "</sum>".repeat(5000)
+    );
+    let e = Model::parse(&model_xml(&deep, ""), "deep.xml")
+        .map(|_| ())
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("nested"), "{e}");
+    let chain: String = (0..1000)
+        .map(|k| {
+            format!(
+                "<function name=\"f{k}\"><property>f{}</property></function>",
+                k + 1
+            )
+        })
+        .collect::<String>()
+        + "<function name=\"f1000\"><value>1</value></function>";
+    let m = model(&chain);
+    let e = m.environment().property("f0").unwrap_err().to_string();
+    assert!(e.contains("chain"), "{e}");
+}
+
+#[test]
 fn a_function_that_reads_itself_is_an_error_not_a_hang() {
     let m = model(
         r#"<function name="a"><property>b</property></function>

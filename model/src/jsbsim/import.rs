@@ -42,6 +42,16 @@ pub fn import(request: &Request) -> Result<String, String> {
     let root = catalogue::root(request.root.as_deref());
     let path = catalogue::model_path(root.as_deref(), &request.model)?;
     let model = Model::load(&path).map_err(|e| e.to_string())?;
+    if let Some((name, _)) = request
+        .settings
+        .iter()
+        .find(|(name, _)| model.functions.symbols.get(name).is_none())
+    {
+        return Err(format!(
+            "--set {name}: the aerodynamics of {} neither read nor define this property",
+            model.file
+        ));
+    }
     let condition = Condition::new(request.altitude_m, request.speed)?;
     let setup = Setup {
         model: &model,

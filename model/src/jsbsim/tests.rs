@@ -222,6 +222,7 @@ fn bad_input_on_the_command_line_exits_2() {
         format!("jsbsim {good} {condition} --frob"),
         format!("jsbsim {good} {condition} --set x"),
         format!("xplane {good}"),
+        format!("jsbsim {good} {condition} --set fcs/nothing=1"),
     ] {
         let args: Vec<&str> = case.split_whitespace().collect();
         assert_eq!(cli(&args).0, 2, "{case}");

@@ -185,7 +185,7 @@ fn check(root: &Path, name: &str, seed: u64, n: usize) -> [f64; 3] {
 }
 
 /// Every model of the catalogue that the import reads, at three states each (run with
-/// `--ignored`: about a minute on one core).
+/// `--ignored`: about 20 s).
 #[test]
 #[ignore]
 fn every_importable_catalogue_model_agrees_with_jsbsim() {

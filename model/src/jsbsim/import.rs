@@ -39,8 +39,13 @@ pub struct Request {
 
 /// The aircraft file (TOML text) of `request`, or why not.
 pub fn import(request: &Request) -> Result<String, String> {
-    let root = catalogue::root(request.root.as_deref());
-    let path = catalogue::model_path(root.as_deref(), &request.model)?;
+    let given = std::path::Path::new(&request.model);
+    let path = if given.is_file() {
+        given.to_path_buf()
+    } else {
+        let root = catalogue::root(request.root.as_deref());
+        catalogue::model_path(root.as_deref(), &request.model)?
+    };
     let model = Model::load(&path).map_err(|e| e.to_string())?;
     if let Some((name, _)) = request
         .settings

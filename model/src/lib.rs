@@ -20,6 +20,7 @@ pub mod emit;
 pub mod equations;
 pub mod files;
 pub mod interval;
+pub mod jsbsim;
 // The tests' reference numbers (one file, shared with the other crates' tests): for the unit
 // tests and for the generator of `generated/tests/values.rs` in `emit`.
 #[cfg(feature = "cli")]

@@ -25,7 +25,9 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
     version,
     about = "Roll-coupling jump criterion (Mahale & Ananthkrishnan, AIAA 2006-6267)",
     after_help = "AIRCRAFT is `A` or `B` (the paper's aircraft, any case) or else the path of an \
-                  aircraft TOML file (e.g. aircraft/c.toml); write ./A to read a file named A."
+                  aircraft TOML file (e.g. aircraft/c.toml); write ./A to read a file named A. \
+                  \"jsbsim:MODEL --altitude-m H --mach M --level-flight\" (the arguments of \
+                  `import jsbsim`, quoted as one) imports a JSBSim model at that condition."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -50,6 +52,15 @@ enum Command {
     Clear(ClearArgs),
     /// Print the dimensional principal-axis TOML equivalent to a nondimensional body-axis file.
     Convert(ConvertArgs),
+    /// Write an aircraft file from another tool's model: `import jsbsim <MODEL> --altitude-m H
+    /// (--mach M | --speed V) (--alpha-deg A | --level-flight) [--set PROPERTY=VALUE]...
+    /// [--out FILE] [--jsbsim-root DIR]`, or `import jsbsim --list`.
+    #[command(disable_help_flag = true)]
+    Import {
+        /// The source (`jsbsim`) and its arguments.
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true, num_args = 0..)]
+        args: Vec<String>,
+    },
     /// Write the generated criterion crate (generated/) and docs/formulas.tex.
     Emit(EmitArgs),
 }
@@ -103,6 +114,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
         Command::Simulate(a) => commands::simulate_command(a, out),
         Command::Clear(a) => commands::clear_command(a, out),
         Command::Convert(a) => commands::convert_command(a, out),
+        Command::Import { args } => Ok(ExitCode::from(model::jsbsim::cli::run(args, out))),
         Command::Emit(a) => commands::emit_command(a, out),
     }
 }
@@ -188,7 +200,7 @@ mod tests {
                         finite_angle("delta_a", a.delta_a_deg),
                     ],
                     Command::Clear(a) => vec![elevator(a.delta_e_deg)],
-                    Command::Emit(_) | Command::Convert(_) => vec![],
+                    Command::Emit(_) | Command::Convert(_) | Command::Import { .. } => vec![],
                 };
                 for c in checks {
                     match c {

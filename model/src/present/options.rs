@@ -206,6 +206,9 @@ pub fn load_aircraft(arg: &str) -> Result<Aircraft, String> {
     if let Some(ac) = Aircraft::builtin(arg) {
         return Ok(ac);
     }
+    if arg.starts_with("jsbsim:") {
+        return crate::jsbsim::cli::source(arg);
+    }
     let path = Path::new(arg);
     aircraft::load(path).map_err(|e| {
         let looks_like_name =

@@ -1,0 +1,34 @@
+//! Real aircraft from JSBSim: reading a JSBSim aircraft model (XML), evaluating its aerodynamic
+//! functions natively at a flight condition, and from them the nondimensional body-axis
+//! derivatives of an aircraft file that `analyze` reads.
+//!
+//! Data flow: [`xml`] and [`units`] read values; [`table`], [`function`] and [`evaluate`] are
+//! JSBSim's function language; [`metrics`], [`mass`] and [`aerodynamics`] the model's sections,
+//! put together in [`model`]. JSBSim itself (its Python package) is the independent check of the
+//! evaluation, in the integration tests.
+
+pub mod aerodynamics;
+pub mod atmosphere;
+pub mod catalogue;
+pub mod cli;
+pub mod coefficients;
+pub mod condition;
+pub mod derivatives;
+pub mod error;
+pub mod evaluate;
+pub mod function;
+pub mod import;
+pub mod mass;
+pub mod metrics;
+pub mod model;
+pub mod surfaces;
+pub mod table;
+pub mod table_xml;
+pub mod units;
+pub mod write;
+pub mod xml;
+
+pub use error::JsbsimError;
+pub use model::Model;
+#[cfg(test)]
+mod tests;

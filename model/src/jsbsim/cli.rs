@@ -1,0 +1,179 @@
+//! `model import jsbsim ...`: the command line of the import, parsed here so that the binary's
+//! own parser only hands over the arguments; the same arguments after `jsbsim:` name an aircraft
+//! source for the other commands ([`source`]). `--list` prints the catalogue, every model with
+//! whether it reads and, if not, why.
+
+use super::catalogue;
+use super::condition::Speed;
+use super::import::{evaluates, import, Alpha, Request, REFERENCE};
+use std::io::Write;
+use std::path::PathBuf;
+
+/// Usage, for errors.
+pub const USAGE: &str = "usage: model import jsbsim <MODEL> --altitude-m H (--mach M | --speed V) \
+     [--alpha-deg A | --level-flight] [--set PROPERTY=VALUE]... [--out FILE] [--jsbsim-root DIR]\n       \
+     model import jsbsim --list [--jsbsim-root DIR]";
+
+/// The exit code of bad input.
+pub const BAD_INPUT: u8 = 2;
+
+/// Runs `model import` with `args` (after `import`), writing to `out`; returns the exit code.
+/// Errors go to standard error.
+pub fn run(args: &[String], out: &mut dyn Write) -> u8 {
+    match parse_and_run(args, out) {
+        Ok(()) => 0,
+        Err(msg) => {
+            eprintln!("error: {msg}");
+            BAD_INPUT
+        }
+    }
+}
+
+/// The value after flag `flag` at `args[*i]`.
+fn value<'a>(args: &'a [String], i: &mut usize, flag: &str) -> Result<&'a str, String> {
+    *i += 1;
+    args.get(*i)
+        .map(String::as_str)
+        .ok_or_else(|| format!("{flag} needs a value\n{USAGE}"))
+}
+
+/// A finite number given for `flag`.
+fn number(text: &str, flag: &str) -> Result<f64, String> {
+    text.parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite())
+        .ok_or_else(|| format!("{flag} {text}: not a number (expected a finite decimal)"))
+}
+
+/// What the command line asks for.
+enum Command {
+    /// The catalogue listing, from the root if given.
+    List(Option<PathBuf>),
+    /// An import, written to the file if given.
+    Import(Request, Option<PathBuf>),
+}
+
+/// Parses the arguments after `import` (`jsbsim` first).
+fn parse(args: &[String]) -> Result<Command, String> {
+    if args.first().map(String::as_str) != Some("jsbsim") {
+        return Err(format!("the only import source is `jsbsim`\n{USAGE}"));
+    }
+    let (mut model, mut root, mut altitude, mut speed) = (None, None, None, None);
+    let (mut alpha, mut list, mut file) = (None, false, None);
+    let mut settings = Vec::new();
+    let mut i = 1;
+    while i < args.len() {
+        let a = args[i].as_str();
+        match a {
+            "--list" => list = true,
+            "--level-flight" => alpha = Some(Alpha::LevelFlight),
+            "--jsbsim-root" => root = Some(PathBuf::from(value(args, &mut i, a)?)),
+            "--out" => file = Some(PathBuf::from(value(args, &mut i, a)?)),
+            "--altitude-m" => altitude = Some(number(value(args, &mut i, a)?, a)?),
+            "--mach" => speed = Some(Speed::Mach(number(value(args, &mut i, a)?, a)?)),
+            "--speed" => speed = Some(Speed::True(number(value(args, &mut i, a)?, a)?)),
+            "--alpha-deg" => {
+                alpha = Some(Alpha::Given(
+                    number(value(args, &mut i, a)?, a)?.to_radians(),
+                ))
+            }
+            "--set" => settings.push(setting(value(args, &mut i, a)?)?),
+            _ if a.starts_with("--") => return Err(format!("unknown option {a}\n{USAGE}")),
+            _ if model.is_none() => model = Some(a.to_string()),
+            _ => return Err(format!("unexpected argument {a}\n{USAGE}")),
+        }
+        i += 1;
+    }
+    if list {
+        return Ok(Command::List(root));
+    }
+    let model = model.ok_or_else(|| format!("no model given\n{USAGE}"))?;
+    let altitude_m = altitude.ok_or_else(|| format!("--altitude-m is required\n{USAGE}"))?;
+    let speed = speed.ok_or_else(|| format!("--mach or --speed is required\n{USAGE}"))?;
+    let alpha =
+        alpha.ok_or_else(|| format!("--alpha-deg or --level-flight is required\n{USAGE}"))?;
+    let request = Request {
+        model,
+        root,
+        altitude_m,
+        speed,
+        alpha,
+        settings,
+    };
+    Ok(Command::Import(request, file))
+}
+
+/// One `--set PROPERTY=VALUE`.
+fn setting(kv: &str) -> Result<(String, f64), String> {
+    let (k, v) = kv.split_once('=').ok_or_else(|| {
+        format!("--set {kv}: expected PROPERTY=VALUE, e.g. fcs/flap-pos-norm=0.5")
+    })?;
+    Ok((
+        k.trim().to_string(),
+        number(v.trim(), &format!("--set {k}"))?,
+    ))
+}
+
+/// Parses the arguments and runs the import or the listing.
+fn parse_and_run(args: &[String], out: &mut dyn Write) -> Result<(), String> {
+    match parse(args)? {
+        Command::List(root) => listing(root, out),
+        Command::Import(request, file) => {
+            let text = import(&request)?;
+            match file {
+                Some(path) => std::fs::write(&path, text)
+                    .map_err(|e| format!("{}: cannot write: {e}", path.display())),
+                None => out.write_all(text.as_bytes()).map_err(|e| e.to_string()),
+            }
+        }
+    }
+}
+
+/// The aircraft of a `jsbsim:` source, the import's arguments after the colon in one string
+/// (`"jsbsim:f104 --altitude-m 6096 --mach 0.53 --level-flight"`): what `analyze`, `continue`,
+/// `simulate` and `report` accept in place of an aircraft file.
+pub fn source(spec: &str) -> Result<crate::aircraft::Aircraft, String> {
+    let rest = spec
+        .strip_prefix("jsbsim:")
+        .ok_or_else(|| format!("{spec}: not a jsbsim: source"))?;
+    let mut args = vec!["jsbsim".to_string()];
+    args.extend(rest.split_whitespace().map(str::to_string));
+    match parse(&args)? {
+        Command::Import(request, None) => {
+            let text = import(&request)?;
+            crate::aircraft::parse(&text, spec).map_err(|e| e.to_string())
+        }
+        _ => Err(format!("{spec}: a jsbsim: source takes the import's model and flight condition, not --list or --out")),
+    }
+}
+
+/// Prints the catalogue.
+fn listing(root: Option<PathBuf>, out: &mut dyn Write) -> Result<(), String> {
+    let root = catalogue::root(root.as_deref()).ok_or_else(|| catalogue::HOW_TO_GET.to_string())?;
+    let entries: Vec<(String, Result<String, String>)> = catalogue::listing(&root)
+        .into_iter()
+        .map(|(name, model)| {
+            let path = root
+                .join("aircraft")
+                .join(&name)
+                .join(format!("{name}.xml"));
+            let checked = model.and_then(|m| evaluates(&m, &path).map(|()| m.name));
+            (name, checked)
+        })
+        .collect();
+    let ok = entries.iter().filter(|(_, m)| m.is_ok()).count();
+    let (h, mach, alpha) = REFERENCE;
+    let mut text = format!(
+        "{} ({} models, {ok} importable: read and evaluated at {h} m, Mach {mach}, alpha {alpha} deg)\n",
+        root.join("aircraft").display(),
+        entries.len()
+    );
+    for (name, model) in entries {
+        let line = match model {
+            Ok(full) => format!("{name:<18} ok      {full}\n"),
+            Err(e) => format!("{name:<18} refused {e}\n"),
+        };
+        text.push_str(&line);
+    }
+    out.write_all(text.as_bytes()).map_err(|e| e.to_string())
+}

@@ -1,0 +1,173 @@
+//! An import from start to end: the model, the flight condition (alpha given or level flight:
+//! lift equal to weight), the coefficients and their derivatives there, and the aircraft file.
+
+use super::catalogue;
+use super::coefficients::{Setup, CL};
+use super::condition::{Condition, Speed, State};
+use super::derivatives::derivatives;
+use super::model::Model;
+use super::surfaces::surfaces;
+use super::units::SLUG_PER_LB;
+use super::write::Import;
+use std::path::PathBuf;
+
+/// How the angle of attack is chosen.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Alpha {
+    /// Given, rad.
+    Given(f64),
+    /// Where lift equals weight.
+    LevelFlight,
+}
+
+/// What to import.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Request {
+    /// Catalogue name or path of the model XML.
+    pub model: String,
+    /// The models' root directory, if given.
+    pub root: Option<PathBuf>,
+    /// Geometric altitude, m.
+    pub altitude_m: f64,
+    /// Speed.
+    pub speed: Speed,
+    /// Angle of attack.
+    pub alpha: Alpha,
+    /// `--set` values.
+    pub settings: Vec<(String, f64)>,
+}
+
+/// The aircraft file (TOML text) of `request`, or why not.
+pub fn import(request: &Request) -> Result<String, String> {
+    let given = std::path::Path::new(&request.model);
+    let path = if given.is_file() {
+        given.to_path_buf()
+    } else {
+        let root = catalogue::root(request.root.as_deref());
+        catalogue::model_path(root.as_deref(), &request.model)?
+    };
+    let model = Model::load(&path).map_err(|e| e.to_string())?;
+    if let Some((name, _)) = request
+        .settings
+        .iter()
+        .find(|(name, _)| model.functions.symbols.get(name).is_none())
+    {
+        return Err(format!(
+            "--set {name}: the aerodynamics of {} neither read nor define this property",
+            model.file
+        ));
+    }
+    let condition = Condition::new(request.altitude_m, request.speed)?;
+    let setup = Setup {
+        model: &model,
+        condition,
+        surfaces: surfaces(&model, &path),
+        settings: request.settings.clone(),
+    };
+    let (alpha, alpha_source) = match request.alpha {
+        Alpha::Given(a) => (a, "given".to_string()),
+        Alpha::LevelFlight => {
+            let a = level_flight(&setup)?;
+            (
+                a,
+                "level flight: lift equals weight, surfaces neutral".to_string(),
+            )
+        }
+    };
+    let state = State {
+        alpha,
+        beta: 0.0,
+        rates: [0.0; 3],
+        surfaces: [0.0; 3],
+    };
+    let (base, derivs) = derivatives(&setup, &state).map_err(|e| e.to_string())?;
+    Ok(Import {
+        model: &model,
+        condition,
+        state,
+        alpha_source,
+        surfaces: &setup.surfaces,
+        settings: &request.settings,
+        base: &base,
+        derivatives: &derivs,
+    }
+    .toml())
+}
+
+/// The reference condition of the catalogue listing: 3,000 m, Mach 0.3, alpha 2 deg.
+pub const REFERENCE: (f64, f64, f64) = (3000.0, 0.3, 2.0);
+
+/// Whether `model` (read from `path`) evaluates at the [`REFERENCE`] condition with nothing set
+/// by the user; the error says which input is missing.
+pub fn evaluates(model: &Model, path: &std::path::Path) -> Result<(), String> {
+    let (h, mach, alpha) = REFERENCE;
+    let setup = Setup {
+        model,
+        condition: Condition::new(h, Speed::Mach(mach))?,
+        surfaces: surfaces(model, path),
+        settings: Vec::new(),
+    };
+    let state = State {
+        alpha: alpha.to_radians(),
+        beta: 0.0,
+        rates: [0.0; 3],
+        surfaces: [0.0; 3],
+    };
+    setup
+        .coefficients(&state)
+        .map(|_| ())
+        .map_err(|e| e.to_string())
+}
+
+/// The angle of attack (rad) at which lift equals weight, surfaces neutral: the first sign
+/// change of CL - W/(qbar S) from -5 deg up to 30 deg, refined by bisection.
+pub fn level_flight(setup: &Setup) -> Result<f64, String> {
+    let weight = setup.model.totals().weight;
+    let need = weight / (setup.condition.qbar_psf() * setup.model.metrics.wing_area);
+    let excess = |alpha: f64| -> Result<f64, String> {
+        let state = State {
+            alpha,
+            beta: 0.0,
+            rates: [0.0; 3],
+            surfaces: [0.0; 3],
+        };
+        let c = setup.coefficients(&state).map_err(|e| e.to_string())?;
+        Ok(c.values[CL] - need)
+    };
+    let step = 0.25f64.to_radians();
+    let mut lo = (-5.0f64).to_radians();
+    let mut f_lo = excess(lo)?;
+    if f_lo > 0.0 {
+        return Err(format!(
+            "no level flight: at -5 deg alpha the lift coefficient {:.4} already exceeds the \
+             {need:.4} the weight ({weight:.0} lbs) needs (fly slower or higher)",
+            f_lo + need
+        ));
+    }
+    let mut best = f_lo;
+    while lo < 30f64.to_radians() {
+        let hi = lo + step;
+        let f_hi = excess(hi)?;
+        best = best.max(f_hi);
+        if f_lo <= 0.0 && f_hi >= 0.0 {
+            let (mut a, mut b) = (lo, hi);
+            for _ in 0..60 {
+                let m = 0.5 * (a + b);
+                if excess(m)? < 0.0 {
+                    a = m;
+                } else {
+                    b = m;
+                }
+            }
+            return Ok(0.5 * (a + b));
+        }
+        lo = hi;
+        f_lo = f_hi;
+    }
+    Err(format!(
+        "no level flight between -5 and 30 deg alpha: the largest CL found is {:.4}, the weight \
+         ({weight:.0} lbs, {:.0} kg) needs CL = {need:.4} (fly faster or lower)",
+        best + need,
+        weight * SLUG_PER_LB * super::units::KG_PER_SLUG
+    ))
+}

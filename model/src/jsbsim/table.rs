@@ -1,0 +1,155 @@
+//! JSBSim's lookup tables (`<table>`) of one, two and three independent variables: linear
+//! interpolation between breakpoints, clamped at the ends (no extrapolation), bilinear over rows
+//! and columns, and linear between the two-variable tables at the `breakPoint`s of the third.
+
+/// A table's data, by its number of independent variables.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TableData {
+    /// One independent variable.
+    One {
+        /// Breakpoints, increasing.
+        keys: Vec<f64>,
+        /// The value at each breakpoint.
+        values: Vec<f64>,
+    },
+    /// Two independent variables.
+    Two {
+        /// Row keys, increasing.
+        rows: Vec<f64>,
+        /// Column keys, increasing.
+        cols: Vec<f64>,
+        /// The values, row by row.
+        values: Vec<Vec<f64>>,
+    },
+    /// Three independent variables.
+    Three {
+        /// Breakpoints of the third variable, increasing.
+        breakpoints: Vec<f64>,
+        /// A two-variable table at each breakpoint.
+        tables: Vec<TableData>,
+    },
+}
+
+/// Where `key` falls among increasing `keys`: the lower index and the weight of the upper one,
+/// clamped to the ends (a key outside the range takes the end value).
+fn bracket(keys: &[f64], key: f64) -> (usize, f64) {
+    let n = keys.len();
+    if n == 1 || key <= keys[0] {
+        return (0, 0.0);
+    }
+    if key >= keys[n - 1] {
+        return (n - 2, 1.0);
+    }
+    let i = keys.partition_point(|&k| k < key).max(1) - 1;
+    (i, (key - keys[i]) / (keys[i + 1] - keys[i]))
+}
+
+/// Linear interpolation of `values` at `(i, t)` from [`bracket`].
+fn interpolate(values: &[f64], (i, t): (usize, f64)) -> f64 {
+    if values.len() == 1 {
+        return values[0];
+    }
+    values[i] + t * (values[i + 1] - values[i])
+}
+
+impl TableData {
+    /// The number of independent variables.
+    pub fn dimension(&self) -> usize {
+        match self {
+            TableData::One { .. } => 1,
+            TableData::Two { .. } => 2,
+            TableData::Three { .. } => 3,
+        }
+    }
+
+    /// The table's value at `keys` (row, column, table), clamped at the ends.
+    pub fn lookup(&self, keys: &[f64]) -> f64 {
+        match self {
+            TableData::One { keys: k, values } => interpolate(values, bracket(k, keys[0])),
+            TableData::Two { rows, cols, values } => {
+                let (r, tr) = bracket(rows, keys[0]);
+                let c = bracket(cols, keys[1]);
+                let lo = interpolate(&values[r], c);
+                if rows.len() == 1 {
+                    return lo;
+                }
+                let hi = interpolate(&values[r + 1], c);
+                lo + tr * (hi - lo)
+            }
+            TableData::Three {
+                breakpoints,
+                tables,
+            } => {
+                let (b, t) = bracket(breakpoints, keys[2]);
+                let lo = tables[b].lookup(keys);
+                if tables.len() == 1 {
+                    return lo;
+                }
+                let hi = tables[b + 1].lookup(keys);
+                lo + t * (hi - lo)
+            }
+        }
+    }
+
+    /// The breakpoints of independent variable `axis` (0 row, 1 column, 2 table).
+    pub fn breakpoints(&self, axis: usize) -> Vec<f64> {
+        match (self, axis) {
+            (TableData::One { keys, .. }, 0) => keys.clone(),
+            (TableData::Two { rows, .. }, 0) => rows.clone(),
+            (TableData::Two { cols, .. }, 1) => cols.clone(),
+            (TableData::Three { breakpoints, .. }, 2) => breakpoints.clone(),
+            (TableData::Three { tables, .. }, a) => {
+                let mut all: Vec<f64> = tables.iter().flat_map(|t| t.breakpoints(a)).collect();
+                all.sort_by(f64::total_cmp);
+                all.dedup();
+                all
+            }
+            _ => Vec::new(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_variable_interpolates_and_clamps() {
+        let t = TableData::One {
+            keys: vec![0.0, 1.0, 3.0],
+            values: vec![1.0, 3.0, -1.0],
+        };
+        assert_eq!(t.lookup(&[0.5]), 2.0);
+        assert_eq!(t.lookup(&[2.0]), 1.0);
+        assert_eq!(t.lookup(&[-5.0]), 1.0);
+        assert_eq!(t.lookup(&[9.0]), -1.0);
+        assert_eq!(t.lookup(&[1.0]), 3.0);
+    }
+
+    #[test]
+    fn two_variables_are_bilinear_and_clamped() {
+        let t = TableData::Two {
+            rows: vec![0.0, 1.0],
+            cols: vec![0.0, 2.0],
+            values: vec![vec![0.0, 2.0], vec![10.0, 12.0]],
+        };
+        assert_eq!(t.lookup(&[0.5, 1.0]), 6.0);
+        assert_eq!(t.lookup(&[2.0, -1.0]), 10.0);
+        assert_eq!(t.lookup(&[-1.0, 5.0]), 2.0);
+    }
+
+    #[test]
+    fn three_variables_interpolate_between_breakpoints() {
+        let flat = |v: f64| TableData::Two {
+            rows: vec![0.0, 1.0],
+            cols: vec![0.0, 1.0],
+            values: vec![vec![v, v], vec![v, v]],
+        };
+        let t = TableData::Three {
+            breakpoints: vec![0.0, 4.0],
+            tables: vec![flat(1.0), flat(5.0)],
+        };
+        assert_eq!(t.lookup(&[0.3, 0.3, 1.0]), 2.0);
+        assert_eq!(t.lookup(&[0.3, 0.3, 8.0]), 5.0);
+    }
+}

@@ -1,0 +1,252 @@
+//! Unit tests of the JSBSim reader on small hand-written models: the function language, the
+//! units and signs of the mass properties, and the refusals (each naming file, line and element).
+
+use super::evaluate::Env;
+use super::model::Model;
+
+/// A minimal model around `aero` (the body of `<aerodynamics>`) and `mass` (extra
+/// `<mass_balance>` content).
+fn model_xml(aero: &str, mass: &str) -> String {
+    format!(
+        r#"<?xml version="1.0"?>
+<fdm_config name="Test">
+ <metrics>
+   <wingarea unit="M2">10</wingarea>
+   <wingspan unit="FT">20</wingspan>
+   <chord unit="IN">60</chord>
+   <location name="AERORP" unit="IN"><x>100</x><y>0</y><z>0</z></location>
+ </metrics>
+ <mass_balance>
+   <ixx unit="KG*M2">1000</ixx><iyy unit="SLUG*FT2">2000</iyy><izz unit="SLUG*FT2">3000</izz>
+   <ixz unit="SLUG*FT2">50</ixz>
+   <emptywt unit="KG">1000</emptywt>
+   <location name="CG" unit="IN"><x>100</x><y>0</y><z>0</z></location>
+   {mass}
+ </mass_balance>
+ <aerodynamics>
+ {aero}
+ </aerodynamics>
+</fdm_config>"#
+    )
+}
+
+fn model(aero: &str) -> Model {
+    Model::parse(&model_xml(aero, ""), "test.xml").unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The value of function `name` with inputs `inputs`.
+fn value(m: &Model, name: &str, inputs: &[(&str, f64)]) -> f64 {
+    let mut env: Env = m.environment();
+    for (k, v) in inputs {
+        env.set(k, *v);
+    }
+    env.property(name).unwrap()
+}
+
+fn refusal(aero: &str) -> String {
+    Model::parse(&model_xml(aero, ""), "bad.xml")
+        .unwrap_err()
+        .to_string()
+}
+
+#[test]
+fn operations_and_negated_properties() {
+    let m = model(
+        r#"<function name="f/a"><sum><product><value>2</value><property>x</property></product>
+             <property>-y</property><difference><value>1</value><value>3</value></difference>
+             <quotient><value>1</value><value>4</value></quotient>
+             <pow><value>2</value><value>3</value></pow><abs><value>-5</value></abs>
+             <max><value>1</value><value>7</value></max><min><value>1</value><value>7</value></min>
+           </sum></function>
+           <function name="f/b"><ifthen><gt><property>f/a</property><value>0</value></gt>
+             <atan2><value>1</value><value>1</value></atan2><value>9</value></ifthen></function>"#,
+    );
+    // 2*3 - 4 + (1-3) + 0.25 + 8 + 5 + 7 + 1 = 21.25
+    assert_eq!(value(&m, "f/a", &[("x", 3.0), ("y", 4.0)]), 21.25);
+    assert_eq!(
+        value(&m, "f/b", &[("x", 3.0), ("y", 4.0)]),
+        std::f64::consts::FRAC_PI_4
+    );
+}
+
+#[test]
+fn tables_of_one_two_and_three_variables_in_a_function() {
+    let m = model(
+        r#"<function name="t/two"><table>
+             <independentVar lookup="row">r</independentVar>
+             <independentVar lookup="column">c</independentVar>
+             <tableData>
+                     0   10
+                0    0   1
+                1    2   3
+             </tableData></table></function>
+           <function name="t/three"><table>
+             <independentVar lookup="row">r</independentVar>
+             <independentVar lookup="column">c</independentVar>
+             <independentVar lookup="table">k</independentVar>
+             <tableData breakPoint="0">  0 10
+               0 0 0
+               1 0 0 </tableData>
+             <tableData breakPoint="2">  0 10
+               0 4 4
+               1 4 4 </tableData></table></function>"#,
+    );
+    assert_eq!(value(&m, "t/two", &[("r", 0.5), ("c", 5.0)]), 1.5);
+    assert_eq!(value(&m, "t/two", &[("r", 5.0), ("c", -5.0)]), 2.0);
+    assert_eq!(
+        value(&m, "t/three", &[("r", 0.5), ("c", 5.0), ("k", 1.0)]),
+        2.0
+    );
+}
+
+#[test]
+fn units_and_the_sign_of_the_product_of_inertia() {
+    let m = Model::parse(
+        &model_xml(
+            "",
+            r#"<pointmass name="p"><weight unit="LBS">100</weight>
+                 <location unit="IN"><x>112</x><y>0</y><z>-12</z></location></pointmass>"#,
+        ),
+        "m.xml",
+    )
+    .unwrap();
+    assert!((m.metrics.wing_area - 107.639_104).abs() < 1e-3);
+    assert!((m.metrics.chord - 5.0).abs() < 1e-12);
+    let t = m.totals();
+    assert!((t.weight - (1000.0 / 0.453_592_37 + 100.0)).abs() < 1e-9);
+    // The file's ixz = 50 is minus the integral of x z dm; the point mass aft (x < 0) and below
+    // (z > 0) of the CG adds a negative x z.
+    let [ix, _, _, ixz] = t.moments();
+    assert!((ix - (1000.0 / 1.35594 + point_ixx(&t))).abs() < 1e-6);
+    assert!(ixz < -50.0, "{ixz}");
+}
+
+/// The point mass's share of Ixx about the combined CG (y = 0, so z^2 terms only).
+fn point_ixx(t: &super::mass::Totals) -> f64 {
+    let slug = 1.0 / 32.174049;
+    let dz_p = (-12.0 - t.cg[2]) / 12.0;
+    let dz_e = (0.0 - t.cg[2]) / 12.0;
+    100.0 * slug * dz_p * dz_p + (t.weight - 100.0) * slug * dz_e * dz_e
+}
+
+#[test]
+fn refusals_name_the_file_line_and_element() {
+    let e = refusal(r#"<function name="a"><frobnicate/></function>"#);
+    assert!(
+        e.contains("bad.xml:") && e.contains("<frobnicate>") && e.contains("expected"),
+        "{e}"
+    );
+    let e = refusal(
+        r#"<function name="a"><table><independentVar>x</independentVar><tableData>
+             0 1
+             1 2 3
+           </tableData></table></function>"#,
+    );
+    assert!(e.contains("<tableData>") && e.contains("expected"), "{e}");
+    let e = Model::parse("<fdm_config><metrics>", "cut.xml")
+        .unwrap_err()
+        .to_string();
+    assert!(e.starts_with("cut.xml:") && e.contains("XML"), "{e}");
+    let e = refusal(r#"<axis name="UP"><function name="a"><value>1</value></function></axis>"#);
+    assert!(e.contains("axis `UP`"), "{e}");
+}
+
+#[test]
+fn deep_nesting_and_long_chains_are_refused_not_a_stack_overflow() {
+    let deep = format!(
+        "<function name=\"d\">{}<value>1</value>{}</function>",
+        "<sum>".repeat(5000),
+        "</sum>".repeat(5000)
+    );
+    let e = Model::parse(&model_xml(&deep, ""), "deep.xml")
+        .map(|_| ())
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("nested"), "{e}");
+    let chain: String = (0..1000)
+        .map(|k| {
+            format!(
+                "<function name=\"f{k}\"><property>f{}</property></function>",
+                k + 1
+            )
+        })
+        .collect::<String>()
+        + "<function name=\"f1000\"><value>1</value></function>";
+    let m = model(&chain);
+    let e = m.environment().property("f0").unwrap_err().to_string();
+    assert!(e.contains("chain"), "{e}");
+}
+
+#[test]
+fn a_function_that_reads_itself_is_an_error_not_a_hang() {
+    let m = model(
+        r#"<function name="a"><property>b</property></function>
+           <function name="b"><sum><property>a</property><value>1</value></sum></function>"#,
+    );
+    let e = m.environment().property("a").unwrap_err().to_string();
+    assert!(e.contains("property loop"), "{e}");
+}
+
+/// Runs the import's command line; returns the exit code and what it wrote.
+fn cli(args: &[&str]) -> (u8, String) {
+    let args: Vec<String> = args.iter().map(|s| s.to_string()).collect();
+    let mut out = Vec::new();
+    let code = super::cli::run(&args, &mut out);
+    (code, String::from_utf8(out).unwrap())
+}
+
+#[test]
+fn bad_input_on_the_command_line_exits_2() {
+    let dir = std::env::temp_dir().join(format!("jsbsim-cli-{}", std::process::id()));
+    let bad = dir.join("aircraft/Cut");
+    std::fs::create_dir_all(&bad).unwrap();
+    std::fs::write(bad.join("Cut.xml"), "<fdm_config><metrics>").unwrap();
+    let good = dir.join("good.xml");
+    std::fs::write(
+        &good,
+        model_xml(
+            r#"<axis name="LIFT"><function name="a"><value>1</value></function></axis>"#,
+            "",
+        ),
+    )
+    .unwrap();
+    let root = dir.to_str().unwrap();
+    let good = good.to_str().unwrap();
+    let condition = "--altitude-m 1000 --mach 0.5 --alpha-deg 2";
+    for case in [
+        format!("jsbsim Cut --jsbsim-root {root} {condition}"),
+        format!("jsbsim Nope --jsbsim-root {root} {condition}"),
+        format!("jsbsim {good} --altitude-m x --mach 0.5 --alpha-deg 2"),
+        format!("jsbsim {good} --altitude-m 1000 --alpha-deg 2"),
+        format!("jsbsim {good} --altitude-m -500 --mach 0.5 --alpha-deg 2"),
+        format!("jsbsim {good} {condition} --frob"),
+        format!("jsbsim {good} {condition} --set x"),
+        format!("xplane {good}"),
+        format!("jsbsim {good} {condition} --set fcs/nothing=1"),
+    ] {
+        let args: Vec<&str> = case.split_whitespace().collect();
+        assert_eq!(cli(&args).0, 2, "{case}");
+    }
+    let (code, text) = cli(&[
+        "jsbsim",
+        good,
+        "--altitude-m",
+        "1000",
+        "--mach",
+        "0.5",
+        "--alpha-deg",
+        "2",
+    ]);
+    assert_eq!(code, 0);
+    assert!(
+        text.contains("[coefficients]") && text.contains("CL_alpha = "),
+        "{text}"
+    );
+    let (code, text) = cli(&["jsbsim", "--list", "--jsbsim-root", root]);
+    assert_eq!(code, 0);
+    assert!(
+        text.contains("Cut") && text.contains("refused") && text.contains("XML"),
+        "{text}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

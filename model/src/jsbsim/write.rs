@@ -1,0 +1,248 @@
+//! The aircraft file of an import: the nondimensional body-axis format `analyze` reads
+//! (`[flight]`, `[geometry]`, `[inertia]` with `ixz`, `[coefficients]`, `[limits]`), in SI,
+//! with comments that say where every number came from.
+
+use super::coefficients::Coefficients;
+use super::condition::{Condition, State};
+use super::derivatives::Derivative;
+use super::mass::Totals;
+use super::model::Model;
+use super::surfaces::Surface;
+use super::units::{KG_PER_SLUG, M_PER_FT, SLUG_PER_LB};
+use std::fmt::Write;
+
+/// Kilogram square metres per slug square foot (exact SI).
+const KGM2_PER_SLUGFT2: f64 = KG_PER_SLUG * M_PER_FT * M_PER_FT;
+
+/// How the numbers were obtained, for the file's head.
+const PROVENANCE: &str = "\
+# Evaluated natively from the model's aerodynamic functions (no JSBSim at run time).
+# Quasi-steady: the alpha-dot and beta-dot terms of the model are left out (not part of
+# the paper's model); the configuration is clean and power off: these inputs of the
+";
+
+/// The conventions of the coefficients, for the head of `[coefficients]`.
+const CONVENTIONS: &str = "\
+# Per rad, body axes, moments about the CG (the forces moved from the AERORP); rates
+# nondimensional as p b/(2V), q c/(2V), r b/(2V). Central differences, step 1e-6, of the
+# evaluated coefficients. The aileron's sign is this project's (positive rolls left):
+";
+
+/// What the file is written from.
+pub struct Import<'a> {
+    /// The model.
+    pub model: &'a Model,
+    /// The condition.
+    pub condition: Condition,
+    /// The state the derivatives are taken at.
+    pub state: State,
+    /// How alpha was chosen (given, or level flight).
+    pub alpha_source: String,
+    /// The surfaces.
+    pub surfaces: &'a [Surface],
+    /// The user's settings.
+    pub settings: &'a [(String, f64)],
+    /// The coefficients at the state.
+    pub base: &'a Coefficients,
+    /// The derivatives.
+    pub derivatives: &'a [Derivative],
+}
+
+/// A number with every digit (shortest round trip).
+fn num(x: f64) -> String {
+    let s = format!("{x:?}");
+    if s.contains('e') {
+        format!("{x:e}")
+    } else {
+        s
+    }
+}
+
+impl Import<'_> {
+    /// The TOML text.
+    pub fn toml(&self) -> String {
+        let mut t = String::new();
+        self.header(&mut t);
+        self.flight(&mut t);
+        self.mass(&mut t, self.model.totals());
+        self.coefficients(&mut t);
+        self.limits(&mut t);
+        t
+    }
+
+    fn header(&self, t: &mut String) {
+        let m = self.model;
+        let _ = writeln!(
+            t,
+            "# Imported from the JSBSim model {} (`model import jsbsim`).",
+            m.file
+        );
+        t.push_str(PROVENANCE);
+        let _ = writeln!(
+            t,
+            "# aerodynamics were set to zero: {}.",
+            list(&self.base.zeroed)
+        );
+        if !self.settings.is_empty() {
+            let set: Vec<String> = self
+                .settings
+                .iter()
+                .map(|(k, v)| format!("{k} = {v}"))
+                .collect();
+            let _ = writeln!(t, "# Set by --set: {}.", set.join(", "));
+        }
+        let name = if m.name.is_empty() { &m.file } else { &m.name };
+        let _ = writeln!(t, "\nname = {:?}", format!("{name} (JSBSim)"));
+    }
+
+    fn flight(&self, t: &mut String) {
+        let c = &self.condition;
+        let _ = writeln!(t, "\n[flight]");
+        let _ = writeln!(
+            t,
+            "# Altitude {} m; U.S. Standard Atmosphere 1976 (JSBSim's standard day): {:.2} K,",
+            c.altitude_m, c.air.temperature
+        );
+        let _ = writeln!(
+            t,
+            "# speed of sound {:.3} m/s; Mach {:.4}; alpha {:.4} deg ({}).",
+            c.air.sound_speed,
+            c.mach,
+            self.state.alpha.to_degrees(),
+            self.alpha_source
+        );
+        let _ = writeln!(t, "speed = {}          # m/s, true airspeed", num(c.speed));
+        let _ = writeln!(t, "density = {}        # kg/m^3", num(c.air.density));
+    }
+
+    fn mass(&self, t: &mut String, totals: Totals) {
+        let m = self.model;
+        let mass_kg = totals.weight * SLUG_PER_LB * KG_PER_SLUG;
+        let _ = writeln!(t, "\n[geometry]");
+        let parts: Vec<String> = m
+            .mass
+            .masses
+            .iter()
+            .map(|x| format!("{} {:.1} lbs", x.name, x.weight))
+            .collect();
+        let _ = writeln!(
+            t,
+            "# <mass_balance> and <propulsion> tanks as loaded: {} (total {:.1} lbs).",
+            parts.join(", "),
+            totals.weight
+        );
+        let _ = writeln!(t, "mass = {}           # kg", num(mass_kg));
+        let _ = writeln!(
+            t,
+            "# <metrics>: wingarea {:.3} ft^2, wingspan {:.3} ft, chord {:.3} ft.",
+            m.metrics.wing_area, m.metrics.span, m.metrics.chord
+        );
+        let _ = writeln!(
+            t,
+            "wing_area = {}      # m^2",
+            num(m.metrics.wing_area * M_PER_FT * M_PER_FT)
+        );
+        let _ = writeln!(t, "span = {}           # m", num(m.metrics.span * M_PER_FT));
+        let _ = writeln!(
+            t,
+            "chord = {}          # m",
+            num(m.metrics.chord * M_PER_FT)
+        );
+        let [ix, iy, iz, ixz] = totals.moments();
+        let _ = writeln!(t, "\n[inertia]");
+        let _ = writeln!(t, "# Body axes about the CG as loaded (x {:.2}, y {:.2}, z {:.2} in, JSBSim's structural frame),", totals.cg[0], totals.cg[1], totals.cg[2]);
+        let _ = writeln!(
+            t,
+            "# kg m^2; ixz is the integral of x z dm (JSBSim's <ixz> has the opposite sign)."
+        );
+        for (k, v) in [("ix", ix), ("iy", iy), ("iz", iz), ("ixz", ixz)] {
+            let _ = writeln!(t, "{k} = {}", num(v * KGM2_PER_SLUGFT2));
+        }
+    }
+
+    fn coefficients(&self, t: &mut String) {
+        let _ = writeln!(t, "\n[coefficients]");
+        t.push_str(CONVENTIONS);
+        let _ = writeln!(
+            t,
+            "# minus JSBSim's, whose positive left aileron rolls right. At the point: {}.",
+            {
+                let v: Vec<String> = super::coefficients::NAMES
+                    .iter()
+                    .zip(self.base.values)
+                    .map(|(n, v)| format!("{n} {v:.5}"))
+                    .collect();
+                v.join(", ")
+            }
+        );
+        let kinks: Vec<&str> = self
+            .derivatives
+            .iter()
+            .filter(|d| d.kink.is_some())
+            .map(|d| d.key)
+            .collect();
+        if !kinks.is_empty() {
+            let _ = writeln!(
+                t,
+                "# Kinks at the point (mean of the one-sided slopes given): {}.",
+                kinks.join(", ")
+            );
+        }
+        for d in self.derivatives {
+            let mut note = if d.functions.is_empty() {
+                "no function depends on it".to_string()
+            } else {
+                d.functions.join(", ")
+            };
+            if let Some((lo, hi)) = d.kink {
+                note = format!("kink: slopes {lo:.6} / {hi:.6}; {note}");
+            }
+            let _ = writeln!(t, "{} = {}   # {}", d.key, num(d.value), note);
+        }
+    }
+
+    fn limits(&self, t: &mut String) {
+        let known: Vec<&Surface> = self
+            .surfaces
+            .iter()
+            .filter(|s| s.range.is_some() && !s.per_unit_travel)
+            .collect();
+        for s in self.surfaces.iter().filter(|s| s.per_unit_travel) {
+            let _ = writeln!(t, "# The {} is given only as normalised travel: its derivatives are per unit travel, no limit.", s.control.name());
+        }
+        if known.is_empty() {
+            return;
+        }
+        let _ = writeln!(t, "\n[limits]");
+        let _ = writeln!(
+            t,
+            "# Deflection limits, deg: the smaller end of the flight control system's range."
+        );
+        for s in known {
+            let r = s.range.as_ref().expect("known");
+            let _ = writeln!(
+                t,
+                "# {}: {:.4} to {:.4} rad, from {}",
+                s.control.name(),
+                r.min,
+                r.max,
+                r.source
+            );
+            let _ = writeln!(
+                t,
+                "{} = {}",
+                s.control.name(),
+                num((-r.min).min(r.max).to_degrees())
+            );
+        }
+    }
+}
+
+/// A list for a comment.
+fn list(items: &[String]) -> String {
+    if items.is_empty() {
+        "none".into()
+    } else {
+        items.join(", ")
+    }
+}

@@ -26,6 +26,7 @@ pub mod interval;
 pub mod plot;
 #[cfg(feature = "cli")]
 pub mod present;
+pub(crate) mod program;
 pub mod pss_model;
 pub mod random;
 #[allow(dead_code)]

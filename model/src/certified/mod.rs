@@ -652,7 +652,7 @@ impl EnclosedPolys {
 impl EnclosedPolys {
     /// The criterion polynomials of the data `params` (in [`Param::ALL`] order) at elevator
     /// `delta_e_rad` and `delta_r = 0`, from one evaluation of the criterion program (the
-    /// emitter's straight-line program of their coefficients, `emit::functions::certified`) in
+    /// straight-line program of their coefficients, `program::criterion`) in
     /// f64 with an a priori bound on its rounding (`certified::tape`): the same exact
     /// polynomials as [`EnclosedPolys::new`] on the same data, in enclosures of about the same
     /// width, at a small fraction of the cost. `None` where the tape does not apply: aileron
@@ -708,9 +708,9 @@ impl EnclosedPolys {
     }
 }
 
-/// The criterion program ([`crate::emit::functions::criterion_program`]) of the process's
+/// The criterion program ([`crate::program::criterion::criterion_program`]) of the process's
 /// parametric derivation, compiled once, with the number of coefficients of each of its
-/// polynomials (in the order of [`crate::emit::functions::CriterionProgram::polys`]).
+/// polynomials (in the order of [`crate::program::criterion::CriterionProgram::polys`]).
 struct CriterionTape {
     tape: tape::Tape,
     lengths: Vec<usize>,
@@ -720,7 +720,7 @@ impl CriterionTape {
     fn get() -> &'static CriterionTape {
         static T: std::sync::OnceLock<CriterionTape> = std::sync::OnceLock::new();
         T.get_or_init(|| {
-            let p = crate::emit::functions::criterion_program(crate::specialise::parametric());
+            let p = crate::program::criterion::criterion_program(crate::specialise::parametric());
             // The inputs the data are given in: delta_e, then the parameters.
             let names: Vec<String> = std::iter::once("delta_e".to_string())
                 .chain(

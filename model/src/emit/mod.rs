@@ -16,22 +16,19 @@
 pub(crate) mod c;
 pub(crate) mod c_self_test;
 pub(crate) mod cross;
-pub(crate) mod expr;
 pub(crate) mod formulas;
 pub(crate) mod functions;
 pub mod latex;
-pub(crate) mod linear;
 pub mod paper;
 pub mod program;
 pub(crate) mod reference;
 pub(crate) mod rust;
 pub(crate) mod shape;
-pub(crate) mod stage;
 
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::Q;
 use crate::derivation::Derivation;
-use expr::OpCount;
+use crate::program::expr::OpCount;
 use functions::{functions, structs, Function, Prepared};
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
@@ -109,7 +106,7 @@ pub fn op_count_lines(fs: &[Function]) -> Vec<String> {
 
 /// Operation count of one function after CSE.
 pub fn op_count(f: &Function) -> OpCount {
-    let ids: Vec<expr::Id> = f.outputs.iter().map(|(_, id)| *id).collect();
+    let ids: Vec<crate::program::expr::Id> = f.outputs.iter().map(|(_, id)| *id).collect();
     f.dag.op_count(&ids)
 }
 

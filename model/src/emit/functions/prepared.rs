@@ -4,7 +4,7 @@
 //!
 //! The program is built so that the split is large: every polynomial is a Horner scheme in the
 //! late symbols (P0, the trim, delta_a) whose coefficients, polynomials in the data and the
-//! controls, are single nodes ([`Dag::poly_over`]); then [`super::super::stage`] makes each early
+//! controls, are single nodes ([`Dag::poly_over`]); then [`crate::program::stage`] makes each early
 //! operand of a late operation a field. Per call: the trim numerators N_a + delta_a N_b and det A
 //! as polynomials in P0, the trim condition `G2 delta_a^2 + G1 delta_a + G0` (step 8 on the roll
 //! equation, in delta_a), its root on branch 0 by the cancellation-free quadratic formula
@@ -13,12 +13,13 @@
 //! joins det A's, and det K by the matrix determinant lemma with det A cleared (as `det_k`):
 //! one square root and one division per call.
 
-use super::{Arg, Ctx, Function, InVar, Ret, DE, DR, P0};
+use super::{finish, Function, Ret};
 use crate::algebra::Q;
 use crate::derivation::{clear_trim, Derivation, TRIM_DEGREE};
-use crate::emit::expr::Id;
-use crate::emit::stage::stage;
 use crate::equations::symbols;
+use crate::program::builder::{Arg, Ctx, InVar, DE, DR, P0};
+use crate::program::expr::Id;
+use crate::program::stage::stage;
 
 /// The prepared det K: the whole program and its two stages.
 #[derive(Clone, Debug)]
@@ -97,7 +98,8 @@ pub fn prepared(d: &Derivation) -> Prepared {
     };
     let det_k = c.det_k_cleared(d, &t, &x, det_scaled, det_k0);
     let doc = |lines: &[&str]| lines.iter().map(|l| l.to_string()).collect::<Vec<_>>();
-    let full = c.finish(
+    let full = finish(
+        c,
         "det_k",
         doc(&["det K of [`Prepared`] in one program (for the self-test)."]),
         true,

@@ -2,7 +2,7 @@
 //! the second-order form with its stiffness matrix (Eqs 13-20), and the roll mode with its
 //! static residual (Eqs 21-26).
 
-use super::typeset::Writer;
+use super::typeset::{Writer, STATE_RATES};
 use crate::algebra::{Matrix, Poly};
 use crate::derivation::Derivation;
 use crate::emit::paper::{self as printed, parse};
@@ -16,13 +16,7 @@ impl Writer<'_> {
             "The Jacobian of the PSS model at the trim, applied to the perturbations \
              $[\\alpha, \\beta, p, q, r]$:\n\\begin{align*}\n",
         );
-        let lhs = [
-            "\\dot\\alpha",
-            "\\dot\\beta",
-            "\\dot p",
-            "\\dot q",
-            "\\dot r",
-        ];
+        let lhs = STATE_RATES;
         let rows: Vec<String> = d
             .linearized
             .iter()

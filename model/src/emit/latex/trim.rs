@@ -2,7 +2,7 @@
 //! its pseudo-steady states (Eqs 1-5): the trim by Cramer's rule, det A and the divergence
 //! biquadratic of Eq. 5, each compared with the paper's printed form.
 
-use super::typeset::Writer;
+use super::typeset::{Writer, STATE_RATES};
 use crate::algebra::{Matrix, Poly, Sym};
 use crate::derivation::Derivation;
 use crate::emit::paper::{self as printed, parse};
@@ -20,13 +20,7 @@ impl Writer<'_> {
              sets $n_{\\delta a} = 0$, as for both aircraft of Table A.1: otherwise the trim is \
              not linear in $(\\alpha, \\beta, q, r)$ for given $P_0$.\n",
         );
-        let lhs = [
-            "\\dot\\alpha",
-            "\\dot\\beta",
-            "\\dot p",
-            "\\dot q",
-            "\\dot r",
-        ];
+        let lhs = STATE_RATES;
         let mut vars = vec![s.alpha, s.beta, s.p, s.q, s.r];
         vars.extend([s.delta_a, s.delta_e, s.delta_r]);
         out.push_str("\\begin{align*}\n");

@@ -99,6 +99,15 @@ pub(super) fn width(s: &str) -> f32 {
     w
 }
 
+/// The left-hand sides of the five state equations (Eqs 6-10), in state order.
+pub(super) const STATE_RATES: [&str; 5] = [
+    "\\dot\\alpha",
+    "\\dot\\beta",
+    "\\dot p",
+    "\\dot q",
+    "\\dot r",
+];
+
 /// Line width budget for a display, in the units of [`width`].
 pub(super) const LINE: f32 = 78.0;
 

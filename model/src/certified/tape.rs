@@ -311,7 +311,7 @@ mod tests {
         /// or B (every parameter moved by up to 30 % and written with five significant digits,
         /// no aileron yaw, a random elevator), every output enclosure holds the program's exact
         /// value at the exact data, computed here in rationals. (How tight the enclosures are
-        /// is `certified::tests::the_tape_encloses_what_the_general_route_encloses`.)
+        /// is `certified::enclosed::tests::the_tape_encloses_what_the_general_route_encloses`.)
         #[test]
         fn enclosures_hold_the_exact_values_of_the_criterion_program(
             on_b in proptest::bool::ANY,

@@ -7,11 +7,21 @@ use crate::derivation::Derivation;
 use crate::emit::paper::{self as printed, parse};
 use std::fmt::Write;
 
+/// The names of the zero-sideslip trim numerators of [alpha0, Q0, R0].
+const ZS_NUMERATORS: [&str; 3] = ["N^{zs}_\\alpha", "N^{zs}_Q", "N^{zs}_R"];
+
 impl Writer<'_> {
     pub(super) fn zero_sideslip_section(&self, out: &mut String, d: &Derivation) {
-        let s = self.s;
-        let p0: &[Sym] = &[s.p0];
         out.push_str("\\section{Zero-sideslip roll (Eqs.~32--35)}\n\n");
+        let a1 = self.zero_sideslip_equations(out, d);
+        self.zero_sideslip_trim(out, d, &a1);
+        self.zero_sideslip_jump(out, d);
+    }
+
+    /// The equations other than roll at beta = 0 (Eq. 32) and their linear form at `p = P0`
+    /// (Eqs 33-34), compared with the printed A1 and b1 u; returns A1.
+    fn zero_sideslip_equations(&self, out: &mut String, d: &Derivation) -> Matrix {
+        let s = self.s;
         out.push_str(
             "With $\\beta = 0$ held by the rudder ($\\delta_r$ freed), the PSS equations other \
              than roll are\n\\begin{align*}\n",
@@ -95,6 +105,13 @@ impl Writer<'_> {
                 )
             }
         );
+        a1
+    }
+
+    /// det A1 and the trim (Eq. 35) with the rudder and the aileron holding it.
+    fn zero_sideslip_trim(&self, out: &mut String, d: &Derivation, a1: &Matrix) {
+        let s = self.s;
+        let p0: &[Sym] = &[s.p0];
         let det_a1 = a1.det();
         let ndr = Poly::var(s.param(crate::aircraft::Param::NDeltaR));
         let block = det_a1 == &ndr * &d.zs_det;
@@ -106,7 +123,7 @@ impl Writer<'_> {
             self.rows("\\Delta_1", &self.grouped(&d.zs_det, &[p0]), None),
         );
         let names = ["\\alpha_0", "Q_0", "R_0"];
-        let nn = ["N^{zs}_\\alpha", "N^{zs}_Q", "N^{zs}_R"];
+        let nn = ZS_NUMERATORS;
         let _ = write!(
             out,
             "The trim, $x_0 = -A_1^{{-1}} b_1 u = -\\frac{{\\operatorname{{adj}}[A_1]}}\
@@ -128,6 +145,14 @@ impl Writer<'_> {
              are written ${}$, ${}$, ${}$ below.\n",
             nn[0], nn[1], nn[2]
         );
+    }
+
+    /// The jump polynomial of the zero-sideslip roll through the `c_m` of the jump section, its
+    /// expansion in P0 and the pole polynomial.
+    fn zero_sideslip_jump(&self, out: &mut String, d: &Derivation) {
+        let s = self.s;
+        let p0: &[Sym] = &[s.p0];
+        let nn = ZS_NUMERATORS;
         let groups = self.split(
             &d.det_j5.subs(s.beta0, &Poly::zero()),
             &[s.alpha0, s.q0, s.r0],

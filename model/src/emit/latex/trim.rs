@@ -36,8 +36,6 @@ impl Writer<'_> {
 
     pub(super) fn trim_section(&self, out: &mut String, d: &Derivation) {
         let s = self.s;
-        let p0: &[Sym] = &[s.p0];
-        let ctrl: &[Sym] = &[s.delta_e, s.delta_r];
         out.push_str("\\section{Pseudo-steady states (Eqs.~1--5)}\n\n");
         out.push_str(
             "Leaving aside the roll equation, the PSS equations at $p = P_0$ are linear in \
@@ -90,6 +88,15 @@ impl Writer<'_> {
                 "differs from it"
             },
         );
+        self.trim_solution(out, d);
+    }
+
+    /// The trim by Cramer's rule (Eqs 3-4) with its numerators grouped by the controls, det A
+    /// and its biquadratic coefficients (Eq. 5), and the aileron that holds the trim.
+    fn trim_solution(&self, out: &mut String, d: &Derivation) {
+        let s = self.s;
+        let p0: &[Sym] = &[s.p0];
+        let ctrl: &[Sym] = &[s.delta_e, s.delta_r];
         out.push_str(
             "Setting $\\dot x = 0$ gives the trim $x_0 = [\\alpha_0, \\beta_0, Q_0, R_0]^T$:\n\
              \\begin{align*}\nx_0 &= -A^{-1}\\bigl[b u + b_1 P_0\\bigr] \\tag{3} \\\\\n\

@@ -27,6 +27,7 @@ pub mod jsbsim;
 pub mod plot;
 #[cfg(feature = "cli")]
 pub mod present;
+pub(crate) mod program;
 pub mod pss_model;
 pub mod random;
 #[allow(dead_code)]

@@ -1,4 +1,4 @@
-//! A straight-line program of the emitter ([`crate::emit::expr::Dag`]) evaluated in f64 with an
+//! A straight-line program ([`crate::program::expr::Dag`]) evaluated in f64 with an
 //! a priori bound on its rounding: the certified route's fast enclosure of the criterion
 //! polynomials' coefficients.
 //!
@@ -40,8 +40,8 @@
 //! within a level by kind, so the evaluation is a few tight loops without a branch per
 //! operation; both lanes of a node are one packed f64 operation.
 
-use crate::emit::expr::{Dag, Id, Node};
 use crate::interval::{next_down, next_up, I};
+use crate::program::expr::{Dag, Id, Node};
 
 /// The unit roundoff of round-to-nearest f64.
 const UNIT: f64 = f64::EPSILON / 2.0;
@@ -311,14 +311,14 @@ mod tests {
         /// or B (every parameter moved by up to 30 % and written with five significant digits,
         /// no aileron yaw, a random elevator), every output enclosure holds the program's exact
         /// value at the exact data, computed here in rationals. (How tight the enclosures are
-        /// is `certified::tests::the_tape_encloses_what_the_general_route_encloses`.)
+        /// is `certified::enclosed::tests::the_tape_encloses_what_the_general_route_encloses`.)
         #[test]
         fn enclosures_hold_the_exact_values_of_the_criterion_program(
             on_b in proptest::bool::ANY,
             scales in proptest::array::uniform18(0.7f64..1.3),
             de in -0.1f64..0.1,
         ) {
-            let p = crate::emit::functions::criterion_program(crate::specialise::parametric());
+            let p = crate::program::criterion::criterion_program(crate::specialise::parametric());
             let outputs = p.outputs();
             let tape = Tape::new(&p.dag, &outputs);
             let base = if on_b { Aircraft::b() } else { Aircraft::a() };

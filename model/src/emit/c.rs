@@ -402,8 +402,8 @@ pub fn header(param: &[Function], prepared: &Prepared, builtins: &[Builtin]) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::emit::expr::Dag;
     use crate::emit::functions::{Arg, Ret};
+    use crate::program::expr::Dag;
     use crate::specialise::exact_f64;
 
     #[test]

@@ -18,8 +18,8 @@
 //!   temporaries with its exact value in a comment ([`exact_text`]), so a reviewer can check
 //!   each of the roundings.
 
-use super::expr::{Dag, Id, Node};
 use crate::algebra::Q;
+use crate::program::expr::{Dag, Id, Node};
 use num_traits::{One, Zero};
 
 /// The longest expression a program holds, in characters of either printed language on one line

@@ -12,8 +12,8 @@
 //! within its error of zero, or an overflow) the value is [`Reference::Unknown`] and is not
 //! checked.
 
-use super::expr::{Dag, Id, Node};
 use crate::algebra::Q;
+use crate::program::expr::{Dag, Id, Node};
 use crate::specialise::exact_f64;
 
 /// Unit roundoff of f64.

@@ -5,10 +5,10 @@
 //! Constants are exact rationals rounded once to the nearest f64 and printed as the shortest
 //! literal that round-trips; a named constant's doc comment gives its exact value.
 
-use super::expr::{Dag, Id};
 use super::functions::{Function, Ret};
 use super::program::{exact_text, program, Expr, Op};
 use crate::algebra::Q;
+use crate::program::expr::{Dag, Id};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};
 

@@ -11,13 +11,14 @@
 //! scalar root search in P0; per aircraft, [`polynomial`] emits the exact Hopf polynomial
 //! (degree 48 in P0 and 6 in delta_e for A and B) with the data folded in.
 
-use super::{lines, with_formulas, Ctx, Formula, Function, Ret, DE, DR, P0};
+use super::{finish, lines, with_formulas, Formula, Function, Ret};
 use crate::aircraft::Aircraft;
 use crate::algebra::Poly;
 use crate::algebra::Q;
 use crate::derivation::hopf::{characteristic_coefficients, hopf_symbols, orlando};
 use crate::derivation::Derivation;
 use crate::equations::symbols;
+use crate::program::builder::{Ctx, DE, DR, P0};
 use crate::specialise::hopf::hopf_polynomial;
 
 /// The Hopf functions for a derivation (parametric when `t`).
@@ -40,7 +41,7 @@ pub(super) fn functions(d: &Derivation, t: bool) -> Vec<Function> {
     {
         let mut c = Ctx::new(t, &args);
         let ids = at_trim(&mut c);
-        out.push(c.finish(
+        out.push(finish(c,
             "characteristic_coefficients",
             with_formulas(
                 &[
@@ -64,7 +65,7 @@ pub(super) fn functions(d: &Derivation, t: bool) -> Vec<Function> {
         let mut c = Ctx::new(t, &args);
         at_trim(&mut c);
         let delta4 = c.poly(&o.delta4);
-        out.push(c.finish(
+        out.push(finish(c,
             "hurwitz_delta4",
             with_formulas(
                 &[
@@ -89,7 +90,7 @@ pub(super) fn functions(d: &Derivation, t: bool) -> Vec<Function> {
         let num = c.poly(&o.omega_sq.num);
         let den = c.poly(&o.omega_sq.den);
         let w = c.dag.div(num, den);
-        out.push(c.finish(
+        out.push(finish(c,
             "hopf_omega_squared",
             with_formulas(
                 &[
@@ -164,7 +165,8 @@ pub(crate) fn polynomial(aircraft: &Aircraft, d: &Derivation) -> Function {
             c.dag.sqrt(minus_one)
         }
     };
-    c.finish(
+    finish(
+        c,
         "hopf_polynomial",
         doc,
         false,

@@ -4,7 +4,7 @@
 //!
 //! The program is built so that the split is large: every polynomial is a Horner scheme in the
 //! late symbols (P0, the trim, delta_a) whose coefficients, polynomials in the data and the
-//! controls, are single nodes ([`Dag::poly_over`]); then [`super::super::stage`] makes each early
+//! controls, are single nodes ([`Dag::poly_over`]); then [`crate::program::stage`] makes each early
 //! operand of a late operation a field. Per call: the trim numerators N_a + delta_a N_b and det A
 //! as polynomials in P0, the trim condition `G2 delta_a^2 + G1 delta_a + G0` (step 8 on the roll
 //! equation, in delta_a), its root on branch 0 by the cancellation-free quadratic formula
@@ -13,12 +13,13 @@
 //! joins det A's, and det K by the matrix determinant lemma with det A cleared (as `det_k`):
 //! one square root and one division per call.
 
-use super::{Arg, Ctx, Function, InVar, Ret, DE, DR, P0};
+use super::{finish, lines, Function, Ret};
 use crate::algebra::Q;
 use crate::derivation::{clear_trim, Derivation, TRIM_DEGREE};
-use crate::emit::expr::Id;
-use crate::emit::stage::stage;
 use crate::equations::symbols;
+use crate::program::builder::{Arg, Ctx, InVar, DE, DR, P0};
+use crate::program::expr::Id;
+use crate::program::stage::stage;
 
 /// The prepared det K: the whole program and its two stages.
 #[derive(Clone, Debug)]
@@ -34,8 +35,10 @@ pub struct Prepared {
 /// The name of the generated type.
 pub const TYPE: &str = "Prepared";
 
-/// The prepared det K of the parametric derivation `d`.
-pub fn prepared(d: &Derivation) -> Prepared {
+/// det K of [`Prepared`] in one program: the trim numerators and the trim condition as
+/// Horner schemes in the late symbols, the aileron's root kept as a fraction, and det K by the
+/// matrix determinant lemma with det A cleared.
+fn full_program(d: &Derivation) -> Function {
     let s = symbols();
     let args = vec![P0, DE, DR];
     let mut c = Ctx::new(true, &args);
@@ -96,15 +99,20 @@ pub fn prepared(d: &Derivation) -> Prepared {
         None
     };
     let det_k = c.det_k_cleared(d, &t, &x, det_scaled, det_k0);
-    let doc = |lines: &[&str]| lines.iter().map(|l| l.to_string()).collect::<Vec<_>>();
-    let full = c.finish(
+    finish(
+        c,
         "det_k",
-        doc(&["det K of [`Prepared`] in one program (for the self-test)."]),
+        lines(&["det K of [`Prepared`] in one program (for the self-test)."]),
         true,
         args,
         vec![(String::new(), det_k)],
         Ret::Scalar,
-    );
+    )
+}
+
+/// The prepared det K of the parametric derivation `d`.
+pub fn prepared(d: &Derivation) -> Prepared {
+    let full = full_program(d);
     let ids: Vec<Id> = full.outputs.iter().map(|(_, id)| *id).collect();
     let st = stage(&full.dag, &ids, &["p0"]);
     let fields: Vec<(String, Id)> = st
@@ -115,7 +123,7 @@ pub fn prepared(d: &Derivation) -> Prepared {
         .collect();
     let new = Function {
         name: "new",
-        doc: doc(&[
+        doc: lines(&[
             "Prepares det K for an aircraft `k` and the controls: computes once everything of",
             "[`det_k`](Self::det_k) that does not depend on the roll rate (the coefficients of the",
             "polynomials in P0 of the trim numerators, det A, the trim condition and K0, g, h, d).",
@@ -129,7 +137,7 @@ pub fn prepared(d: &Derivation) -> Prepared {
     };
     let det_k = Function {
         name: "det_k",
-        doc: doc(&[
+        doc: lines(&[
             "The jump criterion det K (Eq. 27) at the trim of `p0`, 1/s^4: the value of the free",
             "function `det_k(k, p0, delta_e, delta_r)` on the same trim branch (element 0 of",
             "`trim`, with aileron yaw too), computed from the prepared fields. Not bit-identical to",

@@ -16,8 +16,8 @@
 //! Merging is exact for finite values; a term whose coefficients cancel to zero is dropped, which
 //! (as the DAG's `0 * x = 0`) drops the NaN an infinite atom would have given.
 
-use super::expr::{Dag, Id, Node};
 use crate::algebra::Q;
+use crate::program::expr::{Dag, Id, Node};
 
 /// The flattened terms of a sum: atoms with coefficients and the constant part, in order of
 /// first occurrence (the constant's position is where it first occurs).

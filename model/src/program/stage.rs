@@ -7,7 +7,7 @@
 //! perform exactly the operations of the original program: the results are bit for bit those
 //! of the unsplit program, and both printers spell both stages.
 
-use super::expr::{Dag, Id, Node};
+use crate::program::expr::{Dag, Id, Node};
 
 /// The input name of field `n` of the late stage (`self.f3`: a field of the Rust `&self`, and of
 /// the C `const struct ... *self` through `->`).

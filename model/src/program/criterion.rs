@@ -6,15 +6,15 @@
 //!
 //! The program covers aircraft without aileron yaw (`n_delta_a = 0`, so that the trim does not
 //! depend on delta_a and no resultant is needed) at `delta_r = 0` (as the certified analysis
-//! runs): [`crate::certified::tape`] evaluates it in f64 with an a priori bound on its rounding,
+//! runs): the certified route evaluates it in f64 with an a priori bound on its rounding,
 //! a few thousand operations where lifting the parametric results term by term and clearing them
 //! in interval polynomials takes a hundred thousand.
 
-use super::{Ctx, DE};
+use super::builder::{Ctx, DE};
 use crate::algebra::{Poly, Q};
 use crate::derivation::Derivation;
-use crate::emit::expr::{Dag, Id};
 use crate::equations::symbols;
+use crate::program::expr::{Dag, Id};
 
 /// The program and the coefficient nodes (ascending powers of P0) of each polynomial. Its
 /// inputs are `delta_e` and then the parameters in [`crate::aircraft::Param::ALL`] order.

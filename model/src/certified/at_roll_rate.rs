@@ -1,0 +1,126 @@
+//! The criterion at one roll rate: an enclosure of each criterion polynomial's value computed
+//! through the trim ([`value_at`], much tighter near a root than the expanded polynomial), the
+//! trim condition there ([`trim_condition_at`]), and the unconstrained roll's quantities as
+//! polynomials in delta_a ([`at_roll_rate`], what clearance evaluates over a box).
+
+use super::characteristic::hopf_in;
+use super::compiled::Characteristic;
+use super::isolate::Uncertified;
+use super::mode::{AtP0, Da, Mode};
+use super::num::Num;
+use super::rolls::{zs_trim_in, Unconstrained, ZeroSideslip};
+use super::values::Values;
+use crate::interval::I;
+
+/// Which criterion polynomial [`value_at`] encloses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Criterion {
+    /// det A.
+    DetA,
+    /// The jump polynomial.
+    Jump,
+    /// The pole polynomial.
+    Poles,
+    /// det A1 of the zero-sideslip trim.
+    ZsDet,
+    /// `det J5 det(A1)^2` at the zero-sideslip trim.
+    ZsJump,
+    /// `d det(A1)^2` at the zero-sideslip trim.
+    ZsDDet,
+    /// The Hopf polynomial of [`EnclosedHopf`](super::EnclosedHopf).
+    Hopf,
+    /// The zero-sideslip Hopf polynomial of [`EnclosedHopf`](super::EnclosedHopf).
+    ZsHopf,
+}
+
+/// An enclosure of the value at `P0 = x` of a criterion polynomial of [`EnclosedPolys`],
+/// computed through the trim (the same construction at one roll rate): the trim-level factors
+/// are small, so this is much tighter near a root than the expanded polynomial's Horner sum.
+///
+/// [`EnclosedPolys`]: super::EnclosedPolys
+pub fn value_at(v: &Values, which: Criterion, x: f64) -> I {
+    type M1 = AtP0<I>;
+    let mut m = AtP0(I::point(x));
+    let t = &v.lifted;
+    let value = match which {
+        Criterion::DetA | Criterion::Jump | Criterion::Poles => {
+            if which == Criterion::DetA {
+                M1::univariate(&m.lifted(&t.det_a))
+            } else {
+                Unconstrained::new(&mut m, t).and_then(|u| {
+                    let f = u.on_trim(&mut m, t, which == Criterion::Jump);
+                    u.eliminate(&f)
+                })
+            }
+        }
+        Criterion::Hopf => {
+            let den = m.lifted(&t.det_a);
+            let num: [Da<I>; 4] = std::array::from_fn(|i| m.lifted(&t.trim[i]));
+            hopf_in(&mut m, &Characteristic::get().c, &t.hopf().c, &num, &den).map(|r| r.delta4())
+        }
+        Criterion::ZsHopf => {
+            let (num, den) = zs_trim_in(&mut m, t);
+            hopf_in(
+                &mut m,
+                &Characteristic::get().zs_c,
+                &t.hopf().zs_c,
+                &num,
+                &den,
+            )
+            .map(|r| r.delta4())
+        }
+        _ => ZeroSideslip::new(&mut m, t).map(|z| match which {
+            Criterion::ZsDet => z.zs_det,
+            Criterion::ZsJump => z.zs_jump,
+            _ => z.zs_d_det,
+        }),
+    };
+    value.map_or_else(|_| I::entire(), |s| s.0)
+}
+
+/// An enclosure of the trim condition `det(A)^2 p_dot` at `P0 = x` and `delta_a = da`, through
+/// the trim (as [`value_at`]): the tight value of [`EnclosedPolys::trim_condition`] there.
+///
+/// [`EnclosedPolys::trim_condition`]: super::EnclosedPolys::trim_condition
+pub fn trim_condition_at(v: &Values, x: f64, da: f64) -> I {
+    let mut m = AtP0(I::point(x));
+    Unconstrained::new(&mut m, &v.lifted).map_or_else(
+        |_| I::entire(),
+        |u| {
+            let g = &u.trim_condition;
+            g.c[..g.len]
+                .iter()
+                .rev()
+                .fold(I::point(0.0), |acc, c| acc * I::point(da) + *c)
+        },
+    )
+}
+
+/// The unconstrained roll's criterion quantities at one roll rate, as polynomials in delta_a
+/// (coefficients of `delta_a^0, delta_a^1, ...`), all cleared of det A as in
+/// [`EnclosedPolys`], what clearance evaluates over a box of data and a slab of roll rates.
+///
+/// [`EnclosedPolys`]: super::EnclosedPolys
+#[derive(Clone, Debug)]
+pub struct AtRollRate<T> {
+    /// det A.
+    pub det_a: T,
+    /// The trim condition `det(A)^2 p_dot`.
+    pub g: Vec<T>,
+    /// `det J5 det(A)^2` on the trim.
+    pub jump_at: Vec<T>,
+}
+
+/// [`AtRollRate`] of the data `v` at the roll rate `p0` (both in the numbers `T`).
+pub fn at_roll_rate<T: Num>(v: &Values<T>, p0: T) -> Result<AtRollRate<T>, Uncertified> {
+    let m = &mut AtP0(p0);
+    let l = &v.lifted;
+    let u = Unconstrained::new(m, l)?;
+    let jump_at = u.on_trim(m, l, true);
+    let coeffs = |d: &Da<T>| d.c[..d.len].to_vec();
+    Ok(AtRollRate {
+        det_a: u.det_a.0,
+        g: coeffs(&u.trim_condition),
+        jump_at: coeffs(&jump_at),
+    })
+}

@@ -1,4 +1,5 @@
-//! `model clear` end to end: bad `[uncertainty]` entries, zero-width boxes, the JSON shape.
+//! `model clear` end to end: bad `[uncertainty]` entries, zero-width boxes, the JSON shape, the
+//! verdict decided by tightening the bounds past the tolerance.
 
 use std::path::PathBuf;
 
@@ -11,10 +12,15 @@ fn aircraft_a_with(extra: &str, name: &str) -> PathBuf {
         PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../aircraft/a.toml"),
     )
     .unwrap();
+    test_file(name, &format!("{a}\n{extra}"))
+}
+
+/// Writes `text` as the file `name` in this test run's folder; returns its path.
+fn test_file(name: &str, text: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("model-clear-test-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join(name);
-    std::fs::write(&path, format!("{a}\n{extra}")).unwrap();
+    std::fs::write(&path, text).unwrap();
     path
 }
 
@@ -116,11 +122,7 @@ fn body_axis_with(ixz: &str, uncertainty: &str, name: &str) -> PathBuf {
          Cm_delta_e = -1\nCn_beta = 0.1\nCn_p = -0.05\nCn_r = -0.3\nCn_delta_a = 0\n\
          Cn_delta_r = -0.05\n[uncertainty]\n{uncertainty}\n"
     );
-    let dir = std::env::temp_dir().join(format!("model-clear-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
-    std::fs::write(&path, text).unwrap();
-    path
+    test_file(name, &text)
 }
 
 /// A nondimensional file takes its uncertainty per coefficient: with ixz = 0 each coefficient's
@@ -404,4 +406,100 @@ fn a_sample_of_samples_csv_is_reproduced_by_analyze() {
     }
     assert_eq!(checked, 6);
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `aircraft/a_uncertain.toml` with its `[limits]` aileron set to `limit` (deg), written as
+/// `name`.
+fn a_uncertain_with_limit(limit: f64, name: &str) -> PathBuf {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    let text = std::fs::read_to_string(root.join("aircraft/a_uncertain.toml")).unwrap();
+    let line = text.lines().find(|l| l.starts_with("aileron = ")).unwrap();
+    test_file(name, &text.replace(line, &format!("aileron = {limit}")))
+}
+
+/// An aileron limit between the bounds the default tolerance leaves (|delta_a| in [3.1020,
+/// 3.1095] deg for the shipped box) is decided by tightening them: cleared, and the JSON, the
+/// text and summary.md say that it was tightened.
+#[test]
+fn a_limit_between_the_bounds_is_cleared_by_tightening_and_says_so() {
+    let path = a_uncertain_with_limit(3.105, "between.toml");
+    let c = clear_json(&path, 10);
+    assert_eq!(c["verdict"], "cleared", "{c}");
+    assert_eq!(c["cleared"], true);
+    assert!(c["gap_to_limit"].is_null(), "{c}");
+    let reason = c["verdict_reason"].as_str().unwrap();
+    assert!(reason.contains("tightening"), "{reason}");
+    assert!(
+        c["critical_delta_a_deg"]["lo"].as_f64().unwrap() > 3.105,
+        "{c}"
+    );
+    let dir = std::env::temp_dir().join(format!("model-clear-tight-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = model(&[
+        "clear",
+        path.to_str().unwrap(),
+        "--samples",
+        "10",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    let md = std::fs::read_to_string(dir.join("summary.md")).unwrap();
+    for shown in [&*text, &md] {
+        assert!(shown.contains("\nCleared: no aircraft"), "{shown}");
+        assert!(shown.contains(reason), "{shown}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Aircraft A with n_delta_a in [20, 40] at delta_e = -4 deg has its |delta_a| minimum (4.62
+/// deg) inside the box, at a cusp; with a coarse tolerance the worst case found stops above a
+/// 4.7 deg limit, and tightening finds an aircraft within it, which `analyze` of its file
+/// confirms.
+#[test]
+fn tightening_finds_a_counterexample_that_analyze_confirms() {
+    let path = aircraft_a_with(
+        "[limits]\naileron = 4.7\n\n[uncertainty]\nn_delta_a = [20.0, 40.0]\n",
+        "cusp.toml",
+    );
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::write(&path, text.replace("n_delta_a = 0.0", "n_delta_a = 30.0")).unwrap();
+    let c = json(&model(&[
+        "clear",
+        path.to_str().unwrap(),
+        "--delta-e-deg",
+        "-4",
+        "--tolerance",
+        "0.3",
+        "--samples",
+        "10",
+        "--json",
+    ]));
+    assert_eq!(c["verdict"], "not_cleared", "{c}");
+    assert_eq!(c["cleared"], false);
+    assert!(
+        c["verdict_reason"].as_str().unwrap().contains("tightening"),
+        "{c}"
+    );
+    let n = c["counterexample"]["n_delta_a"].as_f64().unwrap();
+    let a = std::fs::read_to_string(&path).unwrap();
+    let a = a.split("[uncertainty]").next().unwrap();
+    let file = path.with_file_name("cusp-counterexample.toml");
+    std::fs::write(
+        &file,
+        a.replace("n_delta_a = 30.0", &format!("n_delta_a = {n:?}")),
+    )
+    .unwrap();
+    let r = json(&model(&[
+        "analyze",
+        file.to_str().unwrap(),
+        "--delta-e-deg",
+        "-4",
+        "--json",
+    ]));
+    let da = r["critical"]["delta_a_deg"].as_f64().unwrap();
+    assert!(da.abs() <= 4.7, "{r}");
+    let want = c["counterexample"]["delta_a_deg"].as_f64().unwrap();
+    assert!((da - want).abs() < 1e-9, "{da} vs {want}");
 }

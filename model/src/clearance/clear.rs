@@ -6,8 +6,9 @@
 use super::bound::{BoxPolys, Failure};
 use super::coordinates::split_box;
 use super::tree::{Leaf, Walk, BATCH, MAX_ROLL_RATE};
+use super::verdict::{decide, AileronBounds, Tightening};
 use super::worst_case::{search_candidates, Worst};
-use super::{Bounds, CaseAircraft, ClearError, Clearance, Settings};
+use super::{Bounds, CaseAircraft, ClearError, Clearance, Settings, Verdict};
 use crate::aircraft::{Aircraft, Uncertain};
 use crate::interval::I;
 use rayon::prelude::*;
@@ -36,18 +37,38 @@ pub fn clear(
             None => (f64::INFINITY, f64::INFINITY),
         };
         let note = "zero-width box: the exact analysis of its one aircraft".to_string();
-        return Ok(answer.finish(worst, lo, da, note, (0, 0)));
+        return Ok(answer.finish(worst, (lo, da), note, (0, 0), None));
     }
     search_candidates(&mut worst, settings, progress)?;
     progress(0.1);
 
     let polys = BoxPolys::of_box(&base, &params, de);
     let mut search = Search::new(&polys, aircraft, &params, &worst, settings);
-    let note = search.run(&mut worst, start, progress);
+    let note = search
+        .run(&mut worst, start, progress, Goal::Tolerance)
+        .note;
+    let tightening = search.tighten(&mut worst, start, progress);
     let (lo, lo_da, note) = search.bounds(&worst, note);
     progress(1.0);
     let work = (search.boxes, search.slabs);
-    Ok(answer.finish(worst, lo, lo_da.to_degrees(), note, work))
+    let lo = (lo, lo_da.to_degrees());
+    Ok(answer.finish(worst, lo, note, work, tightening.as_ref()))
+}
+
+/// What the branch and bound works towards: both gaps within the tolerance, or the proven
+/// lower bound of |delta_a| above the aileron limit (deg) unless an aircraft of the box is
+/// found within it.
+#[derive(Clone, Copy)]
+enum Goal {
+    Tolerance,
+    Limit(f64),
+}
+
+/// Why the branch and bound stopped, and whether a budget of work (or the wall-clock guard)
+/// stopped it.
+struct Stopped {
+    note: String,
+    by_budget: bool,
 }
 
 /// What the answer of a run is about: the aircraft, the settings, the box and when it started.
@@ -60,14 +81,15 @@ struct Answer<'a> {
 
 impl Answer<'_> {
     /// The clearance with the proven lower bounds `p0_lo` (rad/s) and `da_lo_deg`, the worst
-    /// cases of `worst`, why the proof stopped (`note`) and its work (boxes, slabs).
+    /// cases of `worst`, why the proof stopped (`note`), its work (boxes, slabs) and the
+    /// tightening past the tolerance, if it ran.
     fn finish(
         &self,
         worst: Worst,
-        p0_lo: f64,
-        da_lo_deg: f64,
+        (p0_lo, da_lo_deg): (f64, f64),
         note: String,
         (boxes, slabs): (usize, usize),
+        tightening: Option<&Tightening>,
     ) -> Clearance {
         let settings = self.settings;
         // No critical jump anywhere in the box (proven): the minimum over an empty set, lo =
@@ -84,15 +106,20 @@ impl Answer<'_> {
         };
         let hi_p0 = worst.p0.as_ref().map(|(p, _)| *p);
         let hi_da = worst.da.as_ref().map(|(d, _)| *d);
-        let cleared = worst.limit_deg.and_then(|l| {
-            if worst.limit_hit.is_some() {
-                Some(false)
-            } else if da_lo_deg > l {
-                Some(true)
-            } else {
-                None
-            }
-        });
+        let (verdict, verdict_reason, gap_to_limit) = decide(
+            worst.limit_deg,
+            worst.limit_hit.as_ref().map(|c| c.delta_a_deg.abs()),
+            &AileronBounds {
+                lo: da_lo_deg,
+                hi: hi_da,
+            },
+            tightening,
+        );
+        let cleared = match verdict {
+            Some(Verdict::Cleared) => Some(true),
+            Some(Verdict::NotCleared) => Some(false),
+            _ => None,
+        };
         let box_ = self
             .params
             .iter()
@@ -110,6 +137,9 @@ impl Answer<'_> {
             worst_case: worst.p0.map(|(_, c)| c),
             worst_case_aileron: worst.da.map(|(_, c)| c),
             cleared,
+            verdict,
+            verdict_reason,
+            gap_to_limit,
             no_critical_jump: none,
             counterexample: worst.limit_hit,
             note,
@@ -129,14 +159,18 @@ struct Targets {
     reach: f64,
     /// The worst case's |delta_a|, rad (infinite without one).
     hi_da_rad: f64,
+    /// The bound |delta_a| must reach, rad: `hi_da_rad` less the tolerance, or the aileron
+    /// limit when tightening past the tolerance.
+    da_target: f64,
 }
 
 impl Targets {
     /// How deep every sub-box must be certified: to the worst case found (less the
     /// tolerance), or, when no aircraft tried has a critical jump, until every sub-box is
     /// finished (its branch leaves the aileron range first) or reaches the cap. The worst
-    /// case found only ever goes down (`Worst::probe`).
-    fn of(worst: &Worst, settings: &Settings) -> Targets {
+    /// case found only ever goes down (`Worst::probe`). The aileron bound's target is set by
+    /// `goal`.
+    fn of(worst: &Worst, settings: &Settings, goal: Goal) -> Targets {
         let hi_p0 = worst.p0.as_ref().map_or(f64::INFINITY, |(p, _)| *p);
         let reach = if hi_p0.is_finite() {
             hi_p0 - settings.tolerance_p0
@@ -147,10 +181,15 @@ impl Targets {
             .da
             .as_ref()
             .map_or(f64::INFINITY, |(d, _)| d.to_radians());
+        let da_target = match goal {
+            Goal::Tolerance => hi_da_rad - settings.tolerance_deg.to_radians(),
+            Goal::Limit(limit_deg) => limit_deg.to_radians(),
+        };
         Targets {
             hi_p0,
             reach,
             hi_da_rad,
+            da_target,
         }
     }
 }
@@ -165,8 +204,6 @@ struct Search<'a> {
     /// The aileron range `analyze` follows the primary branch to, rad (infinite when the trim
     /// at P0 = 0 needs aileron for some aircraft).
     range: f64,
-    /// The aileron tolerance, rad.
-    tol_da: f64,
     leaves: Vec<Leaf>,
     boxes: usize,
     slabs: usize,
@@ -205,36 +242,52 @@ impl<'a> Search<'a> {
             first_step,
             min_step: settings.tolerance_p0 / 8.0,
             range,
-            tol_da: settings.tolerance_deg.to_radians(),
             leaves,
             boxes: 1,
             slabs: 0,
         }
     }
 
-    /// Steps the lowest leaves, probing the lowest for the worst case, until both minima are
-    /// within the tolerance of the worst case or a budget stops the proof; returns why it
-    /// stopped.
-    fn run(&mut self, worst: &mut Worst, start: Instant, progress: &mut dyn FnMut(f64)) -> String {
+    /// Steps the lowest leaves, probing the lowest for the worst case, until the `goal` is
+    /// reached or a budget stops the proof; returns why it stopped.
+    fn run(
+        &mut self,
+        worst: &mut Worst,
+        start: Instant,
+        progress: &mut dyn FnMut(f64),
+        goal: Goal,
+    ) -> Stopped {
+        let stop = |note: String, by_budget: bool| Stopped { note, by_budget };
         loop {
-            let t = Targets::of(worst, self.settings);
+            let t = Targets::of(worst, self.settings, goal);
             let (lo, lo_da) = Leaf::minima(&self.leaves);
-            let done_p0 = lo >= t.reach;
-            // Without a worst case (hi), the aileron bound rides on the roll-rate walk.
-            let done_da =
-                !self.polys.symmetric || lo_da >= t.hi_da_rad - self.tol_da || !t.hi_p0.is_finite();
             progress(0.1 + 0.9 * (lo / t.reach).clamp(0.0, 1.0));
-            if done_p0 && done_da {
-                return converged_note(lo, t.hi_p0);
-            }
+            // Work on the roll rate while it is short of its target, else on |delta_a|.
+            let by_p0 = match goal {
+                Goal::Tolerance => {
+                    let done_p0 = lo >= t.reach;
+                    // Without a worst case (hi), the aileron bound rides on the roll-rate walk.
+                    let done_da =
+                        !self.polys.symmetric || lo_da >= t.da_target || !t.hi_p0.is_finite();
+                    if done_p0 && done_da {
+                        return stop(converged_note(lo, t.hi_p0), false);
+                    }
+                    !done_p0
+                }
+                Goal::Limit(limit_deg) => {
+                    if worst.limit_hit.is_some() || lo_da.min(t.hi_da_rad).to_degrees() > limit_deg
+                    {
+                        return stop("decided".to_string(), false);
+                    }
+                    false
+                }
+            };
             if let Some(note) = self.budget_note(start) {
-                return note;
+                return stop(note, true);
             }
-            // Work on the leaves that limit the larger relative gap.
-            let by_p0 = !done_p0;
             let batch = match self.batch(by_p0, &t) {
                 Ok(batch) => batch,
-                Err(note) => return note,
+                Err(note) => return stop(note, false),
             };
             let first = batch[0];
             if !self.leaves[first].probed {
@@ -243,6 +296,43 @@ impl<'a> Search<'a> {
             }
             self.step(batch, by_p0, &t);
         }
+    }
+
+    /// When the aileron limit falls between the bounds the tolerance left (no aircraft found
+    /// within it, the proven bound at or below it), goes on refining the sub-boxes whose bound
+    /// lies below the limit, probing the lowest for an aircraft within it, until the verdict is
+    /// decided or the budget runs out; returns how that went (nothing when it was not needed).
+    /// Where |delta_a|'s bound is held at 0 (the trim at P0 = 0 needs aileron), refining
+    /// cannot raise it, and says so.
+    fn tighten(
+        &mut self,
+        worst: &mut Worst,
+        start: Instant,
+        progress: &mut dyn FnMut(f64),
+    ) -> Option<Tightening> {
+        let limit_deg = worst.limit_deg?;
+        let hi_da = worst
+            .da
+            .as_ref()
+            .map_or(f64::INFINITY, |(d, _)| d.to_radians());
+        let from_lo_deg = Leaf::minima(&self.leaves).1.min(hi_da).to_degrees();
+        if worst.limit_hit.is_some() || from_lo_deg > limit_deg {
+            return None;
+        }
+        if !self.polys.symmetric {
+            return Some(Tightening {
+                from_lo_deg: 0.0,
+                note: "cannot raise |delta_a|'s lower bound above 0 (the trim at P0 = 0 needs                        aileron for some aircraft of the box)"
+                    .to_string(),
+                by_budget: false,
+            });
+        }
+        let stopped = self.run(worst, start, progress, Goal::Limit(limit_deg));
+        Some(Tightening {
+            from_lo_deg,
+            note: stopped.note,
+            by_budget: stopped.by_budget,
+        })
     }
 
     /// Why the proof stops at a budget of work (boxes, slabs) or at the wall-clock guard, if it
@@ -281,11 +371,7 @@ impl<'a> Search<'a> {
     fn batch(&self, by_p0: bool, t: &Targets) -> Result<Vec<usize>, String> {
         let leaves = &self.leaves;
         let key = |l: &Leaf| if by_p0 { l.p0_key() } else { l.da_key() };
-        let target = if by_p0 {
-            t.reach
-        } else {
-            t.hi_da_rad - self.tol_da
-        };
+        let target = if by_p0 { t.reach } else { t.da_target };
         let mut batch: Vec<usize> = (0..leaves.len())
             .filter(|i| {
                 let l = &leaves[*i];
@@ -330,7 +416,7 @@ impl<'a> Search<'a> {
         // Sub-boxes done with drop their lifted data (the targets are those this batch
         // worked to; they only go down while a worst case is known).
         let da_target = if self.polys.symmetric && t.hi_p0.is_finite() {
-            t.hi_da_rad - self.tol_da
+            t.da_target
         } else {
             f64::NEG_INFINITY
         };
@@ -536,6 +622,114 @@ mod tests {
         assert!(one.boxes > 1, "the box is split: {one:?}");
         assert_eq!(run(2), one);
         assert_eq!(run(3), one);
+    }
+
+    /// Aircraft A with n_delta_a in [20, 40] at delta_e = -4 deg and an aileron limit: its
+    /// |delta_a| minimum lies inside the box, at a cusp near n_delta_a = 24.49.
+    fn cusp_box(limit_deg: f64) -> Aircraft {
+        let q = |n: i64| BigRational::from_integer(n.into());
+        let mut a = Aircraft::a().with(Param::NDeltaA, q(30));
+        a.uncertainty = vec![crate::aircraft::Uncertain::param(
+            Param::NDeltaA,
+            q(20),
+            q(40),
+        )];
+        a.limits.aileron_deg = Some(limit_deg);
+        a
+    }
+
+    /// The shipped box with its aileron limit moved between the bounds the default tolerance
+    /// leaves (|delta_a| in [3.1020, 3.1095] deg): undecided there, the bounds are tightened
+    /// past the tolerance until the proven bound clears the limit.
+    #[test]
+    fn a_limit_between_the_bounds_is_decided_by_tightening() {
+        let mut a = a_uncertain();
+        let at_tolerance = clear(&a, &Settings::default(), &mut |_| {}).expect("a proof");
+        let b = &at_tolerance.critical_delta_a_deg;
+        let hi = b.hi.expect("a worst case");
+        assert!(b.converged && hi - b.lo > 0.005, "{b:?}");
+        let limit = b.lo + 0.6 * (hi - b.lo);
+        a.limits.aileron_deg = Some(limit);
+        let c = clear(&a, &Settings::default(), &mut |_| {}).expect("a proof");
+        assert_eq!(c.verdict, Some(Verdict::Cleared), "{}", c.verdict_reason);
+        assert_eq!(c.cleared, Some(true));
+        assert!(
+            c.critical_delta_a_deg.lo > limit,
+            "{:?}",
+            c.critical_delta_a_deg
+        );
+        assert!(
+            c.verdict_reason.contains("tightening"),
+            "{}",
+            c.verdict_reason
+        );
+        assert!(
+            c.gap_to_limit.is_none() && c.counterexample.is_none(),
+            "{c:?}"
+        );
+        assert!(c.slabs > at_tolerance.slabs, "{} slabs", c.slabs);
+        // The verdict at the shipped limit needs no tightening.
+        assert_eq!(at_tolerance.verdict, Some(Verdict::Cleared));
+        assert!(!at_tolerance.verdict_reason.contains("tightening"));
+    }
+
+    /// A limit a hair below the worst case found leaves nothing a proof within a tiny budget
+    /// of work can decide: undecided at the budget, with the gap reached on each side.
+    #[test]
+    fn a_limit_no_proof_reaches_within_the_budget_is_undecided_with_the_gap() {
+        let mut a = a_uncertain();
+        let at_tolerance = clear(&a, &Settings::default(), &mut |_| {}).expect("a proof");
+        let hi = at_tolerance.critical_delta_a_deg.hi.expect("a worst case");
+        a.limits.aileron_deg = Some(hi - 1e-9);
+        let settings = Settings {
+            max_slabs: at_tolerance.slabs + 16,
+            ..Settings::default()
+        };
+        let c = clear(&a, &settings, &mut |_| {}).expect("a proof");
+        assert_eq!(
+            c.verdict,
+            Some(Verdict::UndecidedBudget),
+            "{}",
+            c.verdict_reason
+        );
+        assert_eq!(c.cleared, None);
+        let gap = c.gap_to_limit.as_ref().expect("the gap reached");
+        assert!(gap.limit_minus_lo_deg > 0.0, "{gap:?}");
+        assert!((gap.hi_minus_limit_deg - 1e-9).abs() < 1e-10, "{gap:?}");
+        assert!(
+            c.verdict_reason.contains("budget of") && c.verdict_reason.contains("limit - lo"),
+            "{}",
+            c.verdict_reason
+        );
+    }
+
+    /// With a coarse tolerance the worst case found stops above the limit while the box's
+    /// minimum lies below it: tightening probes the lowest sub-boxes and finds an aircraft
+    /// within the limit, whose exact analysis (`analyze`, independently) jumps within it.
+    #[test]
+    fn tightening_finds_a_counterexample_that_analyze_confirms() {
+        let limit = 4.7;
+        let a = cusp_box(limit);
+        let settings = Settings {
+            delta_e_rad: (-4f64).to_radians(),
+            tolerance_p0: 0.3,
+            tolerance_deg: 3.0,
+            ..Settings::default()
+        };
+        let c = clear(&a, &settings, &mut |_| {}).expect("a proof");
+        assert_eq!(c.verdict, Some(Verdict::NotCleared), "{}", c.verdict_reason);
+        assert!(
+            c.verdict_reason.contains("tightening"),
+            "{}",
+            c.verdict_reason
+        );
+        let x = c.counterexample.expect("a counterexample");
+        let r = crate::analysis::analyze(&x.aircraft, settings.delta_e_rad).expect("analysed");
+        let j = r.critical.expect("a critical jump");
+        assert!(j.delta_a_deg.abs() <= limit, "{j:?}");
+        assert_eq!(j.delta_a_deg, x.delta_a_deg);
+        let n = x.aircraft.value(Param::NDeltaA);
+        assert!((20.0..=40.0).contains(&n), "{n}");
     }
 
     /// A budget of work stops the proof at the same place on every run, and says which budget

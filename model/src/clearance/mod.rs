@@ -33,8 +33,9 @@
 //! The parts: [`Settings`] and the results ([`Clearance`]); the box's coordinates
 //! ([`split_box`], [`at`], [`sample`]); the worst case found by the exact path (which sets `hi`);
 //! the branch-and-bound tree and its certificates ([`bound`], which prove `lo`); [`clear`], which
-//! runs them; the Monte Carlo comparison ([`monte_carlo`]) and [`run::clear_each`] over
-//! elevator settings.
+//! runs them, tightening the bounds past the tolerance while the aileron limit lies between
+//! them, to a [`Verdict`]; the Monte Carlo comparison ([`monte_carlo`]) and [`run::clear_each`]
+//! over elevator settings.
 
 pub mod bound;
 mod clear;
@@ -44,6 +45,7 @@ mod result;
 pub mod run;
 mod settings;
 mod tree;
+mod verdict;
 mod worst_case;
 
 pub use clear::clear;
@@ -54,6 +56,7 @@ pub use coordinates::{
 pub use result::{Bounds, CaseAircraft, ClearError, Clearance};
 pub use settings::Settings;
 pub use tree::MAX_ROLL_RATE;
+pub use verdict::{LimitGap, Verdict};
 
 use crate::aircraft::Aircraft;
 use crate::analysis::{analyze_with, AnalysisError, JumpPoint};

@@ -59,6 +59,15 @@ pub struct Clearance {
     pub worst_case_aileron: Option<CaseAircraft>,
     /// Cleared against the aileron limit (null without a limit, or when undecided).
     pub cleared: Option<bool>,
+    /// Which way the clearance against the aileron limit went (null without a limit): a
+    /// verdict the tolerance leaves undecided is tightened past it until decided or the budget
+    /// runs out.
+    pub verdict: Option<super::Verdict>,
+    /// Why: the proven bound above the limit, the counterexample within it, or how far the
+    /// tightening got and what stopped it.
+    pub verdict_reason: String,
+    /// The gap left on each side of the limit when undecided (null otherwise).
+    pub gap_to_limit: Option<super::LimitGap>,
     /// Proven: no aircraft of the box has a critical jump (every primary branch leaves the
     /// aileron range `analyze` follows it to before any jump). Then both `lo` are infinite
     /// (null in JSON: the minimum over an empty set), both `hi` null, and `converged` true.

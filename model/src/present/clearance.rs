@@ -9,7 +9,7 @@
 //! ```
 
 use crate::clearance::run::Run;
-use crate::clearance::{Bounds, CaseAircraft};
+use crate::clearance::{Bounds, CaseAircraft, Clearance, Verdict};
 use crate::present::numbers::fixed;
 
 fn bounds(name: &str, unit: &str, b: &Bounds, digits: usize) -> String {
@@ -43,6 +43,31 @@ fn aircraft(title: &str, c: &CaseAircraft) -> String {
     s
 }
 
+/// The verdict's lines: which way it went and, when the bounds were tightened past the
+/// tolerance or it is undecided, why.
+fn verdict(c: &Clearance) -> String {
+    let tightened = c.verdict_reason.contains("tightening");
+    let why = format!("  ({})\n", c.verdict_reason);
+    match c.verdict {
+        Some(Verdict::Cleared) => {
+            "\nCleared: no aircraft of the box has a critical jump within the aileron limit.\n"
+                .to_string()
+                + if tightened { &why } else { "" }
+        }
+        Some(Verdict::NotCleared) => {
+            "\nNOT cleared: the counterexample below has its critical jump within the aileron \
+             limit.\n"
+                .to_string()
+                + if tightened { &why } else { "" }
+        }
+        Some(Verdict::UndecidedBudget) => {
+            "\nCleared: undecided, the budget ran out first.\n".to_string() + &why
+        }
+        Some(Verdict::Undecided) => "\nCleared: undecided.\n".to_string() + &why,
+        None => "\nCleared: undecided (no aileron limit in [limits]).\n".to_string(),
+    }
+}
+
 /// The text summary of one run.
 pub fn text(r: &Run) -> String {
     let c = &r.clearance;
@@ -72,14 +97,7 @@ pub fn text(r: &Run) -> String {
     if let Some(w) = &c.worst_case_aileron {
         s += &aircraft("Worst case (aileron)", w);
     }
-    s += &match c.cleared {
-        Some(true) => "\nCleared: no aircraft of the box has a critical jump within the aileron limit.\n"
-            .to_string(),
-        Some(false) => "\nNOT cleared: the counterexample below has its critical jump within the aileron limit.\n"
-            .to_string(),
-        None => "\nCleared: undecided (no aileron limit in [limits], or the bounds straddle it).\n"
-            .to_string(),
-    };
+    s += &verdict(c);
     if let Some(w) = &c.counterexample {
         s += &aircraft("Counterexample", w);
     }

@@ -27,6 +27,10 @@ pub use exact::{decimal_to_rational, f64_to_rational, rational_to_f64};
 pub use load::{convert_file, load, parse, AircraftError, Location};
 pub use param::Param;
 
+/// Standard acceleration due to gravity, m/s^2: the g of the 7th-order model's g/V terms
+/// (Appendix A.1), and the floor of a file's speed, at which g/V is still a finite double.
+pub const G: f64 = 9.80665;
+
 /// Speed used for the g/V terms of the 7th-order model when a file gives none.
 ///
 /// The paper does not state a speed. 150 m/s (Mach 0.45 at sea level) is a typical speed for the

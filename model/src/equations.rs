@@ -197,8 +197,8 @@ fn sum(terms: &[Poly]) -> Poly {
     terms.iter().fold(Poly::zero(), |acc, t| &acc + t)
 }
 
-/// Acceleration due to gravity used by the 7th-order model, m/s^2.
-pub const G: f64 = 9.80665;
+/// Acceleration due to gravity used by the 7th-order model, m/s^2 (the aircraft's constant).
+pub use crate::aircraft::G;
 
 /// The gravity terms and attitude equations that turn the PSS model into the 7th-order model of
 /// Appendix A.1: returns `(d_alpha, d_beta, phi_dot, theta_dot)` where `d_alpha` and `d_beta` are

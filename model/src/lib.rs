@@ -2,8 +2,11 @@
 //!
 //! Data flow is one way: [`equations`] (Appendix A written once) -> [`derivation`] (the paper's
 //! steps, Eqs 1-35, as named symbolic results) -> [`analysis`] (what `model analyze` prints).
-//! [`algebra`] and [`aircraft`] depend on nothing of ours; [`roots`] isolates real roots of the
-//! univariate polynomials exactly.
+//! Below them [`algebra`] (exact polynomials) and [`aircraft`] (its data); [`roots`] isolates
+//! real roots of the univariate polynomials exactly. The program layer (the straight-line
+//! programs of the criterion) serves both the emitter ([`emit`]) and the certified route
+//! ([`certified`]), which never name each other; [`present`] at the top writes what the
+//! commands print. The order of the whole tower is checked by `tests/tests/layers.rs`.
 #![warn(missing_docs)]
 
 pub mod aircraft;
@@ -21,8 +24,6 @@ pub mod equations;
 pub mod files;
 pub mod interval;
 pub mod jsbsim;
-// The tests' reference numbers (one file, shared with the other crates' tests): for the unit
-// tests and for the generator of `generated/tests/values.rs` in `emit`.
 #[cfg(feature = "cli")]
 pub mod plot;
 #[cfg(feature = "cli")]
@@ -30,6 +31,8 @@ pub mod present;
 pub(crate) mod program;
 pub mod pss_model;
 pub mod random;
+// The tests' reference numbers (one file, shared with the other crates' tests): for the unit
+// tests and for the generator of `generated/tests/values.rs` in `emit`.
 #[allow(dead_code)]
 #[path = "../tests/support/reference.rs"]
 mod reference;

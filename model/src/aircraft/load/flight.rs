@@ -46,7 +46,7 @@ impl Cx<'_> {
         entry: &(&Key, &Node),
         n: &Number,
     ) -> Result<(), AircraftError> {
-        if (crate::equations::G / n.float).is_finite() {
+        if (crate::aircraft::G / n.float).is_finite() {
             return Ok(());
         }
         let (key, value) = entry;
@@ -56,7 +56,7 @@ impl Cx<'_> {
             expected: format!(
                 "a speed in m/s at which the gravity term g/V of the 7th-order model is a \
                  finite double (about {:.1e} m/s or more)",
-                crate::equations::G / f64::MAX
+                crate::aircraft::G / f64::MAX
             ),
             value: shorten(&n.written),
         })

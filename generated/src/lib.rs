@@ -1507,7 +1507,7 @@ pub fn hopf_omega_squared(k: &Derivatives, p0: f64, delta_e: f64, delta_r: f64) 
 /// `Prepared::new(k, delta_e, delta_r)` computes once everything of `det_k` that does not
 /// depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch
 /// of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is
-/// the roll-rate-dependent part of one straight-line program (model/src/emit/stage.rs), with
+/// the roll-rate-dependent part of one straight-line program (model/src/program/stage.rs), with
 /// 41 fields; per call 135 operations against 69 for `Prepared::new`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Prepared {

@@ -680,7 +680,7 @@ fn readme_c_example_compiles_warning_free() {
 #[test]
 fn header_expressions_are_within_the_width_cap() {
     let text = std::fs::read_to_string(c_dir().join("roll_criterion.h")).unwrap();
-    let cap = model::emit::program::MAX_WIDTH;
+    let cap = model::emit::statements::MAX_WIDTH;
     let mut widths = Vec::new();
     for (name, body) in header_functions(&text) {
         let code: String = body

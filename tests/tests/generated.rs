@@ -505,7 +505,7 @@ fn body_expressions(block: &syn::Block, out: &mut Vec<String>) {
 #[test]
 fn generated_expressions_are_within_the_width_cap() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../generated/src");
-    let cap = model::emit::program::MAX_WIDTH;
+    let cap = model::emit::statements::MAX_WIDTH;
     for name in ["lib.rs", "aircraft_a.rs", "aircraft_b.rs"] {
         let file = syn::parse_file(&std::fs::read_to_string(dir.join(name)).unwrap()).unwrap();
         let mut exprs = Vec::new();
@@ -575,7 +575,7 @@ fn named_constants(text: &str) -> Vec<(Exact, f64)> {
 /// Every folded constant that is not written exactly carries its exact rational, and
 /// its literal is that rational rounded once to the nearest double; the constants written inline
 /// are the data of Table A.1 and small integers, whose literals are exact (checked in the
-/// emitter, `model::emit::program`).
+/// emitter, `model::emit::statements`).
 #[test]
 fn named_constants_are_their_exact_rationals_rounded_once() {
     use num_traits::ToPrimitive;

@@ -1,6 +1,6 @@
 //! C99 for the generated functions: `generated/c/roll_criterion.h`, header-only.
 //!
-//! The functions are printed from the same [`super::program::Program`] as the Rust crate, so
+//! The functions are printed from the same [`super::statements::Program`] as the Rust crate, so
 //! they perform the same IEEE operations in the same order; with `FLT_EVAL_METHOD == 0` (every
 //! SSE2 or AArch64 target) and no floating-point contraction (`-ffp-contract=off`) their results
 //! are bit-identical to Rust's at every optimisation level. gcc's vectoriser fuses multiplies
@@ -10,8 +10,8 @@
 //! hold is printed.
 
 use super::functions::{Function, Prepared};
-use super::program::{exact_text, inputs_used, program, Expr};
 use super::shape::{access, c_struct, c_type, shapes, C_PREFIX};
+use super::statements::{exact_text, inputs_used, program, Expr};
 use super::{cost_doc, doc_lines, op_count_lines, prepared_doc, Builtin, COMMAND};
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::Q;

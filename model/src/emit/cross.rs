@@ -6,7 +6,7 @@
 //! order: the parametric functions with the aircraft's data, then the aircraft's own functions
 //! with the data folded in, then `Prepared::det_k` and `Prepared::det_k_into` of the
 //! parametric `Prepared` with the aircraft's data. `test_roll_criterion --bits` prints the C results
-//! ([`super::c_test`]); `tests/tests/c_header/calls.rs`, written here, computes the Rust ones.
+//! ([`super::c_self_test`]); `tests/tests/c_header/calls.rs`, written here, computes the Rust ones.
 //! Both are generated from the same function list, so a new function is cross-checked without
 //! an edit.
 

@@ -20,10 +20,10 @@ pub(crate) mod formulas;
 pub(crate) mod functions;
 pub mod latex;
 pub mod paper;
-pub mod program;
 pub(crate) mod reference;
 pub(crate) mod rust;
 pub(crate) mod shape;
+pub mod statements;
 
 use crate::aircraft::{Aircraft, Param};
 use crate::algebra::Q;
@@ -256,7 +256,7 @@ pub fn prepared_doc(p: &Prepared) -> Vec<String> {
             .into(),
         "of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is"
             .into(),
-        "the roll-rate-dependent part of one straight-line program (model/src/emit/stage.rs), with"
+        "the roll-rate-dependent part of one straight-line program (model/src/program/stage.rs), with"
             .into(),
         format!(
             "{} fields; per call {} operations against {} for `Prepared::new`.",

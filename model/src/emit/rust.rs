@@ -6,7 +6,7 @@
 //! literal that round-trips; a named constant's doc comment gives its exact value.
 
 use super::functions::{Function, Ret};
-use super::program::{exact_text, program, Expr, Op};
+use super::statements::{exact_text, program, Expr, Op};
 use crate::algebra::Q;
 use crate::program::expr::{Dag, Id};
 use proc_macro2::{Ident, Literal, Span, TokenStream};

@@ -184,7 +184,7 @@ fn decimal(lit: &str) -> Option<num_rational::BigRational> {
 ///
 /// ```
 /// use model::algebra::Q;
-/// use model::emit::program::exact_text;
+/// use model::emit::statements::exact_text;
 ///
 /// assert_eq!(exact_text(&Q::ratio(753774, 1000000)), "0.753774");
 /// assert_eq!(exact_text(&Q::ratio(-1, 3)), "-1/3");

@@ -17,6 +17,8 @@ pub mod clearance;
 pub mod continuation;
 pub mod derivation;
 pub mod emit;
+#[cfg(feature = "cli")]
+pub mod envelope;
 pub mod equations;
 pub mod files;
 pub mod interval;

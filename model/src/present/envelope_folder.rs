@@ -1,5 +1,6 @@
 //! What `model envelope --out DIR` writes: envelope.csv (one row per grid point, every number),
-//! summary.md and summary.json, each file atomically.
+//! summary.md, summary.json and the maps ([`super::envelope_maps`], SVG, PNG and the plotted
+//! data as CSV), each file atomically.
 
 use super::envelope::{cell, departure_kind, text};
 use crate::envelope::Envelope;
@@ -57,7 +58,8 @@ pub fn markdown(env: &Envelope) -> String {
             p.mach
         );
     }
-    s += "![critical aileron](critical_aileron.svg)\n\n![first departure](first_departure.svg)\n\n";
+    s += "![critical aileron](critical_aileron.svg)\n\n![first departure](first_departure.svg)\n\n\
+          ![critical roll rate](critical_roll_rate.svg)\n\n";
     s + "```\n" + &text(env) + "```\n"
 }
 
@@ -71,5 +73,9 @@ pub fn write_folder(dir: &Path, env: &Envelope, json: &str) -> Result<(), String
     write("envelope.csv", csv(env).as_bytes())?;
     write("summary.md", markdown(env).as_bytes())?;
     write("summary.json", format!("{json}\n").as_bytes())?;
+    let style = crate::plot::PlotStyle::default();
+    for (stem, figure) in super::envelope_maps::maps(env, &style) {
+        crate::plot::render(&dir.join(stem), &figure, &style).map_err(|e| e.to_string())?;
+    }
     Ok(())
 }

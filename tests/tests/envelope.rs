@@ -184,3 +184,28 @@ fn json_has_one_entry_per_point_with_the_documented_keys() {
     assert!(!text.contains("NaN") && !text.contains("inf"));
     assert_eq!(v["untrimmed"], 1, "{text}");
 }
+
+/// `--out` writes the CSV (one row per point), the summaries and the three maps.
+#[test]
+fn out_writes_the_csv_the_summaries_and_the_maps() {
+    if !installed() {
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("envelope-out-{}", std::process::id()));
+    let mut a = args("jsbsim:f104", "0:12000:12000", "0.3:0.6:0.3");
+    a.json = false;
+    a.out = Some(dir.clone());
+    let mut out = Vec::new();
+    command(&a, &mut out).unwrap();
+    let csv = std::fs::read_to_string(dir.join("envelope.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 5, "{csv}");
+    for stem in ["critical_aileron", "critical_roll_rate", "first_departure"] {
+        for ext in ["svg", "png", "csv"] {
+            assert!(dir.join(format!("{stem}.{ext}")).is_file(), "{stem}.{ext}");
+        }
+    }
+    for name in ["summary.md", "summary.json"] {
+        assert!(dir.join(name).is_file(), "{name}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

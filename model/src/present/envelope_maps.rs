@@ -132,6 +132,11 @@ pub fn critical_aileron(env: &Envelope, style: &PlotStyle) -> Figure {
     let mut f = heat_map(env, "critical |delta_a|", "deg", style, &|p| {
         p.critical.as_ref().map(|c| c.delta_a_deg.abs())
     });
+    let limit = env.points.iter().find_map(|p| p.aileron_limit_deg);
+    let label = format!(
+        "beyond the aileron limit{}: a full-stick roll jumps",
+        limit.map_or(String::new(), |l| format!(" ({l:.2} deg)"))
+    );
     let mut first = true;
     for p in env
         .points
@@ -139,8 +144,7 @@ pub fn critical_aileron(env: &Envelope, style: &PlotStyle) -> Figure {
         .filter(|p| p.margin_deg.is_some_and(|m| m < 0.0))
     {
         f.panels[0].markers.push(Marker {
-            label: std::mem::take(&mut first)
-                .then(|| "beyond the aileron limit: a full-stick roll jumps".to_string()),
+            label: std::mem::take(&mut first).then(|| label.clone()),
             text: None,
             text_at: TextAt::AboveRight,
             x: p.mach,

@@ -27,12 +27,20 @@ impl Default for Elevator {
 }
 
 impl Elevator {
+    /// The increment (rad) when it does not depend on the aircraft (given, or 1 g).
+    pub fn fixed(self) -> Option<f64> {
+        match self {
+            Elevator::Increment(d) => Some(d),
+            Elevator::LoadFactor(1.0) => Some(0.0),
+            Elevator::LoadFactor(_) => None,
+        }
+    }
+
     /// The elevator increment (rad) for `aircraft`, linearised in level flight at its speed.
     pub fn delta_e(self, aircraft: &Aircraft) -> Result<f64, String> {
         let n = match self {
-            Elevator::Increment(d) => return Ok(d),
-            Elevator::LoadFactor(1.0) => return Ok(0.0),
-            Elevator::LoadFactor(n) => n,
+            Elevator::LoadFactor(n) if n != 1.0 => n,
+            _ => return Ok(self.fixed().unwrap_or_default()),
         };
         let per_rad = pitch_rate_per_elevator(aircraft);
         let delta_e = (n - 1.0) * G / (aircraft.speed * per_rad);

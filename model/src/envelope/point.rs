@@ -33,7 +33,8 @@ pub struct Point {
     pub speed_m_s: f64,
     /// The level-flight angle of attack, deg; `None` where there is none.
     pub alpha_deg: Option<f64>,
-    /// The elevator increment analysed, deg; `None` where it could not be found.
+    /// The elevator increment analysed, deg (also where there is no trim, when it does not
+    /// depend on the trim); `None` where it could not be found.
     pub delta_e_deg: Option<f64>,
     /// Whether level flight exists here.
     pub trimmed: bool,
@@ -96,6 +97,7 @@ impl Point {
             }
         };
         let mut p = Point::empty(altitude_m, mach, condition.speed);
+        p.delta_e_deg = elevator.fixed().map(f64::to_degrees);
         let setup = loaded.setup(condition);
         let alpha = match level_flight(&setup) {
             Ok(a) => a,

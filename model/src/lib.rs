@@ -20,6 +20,8 @@ pub mod clearance;
 pub mod continuation;
 pub mod derivation;
 pub mod emit;
+#[cfg(feature = "cli")]
+pub mod envelope;
 pub mod equations;
 pub mod files;
 pub mod interval;

@@ -6,7 +6,8 @@ use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use model::present::commands;
 use model::present::failure::{stdout_error, Failure, BAD_INPUT, FAILED};
 use model::present::options::{
-    AnalyzeArgs, ClearArgs, ContinueArgs, ConvertArgs, EmitArgs, FiguresArgs, SimulateArgs,
+    AnalyzeArgs, ClearArgs, ContinueArgs, ConvertArgs, EmitArgs, EnvelopeArgs, FiguresArgs,
+    SimulateArgs,
 };
 use std::io::Write;
 use std::process::ExitCode;
@@ -50,6 +51,9 @@ enum Command {
     Simulate(SimulateArgs),
     /// Certified clearance of the critical jump over the file's `[uncertainty]` box.
     Clear(ClearArgs),
+    /// The analysis at every altitude and Mach of a grid, each point trimmed in level flight:
+    /// critical jump, first departure and margin to the aileron limit, as a table, JSON or maps.
+    Envelope(EnvelopeArgs),
     /// Print the dimensional principal-axis TOML equivalent to a nondimensional body-axis file.
     Convert(ConvertArgs),
     /// Write an aircraft file from another tool's model: `import jsbsim <MODEL> --altitude-m H
@@ -113,6 +117,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
         Command::Plot(a) => commands::report_command(a, false, out),
         Command::Simulate(a) => commands::simulate_command(a, out),
         Command::Clear(a) => commands::clear_command(a, out),
+        Command::Envelope(a) => model::present::envelope::command(a, out),
         Command::Convert(a) => commands::convert_command(a, out),
         Command::Import { args } => Ok(ExitCode::from(model::jsbsim::cli::run(args, out))),
         Command::Emit(a) => commands::emit_command(a, out),
@@ -200,7 +205,10 @@ mod tests {
                         finite_angle("delta_a", a.delta_a_deg),
                     ],
                     Command::Clear(a) => vec![elevator(a.delta_e_deg)],
-                    Command::Emit(_) | Command::Convert(_) | Command::Import { .. } => vec![],
+                    Command::Emit(_)
+                    | Command::Convert(_)
+                    | Command::Envelope(_)
+                    | Command::Import { .. } => vec![],
                 };
                 for c in checks {
                     match c {

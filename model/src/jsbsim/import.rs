@@ -1,5 +1,6 @@
 //! An import from start to end: the model, the flight condition (alpha given or level flight:
 //! lift equal to weight), the coefficients and their derivatives there, and the aircraft file.
+//! A model read once ([`Loaded`]) gives the aircraft file of any number of flight conditions.
 
 use super::catalogue;
 use super::coefficients::{Setup, CL};
@@ -39,55 +40,92 @@ pub struct Request {
 
 /// The aircraft file (TOML text) of `request`, or why not.
 pub fn import(request: &Request) -> Result<String, String> {
-    let given = std::path::Path::new(&request.model);
-    let path = if given.is_file() {
-        given.to_path_buf()
-    } else {
-        let root = catalogue::root(request.root.as_deref());
-        catalogue::model_path(root.as_deref(), &request.model)?
-    };
-    let model = Model::load(&path).map_err(|e| e.to_string())?;
-    if let Some((name, _)) = request
-        .settings
-        .iter()
-        .find(|(name, _)| model.functions.symbols.get(name).is_none())
-    {
-        return Err(format!(
-            "--set {name}: the aerodynamics of {} neither read nor define this property",
-            model.file
-        ));
-    }
+    let loaded = Loaded::new(&request.model, request.root.as_deref(), &request.settings)?;
     let condition = Condition::new(request.altitude_m, request.speed)?;
-    let setup = Setup {
-        model: &model,
-        condition,
-        surfaces: surfaces(&model, &path),
-        settings: request.settings.clone(),
-    };
+    let setup = loaded.setup(condition);
     let (alpha, alpha_source) = match request.alpha {
         Alpha::Given(a) => (a, "given".to_string()),
-        Alpha::LevelFlight => {
-            let a = level_flight(&setup)?;
-            (
-                a,
-                "level flight: lift equals weight, surfaces neutral".to_string(),
-            )
-        }
+        Alpha::LevelFlight => (level_flight(&setup)?, LEVEL_FLIGHT.to_string()),
     };
+    aircraft_file(&setup, alpha, &alpha_source)
+}
+
+/// How a level-flight alpha is described in the aircraft file.
+pub const LEVEL_FLIGHT: &str = "level flight: lift equals weight, surfaces neutral";
+
+/// A model read once, with its surfaces and the user's settings checked against it: the setup
+/// of any number of flight conditions.
+#[derive(Clone, Debug)]
+pub struct Loaded {
+    /// The model.
+    pub model: Model,
+    /// Its surfaces and how they are set.
+    pub surfaces: Vec<super::surfaces::Surface>,
+    /// The user's `--set` values.
+    pub settings: Vec<(String, f64)>,
+}
+
+impl Loaded {
+    /// Reads `model` (a catalogue name, looked up under `root` if given, or a path) and checks
+    /// the `settings` against it.
+    pub fn new(
+        model: &str,
+        root: Option<&std::path::Path>,
+        settings: &[(String, f64)],
+    ) -> Result<Loaded, String> {
+        let given = std::path::Path::new(model);
+        let path = if given.is_file() {
+            given.to_path_buf()
+        } else {
+            let root = catalogue::root(root);
+            catalogue::model_path(root.as_deref(), model)?
+        };
+        let model = Model::load(&path).map_err(|e| e.to_string())?;
+        if let Some((name, _)) = settings
+            .iter()
+            .find(|(name, _)| model.functions.symbols.get(name).is_none())
+        {
+            return Err(format!(
+                "--set {name}: the aerodynamics of {} neither read nor define this property",
+                model.file
+            ));
+        }
+        let surfaces = surfaces(&model, &path);
+        Ok(Loaded {
+            model,
+            surfaces,
+            settings: settings.to_vec(),
+        })
+    }
+
+    /// The setup at `condition`.
+    pub fn setup(&self, condition: Condition) -> Setup<'_> {
+        Setup {
+            model: &self.model,
+            condition,
+            surfaces: self.surfaces.clone(),
+            settings: self.settings.clone(),
+        }
+    }
+}
+
+/// The aircraft file (TOML text) of `setup` linearised at angle of attack `alpha` (rad),
+/// chosen as `alpha_source` says, wings level and surfaces neutral.
+pub fn aircraft_file(setup: &Setup, alpha: f64, alpha_source: &str) -> Result<String, String> {
     let state = State {
         alpha,
         beta: 0.0,
         rates: [0.0; 3],
         surfaces: [0.0; 3],
     };
-    let (base, derivs) = derivatives(&setup, &state).map_err(|e| e.to_string())?;
+    let (base, derivs) = derivatives(setup, &state).map_err(|e| e.to_string())?;
     Ok(Import {
-        model: &model,
-        condition,
+        model: setup.model,
+        condition: setup.condition,
         state,
-        alpha_source,
+        alpha_source: alpha_source.to_string(),
         surfaces: &setup.surfaces,
-        settings: &request.settings,
+        settings: &setup.settings,
         base: &base,
         derivatives: &derivs,
     }

@@ -6,6 +6,9 @@
 
 pub mod clearance;
 pub mod commands;
+pub mod envelope;
+pub mod envelope_folder;
+pub mod envelope_maps;
 pub mod failure;
 pub mod numbers;
 pub mod options;

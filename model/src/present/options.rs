@@ -132,6 +132,33 @@ pub struct ClearArgs {
     pub out: Option<PathBuf>,
 }
 
+/// Options of `envelope`.
+#[derive(Args)]
+pub struct EnvelopeArgs {
+    /// The model: "jsbsim:MODEL [--set PROPERTY=VALUE]... [--jsbsim-root DIR]" (quoted as one;
+    /// the ranges below give the flight conditions, each point trimmed in level flight).
+    pub source: String,
+    /// Altitudes, m: START:STOP:STEP or one value.
+    #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
+    pub altitude_m: String,
+    /// Mach numbers: START:STOP:STEP or one value.
+    #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
+    pub mach: String,
+    /// The elevator increment that holds this load factor (g) before the roll; the default is
+    /// 1 g, i.e. delta_e = 0 (the level flight the derivatives are linearised about).
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "delta_e_deg")]
+    pub load_factor: Option<f64>,
+    /// The elevator increment from the level-flight trim, deg (the paper's delta_e).
+    #[arg(long, allow_hyphen_values = true)]
+    pub delta_e_deg: Option<f64>,
+    /// Print JSON instead of a table.
+    #[arg(long)]
+    pub json: bool,
+    /// Write envelope.csv, summary.md, summary.json and the maps (SVG, PNG) into DIR.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+}
+
 /// Options of `convert`.
 #[derive(Args)]
 pub struct ConvertArgs {

@@ -1,0 +1,57 @@
+//! An envelope computed: every point of the grid in parallel (rayon), the model read once, with
+//! the fraction done reported as the points finish.
+
+use super::elevator::Elevator;
+use super::grid::Grid;
+use super::point::Point;
+use crate::jsbsim::import::Loaded;
+use rayon::prelude::*;
+use serde::Serialize;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// The envelope of one model: its points, altitude by altitude, Mach ascending within each.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Envelope {
+    /// The source as given.
+    pub source: String,
+    /// How the elevator was chosen: `"load factor N g"` or `"increment D deg"`.
+    pub elevator: String,
+    /// Points without level flight.
+    pub untrimmed: usize,
+    /// Trimmed points the certified route could not answer, so the exact path did.
+    pub exact_fallbacks: usize,
+    /// Every grid point.
+    pub points: Vec<Point>,
+}
+
+/// The envelope of `loaded` (named `source`) over `grid` at `elevator`; `progress` gets the
+/// fraction done (from any thread).
+pub fn envelope(
+    loaded: &Loaded,
+    source: &str,
+    grid: &Grid,
+    elevator: Elevator,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Envelope {
+    let all = grid.points();
+    let done = AtomicUsize::new(0);
+    let points: Vec<Point> = all
+        .par_iter()
+        .map(|&(h, m)| {
+            let p = Point::at(loaded, source, h, m, elevator);
+            let k = done.fetch_add(1, Ordering::Relaxed) + 1;
+            progress(k as f64 / all.len() as f64);
+            p
+        })
+        .collect();
+    Envelope {
+        source: source.to_string(),
+        elevator: match elevator {
+            Elevator::LoadFactor(n) => format!("load factor {n} g"),
+            Elevator::Increment(d) => format!("increment {} deg", d.to_degrees()),
+        },
+        untrimmed: points.iter().filter(|p| !p.trimmed).count(),
+        exact_fallbacks: points.iter().filter(|p| p.route == Some("exact")).count(),
+        points,
+    }
+}

@@ -1,0 +1,19 @@
+//! The flight envelope: the analysis of `model analyze` at every point of a grid of altitude
+//! and Mach, each point linearised about its own level-flight trim from a JSBSim model read
+//! once.
+//!
+//! Data flow: [`grid`] (the ranges, checked before any work) and [`source`] (the model and its
+//! settings) give the points; [`elevator`] turns the pilot's elevator (a load factor or an
+//! increment) into the paper's `delta_e` at each; [`point`] trims, imports and analyses one
+//! point; [`map`] runs every point in parallel.
+
+pub mod elevator;
+pub mod grid;
+pub mod map;
+pub mod point;
+pub mod source;
+
+pub use elevator::Elevator;
+pub use grid::{Grid, Range};
+pub use map::{envelope, Envelope};
+pub use point::{Critical, Point};

@@ -1,0 +1,153 @@
+//! One point of an envelope: the level-flight trim at its altitude and Mach (alpha for lift
+//! equal to weight, surfaces neutral), the aircraft file the import writes there, and the
+//! analysis `model analyze` makes of it (the certified route, the exact path where a
+//! certificate fails) at the point's elevator increment.
+
+use super::elevator::Elevator;
+use crate::aircraft;
+use crate::analysis::fast::{analyze_routed_with, Route};
+use crate::analysis::{Analysis, FirstDeparture};
+use crate::jsbsim::condition::{Condition, Speed};
+use crate::jsbsim::import::{aircraft_file, level_flight, Loaded, LEVEL_FLIGHT};
+use serde::Serialize;
+
+/// The critical jump of a point, as `analyze` reports it.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Critical {
+    /// Trim roll rate at the jump, rad/s.
+    pub p0: f64,
+    /// Aileron deflection at the jump, deg.
+    pub delta_a_deg: f64,
+    /// Whether the aileron (and elevator) are within the aircraft's limits; `None` without.
+    pub within_limits: Option<bool>,
+}
+
+/// Everything an envelope reports at one grid point.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Point {
+    /// Geometric altitude, m.
+    pub altitude_m: f64,
+    /// Mach number.
+    pub mach: f64,
+    /// True airspeed, m/s.
+    pub speed_m_s: f64,
+    /// The level-flight angle of attack, deg; `None` where there is none.
+    pub alpha_deg: Option<f64>,
+    /// The elevator increment analysed, deg (also where there is no trim, when it does not
+    /// depend on the trim); `None` where it could not be found.
+    pub delta_e_deg: Option<f64>,
+    /// Whether level flight exists here.
+    pub trimmed: bool,
+    /// Why not, when not trimmed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+    /// Why a trimmed point has no analysis (import or analysis refused).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+    /// The critical jump; `None` with `critical_note` when there is none.
+    pub critical: Option<Critical>,
+    /// Why there is no critical jump.
+    pub critical_note: Option<String>,
+    /// The first loss of stability on the primary branch, as `analyze` gives it.
+    pub first_departure: Option<FirstDeparture>,
+    /// The aircraft's aileron limit, deg; `None` without one.
+    pub aileron_limit_deg: Option<f64>,
+    /// The aileron limit minus |critical aileron|, deg: negative where a full-stick roll
+    /// jumps; `None` without a limit or without a critical jump.
+    pub margin_deg: Option<f64>,
+    /// `"certified"` or `"exact"` (a certificate failed and the exact path answered).
+    pub route: Option<&'static str>,
+}
+
+impl Point {
+    /// A point at `altitude_m`, `mach` and `speed_m_s` with nothing found yet.
+    fn empty(altitude_m: f64, mach: f64, speed_m_s: f64) -> Point {
+        Point {
+            altitude_m,
+            mach,
+            speed_m_s,
+            alpha_deg: None,
+            delta_e_deg: None,
+            trimmed: false,
+            reason: None,
+            error: None,
+            critical: None,
+            critical_note: None,
+            first_departure: None,
+            aileron_limit_deg: None,
+            margin_deg: None,
+            route: None,
+        }
+    }
+
+    /// The point of `loaded` (named `name`) at `altitude_m` and `mach`, analysed at `elevator`.
+    pub fn at(
+        loaded: &Loaded,
+        name: &str,
+        altitude_m: f64,
+        mach: f64,
+        elevator: Elevator,
+    ) -> Point {
+        let condition = match Condition::new(altitude_m, Speed::Mach(mach)) {
+            Ok(c) => c,
+            Err(reason) => {
+                let mut p = Point::empty(altitude_m, mach, 0.0);
+                p.reason = Some(reason);
+                return p;
+            }
+        };
+        let mut p = Point::empty(altitude_m, mach, condition.speed);
+        p.delta_e_deg = elevator.fixed().map(f64::to_degrees);
+        let setup = loaded.setup(condition);
+        let alpha = match level_flight(&setup) {
+            Ok(a) => a,
+            Err(reason) => {
+                p.reason = Some(reason);
+                return p;
+            }
+        };
+        p.trimmed = true;
+        p.alpha_deg = Some(alpha.to_degrees());
+        if let Err(e) = p.analyse(&setup, alpha, name, elevator) {
+            p.error = Some(e);
+        }
+        p
+    }
+
+    /// Imports at `alpha` and analyses, filling in the results.
+    fn analyse(
+        &mut self,
+        setup: &crate::jsbsim::coefficients::Setup,
+        alpha: f64,
+        name: &str,
+        elevator: Elevator,
+    ) -> Result<(), String> {
+        let text = aircraft_file(setup, alpha, LEVEL_FLIGHT)?;
+        let ac = aircraft::parse(&text, name).map_err(|e| e.to_string())?;
+        self.aileron_limit_deg = ac.limits.aileron_deg;
+        let delta_e = elevator.delta_e(&ac)?;
+        self.delta_e_deg = Some(delta_e.to_degrees());
+        let (a, route) = analyze_routed_with(&ac, delta_e, true).map_err(|e| e.to_string())?;
+        self.route = Some(match route {
+            Route::Certified(_) => "certified",
+            Route::Exact(_) => "exact",
+        });
+        self.take(a);
+        Ok(())
+    }
+
+    /// The reported parts of `a`.
+    fn take(&mut self, a: Analysis) {
+        self.critical = a.critical.map(|c| Critical {
+            p0: c.p0,
+            delta_a_deg: c.delta_a_deg,
+            within_limits: c.within_limits,
+        });
+        self.critical_note = a.critical_note;
+        self.first_departure = a.first_departure;
+        self.margin_deg = match (&self.critical, self.aileron_limit_deg) {
+            (Some(c), Some(limit)) => Some(limit - c.delta_a_deg.abs()),
+            _ => None,
+        };
+    }
+}

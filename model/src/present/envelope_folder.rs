@@ -1,0 +1,81 @@
+//! What `model envelope --out DIR` writes: envelope.csv (one row per grid point, every number),
+//! summary.md, summary.json and the maps ([`super::envelope_maps`], SVG, PNG and the plotted
+//! data as CSV), each file atomically.
+
+use super::envelope::{cell, departure_kind, text};
+use crate::envelope::Envelope;
+use std::path::Path;
+
+/// The CSV: one row per point, units in the header, empty where a number does not exist.
+pub fn csv(env: &Envelope) -> String {
+    let mut s = String::from(
+        "altitude_m,mach,speed_m_s,trimmed,alpha_deg,delta_e_deg,critical_p0_rad_s,\
+         critical_delta_a_deg,within_limits,aileron_limit_deg,margin_deg,first_departure,\
+         first_departure_p0_rad_s,first_departure_delta_a_deg,route\n",
+    );
+    let num = |x: Option<f64>| x.map_or(String::new(), |v| v.to_string());
+    for p in &env.points {
+        let c = p.critical.as_ref();
+        let d = p.first_departure.as_ref();
+        let row = [
+            p.altitude_m.to_string(),
+            p.mach.to_string(),
+            p.speed_m_s.to_string(),
+            p.trimmed.to_string(),
+            num(p.alpha_deg),
+            num(p.delta_e_deg),
+            num(c.map(|c| c.p0)),
+            num(c.map(|c| c.delta_a_deg)),
+            c.and_then(|c| c.within_limits)
+                .map_or(String::new(), |w| w.to_string()),
+            num(p.aileron_limit_deg),
+            num(p.margin_deg),
+            departure_kind(p).replace('-', ""),
+            num(d.map(|d| d.p0)),
+            num(d.map(|d| d.delta_a_deg)),
+            p.route.unwrap_or("").to_string(),
+        ];
+        s += &row.join(",");
+        s.push('\n');
+    }
+    s
+}
+
+/// summary.md: the table and the counts, with the maps.
+pub fn markdown(env: &Envelope) -> String {
+    let worst = env
+        .points
+        .iter()
+        .filter_map(|p| p.margin_deg.map(|m| (m, p)))
+        .min_by(|a, b| a.0.total_cmp(&b.0));
+    let mut s = format!("# Flight envelope: {}\n\n", env.source);
+    s += &format!("Elevator: {}.\n\n", env.elevator);
+    if let Some((m, p)) = worst {
+        s += &format!(
+            "Smallest margin to the aileron limit: {} deg at {} m, Mach {}.\n\n",
+            cell(Some(m), 3),
+            p.altitude_m,
+            p.mach
+        );
+    }
+    s += "![critical aileron](critical_aileron.svg)\n\n![first departure](first_departure.svg)\n\n\
+          ![critical roll rate](critical_roll_rate.svg)\n\n";
+    s + "```\n" + &text(env) + "```\n"
+}
+
+/// Writes the folder `dir`.
+pub fn write_folder(dir: &Path, env: &Envelope, json: &str) -> Result<(), String> {
+    crate::files::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let write = |name: &str, bytes: &[u8]| {
+        let path = dir.join(name);
+        crate::files::write_atomic(&path, bytes).map_err(|e| format!("{}: {e}", path.display()))
+    };
+    write("envelope.csv", csv(env).as_bytes())?;
+    write("summary.md", markdown(env).as_bytes())?;
+    write("summary.json", format!("{json}\n").as_bytes())?;
+    let style = crate::plot::PlotStyle::default();
+    for (stem, figure) in super::envelope_maps::maps(env, &style) {
+        crate::plot::render(&dir.join(stem), &figure, &style).map_err(|e| e.to_string())?;
+    }
+    Ok(())
+}

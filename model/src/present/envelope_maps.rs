@@ -1,0 +1,184 @@
+//! The maps of `model envelope --out`: over Mach (across) and altitude (up), one cell per grid
+//! point, each drawn as a band of its colour ([`crate::plot`] draws polylines and markers, so a
+//! cell is a line as wide as the cell, as thick as its row). The critical aileron and the
+//! critical roll rate in eight colour bands, the cells whose critical aileron is beyond the
+//! aileron limit (a full-stick roll jumps there) marked; and the first departure's kind as a
+//! region map.
+
+use super::envelope::departure_kind;
+use crate::envelope::{Envelope, Point};
+use crate::plot::TextAt;
+use crate::plot::{Axis, Dash, Figure, LegendPlace, Line, Marker, Panel, PlotStyle, Rgb, Shape};
+
+/// Light grey of cells without the mapped number.
+const EMPTY: Rgb = Rgb(215, 215, 215);
+/// Dark grey of cells without level flight.
+const UNTRIMMED: Rgb = Rgb(110, 110, 110);
+/// The number of colour bands of a heat map.
+const BANDS: usize = 8;
+
+/// The distinct values of `xs`, ascending, and half the smallest spacing (`fallback` for one).
+fn axis_of(xs: impl Iterator<Item = f64>, fallback: f64) -> (Vec<f64>, f64) {
+    let mut v: Vec<f64> = xs.collect();
+    v.sort_by(f64::total_cmp);
+    v.dedup();
+    let half = v
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .fold(f64::INFINITY, f64::min);
+    (
+        v,
+        if half.is_finite() {
+            half / 2.0
+        } else {
+            fallback
+        },
+    )
+}
+
+/// A cell's colour, legend entry and the entry's place in the legend.
+type Cell = (Rgb, String, usize);
+
+/// A figure of cells: `cell(p)` gives each point's colour and legend entry, the legend ordered
+/// by the entries' places.
+fn cells(
+    env: &Envelope,
+    title: String,
+    style: &PlotStyle,
+    cell: &dyn Fn(&Point) -> Cell,
+) -> Figure {
+    let (machs, dm) = axis_of(env.points.iter().map(|p| p.mach), 0.025);
+    let (alts, dh) = axis_of(env.points.iter().map(|p| p.altitude_m), 250.0);
+    let row_px = (style.height as f64 * 0.83 - 10.0) / alts.len().max(1) as f64;
+    // Two pixels more than a row, so that neighbouring rows overlap rather than leave a gap.
+    let width = row_px.clamp(1.0, 200.0).ceil() as u32 + 2;
+    let mut painted: Vec<(usize, &Point, Rgb, String)> = env
+        .points
+        .iter()
+        .map(|p| {
+            let (color, label, place) = cell(p);
+            (place, p, color, label)
+        })
+        .collect();
+    painted.sort_by_key(|c| c.0);
+    let mut seen = std::collections::BTreeSet::new();
+    let lines = painted
+        .into_iter()
+        .map(|(_, p, color, label)| Line {
+            label: seen.insert(label.clone()).then_some(label),
+            points: vec![(p.mach - dm, p.altitude_m), (p.mach + dm, p.altitude_m)],
+            color,
+            dash: Dash::Solid,
+            width,
+        })
+        .collect();
+    let x = Axis::linear("Mach", machs[0] - dm, machs[machs.len() - 1] + dm);
+    let y = Axis::linear("altitude (m)", alts[0] - dh, alts[alts.len() - 1] + dh);
+    Figure {
+        title,
+        panels: vec![Panel {
+            title: String::new(),
+            area: [0.0, 0.0, 0.72, 1.0],
+            x,
+            y,
+            lines,
+            markers: Vec::new(),
+            legend: LegendPlace::Figure,
+        }],
+        legend_area: Some([0.72, 0.0, 1.0, 1.0]),
+        note: format!("elevator: {}", env.elevator),
+    }
+}
+
+/// The colour and legend entry of a point without the mapped number.
+fn missing(p: &Point) -> Cell {
+    if p.trimmed {
+        (EMPTY, "no critical jump / not analysed".to_string(), 100)
+    } else {
+        (UNTRIMMED, "no level flight".to_string(), 101)
+    }
+}
+
+/// A heat map of `value` (in `unit`) in eight bands from its smallest to its largest value.
+pub fn heat_map(
+    env: &Envelope,
+    what: &str,
+    unit: &str,
+    style: &PlotStyle,
+    value: &dyn Fn(&Point) -> Option<f64>,
+) -> Figure {
+    let vs: Vec<f64> = env.points.iter().filter_map(value).collect();
+    let lo = vs.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = vs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let step = ((hi - lo) / BANDS as f64).max(1e-9);
+    let band = |v: f64| (((v - lo) / step) as usize).min(BANDS - 1);
+    let title = format!("{}: {what} over the envelope", env.source);
+    cells(env, title, style, &|p| match value(p) {
+        Some(v) => {
+            let k = band(v);
+            let (a, b) = (lo + k as f64 * step, lo + (k + 1) as f64 * step);
+            (
+                Rgb::sequential(k, BANDS),
+                format!("{a:.2} to {b:.2} {unit}"),
+                k,
+            )
+        }
+        None => missing(p),
+    })
+}
+
+/// The critical aileron map, with the cells beyond the aileron limit marked.
+pub fn critical_aileron(env: &Envelope, style: &PlotStyle) -> Figure {
+    let mut f = heat_map(env, "critical |delta_a|", "deg", style, &|p| {
+        p.critical.as_ref().map(|c| c.delta_a_deg.abs())
+    });
+    let limit = env.points.iter().find_map(|p| p.aileron_limit_deg);
+    let label = format!(
+        "beyond the aileron limit{}: a full-stick roll jumps",
+        limit.map_or(String::new(), |l| format!(" ({l:.2} deg)"))
+    );
+    let mut first = true;
+    for p in env
+        .points
+        .iter()
+        .filter(|p| p.margin_deg.is_some_and(|m| m < 0.0))
+    {
+        f.panels[0].markers.push(Marker {
+            label: std::mem::take(&mut first).then(|| label.clone()),
+            text: None,
+            text_at: TextAt::AboveRight,
+            x: p.mach,
+            y: p.altitude_m,
+            shape: Shape::Diamond,
+            color: Rgb::BLACK,
+            filled: true,
+            size: 3,
+        });
+    }
+    f
+}
+
+/// The region map of the first departure's kind.
+pub fn departure_regions(env: &Envelope, style: &PlotStyle) -> Figure {
+    let title = format!("{}: first departure on the primary branch", env.source);
+    cells(env, title, style, &|p| match departure_kind(p) {
+        "jump" => (Rgb::RED, "jump".to_string(), 0),
+        "hopf" => (Rgb::ORANGE, "Hopf (oscillation)".to_string(), 1),
+        "none" => (Rgb::GREEN, "none: stable throughout".to_string(), 2),
+        _ => missing(p),
+    })
+}
+
+/// Every map with its file stem.
+pub fn maps(env: &Envelope, style: &PlotStyle) -> Vec<(&'static str, Figure)> {
+    vec![
+        ("critical_aileron", critical_aileron(env, style)),
+        (
+            "critical_roll_rate",
+            heat_map(env, "critical jump roll rate P0", "rad/s", style, &|p| {
+                p.critical.as_ref().map(|c| c.p0)
+            }),
+        ),
+        ("first_departure", departure_regions(env, style)),
+    ]
+}

@@ -1,0 +1,211 @@
+//! `model envelope` against the path a user takes by hand: at grid points chosen by a seeded
+//! generator, the envelope's numbers equal those of `import jsbsim ... --level-flight` followed
+//! by `analyze` (the certified route with its exact fallback, as the CLI's table) at that flight
+//! condition, and the elevator increment for a load factor equals the pitch equilibrium at
+//! `p = 0` solved by hand. Bad ranges are refused before any work, and `--json` has the shape
+//! the documentation gives. Skipped with a message when the JSBSim models are not installed.
+
+use model::aircraft::{self, Param};
+use model::analysis::fast::analyze_routed_with;
+use model::envelope::source::Source;
+use model::envelope::{envelope, Elevator, Grid, Range};
+use model::equations::G;
+use model::jsbsim::catalogue;
+use model::jsbsim::condition::Speed;
+use model::jsbsim::import::{import, Alpha, Request};
+use model::present::envelope::command;
+use model::present::failure::Failure;
+use model::present::options::EnvelopeArgs;
+use model::random::Rng;
+use serde_json::Value;
+
+/// The grid of the checks: 7 altitudes by 6 Mach numbers of the F-104.
+const ALTITUDES: &str = "0:12000:2000";
+const MACHS: &str = "0.4:0.9:0.1";
+
+fn args(source: &str, altitude_m: &str, mach: &str) -> EnvelopeArgs {
+    EnvelopeArgs {
+        source: source.to_string(),
+        altitude_m: altitude_m.to_string(),
+        mach: mach.to_string(),
+        load_factor: None,
+        delta_e_deg: None,
+        json: true,
+        out: None,
+    }
+}
+
+fn installed() -> bool {
+    let found = catalogue::root(None).is_some();
+    if !found {
+        eprintln!("skipped: the JSBSim models are not installed (pip install jsbsim)");
+    }
+    found
+}
+
+/// The F-104's envelope at 0.5 g (a push) against import + analyze at five random grid points.
+#[test]
+fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
+    if !installed() {
+        return;
+    }
+    let source = Source::parse("jsbsim:f104").unwrap();
+    let grid = Grid::new(
+        Range::parse(ALTITUDES, "--altitude-m").unwrap(),
+        Range::parse(MACHS, "--mach").unwrap(),
+    )
+    .unwrap();
+    let n = 0.5;
+    let env = envelope(
+        &source.load().unwrap(),
+        "jsbsim:f104",
+        &grid,
+        Elevator::LoadFactor(n),
+        &|_| {},
+    );
+    assert_eq!(env.points.len(), 42);
+    let mut rng = Rng::new(38);
+    let mut checked = 0;
+    for _ in 0..5 {
+        let p = &env.points[(rng.unit() * 42.0) as usize];
+        let request = Request {
+            model: "f104".to_string(),
+            root: None,
+            altitude_m: p.altitude_m,
+            speed: Speed::Mach(p.mach),
+            alpha: Alpha::LevelFlight,
+            settings: Vec::new(),
+        };
+        let text = match import(&request) {
+            Ok(t) => t,
+            Err(why) => {
+                assert!(!p.trimmed, "{p:?}");
+                assert_eq!(p.reason.as_deref(), Some(why.as_str()));
+                continue;
+            }
+        };
+        let ac = aircraft::parse(&text, "jsbsim:f104").unwrap();
+        assert!(p.trimmed);
+        assert!((p.speed_m_s - ac.speed).abs() <= 1e-9 * ac.speed);
+        let v = |q| ac.value(q);
+        let per_rad = v(Param::ZAlpha) * v(Param::MDeltaE)
+            / (v(Param::MAlpha) - v(Param::Mq) * v(Param::ZAlpha));
+        let delta_e = p.delta_e_deg.unwrap().to_radians();
+        let q0 = (n - 1.0) * G / ac.speed;
+        assert!((per_rad * delta_e / q0 - 1.0).abs() < 1e-9, "{p:?}");
+        let (a, _) = analyze_routed_with(&ac, delta_e, true).unwrap();
+        let critical = a.critical.as_ref();
+        let envelope_critical = p.critical.as_ref();
+        assert_eq!(critical.map(|c| c.p0), envelope_critical.map(|c| c.p0));
+        assert_eq!(
+            critical.map(|c| c.delta_a_deg),
+            envelope_critical.map(|c| c.delta_a_deg)
+        );
+        assert_eq!(a.first_departure, p.first_departure);
+        let limit = ac.limits.aileron_deg;
+        let margin = critical.zip(limit).map(|(c, l)| l - c.delta_a_deg.abs());
+        assert_eq!(p.margin_deg, margin);
+        checked += 1;
+    }
+    println!("envelope: {checked} of 5 random grid points trimmed and equal to import + analyze");
+}
+
+/// Bad ranges exit 2 (an input error) naming the option, before the model is even read (the
+/// source names a model that does not exist).
+#[test]
+fn bad_ranges_are_refused_before_any_work() {
+    let source = "jsbsim:no-such-model";
+    let bad = [
+        ("9000:0:500", "0.5", "reversed"),
+        ("0:9000:0", "0.5", "step"),
+        ("0", "0.3:0.9:-0.1", "step"),
+        ("0:1e9:1", "0.5", "more than"),
+        ("0:1e6:1", "0.1:1:0.01", "points"),
+        ("-100:1000:100", "0.5", "atmosphere"),
+        ("0:100000:1000", "0.5", "atmosphere"),
+        ("0:1000", "0.5", "three"),
+    ];
+    for (h, m, why) in bad {
+        let mut out = Vec::new();
+        match command(&args(source, h, m), &mut out) {
+            Err(Failure::Input(msg)) => assert!(msg.contains(why), "{h} {m}: {msg}"),
+            _ => panic!("{h} {m}: not refused as input"),
+        }
+        assert!(out.is_empty());
+    }
+}
+
+/// `--json` prints one object whose `points` carry the documented keys, with no number that is
+/// not finite; a point without level flight says why.
+#[test]
+fn json_has_one_entry_per_point_with_the_documented_keys() {
+    if !installed() {
+        return;
+    }
+    let mut out = Vec::new();
+    command(
+        &args("jsbsim:f104", "0:12000:12000", "0.3:0.6:0.3"),
+        &mut out,
+    )
+    .unwrap();
+    let v: Value = serde_json::from_slice(&out).unwrap();
+    let points = v["points"].as_array().unwrap();
+    assert_eq!(points.len(), 4);
+    let keys = [
+        "altitude_m",
+        "mach",
+        "speed_m_s",
+        "alpha_deg",
+        "delta_e_deg",
+        "trimmed",
+        "critical",
+        "critical_note",
+        "first_departure",
+        "margin_deg",
+    ];
+    for p in points {
+        assert_eq!(p["delta_e_deg"].as_f64(), Some(0.0), "{p}");
+        for k in keys {
+            assert!(p.get(k).is_some(), "{k} missing in {p}");
+        }
+        if p["trimmed"] == Value::Bool(false) {
+            assert!(
+                p["reason"].as_str().unwrap().contains("level flight"),
+                "{p}"
+            );
+            assert!(p["critical"].is_null());
+        } else {
+            let c = &p["critical"];
+            assert!(c["p0"].is_f64() && c["delta_a_deg"].is_f64(), "{p}");
+            assert!(c.get("within_limits").is_some());
+        }
+    }
+    let text = String::from_utf8(out).unwrap();
+    assert!(!text.contains("NaN") && !text.contains("inf"));
+    assert_eq!(v["untrimmed"], 1, "{text}");
+}
+
+/// `--out` writes the CSV (one row per point), the summaries and the three maps.
+#[test]
+fn out_writes_the_csv_the_summaries_and_the_maps() {
+    if !installed() {
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("envelope-out-{}", std::process::id()));
+    let mut a = args("jsbsim:f104", "0:12000:12000", "0.3:0.6:0.3");
+    a.json = false;
+    a.out = Some(dir.clone());
+    let mut out = Vec::new();
+    command(&a, &mut out).unwrap();
+    let csv = std::fs::read_to_string(dir.join("envelope.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 5, "{csv}");
+    for stem in ["critical_aileron", "critical_roll_rate", "first_departure"] {
+        for ext in ["svg", "png", "csv"] {
+            assert!(dir.join(format!("{stem}.{ext}")).is_file(), "{stem}.{ext}");
+        }
+    }
+    for name in ["summary.md", "summary.json"] {
+        assert!(dir.join(name).is_file(), "{name}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -28,6 +28,7 @@ const LAYERS: &[&str] = &[
     "clearance",
     "emit",
     "jsbsim",
+    "envelope",
     "plot",
     "present",
 ];

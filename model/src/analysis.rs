@@ -715,6 +715,15 @@ fn strip(p: &UPoly, q: &UPoly) -> UPoly {
     if p.is_zero() || q.is_zero() {
         return p;
     }
+    // Whole copies of q first (det A^4 in the Hopf polynomial): an exact division is cheap,
+    // each gcd below a pseudo-remainder sequence on p's large coefficients. Both remove monic
+    // factors of p, so the result is the same exact polynomial.
+    if q.degree().unwrap_or(0) > 0 {
+        let monic = q.monic();
+        while let Some(quotient) = p.div_exact(&monic) {
+            p = quotient;
+        }
+    }
     loop {
         let g = p.gcd(q);
         if g.degree().unwrap_or(0) == 0 {

@@ -91,6 +91,9 @@ pub struct Aircraft {
     /// The uncertain parameters of the optional `[uncertainty]` table, each with its exact
     /// interval (empty without the table); see [`Uncertain`].
     pub uncertainty: Vec<Uncertain>,
+    /// What the loader accepted with a warning (moments of inertia that break the triangle
+    /// inequalities, for instance): each a sentence naming the violation, empty when none.
+    pub warnings: Vec<String>,
 }
 
 /// One coordinate of the uncertainty box: the closed interval `[lo, hi]` (exact) of a parameter,
@@ -194,6 +197,7 @@ impl Aircraft {
             limits: Limits::default(),
             validity: Validity::default(),
             uncertainty: Vec::new(),
+            warnings: Vec::new(),
         }
     }
 

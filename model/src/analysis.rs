@@ -150,6 +150,10 @@ pub struct Analysis {
     pub critical: Option<JumpPoint>,
     /// Why there is no critical jump, or `None` when there is one.
     pub critical_note: Option<String>,
+    /// The aircraft's [`warnings`](crate::aircraft::Aircraft::warnings): what its file gives
+    /// that no rigid body has, analysed as given (absent from JSON when empty).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
     /// Eq. 5: positive roots of det A (pitch-yaw divergence), Table 1.
     pub divergence_roll_rates: Vec<f64>,
     /// Positive roots of det K (saddle-node jump points), Figs 7-8.
@@ -409,6 +413,7 @@ impl Found {
             delta_e_rad,
             critical: critical.map(|i: usize| jump[i].clone()),
             critical_note,
+            warnings: aircraft.warnings.clone(),
             divergence_roll_rates: self.divergence.clone(),
             jump,
             det_k_poles,
@@ -709,6 +714,15 @@ fn strip(p: &UPoly, q: &UPoly) -> UPoly {
     let mut p = p.clone();
     if p.is_zero() || q.is_zero() {
         return p;
+    }
+    // Whole copies of q first (det A^4 in the Hopf polynomial): an exact division is cheap,
+    // each gcd below a pseudo-remainder sequence on p's large coefficients. Both remove monic
+    // factors of p, so the result is the same exact polynomial.
+    if q.degree().unwrap_or(0) > 0 {
+        let monic = q.monic();
+        while let Some(quotient) = p.div_exact(&monic) {
+            p = quotient;
+        }
     }
     loop {
         let g = p.gcd(q);

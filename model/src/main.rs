@@ -119,6 +119,9 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
         Command::Clear(a) => commands::clear_command(a, out),
         Command::Envelope(a) => model::present::envelope::command(a, out),
         Command::Convert(a) => commands::convert_command(a, out),
+        Command::Import { args } if args.iter().any(|a| a == "--analyze") => Ok(ExitCode::from(
+            model::present::catalogue::catalogue_command(args, out),
+        )),
         Command::Import { args } => Ok(ExitCode::from(model::jsbsim::cli::run(args, out))),
         Command::Emit(a) => commands::emit_command(a, out),
     }

@@ -557,13 +557,15 @@ fn report_with_no_yaw_stiffness_is_bounded_by_the_aileron_range_and_says_what_it
 
 #[test]
 fn answers_that_are_not_finite_or_cannot_be_told_apart_are_refused() {
-    // A main answer that is not finite is refused; a secondary section alone is withheld
+    // An inertia coefficient beyond f64 (E = 0.6/1e-309) is refused, with no NaN printed; a
+    // secondary section alone is withheld
     // (`a_tiny_elevator_withholds_the_zero_sideslip_section_only`).
     let dir = scratch("tiny-ix");
     let c = std::fs::read_to_string(repo("aircraft/c.toml")).unwrap();
     let ix = dir.join("ix.toml");
-    std::fs::write(&ix, c.replace("ix = 1.0", "ix = 1e-308")).unwrap();
+    std::fs::write(&ix, c.replace("ix = 1.0", "ix = 1e-309")).unwrap();
     let out = model(&["analyze", ix.to_str().unwrap()]);
+    assert!(stderr(&out).contains("beyond f64"), "{}", stderr(&out));
     assert_eq!(
         out.status.code(),
         Some(2),

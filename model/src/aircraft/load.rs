@@ -53,6 +53,7 @@ mod scale;
 mod suggest;
 mod syntax;
 mod toml_tree;
+mod triangle;
 mod uncertainty;
 
 use body_axis::{BodyAxis, BodyAxisTables};

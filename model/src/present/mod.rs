@@ -4,6 +4,7 @@
 //! (`analysis`, `clearance`, `continuation`, `simulation`) return results and never import this
 //! module; `main.rs` parses the arguments and calls one function of [`commands`] per command.
 
+pub mod catalogue;
 pub mod clearance;
 pub mod commands;
 pub mod envelope;

@@ -229,7 +229,17 @@ pub fn finite_angle(name: &str, deg: f64) -> Result<f64, Failure> {
 
 /// `A`/`B` (any case) name the built-in aircraft; anything else is a TOML file. A name that is
 /// neither a built-in nor a file gets the list of built-ins and the shipped file it may mean.
+/// The aircraft's warnings (an inertia no rigid body has) go to stderr.
 pub fn load_aircraft(arg: &str) -> Result<Aircraft, String> {
+    let ac = read_aircraft(arg)?;
+    for w in &ac.warnings {
+        eprintln!("warning: {w}");
+    }
+    Ok(ac)
+}
+
+/// The aircraft `arg` names, as [`load_aircraft`] without printing its warnings.
+fn read_aircraft(arg: &str) -> Result<Aircraft, String> {
     if let Some(ac) = Aircraft::builtin(arg) {
         return Ok(ac);
     }

@@ -43,6 +43,9 @@ pub fn analysis(a: &Analysis) -> String {
         shown(&a.aircraft),
         fixed(a.delta_e_rad.to_degrees(), 4)
     );
+    for w in &a.warnings {
+        s += &format!("Warning: {w}.\n\n");
+    }
     match (&a.critical, &a.critical_note) {
         (Some(c), _) => {
             s += &format!(

@@ -151,6 +151,10 @@ fn prem(a: &[BigInt], b: &[BigInt]) -> ZPoly {
 /// Primitive gcd with positive leading coefficient (primitive pseudo-remainder sequence).
 /// Zero only if both inputs are zero.
 pub(super) fn z_gcd(a: &[BigInt], b: &[BigInt]) -> ZPoly {
+    // Most pairs are coprime: a certificate modulo a prime answers without the sequence.
+    if certainly_coprime(a, b) || certainly_coprime(b, a) {
+        return vec![BigInt::one()];
+    }
     let (mut r0, mut r1) = if a.len() >= b.len() {
         (a.to_vec(), b.to_vec())
     } else {

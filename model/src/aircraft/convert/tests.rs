@@ -266,6 +266,20 @@ fn analyze_agrees_on_body_axis_and_converted_files() {
 }
 
 #[test]
+fn principal_moments_that_break_a_triangle_inequality_give_a_warning() {
+    // ix' + iy < iz': 10000 + 40000 < 60000, analysed with E = 2.
+    let a = parse(&body("iz = 50000", "iz = 60000"), FILE).unwrap();
+    assert_eq!(*a.exact(Param::E), decimal_to_rational("2").unwrap());
+    let [w] = a.warnings.as_slice() else {
+        panic!("one warning expected: {:?}", a.warnings);
+    };
+    for needle in [&format!("{FILE}:"), "table `[inertia]`", "ix' + iy < iz'"] {
+        assert!(w.contains(needle), "no `{needle}` in: {w}");
+    }
+    assert!(parse(BODY, FILE).unwrap().warnings.is_empty());
+}
+
+#[test]
 fn terminating_decimals_are_written_in_full() {
     let q = |s: &str| decimal_to_rational(s).unwrap();
     assert_eq!(toml_number(&q("-12")), "-12.0");

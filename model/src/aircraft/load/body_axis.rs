@@ -4,6 +4,7 @@
 
 use super::super::convert::{self, BodyAxisInput, Coefficient};
 use super::super::{rational_to_f64, Aircraft, Param};
+use super::triangle::triangle_violation;
 use super::{
     inertia_coefficients, keys_of, list, qualified, AircraftError, Common, Cx, Table, Tables,
     F64_RANGE,
@@ -130,9 +131,10 @@ impl Cx<'_> {
         })
     }
 
-    /// The aircraft of a converted body-axis file, refused when the principal moments are not
-    /// those of a rigid body, a conversion factor or derivative leaves f64 (see `load/scale.rs`),
-    /// or the aileron has no roll authority in principal axes.
+    /// The aircraft of a converted body-axis file, refused when a principal moment is not
+    /// positive, a conversion factor or derivative leaves f64 (see `load/scale.rs`),
+    /// or the aileron has no roll authority in principal axes; principal moments that break a
+    /// triangle inequality give a warning (see `load/triangle.rs`).
     pub(super) fn body_axis_aircraft(
         &self,
         name: String,
@@ -149,24 +151,24 @@ impl Cx<'_> {
             f(iy),
             f(iz)
         );
-        let unphysical = |problem: String| AircraftError::UnphysicalInertia {
-            at: self.at(inertia.span.as_ref()),
-            problem: format!("{problem} (principal moments {moments})"),
-        };
+        // The x-z block [[ix, -ixz], [-ixz, iz]] has the principal moments ix', iz' as its
+        // eigenvalues: both are positive iff ix iz - ixz^2 > 0 (ix, iz > 0 read before).
         for (name, m) in [("ix'", ix), ("iz'", iz)] {
             if !m.is_positive() {
-                return Err(unphysical(format!("principal moment {name} <= 0")));
+                return Err(AircraftError::UnphysicalInertia {
+                    at: self.at(inertia.span.as_ref()),
+                    problem: format!(
+                        "principal moment {name} <= 0 (principal moments {moments}): ix iz - ixz^2 <= 0 \
+                         makes the x-z inertia matrix singular or indefinite, and the \
+                         equations of motion divide by the principal moments"
+                    ),
+                });
             }
         }
-        for (a, b, c, text) in [
-            (ix, iy, iz, "ix' + iy < iz'"),
-            (ix, iz, iy, "ix' + iz' < iy"),
-            (iy, iz, ix, "iy + iz' < ix'"),
-        ] {
-            if a + b < *c {
-                return Err(unphysical(text.to_string()));
-            }
-        }
+        let warnings: Vec<String> = triangle_violation(["ix'", "iy", "iz'"], [ix, iy, iz])
+            .into_iter()
+            .map(|w| format!("{}: table `[inertia]`: {w}", self.at(inertia.span.as_ref())))
+            .collect();
         self.conversion_factors(input, converted, tables)?;
         let l_delta_a = &converted.derivatives[Param::LDeltaA.index() - 3];
         if l_delta_a.is_zero() {
@@ -193,9 +195,12 @@ impl Cx<'_> {
                 });
             }
         }
-        // Within the triangle inequalities (checked above) every coefficient lies in [-1, 1].
+        // Within the triangle inequalities every coefficient lies in [-1, 1]; a file that
+        // breaks one has a coefficient outside and its warning.
         let mut values = inertia_coefficients(ix, iy, iz).to_vec();
         values.extend(converted.derivatives.iter().cloned());
-        Ok(Aircraft::new(name, values, converted.speed_f64()))
+        let mut aircraft = Aircraft::new(name, values, converted.speed_f64());
+        aircraft.warnings = warnings;
+        Ok(aircraft)
     }
 }

@@ -175,11 +175,12 @@ pub enum AircraftError {
         /// The value as written.
         value: String,
     },
-    /// Inertias (body-axis, or principal moments given directly) that are not those of a
-    /// rigid body.
+    /// Inertias (body-axis, or principal moments given directly) the equations of motion
+    /// cannot take: a principal moment <= 0, or inertia coefficients beyond f64.
     #[error(
-        "{at}: table `[inertia]`: {problem}; expected principal moments > 0 that satisfy the \
-         triangle inequalities (each at most the sum of the other two)"
+        "{at}: table `[inertia]`: {problem}; expected principal moments > 0 whose inertia \
+         coefficients C, D, E are finite in f64 (moments that break a triangle inequality are \
+         analysed, with a warning)"
     )]
     UnphysicalInertia {
         /// The `[inertia]` header.

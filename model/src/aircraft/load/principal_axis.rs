@@ -39,6 +39,7 @@ impl Cx<'_> {
         let mut aircraft = Aircraft::new(common.name, values, speed);
         aircraft.limits = common.limits;
         aircraft.validity = common.validity;
+        aircraft.warnings = self.moment_warnings(inertia);
         if let Some(t) = tables.get("uncertainty") {
             aircraft.uncertainty = self.uncertainty(t, &aircraft)?;
         }
@@ -125,7 +126,9 @@ impl Cx<'_> {
                 self.one_rigid_body(table, given)?;
                 Ok(vec![c.clone(), d.clone(), e.clone()])
             }
-            [ix, iy, iz] => self.coefficients_of_moments(table, [ix, iy, iz]),
+            // Moments that break a triangle inequality give a coefficient outside [-1, 1] and a
+            // warning (`load/triangle.rs`).
+            [ix, iy, iz] => self.coefficients_in_f64(table, [ix, iy, iz]),
             _ => Err(AircraftError::InertiaSet {
                 at: self.at(table.span.as_ref()),
                 problem: "incomplete set".to_string(),
@@ -162,29 +165,6 @@ impl Cx<'_> {
                 present.join(", ")
             ),
         })
-    }
-
-    /// C, D, E of principal moments ix, iy, iz, refused unless they satisfy the triangle
-    /// inequalities of a rigid body.
-    fn coefficients_of_moments(
-        &self,
-        table: &Table<'_>,
-        [ix, iy, iz]: [&BigRational; 3],
-    ) -> Result<Vec<BigRational>, AircraftError> {
-        for (a, b, c, text) in [
-            (ix, iy, iz, "ix + iy < iz"),
-            (ix, iz, iy, "ix + iz < iy"),
-            (iy, iz, ix, "iy + iz < ix"),
-        ] {
-            if a + b < *c {
-                return Err(AircraftError::UnphysicalInertia {
-                    at: self.at(table.span.as_ref()),
-                    problem: text.to_string(),
-                });
-            }
-        }
-        // Within the triangle inequalities every coefficient lies in [-1, 1].
-        Ok(inertia_coefficients(ix, iy, iz).to_vec())
     }
 
     /// The 15 derivatives in [`Param::ALL`] order.

@@ -22,6 +22,9 @@ pub(super) fn markdown(s: &Summary, de: f64) -> String {
         crate::aircraft::shown(&a.aircraft),
         de.to_degrees()
     );
+    for w in &a.warnings {
+        m += &format!("**Warning**: {w}.\n\n");
+    }
     m += &format!(
         "## First loss of stability\n\n```text\n{}\n```\n\n",
         first_departure_text(a).trim_end()

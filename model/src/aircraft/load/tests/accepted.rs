@@ -130,6 +130,41 @@ fn inertia_coefficients_within_rounding_of_a_rigid_body_are_accepted() {
 }
 
 #[test]
+fn moments_that_break_a_triangle_inequality_are_analysed_with_a_warning() {
+    // ix + iy < iz: E = (iz - iy)/ix = 2, outside [-1, 1], kept exactly.
+    let broken = parse(
+        &replace(
+            "C = 0.959\nD = 0.786\nE = 0.705\n",
+            "ix = 1\niy = 5\niz = 7\n",
+        ),
+        FILE,
+    )
+    .unwrap();
+    assert_eq!(*broken.exact(Param::E), decimal_to_rational("2").unwrap());
+    let [w] = broken.warnings.as_slice() else {
+        panic!("one warning expected: {:?}", broken.warnings);
+    };
+    for needle in [
+        &format!("{FILE}:2:"),
+        "ix + iy < iz",
+        "C, D, E = 1.2000, 0.5714, 2.0000",
+    ] {
+        assert!(w.contains(needle), "no `{needle}` in: {w}");
+    }
+    // A lamina (iz = ix + iy exactly) is a rigid body's: no warning.
+    let lamina = parse(
+        &replace(
+            "C = 0.959\nD = 0.786\nE = 0.705\n",
+            "ix = 2\niy = 5\niz = 7\n",
+        ),
+        FILE,
+    )
+    .unwrap();
+    assert!(lamina.warnings.is_empty(), "{:?}", lamina.warnings);
+    assert!(parse(GOOD, FILE).unwrap().warnings.is_empty());
+}
+
+#[test]
 fn dotted_and_inline_tables_work_and_keep_lines() {
     let text = "inertia = { ix = 1, iy = 2, iz = 3 }\n\
                 derivatives.z_alpha = -1\nderivatives.y_beta = -1\nderivatives.l_p = -1\n\

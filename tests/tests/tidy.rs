@@ -2,7 +2,8 @@
 //! `//!` line saying what it is, and comments cite equations in one form, "Eq. N" or "Eqs N-M",
 //! so that a search for "Eq. 27" finds every mention; and no comment cites an issue number
 //! (comments describe the code as it is, git keeps its history). Generated files
-//! (`// @generated`) are exempt; they are checked by `model emit --check`.
+//! (`// @generated`) are exempt; they are checked by `model emit --check`. No hand-written file
+//! grows past 800 lines (one concept per file).
 
 use std::path::{Path, PathBuf};
 
@@ -177,4 +178,18 @@ fn ci_runs_the_readme_test_command_stage_by_stage() {
         readme.contains(&fenced),
         "the README's test command is not the stages of .ci/run:\n{command}"
     );
+}
+
+/// One concept per file: a hand-written source longer than this holds several, and is split
+/// into files named for what they hold.
+const MAX_LINES: usize = 800;
+
+#[test]
+fn no_hand_written_source_file_is_longer_than_800_lines() {
+    let long: Vec<String> = hand_written()
+        .into_iter()
+        .filter(|(_, text)| text.lines().count() > MAX_LINES)
+        .map(|(p, text)| format!("{} ({} lines)", p.display(), text.lines().count()))
+        .collect();
+    assert!(long.is_empty(), "files over {MAX_LINES} lines:\n{}", long.join("\n"));
 }

@@ -1,0 +1,271 @@
+//! `model analyze` as a user runs it: its table and JSON, the README's main job, bad input and
+//! answers that must be refused rather than printed.
+
+use super::*;
+
+#[test]
+fn analyze_json_has_the_documented_shape() {
+    let v = json(&model(&["analyze", "A", "--json"]));
+    assert_eq!(v["aircraft"], "Aircraft A");
+    assert!((v["delta_e_rad"].as_f64().unwrap() - 0.0349066).abs() < 1e-7);
+    assert_eq!(v["divergence_roll_rates"].as_array().unwrap().len(), 0);
+    let jump = v["jump"].as_array().unwrap();
+    assert_eq!(jump.len(), 2);
+    for key in [
+        "p0",
+        "delta_a_rad",
+        "delta_a_deg",
+        "alpha",
+        "beta",
+        "q",
+        "r",
+    ] {
+        assert!(jump[0][key].is_f64(), "jump[0].{key}");
+    }
+    assert!(v["det_k_poles"].is_array());
+    let dep = v["zero_sideslip"]["departure"].as_array().unwrap();
+    for key in ["p0", "delta_a_rad", "delta_a_deg", "alpha", "q", "r"] {
+        assert!(dep[0][key].is_f64(), "departure[0].{key}");
+    }
+    assert!(
+        dep[0].get("beta").is_none(),
+        "beta is zero by construction and not reported"
+    );
+}
+
+#[test]
+fn analyze_prints_a_table_for_b_and_a_users_file() {
+    let out = model(&["analyze", "B"]);
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("Aircraft B"));
+    let (divergence, jump) = (reference::B_DIVERGENCE_P0[0], reference::B_JUMP_P0[3]);
+    assert!(text.contains(&format!("{divergence:.6}")) && text.contains(&format!("{jump:.6}")));
+    let c = json(&model(&[
+        "analyze",
+        &repo("aircraft/c.toml"),
+        "--json",
+        "--delta-e-deg",
+        "-1.5",
+    ]));
+    assert!((c["delta_e_rad"].as_f64().unwrap() + 1.5f64.to_radians()).abs() < 1e-15);
+    // The built-in A and the shipped a.toml are the same aircraft.
+    let from_file = json(&model(&["analyze", &repo("aircraft/a.toml"), "--json"]));
+    let builtin = json(&model(&["analyze", "A", "--json"]));
+    assert_eq!(from_file["jump"], builtin["jump"]);
+}
+
+#[test]
+fn bad_input_exits_2_with_a_message_naming_the_file_and_key() {
+    let dir = std::env::temp_dir().join(format!("model-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let text = std::fs::read_to_string(repo("aircraft/a.toml")).unwrap();
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, text.replace("l_delta_a = -327.28", "l_delta_a = 0.0")).unwrap();
+    let out = model(&["analyze", bad.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("bad.toml") && err.contains("l_delta_a"),
+        "{err}"
+    );
+    assert!(!err.contains("panicked"), "{err}");
+
+    let out = model(&["analyze", dir.join("missing.toml").to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("missing.toml"));
+
+    let out = model(&["analyze", "A", "--delta-e-deg", "nan"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("delta_e"));
+}
+
+#[test]
+fn answers_that_are_not_finite_or_cannot_be_told_apart_are_refused() {
+    // An inertia coefficient beyond f64 (E = 0.6/1e-309) is refused, with no NaN printed; a
+    // secondary section alone is withheld
+    // (`a_tiny_elevator_withholds_the_zero_sideslip_section_only`).
+    let dir = scratch("tiny-ix");
+    let c = std::fs::read_to_string(repo("aircraft/c.toml")).unwrap();
+    let ix = dir.join("ix.toml");
+    std::fs::write(&ix, c.replace("ix = 1.0", "ix = 1e-309")).unwrap();
+    let out = model(&["analyze", ix.to_str().unwrap()]);
+    assert!(stderr(&out).contains("beyond f64"), "{}", stderr(&out));
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    assert!(!String::from_utf8_lossy(&out.stdout).contains("NaN"));
+    // m_alpha = -1e308: distinct exact poles (and jump roots) that round to one f64.
+    let (dir2, big) = variant("malpha", &[("m_alpha = -13.52504", "m_alpha = -1e308")]);
+    let out = model(&["analyze", big.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("cannot be told apart in f64"),
+        "{}",
+        stderr(&out)
+    );
+    for d in [dir, dir2] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
+}
+
+#[test]
+fn negative_values_are_accepted_and_judged_in_the_unit_typed() {
+    let out = model(&["simulate", "A", "--delta-a-deg", "-5", "--t-end", "-1"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    assert!(
+        err.contains("--t-end = -1") && err.contains("positive"),
+        "{err}"
+    );
+    let out = model(&["analyze", "A", "--delta-e-deg", "-inf"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("--delta-e-deg = -inf"),
+        "{}",
+        stderr(&out)
+    );
+    let out = model(&["analyze", "A", "--delta-e-deg", "1e9"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    assert!(
+        err.contains("1000000000") && err.contains("90 deg") && !err.contains("rad"),
+        "{err}"
+    );
+    // continue's range is in degrees, negative numbers welcome.
+    let v = json(&model(&[
+        "continue",
+        "A",
+        "--min-deg",
+        "-1e-300",
+        "--max-deg",
+        "10",
+        "--json",
+    ]));
+    let max = v["branches"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|b| b["points"].as_array().unwrap())
+        .map(|p| p["delta_a"].as_f64().unwrap())
+        .fold(f64::MIN, f64::max);
+    assert!(max <= 10f64.to_radians() + 1e-12, "{max}");
+    let out = model(&["continue", "A", "--min-deg", "5", "--max-deg", "-5"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(stderr(&out).contains("--min-deg = 5"), "{}", stderr(&out));
+}
+
+#[test]
+fn names_are_escaped_and_unknown_names_get_the_built_ins() {
+    let (dir, path) = variant(
+        "ctrl",
+        &[(
+            "name = \"Aircraft A\"",
+            "name = \"Evil\\u001b[31m red\\u0007\"",
+        )],
+    );
+    // A name with control characters is refused, naming the key.
+    let out = model(&["analyze", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(stderr(&out).contains("key `name`"), "{}", stderr(&out));
+    // A file without a name is named by its file name, printed escaped.
+    let text = std::fs::read_to_string(repo("aircraft/a.toml")).unwrap();
+    let unnamed = dir.join("Evil\u{1b}[31m red\u{7}.toml");
+    std::fs::write(&unnamed, text.replace("name = \"Aircraft A\"\n", "")).unwrap();
+    let out = model(&["analyze", unnamed.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(!out.stdout.contains(&0x1b) && !out.stdout.contains(&0x07));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("Evil\\u{1b}[31m red\\u{7}"));
+    let out = model(&["analyze", "C"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    assert!(
+        err.contains("A and B") && err.contains("aircraft/c.toml"),
+        "{err}"
+    );
+    let help = model(&["analyze", "--help"]);
+    assert!(
+        String::from_utf8_lossy(&help.stdout).contains("else the path of an aircraft TOML file")
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The fenced block of `lang` that follows `after` in the README.
+fn readme_block(after: &str, lang: &str) -> String {
+    let readme = std::fs::read_to_string(repo("README.md")).unwrap();
+    let rest = &readme[readme.find(after).unwrap_or_else(|| panic!("{after}")) + after.len()..];
+    let fence = format!("```{lang}\n");
+    let start = rest.find(&fence).unwrap() + fence.len();
+    let end = start + rest[start..].find("```").unwrap();
+    rest[start..end].to_string()
+}
+
+#[test]
+fn readme_shows_the_real_output_of_the_main_job() {
+    let text = model(&["analyze", "A"]);
+    assert_eq!(
+        readme_block(
+            "cargo run --release -p model -- analyze A\n```\n\nprints",
+            "text"
+        ),
+        String::from_utf8_lossy(&text.stdout)
+    );
+    let json = model(&["analyze", "A", "--json"]);
+    assert_eq!(
+        readme_block("`analyze A --json` prints", "json"),
+        String::from_utf8_lossy(&json.stdout)
+    );
+}
+
+/// A tiny elevator deflection makes two zero-sideslip departure roots round to the same f64:
+/// that section alone is withheld, with the reason, and the main answer is printed (text and
+/// JSON, exit 0).
+#[test]
+fn a_tiny_elevator_withholds_the_zero_sideslip_section_only() {
+    let out = model(&["analyze", "A", "--delta-e-deg", "1e-300"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    // At delta_e = 0 aircraft A's primary branch has no fold: that is the main answer.
+    assert!(
+        text.contains("No critical jump: the primary branch reaches |delta_a| = 90.0 deg"),
+        "{text}"
+    );
+    assert!(
+        text.contains("  withheld: two zero-sideslip departure roots"),
+        "{text}"
+    );
+    let v = json(&model(&[
+        "analyze",
+        "A",
+        "--delta-e-deg",
+        "1e-300",
+        "--json",
+    ]));
+    assert!(v["critical"].is_null(), "{v}");
+    assert!(
+        v["critical_note"]
+            .as_str()
+            .unwrap()
+            .contains("without a jump"),
+        "{v}"
+    );
+    let zs = &v["zero_sideslip"];
+    assert!(
+        zs["withheld"]
+            .as_str()
+            .unwrap()
+            .contains("cannot be told apart"),
+        "{zs}"
+    );
+    assert_eq!(zs["departure"], serde_json::json!([]));
+    // An ordinary elevator answers the section.
+    let v = json(&model(&["analyze", "A", "--json"]));
+    assert!(v["zero_sideslip"]["withheld"].is_null());
+    assert!(!v["zero_sideslip"]["departure"]
+        .as_array()
+        .unwrap()
+        .is_empty());
+}

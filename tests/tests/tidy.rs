@@ -191,5 +191,9 @@ fn no_hand_written_source_file_is_longer_than_800_lines() {
         .filter(|(_, text)| text.lines().count() > MAX_LINES)
         .map(|(p, text)| format!("{} ({} lines)", p.display(), text.lines().count()))
         .collect();
-    assert!(long.is_empty(), "files over {MAX_LINES} lines:\n{}", long.join("\n"));
+    assert!(
+        long.is_empty(),
+        "files over {MAX_LINES} lines:\n{}",
+        long.join("\n")
+    );
 }

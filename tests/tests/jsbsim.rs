@@ -366,3 +366,39 @@ fn imported_files_load_and_analyze() {
         );
     }
 }
+
+#[test]
+fn inertias_no_rigid_body_has_are_analysed_with_a_warning() {
+    let Some(root) = root() else {
+        eprintln!("skipped: {}", catalogue::HOW_TO_GET);
+        return;
+    };
+    // The eight catalogue models whose principal moments break a triangle inequality, each
+    // where it flies level (the jets at 6096 m, Mach 0.6, the L410 and the c310 slower).
+    for (name, mach) in [
+        ("787-8", 0.6),
+        ("A4", 0.6),
+        ("Concorde", 0.6),
+        ("f22", 0.6),
+        ("global5000", 0.6),
+        ("MD11", 0.6),
+        ("L410", 0.4),
+        ("c310", 0.3),
+    ] {
+        let spec = format!(
+            "jsbsim:{name} --jsbsim-root {} --altitude-m 6096 --mach {mach} --level-flight",
+            root.display()
+        );
+        let aircraft = model::jsbsim::cli::source(&spec).unwrap_or_else(|e| panic!("{e}"));
+        let [warning] = aircraft.warnings.as_slice() else {
+            panic!("{name}: one warning expected, got {:?}", aircraft.warnings);
+        };
+        assert!(
+            warning.contains("break the triangle inequality"),
+            "{warning}"
+        );
+        let analysis = model::analysis::fast::analyze_routed_with(&aircraft, 0.0349, false)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(analysis.0.warnings, aircraft.warnings, "{name}");
+    }
+}

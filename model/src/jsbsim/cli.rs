@@ -12,7 +12,9 @@ use std::path::PathBuf;
 /// Usage, for errors.
 pub const USAGE: &str = "usage: model import jsbsim <MODEL> --altitude-m H (--mach M | --speed V) \
      [--alpha-deg A | --level-flight] [--set PROPERTY=VALUE]... [--out FILE] [--jsbsim-root DIR]\n       \
-     model import jsbsim --list [--jsbsim-root DIR]";
+     model import jsbsim --list [--jsbsim-root DIR]\n       \
+     model import jsbsim --list --analyze --altitude-m H (--mach M | --speed V) \
+     (--alpha-deg A | --level-flight) [--jsbsim-root DIR]";
 
 /// The exit code of bad input.
 pub const BAD_INPUT: u8 = 2;

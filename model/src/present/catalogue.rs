@@ -35,6 +35,13 @@ pub fn catalogue_command(args: &[String], out: &mut dyn Write) -> u8 {
 
 /// The Markdown table, or why it cannot be made (no models found, no flight condition).
 fn table(args: &[String]) -> Result<String, String> {
+    if !args.iter().any(|a| a == "--list") {
+        return Err(format!(
+            "--analyze goes with --list (the whole catalogue); for one model, `model analyze \
+             \"jsbsim:MODEL ...\"`\n{}",
+            cli::USAGE
+        ));
+    }
     let mut rest: Vec<String> = args
         .iter()
         .skip(1)

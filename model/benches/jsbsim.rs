@@ -1,0 +1,70 @@
+//! Benchmarks of a JSBSim model from its XML to the answer of `analyze`: the F-104 of JSBSim's
+//! catalogue at 20,000 ft (6096 m), Mach 0.53, level flight. Run with
+//! `cargo bench -p model --bench jsbsim`; the models are found as `model import jsbsim` finds
+//! them (`JSBSIM_ROOT`, else the `jsbsim` Python package), and without them nothing is measured.
+//!
+//! - `import_f104`: read the XML, find level flight, differentiate, write the aircraft file;
+//! - `analyze_f104`: load that file and analyse it as `model analyze` does (the certified route
+//!   with departures, the exact path where it cannot certify: the F-104 has aileron yaw);
+//! - `import_and_analyze_f104`: both, the figure of "import plus analyze of one model";
+//! - `analyze_f104_jump_part`: the analysis without the departures (Hopf points, landings),
+//!   which the certified route answers.
+
+use model::analysis::fast::analyze_routed_with;
+use model::jsbsim::condition::Speed;
+use model::jsbsim::import::{import, Alpha, Request};
+
+/// The command-line tool's allocator (model/src/main.rs), so that the benchmarks measure what
+/// `model` runs.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
+fn main() {
+    let Some(root) = model::jsbsim::catalogue::root(None) else {
+        eprintln!("{}", model::jsbsim::catalogue::HOW_TO_GET);
+        return;
+    };
+    let path = root.join("aircraft/f104/f104.xml");
+    std::env::set_var("F104_XML", &path);
+    // The parametric derivation is made once per process; keep it out of every measurement.
+    let _ = analyze_routed_with(&model::aircraft::Aircraft::a(), 0.0, true);
+    divan::main();
+}
+
+fn request() -> Request {
+    Request {
+        model: std::env::var("F104_XML").expect("set by main"),
+        root: None,
+        altitude_m: 6096.0,
+        speed: Speed::Mach(0.53),
+        alpha: Alpha::LevelFlight,
+        settings: Vec::new(),
+    }
+}
+
+fn analyze(text: &str, departures: bool) {
+    let ac = model::aircraft::parse(text, "f104.toml").expect("the import loads");
+    analyze_routed_with(&ac, 2f64.to_radians(), departures).expect("the F-104 is analysed");
+}
+
+#[divan::bench(sample_count = 10)]
+fn import_f104() -> String {
+    import(&request()).expect("the F-104 imports")
+}
+
+#[divan::bench(sample_count = 10)]
+fn analyze_f104(bencher: divan::Bencher) {
+    let text = import(&request()).expect("the F-104 imports");
+    bencher.bench(|| analyze(&text, true));
+}
+
+#[divan::bench(sample_count = 10)]
+fn import_and_analyze_f104() {
+    analyze(&import(&request()).expect("the F-104 imports"), true);
+}
+
+#[divan::bench(sample_count = 10)]
+fn analyze_f104_jump_part(bencher: divan::Bencher) {
+    let text = import(&request()).expect("the F-104 imports");
+    bencher.bench(|| analyze(&text, false));
+}

@@ -90,6 +90,61 @@ pub fn set_state(
     surfaces: &[Surface],
     settings: &[(String, f64)],
 ) -> Result<Vec<String>, JsbsimError> {
+    for (name, value) in state_values(model, condition, state) {
+        env.set(name, value);
+    }
+    for (s, x) in surfaces.iter().zip(state.surfaces) {
+        for (name, value) in s.values(x) {
+            if let Some(v) = value {
+                env.set(name, v);
+            }
+        }
+    }
+    for (name, value) in settings {
+        env.set(name, *value);
+    }
+    let zeroed: Vec<String> = model
+        .functions
+        .inputs()
+        .into_iter()
+        .filter(|n| env.is_unset(n) && is_system_output(n))
+        .map(str::to_string)
+        .collect();
+    for name in &zeroed {
+        env.set(name, 0.0);
+    }
+    Ok(zeroed)
+}
+
+/// The names of the properties [`set_state`] sets from the flight state (alpha, beta, the
+/// rates, the speed and the atmosphere): the import's own variables, which a `--set` must not
+/// override, or the derivatives taken by moving them would be those of a constant.
+pub fn state_properties(model: &Model) -> Vec<&'static str> {
+    let condition = Condition {
+        altitude_m: 0.0,
+        air: Air {
+            temperature: 288.15,
+            pressure: 101_325.0,
+            density: 1.225,
+            sound_speed: 340.294,
+        },
+        speed: 100.0,
+        mach: 0.294,
+    };
+    let state = State {
+        alpha: 0.0,
+        beta: 0.0,
+        rates: [0.0; 3],
+        surfaces: [0.0; 3],
+    };
+    state_values(model, &condition, &state)
+        .into_iter()
+        .map(|(name, _)| name)
+        .collect()
+}
+
+/// Every flight-state property a model may read, with its value for `state` at `condition`.
+fn state_values(model: &Model, condition: &Condition, state: &State) -> Vec<(&'static str, f64)> {
     let vt = condition.speed * FT_PER_M;
     let (a, b) = (state.alpha, state.beta);
     let [p, q, r] = state.rates;
@@ -98,7 +153,7 @@ pub fn set_state(
     let m = &model.metrics;
     let h_ft = condition.altitude_m / M_PER_FT;
     let (u, v, w) = (vt * a.cos() * b.cos(), vt * b.sin(), vt * a.sin() * b.cos());
-    let values = [
+    [
         ("aero/alpha-rad", a),
         ("aero/alpha-deg", a.to_degrees()),
         ("aero/beta-rad", b),
@@ -147,31 +202,8 @@ pub fn set_state(
         ("flight-path/gamma-rad", 0.0),
         ("velocities/v-down-fps", 0.0),
         ("velocities/h-dot-fps", 0.0),
-    ];
-    for (name, value) in values {
-        env.set(name, value);
-    }
-    for (s, x) in surfaces.iter().zip(state.surfaces) {
-        for (name, value) in s.values(x) {
-            if let Some(v) = value {
-                env.set(name, v);
-            }
-        }
-    }
-    for (name, value) in settings {
-        env.set(name, *value);
-    }
-    let zeroed: Vec<String> = model
-        .functions
-        .inputs()
-        .into_iter()
-        .filter(|n| env.is_unset(n) && is_system_output(n))
-        .map(str::to_string)
-        .collect();
-    for name in &zeroed {
-        env.set(name, 0.0);
-    }
-    Ok(zeroed)
+    ]
+    .to_vec()
 }
 
 /// Calibrated airspeed, knots: the sea-level speed whose impact pressure equals the one at

@@ -90,6 +90,7 @@ impl Loaded {
                 model.file
             ));
         }
+        refuse_driven(&model, settings)?;
         let surfaces = surfaces(&model, &path);
         Ok(Loaded {
             model,
@@ -106,6 +107,32 @@ impl Loaded {
             surfaces: self.surfaces.clone(),
             settings: self.settings.clone(),
         }
+    }
+}
+
+/// Refuses a `--set` of a property the import moves itself: a flight-state property (alpha,
+/// beta, the rates, the speed, the atmosphere) or a form of the aileron, elevator or rudder
+/// position. Held fixed, the derivatives taken by moving it would silently come out zero.
+fn refuse_driven(model: &Model, settings: &[(String, f64)]) -> Result<(), String> {
+    use super::surfaces::Control;
+    let surfaces = [Control::Aileron, Control::Elevator, Control::Rudder]
+        .into_iter()
+        .flat_map(|c| c.properties().into_iter().map(|(name, _, _)| name));
+    let driven: Vec<&str> = super::condition::state_properties(model)
+        .into_iter()
+        .chain(surfaces)
+        .collect();
+    match settings
+        .iter()
+        .find(|(name, _)| driven.contains(&name.as_str()))
+    {
+        Some((name, _)) => Err(format!(
+            "--set {name}: the import sets this property itself, from the flight state or a \
+             control surface whose derivatives it takes (expected a configuration input such \
+             as fcs/flap-pos-norm; give the flight condition with --altitude-m, --mach or \
+             --speed and --alpha-deg or --level-flight)"
+        )),
+        None => Ok(()),
     }
 }
 

@@ -250,3 +250,23 @@ fn bad_input_on_the_command_line_exits_2() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn a_setting_of_a_property_the_import_moves_is_refused_a_configuration_input_is_not() {
+    let dir = std::env::temp_dir().join(format!("jsbsim-set-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("set.xml");
+    let aero = r#"<axis name="ROLL"><function name="l"><product>
+        <property>fcs/aileron-pos-rad</property><property>aero/alpha-rad</property>
+        <property>fcs/flap-pos-norm</property></product></function></axis>"#;
+    std::fs::write(&file, model_xml(aero, "")).unwrap();
+    let path = file.to_str().unwrap();
+    let load = |name: &str| super::import::Loaded::new(path, None, &[(name.to_string(), 0.1)]);
+    for moved in ["fcs/aileron-pos-rad", "aero/alpha-rad"] {
+        let e = load(moved).expect_err(moved);
+        assert!(e.contains(&format!("--set {moved}")), "{e}");
+        assert!(e.contains("sets this property itself"), "{e}");
+    }
+    assert!(load("fcs/flap-pos-norm").is_ok());
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -40,7 +40,9 @@ pub enum Route {
     /// Every root certified in floating point: each reported roll rate lies in a bracket that
     /// holds the exact root, the widest of relative width `.0` (at most [`MAX_WIDTH`]).
     Certified(f64),
-    /// A certificate failed (why), and the exact path answered.
+    /// The certified route did not answer (why: a case it does not cover, such as the Hopf
+    /// points of an aircraft whose aileron yaws, or a failed certificate), and the exact path
+    /// did.
     Exact(Uncertified),
 }
 

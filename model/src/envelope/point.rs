@@ -55,7 +55,8 @@ pub struct Point {
     /// The aileron limit minus |critical aileron|, deg: negative where a full-stick roll
     /// jumps; `None` without a limit or without a critical jump.
     pub margin_deg: Option<f64>,
-    /// `"certified"` or `"exact"` (a certificate failed and the exact path answered).
+    /// `"certified"` or `"exact"` (the certified route did not answer, a case it does not
+    /// cover or a failed certificate, and the exact path did).
     pub route: Option<&'static str>,
 }
 

@@ -94,8 +94,8 @@ pub fn text(env: &Envelope) -> String {
         );
     }
     s + &format!(
-        "\n{} points: {} without level flight, {} answered by the exact path (a certificate \
-         failed), {} with a full-stick roll that jumps (margin < 0)\n",
+        "\n{} points: {} without level flight, {} answered by the exact path (a case the \
+         certified route does not cover, or a failed certificate), {} with a full-stick roll that jumps (margin < 0)\n",
         env.points.len(),
         env.untrimmed,
         env.exact_fallbacks,

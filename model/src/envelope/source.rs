@@ -3,6 +3,7 @@
 //! takes for the model); the grid's `--altitude-m` and `--mach` give every flight condition,
 //! and each point is trimmed in level flight.
 
+use crate::jsbsim::cli::setting;
 use crate::jsbsim::import::Loaded;
 use std::path::PathBuf;
 
@@ -73,14 +74,6 @@ impl Source {
     pub fn load(&self) -> Result<Loaded, String> {
         Loaded::new(&self.model, self.root.as_deref(), &self.settings)
     }
-}
-
-/// One `--set PROPERTY=VALUE`.
-fn setting(kv: &str) -> Result<(String, f64), String> {
-    let bad = || format!("--set {kv}: expected PROPERTY=VALUE with a finite VALUE");
-    let (k, v) = kv.split_once('=').ok_or_else(bad)?;
-    let v = v.trim().parse::<f64>().ok().filter(|v| v.is_finite());
-    Ok((k.trim().to_string(), v.ok_or_else(bad)?))
 }
 
 #[cfg(test)]

@@ -105,8 +105,8 @@ fn parse(args: &[String]) -> Result<Command, String> {
     Ok(Command::Import(request, file))
 }
 
-/// One `--set PROPERTY=VALUE`.
-fn setting(kv: &str) -> Result<(String, f64), String> {
+/// One `--set PROPERTY=VALUE` (of an import, a `jsbsim:` source or an envelope's source).
+pub fn setting(kv: &str) -> Result<(String, f64), String> {
     let (k, v) = kv.split_once('=').ok_or_else(|| {
         format!("--set {kv}: expected PROPERTY=VALUE, e.g. fcs/flap-pos-norm=0.5")
     })?;

@@ -4,8 +4,12 @@
 //! certified route share the straight-line program below both and never name each other. Test
 //! files (`tests.rs`, `tests/`) may reach up, to check a module against an independent one.
 
+use sources::rust_files;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
+
+#[path = "support/sources.rs"]
+mod sources;
 
 /// The top-level modules of `model/src`, bottom first.
 const LAYERS: &[&str] = &[
@@ -47,21 +51,16 @@ fn files_of(m: &str) -> Vec<PathBuf> {
     if file.exists() {
         out.push(file);
     }
-    let mut stack = vec![src().join(m)];
-    while let Some(dir) = stack.pop() {
-        let Ok(entries) = std::fs::read_dir(&dir) else {
-            continue;
-        };
-        for entry in entries {
-            let path = entry.expect("directory entry").path();
-            let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
-            if path.is_dir() && name != "tests" {
-                stack.push(path);
-            } else if name.ends_with(".rs") && name != "tests.rs" {
-                out.push(path);
-            }
-        }
+    let below_m = src().join(m);
+    let mut below = Vec::new();
+    if below_m.is_dir() {
+        rust_files(&below_m, &mut below);
     }
+    out.extend(below.into_iter().filter(|p| {
+        let inner = p.strip_prefix(&below_m).unwrap_or(p);
+        p.file_name().is_some_and(|n| n != "tests.rs")
+            && !inner.components().any(|c| c.as_os_str() == "tests")
+    }));
     out
 }
 

@@ -5,21 +5,11 @@
 //! (`// @generated`) are exempt; they are checked by `model emit --check`. No hand-written file
 //! grows past 800 lines (one concept per file).
 
+use sources::rust_files;
 use std::path::{Path, PathBuf};
 
-fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    for entry in std::fs::read_dir(dir).expect("readable source tree") {
-        let path = entry.expect("directory entry").path();
-        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
-        if path.is_dir() {
-            if !matches!(name, "target" | ".git" | "generated") && !name.starts_with('.') {
-                rust_files(&path, out);
-            }
-        } else if name.ends_with(".rs") {
-            out.push(path);
-        }
-    }
-}
+#[path = "support/sources.rs"]
+mod sources;
 
 fn hand_written() -> Vec<(PathBuf, String)> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");

@@ -205,3 +205,84 @@ fn trim_factor_powers_divide_the_cleared_characteristic_coefficients() {
         }
     }
 }
+
+/// At `delta_e = 0` the zero-sideslip trim is the origin: every numerator of Eq. 35 is a
+/// multiple of `delta_e`, so step 8 makes the zero-sideslip jump and pole polynomials
+/// `det(A1)^2 f(0)` and each cleared characteristic coefficient `C_k = det(A1)^k c_k(0)`. The
+/// certified route divides those whole powers out (their double roots cannot be isolated);
+/// checked here on the parametric derivation and on the exact polynomials of A, B and random
+/// aircraft, independently of the enclosures.
+#[test]
+fn at_zero_elevator_the_zero_sideslip_factors_divide_exactly() {
+    let s = symbols();
+    for (i, num) in parametric().zs_trim.iter().enumerate() {
+        assert!(
+            num.div_var_pow(s.delta_e, 1).is_some(),
+            "zero-sideslip trim numerator {i} is a multiple of delta_e"
+        );
+    }
+    let mut rng = Rng::new(98);
+    let mut sample = vec![Aircraft::a(), Aircraft::b()];
+    sample.extend((0..size(6, 40)).map(|i| random_aircraft(&mut rng, i)));
+    let zero = [(s.beta0, model::algebra::Q::ZERO)];
+    for (i, ac) in sample.iter().enumerate() {
+        let cp = CriterionPolys::new(parametric(), ac, 0.0);
+        let values = specialisation(ac, 0.0);
+        let c = parametric_characteristic()
+            .clone()
+            .map(|ck| ck.subs_values(&values).subs_values(&zero));
+        let cleared = cleared_coefficients(&c, &[s.alpha0, s.q0, s.r0], &cp.zs_trim, &cp.zs_det);
+        let den = univariate(&cp.zs_det, s.p0);
+        let divides = |p: &model::roots::UPoly, k: usize| {
+            (0..k).try_fold(p.clone(), |rest, _| {
+                let (q, r) = rest.div_rem(&den);
+                r.is_zero().then_some(q)
+            })
+        };
+        for (k, ck) in cleared.iter().enumerate() {
+            let ck = univariate(ck, s.p0);
+            assert!(divides(&ck, k + 1).is_some(), "aircraft {i}: C{}", k + 1);
+        }
+        for (name, p) in [("zs_jump", &cp.zs_jump), ("zs_d_det", &cp.zs_d_det)] {
+            let p = univariate(p, s.p0);
+            assert!(divides(&p, 2).is_some(), "aircraft {i}: {name}");
+        }
+    }
+}
+
+/// At `delta_e = 0` (an envelope's level flight) the certified route answers without the
+/// exact path for aircraft A, and for random aircraft it gives the exact path's full answer
+/// wherever it certifies.
+#[test]
+fn certified_full_analysis_at_zero_elevator_agrees_with_the_exact_path() {
+    let (_, route) = analyze_routed_with(&Aircraft::a(), 0.0, true).unwrap();
+    assert!(matches!(route, Route::Certified(_)), "{route:?}");
+    let mut rng = Rng::new(1011);
+    let (mut certified, mut fallbacks) = (0usize, Vec::new());
+    let n = size(100, 1000);
+    for i in 0..n {
+        let ac = without_aileron_yaw(random_aircraft(&mut rng, i));
+        let (Ok(e), Ok((f, route))) = (
+            analyze_with(&ac, 0.0, true),
+            analyze_routed_with(&ac, 0.0, true),
+        ) else {
+            continue;
+        };
+        let w = match route {
+            Route::Certified(w) => {
+                certified += 1;
+                w
+            }
+            Route::Exact(why) => {
+                fallbacks.push(why);
+                0.0
+            }
+        };
+        let same = same_analysis(&e, &f, w).and_then(|()| same_departures(&e, &f, w));
+        if let Err(why) = same {
+            panic!("aircraft {i} ({ac:?}): {why}");
+        }
+    }
+    println!("{n} aircraft at delta_e = 0: {certified} certified, fallbacks {fallbacks:?}");
+    assert!(certified > 0, "the comparison must not be empty");
+}

@@ -23,9 +23,10 @@ pub enum Criterion {
     Poles,
     /// det A1 of the zero-sideslip trim.
     ZsDet,
-    /// `det J5 det(A1)^2` at the zero-sideslip trim.
+    /// `det J5 det(A1)^2` at the zero-sideslip trim (`det J5` where that trim is the origin,
+    /// as [`EnclosedPolys::zs_jump`](super::EnclosedPolys::zs_jump)).
     ZsJump,
-    /// `d det(A1)^2` at the zero-sideslip trim.
+    /// `d det(A1)^2` at the zero-sideslip trim (`d` at the origin).
     ZsDDet,
     /// The Hopf polynomial of [`EnclosedHopf`](super::EnclosedHopf).
     Hopf,

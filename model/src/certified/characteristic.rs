@@ -31,21 +31,31 @@ pub(super) fn hopf_in<M: Mode>(
     for n in num {
         M::univariate(n).map_err(uncovered)?;
     }
+    // A trim at the origin (every numerator zero: the zero-sideslip trim at delta_e = 0) makes
+    // each `C_k = den^k c_k(0)`, whose surplus powers of `den` would give Delta4 multiple roots
+    // at den's roots: there the whole power is divided out and Delta4 taken of `c_k(0)` itself
+    // (`f = 1`), the exact path's polynomial once it strips den's roots.
+    let origin = num.iter().all(|n| M::in_aileron(n).is_empty());
     let mut c = Vec::with_capacity(5);
     let mut products = TrimProducts::new(m, den, 1);
     for (k, power) in TRIM_FACTOR_POWERS.iter().enumerate() {
         let cleared = M::univariate(&m.clear_with(&groups[k], &lifted[k], num, den, &mut products))
             .map_err(uncovered)?;
+        let power = if origin { k as u32 + 1 } else { *power };
         c.push(
             cleared
-                .div_exact(&scale.pow(*power))
+                .div_exact(&scale.pow(power))
                 .ok_or(Uncertified::Degenerate)?,
         );
     }
     Ok(Reduced {
         c: c.try_into()
             .unwrap_or_else(|_| unreachable!("five coefficients")),
-        f: scale,
+        f: if origin {
+            M::Coef::constant(I::point(1.0))
+        } else {
+            scale
+        },
     })
 }
 

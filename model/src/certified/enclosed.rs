@@ -7,7 +7,7 @@ use super::dense::{IPoly, IPoly2};
 use super::elimination::eliminate;
 use super::isolate::Uncertified;
 use super::mode::InP0;
-use super::rolls::{Unconstrained, ZeroSideslip};
+use super::rolls::{without_origin_factor, Unconstrained, ZeroSideslip};
 use super::tape;
 use super::values::Values;
 use crate::aircraft::Param;
@@ -37,9 +37,10 @@ pub struct EnclosedPolys {
     pub zs_det: IPoly,
     /// Numerators of [alpha0, Q0, R0] of the zero-sideslip trim over `zs_det`.
     pub zs_trim: [IPoly; 3],
-    /// `det J5 det(A1)^2` at the zero-sideslip trim.
+    /// `det J5 det(A1)^2` at the zero-sideslip trim (`det J5` alone where that trim is the
+    /// origin, at `delta_e = 0`: see `without_origin_factor`).
     pub zs_jump: IPoly,
-    /// `d det(A1)^2` at the zero-sideslip trim.
+    /// `d det(A1)^2` at the zero-sideslip trim (`d` alone at the origin, as `zs_jump`).
     pub zs_d_det: IPoly,
     /// The lateral control determinant `l_delta_a n_delta_r - l_delta_r n_delta_a`.
     pub lateral: I,
@@ -111,6 +112,13 @@ impl EnclosedPolys {
         let zs_det = take();
         let zs_trim: [IPoly; 3] = std::array::from_fn(|_| take());
         let (zs_jump, zs_d_det) = (take(), take());
+        // At delta_e = 0 the zero-sideslip trim is the origin (see `without_origin_factor`);
+        // the tape's numerators are then zero up to its rounding bound, so the elevator decides.
+        let zs = if delta_e_rad == 0.0 {
+            without_origin_factor(&zs_jump, &zs_d_det, &zs_det)
+        } else {
+            Ok((zs_jump, zs_d_det))
+        };
         let at = |p: Param| params[Param::ALL.iter().position(|q| *q == p).unwrap_or(0)];
         let lateral =
             at(Param::LDeltaA) * at(Param::NDeltaR) - at(Param::LDeltaR) * at(Param::NDeltaA);
@@ -118,6 +126,7 @@ impl EnclosedPolys {
         let eliminate =
             |f: &IPoly2| eliminate(&trim_condition.0, &f.0, &det_a).map(|p: IPoly| p.symmetric());
         Some((|| {
+            let (zs_jump, zs_d_det) = zs?;
             Ok(EnclosedPolys {
                 jump: eliminate(&jump_at)?,
                 poles: eliminate(&d_at)?,

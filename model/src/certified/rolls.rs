@@ -3,7 +3,7 @@
 //! zero-sideslip roll (Eqs 32-35).
 
 use super::compiled::Parametric;
-use super::elimination::eliminate;
+use super::elimination::{eliminate, Coeff};
 use super::isolate::Uncertified;
 use super::lifted::Lifted;
 use super::mode::Mode;
@@ -86,15 +86,40 @@ impl<M: Mode> ZeroSideslip<M> {
         let mut products = TrimProducts::new(m, &den, TRIM_DEGREE);
         let zs_jump = m.clear_with(&c.zs_det_j5, &l.zs_det_j5, &num, &den, &mut products);
         let zs_d_det = m.clear_with(&c.zs_d, &l.zs_d, &num, &den, &mut products);
+        let zs_det = M::univariate(&den)?;
+        let (zs_jump, zs_d_det) = (M::univariate(&zs_jump)?, M::univariate(&zs_d_det)?);
+        let origin = num.iter().all(|n| M::in_aileron(n).is_empty());
+        let (zs_jump, zs_d_det) = if origin {
+            without_origin_factor(&zs_jump, &zs_d_det, &zs_det)?
+        } else {
+            (zs_jump, zs_d_det)
+        };
         Ok(ZeroSideslip {
-            zs_jump: M::univariate(&zs_jump)?,
-            zs_d_det: M::univariate(&zs_d_det)?,
+            zs_jump,
+            zs_d_det,
             zs_trim: [
                 M::univariate(&num[0])?,
                 M::univariate(&num[1])?,
                 M::univariate(&num[2])?,
             ],
-            zs_det: M::univariate(&den)?,
+            zs_det,
         })
     }
+}
+
+/// The zero-sideslip jump and pole polynomials `zs_jump = det(A1)^2 det J5` and
+/// `zs_d_det = det(A1)^2 d` of a zero-sideslip trim at the origin (every numerator of Eq. 35 is
+/// a multiple of `m_delta_e delta_e`, so at `delta_e = 0` alpha0 = Q0 = R0 = 0), divided by
+/// their common factor `det(A1)^2`: step 8 makes them `det(A1)^2 f(0)` there, whose double
+/// roots at det A1's roots no isolation can separate, and which the exact path cancels
+/// (`zs_jump / zs_d_det` is det K either way). The division is exact by that structure, so the
+/// quotients' enclosures hold.
+pub(super) fn without_origin_factor<C: Coeff>(
+    zs_jump: &C,
+    zs_d_det: &C,
+    zs_det: &C,
+) -> Result<(C, C), Uncertified> {
+    let square = zs_det.pow(TRIM_DEGREE);
+    let divide = |p: &C| p.div_exact(&square).ok_or(Uncertified::Degenerate);
+    Ok((divide(zs_jump)?, divide(zs_d_det)?))
 }

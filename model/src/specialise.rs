@@ -25,6 +25,7 @@ use num_traits::Zero;
 use std::sync::OnceLock;
 
 pub mod hopf;
+pub mod hopf_in_aileron;
 
 /// The symbol values of an aircraft's data (every [`Param`], exact), without any control.
 pub fn aircraft_values(aircraft: &Aircraft) -> Vec<(Sym, Q)> {

@@ -19,6 +19,9 @@ use crate::equations::symbols;
 use crate::roots::{real_roots, UPoly};
 use crate::specialise::from_univariate;
 use crate::specialise::hopf::{dense_hopf, weighted_integer};
+use crate::specialise::hopf_in_aileron::{
+    dense_in_aileron, from_in_aileron, stripped_hopf_in_aileron,
+};
 use nalgebra::{Complex, Matrix5, Vector5};
 use serde::Serialize;
 
@@ -83,7 +86,8 @@ pub struct FirstDeparture {
 /// The Hopf part of the closed form specialised to one aircraft.
 #[derive(Clone, Debug)]
 pub struct HopfPolys {
-    /// `det(A)^10 Delta4` at the trim, in P0 and delta_a.
+    /// `det(A)^10 Delta4` at the trim, in P0 and delta_a (with aileron yaw `det(A)^6 Delta4`,
+    /// the factor taken out before the resultant: [`crate::specialise::hopf_in_aileron`]).
     pub hopf_at: Poly,
     /// The Hopf polynomial in P0 (delta_a eliminated, det A's roots removed).
     pub hopf: UPoly,
@@ -204,10 +208,20 @@ impl HopfPolys {
         // Without aileron yaw everything is univariate in P0: dense arithmetic is much faster.
         let (hopf_at, hopf) = match dense_hopf(&ci, &t4, &cp.trim, &cp.det_a) {
             Some(u) => (from_univariate(&u), u),
+            // With aileron yaw, det A's factor det(A)^4 is taken out before the resultant.
             None => {
-                let hopf_at = hopf_at(&cleared_coefficients(&ci, &t4, &cp.trim, &cp.det_a));
-                let hopf = resultant_in_aileron(&cp.trim_condition, &hopf_at);
-                (hopf_at, hopf)
+                let g = dense_in_aileron(&cp.trim_condition);
+                match stripped_hopf_in_aileron(&ci, &t4, &cp.trim, &cp.det_a) {
+                    Some(h) if g.len() == 3 && h.len() >= 3 => {
+                        (from_in_aileron(&h), resultant_dense(&g, &h))
+                    }
+                    _ => {
+                        let cleared = cleared_coefficients(&ci, &t4, &cp.trim, &cp.det_a);
+                        let hopf_at = hopf_at(&cleared);
+                        let hopf = resultant_in_aileron(&cp.trim_condition, &hopf_at);
+                        (hopf_at, hopf)
+                    }
+                }
             }
         };
         let hopf = strip(&hopf, &univariate(&cp.det_a, s.p0));
@@ -337,14 +351,19 @@ pub fn resultant_in_aileron(g: &Poly, f: &Poly) -> UPoly {
             .map(|c| univariate(c, s.p0))
             .collect()
     };
-    let gc = u(g);
+    resultant_dense(&u(g), &u(f))
+}
+
+/// [`resultant_in_aileron`] of `g` (quadratic in delta_a) and `f` (of degree at least 2 in it),
+/// each given by its coefficients of `delta_a^0, delta_a^1, ...` as dense polynomials in P0.
+pub fn resultant_dense(gc: &[UPoly], f: &[UPoly]) -> UPoly {
     assert_eq!(
         gc.len(),
         3,
         "the trim condition is at most quadratic in delta_a"
     );
     let (g0, g1, g2) = (&gc[0], &gc[1], &gc[2]);
-    let mut h = u(f);
+    let mut h = f.to_vec();
     let n = h.len() - 1;
     for i in (2..=n).rev() {
         let c = h[i].clone();

@@ -1,6 +1,7 @@
 //! The maps of `model envelope --out`: over Mach (across) and altitude (up), one cell per grid
 //! point, each drawn as a band of its colour ([`crate::plot`] draws polylines and markers, so a
-//! cell is a line as wide as the cell, as thick as its row). The critical aileron and the
+//! cell is a line as wide as the cell, as thick as its row, which the legend shows as a filled
+//! box). The critical aileron and the
 //! critical roll rate in eight colour bands, the cells whose critical aileron is beyond the
 //! aileron limit (a full-stick roll jumps there) marked; and the first departure's kind as a
 //! region map.
@@ -68,7 +69,7 @@ fn cells(
             label: seen.insert(label.clone()).then_some(label),
             points: vec![(p.mach - dm, p.altitude_m), (p.mach + dm, p.altitude_m)],
             color,
-            dash: Dash::Solid,
+            dash: Dash::Band,
             width,
         })
         .collect();

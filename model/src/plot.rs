@@ -49,6 +49,7 @@
 
 pub mod data;
 pub mod figures;
+pub mod isoline;
 pub mod spec;
 
 mod axis;

@@ -209,3 +209,132 @@ fn out_writes_the_csv_the_summaries_and_the_maps() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The F-104's envelope written by `--out` to a scratch folder: the map's files and the
+/// envelope's CSV, read back.
+struct Written {
+    svg: String,
+    map_csv: String,
+    envelope_csv: String,
+}
+
+fn written(altitude_m: &str, mach: &str, name: &str) -> Written {
+    let dir = std::env::temp_dir().join(format!("envelope-{name}-{}", std::process::id()));
+    let mut a = args("jsbsim:f104", altitude_m, mach);
+    a.json = false;
+    a.out = Some(dir.clone());
+    command(&a, &mut Vec::new()).unwrap();
+    let read = |f: &str| std::fs::read_to_string(dir.join(f)).unwrap();
+    let w = Written {
+        svg: read("critical_aileron.svg"),
+        map_csv: read("critical_aileron.csv"),
+        envelope_csv: read("envelope.csv"),
+    };
+    let _ = std::fs::remove_dir_all(&dir);
+    w
+}
+
+/// (Mach, altitude, margin) of every point of envelope.csv, each with a margin.
+fn margins_of(csv: &str) -> Vec<(f64, f64, f64)> {
+    csv.lines()
+        .skip(1)
+        .map(|row| {
+            let f: Vec<&str> = row.split(',').collect();
+            let num = |k: usize| f[k].parse::<f64>().unwrap();
+            (num(1), num(0), num(10))
+        })
+        .collect()
+}
+
+/// The texts of the SVG, trimmed.
+fn texts(svg: &str) -> Vec<String> {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    doc.descendants()
+        .filter_map(|n| n.text())
+        .map(|t| t.trim().to_string())
+        .collect()
+}
+
+/// The polylines of the SVG drawn in black, 3 px wide (the contour's stroke), left of the
+/// legend column (which starts at 72 % of the 1000 px width), as their point lists.
+fn contour_polylines(svg: &str) -> Vec<String> {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    doc.descendants()
+        .filter(|n| n.has_tag_name("polyline"))
+        .filter(|n| n.attribute("stroke") == Some("#000000"))
+        .filter(|n| n.attribute("stroke-width") == Some("3"))
+        .filter_map(|n| n.attribute("points").map(str::to_string))
+        .filter(|pts| {
+            pts.split_whitespace()
+                .all(|xy| xy.split(',').next().unwrap().parse::<f64>().unwrap() < 720.0)
+        })
+        .collect()
+}
+
+/// Where the margin to the aileron limit changes sign between neighbouring grid points, the
+/// critical aileron map draws the aileron-limit contour: a legend entry and a black polyline
+/// in the SVG, and in the map's CSV a series each of whose points lies on a grid edge whose
+/// ends have margins of opposite signs, where the straight line between those two margins
+/// (read from envelope.csv) is zero. Where no margin changes sign, no contour.
+#[test]
+fn the_critical_aileron_map_draws_the_aileron_limit_contour_where_the_margin_changes_sign() {
+    if !installed() {
+        return;
+    }
+    // At 6,000 and 7,000 m a full-stick roll of the F-104 jumps from about Mach 0.6 up.
+    let w = written("6000:7000:1000", "0.5:0.7:0.1", "contour");
+    let margins = margins_of(&w.envelope_csv);
+    assert_eq!(margins.len(), 6);
+    assert!(margins.iter().any(|m| m.2 < 0.0) && margins.iter().any(|m| m.2 > 0.0));
+    let margin = |x: f64, y: f64| {
+        let m = margins.iter().find(|m| (m.0 - x).abs() < 1e-9 && m.1 == y);
+        m.map(|m| m.2)
+    };
+    let contour: Vec<(f64, f64)> = w
+        .map_csv
+        .lines()
+        .filter(|row| row.contains(",line,aileron limit ("))
+        .map(|row| {
+            let f: Vec<&str> = row.rsplitn(3, ',').collect();
+            (f[1].parse().unwrap(), f[0].parse().unwrap())
+        })
+        .collect();
+    assert!(contour.len() >= 2, "{}", w.map_csv);
+    let (machs, alts) = ([0.5, 0.6, 0.7], [6000.0, 7000.0]);
+    for &(x, y) in &contour {
+        // The grid edge through (x, y): along an altitude row or a Mach column.
+        let (a, b, t) = if alts.contains(&y) {
+            let k = machs.iter().rposition(|&m| m <= x + 1e-12).unwrap().min(1);
+            let t = (x - machs[k]) / 0.1;
+            ((machs[k], y), (machs[k + 1], y), t)
+        } else {
+            let k = machs.iter().position(|&m| (m - x).abs() < 1e-12).unwrap();
+            let t = (y - 6000.0) / 1000.0;
+            ((machs[k], 6000.0), (machs[k], 7000.0), t)
+        };
+        let (ma, mb) = (margin(a.0, a.1).unwrap(), margin(b.0, b.1).unwrap());
+        assert!(ma * mb <= 0.0, "({x}, {y}) between margins {ma} and {mb}");
+        let zero = ma / (ma - mb);
+        assert!(
+            (t - zero).abs() < 1e-9,
+            "({x}, {y}): t = {t}, margin zero at {zero}"
+        );
+    }
+    let legend = texts(&w.svg);
+    assert!(
+        legend.iter().any(|t| t.starts_with("aileron limit (")),
+        "no legend entry: {legend:?}"
+    );
+    assert!(!contour_polylines(&w.svg).is_empty(), "no contour polyline");
+
+    // At 12,000 and 13,000 m no full-stick roll jumps between Mach 0.6 and 0.7.
+    let w = written("12000:13000:1000", "0.6:0.7:0.1", "no-contour");
+    let margins = margins_of(&w.envelope_csv);
+    assert!(
+        margins.len() == 4 && margins.iter().all(|m| m.2 > 0.0),
+        "{margins:?}"
+    );
+    assert!(!w.map_csv.contains("aileron limit"));
+    assert!(!texts(&w.svg).iter().any(|t| t.contains("aileron limit")));
+    assert!(contour_polylines(&w.svg).is_empty());
+}

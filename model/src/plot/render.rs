@@ -359,7 +359,7 @@ where
         let style = rgb(l.color).stroke_width(l.width);
         let pts = l.points.iter().copied();
         match l.dash {
-            Dash::Solid => chart.draw_series(LineSeries::new(pts, style)).map(|_| ()),
+            Dash::Solid | Dash::Band => chart.draw_series(LineSeries::new(pts, style)).map(|_| ()),
             Dash::Dashed => chart
                 .draw_series(DashedLineSeries::new(pts, 10, 6, style))
                 .map(|_| ()),
@@ -509,6 +509,7 @@ where
                 Dash::Solid => area.draw(&PathElement::new(pts, style)),
                 Dash::Dashed => area.draw(&DashedPathElement::new(pts, 10, 6, style)),
                 Dash::Dotted => area.draw(&DashedPathElement::new(pts, 3, 5, style)),
+                Dash::Band => swatch(area, (x0, x1), cy, row, e.color),
             }
             .map_err(draw_err)?;
         }
@@ -520,6 +521,24 @@ where
             .map_err(draw_err)?;
     }
     Ok(())
+}
+
+/// A band's legend sample: a box of its colour from `x0` to `x1`, most of a legend row high
+/// whatever the band's width on the map, outlined in grey so that a pale colour shows.
+fn swatch<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    (x0, x1): (i32, i32),
+    cy: i32,
+    row: i32,
+    color: Rgb,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    let half = (row * 2 / 5).max(4);
+    let corners = [(x0, cy - half), (x1, cy + half)];
+    area.draw(&Rectangle::new(corners, rgb(color).filled()))?;
+    area.draw(&Rectangle::new(
+        corners,
+        RGBColor(90, 90, 90).stroke_width(1),
+    ))
 }
 
 #[cfg(test)]

@@ -153,6 +153,9 @@ pub enum Dash {
     Dashed,
     /// Dotted (reference lines).
     Dotted,
+    /// Solid, painting an area rather than tracing a curve (a cell of a map, as wide as the
+    /// cell): the legend shows its colour as a filled box.
+    Band,
 }
 
 /// A polyline in plot units, already clipped to its panel's ranges.

@@ -1,12 +1,21 @@
 //! The maps of `model envelope --out`: over Mach (across) and altitude (up), one cell per grid
 //! point, each drawn as a band of its colour ([`crate::plot`] draws polylines and markers, so a
-//! cell is a line as wide as the cell, as thick as its row). The critical aileron and the
-//! critical roll rate in eight colour bands, the cells whose critical aileron is beyond the
-//! aileron limit (a full-stick roll jumps there) marked; and the first departure's kind as a
-//! region map.
+//! cell is a line as wide as the cell, as thick as its row, which the legend shows as a filled
+//! box). The critical aileron and the critical roll rate in eight colour bands, and the first
+//! departure's kind as a region map.
+//!
+//! On the critical aileron map, the aileron-limit contour is drawn: the line where the margin
+//! (aileron limit minus |critical delta_a|) is zero, by marching squares over the grid's
+//! margins ([`crate::plot::isoline`]) through the cells whose four corners have a margin (a
+//! point without level flight or without a critical jump has none, and the line stops there).
+//! On its side of negative margin a full-stick roll jumps. The points beyond the limit stay
+//! marked with a dot as well: the dots say on which side of the line the departures lie, and
+//! they still show a departure where the line cannot be drawn (a grid of one row or one
+//! column, a point whose neighbours have no margin).
 
 use super::envelope::departure_kind;
 use crate::envelope::{Envelope, Point};
+use crate::plot::isoline::{isolines, Field};
 use crate::plot::TextAt;
 use crate::plot::{Axis, Dash, Figure, LegendPlace, Line, Marker, Panel, PlotStyle, Rgb, Shape};
 
@@ -68,7 +77,7 @@ fn cells(
             label: seen.insert(label.clone()).then_some(label),
             points: vec![(p.mach - dm, p.altitude_m), (p.mach + dm, p.altitude_m)],
             color,
-            dash: Dash::Solid,
+            dash: Dash::Band,
             width,
         })
         .collect();
@@ -127,16 +136,27 @@ pub fn heat_map(
     })
 }
 
-/// The critical aileron map, with the cells beyond the aileron limit marked.
+/// The critical aileron map, with the aileron-limit contour drawn and the points beyond the
+/// limit marked.
 pub fn critical_aileron(env: &Envelope, style: &PlotStyle) -> Figure {
     let mut f = heat_map(env, "critical |delta_a|", "deg", style, &|p| {
         p.critical.as_ref().map(|c| c.delta_a_deg.abs())
     });
     let limit = env.points.iter().find_map(|p| p.aileron_limit_deg);
-    let label = format!(
-        "beyond the aileron limit{}: a full-stick roll jumps",
+    let contour = format!(
+        "aileron limit{}",
         limit.map_or(String::new(), |l| format!(" ({l:.2} deg)"))
     );
+    let lines = isolines(&margins(env), 0.0);
+    f.panels[0]
+        .lines
+        .extend(lines.into_iter().enumerate().map(|(k, points)| Line {
+            label: (k == 0).then(|| contour.clone()),
+            points,
+            color: Rgb::BLACK,
+            dash: Dash::Solid,
+            width: 3,
+        }));
     let mut first = true;
     for p in env
         .points
@@ -144,18 +164,34 @@ pub fn critical_aileron(env: &Envelope, style: &PlotStyle) -> Figure {
         .filter(|p| p.margin_deg.is_some_and(|m| m < 0.0))
     {
         f.panels[0].markers.push(Marker {
-            label: std::mem::take(&mut first).then(|| label.clone()),
+            label: std::mem::take(&mut first).then(|| "full-stick roll jumps".to_string()),
             text: None,
             text_at: TextAt::AboveRight,
             x: p.mach,
             y: p.altitude_m,
-            shape: Shape::Diamond,
+            shape: Shape::Circle,
             color: Rgb::BLACK,
             filled: true,
-            size: 3,
+            size: 2,
         });
     }
     f
+}
+
+/// The margin to the aileron limit over the grid (Mach across, altitude up), missing where a
+/// point has none or the grid has no point.
+fn margins(env: &Envelope) -> Field {
+    let (xs, _) = axis_of(env.points.iter().map(|p| p.mach), 0.0);
+    let (ys, _) = axis_of(env.points.iter().map(|p| p.altitude_m), 0.0);
+    let mut values = vec![None; xs.len() * ys.len()];
+    for p in &env.points {
+        let i = xs.iter().position(|&x| x == p.mach);
+        let j = ys.iter().position(|&y| y == p.altitude_m);
+        if let (Some(i), Some(j)) = (i, j) {
+            values[j * xs.len() + i] = p.margin_deg;
+        }
+    }
+    Field { xs, ys, values }
 }
 
 /// The region map of the first departure's kind.

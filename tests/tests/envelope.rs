@@ -105,6 +105,12 @@ fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
         let limit = ac.limits.aileron_deg;
         let margin = critical.zip(limit).map(|(c, l)| l - c.delta_a_deg.abs());
         assert_eq!(p.margin_deg, margin);
+        // A margin at or above zero is a jump a full-stick roll reaches: the aileron that
+        // `analyze` marks within the limit (the elevator, an increment of at most a few
+        // degrees, is within its own).
+        if let (Some(m), Some(c)) = (p.margin_deg, critical) {
+            assert_eq!(Some(m >= 0.0), c.within_limits, "{p:?}");
+        }
         checked += 1;
     }
     println!("envelope: {checked} of 5 random grid points trimmed and equal to import + analyze");

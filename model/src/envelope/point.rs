@@ -52,8 +52,9 @@ pub struct Point {
     pub first_departure: Option<FirstDeparture>,
     /// The aircraft's aileron limit, deg; `None` without one.
     pub aileron_limit_deg: Option<f64>,
-    /// The aileron limit minus |critical aileron|, deg: negative where a full-stick roll
-    /// jumps; `None` without a limit or without a critical jump.
+    /// The aileron limit minus |critical aileron|, deg: zero or positive where a full-stick roll
+    /// reaches the jump (by this much), negative where the jump lies beyond the stick's travel;
+    /// `None` without a limit or without a critical jump.
     pub margin_deg: Option<f64>,
     /// `"certified"` or `"exact"` (the certified route did not answer, a case it does not
     /// cover or a failed certificate, and the exact path did).

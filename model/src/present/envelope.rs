@@ -95,13 +95,13 @@ pub fn text(env: &Envelope) -> String {
     }
     s + &format!(
         "\n{} points: {} without level flight, {} answered by the exact path (a case the \
-         certified route does not cover, or a failed certificate), {} with a full-stick roll that jumps (margin < 0)\n",
+         certified route does not cover, or a failed certificate), {} with a full-stick roll that jumps (margin >= 0)\n",
         env.points.len(),
         env.untrimmed,
         env.exact_fallbacks,
         env.points
             .iter()
-            .filter(|p| p.margin_deg.is_some_and(|m| m < 0.0))
+            .filter(|p| p.margin_deg.is_some_and(|m| m >= 0.0))
             .count()
     )
 }

@@ -47,12 +47,13 @@ pub fn markdown(env: &Envelope) -> String {
         .points
         .iter()
         .filter_map(|p| p.margin_deg.map(|m| (m, p)))
-        .min_by(|a, b| a.0.total_cmp(&b.0));
+        .max_by(|a, b| a.0.total_cmp(&b.0));
     let mut s = format!("# Flight envelope: {}\n\n", env.source);
     s += &format!("Elevator: {}.\n\n", env.elevator);
     if let Some((m, p)) = worst {
         s += &format!(
-            "Smallest margin to the aileron limit: {} deg at {} m, Mach {}.\n\n",
+            "Largest margin to the aileron limit (how far inside the stick's travel the \
+             jump comes; negative: beyond it everywhere): {} deg at {} m, Mach {}.\n\n",
             cell(Some(m), 3),
             p.altitude_m,
             p.mach

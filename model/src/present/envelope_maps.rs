@@ -8,7 +8,7 @@
 //! (aileron limit minus |critical delta_a|) is zero, by marching squares over the grid's
 //! margins ([`crate::plot::isoline`]) through the cells whose four corners have a margin (a
 //! point without level flight or without a critical jump has none, and the line stops there).
-//! On its side of negative margin a full-stick roll jumps. The points beyond the limit stay
+//! On its side of positive margin a full-stick roll reaches the jump. Those points stay
 //! marked with a dot as well: the dots say on which side of the line the departures lie, and
 //! they still show a departure where the line cannot be drawn (a grid of one row or one
 //! column, a point whose neighbours have no margin).
@@ -161,7 +161,7 @@ pub fn critical_aileron(env: &Envelope, style: &PlotStyle) -> Figure {
     for p in env
         .points
         .iter()
-        .filter(|p| p.margin_deg.is_some_and(|m| m < 0.0))
+        .filter(|p| p.margin_deg.is_some_and(|m| m >= 0.0))
     {
         f.panels[0].markers.push(Marker {
             label: std::mem::take(&mut first).then(|| "full-stick roll jumps".to_string()),

@@ -1,9 +1,13 @@
 //! The certified clearance of one grid point (`envelope --uncertainty`): [`crate::clearance::clear`]
 //! of the imported aircraft with its `[uncertainty]` box at the point's elevator increment, as
-//! `model clear` runs it but for the worst-case search (no Monte Carlo, and [`CANDIDATES`]
-//! random candidates instead of 64: every exact analysis of an imported jet with aileron yaw
-//! costs tenths of a second, and the points are many). `lo` stays proven whatever the
-//! candidates; fewer of them can only leave `hi` higher and the proof more work.
+//! `model clear` runs it but for the work per point (no Monte Carlo, [`CANDIDATES`] random
+//! candidates instead of 64, and budgets of [`MAX_BOXES`] boxes and [`MAX_SLABS`] slabs instead
+//! of 20,000 and 500,000: every exact analysis of an imported jet with aileron yaw costs tenths
+//! of a second, a box of all 15 coefficients can keep the proof busy for minutes, and the points
+//! are many). `lo` stays proven whatever the candidates and budgets: fewer candidates can only
+//! leave `hi` higher and the proof more work, and a budget that runs out leaves the gap wider
+//! and, when the limit lies inside it, the verdict undecided (`undecided_budget`, with the gap
+//! reached), never wrong.
 
 use crate::aircraft::Aircraft;
 use crate::clearance::{clear, ClearError, LimitGap, Settings, Verdict};
@@ -13,12 +17,20 @@ use serde::Serialize;
 /// the greedy vertex search).
 pub const CANDIDATES: usize = 4;
 
+/// The most boxes the branch and bound of one point may hold.
+pub const MAX_BOXES: usize = 2_000;
+
+/// The most slabs the branch and bound of one point may certify.
+pub const MAX_SLABS: usize = 10_000;
+
 /// The clearance settings of a point at the elevator increment `delta_e_rad`: `model clear`'s
-/// tolerances and budgets, [`CANDIDATES`] random candidates.
+/// tolerances, [`CANDIDATES`] random candidates and the budgets [`MAX_BOXES`], [`MAX_SLABS`].
 pub fn settings(delta_e_rad: f64) -> Settings {
     Settings {
         delta_e_rad,
         candidates: CANDIDATES,
+        max_boxes: MAX_BOXES,
+        max_slabs: MAX_SLABS,
         ..Settings::default()
     }
 }

@@ -14,11 +14,8 @@ const UNDECIDED: Rgb = Rgb(240, 200, 60);
 /// The map of the verdicts; `None` without `--uncertainty`.
 pub fn clearance_regions(env: &Envelope, style: &PlotStyle) -> Option<Figure> {
     let spec = env.uncertainty.as_ref()?;
-    let title = format!(
-        "{}: cleared against the aileron limit over the box of --uncertainty {spec}",
-        env.source
-    );
-    Some(cells(
+    let title = format!("{}: cleared against the aileron limit", env.source);
+    let mut f = cells(
         env,
         title,
         style,
@@ -36,5 +33,7 @@ pub fn clearance_regions(env: &Envelope, style: &PlotStyle) -> Option<Figure> {
             Some(None) => (Rgb::BLUE, "no aileron limit".to_string(), 4),
             None => missing(p),
         },
-    ))
+    );
+    f.note = format!("{}; box: --uncertainty {spec}", f.note);
+    Some(f)
 }

@@ -211,3 +211,20 @@ fn json_gives_every_point_its_clearance_with_the_documented_keys() {
     let (lo, hi) = (c["delta_a_lo_deg"].as_f64(), c["delta_a_hi_deg"].as_f64());
     assert!(lo.unwrap() <= hi.unwrap(), "{c}");
 }
+
+/// A file's `[uncertainty]` table is taken as written (other tables ignored): a relative width
+/// reads as the list's, an interval passes through to the loader unchanged.
+#[test]
+fn a_file_spec_is_its_uncertainty_table_as_written() {
+    let path = std::env::temp_dir().join(format!("uncertainty-{}.toml", std::process::id()));
+    let text = "[flight]\nspeed = 1\n\n[uncertainty]\nCl_p = \"5%\"  # roll damping\n\
+                Cn_r = [-0.8, -0.7]\n";
+    std::fs::write(&path, text).unwrap();
+    let from_file = Uncertainty::parse(&path.display().to_string()).unwrap();
+    let _ = std::fs::remove_file(&path);
+    let from_list = Uncertainty::parse("Cl_p=5%").unwrap();
+    assert_eq!(
+        from_file.table(),
+        from_list.table() + "Cn_r = [-0.8, -0.7]\n"
+    );
+}

@@ -27,9 +27,14 @@ fn detail(c: &PointClearance) -> String {
         return format!("counterexample at delta_a = {} deg", fixed(d, 3));
     }
     if let Some(g) = &c.gap_to_limit {
+        // Without a worst case found, hi - limit is infinite: said as "no hi".
+        let above = match g.hi_minus_limit_deg {
+            x if x.is_finite() => format!("hi - limit = {x:.2e} deg"),
+            _ => "no hi".to_string(),
+        };
         return format!(
-            "gap: limit - lo = {:.2e}, hi - limit = {:.2e} deg",
-            g.limit_minus_lo_deg, g.hi_minus_limit_deg
+            "gap: limit - lo = {:.2e} deg, {above}",
+            g.limit_minus_lo_deg
         );
     }
     if c.no_critical_jump {
@@ -106,4 +111,44 @@ pub fn csv_cells(p: &Point) -> Vec<String> {
         num(gap.map(|g| g.limit_minus_lo_deg)),
         num(gap.map(|g| g.hi_minus_limit_deg).filter(|x| x.is_finite())),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::clearance::LimitGap;
+
+    fn undecided(hi_minus_limit_deg: f64) -> PointClearance {
+        PointClearance {
+            uncertain: 15,
+            p0_lo: Some(2.3),
+            p0_hi: None,
+            delta_a_lo_deg: Some(19.5),
+            delta_a_hi_deg: None,
+            no_critical_jump: false,
+            verdict: Some(Verdict::UndecidedBudget),
+            verdict_reason: String::new(),
+            counterexample_delta_a_deg: None,
+            gap_to_limit: Some(LimitGap {
+                limit_minus_lo_deg: 0.55,
+                hi_minus_limit_deg,
+            }),
+            note: String::new(),
+        }
+    }
+
+    /// A verdict the budget left undecided says the gap it reached on each side of the limit,
+    /// and "no hi" rather than an infinity when no worst case was found.
+    #[test]
+    fn an_undecided_point_says_the_gap_reached() {
+        assert_eq!(
+            detail(&undecided(0.25)),
+            "gap: limit - lo = 5.50e-1 deg, hi - limit = 2.50e-1 deg"
+        );
+        assert_eq!(
+            detail(&undecided(f64::INFINITY)),
+            "gap: limit - lo = 5.50e-1 deg, no hi"
+        );
+        assert_eq!(verdict_word(undecided(1.0).verdict), "undecided_budget");
+    }
 }

@@ -32,6 +32,7 @@ fn args(source: &str, altitude_m: &str, mach: &str) -> EnvelopeArgs {
         delta_e_deg: None,
         json: true,
         out: None,
+        uncertainty: None,
     }
 }
 

@@ -4,6 +4,7 @@
 use super::elevator::Elevator;
 use super::grid::Grid;
 use super::point::Point;
+use super::uncertainty::Uncertainty;
 use crate::jsbsim::import::Loaded;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -20,6 +21,9 @@ pub struct Envelope {
     pub untrimmed: usize,
     /// Trimmed points the certified route could not answer, so the exact path did.
     pub exact_fallbacks: usize,
+    /// `--uncertainty` as given, when every point is a clearance of its box.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub uncertainty: Option<String>,
     /// Every grid point.
     pub points: Vec<Point>,
 }
@@ -33,12 +37,23 @@ pub fn envelope(
     elevator: Elevator,
     progress: &(dyn Fn(f64) + Sync),
 ) -> Envelope {
+    cleared_envelope(loaded, source, grid, (elevator, None), progress)
+}
+
+/// [`envelope`], and with `uncertainty` every point also the certified clearance of its box.
+pub fn cleared_envelope(
+    loaded: &Loaded,
+    source: &str,
+    grid: &Grid,
+    (elevator, uncertainty): (Elevator, Option<&Uncertainty>),
+    progress: &(dyn Fn(f64) + Sync),
+) -> Envelope {
     let all = grid.points();
     let done = AtomicUsize::new(0);
     let points: Vec<Point> = all
         .par_iter()
         .map(|&(h, m)| {
-            let p = Point::at(loaded, source, h, m, elevator);
+            let p = Point::cleared_at(loaded, source, (h, m), elevator, uncertainty);
             let k = done.fetch_add(1, Ordering::Relaxed) + 1;
             progress(k as f64 / all.len() as f64);
             p
@@ -52,6 +67,7 @@ pub fn envelope(
         },
         untrimmed: points.iter().filter(|p| !p.trimmed).count(),
         exact_fallbacks: points.iter().filter(|p| p.route == Some("exact")).count(),
+        uncertainty: uncertainty.map(|u| u.spec.clone()),
         points,
     }
 }

@@ -5,15 +5,18 @@
 //! Data flow: [`grid`] (the ranges, checked before any work) and [`source`] (the model and its
 //! settings) give the points; [`elevator`] turns the pilot's elevator (a load factor or an
 //! increment) into the paper's `delta_e` at each; [`point`] trims, imports and analyses one
-//! point; [`map`] runs every point in parallel.
+//! point; [`map`] runs every point in parallel. With `--uncertainty`, [`uncertainty`] gives each
+//! point's aircraft its `[uncertainty]` box and [`clearance`] clears it.
 
+pub mod clearance;
 pub mod elevator;
 pub mod grid;
 pub mod map;
 pub mod point;
 pub mod source;
+pub mod uncertainty;
 
 pub use elevator::Elevator;
 pub use grid::{Grid, Range};
-pub use map::{envelope, Envelope};
+pub use map::{cleared_envelope, envelope, Envelope};
 pub use point::{Critical, Point};

@@ -3,7 +3,9 @@
 //! analysis `model analyze` makes of it (the certified route, the exact path where a
 //! certificate fails) at the point's elevator increment.
 
+use super::clearance::{clear_point, PointClearance};
 use super::elevator::Elevator;
+use super::uncertainty::Uncertainty;
 use crate::aircraft;
 use crate::analysis::fast::{analyze_routed_with, Route};
 use crate::analysis::{Analysis, FirstDeparture};
@@ -59,6 +61,9 @@ pub struct Point {
     /// `"certified"` or `"exact"` (the certified route did not answer, a case it does not
     /// cover or a failed certificate, and the exact path did).
     pub route: Option<&'static str>,
+    /// The certified clearance over the box of `--uncertainty` (absent without it).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub clearance: Option<PointClearance>,
 }
 
 impl Point {
@@ -79,6 +84,7 @@ impl Point {
             aileron_limit_deg: None,
             margin_deg: None,
             route: None,
+            clearance: None,
         }
     }
 
@@ -89,6 +95,18 @@ impl Point {
         altitude_m: f64,
         mach: f64,
         elevator: Elevator,
+    ) -> Point {
+        Point::cleared_at(loaded, name, (altitude_m, mach), elevator, None)
+    }
+
+    /// [`Point::at`], and with `uncertainty` the certified clearance of the point's box at the
+    /// same elevator increment.
+    pub fn cleared_at(
+        loaded: &Loaded,
+        name: &str,
+        (altitude_m, mach): (f64, f64),
+        elevator: Elevator,
+        uncertainty: Option<&Uncertainty>,
     ) -> Point {
         let condition = match Condition::new(altitude_m, Speed::Mach(mach)) {
             Ok(c) => c,
@@ -110,19 +128,20 @@ impl Point {
         };
         p.trimmed = true;
         p.alpha_deg = Some(alpha.to_degrees());
-        if let Err(e) = p.analyse(&setup, alpha, name, elevator) {
+        if let Err(e) = p.analyse(&setup, alpha, name, (elevator, uncertainty)) {
             p.error = Some(e);
         }
         p
     }
 
-    /// Imports at `alpha` and analyses, filling in the results.
+    /// Imports at `alpha` and analyses (and clears the box of `uncertainty`), filling in the
+    /// results.
     fn analyse(
         &mut self,
         setup: &crate::jsbsim::coefficients::Setup,
         alpha: f64,
         name: &str,
-        elevator: Elevator,
+        (elevator, uncertainty): (Elevator, Option<&Uncertainty>),
     ) -> Result<(), String> {
         let text = aircraft_file(setup, alpha, LEVEL_FLIGHT)?;
         let ac = aircraft::parse(&text, name).map_err(|e| e.to_string())?;
@@ -135,6 +154,13 @@ impl Point {
             Route::Exact(_) => "exact",
         });
         self.take(a);
+        if let Some(u) = uncertainty {
+            let boxed = u
+                .aircraft(&text, name)
+                .map_err(|e| format!("--uncertainty: {e}"))?;
+            let c = clear_point(&boxed, delta_e).map_err(|e| format!("clearance: {e}"))?;
+            self.clearance = Some(c);
+        }
         Ok(())
     }
 

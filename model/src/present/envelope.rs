@@ -7,7 +7,8 @@ use super::numbers::fixed;
 use super::options::{elevator, EnvelopeArgs};
 use super::progress::{progress_bar, set};
 use crate::envelope::source::Source;
-use crate::envelope::{envelope, Elevator, Envelope, Grid, Point, Range};
+use crate::envelope::uncertainty::Uncertainty;
+use crate::envelope::{cleared_envelope, Elevator, Envelope, Grid, Point, Range};
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -31,9 +32,17 @@ pub fn command(a: &EnvelopeArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
         Range::parse(&a.mach, "--mach")?,
     )?;
     let elevator = chosen_elevator(a)?;
+    let uncertainty = match &a.uncertainty {
+        Some(spec) => Some(Uncertainty::parse(spec).map_err(Failure::Input)?),
+        None => None,
+    };
     let loaded = source.load()?;
+    if let Some(u) = &uncertainty {
+        u.check(&loaded, &a.source, &grid).map_err(Failure::Input)?;
+    }
     let bar = progress_bar("envelope");
-    let env = envelope(&loaded, &a.source, &grid, elevator, &|f| set(&bar, f));
+    let chosen = (elevator, uncertainty.as_ref());
+    let env = cleared_envelope(&loaded, &a.source, &grid, chosen, &|f| set(&bar, f));
     if let Some(b) = bar {
         b.finish_and_clear();
     }
@@ -93,7 +102,7 @@ pub fn text(env: &Envelope) -> String {
             }
         );
     }
-    s + &format!(
+    s += &format!(
         "\n{} points: {} without level flight, {} answered by the exact path (a case the \
          certified route does not cover, or a failed certificate), {} with a full-stick roll that jumps (margin >= 0)\n",
         env.points.len(),
@@ -103,5 +112,6 @@ pub fn text(env: &Envelope) -> String {
             .iter()
             .filter(|p| p.margin_deg.is_some_and(|m| m >= 0.0))
             .count()
-    )
+    );
+    s + &super::envelope_clearance::text(env)
 }

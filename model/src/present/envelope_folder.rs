@@ -3,21 +3,28 @@
 //! data as CSV), each file atomically.
 
 use super::envelope::{cell, departure_kind, text};
+use super::envelope_clearance::{csv_cells, CSV_HEADER};
 use crate::envelope::Envelope;
 use std::path::Path;
 
-/// The CSV: one row per point, units in the header, empty where a number does not exist.
+/// The CSV: one row per point, units in the header, empty where a number does not exist; with
+/// `--uncertainty`, the clearance's columns after the others.
 pub fn csv(env: &Envelope) -> String {
+    let cleared = env.uncertainty.is_some();
     let mut s = String::from(
         "altitude_m,mach,speed_m_s,trimmed,alpha_deg,delta_e_deg,critical_p0_rad_s,\
          critical_delta_a_deg,within_limits,aileron_limit_deg,margin_deg,first_departure,\
-         first_departure_p0_rad_s,first_departure_delta_a_deg,route\n",
+         first_departure_p0_rad_s,first_departure_delta_a_deg,route",
     );
+    if cleared {
+        s += CSV_HEADER;
+    }
+    s.push('\n');
     let num = |x: Option<f64>| x.map_or(String::new(), |v| v.to_string());
     for p in &env.points {
         let c = p.critical.as_ref();
         let d = p.first_departure.as_ref();
-        let row = [
+        let mut row = vec![
             p.altitude_m.to_string(),
             p.mach.to_string(),
             p.speed_m_s.to_string(),
@@ -35,6 +42,9 @@ pub fn csv(env: &Envelope) -> String {
             num(d.map(|d| d.delta_a_deg)),
             p.route.unwrap_or("").to_string(),
         ];
+        if cleared {
+            row.extend(csv_cells(p));
+        }
         s += &row.join(",");
         s.push('\n');
     }
@@ -61,6 +71,9 @@ pub fn markdown(env: &Envelope) -> String {
     }
     s += "![critical aileron](critical_aileron.svg)\n\n![first departure](first_departure.svg)\n\n\
           ![critical roll rate](critical_roll_rate.svg)\n\n";
+    if env.uncertainty.is_some() {
+        s += "![clearance over the box](clearance.svg)\n\n";
+    }
     s + "```\n" + &text(env) + "```\n"
 }
 
@@ -75,7 +88,11 @@ pub fn write_folder(dir: &Path, env: &Envelope, json: &str) -> Result<(), String
     write("summary.md", markdown(env).as_bytes())?;
     write("summary.json", format!("{json}\n").as_bytes())?;
     let style = crate::plot::PlotStyle::default();
-    for (stem, figure) in super::envelope_maps::maps(env, &style) {
+    let clearance = super::envelope_clearance_map::clearance_regions(env, &style);
+    let maps = super::envelope_maps::maps(env, &style)
+        .into_iter()
+        .chain(clearance.map(|f| ("clearance", f)));
+    for (stem, figure) in maps {
         crate::plot::render(&dir.join(stem), &figure, &style).map_err(|e| e.to_string())?;
     }
     Ok(())

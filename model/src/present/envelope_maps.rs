@@ -46,11 +46,11 @@ fn axis_of(xs: impl Iterator<Item = f64>, fallback: f64) -> (Vec<f64>, f64) {
 }
 
 /// A cell's colour, legend entry and the entry's place in the legend.
-type Cell = (Rgb, String, usize);
+pub(super) type Cell = (Rgb, String, usize);
 
 /// A figure of cells: `cell(p)` gives each point's colour and legend entry, the legend ordered
 /// by the entries' places.
-fn cells(
+pub(super) fn cells(
     env: &Envelope,
     title: String,
     style: &PlotStyle,
@@ -100,7 +100,7 @@ fn cells(
 }
 
 /// The colour and legend entry of a point without the mapped number.
-fn missing(p: &Point) -> Cell {
+pub(super) fn missing(p: &Point) -> Cell {
     if p.trimmed {
         (EMPTY, "no critical jump / not analysed".to_string(), 100)
     } else {

@@ -8,6 +8,8 @@ pub mod catalogue;
 pub mod clearance;
 pub mod commands;
 pub mod envelope;
+pub mod envelope_clearance;
+pub mod envelope_clearance_map;
 pub mod envelope_folder;
 pub mod envelope_maps;
 pub mod failure;

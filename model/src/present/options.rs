@@ -157,6 +157,11 @@ pub struct EnvelopeArgs {
     /// Write envelope.csv, summary.md, summary.json and the maps (SVG, PNG) into DIR.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
+    /// Make every point a certified clearance over a box of its coefficients: a relative width
+    /// for every coefficient ("10%"), a list "Cl_p=10%,Cn_r=0.02" (relative or absolute
+    /// half-widths), or a TOML file whose `[uncertainty]` table is read as `model clear` reads it.
+    #[arg(long, value_name = "SPEC", allow_hyphen_values = true)]
+    pub uncertainty: Option<String>,
 }
 
 /// Options of `convert`.

@@ -1,5 +1,6 @@
-//! Shared by the randomised tests (`certified.rs`, `hopf_fast.rs`, `clearance.rs`): their size,
-//! random aircraft around A and B, and the comparison of an exact and a certified analysis.
+//! Shared by the randomised tests (`certified.rs`, `hopf_fast.rs`, `clearance.rs`,
+//! `envelope_uncertainty.rs`): their size, random aircraft around A and B, the comparison of an
+//! exact and a certified analysis, and whether the JSBSim models are installed.
 
 #![allow(dead_code)]
 
@@ -19,6 +20,16 @@ pub fn size(default: usize, full: usize) -> usize {
     } else {
         default
     }
+}
+
+/// Whether the JSBSim models are installed (`pip install jsbsim`); says so when not, for the
+/// tests that skip without them.
+pub fn jsbsim_installed() -> bool {
+    let found = model::jsbsim::catalogue::root(None).is_some();
+    if !found {
+        eprintln!("skipped: the JSBSim models are not installed (pip install jsbsim)");
+    }
+    found
 }
 
 /// The project's seeded generator (SplitMix64), the same as the Monte Carlo's.

@@ -64,6 +64,10 @@ pub struct Point {
     /// The certified clearance over the box of `--uncertainty` (absent without it).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub clearance: Option<PointClearance>,
+    /// Why a point analysed without fault has no clearance (its proof refused the box); the
+    /// nominal analysis above stands.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub clearance_error: Option<String>,
 }
 
 impl Point {
@@ -85,6 +89,7 @@ impl Point {
             margin_deg: None,
             route: None,
             clearance: None,
+            clearance_error: None,
         }
     }
 
@@ -158,8 +163,10 @@ impl Point {
             let boxed = u
                 .aircraft(&text, name)
                 .map_err(|e| format!("--uncertainty: {e}"))?;
-            let c = clear_point(&boxed, delta_e).map_err(|e| format!("clearance: {e}"))?;
-            self.clearance = Some(c);
+            match clear_point(&boxed, delta_e) {
+                Ok(c) => self.clearance = Some(c),
+                Err(e) => self.clearance_error = Some(e.to_string()),
+            }
         }
         Ok(())
     }

@@ -16,12 +16,33 @@ pub const USAGE: &str = "usage: model import jsbsim <MODEL> --altitude-m H (--ma
      model import jsbsim --list --analyze --altitude-m H (--mach M | --speed V) \
      (--alpha-deg A | --level-flight) [--jsbsim-root DIR]";
 
+/// What `--help` (or `-h`) prints: the usage and what each option means.
+pub const HELP: &str = "Reads a JSBSim aircraft model and writes the aircraft file of the \
+analysis (nondimensional body-axis coefficients linearised at one flight condition).
+
+  <MODEL>               a model of the catalogue (e.g. f104; --list shows them)
+  --altitude-m H        geometric altitude, m (standard atmosphere 1976, 0 to 86,000 m)
+  --mach M | --speed V  Mach number, or true airspeed in m/s
+  --alpha-deg A         angle of attack to linearise at, deg
+  --level-flight        the angle of attack of level flight (lift equal to weight)
+  --set PROPERTY=VALUE  a JSBSim property set before the import (not a flight state or control)
+  --out FILE            write the aircraft file there instead of standard output
+  --jsbsim-root DIR     the JSBSim models (default: $JSBSIM_ROOT, else the Python package's)
+  --list                the catalogue: every model, and whether it reads
+  --list --analyze      the catalogue with each model's analysis at the flight condition
+";
+
 /// The exit code of bad input.
 pub const BAD_INPUT: u8 = 2;
 
 /// Runs `model import` with `args` (after `import`), writing to `out`; returns the exit code.
-/// Errors go to standard error.
+/// Errors go to standard error; `--help` anywhere prints [`HELP`] and [`USAGE`] instead.
 pub fn run(args: &[String], out: &mut dyn Write) -> u8 {
+    if args.iter().any(|a| a == "--help" || a == "-h") {
+        // A closed pipe ends the help quietly.
+        let _ = writeln!(out, "{HELP}\n{USAGE}");
+        return 0;
+    }
     match parse_and_run(args, out) {
         Ok(()) => 0,
         Err(msg) => {

@@ -58,6 +58,13 @@ pub fn text(env: &Envelope) -> String {
     s += "altitude_m   mach  boxed  delta_a_lo_deg  delta_a_hi_deg  p0_lo_rad_s  verdict           detail\n";
     for p in &env.points {
         let Some(c) = &p.clearance else {
+            if let Some(e) = &p.clearance_error {
+                s += &format!(
+                    "{:>10}  {:>5}  clearance refused: {e}\n",
+                    fixed(p.altitude_m, 0),
+                    fixed(p.mach, 3)
+                );
+            }
             continue;
         };
         s += &format!(
@@ -80,7 +87,7 @@ pub fn text(env: &Envelope) -> String {
     };
     s + &format!(
         "\n{} points cleared, {} not cleared (a counterexample), {} undecided when the budget \
-         ran out, {} undecided, {} without a clearance (no level flight or an error)\n",
+         ran out, {} undecided, {} without a clearance (no level flight, an error, or a refused proof)\n",
         count(Verdict::Cleared),
         count(Verdict::NotCleared),
         count(Verdict::UndecidedBudget),

@@ -325,3 +325,20 @@ fn a_clearance_map_says_how_long_it_will_take_and_draws_every_setting() {
     assert!(!out_dir.join("clearance_histogram.svg").exists());
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// `import --help` (anywhere among its arguments) prints what each option means and the usage,
+/// and succeeds; it is not an unknown option.
+#[test]
+fn import_help_prints_the_options_and_succeeds() {
+    for args in [
+        &["import", "--help"][..],
+        &["import", "jsbsim", "--help"],
+        &["import", "jsbsim", "f104", "-h"],
+    ] {
+        let out = model(args);
+        assert_eq!(out.status.code(), Some(0), "{args:?}");
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(text.contains("--level-flight") && text.contains("usage: model import jsbsim"));
+        assert!(out.stderr.is_empty(), "{args:?}");
+    }
+}

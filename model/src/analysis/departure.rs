@@ -345,13 +345,7 @@ pub fn resultant_in_aileron(g: &Poly, f: &Poly) -> UPoly {
     if g.degree(s.delta_a) < 2 || f.degree(s.delta_a) < 2 {
         return univariate(&eliminate_aileron(g, f), s.p0);
     }
-    let u = |p: &Poly| -> Vec<UPoly> {
-        p.coeffs(s.delta_a)
-            .iter()
-            .map(|c| univariate(c, s.p0))
-            .collect()
-    };
-    resultant_dense(&u(g), &u(f))
+    resultant_dense(&dense_in_aileron(g), &dense_in_aileron(f))
 }
 
 /// [`resultant_in_aileron`] of `g` (quadratic in delta_a) and `f` (of degree at least 2 in it),

@@ -6,7 +6,7 @@ use super::compiled::Cleared;
 use super::dense::{Dense2, IPoly};
 use super::elimination::Coeff;
 use super::isolate::Uncertified;
-use super::mode::{constant, Mode};
+use super::mode::{at_origin, constant, Mode};
 use crate::derivation::hopf::{stripped_delta4_in, TRIM_FACTOR_POWERS};
 use crate::derivation::{Clearing, TrimProducts};
 use crate::interval::I;
@@ -35,7 +35,7 @@ pub(super) fn hopf_in<M: Mode>(
     // each `C_k = den^k c_k(0)`, whose surplus powers of `den` would give Delta4 multiple roots
     // at den's roots: there the whole power is divided out and Delta4 taken of `c_k(0)` itself
     // (`f = 1`), the exact path's polynomial once it strips den's roots.
-    let origin = num.iter().all(|n| M::in_aileron(n).is_empty());
+    let origin = at_origin::<M>(num);
     let mut c = Vec::with_capacity(5);
     let mut products = TrimProducts::new(m, den, 1);
     for (k, power) in TRIM_FACTOR_POWERS.iter().enumerate() {

@@ -53,6 +53,12 @@ pub(super) trait Mode: Clearing {
     }
 }
 
+/// Whether a trim with numerators `num` is the origin: every numerator exactly zero (the
+/// zero-sideslip trim at `delta_e = 0`, whose numerators of Eq. 35 are multiples of it).
+pub(super) fn at_origin<M: Mode>(num: &[M::Value]) -> bool {
+    num.iter().all(|n| M::in_aileron(n).is_empty())
+}
+
 /// A constant step 8 lifts through the ring (only 0 and 1: the coefficients come lifted).
 pub(super) fn constant(p: &crate::algebra::Poly) -> I {
     let c = p

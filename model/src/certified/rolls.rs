@@ -6,7 +6,7 @@ use super::compiled::Parametric;
 use super::elimination::{eliminate, Coeff};
 use super::isolate::Uncertified;
 use super::lifted::Lifted;
-use super::mode::Mode;
+use super::mode::{at_origin, Mode};
 use crate::derivation::{TrimProducts, TRIM_DEGREE};
 use std::cell::RefCell;
 
@@ -88,8 +88,7 @@ impl<M: Mode> ZeroSideslip<M> {
         let zs_d_det = m.clear_with(&c.zs_d, &l.zs_d, &num, &den, &mut products);
         let zs_det = M::univariate(&den)?;
         let (zs_jump, zs_d_det) = (M::univariate(&zs_jump)?, M::univariate(&zs_d_det)?);
-        let origin = num.iter().all(|n| M::in_aileron(n).is_empty());
-        let (zs_jump, zs_d_det) = if origin {
+        let (zs_jump, zs_d_det) = if at_origin::<M>(&num) {
             without_origin_factor(&zs_jump, &zs_d_det, &zs_det)?
         } else {
             (zs_jump, zs_d_det)

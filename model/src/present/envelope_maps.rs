@@ -136,8 +136,8 @@ pub fn heat_map(
     })
 }
 
-/// The critical aileron map, with the aileron-limit contour drawn and the points beyond the
-/// limit marked.
+/// The critical aileron map, with the aileron-limit contour drawn and the points where a
+/// full-stick roll reaches the jump marked.
 pub fn critical_aileron(env: &Envelope, style: &PlotStyle) -> Figure {
     let mut f = heat_map(env, "critical |delta_a|", "deg", style, &|p| {
         p.critical.as_ref().map(|c| c.delta_a_deg.abs())

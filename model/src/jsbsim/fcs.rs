@@ -462,11 +462,9 @@ impl Chain<'_> {
                 zero_centered,
             } => scale(input(0)?, *domain, *range, *zero_centered) * self.operand(gain, depth)?,
             Kind::Gain(g) => input(0)? * self.operand(g, depth)?,
-            Kind::Scheduled(_) => match input(0)? {
-                // A table times zero: zero whatever the table gives.
-                x if x == 0.0 => 0.0,
-                _ => return Err(at("scales its input by a table of the flight state".into())),
-            },
+            // A table times zero: zero whatever the table gives.
+            Kind::Scheduled(_) => zero_only(input(0)?)
+                .ok_or_else(|| at("scales its input by a table of the flight state".into()))?,
             Kind::Summer(bias) => {
                 let mut sum = *bias;
                 for k in 0..c.inputs.len() {
@@ -483,14 +481,9 @@ impl Chain<'_> {
                 x.clamp(ends.0.min(ends.1), ends.1.max(ends.0))
             }
             Kind::Lag => input(0)?,
-            Kind::Linear => match input(0)? {
-                x if x == 0.0 => 0.0,
-                _ => {
-                    return Err(at(
-                        "its steady output is not a fixed multiple of its input".into()
-                    ))
-                }
-            },
+            Kind::Linear => zero_only(input(0)?).ok_or_else(|| {
+                at("its steady output is not a fixed multiple of its input".into())
+            })?,
             Kind::Switch { tests } => self.switch(tests, depth).map_err(at)?,
             Kind::Other => {
                 return Err(at(
@@ -548,6 +541,12 @@ impl Chain<'_> {
             }
         }
     }
+}
+
+/// The output of an element that stays at zero while its input does: zero for a zero input,
+/// `None` (not known) otherwise.
+fn zero_only(x: f64) -> Option<f64> {
+    (x == 0.0).then_some(0.0)
 }
 
 /// JSBSim's comparisons.

@@ -220,13 +220,20 @@ impl Import<'_> {
         t.push_str(LIMITS);
         for s in known {
             let r = s.range.as_ref().expect("known");
+            let end = if r.at_plus == -r.at_minus {
+                "both ends equal".to_string()
+            } else {
+                format!(
+                    "the limit is the smaller end, at {:+}",
+                    r.limiting_command()
+                )
+            };
             let _ = writeln!(
                 t,
-                "# {}: {:.4} deg at command +1, {:.4} deg at -1; the limit is the end at {:+}; {}",
+                "# {}: {:.4} deg at command +1, {:.4} deg at -1 ({end}); {}",
                 s.control.name(),
                 r.at_plus.to_degrees(),
                 r.at_minus.to_degrees(),
-                r.limiting_command(),
                 r.source
             );
             let _ = writeln!(t, "{} = {}", s.control.name(), num(r.limit().to_degrees()));

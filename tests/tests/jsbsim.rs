@@ -16,9 +16,10 @@ use model::jsbsim::surfaces::surfaces;
 use model::jsbsim::Model;
 use model::random::Rng;
 use serde_json::{json, Value};
-use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+
+#[path = "support/oracle.rs"]
+mod oracle;
 
 /// Relative agreement required: both sides sum the same products of the same table lookups in
 /// double precision; what differs is the order of some operations (JSBSim interpolates a
@@ -34,29 +35,7 @@ fn root() -> Option<PathBuf> {
 }
 
 fn oracle(request: &Value) -> Vec<Value> {
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("oracle/jsbsim_oracle.py");
-    let mut child = Command::new("python3")
-        .arg(script)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("python3 runs");
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(request.to_string().as_bytes())
-        .unwrap();
-    let out = child.wait_with_output().unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "oracle failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let last = stdout.lines().last().expect("oracle output");
-    serde_json::from_str::<Vec<Value>>(last).expect("oracle JSON")
+    serde_json::from_value(oracle::run("jsbsim_oracle.py", request)).expect("oracle JSON")
 }
 
 /// Random states: altitude 5,000-40,000 ft, Mach 0.3-0.85, alpha -4..14 deg, beta -6..6 deg,
@@ -292,7 +271,7 @@ fn derivatives_agree_with_central_differences_in_jsbsim() {
         let setup = Setup {
             model: &model,
             condition: Condition::new(altitude_m, Speed::Mach(mach)).unwrap(),
-            surfaces: surfaces(&model, &path),
+            surfaces: surfaces(&model, &path).unwrap(),
             settings: Vec::new(),
         };
         let state = State {

@@ -309,3 +309,63 @@ pub fn significant(x: f64) -> String {
     let digits = (3 - magnitude).max(0) as usize;
     format!("{x:.digits$}")
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// J5 with the pitch block `pitch` and a stable lateral block (roots -2 and -1 +- i).
+    fn with_pitch(pitch: [[f64; 2]; 2]) -> Matrix5<f64> {
+        let mut j = Matrix5::zeros();
+        for (r, row) in PITCH.iter().zip(pitch) {
+            for (c, v) in PITCH.iter().zip(row) {
+                j[(*r, *c)] = v;
+            }
+        }
+        let lateral = [[-1.0, 0.0, -1.0], [0.0, -2.0, 0.0], [1.0, 0.0, -1.0]];
+        for (r, row) in LATERAL.iter().zip(lateral) {
+            for (c, v) in LATERAL.iter().zip(row) {
+                j[(*r, *c)] = v;
+            }
+        }
+        j
+    }
+
+    /// s^2 - s + 4.25 (trace 1, determinant 4.25): the pair 0.5 +- 2 i, a pitch oscillation
+    /// from too little damping.
+    #[test]
+    fn a_positive_pitch_trace_is_an_oscillation_for_lack_of_damping() {
+        let Start::Unstable(u) = start(&with_pitch([[0.5, 1.0], [-4.0, 0.5]]), &[0.0; 5]) else {
+            panic!("unstable");
+        };
+        let [m] = u.modes.as_slice() else {
+            panic!("{u:?}")
+        };
+        assert!((m.eigenvalue_re - 0.5).abs() < 1e-12 && (m.eigenvalue_im - 2.0).abs() < 1e-12);
+        assert_eq!((m.motion, m.subsystem), ("oscillation", "pitch"));
+        assert!(m.cause.as_deref().unwrap().starts_with("pitch damping: z_alpha + m_q = 1.000"));
+    }
+
+    /// A zero eigenvalue (m_alpha = 0, z_alpha = 0) and every other in the left half-plane:
+    /// neutral, neither stable nor unstable; all in the left half-plane: stable.
+    #[test]
+    fn a_neutral_trim_is_undecided_and_a_stable_one_stable() {
+        assert_eq!(
+            start(&with_pitch([[0.0, 1.0], [0.0, -1.0]]), &[0.0; 5]),
+            Start::Undecided
+        );
+        assert_eq!(
+            start(&with_pitch([[-1.0, 1.0], [-5.0, -1.0]]), &[0.0; 5]),
+            Start::Stable
+        );
+    }
+
+    #[test]
+    fn significant_digits_never_print_negative_zero() {
+        assert_eq!(significant(0.2945123), "0.2945");
+        assert_eq!(significant(-4.0), "-4.000");
+        assert_eq!(significant(1234.5678), "1235");
+        assert_eq!(significant(2.5e-7), "2.500e-7");
+        assert_eq!(significant(-0.0), "0");
+    }
+}

@@ -457,7 +457,11 @@ fn the_bare_f16_at_12000_m_mach_0_5_departs_at_its_unstable_trim() {
     let aircraft = model::aircraft::parse(&text, "f16").unwrap();
     let (a, _) = model::analysis::fast::analyze_routed_with(&aircraft, 0.0, true).unwrap();
     let f = a.first_departure.as_ref().expect("a first departure");
-    assert_eq!((f.kind, f.p0, f.delta_a_rad), ("unstable_trim", 0.0, 0.0), "{f:?}");
+    assert_eq!(
+        (f.kind, f.p0, f.delta_a_rad),
+        ("unstable_trim", 0.0, 0.0),
+        "{f:?}"
+    );
     let u = f.unstable_trim.as_ref().unwrap();
     let [m] = u.modes.as_slice() else {
         panic!("one unstable mode expected: {u:?}");
@@ -469,7 +473,10 @@ fn the_bare_f16_at_12000_m_mach_0_5_departs_at_its_unstable_trim() {
         m.eigenvalue_re
     );
     assert!(
-        m.cause.as_deref().unwrap().starts_with("static pitch instability"),
+        m.cause
+            .as_deref()
+            .unwrap()
+            .starts_with("static pitch instability"),
         "{m:?}"
     );
 }

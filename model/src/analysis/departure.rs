@@ -684,8 +684,15 @@ pub(super) fn check_finite(a: &super::Analysis) -> Result<(), String> {
             return Err(format!("the Hopf point at P0 = {:e} rad/s", j.p0));
         }
     }
-    if let Some(u) = a.first_departure.as_ref().and_then(|f| f.unstable_trim.as_ref()) {
-        let modes = u.modes.iter().flat_map(|m| [m.eigenvalue_re, m.eigenvalue_im]);
+    if let Some(u) = a
+        .first_departure
+        .as_ref()
+        .and_then(|f| f.unstable_trim.as_ref())
+    {
+        let modes = u
+            .modes
+            .iter()
+            .flat_map(|m| [m.eigenvalue_re, m.eigenvalue_im]);
         if !modes.chain([u.alpha, u.beta, u.q, u.r]).all(f64::is_finite) {
             return Err("the unstable trim at P0 = 0".into());
         }

@@ -18,11 +18,11 @@
 //!   `z_alpha + m_q < 0`;
 //! - lateral-directional, with characteristic polynomial `s^3 + a1 s^2 + a2 s + a3`: stable if
 //!   and only if `a1 > 0`, `a3 > 0` and `a1 a2 > a3`. `a3 = -det` and, expanded along the roll
-//!   rate's column, `det = l_p (n_beta + y_beta n_r) - n_p (l_beta + y_beta l_r)
-//!   - alpha0 (l_beta n_r - l_r n_beta)`: roll damping times the directional subsystem
-//!   (beta, r), the roll-yaw coupling through n_p, and the kinematic coupling p alpha0 of the
-//!   trim's angle of attack with the spiral combination. A positive det is a real divergence,
-//!   and the terms that make it positive are named.
+//!   rate's column, the determinant is the sum of `l_p (n_beta + y_beta n_r)`,
+//!   `n_p (l_beta + y_beta l_r)` negated and `alpha0 (l_beta n_r - l_r n_beta)` negated: roll
+//!   damping times the directional subsystem (beta, r), the roll-yaw coupling through n_p, and
+//!   the kinematic coupling p alpha0 of the trim's angle of attack with the spiral combination.
+//!   A positive det is a real divergence, and the terms that make it positive are named.
 //!
 //! ```
 //! use model::analysis::unstable_trim::{start, Start};
@@ -70,7 +70,8 @@ pub struct UnstableMode {
     /// or `"coupled"`.
     pub subsystem: &'static str,
     /// The derivatives that make it so, from the decoupled subsystem's stability conditions;
-    /// `None` where they say nothing about this mode (or the blocks are coupled).
+    /// absent where the blocks are coupled (or the mode lies on a condition's boundary).
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub cause: Option<String>,
 }
 
@@ -208,7 +209,7 @@ fn pitch_cause(j: &Matrix5<f64>, real: bool) -> Option<String> {
 /// Why the lateral-directional block of `j` (beta, p, r) is unstable, by the Routh-Hurwitz
 /// conditions of its characteristic polynomial `s^3 + a1 s^2 + a2 s + a3` (see the module's
 /// doc): `det > 0` for a real divergence (its positive terms named), `a1 < 0` (too little
-/// damping), `a1 a2 < a3` for an oscillation.
+/// damping), else `a1 a2 <= a3` (an oscillation, or two real roots > 0).
 fn lateral_cause(j: &Matrix5<f64>, real: bool, trim: &[f64; 5]) -> Option<String> {
     let [b, p, r] = LATERAL;
     let e = |i: usize, k: usize| j[(i, k)];
@@ -226,7 +227,11 @@ fn lateral_cause(j: &Matrix5<f64>, real: bool, trim: &[f64; 5]) -> Option<String
         ),
         (
             -e(r, p) * (e(b, b) * e(p, r) - e(b, r) * e(p, b)),
-            format!("roll-yaw coupling, -{} (l_beta + y_beta {})", n_p(trim), l_r(trim)),
+            format!(
+                "roll-yaw coupling, -{} (l_beta + y_beta {})",
+                n_p(trim),
+                l_r(trim)
+            ),
         ),
         (
             -e(b, p) * (e(p, b) * e(r, r) - e(p, r) * e(r, b)),
@@ -238,8 +243,8 @@ fn lateral_cause(j: &Matrix5<f64>, real: bool, trim: &[f64; 5]) -> Option<String
         ),
     ];
     let det: f64 = terms.iter().map(|(v, _)| v).sum();
-    let minors = e(b, b) * e(p, p) - e(b, p) * e(p, b) + directional + e(p, p) * e(r, r)
-        - e(p, r) * e(r, p);
+    let minors =
+        e(b, b) * e(p, p) - e(b, p) * e(p, b) + directional + e(p, p) * e(r, r) - e(p, r) * e(r, p);
     let (a1, a2, a3) = (-trace, minors, -det);
     if real && det > 0.0 {
         let positive: Vec<String> = terms
@@ -259,12 +264,14 @@ fn lateral_cause(j: &Matrix5<f64>, real: bool, trim: &[f64; 5]) -> Option<String
              subsystem (beta, p, r))",
             significant(trace)
         ))
-    } else if !real && a1 * a2 < a3 {
+    } else if a1 * a2 <= a3 {
+        // With a1 > 0 and a3 > 0 (the cases above excluded) only this condition can fail.
         Some(format!(
-            "lateral-directional oscillation: the subsystem (beta, p, r) has characteristic \
-             polynomial s^3 + a1 s^2 + a2 s + a3 with a1 a2 - a3 = {} < 0 (a1 = {}, a2 = {}, \
-             a3 = {}; stable needs a1 a2 > a3), directional subsystem (beta, r) determinant \
-             n_beta + y_beta n_r = {} and damping y_beta + n_r = {}",
+            "lateral-directional {}: the subsystem (beta, p, r) has characteristic polynomial \
+             s^3 + a1 s^2 + a2 s + a3 with a1 a2 - a3 = {} (a1 = {}, a2 = {}, a3 = {}; stable \
+             needs a1 a2 > a3), its directional subsystem (beta, r) determinant n_beta + \
+             y_beta n_r = {} and damping y_beta + n_r = {}",
+            if real { "instability" } else { "oscillation" },
             significant(a1 * a2 - a3),
             significant(a1),
             significant(a2),
@@ -343,7 +350,11 @@ mod tests {
         };
         assert!((m.eigenvalue_re - 0.5).abs() < 1e-12 && (m.eigenvalue_im - 2.0).abs() < 1e-12);
         assert_eq!((m.motion, m.subsystem), ("oscillation", "pitch"));
-        assert!(m.cause.as_deref().unwrap().starts_with("pitch damping: z_alpha + m_q = 1.000"));
+        assert!(m
+            .cause
+            .as_deref()
+            .unwrap()
+            .starts_with("pitch damping: z_alpha + m_q = 1.000"));
     }
 
     /// A zero eigenvalue (m_alpha = 0, z_alpha = 0) and every other in the left half-plane:

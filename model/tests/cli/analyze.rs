@@ -282,7 +282,10 @@ fn unstable_mode(path: &std::path::Path) -> serde_json::Value {
     ]));
     let f = &v["first_departure"];
     assert_eq!(f["kind"], "unstable_trim", "{f}");
-    assert_eq!((f["p0"].as_f64(), f["delta_a_deg"].as_f64()), (Some(0.0), Some(0.0)));
+    assert_eq!(
+        (f["p0"].as_f64(), f["delta_a_deg"].as_f64()),
+        (Some(0.0), Some(0.0))
+    );
     let modes = f["unstable_trim"]["modes"].as_array().unwrap();
     assert_eq!(modes.len(), 1, "{f}");
     modes[0].clone()
@@ -306,11 +309,20 @@ fn an_aircraft_with_m_alpha_above_z_alpha_m_q_departs_at_its_trim_in_pitch() {
     );
     let m = unstable_mode(&path);
     let want = 5f64.sqrt() - 1.0;
-    assert!((m["eigenvalue_re"].as_f64().unwrap() - want).abs() < 1e-12, "{m}");
+    assert!(
+        (m["eigenvalue_re"].as_f64().unwrap() - want).abs() < 1e-12,
+        "{m}"
+    );
     assert_eq!(m["eigenvalue_im"].as_f64(), Some(0.0));
-    assert_eq!((&m["motion"], &m["subsystem"]), (&"divergence".into(), &"pitch".into()));
+    assert_eq!(
+        (&m["motion"], &m["subsystem"]),
+        (&"divergence".into(), &"pitch".into())
+    );
     let cause = m["cause"].as_str().unwrap();
-    assert!(cause.starts_with("static pitch instability: m_alpha = 5.000"), "{cause}");
+    assert!(
+        cause.starts_with("static pitch instability: m_alpha = 5.000"),
+        "{cause}"
+    );
     assert!(cause.contains("z_alpha m_q - m_alpha = -4.000"), "{cause}");
 
     let out = model(&["analyze", path.to_str().unwrap(), "--delta-e-deg", "0"]);
@@ -322,7 +334,10 @@ fn an_aircraft_with_m_alpha_above_z_alpha_m_q_departs_at_its_trim_in_pitch() {
         "{text}"
     );
     // The jump and Hopf sections stay: they describe the airframe once it is held at its trim.
-    assert!(text.contains("Jump points") && text.contains("Hopf points"), "{text}");
+    assert!(
+        text.contains("Jump points") && text.contains("Hopf points"),
+        "{text}"
+    );
     let _ = std::fs::remove_dir_all(dir);
 }
 
@@ -337,7 +352,10 @@ fn an_aircraft_with_negative_n_beta_departs_at_its_trim_laterally() {
     let (y_beta, n_r, n_beta): (f64, f64, f64) = (-0.0558, -0.2608, -3.716);
     let (trace, det) = (y_beta + n_r, y_beta * n_r + n_beta);
     let want = (trace + (trace * trace - 4.0 * det).sqrt()) / 2.0;
-    assert!((m["eigenvalue_re"].as_f64().unwrap() - want).abs() < 1e-9, "{m} vs {want}");
+    assert!(
+        (m["eigenvalue_re"].as_f64().unwrap() - want).abs() < 1e-9,
+        "{m} vs {want}"
+    );
     assert_eq!(
         (&m["motion"], &m["subsystem"]),
         (&"divergence".into(), &"lateral-directional".into())
@@ -363,6 +381,9 @@ fn the_paper_aircraft_first_depart_by_their_critical_jump() {
         assert_eq!(f["kind"], "jump", "{name}: {f}");
         assert!(f.get("unstable_trim").is_none(), "{name}: {f}");
         assert!((f["p0"].as_f64().unwrap() - p0).abs() < 1e-6, "{name}: {f}");
-        assert!((f["delta_a_deg"].as_f64().unwrap() - delta_a).abs() < 1e-4, "{name}: {f}");
+        assert!(
+            (f["delta_a_deg"].as_f64().unwrap() - delta_a).abs() < 1e-4,
+            "{name}: {f}"
+        );
     }
 }

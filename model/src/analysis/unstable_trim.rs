@@ -19,9 +19,10 @@
 //! - lateral-directional, with characteristic polynomial `s^3 + a1 s^2 + a2 s + a3`: stable if
 //!   and only if `a1 > 0`, `a3 > 0` and `a1 a2 > a3`. `a3 = -det` and, expanded along the roll
 //!   rate's column, the determinant is the sum of `l_p (n_beta + y_beta n_r)`,
-//!   `n_p (l_beta + y_beta l_r)` negated and `alpha0 (l_beta n_r - l_r n_beta)` negated: roll
-//!   damping times the directional subsystem (beta, r), the roll-yaw coupling through n_p, and
-//!   the kinematic coupling p alpha0 of the trim's angle of attack with the spiral combination.
+//!   `n_p (l_beta + y_beta l_r)` negated and `(alpha0 + alpha_t) (l_beta n_r - l_r n_beta)`
+//!   negated: roll damping times the directional subsystem (beta, r), the roll-yaw coupling
+//!   through n_p, and the kinematic coupling of the principal axis' angle of attack with the
+//!   spiral combination.
 //!   A positive det is a real divergence, and the terms that make it positive are named.
 //!
 //! ```
@@ -236,8 +237,8 @@ fn lateral_cause(j: &Matrix5<f64>, real: bool, trim: &[f64; 5]) -> Option<String
         (
             -e(b, p) * (e(p, b) * e(r, r) - e(p, r) * e(r, b)),
             format!(
-                "the kinematic coupling p alpha0 with the spiral combination, -alpha0 (l_beta \
-                 n_r - {} n_beta)",
+                "the kinematic coupling p (alpha0 + alpha_t) with the spiral combination, \
+                 -(alpha0 + alpha_t) (l_beta n_r - {} n_beta)",
                 l_r(trim)
             ),
         ),

@@ -24,6 +24,7 @@ pub mod model;
 pub mod surfaces;
 pub mod table;
 pub mod table_xml;
+pub mod trim;
 pub mod units;
 pub mod write;
 pub mod xml;

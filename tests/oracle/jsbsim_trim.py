@@ -15,7 +15,9 @@ the aerodynamics at JSBSim's trim state, and the fed-back aero/cl-squared as JSB
 Input (stdin, JSON): {"root": DIR, "model": NAME, "conditions": [{"h_ft", "mach", "n"}, ...]}.
 Output (stdout, JSON): one object per condition, either {"ok": false, "error": text} or
 {"ok": true, "alpha_deg", "elevator_rad", "q_rad_sec", "load_factor" (JSBSim's
-forces/load-factor), "throttle", "thrust_lbs", "qdot", "udot", "wdot"}.
+forces/load-factor), "throttle", "thrust_lbs", "qdot", "udot", "wdot", "vt_fps", "weight_lbs",
+"qbar_psf", "alphadot_rad_sec", "thrust_moment_lbsft" (the pitching moment of the thrust about
+the CG)}.
 Needs `pip install jsbsim==1.3.3`.
 """
 import json
@@ -82,6 +84,9 @@ def trim(root, model, c):
         "udot": get("accelerations/udot-ft_sec2"),
         "wdot": get("accelerations/wdot-ft_sec2"),
         "vt_fps": get("velocities/vt-fps"),
+        "qbar_psf": get("aero/qbar-psf"),
+        "alphadot_rad_sec": get("aero/alphadot-rad_sec"),
+        "thrust_moment_lbsft": get("moments/m-prop-lbsft"),
         "weight_lbs": get("inertia/weight-lbs"),
     }
 

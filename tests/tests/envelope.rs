@@ -1,15 +1,15 @@
 //! `model envelope` against the path a user takes by hand: at grid points chosen by a seeded
-//! generator, the envelope's numbers equal those of `import jsbsim ... --level-flight` followed
-//! by `analyze` (the certified route with its exact fallback, as the CLI's table) at that flight
-//! condition, and the elevator increment for a load factor equals the pitch equilibrium at
-//! `p = 0` solved by hand. Bad ranges are refused before any work, and `--json` has the shape
-//! the documentation gives. Skipped with a message when the JSBSim models are not installed.
+//! generator, the envelope's numbers equal those of `import jsbsim ... --load-factor N` followed
+//! by `analyze` at the elevator increment (the certified route with its exact fallback, as the
+//! CLI's table) at that flight condition, and the catalogue table's row agrees with the
+//! envelope's point at the same condition. Bad ranges are refused before any work, and `--json`
+//! has the shape the documentation gives. Skipped with a message when the JSBSim models are not
+//! installed.
 
-use model::aircraft::{self, Param};
+use model::aircraft;
 use model::analysis::fast::analyze_routed_with;
 use model::envelope::source::Source;
 use model::envelope::{envelope, Elevator, Grid, Range};
-use model::equations::G;
 use model::jsbsim::catalogue;
 use model::jsbsim::condition::Speed;
 use model::jsbsim::import::{import, Alpha, Request};
@@ -44,7 +44,8 @@ fn installed() -> bool {
     found
 }
 
-/// The F-104's envelope at 0.5 g (a push) against import + analyze at five random grid points.
+/// The F-104's envelope trimmed at 0.5 g (a push), elevator increment 0.5 deg, against import
+/// at the same trim + analyze at the same increment, at five random grid points.
 #[test]
 fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
     if !installed() {
@@ -57,11 +58,16 @@ fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
     )
     .unwrap();
     let n = 0.5;
+    let increment = 0.5f64.to_radians();
+    let elevator = Elevator {
+        load_factor: n,
+        increment,
+    };
     let env = envelope(
         &source.load().unwrap(),
         "jsbsim:f104",
         &grid,
-        Elevator::LoadFactor(n),
+        elevator,
         &|_| {},
     );
     assert_eq!(env.points.len(), 42);
@@ -74,7 +80,7 @@ fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
             root: None,
             altitude_m: p.altitude_m,
             speed: Speed::Mach(p.mach),
-            alpha: Alpha::LevelFlight,
+            alpha: Alpha::Trim(n),
             settings: Vec::new(),
         };
         let text = match import(&request) {
@@ -88,13 +94,9 @@ fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
         let ac = aircraft::parse(&text, "jsbsim:f104").unwrap();
         assert!(p.trimmed);
         assert!((p.speed_m_s - ac.speed).abs() <= 1e-9 * ac.speed);
-        let v = |q| ac.value(q);
-        let per_rad = v(Param::ZAlpha) * v(Param::MDeltaE)
-            / (v(Param::MAlpha) - v(Param::Mq) * v(Param::ZAlpha));
-        let delta_e = p.delta_e_deg.unwrap().to_radians();
-        let q0 = (n - 1.0) * G / ac.speed;
-        assert!((per_rad * delta_e / q0 - 1.0).abs() < 1e-9, "{p:?}");
-        let (a, _) = analyze_routed_with(&ac, delta_e, true).unwrap();
+        assert_eq!(p.delta_e_deg, Some(increment.to_degrees()));
+        assert_eq!(p.load_factor, n);
+        let (a, _) = analyze_routed_with(&ac, increment, true).unwrap();
         let critical = a.critical.as_ref();
         let envelope_critical = p.critical.as_ref();
         assert_eq!(critical.map(|c| c.p0), envelope_critical.map(|c| c.p0));
@@ -143,7 +145,7 @@ fn bad_ranges_are_refused_before_any_work() {
 }
 
 /// `--json` prints one object whose `points` carry the documented keys, with no number that is
-/// not finite; a point without level flight says why.
+/// not finite; a point without a trim says which limit.
 #[test]
 fn json_has_one_entry_per_point_with_the_documented_keys() {
     if !installed() {
@@ -162,7 +164,9 @@ fn json_has_one_entry_per_point_with_the_documented_keys() {
         "altitude_m",
         "mach",
         "speed_m_s",
+        "load_factor",
         "alpha_deg",
+        "elevator_trim_deg",
         "delta_e_deg",
         "trimmed",
         "critical",
@@ -177,7 +181,10 @@ fn json_has_one_entry_per_point_with_the_documented_keys() {
         }
         if p["trimmed"] == Value::Bool(false) {
             assert!(
-                p["reason"].as_str().unwrap().contains("level flight"),
+                p["reason"]
+                    .as_str()
+                    .unwrap()
+                    .starts_with("untrimmable at n = 1: "),
                 "{p}"
             );
             assert!(p["critical"].is_null());
@@ -190,6 +197,40 @@ fn json_has_one_entry_per_point_with_the_documented_keys() {
     let text = String::from_utf8(out).unwrap();
     assert!(!text.contains("NaN") && !text.contains("inf"));
     assert_eq!(v["untrimmed"], 1, "{text}");
+}
+
+/// The catalogue table (`import jsbsim --list --analyze`) and the envelope use the same trim
+/// (1 g) and the same elevator (increment 0 from it): the F-104's row and the envelope's point
+/// at the same condition give the same critical jump, to the digits the row prints.
+#[test]
+fn the_catalogue_row_and_the_envelope_point_agree_at_the_same_condition() {
+    if !installed() {
+        return;
+    }
+    let source = Source::parse("jsbsim:f104").unwrap();
+    let loaded = source.load().unwrap();
+    for (h, mach) in [(6000.0, 0.6), (3000.0, 0.8), (9000.0, 0.9)] {
+        let point = model::envelope::Point::at(&loaded, "f104", h, mach, Elevator::default());
+        let spec = format!("jsbsim:f104 --altitude-m {h} --mach {mach}");
+        let row = model::present::catalogue::row("f104", &model::jsbsim::cli::source(&spec));
+        let c = point
+            .critical
+            .as_ref()
+            .unwrap_or_else(|| panic!("{point:?}"));
+        let cells = format!(
+            "| {:.4} | {:.2} | {} |",
+            c.p0,
+            c.delta_a_deg,
+            if c.within_limits == Some(true) {
+                "yes"
+            } else {
+                "no"
+            }
+        );
+        assert!(row.contains(&cells), "{h} m, Mach {mach}: {row} vs {cells}");
+        let kind = point.first_departure.as_ref().map_or("none", |d| d.kind);
+        assert!(row.contains(kind), "{row} vs {kind}");
+    }
 }
 
 /// `--out` writes the CSV (one row per point), the summaries and the three maps.

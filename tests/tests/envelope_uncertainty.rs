@@ -1,6 +1,6 @@
 //! `model envelope --uncertainty` against aircraft sampled by hand: at grid points chosen by a
 //! seeded generator, no exact analysis of an aircraft of the box (its corners and seeded random
-//! points, each written into the file `import jsbsim ... --level-flight` gives there, and read
+//! points, each written into the file `import jsbsim ... --load-factor 1` gives there, and read
 //! without any `[uncertainty]` table) has a critical jump below the certified lower bounds. Bad
 //! specs are refused (exit 2) naming them before any work, and `--json` has the documented keys.
 //! Skipped with a message when the JSBSim models are not installed.
@@ -104,7 +104,7 @@ fn no_exact_sample_of_a_box_beats_its_certified_lower_bound() {
             root: None,
             altitude_m: h,
             speed: Speed::Mach(m),
-            alpha: Alpha::LevelFlight,
+            alpha: Alpha::Trim(1.0),
             settings: Vec::new(),
         };
         let Ok(text) = import(&request) else {

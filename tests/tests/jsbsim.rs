@@ -16,9 +16,10 @@ use model::jsbsim::surfaces::surfaces;
 use model::jsbsim::Model;
 use model::random::Rng;
 use serde_json::{json, Value};
-use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use support::{f, jsbsim_coefficients, oracle_state};
+
+mod support;
 
 /// Relative agreement required: both sides sum the same products of the same table lookups in
 /// double precision; what differs is the order of some operations (JSBSim interpolates a
@@ -34,29 +35,7 @@ fn root() -> Option<PathBuf> {
 }
 
 fn oracle(request: &Value) -> Vec<Value> {
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("oracle/jsbsim_oracle.py");
-    let mut child = Command::new("python3")
-        .arg(script)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("python3 runs");
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(request.to_string().as_bytes())
-        .unwrap();
-    let out = child.wait_with_output().unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "oracle failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let last = stdout.lines().last().expect("oracle output");
-    serde_json::from_str::<Vec<Value>>(last).expect("oracle JSON")
+    support::python_oracle("jsbsim_oracle.py", request)
 }
 
 /// Random states: altitude 5,000-40,000 ft, Mach 0.3-0.85, alpha -4..14 deg, beta -6..6 deg,
@@ -81,11 +60,6 @@ fn states(rng: &mut Rng, inputs: &[&str], n: usize) -> Vec<Value> {
             })
         })
         .collect()
-}
-
-fn f(v: &Value) -> f64 {
-    v.as_f64()
-        .unwrap_or_else(|| panic!("number expected, got {v}"))
 }
 
 /// The largest relative difference of `ours` from `theirs`, relative to `scale`.
@@ -228,49 +202,6 @@ fn forces_moments_and_mass_agree_with_jsbsim() {
     }
 }
 
-/// JSBSim's coefficients (CL, CD, CY, Cl, Cm, Cn) from its body forces and moments.
-fn jsbsim_coefficients(out: &Value, model: &Model) -> [f64; 6] {
-    let atm = &out["atmosphere"];
-    let (a, b) = (f(&atm["alpha"]), f(&atm["beta"]));
-    let qs = f(&atm["qbar"]) * model.metrics.wing_area;
-    let fb: Vec<f64> = out["forces"].as_array().unwrap().iter().map(f).collect();
-    let m: Vec<f64> = out["moments"].as_array().unwrap().iter().map(f).collect();
-    let wx = a.cos() * b.cos() * fb[0] + b.sin() * fb[1] + a.sin() * b.cos() * fb[2];
-    let wz = -a.sin() * fb[0] + a.cos() * fb[2];
-    let (s, c) = (model.metrics.span, model.metrics.chord);
-    [
-        -wz / qs,
-        -wx / qs,
-        fb[1] / qs,
-        m[0] / (qs * s),
-        m[1] / (qs * c),
-        m[2] / (qs * s),
-    ]
-}
-
-/// The oracle's description of `state` at `setup`'s condition: surfaces set as the import sets
-/// them, the clean configuration's zeros (`zeroed`, gear up among them) given to JSBSim too.
-fn oracle_state(setup: &Setup, state: &State, zeroed: &[String]) -> Value {
-    let mut set: serde_json::Map<String, Value> =
-        zeroed.iter().map(|n| (n.clone(), json!(0.0))).collect();
-    set.extend(
-        setup
-            .surfaces
-            .iter()
-            .zip(state.surfaces)
-            .flat_map(|(s, x)| s.values(x))
-            .filter_map(|(n, v)| v.map(|v| (n.to_string(), json!(v)))),
-    );
-    json!({
-        "h_ft": setup.condition.altitude_m / 0.3048,
-        "mach": setup.condition.mach,
-        "alpha_deg": state.alpha.to_degrees(),
-        "beta_deg": state.beta.to_degrees(),
-        "p": state.rates[0], "q": state.rates[1], "r": state.rates[2],
-        "set": set,
-    })
-}
-
 /// The import's derivatives against central differences taken in JSBSim (step 1e-4 in each
 /// variable, alpha-dot and beta-dot held at zero, the fed-back lift settled): the state
 /// construction, the rate scaling, the body-to-wind conversion and the aileron sign are checked
@@ -346,7 +277,7 @@ fn imported_files_load_and_analyze() {
             root: Some(root.clone()),
             altitude_m: 6000.0,
             speed: Speed::Mach(0.5),
-            alpha: Alpha::LevelFlight,
+            alpha: Alpha::Trim(1.0),
             settings: Vec::new(),
         };
         let text = import(&request).unwrap_or_else(|e| panic!("{name}: {e}"));
@@ -355,7 +286,7 @@ fn imported_files_load_and_analyze() {
         let analysis = model::analysis::analyze(&aircraft, 2f64.to_radians());
         assert!(analysis.is_ok(), "{name}: analyze failed");
         let spec = format!(
-            "jsbsim:{name} --jsbsim-root {} --altitude-m 6000 --mach 0.5 --level-flight",
+            "jsbsim:{name} --jsbsim-root {} --altitude-m 6000 --mach 0.5",
             root.display()
         );
         let source = model::jsbsim::cli::source(&spec).unwrap();

@@ -261,7 +261,13 @@ pub fn trim(setup: &Setup, n: f64) -> Result<Trim, String> {
                         travel.show(travel.search.1)
                     )));
                 }
-                return refine(setup, &travel, (n, need, q), (a_prev, e_prev), (alpha, excess));
+                return refine(
+                    setup,
+                    &travel,
+                    (n, need, q),
+                    (a_prev, e_prev),
+                    (alpha, excess),
+                );
             }
         }
         gap_from = None;
@@ -309,9 +315,8 @@ fn refine(
         }
     };
     let alpha = zero(&mut excess, lo, hi, 1e-13)?;
-    let (elevator, _) = pitch_balance(setup, travel, alpha, q)?.ok_or_else(|| {
-        format!("untrimmable at n = {n}: no pitch balance at the trim's alpha")
-    })?;
+    let (elevator, _) = pitch_balance(setup, travel, alpha, q)?
+        .ok_or_else(|| format!("untrimmable at n = {n}: no pitch balance at the trim's alpha"))?;
     if let Some((min, max, source)) = &travel.limits {
         if elevator < *min || elevator > *max {
             return Err(format!(

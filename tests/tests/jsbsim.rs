@@ -213,10 +213,14 @@ fn derivatives_agree_with_central_differences_in_jsbsim() {
         eprintln!("skipped: {}", catalogue::HOW_TO_GET);
         return;
     };
+    // An alpha given (elevator neutral, no pitch rate), or NaN for the 2-g trim (the trimmed
+    // alpha, elevator and pull-up pitch rate: the state the import differentiates at, which the
+    // file's derivatives must equal).
     for (name, altitude_m, mach, alpha_deg) in [
         ("f104", 6000.0, 0.5, 4.0f64),
         ("X15", 6096.0, 0.5, 3.0),
         ("T38", 3000.0, 0.6, 2.5),
+        ("f104", 3048.0, 0.9, f64::NAN),
     ] {
         let path = catalogue::model_path(Some(&root), name).unwrap();
         let model = Model::load(&path).unwrap();
@@ -226,13 +230,33 @@ fn derivatives_agree_with_central_differences_in_jsbsim() {
             surfaces: surfaces(&model, &path),
             settings: Vec::new(),
         };
-        let state = State {
-            alpha: alpha_deg.to_radians(),
-            beta: 0.0,
-            rates: [0.0; 3],
-            surfaces: [0.0; 3],
+        let state = if alpha_deg.is_nan() {
+            model::jsbsim::trim::trim(&setup, 2.0).unwrap().state()
+        } else {
+            State {
+                alpha: alpha_deg.to_radians(),
+                beta: 0.0,
+                rates: [0.0; 3],
+                surfaces: [0.0; 3],
+            }
         };
         let (base, ours) = derivatives(&setup, &state).unwrap();
+        if alpha_deg.is_nan() {
+            let text = import(&Request {
+                model: name.into(),
+                root: Some(root.clone()),
+                altitude_m,
+                speed: Speed::Mach(mach),
+                alpha: Alpha::Trim(2.0),
+                settings: Vec::new(),
+            })
+            .unwrap();
+            assert!(state.rates[1] > 0.0 && state.surfaces[1] < 0.0, "{state:?}");
+            for d in &ours {
+                let line = format!("\n{} = {:?}", d.key, d.value);
+                assert!(text.contains(&line), "{line} not in the file:\n{text}");
+            }
+        }
         let h = 1e-4;
         let mut states = Vec::new();
         for (_, _, variable, _) in DERIVATIVES {

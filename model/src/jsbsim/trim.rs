@@ -344,3 +344,114 @@ pub fn lift_in_weights(setup: &Setup, lift_coefficient: f64) -> f64 {
     lift_coefficient * setup.condition.qbar_psf() * setup.model.metrics.wing_area
         / setup.model.totals().weight
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::jsbsim::condition::{Condition, Speed};
+    use crate::jsbsim::model::Model;
+    use crate::jsbsim::surfaces::{Range, Surface};
+    use crate::jsbsim::units::FT_PER_M;
+
+    /// A model whose lift and pitching moment are linear, `CL = 0.2 + 4 alpha + 0.5 de` and
+    /// `Cm = 0.05 - 0.8 alpha - 1.2 de - 10 q c / (2V)`, the CG at the reference point.
+    const LINEAR: &str = r#"<?xml version="1.0"?>
+<fdm_config name="Linear">
+ <metrics>
+   <wingarea unit="FT2">200</wingarea><wingspan unit="FT">30</wingspan><chord unit="FT">8</chord>
+   <location name="AERORP" unit="IN"><x>100</x><y>0</y><z>0</z></location>
+ </metrics>
+ <mass_balance>
+   <ixx unit="SLUG*FT2">3000</ixx><iyy unit="SLUG*FT2">20000</iyy><izz unit="SLUG*FT2">22000</izz>
+   <emptywt unit="LBS">15000</emptywt>
+   <location name="CG" unit="IN"><x>100</x><y>0</y><z>0</z></location>
+ </mass_balance>
+ <aerodynamics>
+  <axis name="LIFT"><function name="aero/lift"><product>
+    <property>aero/qbar-psf</property><property>metrics/Sw-sqft</property>
+    <sum><value>0.2</value>
+      <product><value>4</value><property>aero/alpha-rad</property></product>
+      <product><value>0.5</value><property>fcs/elevator-pos-rad</property></product></sum>
+  </product></function></axis>
+  <axis name="PITCH"><function name="aero/pitch"><product>
+    <property>aero/qbar-psf</property><property>metrics/Sw-sqft</property>
+    <property>metrics/cbarw-ft</property>
+    <sum><value>0.05</value>
+      <product><value>-0.8</value><property>aero/alpha-rad</property></product>
+      <product><value>-1.2</value><property>fcs/elevator-pos-rad</property></product>
+      <product><value>-10</value><property>aero/ci2vel</property>
+        <property>velocities/q-aero-rad_sec</property></product></sum>
+  </product></function></axis>
+ </aerodynamics>
+</fdm_config>"#;
+
+    fn with_linear<T>(body: impl FnOnce(&Setup) -> T) -> T {
+        let model = Model::parse(LINEAR, "linear.xml").unwrap_or_else(|e| panic!("{e}"));
+        let surface = |control, range| Surface {
+            control,
+            range,
+            per_unit_travel: false,
+        };
+        let elevator = Range {
+            min: -0.3,
+            max: 0.25,
+            source: "the test".to_string(),
+        };
+        let setup = Setup {
+            model: &model,
+            condition: Condition::new(3000.0, Speed::Mach(0.5)).unwrap(),
+            surfaces: vec![
+                surface(Control::Aileron, None),
+                surface(Control::Elevator, Some(elevator)),
+                surface(Control::Rudder, None),
+            ],
+            settings: Vec::new(),
+        };
+        body(&setup)
+    }
+
+    /// The trim against the two linear equations solved by hand (Cramer's rule). To 2e-9 rad:
+    /// the model's forces scale with the dynamic pressure it reads (aero/qbar-psf, from the
+    /// density in slug/ft^3 and the speed in ft/s), whose unit factors differ from those of the
+    /// condition's qbar used here by 3.5e-9 relative, about 1e-9 rad of alpha at these lifts.
+    #[test]
+    fn the_trim_of_a_linear_model_solves_lift_and_pitch_by_hand() {
+        with_linear(|setup| {
+            let qs = setup.condition.qbar_psf() * 200.0;
+            let v_fps = setup.condition.speed * FT_PER_M;
+            for n in [0.0, 1.0, 2.5, -0.5] {
+                let q = (n - 1.0) * G / setup.condition.speed;
+                let lift = n * 15000.0 / qs - 0.2;
+                let pitch = -0.05 + 10.0 * q * 8.0 / (2.0 * v_fps);
+                // 4 a + 0.5 de = lift; -0.8 a - 1.2 de = pitch.
+                let det = 4.0 * -1.2 - 0.5 * -0.8;
+                let alpha = (lift * -1.2 - 0.5 * pitch) / det;
+                let de = (4.0 * pitch + 0.8 * lift) / det;
+                let t = trim(setup, n).unwrap();
+                assert!((t.alpha - alpha).abs() < 2e-9, "n {n}: {t:?} vs {alpha}");
+                assert!((t.elevator - de).abs() < 2e-9, "n {n}: {t:?} vs {de}");
+                assert_eq!(t.q, q);
+                assert_eq!(t.state().rates, [0.0, q, 0.0]);
+            }
+        });
+    }
+
+    /// Beyond the elevator's travel, and beyond the lift of 30 deg alpha, the trim is refused
+    /// naming the limit.
+    #[test]
+    fn an_untrimmable_load_factor_names_the_limit() {
+        with_linear(|setup| {
+            assert!(trim(setup, 6.0).is_ok());
+            let e = trim(setup, 7.0).unwrap_err();
+            assert!(
+                e.starts_with("untrimmable at n = 7: the trim needs elevator")
+                    && e.contains("beyond its travel of -17.19 deg to 14.32 deg (the test)"),
+                "{e}"
+            );
+            let e = trim(setup, 15.0).unwrap_err();
+            assert!(e.contains("no lift solution"), "{e}");
+            let e = trim(setup, f64::NAN).unwrap_err();
+            assert!(e.contains("expected a finite load factor"), "{e}");
+        });
+    }
+}

@@ -250,6 +250,7 @@ fn out_writes_the_csv_the_summaries_and_the_maps() {
     command(&a, &mut out).unwrap();
     let csv = std::fs::read_to_string(dir.join("envelope.csv")).unwrap();
     assert_eq!(csv.lines().count(), 5, "{csv}");
+    assert!(csv.starts_with("altitude_m,mach,speed_m_s,trimmed,alpha_deg,elevator_trim_deg,"));
     for stem in ["critical_aileron", "critical_roll_rate", "first_departure"] {
         for ext in ["svg", "png", "csv"] {
             assert!(dir.join(format!("{stem}.{ext}")).is_file(), "{stem}.{ext}");
@@ -292,7 +293,7 @@ fn margins_of(csv: &str) -> Vec<(f64, f64, f64)> {
         .map(|row| {
             let f: Vec<&str> = row.split(',').collect();
             let num = |k: usize| f[k].parse::<f64>().unwrap();
-            (num(1), num(0), num(10))
+            (num(1), num(0), num(11))
         })
         .collect()
 }

@@ -50,6 +50,8 @@ const B: parametric::Derivatives = parametric::Derivatives {
     n_delta_a: 0.0,
     n_delta_r: -1.0,
     l_delta_r: 0.0,
+    z_0: 0.0,
+    alpha_t: 0.0,
 };
 
 fn assert_close(got: f64, want: f64, rel: f64, what: &str) {
@@ -227,6 +229,8 @@ fn fighter_with_aileron_yaw_expands_and_its_trims_hold_the_roll_equation() {
         n_delta_a: v[15],
         n_delta_r: v[16],
         l_delta_r: v[17],
+        z_0: v[18],
+        alpha_t: v[19],
     };
     assert!(k.n_delta_a != 0.0 && k.l_delta_r != 0.0, "{k:?}");
     let mut real = 0;
@@ -239,8 +243,8 @@ fn fighter_with_aileron_yaw_expands_and_its_trims_hold_the_roll_equation() {
             }
             let (a, b, q, r, da) = (t.alpha, t.beta, t.q, t.r, t.delta_a);
             let f = [
-                q - p0 * b + k.z_alpha * a,
-                p0 * a - r + k.y_beta * b,
+                q - p0 * b + k.z_alpha * a + k.z_0,
+                p0 * (k.alpha_t + a) - r + k.y_beta * b,
                 k.l_p * p0 + k.l_beta * b + k.l_r * r - k.e * q * r + k.l_delta_a * da,
                 k.m_q * q + k.m_alpha * a + k.c * p0 * r + k.m_delta_e * DE,
                 k.n_r * r + k.n_beta * b + k.n_p * p0 - k.d * p0 * q + k.n_delta_a * da,

@@ -2,27 +2,27 @@
 // Header-only C99 library: the roll-coupling jump criterion (AIAA 2006-6267), the same
 // functions as the Rust crate roll-criterion, printed from the same expression DAGs.
 // Derived from model/src/equations.rs (Appendix A.2 of AIAA 2006-6267) by model/src/derivation.rs;
-// inputs: symbolic parameters, Aircraft A (model::aircraft), Aircraft B (model::aircraft); model 0.1.0; inputs hash 37dab29631f8b07d (model::emit::inputs_hash).
+// inputs: symbolic parameters, Aircraft A (model::aircraft), Aircraft B (model::aircraft); model 0.1.0; inputs hash 4ced037f40d23ebc (model::emit::inputs_hash).
 // Operation counts after common-subexpression elimination (parametric; the functions of
 // each built-in aircraft are counted in its section):
 //   function                         add/sub     mul     div     neg    libm   total
-//   trim                                  41      85       4       2       1     133
-//   zero_sideslip_trim                     9      23       2       1       0      35
-//   jacobian5                              2       6       0       4       0      12
-//   residual_denominator                  40      84       3       0       1     128
-//   stiffness                             60     111       4       0       1     176
-//   det_k                                 61     118       4       0       1     184
-//   det_j5                                89     164       3       0       1     257
-//   zero_sideslip_det_k                   23      44       1       0       0      68
+//   trim                                  55     101       4       2       1     163
+//   zero_sideslip_trim                    20      34       2       0       0      56
+//   jacobian5                              3       6       0       4       0      13
+//   residual_denominator                  55     100       3       0       1     159
+//   stiffness                             75     127       4       0       1     207
+//   det_k                                 79     142       4       0       1     226
+//   det_j5                               103     177       3       0       1     284
+//   zero_sideslip_det_k                   33      61       1       0       0      95
 //   divergence_biquadratic                 5      10       0       0       0      15
 //   divergence_roll_rates                  7      14       2       2       4      29
-//   jump_polynomial                      272     452       0       1       1     726
-//   zero_sideslip_jump_polynomial         56     117       0       0       0     173
-//   characteristic_coefficients          190     245       3       1       1     440
-//   hurwitz_delta4                       196     255       3       0       1     455
-//   hopf_omega_squared                   192     247       4       0       1     444
-//   Prepared::new                         18      51       0       0       0      69
-//   Prepared::det_k                       48      84       1       0       2     135
+//   jump_polynomial                      312     521       0       1       1     835
+//   zero_sideslip_jump_polynomial         86     167       0       0       0     253
+//   characteristic_coefficients          200     260       3       1       1     465
+//   hurwitz_delta4                       206     270       3       0       1     480
+//   hopf_omega_squared                   202     262       4       0       1     469
+//   Prepared::new                         36      81       0       0       0     117
+//   Prepared::det_k                       52      91       1       0       2     146
 //
 // Use: `#include "roll_criterion.h"` and link with -lm (for sqrt and copysign). Every
 // function is straight-line double arithmetic: no allocation, no recursion, no loops or
@@ -96,6 +96,10 @@ struct rc_derivatives {
     double n_delta_r;
     /// `l_delta_r`, 1/s^2 (Table A.1).
     double l_delta_r;
+    /// `z_0`, rad/s (Table A.1).
+    double z_0;
+    /// `alpha_t`, rad (Table A.1).
+    double alpha_t;
 };
 
 /// A pseudo-steady trim of the unconstrained roll at roll rate P0 (Eqs 3-4 and the roll equation); `trim` returns one per trim branch.
@@ -182,7 +186,7 @@ struct rc_matrix5x5 {
 ///      [P0, y_beta, 0, -1],
 ///      [m_alpha, 0, m_q, C*P0],
 ///      [0, n_beta, -D*P0, n_r]]
-/// b = [0, 0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
+/// b = [z_0, alpha_t*P0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
 /// p_dot = l_p*P0 + l_r*R0 + l_beta*beta0 + l_delta_a*delta_a + l_delta_r*delta_r - E*Q0*R0
 /// ```
 ///
@@ -191,57 +195,68 @@ struct rc_matrix5x5 {
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 41 add/sub, 85 mul, 4 div, 2 neg, 1 libm (133 operations); straight-line, no branches.
+/// Cost after CSE: 55 add/sub, 101 mul, 4 div, 2 neg, 1 libm (163 operations); straight-line, no branches.
 /// Rust: `roll_criterion::trim`, bit-identical.
 ROLL_CRITERION_API struct rc_Trim_array2 rc_trim(const struct rc_derivatives *k, double p0,
     double delta_e, double delta_r)
 {
     const double t0 = p0 * k->c;
     const double t1 = p0 * k->d;
-    const double t2 = delta_e * k->m_delta_e;
-    const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
-    const double t4 = k->m_q * k->n_r + t0 * t1;
-    const double t5 = k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
-        k->m_alpha * t1);
-    const double t6 = p0 * t1;
-    const double t7 = k->n_beta + k->y_beta * k->n_r;
-    const double t8 = p0 * k->m_q;
-    const double t9 = k->y_beta * t0;
-    const double t10 = t8 + t9;
-    const double t11 = p0 * k->n_r;
-    const double t12 = k->m_alpha + p0 * t0;
-    const double t13 = k->z_alpha * k->m_q - t12;
-    const double t14 = k->z_alpha * t9 + p0 * t12;
-    const double t15 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t8 - k->y_beta * k->m_alpha;
-    const double t16 = 1.0 / (t5 - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) +
-        k->m_alpha * k->n_beta));
-    const double t17 = (t2 * (t6 - t7) + t3 * t10) * t16;
-    const double t18 = (t2 * (k->z_alpha * t1 + t11) + t3 * t13) * t16;
-    const double t19 = (t3 * t14 - t2 * (k->z_alpha * t7 + p0 * t11)) * t16;
-    const double t20 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t6)) - t3 *
-        t15) * t16;
-    const double t21 = t16 * (k->n_delta_a * t10);
-    const double t22 = t16 * (k->n_delta_a * t13);
-    const double t23 = t16 * (k->n_delta_a * t14);
-    const double t24 = t16 * (k->n_delta_a * t15);
-    const double t25 = k->l_r - k->e * t19;
-    const double t26 = t20 * t25 + (delta_r * k->l_delta_r - k->l_beta * t18 + p0 * k->l_p);
-    const double t27 = k->l_delta_a - k->l_beta * t22 - t23 * (k->e * t20) - t24 * t25;
-    const double t28 = k->e * 0.5 * (t23 * t24) * 2.0;
-    const double t29 = t27 * (1.0 + sqrt(1.0 - t26 * t28 / (t27 * t27) * 4.0));
-    const double t30 = t26 * 2.0 / t29;
-    const double t31 = t29 / (t28 * 2.0);
+    const double t2 = p0 * k->alpha_t;
+    const double t3 = delta_e * k->m_delta_e;
+    const double t4 = delta_r * k->n_delta_r + p0 * k->n_p;
+    const double t5 = k->m_q * k->n_r + t0 * t1;
+    const double t6 = k->n_beta * t0;
+    const double t7 = k->m_q * k->n_beta;
+    const double t8 = k->y_beta * t5 + t7;
+    const double t9 = p0 * t5;
+    const double t10 = k->m_alpha * k->n_r;
+    const double t11 = k->m_alpha * t1;
+    const double t12 = t9 + t11;
+    const double t13 = k->m_alpha * k->n_beta;
+    const double t14 = p0 * t6 + k->y_beta * t10 + t13;
+    const double t15 = p0 * t1;
+    const double t16 = k->n_beta + k->y_beta * k->n_r;
+    const double t17 = p0 * k->m_q;
+    const double t18 = k->y_beta * t0;
+    const double t19 = t17 + t18;
+    const double t20 = p0 * k->n_r;
+    const double t21 = k->m_alpha + p0 * t0;
+    const double t22 = k->z_alpha * k->m_q - t21;
+    const double t23 = k->z_alpha * t18 + p0 * t21;
+    const double t24 = k->z_0 * (k->y_beta * t11 - p0 * t7) - t2 * (t13 - (k->z_alpha * t7 + p0 *
+        t11));
+    const double t25 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t17 - k->y_beta * k->m_alpha;
+    const double t26 = 1.0 / (k->z_alpha * t8 + p0 * t12 - t14);
+    const double t27 = (t2 * (t6 - t9) - k->z_0 * t8 - t3 * (t15 - t16) - t4 * t19) * t26;
+    const double t28 = (k->z_0 * t12 - t2 * (k->z_alpha * t5 - t10) - t3 * (k->z_alpha * t1 + t20) -
+        t4 * t22) * t26;
+    const double t29 = (k->z_0 * t14 + t2 * (p0 * t10 - k->z_alpha * t6) - t3 * (k->z_alpha * t16 +
+        p0 * t20) + t4 * t23) * t26;
+    const double t30 = (t24 + t3 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t15)) -
+        t4 * t25) * t26;
+    const double t31 = t26 * (k->n_delta_a * t19);
+    const double t32 = t26 * (k->n_delta_a * t22);
+    const double t33 = t26 * (k->n_delta_a * t23);
+    const double t34 = t26 * (k->n_delta_a * t25);
+    const double t35 = k->l_r - k->e * t29;
+    const double t36 = t30 * t35 + (delta_r * k->l_delta_r + k->l_beta * t28 + p0 * k->l_p);
+    const double t37 = k->l_delta_a - k->l_beta * t32 - t33 * (k->e * t30) - t34 * t35;
+    const double t38 = k->e * 0.5 * (t33 * t34) * 2.0;
+    const double t39 = t37 * (1.0 + sqrt(1.0 - t36 * t38 / (t37 * t37) * 4.0));
+    const double t40 = t36 * 2.0 / t39;
+    const double t41 = t39 / (t38 * 2.0);
     struct rc_Trim_array2 result;
-    result.v[0].alpha = t21 * t30 - t17;
-    result.v[0].beta = t22 * t30 - t18;
-    result.v[0].q = t19 - t23 * t30;
-    result.v[0].r = t20 + t24 * t30;
-    result.v[0].delta_a = -t30;
-    result.v[1].alpha = t21 * t31 - t17;
-    result.v[1].beta = t22 * t31 - t18;
-    result.v[1].q = t19 - t23 * t31;
-    result.v[1].r = t20 + t24 * t31;
-    result.v[1].delta_a = -t31;
+    result.v[0].alpha = t27 + t31 * t40;
+    result.v[0].beta = t28 + t32 * t40;
+    result.v[0].q = t29 - t33 * t40;
+    result.v[0].r = t30 + t34 * t40;
+    result.v[0].delta_a = -t40;
+    result.v[1].alpha = t27 + t31 * t41;
+    result.v[1].beta = t28 + t32 * t41;
+    result.v[1].q = t29 - t33 * t41;
+    result.v[1].r = t30 + t34 * t41;
+    result.v[1].delta_a = -t41;
     return result;
 }
 
@@ -256,7 +271,7 @@ ROLL_CRITERION_API struct rc_Trim_array2 rc_trim(const struct rc_derivatives *k,
 /// A1 = [[z_alpha, 1, 0],
 ///       [P0, 0, -1],
 ///       [m_alpha, m_q, C*P0]]
-/// b1 = [0, 0, m_delta_e*delta_e]
+/// b1 = [z_0, alpha_t*P0, m_delta_e*delta_e]
 /// delta_a = (-l_p*n_delta_r*P0 - l_r*n_delta_r*R0 + n_p*l_delta_r*P0 + n_r*l_delta_r*R0
 ///                - D*l_delta_r*P0*Q0 + E*n_delta_r*Q0*R0)
 ///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
@@ -269,24 +284,32 @@ ROLL_CRITERION_API struct rc_Trim_array2 rc_trim(const struct rc_derivatives *k,
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 9 add/sub, 23 mul, 2 div, 1 neg, 0 libm (35 operations); straight-line, no branches.
+/// Cost after CSE: 20 add/sub, 34 mul, 2 div, 0 neg, 0 libm (56 operations); straight-line, no branches.
 /// Rust: `roll_criterion::zero_sideslip_trim`, bit-identical.
 ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_zero_sideslip_trim(const struct rc_derivatives *k,
     double p0, double delta_e)
 {
-    const double t0 = delta_e * k->m_delta_e;
-    const double t1 = 1.0 / (k->z_alpha * k->m_q - (k->m_alpha + p0 * (p0 * k->c)));
-    const double t2 = k->z_alpha * t0 * t1;
-    const double t3 = p0 * t0 * t1;
-    const double t4 = 1.0 / (k->l_delta_a * k->n_delta_r - k->n_delta_a * k->l_delta_r);
-    const double t5 = t3 * (k->l_r + k->e * t2) + p0 * k->l_p;
-    const double t6 = p0 * (k->n_p + k->d * t2) + k->n_r * t3;
+    const double t0 = p0 * k->c;
+    const double t1 = p0 * k->alpha_t;
+    const double t2 = delta_e * k->m_delta_e;
+    const double t3 = k->z_alpha * k->m_q;
+    const double t4 = k->m_alpha + p0 * t0;
+    const double t5 = 1.0 / (t3 - t4);
+    const double t6 = (k->z_0 * t4 - t1 * (k->z_alpha * t0) - k->z_alpha * t2) * t5;
+    const double t7 = (t1 * (t3 - k->m_alpha) - k->z_0 * (p0 * k->m_q) + p0 * t2) * t5;
+    const double t8 = 1.0 / (k->l_delta_a * k->n_delta_r - k->n_delta_a * k->l_delta_r);
+    const double t9 = k->e * t6;
+    const double t10 = p0 * k->l_p;
+    const double t11 = k->d * t6;
+    const double t12 = k->n_r * t7;
     struct rc_ZeroSideslipTrim result;
-    result.alpha = t0 * t1;
-    result.q = -t2;
-    result.r = t3;
-    result.delta_a = t4 * (k->l_delta_r * t6 - k->n_delta_r * t5);
-    result.delta_r = t4 * (k->n_delta_a * t5 - k->l_delta_a * t6);
+    result.alpha = (t2 + (t0 * t1 - k->m_q * k->z_0)) * t5;
+    result.q = t6;
+    result.r = t7;
+    result.delta_a = t8 * (k->n_delta_r * (t7 * (t9 - k->l_r) - t10) + k->l_delta_r * (p0 * (k->n_p
+        - t11) + t12));
+    result.delta_r = t8 * (k->l_delta_a * (p0 * (t11 - k->n_p) - t12) + k->n_delta_a * (t10 + t7 *
+        (k->l_r - t9)));
     return result;
 }
 
@@ -297,7 +320,7 @@ ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_zero_sideslip_trim(const struct
 /// Formulas, printed from the derivation (model/src/derivation.rs):
 /// ```text
 /// J5 = [[z_alpha, -P0, -beta0, 1, 0],
-///       [P0, y_beta, alpha0, 0, -1],
+///       [P0, y_beta, alpha_t + alpha0, 0, -1],
 ///       [0, l_beta, l_p, -E*R0, l_r - E*Q0],
 ///       [m_alpha, 0, C*R0, m_q, C*P0],
 ///       [0, n_beta, n_p - D*Q0, -D*P0, n_r]]
@@ -310,7 +333,7 @@ ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_zero_sideslip_trim(const struct
 /// - `q`: pitch rate, rad/s
 /// - `r`: yaw rate, rad/s
 ///
-/// Cost after CSE: 2 add/sub, 6 mul, 0 div, 4 neg, 0 libm (12 operations); straight-line, no branches.
+/// Cost after CSE: 3 add/sub, 6 mul, 0 div, 4 neg, 0 libm (13 operations); straight-line, no branches.
 /// Rust: `roll_criterion::jacobian5`, bit-identical.
 ROLL_CRITERION_API struct rc_matrix5x5 rc_jacobian5(const struct rc_derivatives *k, double alpha,
     double beta, double p, double q, double r)
@@ -323,7 +346,7 @@ ROLL_CRITERION_API struct rc_matrix5x5 rc_jacobian5(const struct rc_derivatives 
     result.m[0][4] = 0.0;
     result.m[1][0] = p;
     result.m[1][1] = k->y_beta;
-    result.m[1][2] = alpha;
+    result.m[1][2] = alpha + k->alpha_t;
     result.m[1][3] = 0.0;
     result.m[1][4] = -1.0;
     result.m[2][0] = 0.0;
@@ -349,7 +372,7 @@ ROLL_CRITERION_API struct rc_matrix5x5 rc_jacobian5(const struct rc_derivatives 
 ///
 /// Formulas, printed from the derivation (model/src/derivation.rs):
 /// ```text
-/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// d = l_p + l_r*alpha_t + l_r*alpha0 - E*alpha_t*Q0 - E*alpha0*Q0 - E*beta0*R0
 /// ```
 ///
 /// Arguments:
@@ -357,45 +380,57 @@ ROLL_CRITERION_API struct rc_matrix5x5 rc_jacobian5(const struct rc_derivatives 
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 40 add/sub, 84 mul, 3 div, 0 neg, 1 libm (128 operations); straight-line, no branches.
+/// Cost after CSE: 55 add/sub, 100 mul, 3 div, 0 neg, 1 libm (159 operations); straight-line, no branches.
 /// Rust: `roll_criterion::residual_denominator`, bit-identical.
 ROLL_CRITERION_API double rc_residual_denominator(const struct rc_derivatives *k, double p0,
     double delta_e, double delta_r)
 {
     const double t0 = p0 * k->c;
     const double t1 = p0 * k->d;
-    const double t2 = delta_e * k->m_delta_e;
-    const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
-    const double t4 = k->m_q * k->n_r + t0 * t1;
-    const double t5 = k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
-        k->m_alpha * t1);
-    const double t6 = p0 * t1;
-    const double t7 = k->n_beta + k->y_beta * k->n_r;
-    const double t8 = p0 * k->m_q;
-    const double t9 = k->y_beta * t0;
-    const double t10 = t8 + t9;
-    const double t11 = p0 * k->n_r;
-    const double t12 = k->m_alpha + p0 * t0;
-    const double t13 = k->z_alpha * k->m_q - t12;
-    const double t14 = k->z_alpha * t9 + p0 * t12;
-    const double t15 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t8 - k->y_beta * k->m_alpha;
-    const double t16 = 1.0 / (t5 - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) +
-        k->m_alpha * k->n_beta));
-    const double t17 = (t2 * (k->z_alpha * t1 + t11) + t3 * t13) * t16;
-    const double t18 = (t3 * t14 - t2 * (k->z_alpha * t7 + p0 * t11)) * t16;
-    const double t19 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t6)) - t3 *
-        t15) * t16;
-    const double t20 = t16 * (k->n_delta_a * t13);
-    const double t21 = t16 * (k->n_delta_a * t14);
-    const double t22 = t16 * (k->n_delta_a * t15);
-    const double t23 = k->l_r - k->e * t18;
-    const double t24 = t19 * t23 + (delta_r * k->l_delta_r - k->l_beta * t17 + p0 * k->l_p);
-    const double t25 = k->l_delta_a - k->l_beta * t20 - t21 * (k->e * t19) - t22 * t23;
-    const double t26 = t24 * 2.0 / (t25 * (1.0 + sqrt(1.0 - t24 * (k->e * 0.5 * (t21 * t22) * 2.0) /
-        (t25 * t25) * 4.0)));
-    const double t27 = t16 * (k->n_delta_a * t10) * t26 - (t2 * (t6 - t7) + t3 * t10) * t16;
-    return k->l_p + k->l_r * t27 - k->e * ((t20 * t26 - t17) * (t19 + t22 * t26) + t27 * (t18 - t21
-        * t26));
+    const double t2 = p0 * k->alpha_t;
+    const double t3 = delta_e * k->m_delta_e;
+    const double t4 = delta_r * k->n_delta_r + p0 * k->n_p;
+    const double t5 = k->m_q * k->n_r + t0 * t1;
+    const double t6 = k->n_beta * t0;
+    const double t7 = k->m_q * k->n_beta;
+    const double t8 = k->y_beta * t5 + t7;
+    const double t9 = p0 * t5;
+    const double t10 = k->m_alpha * k->n_r;
+    const double t11 = k->m_alpha * t1;
+    const double t12 = t9 + t11;
+    const double t13 = k->m_alpha * k->n_beta;
+    const double t14 = p0 * t6 + k->y_beta * t10 + t13;
+    const double t15 = p0 * t1;
+    const double t16 = k->n_beta + k->y_beta * k->n_r;
+    const double t17 = p0 * k->m_q;
+    const double t18 = k->y_beta * t0;
+    const double t19 = t17 + t18;
+    const double t20 = p0 * k->n_r;
+    const double t21 = k->m_alpha + p0 * t0;
+    const double t22 = k->z_alpha * k->m_q - t21;
+    const double t23 = k->z_alpha * t18 + p0 * t21;
+    const double t24 = k->z_0 * (k->y_beta * t11 - p0 * t7) - t2 * (t13 - (k->z_alpha * t7 + p0 *
+        t11));
+    const double t25 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t17 - k->y_beta * k->m_alpha;
+    const double t26 = 1.0 / (k->z_alpha * t8 + p0 * t12 - t14);
+    const double t27 = (k->z_0 * t12 - t2 * (k->z_alpha * t5 - t10) - t3 * (k->z_alpha * t1 + t20) -
+        t4 * t22) * t26;
+    const double t28 = (k->z_0 * t14 + t2 * (p0 * t10 - k->z_alpha * t6) - t3 * (k->z_alpha * t16 +
+        p0 * t20) + t4 * t23) * t26;
+    const double t29 = (t24 + t3 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t15)) -
+        t4 * t25) * t26;
+    const double t30 = t26 * (k->n_delta_a * t22);
+    const double t31 = t26 * (k->n_delta_a * t23);
+    const double t32 = t26 * (k->n_delta_a * t25);
+    const double t33 = k->l_r - k->e * t28;
+    const double t34 = t29 * t33 + (delta_r * k->l_delta_r + k->l_beta * t27 + p0 * k->l_p);
+    const double t35 = k->l_delta_a - k->l_beta * t30 - t31 * (k->e * t29) - t32 * t33;
+    const double t36 = t34 * 2.0 / (t35 * (1.0 + sqrt(1.0 - t34 * (k->e * 0.5 * (t31 * t32) * 2.0) /
+        (t35 * t35) * 4.0)));
+    const double t37 = k->alpha_t + ((t2 * (t6 - t9) - k->z_0 * t8 - t3 * (t15 - t16) - t4 * t19) *
+        t26 + t26 * (k->n_delta_a * t19) * t36);
+    return k->l_p + k->l_r * t37 - k->e * ((t28 - t31 * t36) * t37 + (t27 + t30 * t36) * (t29 + t32
+        * t36));
 }
 
 /// The stiffness matrix K of the second-order form (Eqs 15-16, 27-31) at the trim of
@@ -407,9 +442,9 @@ ROLL_CRITERION_API double rc_residual_denominator(const struct rc_derivatives *k
 /// ```text
 /// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
 ///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
-/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// g = [-C*R0 - m_q*beta0 - C*alpha_t*P0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha_t + n_r*alpha0 - D*P0*beta0]
 /// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
-/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// d = l_p + l_r*alpha_t + l_r*alpha0 - E*alpha_t*Q0 - E*alpha0*Q0 - E*beta0*R0
 /// ```
 ///
 /// Arguments:
@@ -417,59 +452,71 @@ ROLL_CRITERION_API double rc_residual_denominator(const struct rc_derivatives *k
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 60 add/sub, 111 mul, 4 div, 0 neg, 1 libm (176 operations); straight-line, no branches.
+/// Cost after CSE: 75 add/sub, 127 mul, 4 div, 0 neg, 1 libm (207 operations); straight-line, no branches.
 /// Rust: `roll_criterion::stiffness`, bit-identical.
 ROLL_CRITERION_API struct rc_matrix2x2 rc_stiffness(const struct rc_derivatives *k, double p0,
     double delta_e, double delta_r)
 {
     const double t0 = p0 * k->c;
     const double t1 = p0 * k->d;
-    const double t2 = delta_e * k->m_delta_e;
-    const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
-    const double t4 = k->m_q * k->n_r + t0 * t1;
-    const double t5 = k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
-        k->m_alpha * t1);
-    const double t6 = p0 * t1;
-    const double t7 = k->n_beta + k->y_beta * k->n_r;
-    const double t8 = p0 * k->m_q;
-    const double t9 = k->y_beta * t0;
-    const double t10 = t8 + t9;
-    const double t11 = p0 * k->n_r;
-    const double t12 = k->z_alpha * k->m_q;
-    const double t13 = k->m_alpha + p0 * t0;
-    const double t14 = t12 - t13;
-    const double t15 = k->z_alpha * t9 + p0 * t13;
-    const double t16 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t8 - k->y_beta * k->m_alpha;
-    const double t17 = 1.0 / (t5 - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) +
-        k->m_alpha * k->n_beta));
-    const double t18 = (t2 * (k->z_alpha * t1 + t11) + t3 * t14) * t17;
-    const double t19 = (t3 * t15 - t2 * (k->z_alpha * t7 + p0 * t11)) * t17;
-    const double t20 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t6)) - t3 *
-        t16) * t17;
-    const double t21 = t17 * (k->n_delta_a * t14);
-    const double t22 = t17 * (k->n_delta_a * t15);
-    const double t23 = t17 * (k->n_delta_a * t16);
-    const double t24 = k->l_r - k->e * t19;
-    const double t25 = t20 * t24 + (delta_r * k->l_delta_r - k->l_beta * t18 + p0 * k->l_p);
-    const double t26 = k->l_delta_a - k->l_beta * t21 - t22 * (k->e * t20) - t23 * t24;
-    const double t27 = t25 * 2.0 / (t26 * (1.0 + sqrt(1.0 - t25 * (k->e * 0.5 * (t22 * t23) * 2.0) /
-        (t26 * t26) * 4.0)));
-    const double t28 = t17 * (k->n_delta_a * t10) * t27 - (t2 * (t6 - t7) + t3 * t10) * t17;
-    const double t29 = t21 * t27 - t18;
-    const double t30 = t22 * t27;
-    const double t31 = t19 - t30;
-    const double t32 = t20 + t23 * t27;
-    const double t33 = 1.0 / (k->l_p + k->l_r * t28 - k->e * (t29 * t32 + t28 * t31));
-    const double t34 = k->e * (k->z_alpha * t32 - p0 * t31) + p0 * k->l_r;
-    const double t35 = k->l_beta + k->y_beta * k->l_r - k->e * (p0 * t32 + k->y_beta * t31);
-    const double t36 = t33 * (k->c * (t32 + p0 * t28) + k->m_q * t29);
-    const double t37 = p0 * p0;
-    const double t38 = t33 * (k->d * (t30 - t19 - p0 * t29) + (k->n_p + k->n_r * t28));
+    const double t2 = p0 * k->alpha_t;
+    const double t3 = delta_e * k->m_delta_e;
+    const double t4 = delta_r * k->n_delta_r + p0 * k->n_p;
+    const double t5 = k->m_q * k->n_r + t0 * t1;
+    const double t6 = k->n_beta * t0;
+    const double t7 = k->m_q * k->n_beta;
+    const double t8 = k->y_beta * t5 + t7;
+    const double t9 = p0 * t5;
+    const double t10 = k->m_alpha * k->n_r;
+    const double t11 = k->m_alpha * t1;
+    const double t12 = t9 + t11;
+    const double t13 = k->m_alpha * k->n_beta;
+    const double t14 = p0 * t6 + k->y_beta * t10 + t13;
+    const double t15 = p0 * t1;
+    const double t16 = k->n_beta + k->y_beta * k->n_r;
+    const double t17 = p0 * k->m_q;
+    const double t18 = k->y_beta * t0;
+    const double t19 = t17 + t18;
+    const double t20 = p0 * k->n_r;
+    const double t21 = k->z_alpha * k->m_q;
+    const double t22 = k->m_alpha + p0 * t0;
+    const double t23 = t21 - t22;
+    const double t24 = k->z_alpha * t18 + p0 * t22;
+    const double t25 = k->z_0 * (k->y_beta * t11 - p0 * t7) - t2 * (t13 - (k->z_alpha * t7 + p0 *
+        t11));
+    const double t26 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t17 - k->y_beta * k->m_alpha;
+    const double t27 = 1.0 / (k->z_alpha * t8 + p0 * t12 - t14);
+    const double t28 = (k->z_0 * t12 - t2 * (k->z_alpha * t5 - t10) - t3 * (k->z_alpha * t1 + t20) -
+        t4 * t23) * t27;
+    const double t29 = (k->z_0 * t14 + t2 * (p0 * t10 - k->z_alpha * t6) - t3 * (k->z_alpha * t16 +
+        p0 * t20) + t4 * t24) * t27;
+    const double t30 = (t25 + t3 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t15)) -
+        t4 * t26) * t27;
+    const double t31 = t27 * (k->n_delta_a * t23);
+    const double t32 = t27 * (k->n_delta_a * t24);
+    const double t33 = t27 * (k->n_delta_a * t26);
+    const double t34 = k->l_r - k->e * t29;
+    const double t35 = t30 * t34 + (delta_r * k->l_delta_r + k->l_beta * t28 + p0 * k->l_p);
+    const double t36 = k->l_delta_a - k->l_beta * t31 - t32 * (k->e * t30) - t33 * t34;
+    const double t37 = t35 * 2.0 / (t36 * (1.0 + sqrt(1.0 - t35 * (k->e * 0.5 * (t32 * t33) * 2.0) /
+        (t36 * t36) * 4.0)));
+    const double t38 = t28 + t31 * t37;
+    const double t39 = t32 * t37;
+    const double t40 = t29 - t39;
+    const double t41 = t30 + t33 * t37;
+    const double t42 = k->alpha_t + ((t2 * (t6 - t9) - k->z_0 * t8 - t3 * (t15 - t16) - t4 * t19) *
+        t27 + t27 * (k->n_delta_a * t19) * t37);
+    const double t43 = 1.0 / (k->l_p + k->l_r * t42 - k->e * (t40 * t42 + t38 * t41));
+    const double t44 = k->e * (k->z_alpha * t41 - p0 * t40) + p0 * k->l_r;
+    const double t45 = k->l_beta + k->y_beta * k->l_r - k->e * (p0 * t41 + k->y_beta * t40);
+    const double t46 = t43 * (k->c * (t41 + p0 * t42) + k->m_q * t38);
+    const double t47 = p0 * p0;
+    const double t48 = t43 * (k->d * (t39 - t29 - p0 * t38) + (k->n_p + k->n_r * t42));
     struct rc_matrix2x2 result;
-    result.m[0][0] = t12 - k->m_alpha - k->c * t37 + t34 * t36;
-    result.m[0][1] = t35 * t36 - p0 * (k->m_q + k->c * k->y_beta);
-    result.m[1][0] = p0 * (k->n_r + k->d * k->z_alpha) - t34 * t38;
-    result.m[1][1] = t7 - k->d * t37 - t35 * t38;
+    result.m[0][0] = t21 - k->m_alpha - k->c * t47 + t44 * t46;
+    result.m[0][1] = t45 * t46 - p0 * (k->m_q + k->c * k->y_beta);
+    result.m[1][0] = p0 * (k->n_r + k->d * k->z_alpha) - t44 * t48;
+    result.m[1][1] = t16 - k->d * t47 - t45 * t48;
     return result;
 }
 
@@ -483,9 +530,9 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_stiffness(const struct rc_derivatives 
 /// ```text
 /// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
 ///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
-/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// g = [-C*R0 - m_q*beta0 - C*alpha_t*P0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha_t + n_r*alpha0 - D*P0*beta0]
 /// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
-/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// d = l_p + l_r*alpha_t + l_r*alpha0 - E*alpha_t*Q0 - E*alpha0*Q0 - E*beta0*R0
 /// ```
 ///
 /// Arguments:
@@ -493,65 +540,76 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_stiffness(const struct rc_derivatives 
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 61 add/sub, 118 mul, 4 div, 0 neg, 1 libm (184 operations); straight-line, no branches.
+/// Cost after CSE: 79 add/sub, 142 mul, 4 div, 0 neg, 1 libm (226 operations); straight-line, no branches.
 /// Rust: `roll_criterion::det_k`, bit-identical.
 ROLL_CRITERION_API double rc_det_k(const struct rc_derivatives *k, double p0, double delta_e,
     double delta_r)
 {
     const double t0 = p0 * k->c;
     const double t1 = p0 * k->d;
-    const double t2 = delta_e * k->m_delta_e;
-    const double t3 = delta_r * k->n_delta_r;
-    const double t4 = p0 * k->n_p;
-    const double t5 = t3 + t4;
-    const double t6 = k->m_q * k->n_r + t0 * t1;
-    const double t7 = k->z_alpha * (k->y_beta * t6 + k->m_q * k->n_beta) + p0 * (p0 * t6 +
-        k->m_alpha * t1);
-    const double t8 = t7 - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) + k->m_alpha *
-        k->n_beta);
-    const double t9 = p0 * t1;
-    const double t10 = k->n_beta + k->y_beta * k->n_r;
-    const double t11 = p0 * k->m_q;
-    const double t12 = k->y_beta * t0;
-    const double t13 = p0 * k->n_r;
-    const double t14 = t2 * (k->z_alpha * t1 + t13);
-    const double t15 = k->z_alpha * k->m_q;
-    const double t16 = k->m_alpha + p0 * t0;
-    const double t17 = t15 - t16;
-    const double t18 = t2 * (k->z_alpha * t10 + p0 * t13);
-    const double t19 = k->z_alpha * t12 + p0 * t16;
-    const double t20 = t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t9));
-    const double t21 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t11 - k->y_beta * k->m_alpha;
-    const double t22 = 1.0 / t8;
-    const double t23 = (t20 - t5 * t21) * t22;
-    const double t24 = t22 * (k->n_delta_a * t19);
-    const double t25 = t22 * (k->n_delta_a * t21);
-    const double t26 = k->l_r - k->e * ((t5 * t19 - t18) * t22);
-    const double t27 = t23 * t26 + (delta_r * k->l_delta_r - k->l_beta * ((t14 + t5 * t17) * t22) +
+    const double t2 = p0 * k->alpha_t;
+    const double t3 = delta_e * k->m_delta_e;
+    const double t4 = delta_r * k->n_delta_r;
+    const double t5 = p0 * k->n_p;
+    const double t6 = t4 + t5;
+    const double t7 = k->m_q * k->n_r + t0 * t1;
+    const double t8 = k->n_beta * t0;
+    const double t9 = k->m_q * k->n_beta;
+    const double t10 = k->y_beta * t7 + t9;
+    const double t11 = p0 * t7;
+    const double t12 = k->m_alpha * k->n_r;
+    const double t13 = k->m_alpha * t1;
+    const double t14 = t11 + t13;
+    const double t15 = k->m_alpha * k->n_beta;
+    const double t16 = p0 * t8 + k->y_beta * t12 + t15;
+    const double t17 = k->z_alpha * t10 + p0 * t14 - t16;
+    const double t18 = p0 * t1;
+    const double t19 = k->n_beta + k->y_beta * k->n_r;
+    const double t20 = p0 * k->m_q;
+    const double t21 = k->y_beta * t0;
+    const double t22 = p0 * k->n_r;
+    const double t23 = k->z_0 * t14 - t2 * (k->z_alpha * t7 - t12) - t3 * (k->z_alpha * t1 + t22);
+    const double t24 = k->z_alpha * k->m_q;
+    const double t25 = k->m_alpha + p0 * t0;
+    const double t26 = t24 - t25;
+    const double t27 = k->z_0 * t16 + t2 * (p0 * t12 - k->z_alpha * t8) - t3 * (k->z_alpha * t19 +
+        p0 * t22);
+    const double t28 = k->z_alpha * t21 + p0 * t25;
+    const double t29 = k->z_0 * (k->y_beta * t13 - p0 * t9) - t2 * (t15 - (k->z_alpha * t9 + p0 *
+        t13));
+    const double t30 = t29 + t3 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t18));
+    const double t31 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t20 - k->y_beta * k->m_alpha;
+    const double t32 = 1.0 / t17;
+    const double t33 = (t30 - t6 * t31) * t32;
+    const double t34 = t32 * (k->n_delta_a * t28);
+    const double t35 = t32 * (k->n_delta_a * t31);
+    const double t36 = k->l_r - k->e * ((t27 + t6 * t28) * t32);
+    const double t37 = t33 * t36 + (delta_r * k->l_delta_r + k->l_beta * ((t23 - t6 * t26) * t32) +
         p0 * k->l_p);
-    const double t28 = k->l_delta_a - k->l_beta * (t22 * (k->n_delta_a * t17)) - t24 * (k->e * t23)
-        - t25 * t26;
-    const double t29 = t27 * 2.0 / (t28 * (1.0 + sqrt(1.0 - t27 * (k->e * 0.5 * (t24 * t25) * 2.0) /
-        (t28 * t28) * 4.0)));
-    const double t30 = t4 + (t3 - k->n_delta_a * t29);
-    const double t31 = t2 * (t9 - t10) + (t11 + t12) * t30;
-    const double t32 = t14 + t17 * t30;
-    const double t33 = t19 * t30 - t18;
-    const double t34 = t20 - t21 * t30;
-    const double t35 = k->m_q * t32 - k->c * t34 + t0 * t31;
-    const double t36 = k->n_p * t8 - k->d * t33 + t1 * t32 - k->n_r * t31;
-    const double t37 = p0 * k->e;
-    const double t38 = p0 * p0;
-    const double t39 = t15 - k->m_alpha - k->c * t38;
-    const double t40 = p0 * (k->m_q + k->c * k->y_beta);
-    const double t41 = p0 * (k->n_r + k->d * k->z_alpha);
-    const double t42 = t10 - k->d * t38;
-    const double t43 = (t8 * (k->l_beta + k->y_beta * k->l_r) - t34 * t37 - t33 * (k->e *
-        k->y_beta)) * (t36 * t39 - t35 * t41);
-    const double t44 = (t8 * (p0 * k->l_r) + t34 * (k->e * k->z_alpha) - t33 * t37) * (t35 * t42 +
-        t36 * t40) + t43;
-    return t39 * t42 + t40 * t41 - t44 / (k->l_p * (t8 * t8) + k->e * (t32 * t34) - k->l_r * (t8 *
-        t31) + k->e * (t31 * t33));
+    const double t38 = k->l_delta_a - k->l_beta * (t32 * (k->n_delta_a * t26)) - t34 * (k->e * t33)
+        - t35 * t36;
+    const double t39 = t37 * 2.0 / (t38 * (1.0 + sqrt(1.0 - t37 * (k->e * 0.5 * (t34 * t35) * 2.0) /
+        (t38 * t38) * 4.0)));
+    const double t40 = t5 + (t4 - k->n_delta_a * t39);
+    const double t41 = t2 * (t8 - t11) - k->z_0 * t10 - t3 * (t18 - t19) - (t20 + t21) * t40;
+    const double t42 = t23 - t26 * t40;
+    const double t43 = t27 + t28 * t40;
+    const double t44 = t30 - t31 * t40;
+    const double t45 = t17 * (p0 * (k->c * k->alpha_t)) + k->c * t44 + k->m_q * t42 + t0 * t41;
+    const double t46 = t17 * (k->n_p + k->n_r * k->alpha_t) - k->d * t43 - t1 * t42 + k->n_r * t41;
+    const double t47 = p0 * k->e;
+    const double t48 = t17 * t17 * (k->l_p + k->l_r * k->alpha_t) - t17 * t43 * (k->e * k->alpha_t)
+        - k->e * (t42 * t44) + k->l_r * (t17 * t41);
+    const double t49 = p0 * p0;
+    const double t50 = t24 - k->m_alpha - k->c * t49;
+    const double t51 = p0 * (k->m_q + k->c * k->y_beta);
+    const double t52 = p0 * (k->n_r + k->d * k->z_alpha);
+    const double t53 = t19 - k->d * t49;
+    const double t54 = (t17 * (k->l_beta + k->y_beta * k->l_r) - t44 * t47 - t43 * (k->e *
+        k->y_beta)) * (t46 * t50 + t45 * t52);
+    const double t55 = (t17 * (p0 * k->l_r) + t44 * (k->e * k->z_alpha) - t43 * t47) * (t46 * t51 -
+        t45 * t53) + t54;
+    return t50 * t53 + t51 * t52 - t55 / (t48 - k->e * (t41 * t43));
 }
 
 /// The determinant of the 5x5 Jacobian at the trim of `p0`, 1/s^5;
@@ -562,78 +620,88 @@ ROLL_CRITERION_API double rc_det_k(const struct rc_derivatives *k, double p0, do
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 89 add/sub, 164 mul, 3 div, 0 neg, 1 libm (257 operations); straight-line, no branches.
+/// Cost after CSE: 103 add/sub, 177 mul, 3 div, 0 neg, 1 libm (284 operations); straight-line, no branches.
 /// Rust: `roll_criterion::det_j5`, bit-identical.
 ROLL_CRITERION_API double rc_det_j5(const struct rc_derivatives *k, double p0, double delta_e,
     double delta_r)
 {
     const double t0 = p0 * k->c;
     const double t1 = p0 * k->d;
-    const double t2 = delta_e * k->m_delta_e;
-    const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
-    const double t4 = k->m_q * k->n_r + t0 * t1;
-    const double t5 = k->z_alpha * (k->y_beta * t4 + k->m_q * k->n_beta) + p0 * (p0 * t4 +
-        k->m_alpha * t1);
-    const double t6 = p0 * t1;
-    const double t7 = k->n_beta + k->y_beta * k->n_r;
-    const double t8 = p0 * k->m_q;
-    const double t9 = k->y_beta * t0;
-    const double t10 = t8 + t9;
-    const double t11 = p0 * k->n_r;
-    const double t12 = k->m_alpha + p0 * t0;
-    const double t13 = k->z_alpha * k->m_q - t12;
-    const double t14 = k->z_alpha * t9 + p0 * t12;
-    const double t15 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t8 - k->y_beta * k->m_alpha;
-    const double t16 = 1.0 / (t5 - (p0 * (k->n_beta * t0) + k->y_beta * (k->m_alpha * k->n_r) +
-        k->m_alpha * k->n_beta));
-    const double t17 = (t2 * (k->z_alpha * t1 + t11) + t3 * t13) * t16;
-    const double t18 = (t3 * t14 - t2 * (k->z_alpha * t7 + p0 * t11)) * t16;
-    const double t19 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t6)) - t3 *
-        t15) * t16;
-    const double t20 = t16 * (k->n_delta_a * t13);
-    const double t21 = t16 * (k->n_delta_a * t14);
-    const double t22 = t16 * (k->n_delta_a * t15);
-    const double t23 = k->l_r - k->e * t18;
-    const double t24 = t19 * t23 + (delta_r * k->l_delta_r - k->l_beta * t17 + p0 * k->l_p);
-    const double t25 = k->l_delta_a - k->l_beta * t20 - t21 * (k->e * t19) - t22 * t23;
-    const double t26 = t24 * 2.0 / (t25 * (1.0 + sqrt(1.0 - t24 * (k->e * 0.5 * (t21 * t22) * 2.0) /
-        (t25 * t25) * 4.0)));
-    const double t27 = t16 * (k->n_delta_a * t10) * t26 - (t2 * (t6 - t7) + t3 * t10) * t16;
-    const double t28 = t20 * t26 - t17;
-    const double t29 = t18 - t21 * t26;
-    const double t30 = t19 + t22 * t26;
-    const double t31 = k->e * t29;
-    const double t32 = 2.0 * t31 - k->l_r;
-    const double t33 = k->e * k->n_p;
-    const double t34 = k->l_p + k->l_r * t27;
-    const double t35 = t29 * (k->l_r * k->m_q - t27 * (k->e * k->m_alpha) - k->c * k->l_beta - t29 *
-        (k->e * k->m_q));
-    const double t36 = t31 - k->l_r;
-    const double t37 = k->l_p * k->n_r;
-    const double t38 = k->c * (k->e * (t30 * (k->n_r * t30 + k->n_beta * t28)) + (k->l_beta * k->n_p
+    const double t2 = p0 * k->alpha_t;
+    const double t3 = delta_e * k->m_delta_e;
+    const double t4 = delta_r * k->n_delta_r + p0 * k->n_p;
+    const double t5 = k->m_q * k->n_r + t0 * t1;
+    const double t6 = k->n_beta * t0;
+    const double t7 = k->m_q * k->n_beta;
+    const double t8 = k->y_beta * t5 + t7;
+    const double t9 = p0 * t5;
+    const double t10 = k->m_alpha * k->n_r;
+    const double t11 = k->m_alpha * t1;
+    const double t12 = t9 + t11;
+    const double t13 = k->m_alpha * k->n_beta;
+    const double t14 = p0 * t6 + k->y_beta * t10 + t13;
+    const double t15 = p0 * t1;
+    const double t16 = k->n_beta + k->y_beta * k->n_r;
+    const double t17 = p0 * k->m_q;
+    const double t18 = k->y_beta * t0;
+    const double t19 = t17 + t18;
+    const double t20 = p0 * k->n_r;
+    const double t21 = k->m_alpha + p0 * t0;
+    const double t22 = k->z_alpha * k->m_q - t21;
+    const double t23 = k->z_alpha * t18 + p0 * t21;
+    const double t24 = k->z_0 * (k->y_beta * t11 - p0 * t7) - t2 * (t13 - (k->z_alpha * t7 + p0 *
+        t11));
+    const double t25 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t17 - k->y_beta * k->m_alpha;
+    const double t26 = 1.0 / (k->z_alpha * t8 + p0 * t12 - t14);
+    const double t27 = (k->z_0 * t12 - t2 * (k->z_alpha * t5 - t10) - t3 * (k->z_alpha * t1 + t20) -
+        t4 * t22) * t26;
+    const double t28 = (k->z_0 * t14 + t2 * (p0 * t10 - k->z_alpha * t6) - t3 * (k->z_alpha * t16 +
+        p0 * t20) + t4 * t23) * t26;
+    const double t29 = (t24 + t3 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t15)) -
+        t4 * t25) * t26;
+    const double t30 = t26 * (k->n_delta_a * t22);
+    const double t31 = t26 * (k->n_delta_a * t23);
+    const double t32 = t26 * (k->n_delta_a * t25);
+    const double t33 = k->l_r - k->e * t28;
+    const double t34 = t29 * t33 + (delta_r * k->l_delta_r + k->l_beta * t27 + p0 * k->l_p);
+    const double t35 = k->l_delta_a - k->l_beta * t30 - t31 * (k->e * t29) - t32 * t33;
+    const double t36 = t34 * 2.0 / (t35 * (1.0 + sqrt(1.0 - t34 * (k->e * 0.5 * (t31 * t32) * 2.0) /
+        (t35 * t35) * 4.0)));
+    const double t37 = t27 + t30 * t36;
+    const double t38 = t28 - t31 * t36;
+    const double t39 = t29 + t32 * t36;
+    const double t40 = k->e * t38;
+    const double t41 = p0 * (k->l_p * (k->c * k->d)) + k->c * (k->d * (t39 * (2.0 * t40 - k->l_r) -
+        k->l_beta * t37) - t39 * (k->e * k->n_p));
+    const double t42 = k->alpha_t + ((t2 * (t6 - t9) - k->z_0 * t8 - t3 * (t15 - t16) - t4 * t19) *
+        t26 + t26 * (k->n_delta_a * t19) * t36);
+    const double t43 = k->l_r - t40;
+    const double t44 = k->c * (k->z_alpha * (k->y_beta * k->l_p - k->l_beta * t42) - k->l_beta *
+        t38) + k->m_q * (t38 * t43);
+    const double t45 = t40 - k->l_r;
+    const double t46 = k->c * (k->e * (t39 * (k->n_r * t39 + k->n_beta * t37)) + (k->l_beta * k->n_p
         - k->l_p * k->n_beta));
-    const double t39 = k->d * (t35 + (k->c * (k->z_alpha * (k->y_beta * k->l_p - k->l_beta * t27)) +
-        k->m_alpha * t34));
-    const double t40 = p0 * (p0 * (k->l_p * (k->c * k->d)) + k->c * (k->d * (t30 * t32 - k->l_beta *
-        t28) - t30 * t33));
-    const double t41 = k->l_r - t31;
-    const double t42 = k->n_beta * t41 - k->l_beta * k->n_r;
-    const double t43 = k->n_p + k->n_r * t27;
-    const double t44 = k->d * t29;
-    const double t45 = t44 - t43;
-    const double t46 = k->c * (k->z_alpha * (k->d * (k->y_beta * t32 - k->l_beta) + k->e *
-        (k->n_beta * t27 - k->y_beta * k->n_p)) + t42);
-    const double t47 = t30 * (t46 + k->e * (k->m_alpha * t45)) + t28 * (k->d * (k->m_alpha *
-        (k->y_beta * t36 - k->l_beta)) + k->m_q * t42);
-    const double t48 = k->y_beta * (t29 * (t33 + k->d * k->l_r - t29 * (k->d * k->e)) + (t37 -
-        k->l_r * k->n_p));
-    const double t49 = k->m_q * (t48 + (k->l_beta * t45 + k->n_beta * (k->l_p + t27 * t41))) + k->c
-        * (k->e * (t7 * (t30 * t30)));
-    const double t50 = k->y_beta * (k->e * (t29 * (t44 - k->n_p) + t30 * (k->n_r * t28)) + (k->l_r *
-        (k->n_p - t44) - t37));
-    const double t51 = k->z_alpha * t49 + k->m_alpha * (t50 + (k->n_beta * (k->e * (t28 * t30 + t27
-        * t29) - t34) + k->l_beta * (t43 - t44)));
-    return p0 * (p0 * (t40 + (t39 + (t38 + k->m_q * (k->n_p * t36 + t37)))) + t47) + t51;
+    const double t47 = k->d * (k->m_alpha * (k->l_p + k->l_r * t42 - k->e * (t38 * t42)) + t44);
+    const double t48 = k->d * t38;
+    const double t49 = k->n_beta * t42;
+    const double t50 = k->d * (k->l_beta + k->y_beta * k->l_r);
+    const double t51 = k->n_beta * t43 - k->l_beta * k->n_r;
+    const double t52 = k->n_r * t42;
+    const double t53 = k->c * (k->z_alpha * (k->e * (k->y_beta * (2.0 * t48 - k->n_p) + t49) - t50)
+        + t51);
+    const double t54 = t37 * (k->d * (k->m_alpha * (k->y_beta * t45 - k->l_beta)) + k->m_q * t51);
+    const double t55 = p0 * (p0 * t41 + (t47 + (t46 + k->m_q * (k->n_p * t45 + k->l_p * k->n_r))));
+    const double t56 = k->y_beta * k->n_p;
+    const double t57 = t49 - t56;
+    const double t58 = k->l_p * t16;
+    const double t59 = t38 * (t50 + k->e * (t56 - t49) - t38 * (k->y_beta * (k->d * k->e)));
+    const double t60 = k->m_q * (t59 + (k->l_r * t57 + (t58 - k->l_beta * (k->n_p + t52)))) + k->c *
+        (k->e * (t16 * (t39 * t39)));
+    const double t61 = k->n_p - t48;
+    const double t62 = k->e * (t38 * (t57 + t38 * (k->d * k->y_beta)) + t37 * (t16 * t39));
+    const double t63 = k->z_alpha * t60 + k->m_alpha * (t62 + (k->l_r * (k->y_beta * t61 - t49) +
+        (k->l_beta * (t52 + t61) - t58)));
+    return p0 * (t55 + (t39 * (t53 + k->e * (k->m_alpha * (t48 - k->n_p - t52))) + t54)) + t63;
 }
 
 /// det K (Eq. 27) at the zero-sideslip trim of `p0` (section V.D, Fig. 11), 1/s^4: its
@@ -644,31 +712,36 @@ ROLL_CRITERION_API double rc_det_j5(const struct rc_derivatives *k, double p0, d
 /// - `p0`: trim roll rate P0, rad/s
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 23 add/sub, 44 mul, 1 div, 0 neg, 0 libm (68 operations); straight-line, no branches.
+/// Cost after CSE: 33 add/sub, 61 mul, 1 div, 0 neg, 0 libm (95 operations); straight-line, no branches.
 /// Rust: `roll_criterion::zero_sideslip_det_k`, bit-identical.
 ROLL_CRITERION_API double rc_zero_sideslip_det_k(const struct rc_derivatives *k, double p0,
     double delta_e)
 {
     const double t0 = p0 * k->c;
-    const double t1 = delta_e * k->m_delta_e;
-    const double t2 = k->z_alpha * k->m_q;
-    const double t3 = t2 - (k->m_alpha + p0 * t0);
-    const double t4 = k->z_alpha * t1;
-    const double t5 = p0 * t1;
-    const double t6 = k->c * t5 + t0 * t1;
-    const double t7 = k->n_p * t3 + k->d * t4 + k->n_r * t1;
-    const double t8 = p0 * k->e;
-    const double t9 = p0 * p0;
-    const double t10 = t2 - k->m_alpha - k->c * t9;
-    const double t11 = p0 * (k->m_q + k->c * k->y_beta);
-    const double t12 = p0 * (k->n_r + k->d * k->z_alpha);
-    const double t13 = k->n_beta + k->y_beta * k->n_r - k->d * t9;
-    const double t14 = (t3 * (k->l_beta + k->y_beta * k->l_r) - t5 * t8 + t4 * (k->e * k->y_beta)) *
-        (t7 * t10 + t6 * t12);
-    const double t15 = (t3 * (p0 * k->l_r) + t5 * (k->e * k->z_alpha) + t4 * t8) * (t7 * t11 - t6 *
-        t13) + t14;
-    return t10 * t13 + t11 * t12 - t15 / (k->l_p * (t3 * t3) + k->l_r * (t1 * t3) + k->e * (t1 *
-        t4));
+    const double t1 = p0 * k->alpha_t;
+    const double t2 = delta_e * k->m_delta_e;
+    const double t3 = k->z_alpha * k->m_q;
+    const double t4 = k->m_alpha + p0 * t0;
+    const double t5 = t3 - t4;
+    const double t6 = t2 + (t0 * t1 - k->m_q * k->z_0);
+    const double t7 = k->z_0 * t4 - t1 * (k->z_alpha * t0) - k->z_alpha * t2;
+    const double t8 = t3 - k->m_alpha;
+    const double t9 = t1 * t8 - k->z_0 * (p0 * k->m_q) + p0 * t2;
+    const double t10 = t5 * (p0 * (k->c * k->alpha_t)) + k->c * t9 + t0 * t6;
+    const double t11 = t5 * (k->n_p + k->n_r * k->alpha_t) - k->d * t7 + k->n_r * t6;
+    const double t12 = p0 * k->e;
+    const double t13 = p0 * p0;
+    const double t14 = t8 - k->c * t13;
+    const double t15 = p0 * (k->m_q + k->c * k->y_beta);
+    const double t16 = p0 * (k->n_r + k->d * k->z_alpha);
+    const double t17 = k->n_beta + k->y_beta * k->n_r - k->d * t13;
+    const double t18 = (t5 * (k->l_beta + k->y_beta * k->l_r) - t9 * t12 - t7 * (k->e * k->y_beta))
+        * (t11 * t14 + t10 * t16);
+    const double t19 = t5 * t5 * (k->l_p + k->l_r * k->alpha_t) - t5 * t7 * (k->e * k->alpha_t) +
+        k->l_r * (t5 * t6) - k->e * (t6 * t7);
+    const double t20 = ((t5 * (p0 * k->l_r) + t9 * (k->e * k->z_alpha) - t7 * t12) * (t11 * t15 -
+        t10 * t17) + t18) / t19;
+    return t14 * t17 + t15 * t16 - t20;
 }
 
 /// Coefficients [c0, c2, c4] of `det A = c4 P0^4 + c2 P0^2 + c0` (Eq. 5); its
@@ -728,224 +801,243 @@ ROLL_CRITERION_API struct rc_array2 rc_divergence_roll_rates(const struct rc_der
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 272 add/sub, 452 mul, 0 div, 1 neg, 1 libm (726 operations); straight-line, no branches.
+/// Cost after CSE: 312 add/sub, 521 mul, 0 div, 1 neg, 1 libm (835 operations); straight-line, no branches.
 /// Rust: `roll_criterion::jump_polynomial`, bit-identical.
 ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivatives *k,
     double delta_e, double delta_r)
 {
-    const double t0 = k->n_beta + k->y_beta * k->n_r;
-    const double t1 = k->m_delta_e * (delta_e * t0);
-    const double t2 = k->m_q + k->c * k->y_beta;
-    const double t3 = k->n_delta_r * (delta_r * t2);
-    const double t4 = delta_e * (k->d * k->m_delta_e);
-    const double t5 = k->n_p * t2 + t4;
-    const double t6 = k->z_alpha * k->m_q;
-    const double t7 = k->m_alpha - t6;
-    const double t8 = k->n_delta_r * (delta_r * t7);
-    const double t9 = t4 + k->m_q * k->n_p;
-    const double t10 = k->z_alpha * t9;
-    const double t11 = delta_e * (k->m_delta_e * k->n_r);
-    const double t12 = k->m_alpha * k->n_p;
-    const double t13 = t12 - t11 - t10;
-    const double t14 = delta_r * (k->c * k->n_delta_r);
-    const double t15 = k->c * k->n_p;
-    const double t16 = k->z_alpha * t1;
-    const double t17 = k->c * k->z_alpha;
-    const double t18 = k->m_alpha + k->y_beta * t17;
-    const double t19 = k->n_delta_r * (delta_r * t18);
-    const double t20 = k->n_p * t18 - t11;
-    const double t21 = k->y_beta * t8;
-    const double t22 = k->y_beta * (t12 - t10) + delta_e * (k->m_delta_e * k->n_beta);
-    const double t23 = delta_r * (k->m_q * k->n_delta_r);
-    const double t24 = k->m_alpha * t0;
-    const double t25 = k->z_alpha * (k->m_q * t0) - t24;
-    const double t26 = k->y_beta * (k->d * k->z_alpha);
-    const double t27 = k->d * k->m_alpha;
-    const double t28 = k->c * (t26 - k->n_beta) + (k->m_q * k->n_r + t27);
-    const double t29 = k->c * k->d;
-    const double t30 = t25 * t25;
-    const double t31 = t25 * t28 * 2.0;
-    const double t32 = t28 * t28 + t25 * t29 * 2.0;
-    const double t33 = 2.0 * (t28 * t29);
-    const double t34 = t29 * t29;
-    const double t35 = k->l_r * k->n_p;
-    const double t36 = k->l_p * k->n_r;
-    const double t37 = k->l_beta * k->n_p;
-    const double t38 = k->l_p * k->n_beta;
-    const double t39 = k->z_alpha * (k->m_q * (k->y_beta * (t36 - t35) + (t38 - t37))) + k->m_alpha
-        * (k->y_beta * (t35 - t36) + (t37 - t38));
-    const double t40 = k->l_r * k->m_q;
-    const double t41 = k->c * k->l_beta;
-    const double t42 = k->l_p * t28 + k->n_p * (t41 - t40);
-    const double t43 = k->l_p * t29;
-    const double t44 = t21 * t25;
-    const double t45 = t22 * t25;
-    const double t46 = t21 * t28 - t23 * t25;
-    const double t47 = t22 * t28 - t9 * t25;
-    const double t48 = t21 * t29 - t23 * t28;
-    const double t49 = t22 * t29 - t9 * t28;
-    const double t50 = t23 * t29;
-    const double t51 = t9 * t29;
-    const double t52 = k->l_beta + k->y_beta * k->l_r;
-    const double t53 = k->l_beta * k->n_r;
-    const double t54 = k->l_r * k->n_beta;
-    const double t55 = t54 - t53;
-    const double t56 = k->c * (t55 - k->z_alpha * (k->d * t52 + k->n_p * (k->e * k->y_beta))) -
-        k->n_p * (k->e * k->m_alpha);
-    const double t57 = k->c * (k->e * k->n_p + k->d * k->l_r);
-    const double t58 = t21 * t21;
-    const double t59 = 2.0 * (t21 * t22);
-    const double t60 = t22 * t22 - 2.0 * (t21 * t23);
-    const double t61 = 2.0 * (t9 * t21) + 2.0 * (t22 * t23);
-    const double t62 = t23 * t23 - 2.0 * (t9 * t22);
-    const double t63 = 2.0 * (t9 * t23);
-    const double t64 = t9 * t9;
-    const double t65 = k->c * (k->e * (k->z_alpha * t0));
-    const double t66 = k->c * k->e;
-    const double t67 = k->n_r * t66;
-    const double t68 = t16 * t25;
-    const double t69 = t19 * t25;
-    const double t70 = t14 * t25;
-    const double t71 = t15 * t25;
-    const double t72 = t20 * t25 - t16 * t28;
-    const double t73 = t70 + t19 * t28;
-    const double t74 = t14 * t28;
-    const double t75 = t15 * t28;
-    const double t76 = t71 + t20 * t28 - t16 * t29;
-    const double t77 = t74 + t19 * t29;
-    const double t78 = t75 + t20 * t29;
-    const double t79 = t14 * t29;
-    const double t80 = t15 * t29;
-    const double t81 = k->m_alpha * t52;
-    const double t82 = k->d * (k->z_alpha * (k->m_q * t52) - t81) + k->e * (k->y_beta * (k->n_p *
-        (t6 - k->m_alpha)));
-    const double t83 = k->d * (t40 - t41) + k->n_p * (k->e * k->m_q);
-    const double t84 = t16 * t21;
-    const double t85 = t19 * t21 - t16 * t22;
-    const double t86 = t16 * t23 + t19 * t22 + t20 * t21;
-    const double t87 = t14 * t21;
-    const double t88 = t9 * t16 - t19 * t23 + t20 * t22 + t87;
-    const double t89 = t14 * t22;
-    const double t90 = t14 * t23;
-    const double t91 = t15 * t21;
-    const double t92 = t89 - (t9 * t19 + t20 * t23) + t91;
-    const double t93 = t15 * t22;
-    const double t94 = t93 - (t9 * t20 + t90);
-    const double t95 = t9 * t14 + t15 * t23;
-    const double t96 = t9 * t15;
-    const double t97 = k->e * (t27 + k->c * (t26 * 2.0 - k->n_beta));
-    const double t98 = 2.0 * (k->e * t29);
-    const double t99 = t32 * t39 + t31 * t42 + t30 * t43 + (t47 * t56 - t45 * t57) + (t62 * t65 +
-        t60 * t67) + (t76 * t82 + t72 * t83);
-    const double t100 = t33 * t39 + t32 * t42 + t31 * t43 + (t49 * t56 - t47 * t57) + (t64 * t65 +
-        t62 * t67) + (t78 * t82 + t76 * t83);
-    const double t101 = t34 * t39 + t33 * t42 + t32 * t43 - (t51 * t56 + t49 * t57) + t64 * t67 +
-        (t80 * t82 + t78 * t83);
-    const double t102 = t16 * t16;
-    const double t103 = t14 * t16;
-    const double t104 = t15 * t16;
-    const double t105 = 2.0 * (t16 * t19);
-    const double t106 = t14 * t19;
-    const double t107 = t15 * t19;
-    const double t108 = t19 * t19 - 2.0 * (t16 * t20);
-    const double t109 = t14 * t20;
-    const double t110 = t15 * t20;
-    const double t111 = 2.0 * (t19 * t20) - 2.0 * t103;
-    const double t112 = t14 * t14;
-    const double t113 = t20 * t20 + (2.0 * t106 - 2.0 * t104);
-    const double t114 = 2.0 * t107 + 2.0 * t109;
-    const double t115 = t112 + 2.0 * t110;
-    const double t116 = 2.0 * (t14 * t15);
-    const double t117 = t15 * t15;
-    const double t118 = k->d * (k->e * (k->y_beta * t7));
-    const double t119 = k->d * k->e;
-    const double t120 = k->m_q * t119;
-    const double t121 = t31 * t39 + t30 * t42 + t45 * t56 + (t60 * t65 + t58 * t67) + (t72 * t82 -
-        t68 * t83) + t85 * t97;
-    const double t122 = t46 * t56 - t44 * t57 + (t59 * t67 - t61 * t65) + (t73 * t82 + t69 * t83) +
-        (t86 * t97 - t84 * t98);
-    const double t123 = t48 * t56 - t46 * t57 + (t63 * t65 - t61 * t67) + (t77 * t82 + t73 * t83) +
-        (t92 * t97 + t86 * t98);
-    const double t124 = t8 * t25;
-    const double t125 = t13 * t25;
-    const double t126 = t70 + t8 * t28;
-    const double t127 = t71 + t13 * t28;
-    const double t128 = t74 + t8 * t29;
-    const double t129 = t75 + t13 * t29;
-    const double t130 = k->m_q * t55;
-    const double t131 = t130 - k->d * t81;
-    const double t132 = k->l_beta * t29;
-    const double t133 = t63 * t67 - (t50 * t56 + t48 * t57) + (t79 * t82 + t77 * t83) + (t92 * t98 -
-        t95 * t97) + (t116 * t118 - t114 * t120);
-    const double t134 = t8 * t21;
-    const double t135 = t8 * t22 + t13 * t21;
-    const double t136 = t87 + (t13 * t22 - t8 * t23);
-    const double t137 = t91 + (t89 - (t8 * t9 + t13 * t23));
-    const double t138 = t93 - (t90 + t9 * t13);
-    const double t139 = k->e * t24;
-    const double t140 = k->n_beta * t66;
-    const double t141 = k->e * (k->m_alpha * (k->d * k->y_beta) - k->m_q * k->n_beta);
-    const double t142 = t122 + (t111 * t118 + t105 * t120) + (t126 * t131 - t124 * t132) + (t137 *
-        t139 + t135 * t140);
-    const double t143 = t99 + (t88 * t97 + t85 * t98) + (t113 * t118 - t108 * t120) + (t127 * t131 -
-        t125 * t132) + (t138 * t139 + t136 * t140);
-    const double t144 = t123 + (t114 * t118 - t111 * t120) + (t128 * t131 - t126 * t132) + (t137 *
-        t140 - t95 * t139);
-    const double t145 = t100 + (t94 * t97 + t88 * t98) + (t115 * t118 - t113 * t120) + (t129 * t131
-        - t127 * t132) + (t138 * t140 - t96 * t139);
-    const double t146 = t1 * t25;
-    const double t147 = t3 * t25;
-    const double t148 = t1 * t28 - t5 * t25;
-    const double t149 = t3 * t28;
-    const double t150 = t1 * t29 - t5 * t28;
-    const double t151 = t3 * t29;
-    const double t152 = t5 * t29;
-    const double t153 = k->z_alpha * t130 + k->m_alpha * (t53 - t54);
-    const double t154 = k->d * (k->l_r * k->m_alpha - k->l_beta * t17);
-    const double t155 = t121 + (t108 * t118 - t102 * t120) + t125 * t131 + (t136 * t139 + t134 *
-        t140) + (t8 * t19 - t13 * t16) * t141;
-    const double t156 = t101 + (t94 * t98 - t96 * t97) + (t117 * t118 - t115 * t120) + (t80 * t131 -
-        t129 * t132) - t96 * t140 + t117 * t141;
-    const double t157 = k->e * (k->n_beta * t17 - k->m_alpha * k->n_r);
-    const double t158 = t44 * t56 + t59 * t65 + t69 * t82 - t84 * t97 - t105 * t118 + t124 * t131 +
-        t135 * t139 - t8 * t16 * t141 - t147 * t153;
-    const double t159 = t143 + (t106 + (t8 * t14 + t13 * t20) - t104) * t141 + (t150 * t153 + t148 *
-        t154);
-    const double t160 = t1 * t16;
-    const double t161 = t1 * t19 + t3 * t16;
-    const double t162 = t1 * t20 - t3 * t19 + t5 * t16;
-    const double t163 = t1 * t14 - t3 * t20 - t5 * t19;
-    const double t164 = t1 * t15 - t3 * t14 - t5 * t20;
-    const double t165 = t3 * t15 + t5 * t14;
-    const double t166 = t5 * t15;
-    const double t167 = k->e * (k->n_beta * t7);
-    const double t168 = k->m_alpha * t119;
-    const double t169 = t142 + (t8 * t20 + t13 * t19 - t103) * t141 - (t149 * t153 + t147 * t154) -
-        (t1 * t23 + t3 * t22 + t5 * t21) * t157;
-    const double t170 = t144 + (t107 + (t109 + (t8 * t15 + t13 * t14))) * t141 - (t151 * t153 + t149
-        * t154) + (t3 * t9 + t5 * t23) * t157;
-    const double t171 = 1.0 + sqrt(-(k->n_delta_a * k->n_delta_a));
-    const double t172 = t145 + (t110 + (t112 + t13 * t15)) * t141 + (t150 * t154 - t152 * t153) + t5
-        * t9 * t157 - (t166 * t167 + t164 * t168);
+    const double t0 = delta_e * k->m_delta_e;
+    const double t1 = t0 - k->m_q * k->z_0;
+    const double t2 = k->y_beta * (k->n_r * t1) + k->n_beta * t1;
+    const double t3 = k->n_delta_r * (delta_r * (k->m_q + k->c * k->y_beta));
+    const double t4 = k->n_beta * k->alpha_t;
+    const double t5 = k->n_p + k->n_r * k->alpha_t;
+    const double t6 = k->c * (t4 - k->y_beta * (k->n_p + k->d * k->z_0)) - (k->m_q * t5 + delta_e *
+        (k->d * k->m_delta_e));
+    const double t7 = k->c * k->d;
+    const double t8 = k->alpha_t * t7;
+    const double t9 = k->m_alpha - k->z_alpha * k->m_q;
+    const double t10 = k->n_delta_r * (delta_r * t9);
+    const double t11 = k->z_alpha * k->alpha_t;
+    const double t12 = k->z_0 - t11;
+    const double t13 = k->m_alpha * k->alpha_t;
+    const double t14 = t13 - t0;
+    const double t15 = k->d * (k->m_alpha * k->z_0 - delta_e * (k->z_alpha * k->m_delta_e)) + k->n_p
+        * t9;
+    const double t16 = k->n_r * (k->m_q * t12 + t14) + t15;
+    const double t17 = delta_r * (k->c * k->n_delta_r);
+    const double t18 = k->c * (k->n_p + k->d * t12);
+    const double t19 = k->n_beta + k->y_beta * k->n_r;
+    const double t20 = k->m_alpha * (k->z_0 * t19) - k->z_alpha * (k->m_delta_e * (delta_e * t19));
+    const double t21 = k->c * k->z_alpha;
+    const double t22 = k->n_delta_r * (delta_r * (k->m_alpha + k->y_beta * t21));
+    const double t23 = k->y_beta * k->n_p;
+    const double t24 = t23 - t4;
+    const double t25 = k->m_alpha * t5;
+    const double t26 = k->c * (k->z_alpha * t24 + k->n_beta * k->z_0) + (t25 - delta_e *
+        (k->m_delta_e * k->n_r));
+    const double t27 = k->c * k->n_p;
+    const double t28 = k->y_beta * t10;
+    const double t29 = k->y_beta * t15 + k->n_beta * (k->m_q * (t11 - k->z_0) + (t0 - t13));
+    const double t30 = delta_r * (k->m_q * k->n_delta_r);
+    const double t31 = k->d * t14 - k->m_q * k->n_p;
+    const double t32 = k->m_alpha * t19;
+    const double t33 = k->z_alpha * (k->m_q * t19) - t32;
+    const double t34 = k->y_beta * (k->d * k->z_alpha);
+    const double t35 = k->d * k->m_alpha;
+    const double t36 = k->c * (t34 - k->n_beta) + (k->m_q * k->n_r + t35);
+    const double t37 = t33 * t33;
+    const double t38 = t33 * t36 * 2.0;
+    const double t39 = t36 * t36 + t7 * t33 * 2.0;
+    const double t40 = 2.0 * (t7 * t36);
+    const double t41 = t7 * t7;
+    const double t42 = k->l_r * k->n_p;
+    const double t43 = k->l_p * k->n_r;
+    const double t44 = t43 - t42;
+    const double t45 = k->l_beta * t5;
+    const double t46 = k->l_p + k->l_r * k->alpha_t;
+    const double t47 = k->n_beta * t46;
+    const double t48 = k->z_alpha * (k->m_q * (k->y_beta * t44 + (t47 - t45))) + k->m_alpha *
+        (k->y_beta * (t42 - t43) + (t45 - t47));
+    const double t49 = k->c * (k->d * (k->z_alpha * (k->y_beta * k->l_p - k->l_beta * k->alpha_t)) +
+        (k->l_beta * k->n_p - k->l_p * k->n_beta));
+    const double t50 = t49 + (k->d * (k->m_alpha * t46) + k->m_q * t44);
+    const double t51 = k->l_p * t7;
+    const double t52 = t28 * t33;
+    const double t53 = t29 * t33;
+    const double t54 = t28 * t36 - t30 * t33;
+    const double t55 = t31 * t33 + t29 * t36;
+    const double t56 = t7 * t28 - t30 * t36;
+    const double t57 = t31 * t36 + t7 * t29;
+    const double t58 = t7 * t30;
+    const double t59 = t7 * t31;
+    const double t60 = k->l_beta + k->y_beta * k->l_r;
+    const double t61 = t4 - t23;
+    const double t62 = k->l_beta * k->n_r;
+    const double t63 = k->l_r * k->n_beta;
+    const double t64 = t63 - t62;
+    const double t65 = k->c * (k->z_alpha * (k->e * t61 - k->d * t60) + t64) - k->e * t25;
+    const double t66 = k->c * (k->e * k->n_p + k->d * k->l_r);
+    const double t67 = t28 * t28;
+    const double t68 = 2.0 * (t28 * t29);
+    const double t69 = t29 * t29 - 2.0 * (t28 * t30);
+    const double t70 = 2.0 * (t28 * t31) - 2.0 * (t29 * t30);
+    const double t71 = t30 * t30 + 2.0 * (t29 * t31);
+    const double t72 = 2.0 * (t30 * t31);
+    const double t73 = t31 * t31;
+    const double t74 = k->c * (k->e * (k->z_alpha * t19));
+    const double t75 = k->c * k->e;
+    const double t76 = k->n_r * t75;
+    const double t77 = t20 * t33;
+    const double t78 = t22 * t33;
+    const double t79 = t17 * t33;
+    const double t80 = t26 * t33 + t20 * t36;
+    const double t81 = t79 + t22 * t36;
+    const double t82 = t17 * t36;
+    const double t83 = t27 * t33 + t26 * t36 + t7 * t20;
+    const double t84 = t82 + t7 * t22;
+    const double t85 = t27 * t36 + t7 * t26;
+    const double t86 = t7 * t17;
+    const double t87 = t7 * t27;
+    const double t88 = k->m_alpha * t60;
+    const double t89 = k->d * (k->z_alpha * (k->m_q * t60) - t88) + k->e * (k->z_alpha * (k->m_q *
+        t24) + k->m_alpha * t61);
+    const double t90 = k->d * (k->l_r * k->m_q - k->alpha_t * (k->e * k->m_alpha) - k->c *
+        k->l_beta) + k->n_p * (k->e * k->m_q);
+    const double t91 = t20 * t28;
+    const double t92 = t20 * t29 + t22 * t28;
+    const double t93 = t22 * t29 - t20 * t30 + t26 * t28;
+    const double t94 = t17 * t28;
+    const double t95 = t20 * t31 - t22 * t30 + t26 * t29 + t94;
+    const double t96 = t17 * t29;
+    const double t97 = t17 * t30;
+    const double t98 = t17 * t31;
+    const double t99 = t22 * t31 - t26 * t30 + t96 + t27 * t28;
+    const double t100 = t26 * t31 - t97 + t27 * t29;
+    const double t101 = t98 - t27 * t30;
+    const double t102 = t27 * t31;
+    const double t103 = k->e * (t35 + k->c * (t34 * 2.0 - k->n_beta));
+    const double t104 = 2.0 * (k->e * t7);
+    const double t105 = t39 * t48 + t38 * t50 + t37 * t51 + (t55 * t65 - t53 * t66) + (t71 * t74 +
+        t69 * t76) + (t83 * t89 + t80 * t90);
+    const double t106 = t40 * t48 + t39 * t50 + t38 * t51 + (t57 * t65 - t55 * t66) + (t73 * t74 +
+        t71 * t76) + (t85 * t89 + t83 * t90);
+    const double t107 = t41 * t48 + t40 * t50 + t39 * t51 + (t59 * t65 - t57 * t66) + t73 * t76 +
+        (t87 * t89 + t85 * t90);
+    const double t108 = t20 * t20;
+    const double t109 = t17 * t20;
+    const double t110 = 2.0 * (t20 * t22);
+    const double t111 = t17 * t22;
+    const double t112 = t22 * t22 + 2.0 * (t20 * t26);
+    const double t113 = t17 * t26;
+    const double t114 = 2.0 * t109 + 2.0 * (t22 * t26);
+    const double t115 = t17 * t17;
+    const double t116 = t17 * t27;
+    const double t117 = t26 * t26 + (2.0 * (t20 * t27) + 2.0 * t111);
+    const double t118 = 2.0 * (t22 * t27) + 2.0 * t113;
+    const double t119 = t115 + 2.0 * (t26 * t27);
+    const double t120 = 2.0 * t116;
+    const double t121 = t27 * t27;
+    const double t122 = k->d * (k->e * (k->y_beta * t9));
+    const double t123 = k->d * k->e;
+    const double t124 = k->m_q * t123;
+    const double t125 = t38 * t48 + t37 * t50 + t53 * t65 + (t69 * t74 + t67 * t76) + (t80 * t89 +
+        t77 * t90) + t92 * t103;
+    const double t126 = t54 * t65 - t52 * t66 + (t70 * t74 + t68 * t76) + (t81 * t89 + t78 * t90) +
+        (t93 * t103 + t91 * t104);
+    const double t127 = t56 * t65 - t54 * t66 + (t70 * t76 - t72 * t74) + (t84 * t89 + t81 * t90) +
+        (t99 * t103 + t93 * t104);
+    const double t128 = t10 * t33;
+    const double t129 = t16 * t33;
+    const double t130 = t79 + t10 * t36;
+    const double t131 = t18 * t33 + t16 * t36;
+    const double t132 = t82 + t7 * t10;
+    const double t133 = t18 * t36 + t7 * t16;
+    const double t134 = t7 * t18;
+    const double t135 = k->m_q * t64;
+    const double t136 = t135 - k->d * t88;
+    const double t137 = k->l_beta * t7;
+    const double t138 = t86 * t89 + t84 * t90 - (t58 * t65 + t56 * t66 + t72 * t76) + (t101 * t103 +
+        t99 * t104) + (t120 * t122 - t118 * t124);
+    const double t139 = t10 * t28;
+    const double t140 = t10 * t29 + t16 * t28;
+    const double t141 = t94 + (t16 * t29 - t10 * t30);
+    const double t142 = t96 + (t10 * t31 - t16 * t30) + t18 * t28;
+    const double t143 = t16 * t31 - t97 + t18 * t29;
+    const double t144 = t98 - t18 * t30;
+    const double t145 = t18 * t31;
+    const double t146 = k->e * t32;
+    const double t147 = k->n_beta * t75;
+    const double t148 = t105 + (t95 * t103 + t92 * t104) + (t117 * t122 - t112 * t124) + (t131 *
+        t136 - t129 * t137);
+    const double t149 = t106 + (t100 * t103 + t95 * t104) + (t119 * t122 - t117 * t124) + (t133 *
+        t136 - t131 * t137);
+    const double t150 = k->e * (k->m_alpha * (k->d * k->y_beta) - k->m_q * k->n_beta);
+    const double t151 = t126 + (t114 * t122 - t110 * t124) + (t130 * t136 - t128 * t137) + (t142 *
+        t146 + t140 * t147);
+    const double t152 = t127 + (t118 * t122 - t114 * t124) + (t132 * t136 - t130 * t137) + (t144 *
+        t146 + t142 * t147);
+    const double t153 = t107 + (t102 * t103 + t100 * t104) + (t121 * t122 - t119 * t124) + (t134 *
+        t136 - t133 * t137) + t145 * t147;
+    const double t154 = t2 * t33;
+    const double t155 = t3 * t33;
+    const double t156 = t6 * t33 + t2 * t36;
+    const double t157 = t3 * t36;
+    const double t158 = t6 * t36 - t8 * t33 + t2 * t7;
+    const double t159 = t3 * t7;
+    const double t160 = t6 * t7 - t8 * t36;
+    const double t161 = t7 * t8;
+    const double t162 = k->z_alpha * t135 + k->m_alpha * (t62 - t63);
+    const double t163 = k->d * (k->l_r * k->m_alpha - k->l_beta * t21);
+    const double t164 = t52 * t65 + t68 * t74 + t78 * t89 + t91 * t103 + t110 * t122 + t128 * t136 +
+        t140 * t146 + t10 * t20 * t150;
+    const double t165 = t125 + (t112 * t122 - t108 * t124) + t129 * t136 + (t141 * t146 + t139 *
+        t147) + (t10 * t22 + t16 * t20) * t150;
+    const double t166 = k->e * (k->n_beta * t21 - k->m_alpha * k->n_r);
+    const double t167 = t148 + (t143 * t146 + t141 * t147) + (t111 + (t10 * t17 + t16 * t26) + t18 *
+        t20) * t150 + (t158 * t162 + t156 * t163);
+    const double t168 = t152 + (t113 + (t10 * t27 + t16 * t17) + t18 * t22) * t150 - (t159 * t162 +
+        t157 * t163);
+    const double t169 = t149 + (t145 * t146 + t143 * t147) + (t115 + t16 * t27 + t18 * t26) * t150 +
+        (t160 * t162 + t158 * t163);
+    const double t170 = t2 * t20;
+    const double t171 = t2 * t22 - t3 * t20;
+    const double t172 = t2 * t26 - t3 * t22 + t6 * t20;
+    const double t173 = t2 * t17 - t3 * t26 + t6 * t22;
+    const double t174 = t2 * t27 - t3 * t17 + t6 * t26 - t8 * t20;
+    const double t175 = t6 * t17 - t3 * t27 - t8 * t22;
+    const double t176 = t6 * t27 - t8 * t26;
+    const double t177 = t8 * t17;
+    const double t178 = t8 * t27;
+    const double t179 = k->e * (k->n_beta * t9);
+    const double t180 = k->m_alpha * t123;
+    const double t181 = t151 + (t109 + (t10 * t26 + t16 * t22)) * t150 - (t157 * t162 + t155 * t163)
+        + (t6 * t28 - (t2 * t30 + t3 * t29)) * t166;
+    const double t182 = t138 + (t86 * t136 - t132 * t137) + t144 * t147 + (t116 + t17 * t18) * t150
+        - t159 * t163 + t8 * t30 * t166;
+    const double t183 = 1.0 + sqrt(-(k->n_delta_a * k->n_delta_a));
+    const double t184 = t41 * t50 + t40 * t51 - t59 * t66 + t87 * t90 + t102 * t104 - t121 * t124 -
+        t134 * t137 - t161 * t163 + t178 * t180;
     struct rc_array13 result;
-    result.v[0] = (t30 * t39 + t58 * t65 - t68 * t82 + t102 * t118 + t134 * t139 + t146 * t153 -
-        t160 * t167) * t171;
-    result.v[1] = (t158 + t1 * t21 * t157 + t161 * t167) * t171;
-    result.v[2] = (t155 + (t148 * t153 + t146 * t154) + (t1 * t22 - t3 * t21) * t157 + (t162 * t167
-        + t160 * t168)) * t171;
-    result.v[3] = (t169 + (t163 * t167 - t161 * t168)) * t171;
-    result.v[4] = (t159 + (t3 * t23 - t1 * t9 - t5 * t22) * t157 + (t164 * t167 - t162 * t168)) *
-        t171;
-    result.v[5] = (t170 - (t165 * t167 + t163 * t168)) * t171;
-    result.v[6] = t172 * t171;
-    result.v[7] = (t133 + (t79 * t131 - t128 * t132) - t95 * t140 + t116 * t141 - t151 * t154 + t165
-        * t168) * t171;
-    result.v[8] = (t156 - t152 * t154 + t166 * t168) * t171;
-    result.v[9] = (t50 * t57 + t79 * t83 - t95 * t98 - t116 * t120 - t79 * t132) * t171;
-    result.v[10] = (t34 * t42 + t33 * t43 + t51 * t57 + t80 * t83 - t96 * t98 - t117 * t120 - t80 *
-        t132) * t171;
+    result.v[0] = (t37 * t48 + t67 * t74 + t77 * t89 + t108 * t122 + t139 * t146 + t154 * t162 +
+        t170 * t179) * t183;
+    result.v[1] = (t164 - t155 * t162 + t2 * t28 * t166 + t171 * t179) * t183;
+    result.v[2] = (t165 + (t156 * t162 + t154 * t163) + (t2 * t29 - t3 * t28) * t166 + (t172 * t179
+        - t170 * t180)) * t183;
+    result.v[3] = (t181 + (t173 * t179 - t171 * t180)) * t183;
+    result.v[4] = (t167 + (t2 * t31 + t3 * t30 + t6 * t29) * t166 + (t174 * t179 - t172 * t180)) *
+        t183;
+    result.v[5] = (t168 - (t3 * t31 + t6 * t30 + t8 * t28) * t166 + (t175 * t179 - t173 * t180)) *
+        t183;
+    result.v[6] = (t169 + (t6 * t31 - t8 * t29) * t166 + (t176 * t179 - t174 * t180)) * t183;
+    result.v[7] = (t182 - (t177 * t179 + t175 * t180)) * t183;
+    result.v[8] = (t153 + t18 * t27 * t150 + (t160 * t163 - t161 * t162) - t8 * t31 * t166 - (t178 *
+        t179 + t176 * t180)) * t183;
+    result.v[9] = (t58 * t66 + t86 * t90 + t101 * t104 - t120 * t124 - t86 * t137 + t177 * t180) *
+        t183;
+    result.v[10] = t184 * t183;
     result.v[11] = 0.0;
-    result.v[12] = t34 * t43 * t171;
+    result.v[12] = t41 * t51 * t183;
     return result;
 }
 
@@ -955,72 +1047,100 @@ ROLL_CRITERION_API struct rc_array13 rc_jump_polynomial(const struct rc_derivati
 /// Arguments:
 /// - `delta_e`: elevator deflection, rad
 ///
-/// Cost after CSE: 56 add/sub, 117 mul, 0 div, 0 neg, 0 libm (173 operations); straight-line, no branches.
+/// Cost after CSE: 86 add/sub, 167 mul, 0 div, 0 neg, 0 libm (253 operations); straight-line, no branches.
 /// Rust: `roll_criterion::zero_sideslip_jump_polynomial`, bit-identical.
 ROLL_CRITERION_API struct rc_array9 rc_zero_sideslip_jump_polynomial(const struct rc_derivatives *k,
     double delta_e)
 {
     const double t0 = delta_e * k->m_delta_e;
-    const double t1 = delta_e * (k->z_alpha * k->m_delta_e);
-    const double t2 = k->z_alpha * k->m_q;
-    const double t3 = t2 - k->m_alpha;
-    const double t4 = t3 * t3;
-    const double t5 = k->c * t3 * 2.0;
-    const double t6 = k->c * k->c;
-    const double t7 = k->l_r * k->n_p;
-    const double t8 = k->l_p * k->n_r;
-    const double t9 = k->l_beta * k->n_p;
-    const double t10 = k->l_p * k->n_beta;
-    const double t11 = k->z_alpha * (k->m_q * (k->y_beta * (t8 - t7) + (t10 - t9))) + k->m_alpha *
-        (k->y_beta * (t7 - t8) + (t9 - t10));
-    const double t12 = k->y_beta * (k->d * k->z_alpha);
-    const double t13 = k->d * k->m_alpha;
-    const double t14 = k->l_r * k->m_q;
-    const double t15 = k->c * k->l_beta;
-    const double t16 = k->l_p * (k->c * (t12 - k->n_beta) + (k->m_q * k->n_r + t13)) + k->n_p * (t15
-        - t14);
-    const double t17 = k->c * k->d;
-    const double t18 = k->l_p * t17;
-    const double t19 = t0 * t3;
-    const double t20 = k->c * t0;
-    const double t21 = k->l_beta + k->y_beta * k->l_r;
-    const double t22 = k->l_beta * k->n_r;
-    const double t23 = k->l_r * k->n_beta;
-    const double t24 = t23 - t22;
-    const double t25 = k->c * (t24 - k->z_alpha * (k->d * t21 + k->n_p * (k->e * k->y_beta))) -
-        k->n_p * (k->e * k->m_alpha);
-    const double t26 = k->c * (k->e * k->n_p + k->d * k->l_r);
-    const double t27 = t0 * t0;
-    const double t28 = t1 * t3;
-    const double t29 = k->c * t1;
-    const double t30 = k->d * (k->z_alpha * (k->m_q * t21) - k->m_alpha * t21) + k->e * (k->y_beta *
-        (k->n_p * t3));
-    const double t31 = k->d * (t14 - t15) + k->n_p * (k->e * k->m_q);
-    const double t32 = t4 * t16 - t5 * t11 + t19 * t25 + t27 * (k->c * (k->e * (k->z_alpha *
+    const double t1 = t0 - k->m_q * k->z_0;
+    const double t2 = k->c * k->alpha_t;
+    const double t3 = k->m_alpha * k->z_0 - delta_e * (k->z_alpha * k->m_delta_e);
+    const double t4 = k->z_alpha * k->alpha_t;
+    const double t5 = k->c * (k->z_0 - t4);
+    const double t6 = k->m_q * (t4 - k->z_0) + (t0 - k->m_alpha * k->alpha_t);
+    const double t7 = k->z_alpha * k->m_q;
+    const double t8 = t7 - k->m_alpha;
+    const double t9 = t8 * t8;
+    const double t10 = k->c * t8 * 2.0;
+    const double t11 = k->c * k->c;
+    const double t12 = k->l_r * k->n_p;
+    const double t13 = k->l_p * k->n_r;
+    const double t14 = t13 - t12;
+    const double t15 = k->n_p + k->n_r * k->alpha_t;
+    const double t16 = k->l_beta * t15;
+    const double t17 = k->l_p + k->l_r * k->alpha_t;
+    const double t18 = k->n_beta * t17;
+    const double t19 = k->z_alpha * (k->m_q * (k->y_beta * t14 + (t18 - t16))) + k->m_alpha *
+        (k->y_beta * (t12 - t13) + (t16 - t18));
+    const double t20 = k->c * (k->d * (k->z_alpha * (k->y_beta * k->l_p - k->l_beta * k->alpha_t)) +
+        (k->l_beta * k->n_p - k->l_p * k->n_beta));
+    const double t21 = t20 + (k->d * (k->m_alpha * t17) + k->m_q * t14);
+    const double t22 = k->c * k->d;
+    const double t23 = k->l_p * t22;
+    const double t24 = t6 * t8;
+    const double t25 = k->c * t6;
+    const double t26 = k->l_beta + k->y_beta * k->l_r;
+    const double t27 = k->n_beta * k->alpha_t;
+    const double t28 = k->y_beta * k->n_p;
+    const double t29 = t27 - t28;
+    const double t30 = k->l_beta * k->n_r;
+    const double t31 = k->l_r * k->n_beta;
+    const double t32 = t31 - t30;
+    const double t33 = k->c * (k->z_alpha * (k->e * t29 - k->d * t26) + t32) - k->e * (k->m_alpha *
+        t15);
+    const double t34 = k->c * (k->e * k->n_p + k->d * k->l_r);
+    const double t35 = t6 * t6;
+    const double t36 = t3 * t8;
+    const double t37 = t5 * t8 - k->c * t3;
+    const double t38 = k->c * t5;
+    const double t39 = k->e * (k->z_alpha * (k->m_q * (t28 - t27)) + k->m_alpha * t29);
+    const double t40 = k->d * (k->z_alpha * (k->m_q * t26) - k->m_alpha * t26) + t39;
+    const double t41 = k->d * (k->l_r * k->m_q - k->alpha_t * (k->e * k->m_alpha) - k->c *
+        k->l_beta) + k->n_p * (k->e * k->m_q);
+    const double t42 = t9 * t21 - t10 * t19 + t24 * t33 + t35 * (k->c * (k->e * (k->z_alpha *
         (k->n_beta + k->y_beta * k->n_r))));
-    const double t33 = t0 * t1;
-    const double t34 = t6 * t11 - t5 * t16 + t4 * t18 - (t20 * t25 + t19 * t26) + t27 * (k->n_r *
-        (k->c * k->e)) + t29 * t31;
-    const double t35 = t1 * t1;
-    const double t36 = k->m_alpha - t2;
-    const double t37 = k->d * k->e;
-    const double t38 = k->z_alpha * (k->m_q * t24) + k->m_alpha * (t22 - t23);
-    const double t39 = k->c * k->z_alpha;
-    const double t40 = k->d * (k->l_r * k->m_alpha - k->l_beta * t39);
-    const double t41 = t32 + (t29 * t30 - t28 * t31) - t33 * (k->e * (t13 + k->c * (t12 * 2.0 -
-        k->n_beta))) - t35 * (k->m_q * t37);
+    const double t43 = t3 * t6;
+    const double t44 = t5 * t6;
+    const double t45 = k->e * (k->c * (k->y_beta * (k->d * k->z_alpha) * 2.0 - k->n_beta) + k->d *
+        k->m_alpha);
+    const double t46 = 2.0 * (k->e * t22);
+    const double t47 = t11 * t19 - t10 * t21 + t9 * t23 - (t25 * t33 + t24 * t34) + t35 * (k->n_r *
+        (k->c * k->e)) + (t37 * t41 - t38 * t40);
+    const double t48 = t3 * t3;
+    const double t49 = 2.0 * (t3 * t5);
+    const double t50 = t5 * t5;
+    const double t51 = k->m_alpha - t7;
+    const double t52 = k->d * (k->e * (k->y_beta * t51));
+    const double t53 = k->d * k->e;
+    const double t54 = k->m_q * t53;
+    const double t55 = t1 * t8;
+    const double t56 = t2 * t8 - k->c * t1;
+    const double t57 = k->c * t2;
+    const double t58 = k->z_alpha * (k->m_q * t32) + k->m_alpha * (t30 - t31);
+    const double t59 = k->c * k->z_alpha;
+    const double t60 = k->d * (k->l_r * k->m_alpha - k->l_beta * t59);
+    const double t61 = k->e * (k->n_beta * t59 - k->m_alpha * k->n_r);
+    const double t62 = t1 * t3;
+    const double t63 = t1 * t5 + t2 * t3;
+    const double t64 = t2 * t5;
+    const double t65 = k->e * (k->n_beta * t51);
+    const double t66 = k->m_alpha * t53;
+    const double t67 = t42 + (t37 * t40 + t36 * t41) + t43 * t45 + (t49 * t52 - t48 * t54) + (t56 *
+        t58 + t55 * t60) + t1 * t6 * t61;
+    const double t68 = t47 + (t44 * t45 + t43 * t46) + (t50 * t52 - t49 * t54) + (t56 * t60 - t57 *
+        t58) + t2 * t6 * t61;
     struct rc_array9 result;
-    result.v[0] = t4 * t11 - t28 * t30 + t35 * (k->d * (k->e * (k->y_beta * t36))) + t19 * t38 - t33
-        * (k->e * (k->n_beta * t36));
+    result.v[0] = t9 * t19 + t36 * t40 + t48 * t52 + t55 * t58 + t62 * t65;
     result.v[1] = 0.0;
-    result.v[2] = t41 + (t19 * t40 - t20 * t38) + t27 * (k->e * (k->n_beta * t39 - k->m_alpha *
-        k->n_r)) + t33 * (k->m_alpha * t37);
+    result.v[2] = t67 + (t63 * t65 - t62 * t66);
     result.v[3] = 0.0;
-    result.v[4] = t34 - t33 * (2.0 * (k->e * t17)) - t20 * t40;
+    result.v[4] = t68 + (t64 * t65 - t63 * t66);
     result.v[5] = 0.0;
-    result.v[6] = t6 * t16 - t5 * t18 + t20 * t26;
+    result.v[6] = t11 * t21 - t10 * t23 + t25 * t34 - t38 * t41 + t44 * t46 - t50 * t54 - t57 * t60
+        - t64 * t66;
     result.v[7] = 0.0;
-    result.v[8] = t6 * t18;
+    result.v[8] = t11 * t23;
     return result;
 }
 
@@ -1033,8 +1153,8 @@ ROLL_CRITERION_API struct rc_array9 rc_zero_sideslip_jump_polynomial(const struc
 /// ```text
 /// c1 = -z_alpha - y_beta - l_p - m_q - n_r
 /// c2 = -m_alpha + n_beta + z_alpha*y_beta + z_alpha*l_p + z_alpha*m_q + z_alpha*n_r + y_beta*l_p
-///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha0 + m_q*n_r
-///          + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
+///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha_t
+///          - l_beta*alpha0 + m_q*n_r + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
 /// ```
 ///
 /// Arguments:
@@ -1042,140 +1162,150 @@ ROLL_CRITERION_API struct rc_array9 rc_zero_sideslip_jump_polynomial(const struc
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 190 add/sub, 245 mul, 3 div, 1 neg, 1 libm (440 operations); straight-line, no branches.
+/// Cost after CSE: 200 add/sub, 260 mul, 3 div, 1 neg, 1 libm (465 operations); straight-line, no branches.
 /// Rust: `roll_criterion::characteristic_coefficients`, bit-identical.
 ROLL_CRITERION_API struct rc_array5 rc_characteristic_coefficients(const struct rc_derivatives *k,
     double p0, double delta_e, double delta_r)
 {
     const double t0 = p0 * k->c;
     const double t1 = p0 * k->d;
-    const double t2 = delta_e * k->m_delta_e;
-    const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
-    const double t4 = k->m_q * k->n_r;
-    const double t5 = t4 + t0 * t1;
-    const double t6 = k->m_alpha * k->n_r;
-    const double t7 = k->z_alpha * (k->y_beta * t5 + k->m_q * k->n_beta) + p0 * (p0 * t5 +
-        k->m_alpha * t1);
-    const double t8 = p0 * t1;
-    const double t9 = k->n_beta + k->y_beta * k->n_r;
-    const double t10 = p0 * k->m_q;
-    const double t11 = k->y_beta * t0;
-    const double t12 = t10 + t11;
-    const double t13 = p0 * k->n_r;
-    const double t14 = k->m_alpha + p0 * t0;
-    const double t15 = k->z_alpha * k->m_q - t14;
-    const double t16 = k->z_alpha * t11 + p0 * t14;
-    const double t17 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t10 - k->y_beta * k->m_alpha;
-    const double t18 = 1.0 / (t7 - (p0 * (k->n_beta * t0) + k->y_beta * t6 + k->m_alpha *
-        k->n_beta));
-    const double t19 = (t2 * (k->z_alpha * t1 + t13) + t3 * t15) * t18;
-    const double t20 = (t3 * t16 - t2 * (k->z_alpha * t9 + p0 * t13)) * t18;
-    const double t21 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t8)) - t3 *
-        t17) * t18;
-    const double t22 = t18 * (k->n_delta_a * t15);
-    const double t23 = t18 * (k->n_delta_a * t16);
-    const double t24 = t18 * (k->n_delta_a * t17);
-    const double t25 = k->l_r - k->e * t20;
-    const double t26 = t21 * t25 + (delta_r * k->l_delta_r - k->l_beta * t19 + p0 * k->l_p);
-    const double t27 = k->l_delta_a - k->l_beta * t22 - t23 * (k->e * t21) - t24 * t25;
-    const double t28 = t26 * 2.0 / (t27 * (1.0 + sqrt(1.0 - t26 * (k->e * 0.5 * (t23 * t24) * 2.0) /
-        (t27 * t27) * 4.0)));
-    const double t29 = t18 * (k->n_delta_a * t12) * t28 - (t2 * (t8 - t9) + t3 * t12) * t18;
-    const double t30 = t22 * t28 - t19;
-    const double t31 = t20 - t23 * t28;
-    const double t32 = t21 + t24 * t28;
-    const double t33 = k->m_q + k->n_r;
-    const double t34 = k->l_p + t33;
-    const double t35 = k->y_beta + t34;
-    const double t36 = k->e * t31;
-    const double t37 = k->l_r - t36;
-    const double t38 = t31 * t37;
-    const double t39 = p0 * p0;
-    const double t40 = k->c * t39;
-    const double t41 = k->y_beta * t34;
-    const double t42 = t32 * t32;
-    const double t43 = k->c * t42;
-    const double t44 = k->e * (k->n_p * t31 + t43);
-    const double t45 = k->l_p * t33;
-    const double t46 = k->n_beta + t39;
-    const double t47 = k->l_beta * t29;
-    const double t48 = k->l_r * k->n_p;
-    const double t49 = t36 - k->l_r;
-    const double t50 = k->y_beta + k->m_q;
-    const double t51 = k->n_beta * t29;
-    const double t52 = k->c * k->d;
-    const double t53 = k->y_beta + k->n_r;
-    const double t54 = t31 * (t31 * (k->d * t50) + (t51 - 2.0 * (t32 * (p0 * t52)) - k->n_p * t50));
-    const double t55 = k->l_p + k->n_r;
-    const double t56 = k->y_beta * t55;
-    const double t57 = k->d * t31;
-    const double t58 = k->n_p - t57;
-    const double t59 = k->l_r * t58;
-    const double t60 = k->l_p * k->n_r;
-    const double t61 = k->y_beta + k->l_p;
-    const double t62 = k->l_beta * t30;
-    const double t63 = k->n_p + k->n_r * t29;
-    const double t64 = t63 - t57;
-    const double t65 = k->l_beta * t64;
-    const double t66 = k->y_beta * (t59 + (k->m_alpha - t60)) + (t65 + (k->l_p * (k->m_alpha -
-        k->n_beta) + (t6 - t29 * (k->l_r * k->n_beta))));
-    const double t67 = k->m_q * (t59 + (t47 - t46 - t60) - t56) + (p0 * (t62 + t32 * (k->l_r * t52)
-        - p0 * (t55 + k->c * (k->d * t61))) + t66);
-    const double t68 = k->z_alpha * (k->d * (t31 * t49 - t40) + (t48 + (t47 - (k->n_beta + t4)) -
-        t45 - t44 - t41));
-    const double t69 = k->y_beta * k->l_p;
-    const double t70 = k->d * (k->c * (k->z_alpha * t61 + (t69 - t47)) + (k->m_alpha + t38));
-    const double t71 = k->z_alpha + k->y_beta;
-    const double t72 = k->d * (k->e * (t31 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) - (k->l_beta +
-        k->l_r * t71));
-    const double t73 = t29 * (k->e * k->m_alpha);
-    const double t74 = t30 * (k->d * (k->m_alpha * t49) + (k->n_beta * t37 - k->l_beta * t33));
-    const double t75 = p0 * (t39 * t52 + (t70 + (k->c * (k->e * t42 - k->n_beta) + (t45 + (t4 +
-        k->n_p * t49)))));
-    const double t76 = t31 * (k->d * k->e);
-    const double t77 = k->e * k->n_p;
-    const double t78 = t77 + k->d * k->l_r;
-    const double t79 = t31 * (t78 - t76);
-    const double t80 = t31 * t58;
-    const double t81 = t57 - k->n_p;
-    const double t82 = t60 + k->l_r * t81;
-    const double t83 = k->l_beta * (t57 - t63);
-    const double t84 = k->n_beta * (k->l_p + t29 * t37);
-    const double t85 = k->y_beta * (k->e * (t43 + t80) + t82) + (t83 + (t84 + t42 * (k->n_r * (k->c
-        * k->e))));
-    const double t86 = k->c * (k->e * (t9 * t42));
-    const double t87 = k->m_alpha * (k->e * (t30 * (t32 * t53) + t31 * t81) + (t59 + (t47 -
-        k->n_beta - t60) - t56)) + t86;
-    const double t88 = k->z_alpha * (k->m_q * (t79 + (t56 + (t60 + (k->n_beta - t47 - t48)))) +
-        t85);
-    const double t89 = p0 * (t75 + (t32 * (k->c * (t72 + (k->e * (t51 - k->n_p * t71) - k->l_beta))
-        - t73) + t74));
-    const double t90 = k->l_r - 2.0 * t36;
-    const double t91 = k->l_p + k->l_r * t29;
-    const double t92 = t31 * (t31 * (k->e * k->m_q) + (t73 - k->l_r * k->m_q + k->c * k->l_beta));
-    const double t93 = k->c * (k->l_p * k->n_beta - k->l_beta * k->n_p - k->e * (t32 * (k->n_r * t32
-        + k->n_beta * t30)));
-    const double t94 = k->d * (t92 + (k->c * (k->z_alpha * (t47 - t69)) - k->m_alpha * t91)) + (t93
-        + k->m_q * (k->n_p * t37 - t60));
-    const double t95 = k->n_beta * t49 + k->l_beta * k->n_r;
-    const double t96 = k->c * (k->z_alpha * (k->d * (k->l_beta + k->y_beta * t90) + k->e *
-        (k->y_beta * k->n_p - t51)) + t95);
-    const double t97 = t32 * (t96 + k->e * (k->m_alpha * t64)) + t30 * (k->d * (k->m_alpha *
-        (k->l_beta + k->y_beta * t37)) + k->m_q * t95);
-    const double t98 = k->y_beta * (t82 + k->e * (t80 - t32 * (k->n_r * t30))) + (t83 + k->n_beta *
-        (t91 - k->e * (t30 * t32 + t29 * t31)));
-    const double t99 = k->z_alpha * (k->m_q * (k->y_beta * (t31 * (t76 - t78) + (t48 - t60)) + (t65
-        + k->n_beta * (t29 * t49 - k->l_p))) - t86);
-    const double t100 = p0 * (p0 * (p0 * (k->c * (k->d * (t62 + t32 * t90) + t32 * t77) - p0 *
-        (k->l_p * t52)) + t94) + t97);
+    const double t2 = p0 * k->alpha_t;
+    const double t3 = delta_e * k->m_delta_e;
+    const double t4 = delta_r * k->n_delta_r + p0 * k->n_p;
+    const double t5 = k->m_q * k->n_r;
+    const double t6 = t5 + t0 * t1;
+    const double t7 = k->n_beta * t0;
+    const double t8 = k->m_q * k->n_beta;
+    const double t9 = k->y_beta * t6 + t8;
+    const double t10 = p0 * t6;
+    const double t11 = k->m_alpha * k->n_r;
+    const double t12 = k->m_alpha * t1;
+    const double t13 = t10 + t12;
+    const double t14 = k->m_alpha * k->n_beta;
+    const double t15 = p0 * t7 + k->y_beta * t11 + t14;
+    const double t16 = p0 * t1;
+    const double t17 = k->n_beta + k->y_beta * k->n_r;
+    const double t18 = p0 * k->m_q;
+    const double t19 = k->y_beta * t0;
+    const double t20 = t18 + t19;
+    const double t21 = p0 * k->n_r;
+    const double t22 = k->m_alpha + p0 * t0;
+    const double t23 = k->z_alpha * k->m_q - t22;
+    const double t24 = k->z_alpha * t19 + p0 * t22;
+    const double t25 = k->z_0 * (k->y_beta * t12 - p0 * t8) - t2 * (t14 - (k->z_alpha * t8 + p0 *
+        t12));
+    const double t26 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t18 - k->y_beta * k->m_alpha;
+    const double t27 = 1.0 / (k->z_alpha * t9 + p0 * t13 - t15);
+    const double t28 = (k->z_0 * t13 - t2 * (k->z_alpha * t6 - t11) - t3 * (k->z_alpha * t1 + t21) -
+        t4 * t23) * t27;
+    const double t29 = (k->z_0 * t15 + t2 * (p0 * t11 - k->z_alpha * t7) - t3 * (k->z_alpha * t17 +
+        p0 * t21) + t4 * t24) * t27;
+    const double t30 = (t25 + t3 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t16)) -
+        t4 * t26) * t27;
+    const double t31 = t27 * (k->n_delta_a * t23);
+    const double t32 = t27 * (k->n_delta_a * t24);
+    const double t33 = t27 * (k->n_delta_a * t26);
+    const double t34 = k->l_r - k->e * t29;
+    const double t35 = t30 * t34 + (delta_r * k->l_delta_r + k->l_beta * t28 + p0 * k->l_p);
+    const double t36 = k->l_delta_a - k->l_beta * t31 - t32 * (k->e * t30) - t33 * t34;
+    const double t37 = t35 * 2.0 / (t36 * (1.0 + sqrt(1.0 - t35 * (k->e * 0.5 * (t32 * t33) * 2.0) /
+        (t36 * t36) * 4.0)));
+    const double t38 = t28 + t31 * t37;
+    const double t39 = t29 - t32 * t37;
+    const double t40 = t30 + t33 * t37;
+    const double t41 = k->m_q + k->n_r;
+    const double t42 = k->l_p + t41;
+    const double t43 = k->y_beta + t42;
+    const double t44 = k->e * t39;
+    const double t45 = k->l_r - t44;
+    const double t46 = t39 * t45;
+    const double t47 = p0 * p0;
+    const double t48 = k->c * t47;
+    const double t49 = k->y_beta * t42;
+    const double t50 = t40 * t40;
+    const double t51 = k->e * (k->n_p * t39 + k->c * t50);
+    const double t52 = k->l_p * t41;
+    const double t53 = k->alpha_t + ((t2 * (t7 - t10) - k->z_0 * t9 - t3 * (t16 - t17) - t4 * t20) *
+        t27 + t27 * (k->n_delta_a * t20) * t37);
+    const double t54 = k->l_beta * t53;
+    const double t55 = k->n_beta + t47;
+    const double t56 = k->l_r * k->n_p;
+    const double t57 = t44 - k->l_r;
+    const double t58 = t39 * t57;
+    const double t59 = k->y_beta + k->m_q;
+    const double t60 = k->n_beta * t53;
+    const double t61 = k->c * k->d;
+    const double t62 = k->y_beta + k->n_r;
+    const double t63 = t39 * (t39 * (k->d * t59) + (t60 - 2.0 * (t40 * (p0 * t61)) - k->n_p * t59));
+    const double t64 = k->l_p + k->n_r;
+    const double t65 = k->y_beta * t64;
+    const double t66 = k->d * t39;
+    const double t67 = k->n_p - t66;
+    const double t68 = k->l_r * t67;
+    const double t69 = k->l_p * k->n_r;
+    const double t70 = k->y_beta + k->l_p;
+    const double t71 = k->l_beta * t38;
+    const double t72 = k->n_r * t53;
+    const double t73 = t67 + t72;
+    const double t74 = k->l_p + k->l_r * t53;
+    const double t75 = k->y_beta * (t68 + (k->m_alpha - t69)) + (k->l_beta * t73 + (k->m_alpha * t64
+        - k->n_beta * t74));
+    const double t76 = p0 * (t71 + t40 * (k->l_r * t61) - p0 * (t64 + k->c * (k->d * t70))) + t75;
+    const double t77 = k->e * (t63 + t40 * (p0 * (k->c * k->n_p) - k->m_alpha * t38 - t40 * (k->c *
+        t62)));
+    const double t78 = k->z_alpha * (k->d * (t58 - t48) + (t54 + (t56 - (k->n_beta + t5)) - t52 -
+        t51 - t49));
+    const double t79 = k->y_beta * k->l_p;
+    const double t80 = k->d * (k->c * (k->z_alpha * t70 + (t79 - t54)) + (k->m_alpha + t46));
+    const double t81 = k->z_alpha + k->y_beta;
+    const double t82 = k->e * (k->d * (t39 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) + (t60 - k->n_p *
+        t81));
+    const double t83 = t40 * (k->c * (t82 - (k->l_beta + k->d * (k->l_beta + k->l_r * t81))) - k->e
+        * (k->m_alpha * t53));
+    const double t84 = p0 * (t47 * t61 + (t80 + (k->c * (k->e * t50 - k->n_beta) + (t52 + (t5 +
+        k->n_p * t57)))));
+    const double t85 = k->d * k->e;
+    const double t86 = k->e * k->n_p;
+    const double t87 = k->y_beta * k->n_p;
+    const double t88 = t87 - t60;
+    const double t89 = t39 * (t88 - t39 * (k->d * k->y_beta));
+    const double t90 = t66 - k->n_p;
+    const double t91 = k->l_p * t17;
+    const double t92 = k->l_r * (t60 + k->y_beta * t90) + (k->l_beta * (t90 - t72) + t91);
+    const double t93 = k->m_q * (t39 * (t86 + k->d * k->l_r - t39 * t85) + (t65 + (t69 + (k->n_beta
+        - t56) - t54)));
+    const double t94 = t39 * (k->y_beta * t85);
+    const double t95 = k->d * (k->l_beta + k->y_beta * k->l_r);
+    const double t96 = t60 - t87;
+    const double t97 = k->l_beta * (k->n_p + t72);
+    const double t98 = k->c * (k->e * (t17 * t50));
+    const double t99 = k->m_alpha * (k->e * (t38 * (t40 * t62) + t39 * t90) + (t68 + (t54 -
+        (k->n_beta + t69)) - t65)) + t98;
+    const double t100 = k->m_q * (t39 * (k->e * t88 + t95 - t94) + (k->l_r * t96 + (t91 - t97))) +
+        t99;
+    const double t101 = p0 * (t84 + (t83 + t38 * (k->d * (k->m_alpha * t57) + (k->n_beta * t45 -
+        k->l_beta * t41))));
+    const double t102 = k->c * (k->l_p * k->n_beta - k->l_beta * k->n_p - k->e * (t40 * (k->n_r *
+        t40 + k->n_beta * t38)));
+    const double t103 = k->d * (k->m_alpha * (k->e * (t39 * t53) - t74) + (k->c * (k->z_alpha * (t54
+        - t79) + k->l_beta * t39) + k->m_q * t58));
+    const double t104 = p0 * (k->c * (k->d * (t71 + t40 * (k->l_r - 2.0 * t44)) + t40 * t86) - p0 *
+        (k->l_p * t61));
+    const double t105 = k->n_beta * t57 + k->l_beta * k->n_r;
+    const double t106 = t40 * (k->c * (k->z_alpha * (t95 + k->e * (k->y_beta * (k->n_p - 2.0 * t66)
+        - t60)) + t105) + k->e * (k->m_alpha * t73));
+    const double t107 = t106 + t38 * (k->d * (k->m_alpha * (k->l_beta + k->y_beta * t45)) + k->m_q *
+        t105);
+    const double t108 = k->z_alpha * (k->m_q * (t39 * (t94 + (k->e * t96 - t95)) + (k->l_r * t88 +
+        (t97 - t91))) - t98);
+    const double t109 = p0 * (p0 * (t104 + (t103 + (t102 + k->m_q * (k->n_p * t45 - t69)))) + t107);
     struct rc_array5 result;
-    result.v[0] = -(k->z_alpha + t35);
-    result.v[1] = k->z_alpha * t35 + (k->d * (t38 + t40) + (t41 + (t44 + (t45 + (t4 + (t46 -
-        k->m_alpha) - t47 - t48)))));
-    result.v[2] = t68 + (k->e * (t54 + t32 * (p0 * (k->c * k->n_p) - k->m_alpha * t30 - t32 * (k->c
-        * t53))) + t67);
-    result.v[3] = t89 + (t88 + (k->m_q * (k->y_beta * (t79 + (t60 - t48)) + (t83 + t84)) + t87));
-    result.v[4] = t100 + (t99 + k->m_alpha * t98);
+    result.v[0] = -(k->z_alpha + t43);
+    result.v[1] = k->z_alpha * t43 + (k->d * (t46 + t48) + (t49 + (t51 + (t52 + (t5 + (t55 -
+        k->m_alpha) - t56 - t54)))));
+    result.v[2] = t78 + (t77 + (k->m_q * (t68 + (t54 - (t55 + t69)) - t65) + t76));
+    result.v[3] = t101 + (k->z_alpha * (t93 + (k->e * (t89 + k->c * (t50 * t62)) + t92)) + t100);
+    result.v[4] = t109 + (t108 + k->m_alpha * (t92 + k->e * (t89 - t38 * (t17 * t40))));
     return result;
 }
 
@@ -1196,144 +1326,154 @@ ROLL_CRITERION_API struct rc_array5 rc_characteristic_coefficients(const struct 
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 196 add/sub, 255 mul, 3 div, 0 neg, 1 libm (455 operations); straight-line, no branches.
+/// Cost after CSE: 206 add/sub, 270 mul, 3 div, 0 neg, 1 libm (480 operations); straight-line, no branches.
 /// Rust: `roll_criterion::hurwitz_delta4`, bit-identical.
 ROLL_CRITERION_API double rc_hurwitz_delta4(const struct rc_derivatives *k, double p0,
     double delta_e, double delta_r)
 {
     const double t0 = p0 * k->c;
     const double t1 = p0 * k->d;
-    const double t2 = delta_e * k->m_delta_e;
-    const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
-    const double t4 = k->m_q * k->n_r;
-    const double t5 = t4 + t0 * t1;
-    const double t6 = k->m_alpha * k->n_r;
-    const double t7 = k->z_alpha * (k->y_beta * t5 + k->m_q * k->n_beta) + p0 * (p0 * t5 +
-        k->m_alpha * t1);
-    const double t8 = p0 * t1;
-    const double t9 = k->n_beta + k->y_beta * k->n_r;
-    const double t10 = p0 * k->m_q;
-    const double t11 = k->y_beta * t0;
-    const double t12 = t10 + t11;
-    const double t13 = p0 * k->n_r;
-    const double t14 = k->m_alpha + p0 * t0;
-    const double t15 = k->z_alpha * k->m_q - t14;
-    const double t16 = k->z_alpha * t11 + p0 * t14;
-    const double t17 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t10 - k->y_beta * k->m_alpha;
-    const double t18 = 1.0 / (t7 - (p0 * (k->n_beta * t0) + k->y_beta * t6 + k->m_alpha *
-        k->n_beta));
-    const double t19 = (t2 * (k->z_alpha * t1 + t13) + t3 * t15) * t18;
-    const double t20 = (t3 * t16 - t2 * (k->z_alpha * t9 + p0 * t13)) * t18;
-    const double t21 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t8)) - t3 *
-        t17) * t18;
-    const double t22 = t18 * (k->n_delta_a * t15);
-    const double t23 = t18 * (k->n_delta_a * t16);
-    const double t24 = t18 * (k->n_delta_a * t17);
-    const double t25 = k->l_r - k->e * t20;
-    const double t26 = t21 * t25 + (delta_r * k->l_delta_r - k->l_beta * t19 + p0 * k->l_p);
-    const double t27 = k->l_delta_a - k->l_beta * t22 - t23 * (k->e * t21) - t24 * t25;
-    const double t28 = t26 * 2.0 / (t27 * (1.0 + sqrt(1.0 - t26 * (k->e * 0.5 * (t23 * t24) * 2.0) /
-        (t27 * t27) * 4.0)));
-    const double t29 = t18 * (k->n_delta_a * t12) * t28 - (t2 * (t8 - t9) + t3 * t12) * t18;
-    const double t30 = t22 * t28 - t19;
-    const double t31 = t20 - t23 * t28;
-    const double t32 = t21 + t24 * t28;
-    const double t33 = k->m_q + k->n_r;
-    const double t34 = k->l_p + t33;
-    const double t35 = k->y_beta + t34;
-    const double t36 = k->z_alpha + t35;
-    const double t37 = k->e * t31;
-    const double t38 = k->l_r - t37;
-    const double t39 = t31 * t38;
-    const double t40 = p0 * p0;
-    const double t41 = k->c * t40;
-    const double t42 = k->y_beta * t34;
-    const double t43 = t32 * t32;
-    const double t44 = k->c * t43;
-    const double t45 = k->e * (k->n_p * t31 + t44);
-    const double t46 = k->l_p * t33;
-    const double t47 = k->n_beta + t40;
-    const double t48 = k->l_beta * t29;
-    const double t49 = k->l_r * k->n_p;
-    const double t50 = k->z_alpha * t35 + (k->d * (t39 + t41) + (t42 + (t45 + (t46 + (t4 + (t47 -
-        k->m_alpha) - t48 - t49)))));
-    const double t51 = t37 - k->l_r;
-    const double t52 = k->y_beta + k->m_q;
-    const double t53 = k->n_beta * t29;
-    const double t54 = k->c * k->d;
-    const double t55 = k->y_beta + k->n_r;
-    const double t56 = t31 * (t31 * (k->d * t52) + (t53 - 2.0 * (t32 * (p0 * t54)) - k->n_p * t52));
-    const double t57 = k->l_p + k->n_r;
-    const double t58 = k->y_beta * t57;
-    const double t59 = k->d * t31;
-    const double t60 = k->n_p - t59;
-    const double t61 = k->l_r * t60;
-    const double t62 = k->l_p * k->n_r;
-    const double t63 = k->y_beta + k->l_p;
-    const double t64 = k->l_beta * t30;
-    const double t65 = k->n_p + k->n_r * t29;
-    const double t66 = t65 - t59;
-    const double t67 = k->l_beta * t66;
-    const double t68 = k->y_beta * (t61 + (k->m_alpha - t62)) + (t67 + (k->l_p * (k->m_alpha -
-        k->n_beta) + (t6 - t29 * (k->l_r * k->n_beta))));
-    const double t69 = k->m_q * (t61 + (t48 - t47 - t62) - t58) + (p0 * (t64 + t32 * (k->l_r * t54)
-        - p0 * (t57 + k->c * (k->d * t63))) + t68);
-    const double t70 = k->z_alpha * (k->d * (t31 * t51 - t41) + (t49 + (t48 - (k->n_beta + t4)) -
-        t46 - t45 - t42));
-    const double t71 = t70 + (k->e * (t56 + t32 * (p0 * (k->c * k->n_p) - k->m_alpha * t30 - t32 *
-        (k->c * t55))) + t69);
-    const double t72 = k->y_beta * k->l_p;
-    const double t73 = k->d * (k->c * (k->z_alpha * t63 + (t72 - t48)) + (k->m_alpha + t39));
-    const double t74 = k->z_alpha + k->y_beta;
-    const double t75 = k->d * (k->e * (t31 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) - (k->l_beta +
-        k->l_r * t74));
-    const double t76 = t29 * (k->e * k->m_alpha);
-    const double t77 = t30 * (k->d * (k->m_alpha * t51) + (k->n_beta * t38 - k->l_beta * t33));
-    const double t78 = p0 * (t40 * t54 + (t73 + (k->c * (k->e * t43 - k->n_beta) + (t46 + (t4 +
-        k->n_p * t51)))));
-    const double t79 = t31 * (k->d * k->e);
-    const double t80 = k->e * k->n_p;
-    const double t81 = t80 + k->d * k->l_r;
-    const double t82 = t31 * (t81 - t79);
-    const double t83 = t31 * t60;
-    const double t84 = t59 - k->n_p;
-    const double t85 = t62 + k->l_r * t84;
-    const double t86 = k->l_beta * (t59 - t65);
-    const double t87 = k->n_beta * (k->l_p + t29 * t38);
-    const double t88 = k->y_beta * (k->e * (t44 + t83) + t85) + (t86 + (t87 + t43 * (k->n_r * (k->c
-        * k->e))));
-    const double t89 = k->c * (k->e * (t9 * t43));
-    const double t90 = k->m_alpha * (k->e * (t30 * (t32 * t55) + t31 * t84) + (t61 + (t48 -
-        k->n_beta - t62) - t58)) + t89;
-    const double t91 = k->z_alpha * (k->m_q * (t82 + (t58 + (t62 + (k->n_beta - t48 - t49)))) +
-        t88);
-    const double t92 = p0 * (t78 + (t32 * (k->c * (t75 + (k->e * (t53 - k->n_p * t74) - k->l_beta))
-        - t76) + t77));
-    const double t93 = t92 + (t91 + (k->m_q * (k->y_beta * (t82 + (t62 - t49)) + (t86 + t87)) +
-        t90));
-    const double t94 = k->l_r - 2.0 * t37;
-    const double t95 = k->l_p + k->l_r * t29;
-    const double t96 = t31 * (t31 * (k->e * k->m_q) + (t76 - k->l_r * k->m_q + k->c * k->l_beta));
-    const double t97 = k->c * (k->l_p * k->n_beta - k->l_beta * k->n_p - k->e * (t32 * (k->n_r * t32
-        + k->n_beta * t30)));
-    const double t98 = k->d * (t96 + (k->c * (k->z_alpha * (t48 - t72)) - k->m_alpha * t95)) + (t97
-        + k->m_q * (k->n_p * t38 - t62));
-    const double t99 = k->n_beta * t51 + k->l_beta * k->n_r;
-    const double t100 = k->c * (k->z_alpha * (k->d * (k->l_beta + k->y_beta * t94) + k->e *
-        (k->y_beta * k->n_p - t53)) + t99);
-    const double t101 = t32 * (t100 + k->e * (k->m_alpha * t66)) + t30 * (k->d * (k->m_alpha *
-        (k->l_beta + k->y_beta * t38)) + k->m_q * t99);
-    const double t102 = k->y_beta * (t85 + k->e * (t83 - t32 * (k->n_r * t30))) + (t86 + k->n_beta *
-        (t95 - k->e * (t30 * t32 + t29 * t31)));
-    const double t103 = k->z_alpha * (k->m_q * (k->y_beta * (t31 * (t79 - t81) + (t49 - t62)) + (t67
-        + k->n_beta * (t29 * t51 - k->l_p))) - t89);
-    const double t104 = p0 * (p0 * (p0 * (k->c * (k->d * (t64 + t32 * t94) + t32 * t80) - p0 *
-        (k->l_p * t54)) + t98) + t101);
-    const double t105 = t104 + (t103 + k->m_alpha * t102);
-    const double t106 = t50 * t105;
-    const double t107 = t71 * t93;
-    return t71 * (t106 - t107) - t105 * t105 - t36 * (t36 * (t93 * t93) + (t50 * (t107 - t106) + 2.0
-        * (t93 * t105)));
+    const double t2 = p0 * k->alpha_t;
+    const double t3 = delta_e * k->m_delta_e;
+    const double t4 = delta_r * k->n_delta_r + p0 * k->n_p;
+    const double t5 = k->m_q * k->n_r;
+    const double t6 = t5 + t0 * t1;
+    const double t7 = k->n_beta * t0;
+    const double t8 = k->m_q * k->n_beta;
+    const double t9 = k->y_beta * t6 + t8;
+    const double t10 = p0 * t6;
+    const double t11 = k->m_alpha * k->n_r;
+    const double t12 = k->m_alpha * t1;
+    const double t13 = t10 + t12;
+    const double t14 = k->m_alpha * k->n_beta;
+    const double t15 = p0 * t7 + k->y_beta * t11 + t14;
+    const double t16 = p0 * t1;
+    const double t17 = k->n_beta + k->y_beta * k->n_r;
+    const double t18 = p0 * k->m_q;
+    const double t19 = k->y_beta * t0;
+    const double t20 = t18 + t19;
+    const double t21 = p0 * k->n_r;
+    const double t22 = k->m_alpha + p0 * t0;
+    const double t23 = k->z_alpha * k->m_q - t22;
+    const double t24 = k->z_alpha * t19 + p0 * t22;
+    const double t25 = k->z_0 * (k->y_beta * t12 - p0 * t8) - t2 * (t14 - (k->z_alpha * t8 + p0 *
+        t12));
+    const double t26 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t18 - k->y_beta * k->m_alpha;
+    const double t27 = 1.0 / (k->z_alpha * t9 + p0 * t13 - t15);
+    const double t28 = (k->z_0 * t13 - t2 * (k->z_alpha * t6 - t11) - t3 * (k->z_alpha * t1 + t21) -
+        t4 * t23) * t27;
+    const double t29 = (k->z_0 * t15 + t2 * (p0 * t11 - k->z_alpha * t7) - t3 * (k->z_alpha * t17 +
+        p0 * t21) + t4 * t24) * t27;
+    const double t30 = (t25 + t3 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t16)) -
+        t4 * t26) * t27;
+    const double t31 = t27 * (k->n_delta_a * t23);
+    const double t32 = t27 * (k->n_delta_a * t24);
+    const double t33 = t27 * (k->n_delta_a * t26);
+    const double t34 = k->l_r - k->e * t29;
+    const double t35 = t30 * t34 + (delta_r * k->l_delta_r + k->l_beta * t28 + p0 * k->l_p);
+    const double t36 = k->l_delta_a - k->l_beta * t31 - t32 * (k->e * t30) - t33 * t34;
+    const double t37 = t35 * 2.0 / (t36 * (1.0 + sqrt(1.0 - t35 * (k->e * 0.5 * (t32 * t33) * 2.0) /
+        (t36 * t36) * 4.0)));
+    const double t38 = t28 + t31 * t37;
+    const double t39 = t29 - t32 * t37;
+    const double t40 = t30 + t33 * t37;
+    const double t41 = k->m_q + k->n_r;
+    const double t42 = k->l_p + t41;
+    const double t43 = k->y_beta + t42;
+    const double t44 = k->z_alpha + t43;
+    const double t45 = k->e * t39;
+    const double t46 = k->l_r - t45;
+    const double t47 = t39 * t46;
+    const double t48 = p0 * p0;
+    const double t49 = k->c * t48;
+    const double t50 = k->y_beta * t42;
+    const double t51 = t40 * t40;
+    const double t52 = k->e * (k->n_p * t39 + k->c * t51);
+    const double t53 = k->l_p * t41;
+    const double t54 = k->alpha_t + ((t2 * (t7 - t10) - k->z_0 * t9 - t3 * (t16 - t17) - t4 * t20) *
+        t27 + t27 * (k->n_delta_a * t20) * t37);
+    const double t55 = k->l_beta * t54;
+    const double t56 = k->n_beta + t48;
+    const double t57 = k->l_r * k->n_p;
+    const double t58 = k->z_alpha * t43 + (k->d * (t47 + t49) + (t50 + (t52 + (t53 + (t5 + (t56 -
+        k->m_alpha) - t57 - t55)))));
+    const double t59 = t45 - k->l_r;
+    const double t60 = t39 * t59;
+    const double t61 = k->y_beta + k->m_q;
+    const double t62 = k->n_beta * t54;
+    const double t63 = k->c * k->d;
+    const double t64 = k->y_beta + k->n_r;
+    const double t65 = t39 * (t39 * (k->d * t61) + (t62 - 2.0 * (t40 * (p0 * t63)) - k->n_p * t61));
+    const double t66 = k->l_p + k->n_r;
+    const double t67 = k->y_beta * t66;
+    const double t68 = k->d * t39;
+    const double t69 = k->n_p - t68;
+    const double t70 = k->l_r * t69;
+    const double t71 = k->l_p * k->n_r;
+    const double t72 = k->y_beta + k->l_p;
+    const double t73 = k->l_beta * t38;
+    const double t74 = k->n_r * t54;
+    const double t75 = t69 + t74;
+    const double t76 = k->l_p + k->l_r * t54;
+    const double t77 = k->y_beta * (t70 + (k->m_alpha - t71)) + (k->l_beta * t75 + (k->m_alpha * t66
+        - k->n_beta * t76));
+    const double t78 = p0 * (t73 + t40 * (k->l_r * t63) - p0 * (t66 + k->c * (k->d * t72))) + t77;
+    const double t79 = k->e * (t65 + t40 * (p0 * (k->c * k->n_p) - k->m_alpha * t38 - t40 * (k->c *
+        t64)));
+    const double t80 = k->z_alpha * (k->d * (t60 - t49) + (t55 + (t57 - (k->n_beta + t5)) - t53 -
+        t52 - t50));
+    const double t81 = t80 + (t79 + (k->m_q * (t70 + (t55 - (t56 + t71)) - t67) + t78));
+    const double t82 = k->y_beta * k->l_p;
+    const double t83 = k->d * (k->c * (k->z_alpha * t72 + (t82 - t55)) + (k->m_alpha + t47));
+    const double t84 = k->z_alpha + k->y_beta;
+    const double t85 = k->e * (k->d * (t39 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) + (t62 - k->n_p *
+        t84));
+    const double t86 = t40 * (k->c * (t85 - (k->l_beta + k->d * (k->l_beta + k->l_r * t84))) - k->e
+        * (k->m_alpha * t54));
+    const double t87 = p0 * (t48 * t63 + (t83 + (k->c * (k->e * t51 - k->n_beta) + (t53 + (t5 +
+        k->n_p * t59)))));
+    const double t88 = k->d * k->e;
+    const double t89 = k->e * k->n_p;
+    const double t90 = k->y_beta * k->n_p;
+    const double t91 = t90 - t62;
+    const double t92 = t39 * (t91 - t39 * (k->d * k->y_beta));
+    const double t93 = t68 - k->n_p;
+    const double t94 = k->l_p * t17;
+    const double t95 = k->l_r * (t62 + k->y_beta * t93) + (k->l_beta * (t93 - t74) + t94);
+    const double t96 = k->m_q * (t39 * (t89 + k->d * k->l_r - t39 * t88) + (t67 + (t71 + (k->n_beta
+        - t57) - t55)));
+    const double t97 = t39 * (k->y_beta * t88);
+    const double t98 = k->d * (k->l_beta + k->y_beta * k->l_r);
+    const double t99 = t62 - t90;
+    const double t100 = k->l_beta * (k->n_p + t74);
+    const double t101 = k->c * (k->e * (t17 * t51));
+    const double t102 = k->m_alpha * (k->e * (t38 * (t40 * t64) + t39 * t93) + (t70 + (t55 -
+        (k->n_beta + t71)) - t67)) + t101;
+    const double t103 = k->m_q * (t39 * (k->e * t91 + t98 - t97) + (k->l_r * t99 + (t94 - t100))) +
+        t102;
+    const double t104 = p0 * (t87 + (t86 + t38 * (k->d * (k->m_alpha * t59) + (k->n_beta * t46 -
+        k->l_beta * t41))));
+    const double t105 = t104 + (k->z_alpha * (t96 + (k->e * (t92 + k->c * (t51 * t64)) + t95)) +
+        t103);
+    const double t106 = k->c * (k->l_p * k->n_beta - k->l_beta * k->n_p - k->e * (t40 * (k->n_r *
+        t40 + k->n_beta * t38)));
+    const double t107 = k->d * (k->m_alpha * (k->e * (t39 * t54) - t76) + (k->c * (k->z_alpha * (t55
+        - t82) + k->l_beta * t39) + k->m_q * t60));
+    const double t108 = p0 * (k->c * (k->d * (t73 + t40 * (k->l_r - 2.0 * t45)) + t40 * t89) - p0 *
+        (k->l_p * t63));
+    const double t109 = k->n_beta * t59 + k->l_beta * k->n_r;
+    const double t110 = t40 * (k->c * (k->z_alpha * (t98 + k->e * (k->y_beta * (k->n_p - 2.0 * t68)
+        - t62)) + t109) + k->e * (k->m_alpha * t75));
+    const double t111 = t110 + t38 * (k->d * (k->m_alpha * (k->l_beta + k->y_beta * t46)) + k->m_q *
+        t109);
+    const double t112 = k->z_alpha * (k->m_q * (t39 * (t97 + (k->e * t99 - t98)) + (k->l_r * t91 +
+        (t100 - t94))) - t101);
+    const double t113 = p0 * (p0 * (t108 + (t107 + (t106 + k->m_q * (k->n_p * t46 - t71)))) + t111);
+    const double t114 = t113 + (t112 + k->m_alpha * (t95 + k->e * (t92 - t38 * (t17 * t40))));
+    const double t115 = t58 * t114;
+    const double t116 = t81 * t105;
+    return t81 * (t115 - t116) - t114 * t114 - t44 * (t44 * (t105 * t105) + (t58 * (t116 - t115) +
+        2.0 * (t105 * t114)));
 }
 
 /// `omega^2` at the trim of `p0`, rad^2/s^2, in the coefficients of
@@ -1352,140 +1492,151 @@ ROLL_CRITERION_API double rc_hurwitz_delta4(const struct rc_derivatives *k, doub
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 192 add/sub, 247 mul, 4 div, 0 neg, 1 libm (444 operations); straight-line, no branches.
+/// Cost after CSE: 202 add/sub, 262 mul, 4 div, 0 neg, 1 libm (469 operations); straight-line, no branches.
 /// Rust: `roll_criterion::hopf_omega_squared`, bit-identical.
 ROLL_CRITERION_API double rc_hopf_omega_squared(const struct rc_derivatives *k, double p0,
     double delta_e, double delta_r)
 {
     const double t0 = p0 * k->c;
     const double t1 = p0 * k->d;
-    const double t2 = delta_e * k->m_delta_e;
-    const double t3 = delta_r * k->n_delta_r + p0 * k->n_p;
-    const double t4 = k->m_q * k->n_r;
-    const double t5 = t4 + t0 * t1;
-    const double t6 = k->m_alpha * k->n_r;
-    const double t7 = k->z_alpha * (k->y_beta * t5 + k->m_q * k->n_beta) + p0 * (p0 * t5 +
-        k->m_alpha * t1);
-    const double t8 = p0 * t1;
-    const double t9 = k->n_beta + k->y_beta * k->n_r;
-    const double t10 = p0 * k->m_q;
-    const double t11 = k->y_beta * t0;
-    const double t12 = t10 + t11;
-    const double t13 = p0 * k->n_r;
-    const double t14 = k->m_alpha + p0 * t0;
-    const double t15 = k->z_alpha * k->m_q - t14;
-    const double t16 = k->z_alpha * t11 + p0 * t14;
-    const double t17 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t10 - k->y_beta * k->m_alpha;
-    const double t18 = 1.0 / (t7 - (p0 * (k->n_beta * t0) + k->y_beta * t6 + k->m_alpha *
-        k->n_beta));
-    const double t19 = (t2 * (k->z_alpha * t1 + t13) + t3 * t15) * t18;
-    const double t20 = (t3 * t16 - t2 * (k->z_alpha * t9 + p0 * t13)) * t18;
-    const double t21 = (t2 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t8)) - t3 *
-        t17) * t18;
-    const double t22 = t18 * (k->n_delta_a * t15);
-    const double t23 = t18 * (k->n_delta_a * t16);
-    const double t24 = t18 * (k->n_delta_a * t17);
-    const double t25 = k->l_r - k->e * t20;
-    const double t26 = t21 * t25 + (delta_r * k->l_delta_r - k->l_beta * t19 + p0 * k->l_p);
-    const double t27 = k->l_delta_a - k->l_beta * t22 - t23 * (k->e * t21) - t24 * t25;
-    const double t28 = t26 * 2.0 / (t27 * (1.0 + sqrt(1.0 - t26 * (k->e * 0.5 * (t23 * t24) * 2.0) /
-        (t27 * t27) * 4.0)));
-    const double t29 = t18 * (k->n_delta_a * t12) * t28 - (t2 * (t8 - t9) + t3 * t12) * t18;
-    const double t30 = t22 * t28 - t19;
-    const double t31 = t20 - t23 * t28;
-    const double t32 = t21 + t24 * t28;
-    const double t33 = k->m_q + k->n_r;
-    const double t34 = k->l_p + t33;
-    const double t35 = k->y_beta + t34;
-    const double t36 = k->z_alpha + t35;
-    const double t37 = k->e * t31;
-    const double t38 = k->l_r - t37;
-    const double t39 = t31 * t38;
-    const double t40 = p0 * p0;
-    const double t41 = k->c * t40;
-    const double t42 = k->y_beta * t34;
-    const double t43 = t32 * t32;
-    const double t44 = k->c * t43;
-    const double t45 = k->e * (k->n_p * t31 + t44);
-    const double t46 = k->l_p * t33;
-    const double t47 = k->n_beta + t40;
-    const double t48 = k->l_beta * t29;
-    const double t49 = k->l_r * k->n_p;
-    const double t50 = t37 - k->l_r;
-    const double t51 = k->y_beta + k->m_q;
-    const double t52 = k->n_beta * t29;
-    const double t53 = k->c * k->d;
-    const double t54 = k->y_beta + k->n_r;
-    const double t55 = t31 * (t31 * (k->d * t51) + (t52 - 2.0 * (t32 * (p0 * t53)) - k->n_p * t51));
-    const double t56 = k->l_p + k->n_r;
-    const double t57 = k->y_beta * t56;
-    const double t58 = k->d * t31;
-    const double t59 = k->n_p - t58;
-    const double t60 = k->l_r * t59;
-    const double t61 = k->l_p * k->n_r;
-    const double t62 = k->y_beta + k->l_p;
-    const double t63 = k->l_beta * t30;
-    const double t64 = k->n_p + k->n_r * t29;
-    const double t65 = t64 - t58;
-    const double t66 = k->l_beta * t65;
-    const double t67 = k->y_beta * (t60 + (k->m_alpha - t61)) + (t66 + (k->l_p * (k->m_alpha -
-        k->n_beta) + (t6 - t29 * (k->l_r * k->n_beta))));
-    const double t68 = k->m_q * (t60 + (t48 - t47 - t61) - t57) + (p0 * (t63 + t32 * (k->l_r * t53)
-        - p0 * (t56 + k->c * (k->d * t62))) + t67);
-    const double t69 = k->z_alpha * (k->d * (t31 * t50 - t41) + (t49 + (t48 - (k->n_beta + t4)) -
-        t46 - t45 - t42));
-    const double t70 = k->y_beta * k->l_p;
-    const double t71 = k->d * (k->c * (k->z_alpha * t62 + (t70 - t48)) + (k->m_alpha + t39));
-    const double t72 = k->z_alpha + k->y_beta;
-    const double t73 = k->d * (k->e * (t31 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) - (k->l_beta +
-        k->l_r * t72));
-    const double t74 = t29 * (k->e * k->m_alpha);
-    const double t75 = t30 * (k->d * (k->m_alpha * t50) + (k->n_beta * t38 - k->l_beta * t33));
-    const double t76 = p0 * (t40 * t53 + (t71 + (k->c * (k->e * t43 - k->n_beta) + (t46 + (t4 +
-        k->n_p * t50)))));
-    const double t77 = t31 * (k->d * k->e);
-    const double t78 = k->e * k->n_p;
-    const double t79 = t78 + k->d * k->l_r;
-    const double t80 = t31 * (t79 - t77);
-    const double t81 = t31 * t59;
-    const double t82 = t58 - k->n_p;
-    const double t83 = t61 + k->l_r * t82;
-    const double t84 = k->l_beta * (t58 - t64);
-    const double t85 = k->n_beta * (k->l_p + t29 * t38);
-    const double t86 = k->y_beta * (k->e * (t44 + t81) + t83) + (t84 + (t85 + t43 * (k->n_r * (k->c
-        * k->e))));
-    const double t87 = k->c * (k->e * (t9 * t43));
-    const double t88 = k->m_alpha * (k->e * (t30 * (t32 * t54) + t31 * t82) + (t60 + (t48 -
-        k->n_beta - t61) - t57)) + t87;
-    const double t89 = k->z_alpha * (k->m_q * (t80 + (t57 + (t61 + (k->n_beta - t48 - t49)))) +
-        t86);
-    const double t90 = p0 * (t76 + (t32 * (k->c * (t73 + (k->e * (t52 - k->n_p * t72) - k->l_beta))
-        - t74) + t75));
-    const double t91 = k->l_r - 2.0 * t37;
-    const double t92 = k->l_p + k->l_r * t29;
-    const double t93 = t31 * (t31 * (k->e * k->m_q) + (t74 - k->l_r * k->m_q + k->c * k->l_beta));
-    const double t94 = k->c * (k->l_p * k->n_beta - k->l_beta * k->n_p - k->e * (t32 * (k->n_r * t32
-        + k->n_beta * t30)));
-    const double t95 = k->d * (t93 + (k->c * (k->z_alpha * (t48 - t70)) - k->m_alpha * t92)) + (t94
-        + k->m_q * (k->n_p * t38 - t61));
-    const double t96 = k->n_beta * t50 + k->l_beta * k->n_r;
-    const double t97 = k->c * (k->z_alpha * (k->d * (k->l_beta + k->y_beta * t91) + k->e *
-        (k->y_beta * k->n_p - t52)) + t96);
-    const double t98 = t32 * (t97 + k->e * (k->m_alpha * t65)) + t30 * (k->d * (k->m_alpha *
-        (k->l_beta + k->y_beta * t38)) + k->m_q * t96);
-    const double t99 = k->y_beta * (t83 + k->e * (t81 - t32 * (k->n_r * t30))) + (t84 + k->n_beta *
-        (t92 - k->e * (t30 * t32 + t29 * t31)));
-    const double t100 = k->z_alpha * (k->m_q * (k->y_beta * (t31 * (t77 - t79) + (t49 - t61)) + (t66
-        + k->n_beta * (t29 * t50 - k->l_p))) - t87);
-    const double t101 = p0 * (p0 * (p0 * (k->c * (k->d * (t63 + t32 * t91) + t32 * t78) - p0 *
-        (k->l_p * t53)) + t95) + t98);
-    const double t102 = t36 * (t90 + (t89 + (k->m_q * (k->y_beta * (t80 + (t61 - t49)) + (t84 +
-        t85)) + t88)));
-    const double t103 = t36 * (k->z_alpha * t35 + (k->d * (t39 + t41) + (t42 + (t45 + (t46 + (t4 +
-        (t47 - k->m_alpha) - t48 - t49))))));
-    const double t104 = t69 + (k->e * (t55 + t32 * (p0 * (k->c * k->n_p) - k->m_alpha * t30 - t32 *
-        (k->c * t54))) + t68) + t103;
-    return (t101 + (t100 + k->m_alpha * t99) + t102) / t104;
+    const double t2 = p0 * k->alpha_t;
+    const double t3 = delta_e * k->m_delta_e;
+    const double t4 = delta_r * k->n_delta_r + p0 * k->n_p;
+    const double t5 = k->m_q * k->n_r;
+    const double t6 = t5 + t0 * t1;
+    const double t7 = k->n_beta * t0;
+    const double t8 = k->m_q * k->n_beta;
+    const double t9 = k->y_beta * t6 + t8;
+    const double t10 = p0 * t6;
+    const double t11 = k->m_alpha * k->n_r;
+    const double t12 = k->m_alpha * t1;
+    const double t13 = t10 + t12;
+    const double t14 = k->m_alpha * k->n_beta;
+    const double t15 = p0 * t7 + k->y_beta * t11 + t14;
+    const double t16 = p0 * t1;
+    const double t17 = k->n_beta + k->y_beta * k->n_r;
+    const double t18 = p0 * k->m_q;
+    const double t19 = k->y_beta * t0;
+    const double t20 = t18 + t19;
+    const double t21 = p0 * k->n_r;
+    const double t22 = k->m_alpha + p0 * t0;
+    const double t23 = k->z_alpha * k->m_q - t22;
+    const double t24 = k->z_alpha * t19 + p0 * t22;
+    const double t25 = k->z_0 * (k->y_beta * t12 - p0 * t8) - t2 * (t14 - (k->z_alpha * t8 + p0 *
+        t12));
+    const double t26 = k->z_alpha * (k->y_beta * k->m_q) + p0 * t18 - k->y_beta * k->m_alpha;
+    const double t27 = 1.0 / (k->z_alpha * t9 + p0 * t13 - t15);
+    const double t28 = (k->z_0 * t13 - t2 * (k->z_alpha * t6 - t11) - t3 * (k->z_alpha * t1 + t21) -
+        t4 * t23) * t27;
+    const double t29 = (k->z_0 * t15 + t2 * (p0 * t11 - k->z_alpha * t7) - t3 * (k->z_alpha * t17 +
+        p0 * t21) + t4 * t24) * t27;
+    const double t30 = (t25 + t3 * (p0 * k->n_beta - (k->z_alpha * (k->y_beta * t1) + p0 * t16)) -
+        t4 * t26) * t27;
+    const double t31 = t27 * (k->n_delta_a * t23);
+    const double t32 = t27 * (k->n_delta_a * t24);
+    const double t33 = t27 * (k->n_delta_a * t26);
+    const double t34 = k->l_r - k->e * t29;
+    const double t35 = t30 * t34 + (delta_r * k->l_delta_r + k->l_beta * t28 + p0 * k->l_p);
+    const double t36 = k->l_delta_a - k->l_beta * t31 - t32 * (k->e * t30) - t33 * t34;
+    const double t37 = t35 * 2.0 / (t36 * (1.0 + sqrt(1.0 - t35 * (k->e * 0.5 * (t32 * t33) * 2.0) /
+        (t36 * t36) * 4.0)));
+    const double t38 = t28 + t31 * t37;
+    const double t39 = t29 - t32 * t37;
+    const double t40 = t30 + t33 * t37;
+    const double t41 = k->m_q + k->n_r;
+    const double t42 = k->l_p + t41;
+    const double t43 = k->y_beta + t42;
+    const double t44 = k->z_alpha + t43;
+    const double t45 = k->e * t39;
+    const double t46 = k->l_r - t45;
+    const double t47 = t39 * t46;
+    const double t48 = p0 * p0;
+    const double t49 = k->c * t48;
+    const double t50 = k->y_beta * t42;
+    const double t51 = t40 * t40;
+    const double t52 = k->e * (k->n_p * t39 + k->c * t51);
+    const double t53 = k->l_p * t41;
+    const double t54 = k->alpha_t + ((t2 * (t7 - t10) - k->z_0 * t9 - t3 * (t16 - t17) - t4 * t20) *
+        t27 + t27 * (k->n_delta_a * t20) * t37);
+    const double t55 = k->l_beta * t54;
+    const double t56 = k->n_beta + t48;
+    const double t57 = k->l_r * k->n_p;
+    const double t58 = t45 - k->l_r;
+    const double t59 = t39 * t58;
+    const double t60 = k->y_beta + k->m_q;
+    const double t61 = k->n_beta * t54;
+    const double t62 = k->c * k->d;
+    const double t63 = k->y_beta + k->n_r;
+    const double t64 = t39 * (t39 * (k->d * t60) + (t61 - 2.0 * (t40 * (p0 * t62)) - k->n_p * t60));
+    const double t65 = k->l_p + k->n_r;
+    const double t66 = k->y_beta * t65;
+    const double t67 = k->d * t39;
+    const double t68 = k->n_p - t67;
+    const double t69 = k->l_r * t68;
+    const double t70 = k->l_p * k->n_r;
+    const double t71 = k->y_beta + k->l_p;
+    const double t72 = k->l_beta * t38;
+    const double t73 = k->n_r * t54;
+    const double t74 = t68 + t73;
+    const double t75 = k->l_p + k->l_r * t54;
+    const double t76 = k->y_beta * (t69 + (k->m_alpha - t70)) + (k->l_beta * t74 + (k->m_alpha * t65
+        - k->n_beta * t75));
+    const double t77 = p0 * (t72 + t40 * (k->l_r * t62) - p0 * (t65 + k->c * (k->d * t71))) + t76;
+    const double t78 = k->e * (t64 + t40 * (p0 * (k->c * k->n_p) - k->m_alpha * t38 - t40 * (k->c *
+        t63)));
+    const double t79 = k->z_alpha * (k->d * (t59 - t49) + (t55 + (t57 - (k->n_beta + t5)) - t53 -
+        t52 - t50));
+    const double t80 = k->y_beta * k->l_p;
+    const double t81 = k->d * (k->c * (k->z_alpha * t71 + (t80 - t55)) + (k->m_alpha + t47));
+    const double t82 = k->z_alpha + k->y_beta;
+    const double t83 = k->e * (k->d * (t39 * (k->y_beta * 2.0 + k->z_alpha * 2.0)) + (t61 - k->n_p *
+        t82));
+    const double t84 = t40 * (k->c * (t83 - (k->l_beta + k->d * (k->l_beta + k->l_r * t82))) - k->e
+        * (k->m_alpha * t54));
+    const double t85 = p0 * (t48 * t62 + (t81 + (k->c * (k->e * t51 - k->n_beta) + (t53 + (t5 +
+        k->n_p * t58)))));
+    const double t86 = k->d * k->e;
+    const double t87 = k->e * k->n_p;
+    const double t88 = k->y_beta * k->n_p;
+    const double t89 = t88 - t61;
+    const double t90 = t39 * (t89 - t39 * (k->d * k->y_beta));
+    const double t91 = t67 - k->n_p;
+    const double t92 = k->l_p * t17;
+    const double t93 = k->l_r * (t61 + k->y_beta * t91) + (k->l_beta * (t91 - t73) + t92);
+    const double t94 = k->m_q * (t39 * (t87 + k->d * k->l_r - t39 * t86) + (t66 + (t70 + (k->n_beta
+        - t57) - t55)));
+    const double t95 = t39 * (k->y_beta * t86);
+    const double t96 = k->d * (k->l_beta + k->y_beta * k->l_r);
+    const double t97 = t61 - t88;
+    const double t98 = k->l_beta * (k->n_p + t73);
+    const double t99 = k->c * (k->e * (t17 * t51));
+    const double t100 = k->m_alpha * (k->e * (t38 * (t40 * t63) + t39 * t91) + (t69 + (t55 -
+        (k->n_beta + t70)) - t66)) + t99;
+    const double t101 = k->m_q * (t39 * (k->e * t89 + t96 - t95) + (k->l_r * t97 + (t92 - t98))) +
+        t100;
+    const double t102 = p0 * (t85 + (t84 + t38 * (k->d * (k->m_alpha * t58) + (k->n_beta * t46 -
+        k->l_beta * t41))));
+    const double t103 = k->c * (k->l_p * k->n_beta - k->l_beta * k->n_p - k->e * (t40 * (k->n_r *
+        t40 + k->n_beta * t38)));
+    const double t104 = k->d * (k->m_alpha * (k->e * (t39 * t54) - t75) + (k->c * (k->z_alpha * (t55
+        - t80) + k->l_beta * t39) + k->m_q * t59));
+    const double t105 = p0 * (k->c * (k->d * (t72 + t40 * (k->l_r - 2.0 * t45)) + t40 * t87) - p0 *
+        (k->l_p * t62));
+    const double t106 = k->n_beta * t58 + k->l_beta * k->n_r;
+    const double t107 = t40 * (k->c * (k->z_alpha * (t96 + k->e * (k->y_beta * (k->n_p - 2.0 * t67)
+        - t61)) + t106) + k->e * (k->m_alpha * t74));
+    const double t108 = t107 + t38 * (k->d * (k->m_alpha * (k->l_beta + k->y_beta * t46)) + k->m_q *
+        t106);
+    const double t109 = k->z_alpha * (k->m_q * (t39 * (t95 + (k->e * t97 - t96)) + (k->l_r * t89 +
+        (t98 - t92))) - t99);
+    const double t110 = p0 * (p0 * (t105 + (t104 + (t103 + k->m_q * (k->n_p * t46 - t70)))) + t108);
+    const double t111 = t44 * (t102 + (k->z_alpha * (t94 + (k->e * (t90 + k->c * (t51 * t63)) +
+        t93)) + t101));
+    const double t112 = t44 * (k->z_alpha * t43 + (k->d * (t47 + t49) + (t50 + (t52 + (t53 + (t5 +
+        (t56 - k->m_alpha) - t57 - t55))))));
+    const double t113 = t110 + (t109 + k->m_alpha * (t93 + k->e * (t90 - t38 * (t17 * t40)))) +
+        t111;
+    return t113 / (t79 + (t78 + (k->m_q * (t69 + (t55 - (t56 + t70)) - t66) + t77)) + t112);
 }
 
 /// det K (Eq. 27) of one aircraft and control setting, prepared for many roll rates:
@@ -1493,7 +1644,7 @@ ROLL_CRITERION_API double rc_hopf_omega_squared(const struct rc_derivatives *k, 
 /// depend on P0; `det_k(p0)` and the slice form `det_k_into` do the rest, on the trim branch
 /// of the free `det_k` (element 0 of `trim`, with aileron yaw too). The per-call program is
 /// the roll-rate-dependent part of one straight-line program (model/src/program/stage.rs), with
-/// 41 fields; per call 135 operations against 69 for `Prepared::new`.
+/// 46 fields; per call 146 operations against 117 for `Prepared::new`.
 struct rc_Prepared {
     double f0;
     double f1;
@@ -1536,6 +1687,11 @@ struct rc_Prepared {
     double f38;
     double f39;
     double f40;
+    double f41;
+    double f42;
+    double f43;
+    double f44;
+    double f45;
 };
 
 /// Prepares det K for an aircraft `k` and the controls: computes once everything of
@@ -1546,25 +1702,31 @@ struct rc_Prepared {
 /// - `delta_e`: elevator deflection, rad
 /// - `delta_r`: rudder deflection, rad
 ///
-/// Cost after CSE: 18 add/sub, 51 mul, 0 div, 0 neg, 0 libm (69 operations); straight-line, no branches.
+/// Cost after CSE: 36 add/sub, 81 mul, 0 div, 0 neg, 0 libm (117 operations); straight-line, no branches.
 /// Rust: `roll_criterion::Prepared::new`, bit-identical.
 ROLL_CRITERION_API struct rc_Prepared rc_prepared_new(const struct rc_derivatives *k,
     double delta_e, double delta_r)
 {
-    const double t0 = k->n_beta + k->y_beta * k->n_r;
-    const double t1 = k->m_delta_e * (delta_e * t0);
+    const double t0 = delta_e * k->m_delta_e;
+    const double t1 = t0 - k->m_q * k->z_0;
     const double t2 = k->m_q + k->c * k->y_beta;
-    const double t3 = delta_e * (k->d * k->m_delta_e);
-    const double t4 = t3 + k->m_q * k->n_p;
-    const double t5 = k->z_alpha * t4;
-    const double t6 = delta_e * (k->m_delta_e * k->n_r);
-    const double t7 = k->m_alpha * k->n_p;
-    const double t8 = k->z_alpha * k->m_q;
-    const double t9 = k->m_alpha - t8;
-    const double t10 = k->n_delta_r * (delta_r * t9);
-    const double t11 = k->n_delta_a * t9;
-    const double t12 = k->m_alpha + k->y_beta * (k->c * k->z_alpha);
-    const double t13 = k->d * k->z_alpha;
+    const double t3 = k->n_beta * k->alpha_t;
+    const double t4 = k->n_p + k->n_r * k->alpha_t;
+    const double t5 = k->c * k->d;
+    const double t6 = k->z_alpha * k->alpha_t;
+    const double t7 = k->z_0 - t6;
+    const double t8 = k->m_alpha * k->alpha_t;
+    const double t9 = t8 - t0;
+    const double t10 = k->z_alpha * k->m_q;
+    const double t11 = k->m_alpha - t10;
+    const double t12 = k->d * (k->m_alpha * k->z_0 - delta_e * (k->z_alpha * k->m_delta_e)) + k->n_p
+        * t11;
+    const double t13 = k->n_delta_r * (delta_r * t11);
+    const double t14 = k->n_delta_a * t11;
+    const double t15 = k->c * (k->z_alpha * (k->y_beta * k->n_p - t3) + k->n_beta * k->z_0);
+    const double t16 = k->m_alpha + k->y_beta * (k->c * k->z_alpha);
+    const double t17 = k->n_beta + k->y_beta * k->n_r;
+    const double t18 = k->d * k->z_alpha;
     struct rc_Prepared result;
     result.f0 = k->c;
     result.f1 = k->d;
@@ -1574,39 +1736,45 @@ ROLL_CRITERION_API struct rc_Prepared rc_prepared_new(const struct rc_derivative
     result.f5 = k->l_beta;
     result.f6 = k->l_delta_a;
     result.f7 = k->m_q;
-    result.f8 = k->n_p;
-    result.f9 = k->n_r;
-    result.f10 = t0;
-    result.f11 = t1;
-    result.f12 = t2;
-    result.f13 = k->n_delta_r * (delta_r * t2);
-    result.f14 = k->n_p * t2 + t3;
-    result.f15 = k->n_delta_a * t2;
-    result.f16 = t4;
-    result.f17 = t7 - t6 - t5;
-    result.f18 = t10;
+    result.f8 = k->n_r;
+    result.f9 = k->y_beta * (k->n_r * t1) + k->n_beta * t1;
+    result.f10 = t2;
+    result.f11 = k->n_delta_r * (delta_r * t2);
+    result.f12 = t4;
+    result.f13 = k->c * (t3 - k->y_beta * (k->n_p + k->d * k->z_0)) - (k->m_q * t4 + delta_e * (k->d
+        * k->m_delta_e));
+    result.f14 = t5;
+    result.f15 = k->alpha_t * t5;
+    result.f16 = k->n_delta_a * t2;
+    result.f17 = k->n_r * (k->m_q * t7 + t9) + t12;
+    result.f18 = t13;
     result.f19 = delta_r * (k->c * k->n_delta_r);
-    result.f20 = k->c * k->n_p;
-    result.f21 = t11;
+    result.f20 = k->c * (k->n_p + k->d * t7);
+    result.f21 = t14;
     result.f22 = k->c * k->n_delta_a;
-    result.f23 = k->n_p * t12 - t6;
-    result.f24 = k->n_delta_r * (delta_r * t12);
-    result.f25 = k->z_alpha * t1;
-    result.f26 = k->n_delta_a * t12;
-    result.f27 = k->y_beta * (t7 - t5) + delta_e * (k->m_delta_e * k->n_beta);
-    result.f28 = delta_r * (k->m_q * k->n_delta_r);
-    result.f29 = k->y_beta * t10;
-    result.f30 = k->m_q * k->n_delta_a;
-    result.f31 = k->y_beta * t11;
-    result.f32 = k->z_alpha * (k->m_q * t0) - k->m_alpha * t0;
-    result.f33 = k->c * (k->y_beta * t13 - k->n_beta) + (k->m_q * k->n_r + k->d * k->m_alpha);
-    result.f34 = k->c * k->d;
-    result.f35 = delta_r * k->l_delta_r;
-    result.f36 = k->e * k->z_alpha;
-    result.f37 = k->l_beta + k->y_beta * k->l_r;
-    result.f38 = k->e * k->y_beta;
-    result.f39 = t8 - k->m_alpha;
-    result.f40 = k->n_r + t13;
+    result.f23 = t15 + (k->m_alpha * t4 - delta_e * (k->m_delta_e * k->n_r));
+    result.f24 = k->n_delta_r * (delta_r * t16);
+    result.f25 = t17;
+    result.f26 = k->m_alpha * (k->z_0 * t17) - k->z_alpha * (k->m_delta_e * (delta_e * t17));
+    result.f27 = k->c * k->n_p;
+    result.f28 = k->n_delta_a * t16;
+    result.f29 = k->y_beta * t12 + k->n_beta * (k->m_q * (t6 - k->z_0) + (t0 - t8));
+    result.f30 = delta_r * (k->m_q * k->n_delta_r);
+    result.f31 = k->d * t9 - k->m_q * k->n_p;
+    result.f32 = k->y_beta * t13;
+    result.f33 = k->m_q * k->n_delta_a;
+    result.f34 = k->y_beta * t14;
+    result.f35 = k->z_alpha * (k->m_q * t17) - k->m_alpha * t17;
+    result.f36 = k->c * (k->y_beta * t18 - k->n_beta) + (k->m_q * k->n_r + k->d * k->m_alpha);
+    result.f37 = delta_r * k->l_delta_r;
+    result.f38 = k->c * k->alpha_t;
+    result.f39 = k->e * k->z_alpha;
+    result.f40 = k->l_beta + k->y_beta * k->l_r;
+    result.f41 = k->e * k->y_beta;
+    result.f42 = k->l_p + k->l_r * k->alpha_t;
+    result.f43 = k->e * k->alpha_t;
+    result.f44 = t10 - k->m_alpha;
+    result.f45 = k->n_r + t18;
     return result;
 }
 
@@ -1618,41 +1786,44 @@ ROLL_CRITERION_API struct rc_Prepared rc_prepared_new(const struct rc_derivative
 /// Arguments:
 /// - `p0`: trim roll rate P0, rad/s
 ///
-/// Cost after CSE: 48 add/sub, 84 mul, 1 div, 0 neg, 2 libm (135 operations); straight-line, no branches.
+/// Cost after CSE: 52 add/sub, 91 mul, 1 div, 0 neg, 2 libm (146 operations); straight-line, no branches.
 /// Rust: `roll_criterion::Prepared::det_k`, bit-identical.
 ROLL_CRITERION_API double rc_prepared_det_k(const struct rc_Prepared *self, double p0)
 {
-    const double t0 = p0 * (self->f19 + p0 * self->f20);
-    const double t1 = self->f18 + p0 * (self->f17 + t0);
-    const double t2 = p0 * p0;
-    const double t3 = self->f22 * t2;
-    const double t4 = self->f21 + t3;
-    const double t5 = p0 * (self->f24 + p0 * (t0 + self->f23)) - self->f25;
-    const double t6 = p0 * (t3 + self->f26);
-    const double t7 = self->f29 + p0 * (self->f27 - p0 * (self->f28 + p0 * self->f16));
-    const double t8 = self->f31 - t2 * self->f30;
-    const double t9 = self->f32 + t2 * (self->f33 + t2 * self->f34);
-    const double t10 = t9 * t9;
-    const double t11 = t10 * (self->f35 + p0 * self->f3) + self->f4 * (t7 * t9) - self->f2 * (t5 *
-        t7) + self->f5 * (t1 * t9);
-    const double t12 = self->f6 * t10 + self->f4 * (t8 * t9) - self->f2 * (t5 * t8 + t6 * t7) +
-        self->f5 * (t4 * t9);
-    const double t13 = t12 + copysign(sqrt(t12 * t12 + self->f2 * (t6 * t8) * t11 * 4.0), t12);
-    const double t14 = t11 * 2.0;
-    const double t15 = (self->f11 - p0 * (self->f13 + p0 * self->f14)) * t13 + p0 * self->f15 * t14;
-    const double t16 = t1 * t13 - t4 * t14;
-    const double t17 = t5 * t13 - t6 * t14;
-    const double t18 = t7 * t13 - t8 * t14;
-    const double t19 = t9 * t13;
-    const double t20 = self->f0 * t18 + self->f7 * t16 + t15 * (p0 * self->f0);
-    const double t21 = self->f8 * t19 - self->f1 * t17 - t16 * (p0 * self->f1) + self->f9 * t15;
-    const double t22 = p0 * self->f2;
-    const double t23 = (t19 * (p0 * self->f4) + t18 * self->f36 - t17 * t22) * (t21 * (p0 *
-        self->f12) - t20 * (self->f10 - self->f1 * t2));
-    const double t24 = t23 + (t19 * self->f37 - t18 * t22 - t17 * self->f38) * (t21 * (self->f39 -
-        self->f0 * t2) + t20 * (p0 * self->f40));
-    return t9 - t24 / (self->f3 * (t19 * t19) - self->f2 * (t16 * t18) + self->f4 * (t15 * t19) -
-        self->f2 * (t15 * t17));
+    const double t0 = p0 * p0;
+    const double t1 = self->f18 + p0 * (self->f17 + p0 * (self->f19 + p0 * self->f20));
+    const double t2 = t0 * self->f22;
+    const double t3 = self->f21 + t2;
+    const double t4 = self->f26 + p0 * (self->f24 + p0 * (self->f23 + p0 * (self->f19 + p0 *
+        self->f27)));
+    const double t5 = p0 * (t2 + self->f28);
+    const double t6 = self->f32 + p0 * (self->f29 + p0 * (p0 * self->f31 - self->f30));
+    const double t7 = self->f34 - t0 * self->f33;
+    const double t8 = self->f35 + t0 * (self->f36 + self->f14 * t0);
+    const double t9 = t8 * t8;
+    const double t10 = t9 * (self->f37 + p0 * self->f3) + self->f4 * (t6 * t8) - self->f2 * (t4 *
+        t6) + self->f5 * (t1 * t8);
+    const double t11 = self->f6 * t9 + self->f4 * (t7 * t8) - self->f2 * (t4 * t7 + t5 * t6) +
+        self->f5 * (t3 * t8);
+    const double t12 = t11 + copysign(sqrt(t11 * t11 + self->f2 * (t5 * t7) * t10 * 4.0), t11);
+    const double t13 = t10 * 2.0;
+    const double t14 = (self->f9 + p0 * (p0 * (self->f13 - self->f15 * t0) - self->f11)) * t12 + p0
+        * self->f16 * t13;
+    const double t15 = t1 * t12 - t3 * t13;
+    const double t16 = t4 * t12 - t5 * t13;
+    const double t17 = t6 * t12 - t7 * t13;
+    const double t18 = t8 * t12;
+    const double t19 = t18 * (p0 * self->f38) + self->f0 * t17 + self->f7 * t15 + t14 * (p0 *
+        self->f0);
+    const double t20 = self->f12 * t18 - self->f1 * t16 - t15 * (p0 * self->f1) + self->f8 * t14;
+    const double t21 = p0 * self->f2;
+    const double t22 = (t18 * (p0 * self->f4) + t17 * self->f39 - t16 * t21) * (t20 * (p0 *
+        self->f10) - t19 * (self->f25 - self->f1 * t0));
+    const double t23 = t18 * t18 * self->f42 - t16 * t18 * self->f43 - self->f2 * (t15 * t17) +
+        self->f4 * (t14 * t18) - self->f2 * (t14 * t16);
+    const double t24 = t22 + (t18 * self->f40 - t17 * t21 - t16 * self->f41) * (t20 * (self->f44 -
+        self->f0 * t0) + t19 * (p0 * self->f45));
+    return t8 - t24 / t23;
 }
 
 /// det K at `n` roll rates: `out[i] = rc_prepared_det_k(self, p0[i])` for i < n (the slice form
@@ -1707,6 +1878,8 @@ static const struct rc_derivatives rc_aircraft_a_derivatives = {
     0.0, // n_delta_a
     -1.0, // n_delta_r
     0.0, // l_delta_r
+    0.0, // z_0
+    0.0, // alpha_t
 };
 
 /// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = [alpha0, beta0, Q0, R0]` solves
@@ -1725,7 +1898,7 @@ static const struct rc_derivatives rc_aircraft_a_derivatives = {
 ///      [P0, y_beta, 0, -1],
 ///      [m_alpha, 0, m_q, C*P0],
 ///      [0, n_beta, -D*P0, n_r]]
-/// b = [0, 0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
+/// b = [z_0, alpha_t*P0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
 /// p_dot = l_p*P0 + l_r*R0 + l_beta*beta0 + l_delta_a*delta_a + l_delta_r*delta_r - E*Q0*R0
 /// ```
 ///
@@ -1781,7 +1954,7 @@ ROLL_CRITERION_API struct rc_Trim_array2 rc_aircraft_a_trim(double p0, double de
 /// A1 = [[z_alpha, 1, 0],
 ///       [P0, 0, -1],
 ///       [m_alpha, m_q, C*P0]]
-/// b1 = [0, 0, m_delta_e*delta_e]
+/// b1 = [z_0, alpha_t*P0, m_delta_e*delta_e]
 /// delta_a = (-l_p*n_delta_r*P0 - l_r*n_delta_r*R0 + n_p*l_delta_r*P0 + n_r*l_delta_r*R0
 ///                - D*l_delta_r*P0*Q0 + E*n_delta_r*Q0*R0)
 ///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
@@ -1821,7 +1994,7 @@ ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_a_zero_sideslip_trim(d
 /// Formulas, printed from the derivation (model/src/derivation.rs):
 /// ```text
 /// J5 = [[z_alpha, -P0, -beta0, 1, 0],
-///       [P0, y_beta, alpha0, 0, -1],
+///       [P0, y_beta, alpha_t + alpha0, 0, -1],
 ///       [0, l_beta, l_p, -E*R0, l_r - E*Q0],
 ///       [m_alpha, 0, C*R0, m_q, C*P0],
 ///       [0, n_beta, n_p - D*Q0, -D*P0, n_r]]
@@ -1873,7 +2046,7 @@ ROLL_CRITERION_API struct rc_matrix5x5 rc_aircraft_a_jacobian5(double alpha, dou
 ///
 /// Formulas, printed from the derivation (model/src/derivation.rs):
 /// ```text
-/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// d = l_p + l_r*alpha_t + l_r*alpha0 - E*alpha_t*Q0 - E*alpha0*Q0 - E*beta0*R0
 /// ```
 ///
 /// Arguments:
@@ -1915,9 +2088,9 @@ ROLL_CRITERION_API double rc_aircraft_a_residual_denominator(double p0, double d
 /// ```text
 /// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
 ///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
-/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// g = [-C*R0 - m_q*beta0 - C*alpha_t*P0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha_t + n_r*alpha0 - D*P0*beta0]
 /// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
-/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// d = l_p + l_r*alpha_t + l_r*alpha0 - E*alpha_t*Q0 - E*alpha0*Q0 - E*beta0*R0
 /// ```
 ///
 /// Arguments:
@@ -1971,9 +2144,9 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_a_stiffness(double p0, double
 /// ```text
 /// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
 ///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
-/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// g = [-C*R0 - m_q*beta0 - C*alpha_t*P0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha_t + n_r*alpha0 - D*P0*beta0]
 /// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
-/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// d = l_p + l_r*alpha_t + l_r*alpha0 - E*alpha_t*Q0 - E*alpha0*Q0 - E*beta0*R0
 /// ```
 ///
 /// Arguments:
@@ -2404,8 +2577,8 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_a_zero_sideslip_jump_polynomial(
 /// ```text
 /// c1 = -z_alpha - y_beta - l_p - m_q - n_r
 /// c2 = -m_alpha + n_beta + z_alpha*y_beta + z_alpha*l_p + z_alpha*m_q + z_alpha*n_r + y_beta*l_p
-///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha0 + m_q*n_r
-///          + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
+///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha_t
+///          - l_beta*alpha0 + m_q*n_r + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
 /// ```
 ///
 /// Arguments:
@@ -2809,6 +2982,8 @@ static const struct rc_derivatives rc_aircraft_b_derivatives = {
     0.0, // n_delta_a
     -1.0, // n_delta_r
     0.0, // l_delta_r
+    0.0, // z_0
+    0.0, // alpha_t
 };
 
 /// Pseudo-steady trims at roll rate `p0` (Eqs 1-4): `x0 = [alpha0, beta0, Q0, R0]` solves
@@ -2827,7 +3002,7 @@ static const struct rc_derivatives rc_aircraft_b_derivatives = {
 ///      [P0, y_beta, 0, -1],
 ///      [m_alpha, 0, m_q, C*P0],
 ///      [0, n_beta, -D*P0, n_r]]
-/// b = [0, 0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
+/// b = [z_0, alpha_t*P0, m_delta_e*delta_e, n_p*P0 + n_delta_a*delta_a + n_delta_r*delta_r]
 /// p_dot = l_p*P0 + l_r*R0 + l_beta*beta0 + l_delta_a*delta_a + l_delta_r*delta_r - E*Q0*R0
 /// ```
 ///
@@ -2883,7 +3058,7 @@ ROLL_CRITERION_API struct rc_Trim_array2 rc_aircraft_b_trim(double p0, double de
 /// A1 = [[z_alpha, 1, 0],
 ///       [P0, 0, -1],
 ///       [m_alpha, m_q, C*P0]]
-/// b1 = [0, 0, m_delta_e*delta_e]
+/// b1 = [z_0, alpha_t*P0, m_delta_e*delta_e]
 /// delta_a = (-l_p*n_delta_r*P0 - l_r*n_delta_r*R0 + n_p*l_delta_r*P0 + n_r*l_delta_r*R0
 ///                - D*l_delta_r*P0*Q0 + E*n_delta_r*Q0*R0)
 ///               / (l_delta_a*n_delta_r - n_delta_a*l_delta_r)
@@ -2923,7 +3098,7 @@ ROLL_CRITERION_API struct rc_ZeroSideslipTrim rc_aircraft_b_zero_sideslip_trim(d
 /// Formulas, printed from the derivation (model/src/derivation.rs):
 /// ```text
 /// J5 = [[z_alpha, -P0, -beta0, 1, 0],
-///       [P0, y_beta, alpha0, 0, -1],
+///       [P0, y_beta, alpha_t + alpha0, 0, -1],
 ///       [0, l_beta, l_p, -E*R0, l_r - E*Q0],
 ///       [m_alpha, 0, C*R0, m_q, C*P0],
 ///       [0, n_beta, n_p - D*Q0, -D*P0, n_r]]
@@ -2975,7 +3150,7 @@ ROLL_CRITERION_API struct rc_matrix5x5 rc_aircraft_b_jacobian5(double alpha, dou
 ///
 /// Formulas, printed from the derivation (model/src/derivation.rs):
 /// ```text
-/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// d = l_p + l_r*alpha_t + l_r*alpha0 - E*alpha_t*Q0 - E*alpha0*Q0 - E*beta0*R0
 /// ```
 ///
 /// Arguments:
@@ -3017,9 +3192,9 @@ ROLL_CRITERION_API double rc_aircraft_b_residual_denominator(double p0, double d
 /// ```text
 /// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
 ///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
-/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// g = [-C*R0 - m_q*beta0 - C*alpha_t*P0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha_t + n_r*alpha0 - D*P0*beta0]
 /// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
-/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// d = l_p + l_r*alpha_t + l_r*alpha0 - E*alpha_t*Q0 - E*alpha0*Q0 - E*beta0*R0
 /// ```
 ///
 /// Arguments:
@@ -3073,9 +3248,9 @@ ROLL_CRITERION_API struct rc_matrix2x2 rc_aircraft_b_stiffness(double p0, double
 /// ```text
 /// K0 = [[-m_alpha + z_alpha*m_q - C*P0^2, -m_q*P0 - C*y_beta*P0],
 ///       [n_r*P0 + D*z_alpha*P0, n_beta + y_beta*n_r - D*P0^2]]
-/// g = [-C*R0 - m_q*beta0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha0 - D*P0*beta0]
+/// g = [-C*R0 - m_q*beta0 - C*alpha_t*P0 - C*P0*alpha0, n_p - D*Q0 + n_r*alpha_t + n_r*alpha0 - D*P0*beta0]
 /// h = [l_r*P0 + E*z_alpha*R0 - E*P0*Q0, l_beta + y_beta*l_r - E*y_beta*Q0 - E*P0*R0]
-/// d = l_p + l_r*alpha0 - E*alpha0*Q0 - E*beta0*R0
+/// d = l_p + l_r*alpha_t + l_r*alpha0 - E*alpha_t*Q0 - E*alpha0*Q0 - E*beta0*R0
 /// ```
 ///
 /// Arguments:
@@ -3485,8 +3660,8 @@ ROLL_CRITERION_API struct rc_array9 rc_aircraft_b_zero_sideslip_jump_polynomial(
 /// ```text
 /// c1 = -z_alpha - y_beta - l_p - m_q - n_r
 /// c2 = -m_alpha + n_beta + z_alpha*y_beta + z_alpha*l_p + z_alpha*m_q + z_alpha*n_r + y_beta*l_p
-///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha0 + m_q*n_r
-///          + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
+///          + y_beta*m_q + y_beta*n_r + l_p*m_q + l_p*n_r - l_r*n_p - l_beta*alpha_t
+///          - l_beta*alpha0 + m_q*n_r + P0^2 + D*l_r*Q0 + E*n_p*Q0 + C*D*P0^2 + C*E*R0^2 - D*E*Q0^2
 /// ```
 ///
 /// Arguments:

@@ -45,56 +45,56 @@ static void self_test_aircraft_a(void)
 {
     {
         static const double want[10] = {-0.06082818036915503, -0.02258882623335746, -0.19424124839494938, -0.02915363368075617, -0.02575727320397208, 0.0, 0.0, 0.0, 0.0, 0.0};
-        static const double tol[10] = {1.761815061420508e-16, 6.90858714915448e-17, 5.985219356898572e-16, 8.647135528875793e-17, 1.0721286381571113e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
+        static const double tol[10] = {1.8968807542042838e-16, 7.410159848825084e-17, 6.416521569498586e-16, 9.294476236153051e-17, 1.0894106014511753e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
         const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
         check("rc_trim(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 10);
     }
     {
         static const double want[5] = {-0.06195406887351482, -0.18633305754398316, -0.03097703443675741, -0.033389226559441, 0.08130770219589172};
-        static const double tol[5] = {8.289131278140726e-17, 2.906781624681873e-16, 4.832393976396252e-17, 6.702588913905042e-17, 3.21844991458885e-16};
+        static const double tol[5] = {9.664787952792504e-17, 3.320524126150142e-16, 5.520222313722141e-17, 6.70633706052007e-17, 3.3989892807033387e-16};
         const struct rc_ZeroSideslipTrim r = rc_zero_sideslip_trim(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659);
         const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_zero_sideslip_trim(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659)", got, want, tol, 5);
     }
     {
         static const double want[25] = {-3.0076, -0.5, -0.02, 1.0, 0.0, 0.5, -0.0558, 0.05, 0.0, -1.0, 0.0, -110.45, -21.7529, 0.03525, 1.4502, -13.52504, 0.0, -0.04795, -1.815, 0.4795, 0.0, 3.716, -0.0786, -0.393, -0.2608};
-        static const double tol[25] = {0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 7.827072323607353e-18, 3.376632307094951e-16, 0.0, 0.0, 1.0647038806155251e-17, 0.0, 1.0647038806155251e-16, 0.0, 0.0, 3.490541189421492e-17, 8.726352973553731e-17, 0.0};
+        static const double tol[25] = {0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 1.1102230246251566e-17, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 7.827072323607353e-18, 3.376632307094951e-16, 0.0, 0.0, 1.0647038806155251e-17, 0.0, 1.0647038806155251e-16, 0.0, 0.0, 3.490541189421492e-17, 8.726352973553731e-17, 0.0};
         const struct rc_matrix5x5 r = rc_jacobian5(&rc_aircraft_a_derivatives, 0.05, 0.02, 0.5, 0.1, -0.05);
         const double got[25] = {r.m[0][0], r.m[0][1], r.m[0][2], r.m[0][3], r.m[0][4], r.m[1][0], r.m[1][1], r.m[1][2], r.m[1][3], r.m[1][4], r.m[2][0], r.m[2][1], r.m[2][2], r.m[2][3], r.m[2][4], r.m[3][0], r.m[3][1], r.m[3][2], r.m[3][3], r.m[3][4], r.m[4][0], r.m[4][1], r.m[4][2], r.m[4][3], r.m[4][4]};
         check("rc_jacobian5(&rc_aircraft_a_derivatives, 0.05, 0.02, 0.5, 0.1, -0.05)", got, want, tol, 25);
     }
     {
         static const double want[1] = {-21.85419550496811};
-        static const double tol[1] = {1.0050166686089596e-14};
+        static const double tol[1] = {1.0097000517531354e-14};
         const double r = rc_residual_denominator(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_residual_denominator(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[4] = {18.744741221495342, 0.8526917617412597, -1.3051565070711666, 2.636738625870693};
-        static const double tol[4] = {1.3873274179008385e-14, 2.4624976911128308e-15, 1.1787499381493022e-15, 7.254541302292768e-15};
+        static const double tol[4] = {1.3874448807526628e-14, 2.6056283119472444e-15, 1.1807492871735649e-15, 7.47355614894007e-15};
         const struct rc_matrix2x2 r = rc_stiffness(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[4] = {r.m[0][0], r.m[0][1], r.m[1][0], r.m[1][1]};
         check("rc_stiffness(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 4);
     }
     {
         static const double want[1] = {50.53787941202994};
-        static const double tol[1] = {2.5129496742081963e-13};
+        static const double tol[1] = {2.627245977043241e-13};
         const double r = rc_det_k(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_det_k(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[1] = {-1104.4646970770052};
-        static const double tol[1] = {4.0275249925560335e-12};
+        static const double tol[1] = {4.263758778628669e-12};
         const double r = rc_det_j5(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_det_j5(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[1] = {51.6612900933818};
-        static const double tol[1] = {2.009638827332498e-13};
+        static const double tol[1] = {2.115277864524255e-13};
         const double r = rc_zero_sideslip_det_k(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659);
         const double got[1] = {r};
         check("rc_zero_sideslip_det_k(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659)", got, want, tol, 1);
@@ -122,28 +122,28 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[9] = {-436338.60286608565, 0.0, 163145.05708902073, 0.0, -18393.1308629075, 0.0, 867.7134758782962, 0.0, -15.079798239260171};
-        static const double tol[9] = {1.88472810540428e-9, 0.0, 7.38041753978393e-10, 0.0, 6.44522995407095e-11, 0.0, 1.7814566749293201e-12, 0.0, 1.3393551369542831e-14};
+        static const double tol[9] = {2.034050698675757e-9, 0.0, 7.625699163202197e-10, 0.0, 7.790447288381974e-11, 0.0, 2.756037645678876e-12, 0.0, 1.3393551369542831e-14};
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, 0.03490658503988659);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, 0.03490658503988659)", got, want, tol, 9);
     }
     {
         static const double want[5] = {26.8921, 129.50119318085413, 511.31229230147534, 391.2201083555913, 1104.4646970770052};
-        static const double tol[5] = {1.7026624554716818e-14, 1.8523172606848692e-13, 1.1977469487929313e-12, 1.6485846228520578e-12, 4.0275249925560335e-12};
+        static const double tol[5] = {1.7026624554716818e-14, 1.8976821989124092e-13, 1.22463944641936e-12, 1.8070388682817462e-12, 4.263758778628669e-12};
         const struct rc_array5 r = rc_characteristic_coefficients(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
         check("rc_characteristic_coefficients(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 5);
     }
     {
         static const double want[1] = {80713292.94884312};
-        static const double tol[1] = {1.03487756473417e-5};
+        static const double tol[1] = {1.0969624085489543e-5};
         const double r = rc_hurwitz_delta4(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_hurwitz_delta4(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[1] = {3.1691294555706047};
-        static const double tol[1] = {3.118277532538995e-14};
+        static const double tol[1] = {3.2855220618638487e-14};
         const double r = rc_hopf_omega_squared(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_hopf_omega_squared(&rc_aircraft_a_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
@@ -263,62 +263,62 @@ static void self_test_aircraft_a(void)
     {
         const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_a_derivatives, 0.03490658503988659, 0.0);
         static const double want[1] = {50.53787941202994};
-        static const double tol[1] = {6.347172986106123e-13};
+        static const double tol[1] = {6.462662029373472e-13};
         const double got[1] = {rc_prepared_det_k(&prepared, 0.5)};
         check("rc_prepared_det_k(&prepared, 0.5) with prepared = rc_prepared_new(&rc_aircraft_a_derivatives, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[10] = {0.07943355744880254, 0.11699365461227877, 0.39099611837898096, 0.09673537875607816, -0.1255202853445439, 0.0, 0.0, 0.0, 0.0, 0.0};
-        static const double tol[10] = {3.008800164957782e-16, 4.218172074699505e-16, 1.418849230758128e-15, 4.01314452057566e-16, 5.346172061855975e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
+        static const double tol[10] = {3.186256850484665e-16, 4.470239148290794e-16, 1.5049898230640607e-15, 4.2297728690542135e-16, 5.43224291083851e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
         const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
         const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
         check("rc_trim(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 10);
     }
     {
         static const double want[5] = {0.09580073263313676, 0.28813028346742214, 0.12454095242307779, -0.08590405404454085, -0.32689180403895063};
-        static const double tol[5] = {1.3160336684635744e-16, 4.597880610865656e-16, 1.9873802347803417e-16, 1.7294536689266272e-16, 1.305648351578015e-15};
+        static const double tol[5] = {1.5287540267541088e-16, 5.237658360460268e-16, 2.263916700558036e-16, 1.7307385901057648e-16, 1.3782329130590748e-15};
         const struct rc_ZeroSideslipTrim r = rc_zero_sideslip_trim(&rc_aircraft_a_derivatives, 1.3, -0.05);
         const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_zero_sideslip_trim(&rc_aircraft_a_derivatives, 1.3, -0.05)", got, want, tol, 5);
     }
     {
         static const double want[25] = {-3.0076, -1.3, 0.05, 1.0, 0.0, 1.3, -0.0558, -0.1, 0.0, -1.0, 0.0, -110.45, -21.7529, -0.0705, 1.6617, -13.52504, 0.0, 0.0959, -1.815, 1.2467, 0.0, 3.716, 0.1572, -1.0218, -0.2608};
-        static const double tol[25] = {0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 1.5654144647214706e-17, 4.0027980929835393e-16, 0.0, 0.0, 2.1294077612310502e-17, 0.0, 2.768230089600365e-16, 0.0, 0.0, 6.981082378842985e-17, 2.26885177312397e-16, 0.0};
+        static const double tol[25] = {0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 2.2204460492503132e-17, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 1.5654144647214706e-17, 4.0027980929835393e-16, 0.0, 0.0, 2.1294077612310502e-17, 0.0, 2.768230089600365e-16, 0.0, 0.0, 6.981082378842985e-17, 2.26885177312397e-16, 0.0};
         const struct rc_matrix5x5 r = rc_jacobian5(&rc_aircraft_a_derivatives, -0.1, -0.05, 1.3, -0.2, 0.1);
         const double got[25] = {r.m[0][0], r.m[0][1], r.m[0][2], r.m[0][3], r.m[0][4], r.m[1][0], r.m[1][1], r.m[1][2], r.m[1][3], r.m[1][4], r.m[2][0], r.m[2][1], r.m[2][2], r.m[2][3], r.m[2][4], r.m[3][0], r.m[3][1], r.m[3][2], r.m[3][3], r.m[3][4], r.m[4][0], r.m[4][1], r.m[4][2], r.m[4][3], r.m[4][4]};
         check("rc_jacobian5(&rc_aircraft_a_derivatives, -0.1, -0.05, 1.3, -0.2, 0.1)", got, want, tol, 25);
     }
     {
         static const double want[1] = {-21.661980214063963};
-        static const double tol[1] = {1.0341751448914876e-14};
+        static const double tol[1] = {1.0413642359995103e-14};
         const double r = rc_residual_denominator(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_residual_denominator(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[4] = {17.36446452863008, 2.32416400101525, -3.4414105798232604, 4.687615737090511};
-        static const double tol[4] = {1.3973018252861529e-14, 1.0401455583725492e-14, 3.1966911568675304e-15, 1.709533252479874e-14};
+        static const double tol[4] = {1.398036025144457e-14, 1.0966750829105202e-14, 3.2060689784097734e-15, 1.7627746087893057e-14};
         const struct rc_matrix2x2 r = rc_stiffness(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
         const double got[4] = {r.m[0][0], r.m[0][1], r.m[1][0], r.m[1][1]};
         check("rc_stiffness(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 4);
     }
     {
         static const double want[1] = {89.39633977289456};
-        static const double tol[1] = {5.233944548954862e-13};
+        static const double tol[1] = {5.516846392826085e-13};
         const double r = rc_det_k(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_det_k(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[1] = {-1936.5017433701814};
-        static const double tol[1] = {9.315720753829744e-12};
+        static const double tol[1] = {9.899917736894017e-12};
         const double r = rc_det_j5(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_det_j5(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[1] = {76.50642099402414};
-        static const double tol[1] = {2.650335602585789e-13};
+        static const double tol[1] = {2.8330155451907297e-13};
         const double r = rc_zero_sideslip_det_k(&rc_aircraft_a_derivatives, 1.3, -0.05);
         const double got[1] = {r};
         check("rc_zero_sideslip_det_k(&rc_aircraft_a_derivatives, 1.3, -0.05)", got, want, tol, 1);
@@ -346,28 +346,28 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[9] = {-726111.4451475191, 0.0, 161906.2487207257, 0.0, -17649.888301265964, 0.0, 870.8185457188207, 0.0, -15.079798239260171};
-        static const double tol[9] = {2.25137093625319e-9, 0.0, 7.615613094537017e-10, 0.0, 6.472777330213203e-11, 0.0, 1.782881514148292e-12, 0.0, 1.3393551369542831e-14};
+        static const double tol[9] = {2.4122208531287565e-9, 0.0, 7.895701036063899e-10, 0.0, 7.807704805886127e-11, 0.0, 2.761154929998857e-12, 0.0, 1.3393551369542831e-14};
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, -0.05);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, -0.05)", got, want, tol, 9);
     }
     {
         static const double want[5] = {26.8921, 148.15999841915024, 686.665693127369, 1084.1105341327816, 1936.5017433701814};
-        static const double tol[5] = {1.7026624554716818e-14, 2.2999339963881076e-13, 1.732873846756139e-12, 4.008734104517081e-12, 9.315720753829744e-12};
+        static const double tol[5] = {1.7026624554716818e-14, 2.3205920361215154e-13, 1.7644616098777777e-12, 4.218545457125627e-12, 9.899917736894017e-12};
         const struct rc_array5 r = rc_characteristic_coefficients(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
         const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
         check("rc_characteristic_coefficients(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 5);
     }
     {
         static const double want[1] = {767921374.3230038};
-        static const double tol[1] = {4.591616978134607e-5};
+        static const double tol[1] = {4.759909709304963e-5};
         const double r = rc_hurwitz_delta4(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_hurwitz_delta4(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[1] = {8.253562456657566};
-        static const double tol[1] = {7.691961611431115e-14};
+        static const double tol[1] = {7.902586018462646e-14};
         const double r = rc_hopf_omega_squared(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_hopf_omega_squared(&rc_aircraft_a_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
@@ -487,7 +487,7 @@ static void self_test_aircraft_a(void)
     {
         const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_a_derivatives, -0.05, 0.01);
         static const double want[1] = {89.39633977289456};
-        static const double tol[1] = {1.9763791272630523e-12};
+        static const double tol[1] = {2.007182355615812e-12};
         const double got[1] = {rc_prepared_det_k(&prepared, 1.3)};
         check("rc_prepared_det_k(&prepared, 1.3) with prepared = rc_prepared_new(&rc_aircraft_a_derivatives, -0.05, 0.01)", got, want, tol, 1);
     }
@@ -507,35 +507,35 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[25] = {-3.0076, -2.45, -0.1, 1.0, 0.0, 2.45, -0.0558, 0.2, 0.0, -1.0, 0.0, -110.45, -21.7529, -0.0141, 1.3092, -13.52504, 0.0, 0.01918, -1.815, 2.3495500000000002, 0.0, 3.716, -0.2358, -1.9257000000000002, -0.2608};
-        static const double tol[25] = {0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 3.1308289294429414e-18, 3.376632307094951e-16, 0.0, 0.0, 4.2588155224621e-18, 0.0, 5.217049015016074e-16, 0.0, 0.0, 1.0471623568264477e-16, 4.2759129570413283e-16, 0.0};
+        static const double tol[25] = {0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 4.4408920985006264e-17, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 3.1308289294429414e-18, 3.376632307094951e-16, 0.0, 0.0, 4.2588155224621e-18, 0.0, 5.217049015016074e-16, 0.0, 0.0, 1.0471623568264477e-16, 4.2759129570413283e-16, 0.0};
         const struct rc_matrix5x5 r = rc_jacobian5(&rc_aircraft_a_derivatives, 0.2, 0.1, 2.45, 0.3, 0.02);
         const double got[25] = {r.m[0][0], r.m[0][1], r.m[0][2], r.m[0][3], r.m[0][4], r.m[1][0], r.m[1][1], r.m[1][2], r.m[1][3], r.m[1][4], r.m[2][0], r.m[2][1], r.m[2][2], r.m[2][3], r.m[2][4], r.m[3][0], r.m[3][1], r.m[3][2], r.m[3][3], r.m[3][4], r.m[4][0], r.m[4][1], r.m[4][2], r.m[4][3], r.m[4][4]};
         check("rc_jacobian5(&rc_aircraft_a_derivatives, 0.2, 0.1, 2.45, 0.3, 0.02)", got, want, tol, 25);
     }
     {
         static const double want[1] = {-21.744142895242707};
-        static const double tol[1] = {9.75202614457057e-15};
+        static const double tol[1] = {9.75393370123284e-15};
         const double r = rc_residual_denominator(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_residual_denominator(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
     }
     {
         static const double want[4] = {13.217742263174989, 4.864888118037834, -6.422531760767105, -1.2291242968129097};
-        static const double tol[4] = {1.3983256138081635e-14, 6.85934159447311e-15, 5.683577855260023e-15, 6.793705037067029e-15};
+        static const double tol[4] = {1.3983757830677194e-14, 6.874196033021027e-15, 5.6836341648951774e-15, 6.795372289130258e-15};
         const struct rc_matrix2x2 r = rc_stiffness(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
         const double got[4] = {r.m[0][0], r.m[0][1], r.m[1][0], r.m[1][1]};
         check("rc_stiffness(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 4);
     }
     {
         static const double want[1] = {14.99865028599726};
-        static const double tol[1] = {1.5761147809666012e-13};
+        static const double tol[1] = {1.5832638019885403e-13};
         const double r = rc_det_k(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_det_k(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
     }
     {
         static const double want[1] = {-326.1327950544973};
-        static const double tol[1] = {8.288854464787214e-12};
+        static const double tol[1] = {8.422914733529053e-12};
         const double r = rc_det_j5(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_det_j5(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
@@ -570,28 +570,28 @@ static void self_test_aircraft_a(void)
     }
     {
         static const double want[9] = {-555190.6183167989, 0.0, 162665.80026259003, 0.0, -18093.404852109692, 0.0, 868.9900245039669, 0.0, -15.079798239260171};
-        static const double tol[9] = {1.7094277841961963e-9, 0.0, 6.855072021281382e-10, 0.0, 6.253870824502983e-11, 0.0, 1.7800394212530471e-12, 0.0, 1.3393551369542831e-14};
+        static const double tol[9] = {1.8322239699276256e-9, 0.0, 7.020903820025017e-10, 0.0, 7.53266878433951e-11, 0.0, 2.7554707442083663e-12, 0.0, 1.3393551369542831e-14};
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, 0.0);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_a_derivatives, 0.0)", got, want, tol, 9);
     }
     {
         static const double want[5] = {26.8921, 147.1508537367839, 812.0397546562365, 1131.032360356705, 326.1327950544973};
-        static const double tol[5] = {1.7026624554716818e-14, 2.015440701280449e-13, 1.731468394427108e-12, 3.0194871511766596e-12, 8.288854464787214e-12};
+        static const double tol[5] = {1.7026624554716818e-14, 2.015440701280449e-13, 1.7341865519166455e-12, 3.0791759195266047e-12, 8.422914733529053e-12};
         const struct rc_array5 r = rc_characteristic_coefficients(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
         const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
         check("rc_characteristic_coefficients(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 5);
     }
     {
         static const double want[1] = {1832318526.1174514};
-        static const double tol[1] = {4.683670854168323e-5};
+        static const double tol[1] = {4.728591690064246e-5};
         const double r = rc_hurwitz_delta4(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_hurwitz_delta4(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
     }
     {
         static const double want[1] = {9.566999293543777};
-        static const double tol[1] = {7.514352253179553e-14};
+        static const double tol[1] = {7.570477334559059e-14};
         const double r = rc_hopf_omega_squared(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_hopf_omega_squared(&rc_aircraft_a_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
@@ -711,7 +711,7 @@ static void self_test_aircraft_a(void)
     {
         const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_a_derivatives, 0.0, -0.02);
         static const double want[1] = {14.99865028599726};
-        static const double tol[1] = {5.471760992726734e-13};
+        static const double tol[1] = {5.478910013748675e-13};
         const double got[1] = {rc_prepared_det_k(&prepared, 2.45)};
         check("rc_prepared_det_k(&prepared, 2.45) with prepared = rc_prepared_new(&rc_aircraft_a_derivatives, 0.0, -0.02)", got, want, tol, 1);
     }
@@ -1005,56 +1005,56 @@ static void self_test_aircraft_b(void)
 {
     {
         static const double want[10] = {-0.04112860174591951, -0.004406825842779853, -0.05686332464171695, -0.019700563007774903, -0.04201991042752198, 0.0, 0.0, 0.0, 0.0, 0.0};
-        static const double tol[10] = {1.133100434385868e-16, 1.2822563242076078e-17, 1.680570902131078e-16, 5.532187072589836e-17, 1.3408431311658804e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
+        static const double tol[10] = {1.2244242756437848e-16, 1.380107514530955e-17, 1.8068328466790165e-16, 5.969627445576043e-17, 1.343175267606631e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
         const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
         check("rc_trim(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 10);
     }
     {
         static const double want[5] = {-0.041220317144740684, -0.05478180148536037, -0.020610158572370342, -0.04298314876226451, 0.024455272196266038};
-        static const double tol[5] = {5.509726672703725e-17, 8.538827094813086e-17, 3.2125007881162844e-17, 8.606227650550464e-17, 9.56992556129053e-17};
+        static const double tol[5] = {6.425001576232569e-17, 9.755227441602919e-17, 3.670138239880706e-17, 8.608281204894539e-17, 1.0112941686605932e-16};
         const struct rc_ZeroSideslipTrim r = rc_zero_sideslip_trim(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659);
         const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_zero_sideslip_trim(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659)", got, want, tol, 5);
     }
     {
         static const double want[25] = {-1.329, -0.5, -0.02, 1.0, 0.0, 0.5, -0.196, 0.05, 0.0, -1.0, 0.0, -9.99, -3.933, 0.03635, 0.0533, -23.18, 0.0, -0.04745, -0.814, 0.4745, 0.0, 5.67, -0.0716, -0.358, -0.235};
-        static const double tol[25] = {0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 8.071321389024888e-18, 2.7977620220553945e-17, 0.0, 0.0, 1.0536016503692735e-17, 0.0, 1.0536016503692735e-16, 0.0, 0.0, 3.179678742526448e-17, 7.94919685631612e-17, 0.0};
+        static const double tol[25] = {0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 1.1102230246251566e-17, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 8.071321389024888e-18, 2.7977620220553945e-17, 0.0, 0.0, 1.0536016503692735e-17, 0.0, 1.0536016503692735e-16, 0.0, 0.0, 3.179678742526448e-17, 7.94919685631612e-17, 0.0};
         const struct rc_matrix5x5 r = rc_jacobian5(&rc_aircraft_b_derivatives, 0.05, 0.02, 0.5, 0.1, -0.05);
         const double got[25] = {r.m[0][0], r.m[0][1], r.m[0][2], r.m[0][3], r.m[0][4], r.m[1][0], r.m[1][1], r.m[1][2], r.m[1][3], r.m[1][4], r.m[2][0], r.m[2][1], r.m[2][2], r.m[2][3], r.m[2][4], r.m[3][0], r.m[3][1], r.m[3][2], r.m[3][3], r.m[3][4], r.m[4][0], r.m[4][1], r.m[4][2], r.m[4][3], r.m[4][4]};
         check("rc_jacobian5(&rc_aircraft_b_derivatives, 0.05, 0.02, 0.5, 0.1, -0.05)", got, want, tol, 25);
     }
     {
         static const double want[1] = {-3.939945561209858};
-        static const double tol[1] = {1.775968217832752e-15};
+        static const double tol[1] = {1.7794301960672406e-15};
         const double r = rc_residual_denominator(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_residual_denominator(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[4] = {24.025458563129693, 0.41198468518416015, -0.5919276155504511, 5.404981391251224};
-        static const double tol[4] = {1.640860843617186e-14, 8.63969994877129e-16, 5.095689583617303e-16, 4.498878316222226e-15};
+        static const double tol[4] = {1.6409041598430976e-14, 8.986860739784807e-16, 5.100430857046282e-16, 4.5338219824353655e-15};
         const struct rc_matrix2x2 r = rc_stiffness(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[4] = {r.m[0][0], r.m[0][1], r.m[1][0], r.m[1][1]};
         check("rc_stiffness(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 4);
     }
     {
         static const double want[1] = {130.1010215623377};
-        static const double tol[1] = {2.3730576152520193e-13};
+        static const double tol[1] = {2.3946363109826744e-13};
         const double r = rc_det_k(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_det_k(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[1] = {-512.5909424134004};
-        static const double tol[1] = {1.0561904344582675e-12};
+        static const double tol[1] = {1.0654926179564654e-12};
         const double r = rc_det_j5(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_det_j5(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[1] = {130.28109824428327};
-        static const double tol[1] = {2.293498111804456e-13};
+        static const double tol[1] = {2.313857541655647e-13};
         const double r = rc_zero_sideslip_det_k(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659);
         const double got[1] = {r};
         check("rc_zero_sideslip_det_k(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659)", got, want, tol, 1);
@@ -1082,28 +1082,28 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[9] = {-314681.8319805522, 0.0, 75179.20449165539, 0.0, -5986.813048021561, 0.0, 199.523089118097, 0.0, -2.4067756335537713};
-        static const double tol[9] = {9.461388965751303e-10, 0.0, 3.100758617639003e-10, 0.0, 2.0662338929054867e-11, 0.0, 4.0077505743979713e-13, 0.0, 2.1376461787825567e-15};
+        static const double tol[9] = {1.018359379186376e-9, 0.0, 3.1673387189858436e-10, 0.0, 2.4834657452525487e-11, 0.0, 6.234845345753859e-13, 0.0, 2.1376461787825567e-15};
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, 0.03490658503988659);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, 0.03490658503988659)", got, want, tol, 9);
     }
     {
         static const double want[5] = {6.507, 41.027491946596605, 145.0764494050307, 213.3365798185311, 512.5909424134004};
-        static const double tol[5] = {3.933742220851855e-15, 7.464727528012436e-14, 2.9200480143562796e-13, 5.065402664153849e-13, 1.0561904344582675e-12};
+        static const double tol[5] = {3.933742220851855e-15, 7.492297827980768e-14, 2.929895171568989e-13, 5.228639190639362e-13, 1.0654926179564654e-12};
         const struct rc_array5 r = rc_characteristic_coefficients(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
         check("rc_characteristic_coefficients(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 5);
     }
     {
         static const double want[1] = {442459.8244561408};
-        static const double tol[1] = {1.2705629405310434e-7};
+        static const double tol[1] = {1.2880084802832464e-7};
         const double r = rc_hurwitz_delta4(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_hurwitz_delta4(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[1] = {7.183478548253213};
-        static const double tol[1] = {1.0874588396253116e-13};
+        static const double tol[1] = {1.0985739149850108e-13};
         const double r = rc_hopf_omega_squared(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0);
         const double got[1] = {r};
         check("rc_hopf_omega_squared(&rc_aircraft_b_derivatives, 0.5, 0.03490658503988659, 0.0)", got, want, tol, 1);
@@ -1223,62 +1223,62 @@ static void self_test_aircraft_b(void)
     {
         const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_b_derivatives, 0.03490658503988659, 0.0);
         static const double want[1] = {130.1010215623377};
-        static const double tol[1] = {2.601320019528821e-13};
+        static const double tol[1] = {2.6231225976309464e-13};
         const double got[1] = {rc_prepared_det_k(&prepared, 0.5)};
         check("rc_prepared_det_k(&prepared, 0.5) with prepared = rc_prepared_new(&rc_aircraft_b_derivatives, 0.03490658503988659, 0.0)", got, want, tol, 1);
     }
     {
         static const double want[10] = {0.06127401382437423, 0.02319501480715936, 0.11158668362190052, 0.07510999506948327, -0.11654478563509404, 0.0, 0.0, 0.0, 0.0, 0.0};
-        static const double tol[10] = {2.063318542631225e-16, 7.809365511357641e-17, 3.8071069720786824e-16, 2.6768577653292643e-16, 3.8008150069470053e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
+        static const double tol[10] = {2.1996514676404061e-16, 8.276070193271551e-17, 4.048965038064693e-16, 2.8449431560756876e-16, 3.811440966136354e-16, -2.0, -2.0, -2.0, -2.0, -2.0};
         const struct rc_Trim_array2 r = rc_trim(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
         const double got[10] = {r.v[0].alpha, r.v[0].beta, r.v[0].q, r.v[0].r, r.v[0].delta_a, r.v[1].alpha, r.v[1].beta, r.v[1].q, r.v[1].r, r.v[1].delta_a};
         check("rc_trim(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 10);
     }
     {
         static const double want[5] = {0.06260483054194202, 0.08320181979024094, 0.08138627970452463, -0.11144595678592584, -0.09657002959131955};
-        static const double tol[5] = {8.537431846118585e-17, 1.3193698443928371e-16, 1.2905799832285089e-16, 2.231699272126039e-16, 3.8051341884023447e-16};
+        static const double tol[5] = {9.92753833252699e-17, 1.504114996436514e-16, 1.4712938264616015e-16, 2.2321961070430663e-16, 4.0195627290843757e-16};
         const struct rc_ZeroSideslipTrim r = rc_zero_sideslip_trim(&rc_aircraft_b_derivatives, 1.3, -0.05);
         const double got[5] = {r.alpha, r.q, r.r, r.delta_a, r.delta_r};
         check("rc_zero_sideslip_trim(&rc_aircraft_b_derivatives, 1.3, -0.05)", got, want, tol, 5);
     }
     {
         static const double want[25] = {-1.329, -1.3, 0.05, 1.0, 0.0, 1.3, -0.196, -0.1, 0.0, -1.0, 0.0, -9.99, -3.933, -0.0727, 0.27140000000000003, -23.18, 0.0, 0.0949, -0.814, 1.2337, 0.0, 5.67, 0.1432, -0.9308, -0.235};
-        static const double tol[25] = {0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 1.6142642778049776e-17, 9.254819133275306e-17, 0.0, 0.0, 2.107203300738547e-17, 0.0, 2.7393642909601113e-16, 0.0, 0.0, 6.359357485052896e-17, 2.0667911826421913e-16, 0.0};
+        static const double tol[25] = {0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 2.2204460492503132e-17, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 1.6142642778049776e-17, 9.254819133275306e-17, 0.0, 0.0, 2.107203300738547e-17, 0.0, 2.7393642909601113e-16, 0.0, 0.0, 6.359357485052896e-17, 2.0667911826421913e-16, 0.0};
         const struct rc_matrix5x5 r = rc_jacobian5(&rc_aircraft_b_derivatives, -0.1, -0.05, 1.3, -0.2, 0.1);
         const double got[25] = {r.m[0][0], r.m[0][1], r.m[0][2], r.m[0][3], r.m[0][4], r.m[1][0], r.m[1][1], r.m[1][2], r.m[1][3], r.m[1][4], r.m[2][0], r.m[2][1], r.m[2][2], r.m[2][3], r.m[2][4], r.m[3][0], r.m[3][1], r.m[3][2], r.m[3][3], r.m[3][4], r.m[4][0], r.m[4][1], r.m[4][2], r.m[4][3], r.m[4][4]};
         check("rc_jacobian5(&rc_aircraft_b_derivatives, -0.1, -0.05, 1.3, -0.2, 0.1)", got, want, tol, 25);
     }
     {
         static const double want[1] = {-3.931516800886947};
-        static const double tol[1] = {1.818902044460469e-15};
+        static const double tol[1] = {1.826159520844789e-15};
         const double r = rc_residual_denominator(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_residual_denominator(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[4] = {22.658459283120376, 1.627831737012768, -1.5421137396084081, 4.802836874048213};
-        static const double tol[4] = {1.6430314593944044e-14, 3.351125915336918e-15, 1.3272956617461445e-15, 5.645253751676922e-15};
+        static const double tol[4] = {1.6431781431348023e-14, 3.4890180744955033e-15, 1.3285504669953948e-15, 5.7182472713868316e-15};
         const struct rc_matrix2x2 r = rc_stiffness(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
         const double got[4] = {r.m[0][0], r.m[0][1], r.m[1][0], r.m[1][1]};
         check("rc_stiffness(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 4);
     }
     {
         static const double want[1] = {111.33518544150859};
-        static const double tol[1] = {2.561601372536179e-13};
+        static const double tol[1] = {2.6105050547280537e-13};
         const double r = rc_det_k(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_det_k(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[1] = {-437.71615209315485};
-        static const double tol[1] = {1.4410235007748175e-12};
+        static const double tol[1] = {1.4656277961931285e-12};
         const double r = rc_det_j5(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_det_j5(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[1] = {109.03116808767453};
-        static const double tol[1] = {2.1658396968113914e-13};
+        static const double tol[1] = {2.1995707045120545e-13};
         const double r = rc_zero_sideslip_det_k(&rc_aircraft_b_derivatives, 1.3, -0.05);
         const double got[1] = {r};
         check("rc_zero_sideslip_det_k(&rc_aircraft_b_derivatives, 1.3, -0.05)", got, want, tol, 1);
@@ -1306,28 +1306,28 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[9] = {-330642.2753089567, 0.0, 75032.19613495831, 0.0, -5961.409641328351, 0.0, 199.71880077868852, 0.0, -2.4067756335537713};
-        static const double tol[9] = {9.65652547545681e-10, 0.0, 3.109973981673467e-10, 0.0, 2.0676274972696136e-11, 0.0, 4.008648646467016e-13, 0.0, 2.1376461787825567e-15};
+        static const double tol[9] = {1.0385606673046318e-9, 0.0, 3.178365832077105e-10, 0.0, 2.484640250817832e-11, 0.0, 6.238070755369163e-13, 0.0, 2.1376461787825567e-15};
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, -0.05);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, -0.05)", got, want, tol, 9);
     }
     {
         static const double want[5] = {6.507, 44.4829740208118, 160.9082710949139, 226.36774160804893, 437.71615209315485};
-        static const double tol[5] = {3.933742220851855e-15, 8.20828494048664e-14, 3.296087008076787e-13, 6.509358339289391e-13, 1.4410235007748175e-12};
+        static const double tol[5] = {3.933742220851855e-15, 8.222296998447142e-14, 3.305517169599706e-13, 6.658722572850196e-13, 1.4656277961931285e-12};
         const struct rc_array5 r = rc_characteristic_coefficients(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
         const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
         check("rc_characteristic_coefficients(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 5);
     }
     {
         static const double want[1] = {1107486.9121202743};
-        static const double tol[1] = {1.808087088033442e-7};
+        static const double tol[1] = {1.8300463623032638e-7};
         const double r = rc_hurwitz_delta4(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_hurwitz_delta4(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
     }
     {
         static const double want[1] = {8.053828258092345};
-        static const double tol[1] = {1.2810564454727736e-13};
+        static const double tol[1] = {1.2916936861390484e-13};
         const double r = rc_hopf_omega_squared(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01);
         const double got[1] = {r};
         check("rc_hopf_omega_squared(&rc_aircraft_b_derivatives, 1.3, -0.05, 0.01)", got, want, tol, 1);
@@ -1447,7 +1447,7 @@ static void self_test_aircraft_b(void)
     {
         const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_b_derivatives, -0.05, 0.01);
         static const double want[1] = {111.33518544150859};
-        static const double tol[1] = {4.866661875874968e-13};
+        static const double tol[1] = {4.919133691636553e-13};
         const double got[1] = {rc_prepared_det_k(&prepared, 1.3)};
         check("rc_prepared_det_k(&prepared, 1.3) with prepared = rc_prepared_new(&rc_aircraft_b_derivatives, -0.05, 0.01)", got, want, tol, 1);
     }
@@ -1467,35 +1467,35 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[25] = {-1.329, -2.45, -0.1, 1.0, 0.0, 2.45, -0.196, 0.2, 0.0, -1.0, 0.0, -9.99, -3.933, -0.014539999999999999, -0.09209999999999999, -23.18, 0.0, 0.01898, -0.814, 2.32505, 0.0, 5.67, -0.2148, -1.7542, -0.235};
-        static const double tol[25] = {0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 3.228528555609955e-18, 6.887823644774471e-17, 0.0, 0.0, 4.214406601477094e-18, 0.0, 5.162648086809441e-16, 0.0, 0.0, 9.539036227579345e-17, 3.895106459594899e-16, 0.0};
+        static const double tol[25] = {0.0, 0.0, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 4.4408920985006264e-17, 0.0, 2.220446049250313e-16, 0.0, 0.0, 0.0, 3.228528555609955e-18, 6.887823644774471e-17, 0.0, 0.0, 4.214406601477094e-18, 0.0, 5.162648086809441e-16, 0.0, 0.0, 9.539036227579345e-17, 3.895106459594899e-16, 0.0};
         const struct rc_matrix5x5 r = rc_jacobian5(&rc_aircraft_b_derivatives, 0.2, 0.1, 2.45, 0.3, 0.02);
         const double got[25] = {r.m[0][0], r.m[0][1], r.m[0][2], r.m[0][3], r.m[0][4], r.m[1][0], r.m[1][1], r.m[1][2], r.m[1][3], r.m[1][4], r.m[2][0], r.m[2][1], r.m[2][2], r.m[2][3], r.m[2][4], r.m[3][0], r.m[3][1], r.m[3][2], r.m[3][3], r.m[3][4], r.m[4][0], r.m[4][1], r.m[4][2], r.m[4][3], r.m[4][4]};
         check("rc_jacobian5(&rc_aircraft_b_derivatives, 0.2, 0.1, 2.45, 0.3, 0.02)", got, want, tol, 25);
     }
     {
         static const double want[1] = {-3.9327420466240475};
-        static const double tol[1] = {1.749480687339304e-15};
+        static const double tol[1] = {1.749527636813947e-15};
         const double r = rc_residual_denominator(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_residual_denominator(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
     }
     {
         static const double want[4] = {18.563848178799546, 2.4956821019235074, -2.9037888503816838, 1.3234017870828545};
-        static const double tol[4] = {1.642125466694507e-14, 2.251970729039222e-15, 2.496063755634554e-15, 4.897266687773884e-15};
+        static const double tol[4] = {1.6421321618898393e-14, 2.2538995809499107e-15, 2.4960705600743918e-15, 4.897462720243908e-15};
         const struct rc_matrix2x2 r = rc_stiffness(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
         const double got[4] = {r.m[0][0], r.m[0][1], r.m[1][0], r.m[1][1]};
         check("rc_stiffness(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 4);
     }
     {
         static const double want[1] = {31.81436371662072};
-        static const double tol[1] = {1.551900636728606e-13};
+        static const double tol[1] = {1.5592704689370114e-13};
         const double r = rc_det_k(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_det_k(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
     }
     {
         static const double want[1] = {-125.1176858749448};
-        static const double tol[1] = {2.155903465333913e-12};
+        static const double tol[1] = {2.1655392971602967e-12};
         const double r = rc_det_j5(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_det_j5(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
@@ -1530,28 +1530,28 @@ static void self_test_aircraft_b(void)
     }
     {
         static const double want[9] = {-321062.88396664785, 0.0, 75144.76658616264, 0.0, -5977.985949682195, 0.0, 199.60354961147954, 0.0, -2.4067756335537713};
-        static const double tol[9] = {9.36884367604285e-10, 0.0, 3.078274069217446e-10, 0.0, 2.059703008145616e-11, 0.0, 4.0068572834747113e-13, 0.0, 2.1376461787825567e-15};
+        static const double tol[9] = {1.0076001918878054e-9, 0.0, 3.141167785417671e-10, 0.0, 2.4746604223635984e-11, 0.0, 6.234488029384554e-13, 0.0, 2.1376461787825567e-15};
         const struct rc_array9 r = rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, 0.0);
         const double got[9] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4], r.v[5], r.v[6], r.v[7], r.v[8]};
         check("rc_zero_sideslip_jump_polynomial(&rc_aircraft_b_derivatives, 0.0)", got, want, tol, 9);
     }
     {
         static const double want[5] = {6.507, 51.118189931717495, 196.52651300623458, 172.36700211022463, 125.1176858749448};
-        static const double tol[5] = {3.933742220851855e-15, 9.347440960975381e-14, 4.000506832963825e-13, 6.821363624682705e-13, 2.155903465333913e-12};
+        static const double tol[5] = {3.933742220851855e-15, 9.347440960975381e-14, 4.002576368047384e-13, 6.91347994390917e-13, 2.1655392971602967e-12};
         const struct rc_array5 r = rc_characteristic_coefficients(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
         const double got[5] = {r.v[0], r.v[1], r.v[2], r.v[3], r.v[4]};
         check("rc_characteristic_coefficients(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 5);
     }
     {
         static const double want[1] = {2746904.159969922};
-        static const double tol[1] = {2.4124176501617675e-7};
+        static const double tol[1] = {2.42658393182117e-7};
         const double r = rc_hurwitz_delta4(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_hurwitz_delta4(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
     }
     {
         static const double want[1] = {7.321658338036844};
-        static const double tol[1] = {1.291762485179968e-13};
+        static const double tol[1] = {1.2969859531644248e-13};
         const double r = rc_hopf_omega_squared(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02);
         const double got[1] = {r};
         check("rc_hopf_omega_squared(&rc_aircraft_b_derivatives, 2.45, 0.0, -0.02)", got, want, tol, 1);
@@ -1671,7 +1671,7 @@ static void self_test_aircraft_b(void)
     {
         const struct rc_Prepared prepared = rc_prepared_new(&rc_aircraft_b_derivatives, 0.0, -0.02);
         static const double want[1] = {31.81436371662072};
-        static const double tol[1] = {5.22004221691308e-13};
+        static const double tol[1] = {5.227412049121485e-13};
         const double got[1] = {rc_prepared_det_k(&prepared, 2.45)};
         check("rc_prepared_det_k(&prepared, 2.45) with prepared = rc_prepared_new(&rc_aircraft_b_derivatives, 0.0, -0.02)", got, want, tol, 1);
     }

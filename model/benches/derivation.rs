@@ -39,7 +39,7 @@ fn analyze_aircraft(name: &str) -> usize {
 #[divan::bench]
 fn baseline_numeric_trim_and_eigenvalues_one_p0() -> f64 {
     let k = Aircraft::a().values_f64();
-    let [c, d, e, za, yb, lp, lr, lb, _lda, mq, ma, mde, np, nr, nb, _nda, _ndr, _ldr] = k;
+    let [c, d, e, za, yb, lp, lr, lb, _lda, mq, ma, mde, np, nr, nb, _nda, _ndr, _ldr, z0, at] = k;
     let (p0, de) = (divan::black_box(1.7), 2f64.to_radians());
     let a = Matrix4::new(
         za,
@@ -59,7 +59,7 @@ fn baseline_numeric_trim_and_eigenvalues_one_p0() -> f64 {
         -d * p0,
         nr,
     );
-    let rhs = Vector4::new(0.0, 0.0, -mde * de, -np * p0);
+    let rhs = Vector4::new(-z0, -at * p0, -mde * de, -np * p0);
     let y = a.lu().solve(&rhs).unwrap();
     let (al, be, q, r) = (y[0], y[1], y[2], y[3]);
     let j = Matrix5::new(
@@ -70,7 +70,7 @@ fn baseline_numeric_trim_and_eigenvalues_one_p0() -> f64 {
         0.0, //
         p0,
         yb,
-        al,
+        al + at,
         0.0,
         -1.0, //
         0.0,

@@ -75,7 +75,7 @@ impl Default for Validity {
     }
 }
 
-/// One aircraft: a name, the 18 exact parameters, the speed for the 7th-order model, and the
+/// One aircraft: a name, the exact parameters, the speed for the 7th-order model, and the
 /// control limits and validity range the reports are checked against.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Aircraft {
@@ -94,6 +94,11 @@ pub struct Aircraft {
     /// What the loader accepted with a warning (moments of inertia that break the triangle
     /// inequalities, for instance): each a sentence naming the violation, empty when none.
     pub warnings: Vec<String>,
+    /// Whether the file gives the trim its derivatives were taken at (`z_0` or `alpha_t`, or
+    /// a body-axis file's `flight.alpha` or `flight.load_factor`): then delta_e is the
+    /// increment from that trim, 0 by default, instead of the deflection from zero lift of
+    /// the paper's aircraft (2 deg by default, Figs 7-8).
+    pub trimmed: bool,
 }
 
 /// One coordinate of the uncertainty box: the closed interval `[lo, hi]` (exact) of a parameter,
@@ -198,11 +203,22 @@ impl Aircraft {
             validity: Validity::default(),
             uncertainty: Vec::new(),
             warnings: Vec::new(),
+            trimmed: false,
+        }
+    }
+
+    /// The default elevator of every command, rad: the trim itself (0) for an aircraft whose
+    /// file gives its trim, else the paper's 2 deg from zero lift.
+    pub fn default_delta_e_rad(&self) -> f64 {
+        if self.trimmed {
+            0.0
+        } else {
+            2f64.to_radians()
         }
     }
 
     /// Builds an aircraft from decimal literals in [`Param::ALL`] order (for built-ins and tests).
-    pub fn from_decimals(name: &str, decimals: [&str; 18], speed: f64) -> Self {
+    pub fn from_decimals(name: &str, decimals: [&str; Param::COUNT], speed: f64) -> Self {
         let values = decimals
             .iter()
             .map(|s| decimal_to_rational(s).expect("built-in decimal literal"))
@@ -228,8 +244,8 @@ impl Aircraft {
     }
 
     /// All values rounded to f64, in [`Param::ALL`] order.
-    pub fn values_f64(&self) -> [f64; 18] {
-        let mut out = [0.0; 18];
+    pub fn values_f64(&self) -> [f64; Param::COUNT] {
+        let mut out = [0.0; Param::COUNT];
         for p in Param::ALL {
             out[p.index()] = self.value(p);
         }
@@ -289,7 +305,8 @@ mod tests {
     #[test]
     fn builtin_aircraft_are_table_a1() {
         // Table A.1 of the paper, written out here independently of aircraft/a.toml and b.toml
-        // (n_delta_r = -1 and the speed are the files' own choices; l_delta_r = 0).
+        // (n_delta_r = -1 and the speed are the files' own choices; l_delta_r = 0 and the trim
+        // terms z_0 = alpha_t = 0).
         let a = Aircraft::from_decimals(
             "Aircraft A",
             [
@@ -311,6 +328,8 @@ mod tests {
                 "0",
                 "-1",
                 "0",
+                "0",
+                "0",
             ],
             150.0,
         );
@@ -318,7 +337,8 @@ mod tests {
             "Aircraft B",
             [
                 "0.949", "0.716", "0.727", "-1.329", "-0.196", "-3.933", "0.126", "-9.99",
-                "-45.83", "-0.814", "-23.18", "-28.37", "0", "-0.235", "5.67", "0", "-1", "0",
+                "-45.83", "-0.814", "-23.18", "-28.37", "0", "-0.235", "5.67", "0", "-1", "0", "0",
+                "0",
             ],
             150.0,
         );

@@ -15,6 +15,23 @@
 //! `l_{\delta r} \delta r` (zero for the paper's aircraft): real data have it, and the rotation of
 //! body-axis data into principal axes produces it even when the body-axis `Cl_delta_r` is zero.
 //!
+//! Beyond Appendix A.2, the model starts where a real aircraft is: in its trimmed flight at a load
+//! factor n, not at zero lift. The paper's angles are measured from a state in which the principal
+//! axis lies on the flight path and the wing carries no lift; a real aircraft in n-g flight
+//! carries the lift `Z_0 = -n m g` and its principal axis is inclined by `alpha_t` to the flight
+//! path. With alpha, beta and the controls the increments from that trim, Euler's kinematics of a
+//! roll about the principal axis (`beta_dot = p sin(alpha_t + alpha) - r cos(alpha_t + alpha)`,
+//! linearized in the small angles as the paper does) and the lift give two terms:
+//!
+//! - `+ z_0` in the alpha equation, `z_0 = Z_0 / (m V) = -n g / V`: the trim lift keeps acting in
+//!   body axes while the aircraft rolls (the PSS model neglects gravity, as the paper does, so at
+//!   P0 = 0 the model's trim pulls up at the pitch rate `Q_0 = n g / V`; the 7th-order model's
+//!   gravity term balances it in level flight);
+//! - `+ alpha_t p` in the sideslip equation: the roll about an inclined principal axis turns angle
+//!   of attack into sideslip, the kinematic coupling that drives inertia coupling.
+//!
+//! Both are zero for the paper's aircraft A and B, whose equations are exactly those of A.2.
+//!
 //! ```
 //! use model::algebra::Poly;
 //! use model::equations::{pss, symbols};
@@ -32,8 +49,8 @@ use std::sync::OnceLock;
 /// Every symbol of the model, created once in a fixed order (which fixes every output order).
 #[derive(Debug)]
 pub struct Symbols {
-    /// The 18 parameters in [`Param::ALL`] order.
-    pub params: [Sym; 18],
+    /// The parameters in [`Param::ALL`] order.
+    pub params: [Sym; Param::COUNT],
     /// Aileron deflection, rad.
     pub delta_a: Sym,
     /// Elevator deflection, rad.
@@ -161,10 +178,10 @@ pub fn pss() -> [Poly; 5] {
     let (da, de, dr) = (v(s.delta_a), v(s.delta_e), v(s.delta_r));
     use Param::*;
     [
-        // alpha_dot = q - p beta + z_alpha alpha
-        &(&q - &(&p * &beta)) + &(&k(ZAlpha) * &alpha),
-        // beta_dot = p alpha - r + y_beta beta
-        &(&(&p * &alpha) - &r) + &(&k(YBeta) * &beta),
+        // alpha_dot = q - p beta + z_alpha alpha + z_0
+        sum(&[&q - &(&p * &beta), &k(ZAlpha) * &alpha, k(Z0)]),
+        // beta_dot = p (alpha + alpha_t) - r + y_beta beta
+        sum(&[&p * &(&alpha + &k(AlphaT)), -r.clone(), &k(YBeta) * &beta]),
         // p_dot = l_p p + l_beta beta + l_r r - E q r + l_da da + l_dr dr
         sum(&[
             &k(Lp) * &p,
@@ -235,6 +252,11 @@ mod tests {
         let f = pss();
         // Only the roll equation contains the aileron's l_delta_a; only pitch the elevator.
         assert!(f[2].contains(s.param(Param::LDeltaA)));
+        // The trim lift is a constant of the alpha equation; alpha_t multiplies the roll rate
+        // in the sideslip equation only.
+        assert_eq!(f[0].coeff(s.param(Param::Z0), 1), Poly::int(1));
+        assert_eq!(f[1].coeff(s.param(Param::AlphaT), 1), Poly::var(s.p));
+        assert!((0..5).all(|i| i == 1 || !f[i].contains(s.param(Param::AlphaT))));
         assert!(f[3].contains(s.delta_e) && !f[2].contains(s.delta_e));
         // Gyroscopic couplings are bilinear in the rates.
         assert_eq!(f[2].degree_in(&[s.q, s.r]), 2);

@@ -198,18 +198,20 @@ mod tests {
                 };
                 parsed.set(parsed.get() + 1);
                 let checks: Vec<Result<f64, Failure>> = match cli.command {
-                    Command::Analyze(a) => vec![elevator(a.delta_e_deg)],
-                    Command::Report(a) | Command::Plot(a) => vec![elevator(a.delta_e_deg)],
+                    Command::Analyze(a) => vec![elevator(a.delta_e_deg.unwrap_or(0.0))],
+                    Command::Report(a) | Command::Plot(a) => {
+                        vec![elevator(a.delta_e_deg.unwrap_or(0.0))]
+                    }
                     Command::Continue(a) => vec![
-                        elevator(a.delta_e_deg),
+                        elevator(a.delta_e_deg.unwrap_or(0.0)),
                         finite_angle("min", a.min_deg),
                         finite_angle("max", a.max_deg),
                     ],
                     Command::Simulate(a) => vec![
-                        elevator(a.delta_e_deg),
+                        elevator(a.delta_e_deg.unwrap_or(0.0)),
                         finite_angle("delta_a", a.delta_a_deg),
                     ],
-                    Command::Clear(a) => vec![elevator(a.delta_e_deg)],
+                    Command::Clear(a) => vec![elevator(a.delta_e_deg.unwrap_or(0.0))],
                     Command::Emit(_)
                     | Command::Convert(_)
                     | Command::Envelope(_)

@@ -15,7 +15,9 @@
 //!   is identical to A.1 (checked against `gravity_and_attitude` by a unit test).
 //! * Start: the closed-form trim with delta_a = 0 ([`Trims::trim_at_zero_aileron`]), with the
 //!   given elevator and the rudder of the run; the 7th-order model starts wings level, phi =
-//!   theta = 0. The aileron is a step at t = 0 or a ramp from t = 0.
+//!   theta = 0. For an aircraft whose file gives its trim (an import), the 7th-order model
+//!   starts instead on its own steady path with gravity, wings level and the path horizontal
+//!   ([`flight_start`]): at 1 g that is the trimmed level flight itself. The aileron is a step at t = 0 or a ramp from t = 0.
 //! * Integrator: ode_solvers' Dopri5 (explicit Runge-Kutta 5(4), Dormand-Prince) with its
 //!   continuous (4th-order dense) output, sampled every `dt`; default tolerances
 //!   rtol = 1e-8, atol = 1e-10 ([`Tolerances::default`]). Ramps are integrated in two segments so
@@ -46,6 +48,7 @@
 // threads (`parallel.rs`) and the jump sweep (`sweep.rs`).
 mod attitude;
 mod error;
+mod flight_start;
 mod history;
 mod integrate;
 mod parallel;
@@ -55,6 +58,7 @@ mod sweep;
 mod trim;
 
 pub use error::SimError;
+pub use flight_start::flight_start;
 pub use history::{RunStats, Steady, TimeHistory};
 pub(crate) use parallel::parallel_map;
 pub use parallel::THREADS;

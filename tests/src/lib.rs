@@ -11,9 +11,9 @@ use nalgebra::{Matrix4, Matrix5, Vector4};
 pub mod reference;
 
 /// Parameter values in the order C, D, E, z_alpha, y_beta, l_p, l_r, l_beta, l_delta_a, m_q,
-/// m_alpha, m_delta_e, n_p, n_r, n_beta, n_delta_a, n_delta_r, l_delta_r (the order of
-/// `model::aircraft::Param::ALL`).
-pub type Params = [f64; 18];
+/// m_alpha, m_delta_e, n_p, n_r, n_beta, n_delta_a, n_delta_r, l_delta_r, z_0, alpha_t (the
+/// order of `model::aircraft::Param::ALL`).
+pub type Params = [f64; 20];
 
 /// Named access to [`Params`].
 #[allow(missing_docs)]
@@ -36,16 +36,20 @@ pub mod ix {
     pub const NDA: usize = 15;
     pub const NDR: usize = 16;
     pub const LDR: usize = 17;
+    pub const Z0: usize = 18;
+    pub const AT: usize = 19;
 }
 
-/// Appendix A.2 by hand: d/dt [alpha, beta, p, q, r] for controls u = [delta_a, delta_e, delta_r].
+/// Appendix A.2 by hand: d/dt [alpha, beta, p, q, r] for controls u = [delta_a, delta_e, delta_r],
+/// about a trim with lift `z_0` whose principal axis meets the flight path at `alpha_t` (the
+/// kinematics `beta_dot = p sin(alpha_t + alpha) - r cos(alpha_t + alpha)` in small angles).
 pub fn pss_rhs(k: &Params, x: &[f64; 5], u: &[f64; 3]) -> [f64; 5] {
     use ix::*;
     let [a, b, p, q, r] = *x;
     let [da, de, dr] = *u;
     [
-        q - p * b + k[ZA] * a,
-        p * a - r + k[YB] * b,
+        q - p * b + k[ZA] * a + k[Z0],
+        p * (k[AT] + a) - r + k[YB] * b,
         k[LP] * p + k[LB] * b + k[LR] * r - k[E] * q * r + k[LDA] * da + k[LDR] * dr,
         k[MQ] * q + k[MA] * a + k[C] * p * r + k[MDE] * de,
         k[NR] * r + k[NB] * b + k[NP] * p - k[D] * p * q + k[NDR] * dr + k[NDA] * da,
@@ -73,6 +77,8 @@ pub fn generated_derivatives(k: &Params) -> roll_criterion::Derivatives {
         n_delta_a: k[ix::NDA],
         n_delta_r: k[ix::NDR],
         l_delta_r: k[ix::LDR],
+        z_0: k[ix::Z0],
+        alpha_t: k[ix::AT],
     }
 }
 
@@ -208,7 +214,7 @@ pub fn real_eigenvalues(j: &Matrix5<f64>) -> Vec<f64> {
 /// it so that nothing is tuned to the paper's aircraft A and B.
 pub fn random_params(rng: &mut Lcg) -> Params {
     use ix::*;
-    let mut k = [0.0; 18];
+    let mut k = [0.0; 20];
     let (ix_, iy, iz) = (1.0, rng.range(2.0, 8.0), rng.range(2.0, 9.0));
     k[C] = (iz - ix_) / iy;
     k[D] = (iy - ix_) / iz;
@@ -227,6 +233,15 @@ pub fn random_params(rng: &mut Lcg) -> Params {
     k[NB] = rng.range(1.0, 8.0);
     k[NDA] = 0.0;
     k[NDR] = rng.range(-5.0, -0.5);
+    k
+}
+
+/// [`random_params`] linearized about a random trim: lift of 0 to 2 g at 100 to 250 m/s
+/// (`z_0 = -n g / V`) and the principal axis -0.05 to 0.15 rad above the flight path.
+pub fn random_trimmed_params(rng: &mut Lcg) -> Params {
+    let mut k = random_params(rng);
+    k[ix::Z0] = -rng.range(0.0, 2.0) * 9.80665 / rng.range(100.0, 250.0);
+    k[ix::AT] = rng.range(-0.05, 0.15);
     k
 }
 
@@ -251,8 +266,12 @@ impl Lcg {
 
 /// det K by CasADi's generated C (`tests/oracle/casadi_det_k.c`, written by
 /// `tests/oracle/casadi_det_k.py` from the model typed in there): `None` when the build had no C
-/// compiler (`tests/build.rs`).
+/// compiler (`tests/build.rs`). CasADi's model is Appendix A.2 as printed, without the trim
+/// terms: `None` too for data with `z_0` or `alpha_t`.
 pub fn casadi_det_k(k: &Params, p0: f64, de: f64, dr: f64) -> Option<f64> {
+    if k[ix::Z0] != 0.0 || k[ix::AT] != 0.0 {
+        return None;
+    }
     casadi::det_k(k, p0, de, dr)
 }
 
@@ -276,7 +295,7 @@ mod casadi {
         let mut out = f64::NAN;
         let args = [&p0 as *const f64, &de, &dr, k.as_ptr()];
         let res = [&mut out as *mut f64];
-        // SAFETY: the four inputs point to 1, 1, 1 and 18 doubles as the generated function's
+        // SAFETY: the four inputs point to 1, 1, 1 and (at least) 18 doubles as the generated function's
         // sparsity says, the output to one double; it needs no work arrays (sizes 0).
         let status = unsafe {
             casadi_det_k(

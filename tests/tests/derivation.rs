@@ -6,7 +6,9 @@ use model::algebra::{Poly, Sym, Q};
 use model::analysis::analyze;
 use model::derivation::Derivation;
 use model::equations::symbols;
-use paper_tests::{fd_jacobian, pss_rhs, random_params, residual_denominator, trim, Lcg, Params};
+use paper_tests::{
+    fd_jacobian, pss_rhs, random_trimmed_params, residual_denominator, trim, Lcg, Params,
+};
 use std::sync::OnceLock;
 
 fn parametric() -> &'static Derivation {
@@ -62,7 +64,7 @@ fn symbolic_linearization_equals_central_difference_jacobian() {
     let d = parametric();
     let mut rng = Lcg(7);
     for _ in 0..200 {
-        let k = random_params(&mut rng);
+        let k = random_trimmed_params(&mut rng);
         let x: [f64; 5] = std::array::from_fn(|_| rng.range(-1.0, 1.0));
         let u = [
             rng.range(-0.2, 0.2),
@@ -91,7 +93,7 @@ fn identity_holds_numerically_at_random_points() {
     let d = parametric();
     let mut rng = Lcg(11);
     for _ in 0..200 {
-        let k = random_params(&mut rng);
+        let k = random_trimmed_params(&mut rng);
         let x: [f64; 5] = std::array::from_fn(|_| rng.range(-1.0, 1.0));
         let f = lookup_state(&k, &x);
         let j = fd_jacobian(&k, &x, &[0.0; 3]);
@@ -117,13 +119,13 @@ fn trim_formulas_solve_the_pss_equations() {
     let d = parametric();
     let mut rng = Lcg(3);
     for _ in 0..200 {
-        let k = random_params(&mut rng);
+        let k = random_trimmed_params(&mut rng);
         let (p0, de, dr) = (
             rng.range(0.0, 6.0),
             rng.range(-0.1, 0.1),
             rng.range(-0.1, 0.1),
         );
-        // random_params has no aileron yaw, so the trim's delta_a term vanishes whatever
+        // random_trimmed_params has no aileron yaw, so the trim's delta_a term vanishes whatever
         // delta_a is (tests/tests/aileron_yaw.rs checks the trims with aileron yaw).
         let f = lookup(
             &k,
@@ -235,7 +237,7 @@ fn analyze_matches_an_independent_numeric_scan_on_random_aircraft() {
     let mut rng = Lcg(2024);
     let mut total = 0;
     for case in 0..40 {
-        let k = random_params(&mut rng);
+        let k = random_trimmed_params(&mut rng);
         let values = k
             .iter()
             .map(|v| model::aircraft::f64_to_rational(*v).unwrap())
@@ -279,7 +281,7 @@ fn analysis_polynomials_are_proportional_to_the_specialised_derivation() {
     let mut rng = Lcg(77);
     let mut aircraft = vec![Aircraft::a(), Aircraft::b()];
     for i in 0..3 {
-        let k = random_params(&mut rng);
+        let k = random_trimmed_params(&mut rng);
         let values = k
             .iter()
             .map(|v| model::aircraft::f64_to_rational(*v).unwrap())

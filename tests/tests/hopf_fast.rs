@@ -206,7 +206,8 @@ fn trim_factor_powers_divide_the_cleared_characteristic_coefficients() {
     }
 }
 
-/// At `delta_e = 0` the zero-sideslip trim is the origin: every numerator of Eq. 35 is a
+/// At `delta_e = 0` in the paper's case (no trim lift `z_0`, the principal axis on the path,
+/// `alpha_t = 0`) the zero-sideslip trim is the origin: every numerator of Eq. 35 is then a
 /// multiple of `delta_e`, so step 8 makes the zero-sideslip jump and pole polynomials
 /// `det(A1)^2 f(0)` and each cleared characteristic coefficient `C_k = det(A1)^k c_k(0)`. The
 /// certified route divides those whole powers out (their double roots cannot be isolated);
@@ -215,9 +216,21 @@ fn trim_factor_powers_divide_the_cleared_characteristic_coefficients() {
 #[test]
 fn at_zero_elevator_the_zero_sideslip_factors_divide_exactly() {
     let s = symbols();
+    let papers_case = [
+        (s.param(Param::Z0), model::algebra::Q::ZERO),
+        (s.param(Param::AlphaT), model::algebra::Q::ZERO),
+    ];
     for (i, num) in parametric().zs_trim.iter().enumerate() {
+        // With a trim lift or an inclined principal axis the origin is no trim: the numerators
+        // are not multiples of delta_e, and the certified route takes its general path.
         assert!(
-            num.div_var_pow(s.delta_e, 1).is_some(),
+            num.div_var_pow(s.delta_e, 1).is_none(),
+            "numerator {i} with the trim terms"
+        );
+        assert!(
+            num.subs_values(&papers_case)
+                .div_var_pow(s.delta_e, 1)
+                .is_some(),
             "zero-sideslip trim numerator {i} is a multiple of delta_e"
         );
     }

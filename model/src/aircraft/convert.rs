@@ -160,6 +160,11 @@ pub struct BodyAxisInput {
     pub ixz: BigRational,
     /// The coefficients in [`Coefficient::ALL`] order, per rad.
     pub coefficients: Vec<BigRational>,
+    /// The body-axis angle of attack of the trim the coefficients were taken at, rad; `None`
+    /// puts the principal axis on the flight path (the paper's convention).
+    pub trim_alpha: Option<BigRational>,
+    /// The load factor n of that trim (lift = n times weight); 0 for a zero-lift reference.
+    pub load_factor: BigRational,
 }
 
 impl BodyAxisInput {
@@ -174,7 +179,7 @@ impl BodyAxisInput {
 pub struct Converted {
     /// Principal moments ix', iy, iz', kg m^2.
     pub principal: [BigRational; 3],
-    /// The derivatives in [`Param::ALL`] order after C, D, E (z_alpha ... l_delta_r).
+    /// The derivatives in [`Param::ALL`] order after C, D, E (z_alpha ... alpha_t).
     pub derivatives: Vec<BigRational>,
     /// Angle of the principal x axis below the body x axis, deg (positive: x_p points forward
     /// and down, as for the usual positive ixz with iz > ix).
@@ -196,7 +201,7 @@ impl Converted {
         rational_to_f64(&self.speed)
     }
 
-    /// The value of one derivative (z_alpha ... l_delta_r).
+    /// The value of one derivative (z_alpha ... alpha_t).
     pub fn derivative(&self, p: Param) -> &BigRational {
         &self.derivatives[p.index() - 3]
     }
@@ -219,6 +224,21 @@ fn tilt(ix: f64, iz: f64, ixz: f64) -> f64 {
     }
 }
 
+/// The trim's lift term `z_0 = -n g / V` (exact, with the standard gravity 9.80665 m/s^2) and
+/// the angle of attack of the principal axis `alpha_t = alpha - eps` (the principal x axis lies
+/// `eps` below the body x axis, so the flight path is `alpha - eps` below it); `alpha_t` is 0 when
+/// the file gives no trim alpha.
+fn trim_terms(input: &BodyAxisInput, eps: &f64) -> (BigRational, BigRational) {
+    let g = BigRational::new(980_665.into(), 100_000.into());
+    let z_0 = -(&input.load_factor * g / &input.speed);
+    let alpha_t = match &input.trim_alpha {
+        None => BigRational::zero(),
+        Some(a) if *eps == 0.0 => a.clone(),
+        Some(a) => a - q(*eps),
+    };
+    (z_0, alpha_t)
+}
+
 /// Converts body-axis coefficients to principal-axis derivatives (see the module docs).
 pub fn convert(input: &BodyAxisInput) -> Converted {
     convert_rounding(input, true)
@@ -230,6 +250,8 @@ pub fn convert(input: &BodyAxisInput) -> Converted {
 /// derivatives `c` does not move are left out.
 pub fn slopes(input: &BodyAxisInput, c: Coefficient) -> Vec<(Param, BigRational)> {
     let mut unit = input.clone();
+    unit.trim_alpha = None;
+    unit.load_factor = BigRational::zero();
     for (i, x) in unit.coefficients.iter_mut().enumerate() {
         *x = if i == c as usize {
             BigRational::one()
@@ -333,7 +355,8 @@ fn convert_rounding(input: &BodyAxisInput, round: bool) -> Converted {
             x / i
         }
     };
-    let mut derivatives = Vec::with_capacity(15);
+    let (z_0, alpha_t) = trim_terms(input, &eps);
+    let mut derivatives = Vec::with_capacity(Param::COUNT - 3);
     for p in Param::ALL.iter().skip(3) {
         derivatives.push(match p {
             Param::ZAlpha => z_alpha.clone(),
@@ -351,6 +374,8 @@ fn convert_rounding(input: &BodyAxisInput, round: bool) -> Converted {
             Param::NBeta => by(n_beta.clone(), &iz_p),
             Param::NDeltaA => by(n_da.clone(), &iz_p),
             Param::NDeltaR => by(n_dr.clone(), &iz_p),
+            Param::Z0 => z_0.clone(),
+            Param::AlphaT => alpha_t.clone(),
             Param::C | Param::D | Param::E => continue,
         });
     }

@@ -1,7 +1,10 @@
-//! The eighteen parameters of the PSS model (Appendix A.2): the inertia coefficients C, D, E and
-//! the fifteen dimensional derivatives, with their TOML keys, units and symbols.
+//! The twenty parameters of the PSS model (Appendix A.2): the inertia coefficients C, D, E, the
+//! fifteen dimensional derivatives and the two quantities of the trim the model is linearized
+//! about (its lift and the angle of attack of the principal axis), with their TOML keys, units and
+//! symbols.
 
-/// The eighteen parameters of the PSS model (Appendix A.2), in the paper's notation.
+/// The twenty parameters of the PSS model (Appendix A.2, extended by the trim), in the paper's
+/// notation.
 ///
 /// The order is the order of the fields of the generated `Derivatives` struct and of the
 /// TOML keys in error messages; it never changes silently.
@@ -43,11 +46,22 @@ pub enum Param {
     NDeltaR,
     /// l_delta_r, 1/s^2 (roll due to rudder; optional, default 0).
     LDeltaR,
+    /// z_0, rad/s: the lift of the trim the derivatives are taken at, `Z_0 / (m V) = -n g / V`
+    /// for a load factor n (optional, default 0: the paper's aircraft, whose angles are measured
+    /// from zero lift).
+    Z0,
+    /// alpha_t, rad: the angle of attack of the principal x-axis at that trim, which rolling
+    /// about the principal axis turns into sideslip (optional, default 0: the paper's aircraft,
+    /// whose principal axis lies on the flight path at zero lift).
+    AlphaT,
 }
 
 impl Param {
+    /// How many parameters there are.
+    pub const COUNT: usize = 20;
+
     /// All parameters in their fixed order.
-    pub const ALL: [Param; 18] = [
+    pub const ALL: [Param; Param::COUNT] = [
         Param::C,
         Param::D,
         Param::E,
@@ -66,6 +80,8 @@ impl Param {
         Param::NDeltaA,
         Param::NDeltaR,
         Param::LDeltaR,
+        Param::Z0,
+        Param::AlphaT,
     ];
 
     /// Snake-case name: the TOML key (`[derivatives]` or `[inertia]`) and the Rust field name.
@@ -89,6 +105,8 @@ impl Param {
             Param::NDeltaA => "n_delta_a",
             Param::NDeltaR => "n_delta_r",
             Param::LDeltaR => "l_delta_r",
+            Param::Z0 => "z_0",
+            Param::AlphaT => "alpha_t",
         }
     }
 
@@ -113,6 +131,8 @@ impl Param {
             Param::NDeltaA => "n_{\\delta a}",
             Param::NDeltaR => "n_{\\delta r}",
             Param::LDeltaR => "l_{\\delta r}",
+            Param::Z0 => "z_0",
+            Param::AlphaT => "\\alpha_t",
         }
     }
 
@@ -122,6 +142,8 @@ impl Param {
             Param::C | Param::D | Param::E => "1",
             Param::ZAlpha | Param::YBeta | Param::Lp | Param::Lr | Param::Mq | Param::Np => "1/s",
             Param::Nr => "1/s",
+            Param::Z0 => "rad/s",
+            Param::AlphaT => "rad",
             _ => "1/s^2",
         }
     }

@@ -341,7 +341,7 @@ pub fn critical(v: &Values, bound: f64, width: f64) -> Result<Option<(f64, f64)>
 /// first need: a root the tape's enclosures cannot pin down, or data the tape does not cover,
 /// or a certificate that fails on the tape's enclosures, when [`critical`] answers on them).
 pub fn critical_of(
-    data: &[I; 18],
+    data: &[I; crate::aircraft::Param::COUNT],
     delta_e_rad: f64,
     lift: &dyn Fn() -> Values,
     bound: f64,

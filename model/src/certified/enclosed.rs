@@ -89,7 +89,7 @@ impl EnclosedPolys {
     /// enclosure wider than an ulp, a magnitude outside its gate); [`EnclosedPolys::new`]
     /// answers those.
     pub fn by_tape(
-        params: &[I; 18],
+        params: &[I; Param::COUNT],
         delta_e_rad: f64,
     ) -> Option<Result<EnclosedPolys, Uncertified>> {
         let yaw = Param::ALL.iter().position(|p| *p == Param::NDeltaA)?;

@@ -13,7 +13,7 @@ use crate::interval::I;
 /// What values are lifted from: the data (in [`Param::ALL`] order) and the controls.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Inputs<T> {
-    pub(super) params: [T; 18],
+    pub(super) params: [T; Param::COUNT],
     pub(super) delta_e_rad: f64,
     pub(super) delta_r_rad: f64,
 }
@@ -28,7 +28,7 @@ impl<T: Num> Inputs<T> {
 /// The values of the model's symbols: the data `params` (in [`Param::ALL`] order) and the
 /// controls.
 pub(super) fn by_symbol<T: Num>(
-    params: [T; 18],
+    params: [T; Param::COUNT],
     delta_e_rad: f64,
     delta_r_rad: f64,
 ) -> [Option<T>; MAX_SYMS] {

@@ -309,13 +309,14 @@ mod tests {
 
         /// The soundness of the bound, on the criterion program: for random aircraft around A
         /// or B (every parameter moved by up to 30 % and written with five significant digits,
-        /// no aileron yaw, a random elevator), every output enclosure holds the program's exact
+        /// a random trim lift and principal-axis angle of attack, no aileron yaw, a random
+        /// elevator), every output enclosure holds the program's exact
         /// value at the exact data, computed here in rationals. (How tight the enclosures are
         /// is `certified::enclosed::tests::the_tape_encloses_what_the_general_route_encloses`.)
         #[test]
         fn enclosures_hold_the_exact_values_of_the_criterion_program(
             on_b in proptest::bool::ANY,
-            scales in proptest::array::uniform18(0.7f64..1.3),
+            scales in proptest::array::uniform20(0.7f64..1.3),
             de in -0.1f64..0.1,
         ) {
             let p = crate::program::criterion::criterion_program(crate::specialise::parametric());
@@ -327,6 +328,10 @@ mod tests {
                 .zip(scales)
                 .map(|(q, s)| match q {
                     Param::NDeltaA => BigRational::from_integer(0.into()),
+                    // A trim of 0.6 to 1.3 g at 100 m/s, the principal axis up to 0.06 rad
+                    // above the flight path.
+                    Param::Z0 => decimal(-0.098 * s),
+                    Param::AlphaT => decimal(0.1 * (s - 0.7)),
                     _ => decimal(base.value(*q) * s),
                 })
                 .collect();

@@ -25,14 +25,14 @@ impl Values<I> {
 
     /// The exact data of `aircraft` in [`Param::ALL`] order, each bracketed by the two nearest
     /// doubles (exact ones stay points).
-    pub fn data(aircraft: &Aircraft) -> [I; 18] {
+    pub fn data(aircraft: &Aircraft) -> [I; Param::COUNT] {
         std::array::from_fn(|i| I::from_q(aircraft.exact(Param::ALL[i])))
     }
 }
 
 impl<T: Num> Values<T> {
     /// Enclosures `params` (in [`Param::ALL`] order) of the data.
-    pub fn new(params: [T; 18], delta_e_rad: f64, delta_r_rad: f64) -> Values<T> {
+    pub fn new(params: [T; Param::COUNT], delta_e_rad: f64, delta_r_rad: f64) -> Values<T> {
         let inputs = Inputs {
             params,
             delta_e_rad,
@@ -61,7 +61,12 @@ pub struct Sampler {
 impl Sampler {
     /// The data `params` (in [`Param::ALL`] order; the entries of `varying` are replaced by
     /// each sample's) at elevator `delta_e_rad` and rudder `delta_r_rad`.
-    pub fn new(params: [I; 18], varying: &[Param], delta_e_rad: f64, delta_r_rad: f64) -> Sampler {
+    pub fn new(
+        params: [I; Param::COUNT],
+        varying: &[Param],
+        delta_e_rad: f64,
+        delta_r_rad: f64,
+    ) -> Sampler {
         let s = symbols();
         let inputs = Inputs {
             params,

@@ -91,7 +91,7 @@ pub struct BoxPolys {
     /// The coordinates of the box, in order.
     coordinates: Vec<Coordinate>,
     /// Enclosures of every parameter's fixed value (the uncertain ones are replaced by the box).
-    fixed: [I; 18],
+    fixed: [I; Param::COUNT],
     delta_e_rad: f64,
     /// Whether the trim at P0 = 0 is delta_a = 0 for every aircraft of the box (exactly).
     pub symmetric: bool,
@@ -185,7 +185,7 @@ impl BoxPolys {
     pub fn of_box(aircraft: &Aircraft, params: &[Uncertain], delta_e_rad: f64) -> BoxPolys {
         let coordinates: Vec<Coordinate> = params.iter().map(Coordinate::of).collect();
         let mut b = BoxPolys::with(aircraft, coordinates, delta_e_rad);
-        let mut largest = [0.0f64; 18];
+        let mut largest = [0.0f64; Param::COUNT];
         for (u, c) in params.iter().zip(&b.coordinates) {
             let Coordinate::Coefficient { nominal, moves } = c else {
                 continue;
@@ -259,7 +259,7 @@ impl BoxPolys {
     /// again, as [`BoxPolys::lift_part`] lifted it first.
     pub fn lift_on_side(&self, theta: &[I], side: Option<f64>) -> LiftedBox {
         let n = self.coordinates.len() + 1;
-        let mut over: [Dual; 18] = std::array::from_fn(|i| Dual::constant(self.fixed[i]));
+        let mut over: [Dual; Param::COUNT] = std::array::from_fn(|i| Dual::constant(self.fixed[i]));
         let mut at = self.fixed;
         let centre: Vec<f64> = theta.iter().map(|t| t.mid()).collect();
         for (k, (coordinate, x)) in self.coordinates.iter().zip(theta).enumerate() {

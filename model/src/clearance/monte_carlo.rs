@@ -113,7 +113,7 @@ struct SampledBox {
     /// For each coordinate the indices in `varying` of those it moves.
     slots: Vec<Vec<usize>>,
     /// The data of the aircraft without its box.
-    fixed: [I; 18],
+    fixed: [I; Param::COUNT],
     sampler: Sampler,
     delta_e_rad: f64,
     /// The aileron range the primary branch is followed to, rad.

@@ -6,7 +6,7 @@
 use super::failure::{named, stdout_error, write_file, Failure, FAILED};
 use super::numbers::fixed;
 use super::options::{
-    delta_e_list, elevator, finite_angle, load_aircraft, AnalyzeArgs, ClearArgs, ContinueArgs,
+    delta_e_list, elevator_of, finite_angle, load_aircraft, AnalyzeArgs, ClearArgs, ContinueArgs,
     ConvertArgs, EmitArgs, FiguresArgs, SimulateArgs,
 };
 use super::progress::{progress_bar, say_how_long, set};
@@ -31,7 +31,7 @@ macro_rules! say {
 /// of the exact path (the certified route's with `--certified`).
 pub fn analyze_command(a: &AnalyzeArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
     let ac = load_aircraft(&a.aircraft)?;
-    let delta_e = elevator(a.delta_e_deg)?;
+    let delta_e = elevator_of(&ac, a.delta_e_deg)?;
     let result = if a.exact || (a.json && !a.certified) {
         analyze(&ac, delta_e)
     } else {
@@ -65,7 +65,7 @@ pub fn continue_command(a: &ContinueArgs, out: &mut dyn Write) -> Result<ExitCod
             .map_err(|e| e.to_string())?,
         min,
         max,
-        delta_e: elevator(a.delta_e_deg)?,
+        delta_e: elevator_of(&ac, a.delta_e_deg)?,
         zero_sideslip: a.zero_sideslip,
         ..Settings::default()
     };
@@ -99,7 +99,7 @@ pub fn report_command(
     let dir = &a.out;
     let settings = ReportSettings {
         summary,
-        ..ReportSettings::new(elevator(a.delta_e_deg)?)
+        ..ReportSettings::new(elevator_of(&ac, a.delta_e_deg)?)
     };
     let bar = progress_bar(if summary { "report" } else { "plot" });
     let result = report(&ac, dir, &settings, &mut |f| set(&bar, f));
@@ -172,7 +172,7 @@ pub fn simulate_command(a: &SimulateArgs, out: &mut dyn Write) -> Result<ExitCod
         t_end,
         ..SimSettings::step(
             model,
-            elevator(a.delta_e_deg)?,
+            elevator_of(&ac, a.delta_e_deg)?,
             finite_angle("delta_a", delta_a_deg)?,
         )
     };
@@ -215,7 +215,7 @@ pub fn clear_command(a: &ClearArgs, out: &mut dyn Write) -> Result<ExitCode, Fai
     let ac = load_aircraft(&a.aircraft)?;
     let settings: Vec<f64> = match &a.delta_e_range {
         Some(r) => delta_e_list(r)?,
-        None => vec![elevator(a.delta_e_deg)?],
+        None => vec![elevator_of(&ac, a.delta_e_deg)?],
     };
     let (samples, tolerance) = (a.samples, a.tolerance);
     if !(tolerance.is_finite() && tolerance > 0.0) {

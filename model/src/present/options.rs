@@ -13,9 +13,10 @@ use std::path::{Path, PathBuf};
 pub struct AnalyzeArgs {
     /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
     pub aircraft: String,
-    /// Elevator deflection in degrees.
-    #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
-    pub delta_e_deg: f64,
+    /// Elevator in degrees: the increment from the trim for an aircraft whose file gives its
+    /// trim (an import; default 0), else the deflection from zero lift (default 2, Figs 7-8).
+    #[arg(long, allow_hyphen_values = true)]
+    pub delta_e_deg: Option<f64>,
     /// Print JSON instead of a table. JSON carries every digit of every number, so it comes
     /// from the exact path (correctly rounded roots) unless the table's route is asked for
     /// with --certified.
@@ -46,9 +47,11 @@ pub struct ContinueArgs {
     /// Upper end of the parameter range, deg (default 0.8 rad).
     #[arg(long, default_value_t = 45.8366, allow_hyphen_values = true)]
     pub max_deg: f64,
-    /// Elevator deflection in degrees (when it is not the parameter).
-    #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
-    pub delta_e_deg: f64,
+    /// Elevator in degrees when it is not the parameter: the increment from the trim for an
+    /// aircraft whose file gives its trim (an import; default 0), else the deflection from zero
+    /// lift (default 2, Figs 7-8).
+    #[arg(long, allow_hyphen_values = true)]
+    pub delta_e_deg: Option<f64>,
     /// Zero-sideslip manoeuvre by extended bifurcation analysis (section V.B, Fig. 9).
     #[arg(long)]
     pub zero_sideslip: bool,
@@ -68,9 +71,10 @@ pub struct FiguresArgs {
     /// Output folder DIR (created if needed).
     #[arg(long, value_name = "DIR")]
     pub out: PathBuf,
-    /// Elevator deflection in degrees.
-    #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
-    pub delta_e_deg: f64,
+    /// Elevator in degrees: the increment from the trim for an aircraft whose file gives its
+    /// trim (an import; default 0), else the deflection from zero lift (default 2, Figs 7-8).
+    #[arg(long, allow_hyphen_values = true)]
+    pub delta_e_deg: Option<f64>,
 }
 
 /// Options of `simulate`.
@@ -81,9 +85,10 @@ pub struct SimulateArgs {
     /// Aileron step, degrees.
     #[arg(long, allow_hyphen_values = true)]
     pub delta_a_deg: f64,
-    /// Elevator deflection in degrees.
-    #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
-    pub delta_e_deg: f64,
+    /// Elevator in degrees: the increment from the trim for an aircraft whose file gives its
+    /// trim (an import; default 0), else the deflection from zero lift (default 2, Figs 7-8).
+    #[arg(long, allow_hyphen_values = true)]
+    pub delta_e_deg: Option<f64>,
     /// Length of the run, s.
     #[arg(long, default_value_t = 20.0, allow_hyphen_values = true)]
     pub t_end: f64,
@@ -103,14 +108,10 @@ pub struct SimulateArgs {
 pub struct ClearArgs {
     /// Path of an aircraft TOML file with an `[uncertainty]` table (or `A`/`B`: a point).
     pub aircraft: String,
-    /// Elevator deflection in degrees.
-    #[arg(
-        long,
-        default_value_t = 2.0,
-        allow_hyphen_values = true,
-        conflicts_with = "delta_e_range"
-    )]
-    pub delta_e_deg: f64,
+    /// Elevator in degrees: the increment from the trim for an aircraft whose file gives its
+    /// trim (an import; default 0), else the deflection from zero lift (default 2, Figs 7-8).
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "delta_e_range")]
+    pub delta_e_deg: Option<f64>,
     /// A range of elevator deflections `A:B:STEP` in degrees (a clearance map).
     #[arg(long, value_name = "A:B:STEP", allow_hyphen_values = true)]
     pub delta_e_range: Option<String>,
@@ -184,6 +185,12 @@ pub struct EmitArgs {
     /// Workspace root (default: the workspace this binary was built from).
     #[arg(long, value_name = "DIR")]
     pub root: Option<PathBuf>,
+}
+
+/// The elevator of a command on `ac`, rad: `--delta-e-deg` when given, else the aircraft's
+/// default ([`Aircraft::default_delta_e_rad`]).
+pub fn elevator_of(ac: &Aircraft, deg: Option<f64>) -> Result<f64, Failure> {
+    deg.map_or(Ok(ac.default_delta_e_rad()), elevator)
 }
 
 /// An elevator deflection in degrees converted to rad, or an error in degrees.

@@ -19,6 +19,9 @@ pub struct Simulator {
     pub(super) speed: f64,
     /// |delta_r| limit of the aircraft's `[limits]`, rad: the schedule saturates there.
     rudder_limit: Option<f64>,
+    /// The principal axis' angle of attack at the trim of an aircraft whose file gives it: the
+    /// 7th-order model then starts on its own flight path ([`super::flight_start`]).
+    trim_alpha_t: Option<f64>,
 }
 
 impl Simulator {
@@ -38,6 +41,9 @@ impl Simulator {
             schedule,
             speed: aircraft.speed,
             rudder_limit: aircraft.limits.rudder_deg.map(f64::to_radians),
+            trim_alpha_t: aircraft
+                .trimmed
+                .then(|| aircraft.value(crate::aircraft::Param::AlphaT)),
         })
     }
 
@@ -99,6 +105,25 @@ impl Simulator {
         [side(lo), side(hi)]
     }
 
+    /// The 7th-order model's start and pitch attitude: the PSS trim `pss` at theta = 0 for the
+    /// paper's aircraft, the aircraft's own steady flight for one whose file gives its trim.
+    fn seventh_order_start(
+        &self,
+        pss: [f64; 5],
+        delta_r: f64,
+    ) -> Result<([f64; 5], f64), SimError> {
+        let Some(alpha_t) = self.trim_alpha_t else {
+            return Ok((pss, 0.0));
+        };
+        let controls = crate::pss_model::Controls {
+            delta_a: 0.0,
+            delta_e: self.trims.delta_e(),
+            delta_r,
+        };
+        super::flight_start(self.trims.model(), &controls, self.speed, alpha_t)
+            .ok_or(SimError::NoTrim { delta_r })
+    }
+
     /// Runs one simulation.
     pub fn run(&self, s: &SimSettings) -> Result<TimeHistory, SimError> {
         validate(s)?;
@@ -138,9 +163,11 @@ impl Simulator {
                     inputs: &inputs,
                     speed: self.speed,
                 };
+                let (x0, theta) = self.seventh_order_start(start.x, delta_r0)?;
                 let mut y0 = SVector::<f64, 8>::zeros();
-                y0.fixed_rows_mut::<5>(0).copy_from_slice(&start.x);
-                y0[7] = 1.0; // gravity along body z: phi = theta = 0
+                y0.fixed_rows_mut::<5>(0).copy_from_slice(&x0);
+                // Gravity in body axes, wings level: (-sin theta, 0, cos theta).
+                (y0[5], y0[7]) = (-theta.sin(), theta.cos());
                 let (y, stats) = integrate(sys, y0, &breaks, &t, &s.tolerances, s.model)?;
                 (columns(&y), stats)
             }

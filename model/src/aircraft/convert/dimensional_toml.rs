@@ -47,7 +47,12 @@ impl Converted {
             let _ = writeln!(out, "{key} = {}", toml_number(m));
         }
         let _ = writeln!(out, "\n[derivatives]\n# Principal axes, angles in rad.");
+        let trim = [Param::Z0, Param::AlphaT];
         for p in Param::ALL.iter().skip(3) {
+            if trim.contains(p) && !aircraft.trimmed {
+                // Without a trim the file keeps the paper's convention (and its elevator).
+                continue;
+            }
             let _ = writeln!(
                 out,
                 "{} = {}   # {}",

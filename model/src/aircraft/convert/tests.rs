@@ -87,8 +87,13 @@ mod refused;
 fn conversion_by_hand_exact() {
     // qbar = 1.2 * 100^2 / 2 = 6000 Pa, qbar S = 120000 N; qbar S b = 1.2e6 N m,
     // qbar S b (b/2V) = 60000 N m s; qbar S c = 240000 N m, qbar S c (c/2V) = 2400 N m s.
-    // ixz = 0: the body axes are principal.
-    let a = parse(BODY, FILE).unwrap();
+    // ixz = 0: the body axes are principal, so the principal axis meets the flight path at the
+    // trim's body-axis alpha.
+    let a = parse(
+        &body("[flight]\n", "[flight]\nalpha = 0.05\nload_factor = 2\n"),
+        FILE,
+    )
+    .unwrap();
     let q = |s: &str| decimal_to_rational(s).unwrap();
     let want = [
         (Param::C, "1"),          // (50000 - 10000) / 40000
@@ -109,6 +114,8 @@ fn conversion_by_hand_exact() {
         (Param::NBeta, "2.4"),    // 1.2e6 * 0.1 / 50000
         (Param::NDeltaA, "0.24"), // 1.2e6 * 0.01 / 50000
         (Param::NDeltaR, "-1.2"), // 1.2e6 * -0.05 / 50000
+        (Param::Z0, "-0.196133"), // -2 * 9.80665 / 100
+        (Param::AlphaT, "0.05"),  // 0.05 - 0
     ];
     assert_eq!(want.len(), Param::ALL.len());
     for (p, v) in want {
@@ -126,7 +133,8 @@ fn independent_f64(
     geom: [f64; 4],
     inertia: [f64; 4],
     c: &[f64; 15],
-) -> ([f64; 18], f64) {
+    trim: (Option<f64>, f64),
+) -> ([f64; Param::COUNT], f64) {
     let [m, s, b, ch] = geom;
     let [ix, iy, iz, ixz] = inertia;
     let qbar = 0.5 * rho * v * v;
@@ -174,6 +182,10 @@ fn independent_f64(
         da.y / izp,
         dr.y / izp,
         dr.x / ixp,
+        // z_0 = -n g / V; the flight path lies alpha below body x, the principal x axis `tilt`
+        // below it.
+        -trim.1 * 9.80665 / v,
+        trim.0.map_or(0.0, |alpha| alpha - xp.y.atan2(xp.x)),
     ];
     (out, xp.y.atan2(xp.x).to_degrees())
 }
@@ -196,6 +208,7 @@ fn conversion_with_tilt_and_isa_matches_an_independent_f64_computation() {
         [9300.0, 27.87, 9.144, 3.45],
         [12875.0, 75674.0, 85552.0, 1331.0],
         &coeffs,
+        (None, 0.0),
     );
     let a = parse(fighter_text(), "fighter.toml").unwrap();
     for p in Param::ALL {
@@ -219,6 +232,63 @@ fn conversion_with_tilt_and_isa_matches_an_independent_f64_computation() {
     assert!(a.value(Param::NDeltaA) != 0.0 && a.value(Param::LDeltaR) != 0.0);
     assert_eq!(a.limits.aileron_deg, Some(21.5));
     assert_eq!(a.validity.beta_max_deg, 20.0);
+}
+
+#[test]
+fn a_trim_gives_the_lift_term_and_the_principal_axis_angle_of_attack() {
+    // The fighter at 1.5 g with the body axis 0.1 rad above the flight path: the principal axis,
+    // tilted below body x by the product of inertia, sits at 0.1 rad less that tilt.
+    let text = fighter_text().replacen(
+        "[flight]\n",
+        "[flight]\nalpha = 0.1\nload_factor = 1.5\n",
+        1,
+    );
+    let a = parse(&text, "fighter.toml").unwrap();
+    let plain = parse(fighter_text(), "fighter.toml").unwrap();
+    let (_, tilt_deg) = independent_f64(
+        180.0,
+        0.8,
+        [9300.0, 27.87, 9.144, 3.45],
+        [12875.0, 75674.0, 85552.0, 1331.0],
+        &[0.0; 15],
+        (None, 0.0),
+    );
+    assert_eq!(a.value(Param::Z0), -1.5 * 9.80665 / 180.0);
+    let want = 0.1 - tilt_deg.to_radians();
+    assert!(
+        (a.value(Param::AlphaT) - want).abs() < 1e-15,
+        "{}",
+        a.value(Param::AlphaT)
+    );
+    assert!(want < 0.1 && want > 0.07, "{want}");
+    // Nothing else moves; without a trim both are 0, the paper's convention.
+    for p in Param::ALL
+        .into_iter()
+        .filter(|p| !matches!(p, Param::Z0 | Param::AlphaT))
+    {
+        assert_eq!(a.value(p), plain.value(p), "{p:?}");
+    }
+    assert_eq!(
+        (plain.value(Param::Z0), plain.value(Param::AlphaT)),
+        (0.0, 0.0)
+    );
+}
+
+#[test]
+fn a_trim_alpha_beyond_a_right_angle_and_a_dimensional_trim_in_flight_are_refused() {
+    let text = fighter_text().replacen("[flight]\n", "[flight]\nalpha = 1.6\n", 1);
+    let e = parse(&text, "fighter.toml").unwrap_err().to_string();
+    assert!(
+        e.contains("flight.alpha") && e.contains("pi/2") && e.contains("1.6"),
+        "{e}"
+    );
+    let dimensional = include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/../aircraft/a.toml"))
+        .replacen("[flight]\n", "[flight]\nload_factor = 1\n", 1);
+    let e = parse(&dimensional, "a.toml").unwrap_err().to_string();
+    assert!(
+        e.contains("flight.load_factor") && e.contains("derivatives.z_0"),
+        "{e}"
+    );
 }
 
 #[test]

@@ -9,6 +9,7 @@ use super::{
     inertia_coefficients, keys_of, list, qualified, AircraftError, Common, Cx, Table, Tables,
     F64_RANGE,
 };
+use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
 /// A body-axis file: the aircraft and the conversion it came from (for `convert`).
@@ -128,6 +129,41 @@ impl Cx<'_> {
             iz: moment("iz")?,
             ixz,
             coefficients: coeffs,
+            trim_alpha: self.trim_alpha(flight)?,
+            load_factor: self
+                .optional_number(flight, "load_factor")?
+                .unwrap_or_else(BigRational::zero),
+        })
+    }
+
+    /// The exact value of an optional key of `table`.
+    fn optional_number(
+        &self,
+        table: &Table<'_>,
+        k: &str,
+    ) -> Result<Option<BigRational>, AircraftError> {
+        match table.get(k) {
+            Some((key, value)) => Ok(Some(self.number(table.name, key, value)?.exact)),
+            None => Ok(None),
+        }
+    }
+
+    /// `flight.alpha`, the body-axis angle of attack of the trim: a small-angle model holds it
+    /// only well inside a right angle.
+    fn trim_alpha(&self, flight: &Table<'_>) -> Result<Option<BigRational>, AircraftError> {
+        let Some((key, value)) = flight.get("alpha") else {
+            return Ok(None);
+        };
+        let n = self.number(flight.name, key, value)?;
+        if n.float.abs() < std::f64::consts::FRAC_PI_2 {
+            return Ok(Some(n.exact));
+        }
+        Err(AircraftError::InvalidValue {
+            at: self.at_value(key, value),
+            key: qualified(flight.name, &key.name),
+            expected: "the body-axis angle of attack of the trim in rad, between -pi/2 and pi/2"
+                .to_string(),
+            value: n.written,
         })
     }
 
@@ -201,6 +237,7 @@ impl Cx<'_> {
         values.extend(converted.derivatives.iter().cloned());
         let mut aircraft = Aircraft::new(name, values, converted.speed_f64());
         aircraft.warnings = warnings;
+        aircraft.trimmed = input.trim_alpha.is_some() || tables.flight.get("load_factor").is_some();
         Ok(aircraft)
     }
 }

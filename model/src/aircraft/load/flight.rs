@@ -23,6 +23,17 @@ impl Cx<'_> {
                 ));
             }
         }
+        for (k, instead) in [("alpha", "alpha_t"), ("load_factor", "z_0")] {
+            if let Some((key, _)) = table.get(k) {
+                return Err(self.mixed(
+                    key,
+                    format!(
+                        "`flight.{k}` (the trim of nondimensional coefficients) in a file with \
+                         `[derivatives]`, whose trim is `derivatives.{instead}`"
+                    ),
+                ));
+            }
+        }
         let Some((key, value)) = table.get("speed") else {
             return Ok(DEFAULT_SPEED_M_S);
         };

@@ -16,7 +16,7 @@ pub(super) const TOP_KEYS: [&str; 9] = [
     "uncertainty",
 ];
 pub(super) const INERTIA_KEYS: [&str; 7] = ["C", "D", "E", "ix", "iy", "iz", "ixz"];
-pub(super) const FLIGHT_KEYS: [&str; 3] = ["speed", "density", "altitude"];
+pub(super) const FLIGHT_KEYS: [&str; 5] = ["speed", "density", "altitude", "alpha", "load_factor"];
 pub(super) const GEOMETRY_KEYS: [&str; 4] = ["mass", "wing_area", "span", "chord"];
 pub(super) const LIMIT_KEYS: [&str; 3] = ["aileron", "elevator", "rudder"];
 pub(super) const VALIDITY_KEYS: [&str; 2] = ["alpha_max", "beta_max"];

@@ -37,6 +37,9 @@ impl Cx<'_> {
             None => DEFAULT_SPEED_M_S,
         };
         let mut aircraft = Aircraft::new(common.name, values, speed);
+        aircraft.trimmed = ["z_0", "alpha_t"]
+            .iter()
+            .any(|k| derivatives.get(k).is_some());
         aircraft.limits = common.limits;
         aircraft.validity = common.validity;
         aircraft.warnings = self.moment_warnings(inertia);
@@ -167,13 +170,14 @@ impl Cx<'_> {
         })
     }
 
-    /// The 15 derivatives in [`Param::ALL`] order.
+    /// The derivatives in [`Param::ALL`] order after C, D, E (the trim's `z_0` and `alpha_t`, as
+    /// `l_delta_r`, default to 0: the paper's aircraft).
     pub(super) fn derivatives(&self, table: &Table<'_>) -> Result<Vec<BigRational>, AircraftError> {
         let mut read = Vec::new();
         for (key, value) in table.entries {
             read.push((key, value, self.number(table.name, key, value)?));
         }
-        let mut out = Vec::with_capacity(15);
+        let mut out = Vec::with_capacity(Param::COUNT - 3);
         for p in Param::ALL.iter().skip(3) {
             let found = read.iter().find(|(k, _, _)| k.name == p.key());
             match found {
@@ -190,7 +194,9 @@ impl Cx<'_> {
                 None if *p == Param::NDeltaR => {
                     out.push(BigRational::from_integer(BigInt::from(DEFAULT_N_DELTA_R)));
                 }
-                None if *p == Param::LDeltaR => out.push(BigRational::zero()),
+                None if matches!(p, Param::LDeltaR | Param::Z0 | Param::AlphaT) => {
+                    out.push(BigRational::zero())
+                }
                 None => {
                     return Err(self.missing_key(
                         table,

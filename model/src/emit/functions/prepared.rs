@@ -161,14 +161,20 @@ mod tests {
     use super::*;
     use crate::emit::op_count;
 
-    /// The split is worth it: the per-call program is well below the free `det_k` (184
-    /// operations), and the two stages hold every operation of the whole.
+    /// The split is worth it: the per-call program is at most three quarters of the free
+    /// `det_k`, and the two stages hold every operation of the whole.
     #[test]
     fn per_call_work_is_a_fraction_of_the_whole() {
-        let p = prepared(crate::specialise::parametric());
+        let d = crate::specialise::parametric();
+        let p = prepared(d);
+        let free = super::super::functions(d, true)
+            .into_iter()
+            .find(|f| f.name == "det_k")
+            .expect("the free det_k");
         let (full, new, late) = (op_count(&p.full), op_count(&p.new), op_count(&p.det_k));
         assert_eq!(full.total(), new.total() + late.total());
-        assert!(late.total() <= 140, "{late:?}");
+        let whole = op_count(&free).total();
+        assert!(4 * late.total() <= 3 * whole, "{late:?} of {whole}");
         assert!(late.div <= 1 && late.libm <= 2, "{late:?}");
     }
 }

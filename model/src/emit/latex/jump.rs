@@ -180,12 +180,12 @@ impl Writer<'_> {
         };
         let _ = write!(
             out,
-            "The denominator $(\\det A)^2 d|_{{x=x_0}} = l_p (\\det A)^2 + l_r {} \\det A - E\\,{} {} \
-             - E\\,{} {}$ vanishes at the poles of $\\det K$; expanded it has {} terms:\n\
-             \\begin{{align*}}\n",
-            d_sub(s.alpha0),
+            "The denominator $(\\det A)^2 d|_{{x=x_0}} = l_p (\\det A)^2 + l_r ({} + \\alpha_t \\det A) \
+             \\det A - E\\,{} ({} + \\alpha_t \\det A) - E\\,{} {}$ vanishes at the poles of \
+             $\\det K$; expanded it has {} terms:\n\\begin{{align*}}\n",
             d_sub(s.alpha0),
             d_sub(s.q0),
+            d_sub(s.alpha0),
             d_sub(s.beta0),
             d_sub(s.r0),
             d_det_a.len()
@@ -194,11 +194,13 @@ impl Writer<'_> {
         out.push_str("\n\\end{align*}\n");
         let check_d = {
             let n: Vec<Poly> = d.trim.iter().map(|t| t.subs(nda, &Poly::zero())).collect();
+            use crate::aircraft::Param;
             let da = &d.det_a;
-            let recon = &(&(&Poly::var(s.param(crate::aircraft::Param::Lp)) * &(da * da))
-                + &(&(&Poly::var(s.param(crate::aircraft::Param::Lr)) * &n[0]) * da))
-                - &(&Poly::var(s.param(crate::aircraft::Param::E))
-                    * &(&(&n[0] * &n[2]) + &(&n[1] * &n[3])));
+            let k = |p: Param| Poly::var(s.param(p));
+            // The principal axis' angle of attack at the trim, over det A: alpha0 + alpha_t.
+            let alpha = &n[0] + &(&k(Param::AlphaT) * da);
+            let recon = &(&(&k(Param::Lp) * &(da * da)) + &(&(&k(Param::Lr) * &alpha) * da))
+                - &(&k(Param::E) * &(&(&alpha * &n[2]) + &(&n[1] * &n[3])));
             recon == d_det_a
         };
         let _ = writeln!(

@@ -89,7 +89,8 @@ impl Writer<'_> {
             self.matrix(&m2(&damping)),
             self.matrix(&m2(&d.k0)),
         );
-        let k0_ok = (0..2).all(|i| (0..2).all(|j| parse(printed::EQ16_K0[i][j]) == d.k0[i][j]));
+        let k0_ok = (0..2)
+            .all(|i| (0..2).all(|j| parse(printed::EQ16_K0[i][j]) == self.paper_case(&d.k0[i][j])));
         let _ = writeln!(
             out,
             "$K_0$ {} Eq.~16 as printed.\n",

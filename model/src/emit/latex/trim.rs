@@ -18,7 +18,18 @@ impl Writer<'_> {
              $D = (I_y - I_x)/I_z$, $E = (I_z - I_y)/I_x$; the paper's stray parenthesis after \
              $l_{\\delta a}$ is dropped. For the unconstrained roll (Sections 2--8) the derivation \
              sets $n_{\\delta a} = 0$, as for both aircraft of Table A.1: otherwise the trim is \
-             not linear in $(\\alpha, \\beta, q, r)$ for given $P_0$.\n",
+             not linear in $(\\alpha, \\beta, q, r)$ for given $P_0$.\n\n\
+             Beyond Appendix A.2 the model is linearized about the aircraft's trimmed flight at \
+             a load factor $n$: $\\alpha$, $\\beta$ and the controls are increments from that \
+             trim, $z_0 = Z_0/(mV) = -n g/V$ is its lift, which keeps acting in body axes while \
+             the aircraft rolls, and $\\alpha_t$ is the angle of attack of the principal axis \
+             there, which the roll about that axis turns into sideslip ($\\dot\\beta = p \
+             \\sin(\\alpha_t + \\alpha) - r \\cos(\\alpha_t + \\alpha)$ linearized as the \
+             paper does). The paper's aircraft have $z_0 = \\alpha_t = 0$ (angles measured from \
+             zero lift, the principal axis on the flight path), and every comparison with the \
+             paper's print below is made in that case. For an imported aircraft (\\texttt{model \
+             import jsbsim}) $z_0$ and $\\alpha_t$ come from its trim, the principal axis lying \
+             the product-of-inertia tilt below the body axis.\n",
         );
         let lhs = STATE_RATES;
         let mut vars = vec![s.alpha, s.beta, s.p, s.q, s.r];
@@ -73,7 +84,7 @@ impl Writer<'_> {
         let rhs_ok = printed::EQ2_RHS
             .iter()
             .zip(&d.a_rhs)
-            .all(|(p, q)| parse(p) == q.subs(nda, &Poly::zero()));
+            .all(|(p, q)| parse(p) == self.paper_case(&q.subs(nda, &Poly::zero())));
         let _ = writeln!(
             out,
             "Eq.~2: $A$ {}; $b$ and $b_1$ (that is, $b u + b_1 P_0$) at $n_{{\\delta a}} = 0$ {}.\n",

@@ -428,7 +428,16 @@ impl<'a> Writer<'a> {
         )
     }
 
-    /// A comparison with the paper's print: agreement, or the difference typeset.
+    /// `p` in the paper's case: the trim terms `z_0` and `alpha_t` zero (angles measured from
+    /// zero lift, the principal axis on the flight path), the only case the paper prints.
+    pub(super) fn paper_case(&self, p: &Poly) -> Poly {
+        use crate::aircraft::Param;
+        p.subs(self.s.param(Param::Z0), &Poly::zero())
+            .subs(self.s.param(Param::AlphaT), &Poly::zero())
+    }
+
+    /// A comparison with the paper's print, in the paper's case ([`Self::paper_case`]):
+    /// agreement, or the difference typeset.
     pub(super) fn check(
         &self,
         what: &str,
@@ -436,7 +445,7 @@ impl<'a> Writer<'a> {
         printed: &Poly,
         levels: &[&[Sym]],
     ) -> String {
-        let diff = derived - printed;
+        let diff = &self.paper_case(derived) - printed;
         if diff.is_zero() {
             format!("{what}: agrees with the paper's print.")
         } else {

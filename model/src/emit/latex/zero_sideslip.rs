@@ -73,7 +73,7 @@ impl Writer<'_> {
         let rhs_diff: Vec<Poly> = printed::EQ34_RHS
             .iter()
             .zip(&rhs)
-            .map(|(p, q)| q - &parse(p))
+            .map(|(p, q)| &self.paper_case(q) - &parse(p))
             .collect();
         let _ = writeln!(
             out,

@@ -188,6 +188,8 @@ fn json_has_one_entry_per_point_with_the_documented_keys() {
                 "{p}"
             );
             assert!(p["critical"].is_null());
+        } else if p["critical"].is_null() {
+            assert!(p["critical_note"].is_string(), "{p}");
         } else {
             let c = &p["critical"];
             assert!(c["p0"].is_f64() && c["delta_a_deg"].is_f64(), "{p}");
@@ -203,8 +205,10 @@ fn json_has_one_entry_per_point_with_the_documented_keys() {
 }
 
 /// The catalogue table (`import jsbsim --list --analyze`) and the envelope use the same trim
-/// (1 g) and the same elevator (increment 0 from it): the F-104's row and the envelope's point
-/// at the same condition give the same critical jump, to the digits the row prints.
+/// (1 g unless `--load-factor`) and the same elevator (increment 0 from it): the F-104's row
+/// and the envelope's point at the same condition give the same critical jump (or the same
+/// reason for none) and the same first departure, to the digits the row prints. At 1 g the
+/// F-104 jumps only low and fast; unloaded (0 g) it jumps or meets a Hopf point first.
 #[test]
 fn the_catalogue_row_and_the_envelope_point_agree_at_the_same_condition() {
     if !installed() {
@@ -212,27 +216,47 @@ fn the_catalogue_row_and_the_envelope_point_agree_at_the_same_condition() {
     }
     let source = Source::parse("jsbsim:f104").unwrap();
     let loaded = source.load().unwrap();
-    for (h, mach) in [(6000.0, 0.6), (3000.0, 0.8), (9000.0, 0.9)] {
-        let point = model::envelope::Point::at(&loaded, "f104", h, mach, Elevator::default());
-        let spec = format!("jsbsim:f104 --altitude-m {h} --mach {mach}");
+    for (h, mach, n) in [
+        (0.0, 0.8, 1.0),
+        (6000.0, 0.6, 1.0),
+        (6000.0, 0.9, 0.0),
+        (4000.0, 0.5, 0.0),
+    ] {
+        let elevator = Elevator {
+            load_factor: n,
+            increment: 0.0,
+        };
+        let point = model::envelope::Point::at(&loaded, "f104", h, mach, elevator);
+        let spec = format!("jsbsim:f104 --altitude-m {h} --mach {mach} --load-factor {n}");
         let row = model::present::catalogue::row("f104", &model::jsbsim::cli::source(&spec));
-        let c = point
-            .critical
-            .as_ref()
-            .unwrap_or_else(|| panic!("{point:?}"));
-        let cells = format!(
-            "| {:.4} | {:.2} | {} |",
-            c.p0,
-            c.delta_a_deg,
-            if c.within_limits == Some(true) {
-                "yes"
-            } else {
-                "no"
-            }
+        let cells = match point.critical.as_ref() {
+            Some(c) => format!(
+                "| {:.4} | {:.2} | {} |",
+                c.p0,
+                c.delta_a_deg,
+                if c.within_limits == Some(true) {
+                    "yes"
+                } else {
+                    "no"
+                }
+            ),
+            None => format!(
+                "| none: {}",
+                point.critical_note.as_deref().unwrap().replace('|', "\\|")
+            ),
+        };
+        assert!(
+            row.contains(&cells),
+            "{h} m, Mach {mach}, {n} g: {row} vs {cells}"
         );
-        assert!(row.contains(&cells), "{h} m, Mach {mach}: {row} vs {cells}");
-        let kind = point.first_departure.as_ref().map_or("none", |d| d.kind);
-        assert!(row.contains(kind), "{row} vs {kind}");
+        let first = match point.first_departure.as_ref() {
+            Some(d) => format!("| {} | {:.4} | {:.2} |", d.kind, d.p0, d.delta_a_deg),
+            None => "| none within the aileron range |".to_string(),
+        };
+        assert!(
+            row.contains(&first),
+            "{h} m, Mach {mach}, {n} g: {row} vs {first}"
+        );
     }
 }
 
@@ -262,8 +286,8 @@ fn out_writes_the_csv_the_summaries_and_the_maps() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// The F-104's envelope written by `--out` to a scratch folder: the map's files and the
-/// envelope's CSV, read back.
+/// The F-104's envelope trimmed at 0 g (the unloaded roll) written by `--out` to a scratch
+/// folder: the map's files and the envelope's CSV, read back.
 struct Written {
     svg: String,
     map_csv: String,
@@ -275,6 +299,7 @@ fn written(altitude_m: &str, mach: &str, name: &str) -> Written {
     let mut a = args("jsbsim:f104", altitude_m, mach);
     a.json = false;
     a.out = Some(dir.clone());
+    a.load_factor = Some(0.0);
     command(&a, &mut Vec::new()).unwrap();
     let read = |f: &str| std::fs::read_to_string(dir.join(f)).unwrap();
     let w = Written {
@@ -333,8 +358,9 @@ fn the_critical_aileron_map_draws_the_aileron_limit_contour_where_the_margin_cha
     if !installed() {
         return;
     }
-    // At 6,000 and 7,000 m a full-stick roll of the F-104 jumps from about Mach 0.6 up.
-    let w = written("6000:7000:1000", "0.5:0.7:0.1", "contour");
+    // At 6,000 and 7,000 m a full-stick unloaded roll of the F-104 jumps up to about Mach 0.8
+    // and not beyond.
+    let w = written("6000:7000:1000", "0.7:0.9:0.1", "contour");
     let margins = margins_of(&w.envelope_csv);
     assert_eq!(margins.len(), 6);
     assert!(margins.iter().any(|m| m.2 < 0.0) && margins.iter().any(|m| m.2 > 0.0));
@@ -352,7 +378,7 @@ fn the_critical_aileron_map_draws_the_aileron_limit_contour_where_the_margin_cha
         })
         .collect();
     assert!(contour.len() >= 2, "{}", w.map_csv);
-    let (machs, alts) = ([0.5, 0.6, 0.7], [6000.0, 7000.0]);
+    let (machs, alts) = ([0.7, 0.8, 0.9], [6000.0, 7000.0]);
     for &(x, y) in &contour {
         // The grid edge through (x, y): along an altitude row or a Mach column.
         let (a, b, t) = if alts.contains(&y) {
@@ -379,7 +405,8 @@ fn the_critical_aileron_map_draws_the_aileron_limit_contour_where_the_margin_cha
     );
     assert!(!contour_polylines(&w.svg).is_empty(), "no contour polyline");
 
-    // At 12,000 and 13,000 m no full-stick roll jumps between Mach 0.6 and 0.7.
+    // At 12,000 and 13,000 m between Mach 0.6 and 0.7 every full-stick unloaded roll reaches
+    // its critical aileron: the margin keeps its sign.
     let w = written("12000:13000:1000", "0.6:0.7:0.1", "no-contour");
     let margins = margins_of(&w.envelope_csv);
     assert!(

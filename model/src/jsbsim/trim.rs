@@ -128,6 +128,15 @@ impl Travel {
     }
 }
 
+/// `x` with four decimals, never `-0.0000`.
+fn four(x: f64) -> String {
+    let s = format!("{x:.4}");
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => s,
+    }
+}
+
 /// The zero of `f` between `a` and `b` (where `f` changes sign), by the Illinois variant of
 /// regula falsi, to `tol` in the argument.
 fn zero(
@@ -242,10 +251,12 @@ pub fn trim(setup: &Setup, n: f64) -> Result<Trim, String> {
         }
         if last.is_none() && excess > 0.0 {
             return Err(untrimmable(format!(
-                "at alpha {:.1} deg the pitch-balanced lift coefficient {cl:.4} already exceeds \
-                 the {need:.4} that n x weight needs (fly slower or higher, or at a larger load \
+                "at alpha {:.1} deg the pitch-balanced lift coefficient {} already exceeds \
+                 the {} that n x weight needs (fly slower or higher, or at a larger load \
                  factor)",
-                alpha.to_degrees()
+                alpha.to_degrees(),
+                four(cl),
+                four(need)
             )));
         }
         if let Some((a_prev, e_prev)) = last {
@@ -289,9 +300,11 @@ pub fn trim(setup: &Setup, n: f64) -> Result<Trim, String> {
     };
     Err(untrimmable(format!(
         "no lift solution from {a0} to {a1} deg alpha: the largest lift coefficient of the \
-         pitch-balanced aircraft is {cl_best:.4} ({end}), n x weight ({n} x {weight:.0} lbs, \
-         {:.0} kg) needs CL = {need:.4} (fly faster or lower, or at a smaller load factor)",
-        weight * SLUG_PER_LB * KG_PER_SLUG
+         pitch-balanced aircraft is {} ({end}), n x weight ({n} x {weight:.0} lbs, {:.0} kg) \
+         needs CL = {} (fly faster or lower, or at a smaller load factor)",
+        four(cl_best),
+        weight * SLUG_PER_LB * KG_PER_SLUG,
+        four(need)
     )))
 }
 
@@ -450,6 +463,10 @@ mod tests {
             );
             let e = trim(setup, 15.0).unwrap_err();
             assert!(e.contains("no lift solution"), "{e}");
+            assert_eq!(
+                (four(-1e-7), four(-0.5), four(2.0)),
+                ("0.0000".into(), "-0.5000".into(), "2.0000".into())
+            );
             let e = trim(setup, f64::NAN).unwrap_err();
             assert!(e.contains("expected a finite load factor"), "{e}");
         });

@@ -44,6 +44,7 @@ pub mod fast;
 pub(crate) mod primary;
 #[cfg(feature = "cli")]
 pub mod trim_curves;
+pub mod unstable_trim;
 pub use crate::specialise::{
     cancel, exact_f64, in_aileron, in_aileron_all, parametric, parametric_characteristic,
     quadratic_roots, specialisation, univariate, InAileron,
@@ -164,8 +165,9 @@ pub struct Analysis {
     pub zero_sideslip: ZeroSideslip,
     /// Hopf points (a complex pair of J5 on the imaginary axis), ascending in P0.
     pub hopf: Vec<HopfPoint>,
-    /// The first loss of stability along the primary branch (jump or Hopf), `None` when the
-    /// branch never loses stability within the aileron range (or diverges first).
+    /// The first loss of stability along the primary branch (an unstable trim at its start, a
+    /// jump or a Hopf point), `None` when the branch never loses stability within the aileron
+    /// range (or diverges first).
     pub first_departure: Option<FirstDeparture>,
 }
 

@@ -4,7 +4,8 @@
 //!
 //! Data flow: [`xml`] and [`units`] read values; [`table`], [`function`] and [`evaluate`] are
 //! JSBSim's function language; [`metrics`], [`mass`] and [`aerodynamics`] the model's sections,
-//! put together in [`model`]. JSBSim itself (its Python package) is the independent check of the
+//! put together in [`model`]; [`systems`] and [`fcs`] read the flight control system, and
+//! [`surfaces`] the controls' travel through it. JSBSim itself (its Python package) is the independent check of the
 //! evaluation, in the integration tests.
 
 pub mod aerodynamics;
@@ -16,12 +17,14 @@ pub mod condition;
 pub mod derivatives;
 pub mod error;
 pub mod evaluate;
+pub mod fcs;
 pub mod function;
 pub mod import;
 pub mod mass;
 pub mod metrics;
 pub mod model;
 pub mod surfaces;
+pub mod systems;
 pub mod table;
 pub mod table_xml;
 pub mod trim;
@@ -31,5 +34,7 @@ pub mod xml;
 
 pub use error::JsbsimError;
 pub use model::Model;
+#[cfg(test)]
+mod fcs_tests;
 #[cfg(test)]
 mod tests;

@@ -417,3 +417,52 @@ fn the_critical_aileron_map_draws_the_aileron_limit_contour_where_the_margin_cha
     assert!(!texts(&w.svg).iter().any(|t| t.contains("aileron limit")));
     assert!(contour_polylines(&w.svg).is_empty());
 }
+
+/// The bare F-16 (Cm_alpha > 0) at 12,000 m and Mach 0.5 starts from an unstable trim, at Mach
+/// 0.9 from a stable one (`tests/tests/jsbsim.rs` checks the eigenvalue at the first): the JSON
+/// says `unstable_trim` for the first, the CSV too, the first-departure map gives it its own
+/// legend entry, and the table counts it.
+#[test]
+fn an_unstable_trim_is_its_own_class_in_the_json_csv_map_and_counts() {
+    if !installed() {
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("envelope-unstable-{}", std::process::id()));
+    let mut a = args("jsbsim:f16", "12000", "0.5:0.9:0.4");
+    a.out = Some(dir.clone());
+    let mut out = Vec::new();
+    command(&a, &mut out).unwrap();
+    let v: Value = serde_json::from_slice(&out).unwrap();
+    let kinds: Vec<&Value> = v["points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| &p["first_departure"]["kind"])
+        .collect();
+    assert_eq!(kinds[0], "unstable_trim", "{v}");
+    assert_ne!(kinds[1], "unstable_trim", "{v}");
+    let mode = &v["points"][0]["first_departure"]["unstable_trim"]["modes"][0];
+    assert_eq!(
+        (&mode["motion"], &mode["subsystem"]),
+        (&"divergence".into(), &"pitch".into())
+    );
+    let read = |f: &str| std::fs::read_to_string(dir.join(f)).unwrap();
+    let csv = read("envelope.csv");
+    assert!(
+        csv.lines().nth(1).unwrap().contains(",unstable_trim,0,0,"),
+        "{csv}"
+    );
+    assert!(
+        read("first_departure.svg").contains("unstable trim (bare airframe)"),
+        "the map's legend"
+    );
+    assert!(
+        read("first_departure.csv").contains("unstable trim (bare airframe)"),
+        "the map's data"
+    );
+    assert!(
+        read("summary.md").contains("1 with an unstable trim at P0 = 0"),
+        "the counts"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -35,7 +35,7 @@ fn root() -> Option<PathBuf> {
 }
 
 fn oracle(request: &Value) -> Vec<Value> {
-    support::python_oracle("jsbsim_oracle.py", request)
+    serde_json::from_value(support::oracle::run("jsbsim_oracle.py", request)).expect("oracle JSON")
 }
 
 /// Random states: altitude 5,000-40,000 ft, Mach 0.3-0.85, alpha -4..14 deg, beta -6..6 deg,
@@ -227,7 +227,7 @@ fn derivatives_agree_with_central_differences_in_jsbsim() {
         let setup = Setup {
             model: &model,
             condition: Condition::new(altitude_m, Speed::Mach(mach)).unwrap(),
-            surfaces: surfaces(&model, &path),
+            surfaces: surfaces(&model, &path).unwrap(),
             settings: Vec::new(),
         };
         let state = if alpha_deg.is_nan() {
@@ -356,4 +356,82 @@ fn inertias_no_rigid_body_has_are_analysed_with_a_warning() {
             .unwrap_or_else(|e| panic!("{name}: {e}"));
         assert_eq!(analysis.0.warnings, aircraft.warnings, "{name}");
     }
+}
+
+/// The number of `key = value` in an imported aircraft file (its keys are unique).
+fn file_number(text: &str, key: &str) -> f64 {
+    text.lines()
+        .find_map(|l| {
+            let (k, rest) = l.split_once('=')?;
+            (k.trim() == key).then(|| rest.split_whitespace().next().unwrap().parse().unwrap())
+        })
+        .unwrap_or_else(|| panic!("no `{key}` in\n{text}"))
+}
+
+/// The F-16 at 12,000 m, Mach 0.5: its Cm_alpha is positive (the bare airframe, which flies
+/// behind the stability augmentation of its flight control system), so the trim the primary
+/// branch starts from is statically unstable in pitch. The first departure is that trim, a real
+/// divergence in pitch whose eigenvalue is the positive root of the pitch subsystem at P0 = 0,
+/// s^2 - (z_alpha + m_q) s + (z_alpha m_q - m_alpha), computed here from the file's
+/// nondimensional coefficients by the textbook formulas (qbar = rho V^2 / 2; z_alpha = -qbar S
+/// CL_alpha / (m V), m_alpha = qbar S c Cm_alpha / Iy, m_q = qbar S c^2 Cm_q / (2 V Iy): a
+/// rotation to principal axes in the x-z plane leaves pitch alone).
+#[test]
+fn the_bare_f16_at_12000_m_mach_0_5_departs_at_its_unstable_trim() {
+    let Some(root) = root() else {
+        eprintln!("skipped: {}", catalogue::HOW_TO_GET);
+        return;
+    };
+    let args = [
+        "jsbsim",
+        "f16",
+        "--jsbsim-root",
+        root.to_str().unwrap(),
+        "--altitude-m",
+        "12000",
+        "--mach",
+        "0.5",
+        "--level-flight",
+    ]
+    .map(String::from);
+    let mut out = Vec::new();
+    assert_eq!(model::jsbsim::cli::run(&args, &mut out), 0, "the import");
+    let text = String::from_utf8(out).unwrap();
+    let k = |key: &str| file_number(&text, key);
+    assert!(k("Cm_alpha") > 0.0, "the bare F-16 is statically unstable");
+    let (v, rho) = (k("speed"), k("density"));
+    let qs = 0.5 * rho * v * v * k("wing_area");
+    let (c, iy) = (k("chord"), k("iy"));
+    let z_alpha = -qs * k("CL_alpha") / (k("mass") * v);
+    let m_alpha = qs * c * k("Cm_alpha") / iy;
+    let m_q = qs * c * c * k("Cm_q") / (2.0 * v * iy);
+    let (trace, det) = (z_alpha + m_q, z_alpha * m_q - m_alpha);
+    assert!(det < 0.0, "z_alpha m_q - m_alpha = {det}");
+    let want = (trace + (trace * trace - 4.0 * det).sqrt()) / 2.0;
+
+    let aircraft = model::aircraft::parse(&text, "f16").unwrap();
+    let (a, _) = model::analysis::fast::analyze_routed_with(&aircraft, 0.0, true).unwrap();
+    let f = a.first_departure.as_ref().expect("a first departure");
+    assert_eq!(
+        (f.kind, f.p0, f.delta_a_rad),
+        ("unstable_trim", 0.0, 0.0),
+        "{f:?}"
+    );
+    let u = f.unstable_trim.as_ref().unwrap();
+    let [m] = u.modes.as_slice() else {
+        panic!("one unstable mode expected: {u:?}");
+    };
+    assert_eq!((m.motion, m.subsystem), ("divergence", "pitch"), "{m:?}");
+    assert!(
+        (m.eigenvalue_re - want).abs() < 1e-9 * want,
+        "{} vs {want}",
+        m.eigenvalue_re
+    );
+    assert!(
+        m.cause
+            .as_deref()
+            .unwrap()
+            .starts_with("static pitch instability"),
+        "{m:?}"
+    );
 }

@@ -33,7 +33,7 @@ fn with_setup<T>(
     let setup = Setup {
         model: &model,
         condition: Condition::new(altitude_m, Speed::Mach(mach)).unwrap(),
-        surfaces: surfaces(&model, &path),
+        surfaces: surfaces(&model, &path).unwrap(),
         settings: Vec::new(),
     };
     body(&setup)
@@ -76,7 +76,7 @@ fn trimmed_lift_is_n_weights_and_pitching_moment_zero_in_jsbsim() {
             let request = json!({"root": root, "model": name,
                 "inputs": setup.model.functions.inputs(), "functions": [],
                 "states": [oracle_state(setup, &state, &ours.zeroed)], "quasi_steady": true});
-            let out = &support::python_oracle("jsbsim_oracle.py", &request)[0];
+            let out = &support::oracle::run("jsbsim_oracle.py", &request)[0];
             let theirs = jsbsim_coefficients(out, setup.model);
             let qs = f(&out["atmosphere"]["qbar"]) * setup.model.metrics.wing_area;
             let weight = f(&out["mass"]["weight"]);
@@ -159,7 +159,8 @@ fn trim_agrees_with_jsbsim_fgtrim_once_the_thrust_moment_is_taken_out() {
         .map(|(h, m, n)| json!({"h_ft": h * FT_PER_M, "mach": m, "n": n}))
         .collect();
     let request = json!({"root": root, "model": "f104", "conditions": conditions});
-    let jsbsim = support::python_oracle("jsbsim_trim.py", &request);
+    let jsbsim: Vec<serde_json::Value> =
+        serde_json::from_value(support::oracle::run("jsbsim_trim.py", &request)).unwrap();
     for ((h, mach, n), theirs) in cases.into_iter().zip(jsbsim) {
         assert_eq!(
             theirs["ok"],

@@ -7,6 +7,7 @@
 //! roots include neutral saddles; `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` (derived in
 //! [`crate::derivation::hopf::orlando`]) tells them apart.
 
+use super::unstable_trim::{self, Start, UnstableTrim};
 use super::{
     aileron_of_root, exact_f64, parametric_characteristic, specialisation, strip, univariate,
     CriterionPolys, InAileron, JumpPoint,
@@ -58,10 +59,12 @@ pub struct Landing {
     pub r: f64,
 }
 
-/// The first loss of stability met along the primary branch.
+/// The first loss of stability met along the primary branch: its start itself when that trim is
+/// unstable.
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct FirstDeparture {
-    /// `"jump"` or `"hopf"`.
+    /// `"jump"`, `"hopf"` or `"unstable_trim"` (the trim at P0 = 0, delta_a = 0, where the branch
+    /// starts, is unstable: the bare airframe needs its stability augmentation there).
     pub kind: &'static str,
     /// Trim roll rate, rad/s.
     pub p0: f64,
@@ -81,6 +84,26 @@ pub struct FirstDeparture {
     /// For a jump: the stable equilibria it can land on (empty: divergence).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lands_at: Option<Vec<Landing>>,
+    /// For an unstable trim: the trim and its unstable modes.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub unstable_trim: Option<UnstableTrim>,
+}
+
+impl FirstDeparture {
+    /// The departure at the branch's start, P0 = 0 and delta_a = 0, whose trim is `u`.
+    fn at_start(u: UnstableTrim) -> FirstDeparture {
+        FirstDeparture {
+            kind: "unstable_trim",
+            p0: 0.0,
+            delta_a_rad: 0.0,
+            delta_a_deg: 0.0,
+            omega: None,
+            l1: None,
+            hopf_kind: None,
+            lands_at: None,
+            unstable_trim: Some(u),
+        }
+    }
 }
 
 /// The Hopf part of the closed form specialised to one aircraft.
@@ -386,7 +409,7 @@ fn hopf_at_zs(c: &[Poly; 5], t: &[Sym], num: &[Poly], den: &Poly) -> Poly {
 
 /// A null vector of a (numerically) singular 5x5 complex matrix: the row with the smallest
 /// pivot is replaced by the normalisation `x_k = 1`, choosing `k` for the smallest residual.
-fn null_vector(m: &Matrix5<Complex<f64>>) -> Option<Vector5<Complex<f64>>> {
+pub(super) fn null_vector(m: &Matrix5<Complex<f64>>) -> Option<Vector5<Complex<f64>>> {
     let mut best: Option<(f64, Vector5<Complex<f64>>)> = None;
     for row in 0..5 {
         for k in 0..5 {
@@ -564,12 +587,15 @@ pub(crate) fn landings(
         .collect()
 }
 
-/// The first loss of stability along the primary branch: the first jump or Hopf point the branch
-/// meets when followed from the (stable) wings-level trim P0 = 0, delta_a = 0 towards P0 > 0.
-/// With delta_r = 0 the model is symmetric under `(P0, beta, r, delta_a) -> -(...)`, so the other
-/// aileron direction meets the mirror point (-P0, -delta_a) with the same kind, omega and l1
-/// (the symmetry maps J5 to a similar matrix). `None` when the wings-level trim is itself
-/// unstable (or its stability cannot be computed), or the branch diverges or runs off the
+/// The first loss of stability along the primary branch: the wings-level trim P0 = 0,
+/// delta_a = 0 itself when an eigenvalue of J5 there lies in the right half-plane
+/// ([`unstable_trim::start`]), else the first jump or Hopf point the branch meets when followed
+/// from that trim towards P0 > 0. The trim is the one the analysis computes at P0 = 0 (the trim
+/// numerators over det A), wherever the elevator puts it. With delta_r = 0 the model is
+/// symmetric under `(P0, beta, r, delta_a) -> -(...)`, so the other aileron direction meets the
+/// mirror point (-P0, -delta_a) with the same kind, omega and l1 (the symmetry maps J5 to a
+/// similar matrix). `None` when the wings-level trim's stability is undecided (an eigenvalue on
+/// the imaginary axis within rounding, or none computed), or the branch diverges or runs off the
 /// aileron range first.
 pub(crate) fn first_departure(
     h: &AtTrim<'_>,
@@ -588,8 +614,10 @@ pub(crate) fn first_departure(
         trims[3].eval(0.0, 0.0) / dv,
         trims[4].eval(0.0, 0.0) / dv,
     ];
-    if h.stable(&origin) != Some(true) {
-        return None;
+    match unstable_trim::start(&h.j5(&origin), &origin) {
+        Start::Stable => {}
+        Start::Unstable(u) => return Some(FirstDeparture::at_start(u)),
+        Start::Undecided => return None,
     }
     let hits: Vec<(f64, f64)> = jump
         .iter()
@@ -610,6 +638,7 @@ pub(crate) fn first_departure(
             l1: None,
             hopf_kind: None,
             lands_at: j.lands_at.clone(),
+            unstable_trim: None,
         });
     }
     let hp = hopf.get(i - jump.len())?;
@@ -622,6 +651,7 @@ pub(crate) fn first_departure(
         l1: Some(hp.l1),
         hopf_kind: Some(hp.kind),
         lands_at: None,
+        unstable_trim: None,
     })
 }
 
@@ -652,6 +682,19 @@ pub(super) fn check_finite(a: &super::Analysis) -> Result<(), String> {
         let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
         if !(finite(&j.numbers()) && finite(&[h.omega, h.period, h.l1])) {
             return Err(format!("the Hopf point at P0 = {:e} rad/s", j.p0));
+        }
+    }
+    if let Some(u) = a
+        .first_departure
+        .as_ref()
+        .and_then(|f| f.unstable_trim.as_ref())
+    {
+        let modes = u
+            .modes
+            .iter()
+            .flat_map(|m| [m.eigenvalue_re, m.eigenvalue_im]);
+        if !modes.chain([u.alpha, u.beta, u.q, u.r]).all(f64::is_finite) {
+            return Err("the unstable trim at P0 = 0".into());
         }
     }
     for j in &a.jump {

@@ -88,7 +88,7 @@ impl Loaded {
             ));
         }
         refuse_driven(&model, settings)?;
-        let surfaces = surfaces(&model, &path);
+        let surfaces = surfaces(&model, &path)?;
         Ok(Loaded {
             model,
             surfaces,
@@ -188,7 +188,7 @@ pub fn evaluates(model: &Model, path: &std::path::Path) -> Result<(), String> {
     let setup = Setup {
         model,
         condition: Condition::new(h, Speed::Mach(mach))?,
-        surfaces: surfaces(model, path),
+        surfaces: surfaces(model, path)?,
         settings: Vec::new(),
     };
     let state = State {

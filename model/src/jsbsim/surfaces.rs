@@ -1,11 +1,12 @@
 //! The control surfaces as the aerodynamics read them: the aileron, elevator and rudder
 //! positions in rad (`fcs/*-pos-rad`), with the other forms that move with them (`-pos-deg`,
-//! `mag-*-pos-rad`, and `-pos-norm` through the range of the flight control system's
-//! `aerosurface_scale` (or `clipto`) whose output is the position), and the deflection limits
-//! read from that range.
+//! `mag-*-pos-rad`, and `-pos-norm` through the travel), and the travel itself as JSBSim moves
+//! the surface: the flight control system's chain from the pilot's command at +1 and -1 to the
+//! position the aerodynamics read.
 
+use super::fcs::Fcs;
 use super::model::Model;
-use super::xml::{child, parse_number};
+use super::systems::system_files;
 use std::path::Path;
 
 /// A primary control.
@@ -88,15 +89,44 @@ impl Control {
     }
 }
 
-/// A control's range in rad (negative and positive end) and where it was read.
+/// A control's travel as JSBSim moves the surface at full stick, rad: the position the
+/// flight control system settles at with the pilot's command at +1 and at -1 (trims neutral,
+/// wings level, no rates, no sideslip), and where it was read.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Range {
     /// The most negative deflection, rad (negative or zero).
     pub min: f64,
     /// The most positive deflection, rad.
     pub max: f64,
-    /// The file and component it came from.
+    /// The position at command +1, rad.
+    pub at_plus: f64,
+    /// The position at command -1, rad.
+    pub at_minus: f64,
+    /// The command, the position property and the components between them.
     pub source: String,
+}
+
+impl Range {
+    /// The symmetric limit of the analysis, rad: the smaller end, the travel the surface
+    /// reaches to either side (the analysis takes one limit on |deflection|, and a roll to
+    /// either side must stay within what the surface can do).
+    pub fn limit(&self) -> f64 {
+        (-self.min).min(self.max)
+    }
+
+    /// The command end (+1 or -1) whose position is the limit.
+    pub fn limiting_command(&self) -> f64 {
+        let end = if -self.min < self.max {
+            self.min
+        } else {
+            self.max
+        };
+        if end == self.at_plus {
+            1.0
+        } else {
+            -1.0
+        }
+    }
 }
 
 /// How a control is set: by its angle (the forms in rad, deg, magnitude, and normalised travel
@@ -106,8 +136,11 @@ pub struct Range {
 pub struct Surface {
     /// Which control.
     pub control: Control,
-    /// Its range, if the flight control system gives one.
+    /// Its travel, if the chain from the stick to the surface is followed.
     pub range: Option<Range>,
+    /// Why no travel is known, if the flight control system writes the surface but its chain
+    /// is not followed (the component named).
+    pub note: Option<String>,
     /// Whether the variable is the normalised travel (no angle known).
     pub per_unit_travel: bool,
 }
@@ -140,90 +173,105 @@ impl Surface {
     }
 }
 
-/// The surfaces of `model` (whose file is at `path`): ranges from its flight control system.
-pub fn surfaces(model: &Model, path: &Path) -> Vec<Surface> {
-    Control::ALL
+/// The surfaces of `model` (whose file is at `path`): their travel from its flight control
+/// system. An error names a system file the model references that is missing or unreadable.
+pub fn surfaces(model: &Model, path: &Path) -> Result<Vec<Surface>, String> {
+    let fcs = Fcs::read(&system_files(path)?);
+    Ok(Control::ALL
         .iter()
         .map(|&control| {
-            let range = range(path, control.rad_property());
-            let reads = |form: Form| {
-                control
+            let reads = |name: &str| model.functions.symbols.get(name).is_some();
+            let (range, note) = match travel(&fcs, control, &reads) {
+                Some(Ok(r)) => (Some(r), None),
+                Some(Err(why)) => (None, Some(why)),
+                None => (None, None),
+            };
+            // Without an angle written by the flight control system the travel is the
+            // variable; an angle form the aerodynamics also read stays at zero, as in JSBSim.
+            let per_unit_travel = range.is_none()
+                && note.is_none()
+                && control
                     .properties()
                     .iter()
-                    .any(|(n, f, _)| *f == form && model.functions.symbols.get(n).is_some())
-            };
-            // Without a range the angle and the travel are unrelated (JSBSim's flight control
-            // system then writes one of them only): the travel is the variable, and an angle
-            // form the aerodynamics also read stays at zero, as in JSBSim.
-            let per_unit_travel = range.is_none() && reads(Form::Norm);
+                    .any(|(n, f, _)| *f == Form::Norm && reads(n));
             Surface {
                 control,
                 range,
+                note,
                 per_unit_travel,
             }
         })
-        .collect()
+        .collect())
 }
 
-/// The files that may hold the flight control system: the model and its `Systems/*.xml`.
-fn system_files(path: &Path) -> Vec<std::path::PathBuf> {
-    let mut files = vec![path.to_path_buf()];
-    if let Some(dir) = path.parent() {
-        for sub in ["Systems", "systems"] {
-            let mut more: Vec<_> = std::fs::read_dir(dir.join(sub))
-                .into_iter()
-                .flatten()
-                .flatten()
-                .map(|e| e.path())
-                .filter(|p| p.extension().is_some_and(|e| e == "xml"))
-                .collect();
-            more.sort();
-            files.extend(more);
-        }
+/// The pilot's command of a control.
+pub fn command(control: Control) -> &'static str {
+    match control {
+        Control::Aileron => "fcs/aileron-cmd-norm",
+        Control::Elevator => "fcs/elevator-cmd-norm",
+        Control::Rudder => "fcs/rudder-cmd-norm",
     }
-    files
 }
 
-/// The range of the component whose `<output>` is `property`: its `<range>` (aerosurface_scale)
-/// or `<clipto>` with numeric `<min>` and `<max>`.
-pub fn range(path: &Path, property: &str) -> Option<Range> {
-    for file in system_files(path) {
-        let Ok(text) = std::fs::read_to_string(&file) else {
-            continue;
-        };
-        let Ok(doc) = roxmltree::Document::parse(&text) else {
-            continue;
-        };
-        for out in doc.descendants().filter(|n| n.has_tag_name("output")) {
-            if out.text().map(str::trim) != Some(property) {
-                continue;
-            }
-            let Some(component) = out.parent_element() else {
-                continue;
-            };
-            for limits in ["range", "clipto"] {
-                let Some(r) = child(component, limits) else {
-                    continue;
-                };
-                let num = |n: &str| child(r, n).and_then(|c| parse_number(c.text()?.trim()));
-                if let (Some(min), Some(max)) = (num("min"), num("max")) {
-                    if min <= 0.0 && max > 0.0 {
-                        let name = component
-                            .attribute("name")
-                            .unwrap_or(component.tag_name().name());
-                        return Some(Range {
-                            min,
-                            max,
-                            source: format!(
-                                "{} <{}> \"{name}\" <{limits}>",
-                                file.display(),
-                                component.tag_name().name()
-                            ),
-                        });
-                    }
-                }
-            }
-        }
-    }
-    None
+/// The position property whose travel is read: an angle form (rad or deg, JSBSim's sign) that
+/// the flight control system writes, one the aerodynamics read first.
+pub fn position(
+    fcs: &Fcs,
+    control: Control,
+    reads: &dyn Fn(&str) -> bool,
+) -> Option<(&'static str, Form)> {
+    let angles: Vec<(&'static str, Form)> = control
+        .properties()
+        .into_iter()
+        .filter(|(_, f, sign)| matches!(f, Form::Rad | Form::Deg) && *sign > 0.0)
+        .map(|(n, f, _)| (n, f))
+        .filter(|(n, _)| fcs.writers.contains_key(*n))
+        .collect();
+    angles
+        .iter()
+        .find(|(n, _)| reads(n))
+        .or(angles.first())
+        .copied()
+}
+
+/// The travel of `control` at full command, `None` when the flight control system writes no
+/// angle of it, an error naming the component where the chain is not followed.
+pub fn travel(
+    fcs: &Fcs,
+    control: Control,
+    reads: &dyn Fn(&str) -> bool,
+) -> Option<Result<Range, String>> {
+    let (property, form) = position(fcs, control, reads)?;
+    let cmd = command(control);
+    let at = |v: f64| {
+        fcs.value(property, &[(cmd, v)]).map(|x| match form {
+            Form::Deg => x.to_radians(),
+            _ => x,
+        })
+    };
+    let ends = at(1.0).and_then(|p| Ok((p, at(-1.0)?)));
+    let not_followed = |why: String| {
+        format!(
+            "no {} limit: the chain from {cmd} to {property} is not followed: {why}",
+            control.name()
+        )
+    };
+    Some(match ends {
+        Err(why) => Err(not_followed(why)),
+        Ok((plus, minus)) if plus.min(minus) >= 0.0 || plus.max(minus) <= 0.0 => Err(format!(
+            "no {} limit: {cmd} does not move {property} to both sides of neutral ({plus:.6} \
+             rad at +1, {minus:.6} rad at -1)",
+            control.name()
+        )),
+        Ok((plus, minus)) => Ok(Range {
+            min: plus.min(minus),
+            max: plus.max(minus),
+            at_plus: plus,
+            at_minus: minus,
+            source: format!(
+                "{cmd} -> {property} through {}",
+                fcs.chain(property).join(" <- ")
+            ),
+        }),
+    })
 }

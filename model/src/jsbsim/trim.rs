@@ -403,11 +403,14 @@ mod tests {
         let surface = |control, range| Surface {
             control,
             range,
+            note: None,
             per_unit_travel: false,
         };
         let elevator = Range {
             min: -0.3,
             max: 0.25,
+            at_plus: 0.25,
+            at_minus: -0.3,
             source: "the test".to_string(),
         };
         let setup = Setup {

@@ -254,33 +254,44 @@ impl Import<'_> {
         for s in self.surfaces.iter().filter(|s| s.per_unit_travel) {
             let _ = writeln!(t, "# The {} is given only as normalised travel: its derivatives are per unit travel, no limit.", s.control.name());
         }
+        for note in self.surfaces.iter().filter_map(|s| s.note.as_ref()) {
+            let _ = writeln!(t, "# Warning: {note}.");
+        }
         if known.is_empty() {
             return;
         }
         let _ = writeln!(t, "\n[limits]");
-        let _ = writeln!(
-            t,
-            "# Deflection limits, deg: the smaller end of the flight control system's range."
-        );
+        t.push_str(LIMITS);
         for s in known {
             let r = s.range.as_ref().expect("known");
+            let end = if r.at_plus == -r.at_minus {
+                "both ends equal".to_string()
+            } else {
+                format!(
+                    "the limit is the smaller end, at {:+}",
+                    r.limiting_command()
+                )
+            };
             let _ = writeln!(
                 t,
-                "# {}: {:.4} to {:.4} rad, from {}",
+                "# {}: {:.4} deg at command +1, {:.4} deg at -1 ({end}); {}",
                 s.control.name(),
-                r.min,
-                r.max,
+                r.at_plus.to_degrees(),
+                r.at_minus.to_degrees(),
                 r.source
             );
-            let _ = writeln!(
-                t,
-                "{} = {}",
-                s.control.name(),
-                num((-r.min).min(r.max).to_degrees())
-            );
+            let _ = writeln!(t, "{} = {}", s.control.name(), num(r.limit().to_degrees()));
         }
     }
 }
+
+/// How the limits were read, for the head of `[limits]`.
+const LIMITS: &str = "\
+# Deflection limits, deg, as JSBSim moves the surfaces: the position the flight control
+# system settles at with the pilot's command (fcs/*-cmd-norm) at +1 and at -1, trims neutral,
+# wings level, no rates, no sideslip. The analysis takes one limit on |deflection|: the
+# smaller end, the travel the surface reaches to either side.
+";
 
 /// A list for a comment.
 fn list(items: &[String]) -> String {

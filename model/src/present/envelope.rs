@@ -79,8 +79,8 @@ pub fn cell(x: Option<f64>, digits: usize) -> String {
     x.map_or("-".to_string(), |v| fixed(v, digits))
 }
 
-/// The first departure's kind at `p`: `jump`, `hopf`, `none` (stable throughout), or `-` where
-/// there is no analysis.
+/// The first departure's kind at `p`: `unstable_trim` (at P0 = 0), `jump`, `hopf`, `none` (stable
+/// throughout), or `-` where there is no analysis.
 pub fn departure_kind(p: &Point) -> &'static str {
     match (&p.first_departure, p.route) {
         (Some(d), _) => d.kind,
@@ -128,5 +128,17 @@ pub fn text(env: &Envelope) -> String {
             .filter(|p| p.margin_deg.is_some_and(|m| m >= 0.0))
             .count()
     );
+    let unstable = env
+        .points
+        .iter()
+        .filter(|p| departure_kind(p) == "unstable_trim")
+        .count();
+    if unstable > 0 {
+        s += &format!(
+            "{unstable} with an unstable trim at P0 = 0 (first_departure unstable_trim): the bare \
+             airframe needs its stability augmentation there, and their jump figures describe an \
+             airframe that cannot hold the trim unaided\n"
+        );
+    }
     s + &super::envelope_clearance::text(env)
 }

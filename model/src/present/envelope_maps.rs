@@ -2,7 +2,7 @@
 //! point, each drawn as a band of its colour ([`crate::plot`] draws polylines and markers, so a
 //! cell is a line as wide as the cell, as thick as its row, which the legend shows as a filled
 //! box). The critical aileron and the critical roll rate in eight colour bands, and the first
-//! departure's kind as a region map.
+//! departure's kind as a region map (an unstable trim at P0 = 0, a jump, a Hopf point, none).
 //!
 //! On the critical aileron map, the aileron-limit contour is drawn: the line where the margin
 //! (aileron limit minus |critical delta_a|) is zero, by marching squares over the grid's
@@ -23,6 +23,8 @@ use crate::plot::{Axis, Dash, Figure, LegendPlace, Line, Marker, Panel, PlotStyl
 const EMPTY: Rgb = Rgb(215, 215, 215);
 /// Dark grey of cells without a trim.
 const UNTRIMMED: Rgb = Rgb(110, 110, 110);
+/// Purple of cells whose trim at P0 = 0 is unstable (the bare airframe needs its augmentation).
+const UNSTABLE_TRIM: Rgb = Rgb(120, 40, 150);
 /// The number of colour bands of a heat map.
 const BANDS: usize = 8;
 
@@ -194,13 +196,18 @@ fn margins(env: &Envelope) -> Field {
     Field { xs, ys, values }
 }
 
-/// The region map of the first departure's kind.
+/// The region map of the first departure's kind, an unstable trim at P0 = 0 its own class.
 pub fn departure_regions(env: &Envelope, style: &PlotStyle) -> Figure {
     let title = format!("{}: first departure on the primary branch", env.source);
     cells(env, title, style, &|p| match departure_kind(p) {
-        "jump" => (Rgb::RED, "jump".to_string(), 0),
-        "hopf" => (Rgb::ORANGE, "Hopf (oscillation)".to_string(), 1),
-        "none" => (Rgb::GREEN, "none: stable throughout".to_string(), 2),
+        "unstable_trim" => (
+            UNSTABLE_TRIM,
+            "unstable trim (bare airframe)".to_string(),
+            0,
+        ),
+        "jump" => (Rgb::RED, "jump".to_string(), 1),
+        "hopf" => (Rgb::ORANGE, "Hopf (oscillation)".to_string(), 2),
+        "none" => (Rgb::GREEN, "none: stable throughout".to_string(), 3),
         _ => missing(p),
     })
 }

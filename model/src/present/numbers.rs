@@ -11,6 +11,7 @@
 //! assert_eq!(list(&[], 6, "rad/s"), "none");
 //! ```
 
+use crate::analysis::unstable_trim::{significant, UnstableTrim};
 use crate::analysis::{Analysis, DeparturePoint, HopfPoint, JumpPoint};
 
 /// `x` with `digits` decimals, never `-0.0000` (a value that rounds to zero prints as zero).
@@ -32,14 +33,18 @@ pub fn list(v: &[f64], digits: usize, unit: &str) -> String {
     }
 }
 
-/// Which instability the primary branch meets first (a jump, or a Hopf point with its
-/// frequency, first Lyapunov coefficient and kind) and where a jump lands, as `analyze` prints
-/// it and the summary repeats it: lines ending in a blank line.
+/// Which instability the primary branch meets first (an unstable trim at its start with its
+/// unstable modes, a jump, or a Hopf point with its frequency, first Lyapunov coefficient and
+/// kind) and where a jump lands, as `analyze` prints it and the summary repeats it: lines
+/// ending in a blank line.
 pub fn first_departure_text(a: &Analysis) -> String {
     let Some(f) = &a.first_departure else {
         return "First loss of stability on the primary branch: none within the aileron range.\n\n"
             .into();
     };
+    if let Some(u) = &f.unstable_trim {
+        return unstable_trim_text(u);
+    }
     let mut s = format!(
         "First loss of stability on the primary branch: {} at P0 = {} rad/s, delta_a = {} deg",
         if f.kind == "jump" { "JUMP" } else { "HOPF" },
@@ -67,6 +72,41 @@ pub fn first_departure_text(a: &Analysis) -> String {
                 fixed(e.beta.to_degrees(), 4)
             );
         }
+    }
+    s + "\n"
+}
+
+/// The unstable start of the primary branch: the bare airframe cannot hold the trim, each
+/// unstable mode with its eigenvalue, time to double (or frequency) and cause.
+fn unstable_trim_text(u: &UnstableTrim) -> String {
+    let mut s = format!(
+        "First loss of stability on the primary branch: UNSTABLE TRIM at its start, P0 = 0, \
+         delta_a = 0 (alpha = {} deg, q = {} rad/s)\n  the bare airframe is unstable at this \
+         flight state and needs its stability augmentation: the jump and Hopf figures of this \
+         analysis describe an airframe that cannot hold the trim unaided\n",
+        fixed(u.alpha.to_degrees(), 4),
+        fixed(u.q, 5)
+    );
+    for m in &u.modes {
+        let eigenvalue = if m.eigenvalue_im == 0.0 {
+            format!(
+                "eigenvalue {} 1/s, time to double {} s",
+                significant(m.eigenvalue_re),
+                significant(std::f64::consts::LN_2 / m.eigenvalue_re)
+            )
+        } else {
+            format!(
+                "eigenvalues {} +- {} i 1/s, period {} s",
+                significant(m.eigenvalue_re),
+                significant(m.eigenvalue_im),
+                significant(2.0 * std::f64::consts::PI / m.eigenvalue_im)
+            )
+        };
+        s += &format!("  {} {}: {eigenvalue}", m.subsystem, m.motion);
+        if let Some(c) = &m.cause {
+            s += &format!("\n    {c}");
+        }
+        s += "\n";
     }
     s + "\n"
 }

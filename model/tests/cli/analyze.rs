@@ -269,3 +269,121 @@ fn a_tiny_elevator_withholds_the_zero_sideslip_section_only() {
         .unwrap()
         .is_empty());
 }
+
+/// The unstable mode `analyze --json` reports for the file `path` at delta_e = 0, after checking
+/// that it is the only one and the first departure is the unstable trim at P0 = 0.
+fn unstable_mode(path: &std::path::Path) -> serde_json::Value {
+    let v = json(&model(&[
+        "analyze",
+        path.to_str().unwrap(),
+        "--json",
+        "--delta-e-deg",
+        "0",
+    ]));
+    let f = &v["first_departure"];
+    assert_eq!(f["kind"], "unstable_trim", "{f}");
+    assert_eq!(
+        (f["p0"].as_f64(), f["delta_a_deg"].as_f64()),
+        (Some(0.0), Some(0.0))
+    );
+    let modes = f["unstable_trim"]["modes"].as_array().unwrap();
+    assert_eq!(modes.len(), 1, "{f}");
+    modes[0].clone()
+}
+
+/// Aircraft A with m_alpha > 0: at delta_e = 0 the trim at P0 = 0 is the origin, where J5 splits
+/// into the pitch block [[z_alpha, 1], [m_alpha, m_q]] and A's lateral block. With z_alpha =
+/// m_q = -1 and m_alpha = 5 the pitch block's characteristic polynomial is s^2 + 2 s - 4
+/// (determinant z_alpha m_q - m_alpha = -4 < 0), roots -1 +- sqrt(5): one real root sqrt(5) - 1
+/// = 1.2361 > 0, a static pitch divergence. A's lateral block is stable there (a1 = 22.07,
+/// a2 = 10.62, a3 = 81.1: a1 a2 > a3), so that is the only unstable mode.
+#[test]
+fn an_aircraft_with_m_alpha_above_z_alpha_m_q_departs_at_its_trim_in_pitch() {
+    let (dir, path) = variant(
+        "pitch-unstable",
+        &[
+            ("z_alpha = -3.0076", "z_alpha = -1.0"),
+            ("m_q = -1.815", "m_q = -1.0"),
+            ("m_alpha = -13.52504", "m_alpha = 5.0"),
+        ],
+    );
+    let m = unstable_mode(&path);
+    let want = 5f64.sqrt() - 1.0;
+    assert!(
+        (m["eigenvalue_re"].as_f64().unwrap() - want).abs() < 1e-12,
+        "{m}"
+    );
+    assert_eq!(m["eigenvalue_im"].as_f64(), Some(0.0));
+    assert_eq!(
+        (&m["motion"], &m["subsystem"]),
+        (&"divergence".into(), &"pitch".into())
+    );
+    let cause = m["cause"].as_str().unwrap();
+    assert!(
+        cause.starts_with("static pitch instability: m_alpha = 5.000"),
+        "{cause}"
+    );
+    assert!(cause.contains("z_alpha m_q - m_alpha = -4.000"), "{cause}");
+
+    let out = model(&["analyze", path.to_str().unwrap(), "--delta-e-deg", "0"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("First loss of stability on the primary branch: UNSTABLE TRIM")
+            && text.contains("needs its stability augmentation")
+            && text.contains("pitch divergence: eigenvalue 1.236 1/s"),
+        "{text}"
+    );
+    // The jump and Hopf sections stay: they describe the airframe once it is held at its trim.
+    assert!(
+        text.contains("Jump points") && text.contains("Hopf points"),
+        "{text}"
+    );
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+/// Aircraft A with n_beta < 0: at the origin n_p = 0 and alpha0 = 0, so neither beta nor r
+/// depends on p and the lateral block's roots are l_p and those of the directional subsystem
+/// [[y_beta, -1], [n_beta, n_r]]: s^2 - (y_beta + n_r) s + (y_beta n_r + n_beta), determinant
+/// 0.01455 - 3.716 < 0, one real root > 0: a directional divergence.
+#[test]
+fn an_aircraft_with_negative_n_beta_departs_at_its_trim_laterally() {
+    let (dir, path) = variant("directional", &[("n_beta = 3.716", "n_beta = -3.716")]);
+    let m = unstable_mode(&path);
+    let (y_beta, n_r, n_beta): (f64, f64, f64) = (-0.0558, -0.2608, -3.716);
+    let (trace, det) = (y_beta + n_r, y_beta * n_r + n_beta);
+    let want = (trace + (trace * trace - 4.0 * det).sqrt()) / 2.0;
+    assert!(
+        (m["eigenvalue_re"].as_f64().unwrap() - want).abs() < 1e-9,
+        "{m} vs {want}"
+    );
+    assert_eq!(
+        (&m["motion"], &m["subsystem"]),
+        (&"divergence".into(), &"lateral-directional".into())
+    );
+    let cause = m["cause"].as_str().unwrap();
+    assert!(
+        cause.starts_with("lateral-directional divergence")
+            && cause.contains("roll damping times the directional subsystem"),
+        "{cause}"
+    );
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+/// The paper's aircraft start from a stable trim: their first departure is the critical jump
+/// of the paper (Fig. 7 for A, Fig. 8 for B), as before.
+#[test]
+fn the_paper_aircraft_first_depart_by_their_critical_jump() {
+    for (name, p0, delta_a) in [
+        ("A", reference::A_JUMP_P0[0], reference::A_FOLD_DELTA_A_DEG),
+        ("B", reference::B_JUMP_P0[0], reference::B_FOLD_DELTA_A_DEG),
+    ] {
+        let f = json(&model(&["analyze", name, "--json"]))["first_departure"].clone();
+        assert_eq!(f["kind"], "jump", "{name}: {f}");
+        assert!(f.get("unstable_trim").is_none(), "{name}: {f}");
+        assert!((f["p0"].as_f64().unwrap() - p0).abs() < 1e-6, "{name}: {f}");
+        assert!(
+            (f["delta_a_deg"].as_f64().unwrap() - delta_a).abs() < 1e-4,
+            "{name}: {f}"
+        );
+    }
+}

@@ -5,6 +5,8 @@
 
 #![allow(dead_code)]
 
+pub mod oracle;
+
 use model::aircraft::{Aircraft, Param};
 use model::analysis::{Analysis, JumpPoint};
 use num_rational::BigRational;
@@ -31,38 +33,6 @@ pub fn jsbsim_installed() -> bool {
         eprintln!("skipped: the JSBSim models are not installed (pip install jsbsim)");
     }
     found
-}
-
-/// The JSON lines printed by the Python oracle `tests/oracle/<script>` given `request` on its
-/// standard input (the last line of its output, the one JSON value it prints).
-pub fn python_oracle(script: &str, request: &serde_json::Value) -> Vec<serde_json::Value> {
-    use std::io::Write;
-    use std::process::{Command, Stdio};
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("oracle")
-        .join(script);
-    let mut child = Command::new("python3")
-        .arg(path)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("python3 runs");
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(request.to_string().as_bytes())
-        .unwrap();
-    let out = child.wait_with_output().unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "oracle {script} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let last = stdout.lines().last().expect("oracle output");
-    serde_json::from_str(last).expect("oracle JSON")
 }
 
 /// The number `v` of an oracle's output.

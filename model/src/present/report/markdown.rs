@@ -151,6 +151,7 @@ mod tests {
             l1: Some(-0.1746),
             hopf_kind: Some("supercritical"),
             lands_at: None,
+            unstable_trim: None,
         });
         let text = first_departure_text(&a);
         assert!(

@@ -1,4 +1,4 @@
-//! Benchmarks of the flight envelope: one grid point of the F-104 (the level-flight trim, the
+//! Benchmarks of the flight envelope: one grid point of the F-104 (the 1-g trim, the
 //! import there and the analysis of `analyze`), and the parts it is made of, so that points per
 //! second (one over the median of a point) can be quoted per part. Run with
 //! `cargo bench -p model --bench envelope`; nothing runs when the JSBSim models are not
@@ -7,7 +7,8 @@
 use model::envelope::source::Source;
 use model::envelope::{Elevator, Point};
 use model::jsbsim::condition::{Condition, Speed};
-use model::jsbsim::import::{level_flight, Loaded};
+use model::jsbsim::import::Loaded;
+use model::jsbsim::trim::trim;
 use std::sync::OnceLock;
 
 /// The command-line tool's allocator (model/src/main.rs).
@@ -36,11 +37,11 @@ fn point_f104_6000_m_mach_0_6() -> bool {
     })
 }
 
-/// The level-flight trim alone at the same point.
+/// The 1-g trim (alpha and elevator) alone at the same point.
 #[divan::bench(sample_count = 20)]
-fn level_flight_trim_f104_6000_m_mach_0_6() -> f64 {
+fn one_g_trim_f104_6000_m_mach_0_6() -> f64 {
     f104().map_or(0.0, |l| {
         let c = Condition::new(6000.0, Speed::Mach(0.6)).unwrap();
-        level_flight(&l.setup(c)).unwrap()
+        trim(&l.setup(c), 1.0).unwrap().alpha
     })
 }

@@ -10,7 +10,8 @@ use model::envelope::clearance::clear_point;
 use model::envelope::source::Source;
 use model::envelope::uncertainty::Uncertainty;
 use model::jsbsim::condition::{Condition, Speed};
-use model::jsbsim::import::{aircraft_file, level_flight, LEVEL_FLIGHT};
+use model::jsbsim::import::trimmed_file;
+use model::jsbsim::trim::trim;
 use std::sync::OnceLock;
 
 /// The command-line tool's allocator (model/src/main.rs).
@@ -21,15 +22,14 @@ fn main() {
     divan::main();
 }
 
-/// The F-104's file at 6,000 m, Mach 0.6 in level flight, imported once; `None` without the
+/// The F-104's file at 6,000 m, Mach 0.6 at its 1-g trim, imported once; `None` without the
 /// JSBSim models.
 fn f104() -> Option<&'static str> {
     static TEXT: OnceLock<Option<String>> = OnceLock::new();
     TEXT.get_or_init(|| {
         let loaded = Source::parse("jsbsim:f104").ok()?.load().ok()?;
         let setup = loaded.setup(Condition::new(6000.0, Speed::Mach(0.6)).ok()?);
-        let alpha = level_flight(&setup).ok()?;
-        aircraft_file(&setup, alpha, LEVEL_FLIGHT).ok()
+        trimmed_file(&setup, &trim(&setup, 1.0).ok()?).ok()
     })
     .as_deref()
 }

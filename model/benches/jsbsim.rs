@@ -3,7 +3,7 @@
 //! `cargo bench -p model --bench jsbsim`; the models are found as `model import jsbsim` finds
 //! them (`JSBSIM_ROOT`, else the `jsbsim` Python package), and without them nothing is measured.
 //!
-//! - `import_f104`: read the XML, find level flight, differentiate, write the aircraft file;
+//! - `import_f104`: read the XML, trim at 1 g (alpha and elevator), differentiate, write the aircraft file;
 //! - `analyze_f104`: load that file and analyse it as `model analyze` does (the certified route
 //!   with departures, the exact path where it cannot certify: the F-104 has aileron yaw);
 //! - `import_and_analyze_f104`: both, the figure of "import plus analyze of one model";
@@ -37,7 +37,7 @@ fn request() -> Request {
         root: None,
         altitude_m: 6096.0,
         speed: Speed::Mach(0.53),
-        alpha: Alpha::LevelFlight,
+        alpha: Alpha::Trim(1.0),
         settings: Vec::new(),
     }
 }

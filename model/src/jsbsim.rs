@@ -27,6 +27,7 @@ pub mod surfaces;
 pub mod systems;
 pub mod table;
 pub mod table_xml;
+pub mod trim;
 pub mod units;
 pub mod write;
 pub mod xml;

@@ -27,8 +27,9 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
     about = "Roll-coupling jump criterion (Mahale & Ananthkrishnan, AIAA 2006-6267)",
     after_help = "AIRCRAFT is `A` or `B` (the paper's aircraft, any case) or else the path of an \
                   aircraft TOML file (e.g. aircraft/c.toml); write ./A to read a file named A. \
-                  \"jsbsim:MODEL --altitude-m H --mach M --level-flight\" (the arguments of \
-                  `import jsbsim`, quoted as one) imports a JSBSim model at that condition."
+                  \"jsbsim:MODEL --altitude-m H --mach M [--load-factor N]\" (the arguments of \
+                  `import jsbsim`, quoted as one) imports a JSBSim model at its n-g trim there \
+                  (default 1 g); for it, --delta-e-deg is the increment from the trim elevator."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -51,13 +52,14 @@ enum Command {
     Simulate(SimulateArgs),
     /// Certified clearance of the critical jump over the file's `[uncertainty]` box.
     Clear(ClearArgs),
-    /// The analysis at every altitude and Mach of a grid, each point trimmed in level flight:
+    /// The analysis at every altitude and Mach of a grid, each point at its n-g trim (1 g unless
+    /// --load-factor):
     /// critical jump, first departure and margin to the aileron limit, as a table, JSON or maps.
     Envelope(EnvelopeArgs),
     /// Print the dimensional principal-axis TOML equivalent to a nondimensional body-axis file.
     Convert(ConvertArgs),
     /// Write an aircraft file from another tool's model: `import jsbsim <MODEL> --altitude-m H
-    /// (--mach M | --speed V) (--alpha-deg A | --level-flight) [--set PROPERTY=VALUE]...
+    /// (--mach M | --speed V) [--load-factor N | --alpha-deg A] [--set PROPERTY=VALUE]...
     /// [--out FILE] [--jsbsim-root DIR]`, or `import jsbsim --list`.
     #[command(disable_help_flag = true)]
     Import {

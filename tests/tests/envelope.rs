@@ -1,15 +1,15 @@
 //! `model envelope` against the path a user takes by hand: at grid points chosen by a seeded
-//! generator, the envelope's numbers equal those of `import jsbsim ... --level-flight` followed
-//! by `analyze` (the certified route with its exact fallback, as the CLI's table) at that flight
-//! condition, and the elevator increment for a load factor equals the pitch equilibrium at
-//! `p = 0` solved by hand. Bad ranges are refused before any work, and `--json` has the shape
-//! the documentation gives. Skipped with a message when the JSBSim models are not installed.
+//! generator, the envelope's numbers equal those of `import jsbsim ... --load-factor N` followed
+//! by `analyze` at the elevator increment (the certified route with its exact fallback, as the
+//! CLI's table) at that flight condition, and the catalogue table's row agrees with the
+//! envelope's point at the same condition. Bad ranges are refused before any work, and `--json`
+//! has the shape the documentation gives. Skipped with a message when the JSBSim models are not
+//! installed.
 
-use model::aircraft::{self, Param};
+use model::aircraft;
 use model::analysis::fast::analyze_routed_with;
 use model::envelope::source::Source;
 use model::envelope::{envelope, Elevator, Grid, Range};
-use model::equations::G;
 use model::jsbsim::catalogue;
 use model::jsbsim::condition::Speed;
 use model::jsbsim::import::{import, Alpha, Request};
@@ -44,7 +44,8 @@ fn installed() -> bool {
     found
 }
 
-/// The F-104's envelope at 0.5 g (a push) against import + analyze at five random grid points.
+/// The F-104's envelope trimmed at 0.5 g (a push), elevator increment 0.5 deg, against import
+/// at the same trim + analyze at the same increment, at five random grid points.
 #[test]
 fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
     if !installed() {
@@ -57,11 +58,16 @@ fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
     )
     .unwrap();
     let n = 0.5;
+    let increment = 0.5f64.to_radians();
+    let elevator = Elevator {
+        load_factor: n,
+        increment,
+    };
     let env = envelope(
         &source.load().unwrap(),
         "jsbsim:f104",
         &grid,
-        Elevator::LoadFactor(n),
+        elevator,
         &|_| {},
     );
     assert_eq!(env.points.len(), 42);
@@ -74,7 +80,7 @@ fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
             root: None,
             altitude_m: p.altitude_m,
             speed: Speed::Mach(p.mach),
-            alpha: Alpha::LevelFlight,
+            alpha: Alpha::Trim(n),
             settings: Vec::new(),
         };
         let text = match import(&request) {
@@ -88,13 +94,9 @@ fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
         let ac = aircraft::parse(&text, "jsbsim:f104").unwrap();
         assert!(p.trimmed);
         assert!((p.speed_m_s - ac.speed).abs() <= 1e-9 * ac.speed);
-        let v = |q| ac.value(q);
-        let per_rad = v(Param::ZAlpha) * v(Param::MDeltaE)
-            / (v(Param::MAlpha) - v(Param::Mq) * v(Param::ZAlpha));
-        let delta_e = p.delta_e_deg.unwrap().to_radians();
-        let q0 = (n - 1.0) * G / ac.speed;
-        assert!((per_rad * delta_e / q0 - 1.0).abs() < 1e-9, "{p:?}");
-        let (a, _) = analyze_routed_with(&ac, delta_e, true).unwrap();
+        assert_eq!(p.delta_e_deg, Some(increment.to_degrees()));
+        assert_eq!(p.load_factor, n);
+        let (a, _) = analyze_routed_with(&ac, increment, true).unwrap();
         let critical = a.critical.as_ref();
         let envelope_critical = p.critical.as_ref();
         assert_eq!(critical.map(|c| c.p0), envelope_critical.map(|c| c.p0));
@@ -143,7 +145,7 @@ fn bad_ranges_are_refused_before_any_work() {
 }
 
 /// `--json` prints one object whose `points` carry the documented keys, with no number that is
-/// not finite; a point without level flight says why.
+/// not finite; a point without a trim says which limit.
 #[test]
 fn json_has_one_entry_per_point_with_the_documented_keys() {
     if !installed() {
@@ -162,7 +164,9 @@ fn json_has_one_entry_per_point_with_the_documented_keys() {
         "altitude_m",
         "mach",
         "speed_m_s",
+        "load_factor",
         "alpha_deg",
+        "elevator_trim_deg",
         "delta_e_deg",
         "trimmed",
         "critical",
@@ -177,10 +181,15 @@ fn json_has_one_entry_per_point_with_the_documented_keys() {
         }
         if p["trimmed"] == Value::Bool(false) {
             assert!(
-                p["reason"].as_str().unwrap().contains("level flight"),
+                p["reason"]
+                    .as_str()
+                    .unwrap()
+                    .starts_with("untrimmable at n = 1: "),
                 "{p}"
             );
             assert!(p["critical"].is_null());
+        } else if p["critical"].is_null() {
+            assert!(p["critical_note"].is_string(), "{p}");
         } else {
             let c = &p["critical"];
             assert!(c["p0"].is_f64() && c["delta_a_deg"].is_f64(), "{p}");
@@ -189,7 +198,66 @@ fn json_has_one_entry_per_point_with_the_documented_keys() {
     }
     let text = String::from_utf8(out).unwrap();
     assert!(!text.contains("NaN") && !text.contains("inf"));
-    assert_eq!(v["untrimmed"], 1, "{text}");
+    // 12,000 m: at Mach 0.3 no lift solution up to 30 deg alpha, at Mach 0.6 the trim needs
+    // more nose-up elevator (-23.2 deg) than the stabilator's travel (-20.05 deg).
+    assert_eq!(v["untrimmed"], 2, "{text}");
+    assert!(text.contains("no lift solution") && text.contains("beyond its travel"));
+}
+
+/// The catalogue table (`import jsbsim --list --analyze`) and the envelope use the same trim
+/// (1 g unless `--load-factor`) and the same elevator (increment 0 from it): the F-104's row
+/// and the envelope's point at the same condition give the same critical jump (or the same
+/// reason for none) and the same first departure, to the digits the row prints. At 1 g the
+/// F-104 jumps only low and fast; unloaded (0 g) it jumps or meets a Hopf point first.
+#[test]
+fn the_catalogue_row_and_the_envelope_point_agree_at_the_same_condition() {
+    if !installed() {
+        return;
+    }
+    let source = Source::parse("jsbsim:f104").unwrap();
+    let loaded = source.load().unwrap();
+    for (h, mach, n) in [
+        (0.0, 0.8, 1.0),
+        (6000.0, 0.6, 1.0),
+        (6000.0, 0.9, 0.0),
+        (4000.0, 0.5, 0.0),
+    ] {
+        let elevator = Elevator {
+            load_factor: n,
+            increment: 0.0,
+        };
+        let point = model::envelope::Point::at(&loaded, "f104", h, mach, elevator);
+        let spec = format!("jsbsim:f104 --altitude-m {h} --mach {mach} --load-factor {n}");
+        let row = model::present::catalogue::row("f104", &model::jsbsim::cli::source(&spec));
+        let cells = match point.critical.as_ref() {
+            Some(c) => format!(
+                "| {:.4} | {:.2} | {} |",
+                c.p0,
+                c.delta_a_deg,
+                if c.within_limits == Some(true) {
+                    "yes"
+                } else {
+                    "no"
+                }
+            ),
+            None => format!(
+                "| none: {}",
+                point.critical_note.as_deref().unwrap().replace('|', "\\|")
+            ),
+        };
+        assert!(
+            row.contains(&cells),
+            "{h} m, Mach {mach}, {n} g: {row} vs {cells}"
+        );
+        let first = match point.first_departure.as_ref() {
+            Some(d) => format!("| {} | {:.4} | {:.2} |", d.kind, d.p0, d.delta_a_deg),
+            None => "| none within the aileron range |".to_string(),
+        };
+        assert!(
+            row.contains(&first),
+            "{h} m, Mach {mach}, {n} g: {row} vs {first}"
+        );
+    }
 }
 
 /// `--out` writes the CSV (one row per point), the summaries and the three maps.
@@ -206,6 +274,7 @@ fn out_writes_the_csv_the_summaries_and_the_maps() {
     command(&a, &mut out).unwrap();
     let csv = std::fs::read_to_string(dir.join("envelope.csv")).unwrap();
     assert_eq!(csv.lines().count(), 5, "{csv}");
+    assert!(csv.starts_with("altitude_m,mach,speed_m_s,trimmed,alpha_deg,elevator_trim_deg,"));
     for stem in ["critical_aileron", "critical_roll_rate", "first_departure"] {
         for ext in ["svg", "png", "csv"] {
             assert!(dir.join(format!("{stem}.{ext}")).is_file(), "{stem}.{ext}");
@@ -217,8 +286,8 @@ fn out_writes_the_csv_the_summaries_and_the_maps() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// The F-104's envelope written by `--out` to a scratch folder: the map's files and the
-/// envelope's CSV, read back.
+/// The F-104's envelope trimmed at 0 g (the unloaded roll) written by `--out` to a scratch
+/// folder: the map's files and the envelope's CSV, read back.
 struct Written {
     svg: String,
     map_csv: String,
@@ -230,6 +299,7 @@ fn written(altitude_m: &str, mach: &str, name: &str) -> Written {
     let mut a = args("jsbsim:f104", altitude_m, mach);
     a.json = false;
     a.out = Some(dir.clone());
+    a.load_factor = Some(0.0);
     command(&a, &mut Vec::new()).unwrap();
     let read = |f: &str| std::fs::read_to_string(dir.join(f)).unwrap();
     let w = Written {
@@ -248,7 +318,7 @@ fn margins_of(csv: &str) -> Vec<(f64, f64, f64)> {
         .map(|row| {
             let f: Vec<&str> = row.split(',').collect();
             let num = |k: usize| f[k].parse::<f64>().unwrap();
-            (num(1), num(0), num(10))
+            (num(1), num(0), num(11))
         })
         .collect()
 }
@@ -288,8 +358,9 @@ fn the_critical_aileron_map_draws_the_aileron_limit_contour_where_the_margin_cha
     if !installed() {
         return;
     }
-    // At 6,000 and 7,000 m a full-stick roll of the F-104 jumps from about Mach 0.6 up.
-    let w = written("6000:7000:1000", "0.5:0.7:0.1", "contour");
+    // At 6,000 and 7,000 m a full-stick unloaded roll of the F-104 jumps up to about Mach 0.8
+    // and not beyond.
+    let w = written("6000:7000:1000", "0.7:0.9:0.1", "contour");
     let margins = margins_of(&w.envelope_csv);
     assert_eq!(margins.len(), 6);
     assert!(margins.iter().any(|m| m.2 < 0.0) && margins.iter().any(|m| m.2 > 0.0));
@@ -307,7 +378,7 @@ fn the_critical_aileron_map_draws_the_aileron_limit_contour_where_the_margin_cha
         })
         .collect();
     assert!(contour.len() >= 2, "{}", w.map_csv);
-    let (machs, alts) = ([0.5, 0.6, 0.7], [6000.0, 7000.0]);
+    let (machs, alts) = ([0.7, 0.8, 0.9], [6000.0, 7000.0]);
     for &(x, y) in &contour {
         // The grid edge through (x, y): along an altitude row or a Mach column.
         let (a, b, t) = if alts.contains(&y) {
@@ -334,7 +405,8 @@ fn the_critical_aileron_map_draws_the_aileron_limit_contour_where_the_margin_cha
     );
     assert!(!contour_polylines(&w.svg).is_empty(), "no contour polyline");
 
-    // At 12,000 and 13,000 m no full-stick roll jumps between Mach 0.6 and 0.7.
+    // At 12,000 and 13,000 m between Mach 0.6 and 0.7 every full-stick unloaded roll reaches
+    // its critical aileron: the margin keeps its sign.
     let w = written("12000:13000:1000", "0.6:0.7:0.1", "no-contour");
     let margins = margins_of(&w.envelope_csv);
     assert!(

@@ -17,9 +17,9 @@ use model::jsbsim::Model;
 use model::random::Rng;
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
+use support::{f, jsbsim_coefficients, oracle_state};
 
-#[path = "support/oracle.rs"]
-mod oracle;
+mod support;
 
 /// Relative agreement required: both sides sum the same products of the same table lookups in
 /// double precision; what differs is the order of some operations (JSBSim interpolates a
@@ -35,7 +35,7 @@ fn root() -> Option<PathBuf> {
 }
 
 fn oracle(request: &Value) -> Vec<Value> {
-    serde_json::from_value(oracle::run("jsbsim_oracle.py", request)).expect("oracle JSON")
+    serde_json::from_value(support::oracle::run("jsbsim_oracle.py", request)).expect("oracle JSON")
 }
 
 /// Random states: altitude 5,000-40,000 ft, Mach 0.3-0.85, alpha -4..14 deg, beta -6..6 deg,
@@ -60,11 +60,6 @@ fn states(rng: &mut Rng, inputs: &[&str], n: usize) -> Vec<Value> {
             })
         })
         .collect()
-}
-
-fn f(v: &Value) -> f64 {
-    v.as_f64()
-        .unwrap_or_else(|| panic!("number expected, got {v}"))
 }
 
 /// The largest relative difference of `ours` from `theirs`, relative to `scale`.
@@ -207,49 +202,6 @@ fn forces_moments_and_mass_agree_with_jsbsim() {
     }
 }
 
-/// JSBSim's coefficients (CL, CD, CY, Cl, Cm, Cn) from its body forces and moments.
-fn jsbsim_coefficients(out: &Value, model: &Model) -> [f64; 6] {
-    let atm = &out["atmosphere"];
-    let (a, b) = (f(&atm["alpha"]), f(&atm["beta"]));
-    let qs = f(&atm["qbar"]) * model.metrics.wing_area;
-    let fb: Vec<f64> = out["forces"].as_array().unwrap().iter().map(f).collect();
-    let m: Vec<f64> = out["moments"].as_array().unwrap().iter().map(f).collect();
-    let wx = a.cos() * b.cos() * fb[0] + b.sin() * fb[1] + a.sin() * b.cos() * fb[2];
-    let wz = -a.sin() * fb[0] + a.cos() * fb[2];
-    let (s, c) = (model.metrics.span, model.metrics.chord);
-    [
-        -wz / qs,
-        -wx / qs,
-        fb[1] / qs,
-        m[0] / (qs * s),
-        m[1] / (qs * c),
-        m[2] / (qs * s),
-    ]
-}
-
-/// The oracle's description of `state` at `setup`'s condition: surfaces set as the import sets
-/// them, the clean configuration's zeros (`zeroed`, gear up among them) given to JSBSim too.
-fn oracle_state(setup: &Setup, state: &State, zeroed: &[String]) -> Value {
-    let mut set: serde_json::Map<String, Value> =
-        zeroed.iter().map(|n| (n.clone(), json!(0.0))).collect();
-    set.extend(
-        setup
-            .surfaces
-            .iter()
-            .zip(state.surfaces)
-            .flat_map(|(s, x)| s.values(x))
-            .filter_map(|(n, v)| v.map(|v| (n.to_string(), json!(v)))),
-    );
-    json!({
-        "h_ft": setup.condition.altitude_m / 0.3048,
-        "mach": setup.condition.mach,
-        "alpha_deg": state.alpha.to_degrees(),
-        "beta_deg": state.beta.to_degrees(),
-        "p": state.rates[0], "q": state.rates[1], "r": state.rates[2],
-        "set": set,
-    })
-}
-
 /// The import's derivatives against central differences taken in JSBSim (step 1e-4 in each
 /// variable, alpha-dot and beta-dot held at zero, the fed-back lift settled): the state
 /// construction, the rate scaling, the body-to-wind conversion and the aileron sign are checked
@@ -261,10 +213,14 @@ fn derivatives_agree_with_central_differences_in_jsbsim() {
         eprintln!("skipped: {}", catalogue::HOW_TO_GET);
         return;
     };
+    // An alpha given (elevator neutral, no pitch rate), or NaN for the 2-g trim (the trimmed
+    // alpha, elevator and pull-up pitch rate: the state the import differentiates at, which the
+    // file's derivatives must equal).
     for (name, altitude_m, mach, alpha_deg) in [
         ("f104", 6000.0, 0.5, 4.0f64),
         ("X15", 6096.0, 0.5, 3.0),
         ("T38", 3000.0, 0.6, 2.5),
+        ("f104", 3048.0, 0.9, f64::NAN),
     ] {
         let path = catalogue::model_path(Some(&root), name).unwrap();
         let model = Model::load(&path).unwrap();
@@ -274,13 +230,33 @@ fn derivatives_agree_with_central_differences_in_jsbsim() {
             surfaces: surfaces(&model, &path).unwrap(),
             settings: Vec::new(),
         };
-        let state = State {
-            alpha: alpha_deg.to_radians(),
-            beta: 0.0,
-            rates: [0.0; 3],
-            surfaces: [0.0; 3],
+        let state = if alpha_deg.is_nan() {
+            model::jsbsim::trim::trim(&setup, 2.0).unwrap().state()
+        } else {
+            State {
+                alpha: alpha_deg.to_radians(),
+                beta: 0.0,
+                rates: [0.0; 3],
+                surfaces: [0.0; 3],
+            }
         };
         let (base, ours) = derivatives(&setup, &state).unwrap();
+        if alpha_deg.is_nan() {
+            let text = import(&Request {
+                model: name.into(),
+                root: Some(root.clone()),
+                altitude_m,
+                speed: Speed::Mach(mach),
+                alpha: Alpha::Trim(2.0),
+                settings: Vec::new(),
+            })
+            .unwrap();
+            assert!(state.rates[1] > 0.0 && state.surfaces[1] < 0.0, "{state:?}");
+            for d in &ours {
+                let line = format!("\n{} = {:?}", d.key, d.value);
+                assert!(text.contains(&line), "{line} not in the file:\n{text}");
+            }
+        }
         let h = 1e-4;
         let mut states = Vec::new();
         for (_, _, variable, _) in DERIVATIVES {
@@ -325,7 +301,7 @@ fn imported_files_load_and_analyze() {
             root: Some(root.clone()),
             altitude_m: 6000.0,
             speed: Speed::Mach(0.5),
-            alpha: Alpha::LevelFlight,
+            alpha: Alpha::Trim(1.0),
             settings: Vec::new(),
         };
         let text = import(&request).unwrap_or_else(|e| panic!("{name}: {e}"));
@@ -334,7 +310,7 @@ fn imported_files_load_and_analyze() {
         let analysis = model::analysis::analyze(&aircraft, 2f64.to_radians());
         assert!(analysis.is_ok(), "{name}: analyze failed");
         let spec = format!(
-            "jsbsim:{name} --jsbsim-root {} --altitude-m 6000 --mach 0.5 --level-flight",
+            "jsbsim:{name} --jsbsim-root {} --altitude-m 6000 --mach 0.5",
             root.display()
         );
         let source = model::jsbsim::cli::source(&spec).unwrap();

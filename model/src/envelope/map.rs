@@ -15,9 +15,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 pub struct Envelope {
     /// The source as given.
     pub source: String,
-    /// How the elevator was chosen: `"load factor N g"` or `"increment D deg"`.
+    /// The trim and the elevator increment: `"trim at N g, increment D deg"`.
     pub elevator: String,
-    /// Points without level flight.
+    /// Points without a trim (untrimmable or outside the atmosphere).
     pub untrimmed: usize,
     /// Trimmed points the certified route could not answer, so the exact path did.
     pub exact_fallbacks: usize,
@@ -61,10 +61,7 @@ pub fn cleared_envelope(
         .collect();
     Envelope {
         source: source.to_string(),
-        elevator: match elevator {
-            Elevator::LoadFactor(n) => format!("load factor {n} g"),
-            Elevator::Increment(d) => format!("increment {} deg", d.to_degrees()),
-        },
+        elevator: elevator.to_string(),
         untrimmed: points.iter().filter(|p| !p.trimmed).count(),
         exact_fallbacks: points.iter().filter(|p| p.route == Some("exact")).count(),
         uncertainty: uncertainty.map(|u| u.spec.clone()),

@@ -1,10 +1,10 @@
 //! The flight envelope: the analysis of `model analyze` at every point of a grid of altitude
-//! and Mach, each point linearised about its own level-flight trim from a JSBSim model read
-//! once.
+//! and Mach, each point linearised about its own n-g trim (alpha and elevator) from a JSBSim
+//! model read once.
 //!
 //! Data flow: [`grid`] (the ranges, checked before any work) and [`source`] (the model and its
-//! settings) give the points; [`elevator`] turns the pilot's elevator (a load factor or an
-//! increment) into the paper's `delta_e` at each; [`point`] trims, imports and analyses one
+//! settings) give the points; [`elevator`] says the load factor of the trim and the elevator
+//! increment from it (the paper's `delta_e`); [`point`] trims, imports and analyses one
 //! point; [`map`] runs every point in parallel. With `--uncertainty`, [`uncertainty`] gives each
 //! point's aircraft its `[uncertainty]` box and [`clearance`] clears it.
 

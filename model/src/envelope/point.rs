@@ -1,7 +1,7 @@
-//! One point of an envelope: the level-flight trim at its altitude and Mach (alpha for lift
-//! equal to weight, surfaces neutral), the aircraft file the import writes there, and the
-//! analysis `model analyze` makes of it (the certified route, the exact path where a
-//! certificate fails) at the point's elevator increment.
+//! One point of an envelope: the n-g trim at its altitude and Mach (alpha and elevator for lift
+//! n times the weight and no pitching moment), the aircraft file the import writes there, and
+//! the analysis `model analyze` makes of it (the certified route, the exact path where a
+//! certificate fails) at the elevator increment from the trim.
 
 use super::clearance::{clear_point, PointClearance};
 use super::elevator::Elevator;
@@ -10,7 +10,8 @@ use crate::aircraft;
 use crate::analysis::fast::{analyze_routed_with, Route};
 use crate::analysis::{Analysis, FirstDeparture};
 use crate::jsbsim::condition::{Condition, Speed};
-use crate::jsbsim::import::{aircraft_file, level_flight, Loaded, LEVEL_FLIGHT};
+use crate::jsbsim::import::{trimmed_file, Loaded};
+use crate::jsbsim::trim::{trim, Trim};
 use serde::Serialize;
 
 /// The critical jump of a point, as `analyze` reports it.
@@ -33,14 +34,18 @@ pub struct Point {
     pub mach: f64,
     /// True airspeed, m/s.
     pub speed_m_s: f64,
-    /// The level-flight angle of attack, deg; `None` where there is none.
+    /// The load factor of the trim (lift over weight).
+    pub load_factor: f64,
+    /// The trim's angle of attack, deg; `None` where there is no trim.
     pub alpha_deg: Option<f64>,
-    /// The elevator increment analysed, deg (also where there is no trim, when it does not
-    /// depend on the trim); `None` where it could not be found.
+    /// The trim's elevator, deg (JSBSim's sign, positive trailing edge down; normalised travel
+    /// for a model that gives the elevator only as travel); `None` where there is no trim.
+    pub elevator_trim_deg: Option<f64>,
+    /// The elevator increment from the trim analysed (the paper's `delta_e`), deg.
     pub delta_e_deg: Option<f64>,
-    /// Whether level flight exists here.
+    /// Whether the trim exists here.
     pub trimmed: bool,
-    /// Why not, when not trimmed.
+    /// Why not, when not trimmed (the limit that makes it untrimmable).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reason: Option<String>,
     /// Why a trimmed point has no analysis (import or analysis refused).
@@ -72,13 +77,15 @@ pub struct Point {
 
 impl Point {
     /// A point at `altitude_m`, `mach` and `speed_m_s` with nothing found yet.
-    fn empty(altitude_m: f64, mach: f64, speed_m_s: f64) -> Point {
+    fn empty(altitude_m: f64, mach: f64, speed_m_s: f64, elevator: Elevator) -> Point {
         Point {
             altitude_m,
             mach,
             speed_m_s,
+            load_factor: elevator.load_factor,
             alpha_deg: None,
-            delta_e_deg: None,
+            elevator_trim_deg: None,
+            delta_e_deg: Some(elevator.increment.to_degrees()),
             trimmed: false,
             reason: None,
             error: None,
@@ -116,43 +123,46 @@ impl Point {
         let condition = match Condition::new(altitude_m, Speed::Mach(mach)) {
             Ok(c) => c,
             Err(reason) => {
-                let mut p = Point::empty(altitude_m, mach, 0.0);
+                let mut p = Point::empty(altitude_m, mach, 0.0, elevator);
                 p.reason = Some(reason);
                 return p;
             }
         };
-        let mut p = Point::empty(altitude_m, mach, condition.speed);
-        p.delta_e_deg = elevator.fixed().map(f64::to_degrees);
+        let mut p = Point::empty(altitude_m, mach, condition.speed, elevator);
         let setup = loaded.setup(condition);
-        let alpha = match level_flight(&setup) {
-            Ok(a) => a,
+        let trimmed = match trim(&setup, elevator.load_factor) {
+            Ok(t) => t,
             Err(reason) => {
                 p.reason = Some(reason);
                 return p;
             }
         };
         p.trimmed = true;
-        p.alpha_deg = Some(alpha.to_degrees());
-        if let Err(e) = p.analyse(&setup, alpha, name, (elevator, uncertainty)) {
+        p.alpha_deg = Some(trimmed.alpha.to_degrees());
+        p.elevator_trim_deg = Some(if trimmed.per_unit_travel {
+            trimmed.elevator
+        } else {
+            trimmed.elevator.to_degrees()
+        });
+        if let Err(e) = p.analyse(&setup, &trimmed, name, (elevator, uncertainty)) {
             p.error = Some(e);
         }
         p
     }
 
-    /// Imports at `alpha` and analyses (and clears the box of `uncertainty`), filling in the
-    /// results.
+    /// Imports at the trim `trimmed` and analyses (and clears the box of `uncertainty`) at the
+    /// elevator increment, filling in the results.
     fn analyse(
         &mut self,
         setup: &crate::jsbsim::coefficients::Setup,
-        alpha: f64,
+        trimmed: &Trim,
         name: &str,
         (elevator, uncertainty): (Elevator, Option<&Uncertainty>),
     ) -> Result<(), String> {
-        let text = aircraft_file(setup, alpha, LEVEL_FLIGHT)?;
+        let text = trimmed_file(setup, trimmed)?;
         let ac = aircraft::parse(&text, name).map_err(|e| e.to_string())?;
         self.aileron_limit_deg = ac.limits.aileron_deg;
-        let delta_e = elevator.delta_e(&ac)?;
-        self.delta_e_deg = Some(delta_e.to_degrees());
+        let delta_e = elevator.increment;
         let (a, route) = analyze_routed_with(&ac, delta_e, true).map_err(|e| e.to_string())?;
         self.route = Some(match route {
             Route::Certified(_) => "certified",

@@ -1,7 +1,7 @@
 //! The aircraft of an envelope: a `jsbsim:` source without a flight condition,
-//! `"jsbsim:MODEL [--set PROPERTY=VALUE]... [--jsbsim-root DIR]"` (the words `import jsbsim`
-//! takes for the model); the grid's `--altitude-m` and `--mach` give every flight condition,
-//! and each point is trimmed in level flight.
+//! `"jsbsim:MODEL [--load-factor N] [--set PROPERTY=VALUE]... [--jsbsim-root DIR]"` (the words
+//! `import jsbsim` takes for the model and its trim); the grid's `--altitude-m` and `--mach` give
+//! every flight condition, and each point is trimmed at the load factor (default 1 g).
 
 use crate::jsbsim::cli::setting;
 use crate::jsbsim::import::Loaded;
@@ -16,9 +16,11 @@ pub struct Source {
     pub root: Option<PathBuf>,
     /// `--set` values.
     pub settings: Vec<(String, f64)>,
+    /// The load factor of the trim, if given.
+    pub load_factor: Option<f64>,
 }
 
-/// What a source may not say: the grid and the level-flight trim give the flight condition.
+/// What a source may not say: the grid and the trim give the flight condition.
 const CONDITION: [&str; 5] = [
     "--altitude-m",
     "--mach",
@@ -30,12 +32,14 @@ const CONDITION: [&str; 5] = [
 impl Source {
     /// Parses `spec`, or says why it is not an envelope's source.
     pub fn parse(spec: &str) -> Result<Source, String> {
-        let usage = "expected \"jsbsim:MODEL [--set PROPERTY=VALUE]... [--jsbsim-root DIR]\"";
+        let usage = "expected \"jsbsim:MODEL [--load-factor N] [--set PROPERTY=VALUE]... \
+                     [--jsbsim-root DIR]\"";
         let rest = spec
             .strip_prefix("jsbsim:")
             .ok_or_else(|| format!("{spec}: an envelope needs a jsbsim: source, {usage}"))?;
         let words: Vec<&str> = rest.split_whitespace().collect();
         let (mut model, mut root, mut settings) = (None, None, Vec::new());
+        let mut load_factor = None;
         let mut i = 0;
         while i < words.len() {
             let w = words[i];
@@ -49,10 +53,17 @@ impl Source {
             match w {
                 "--set" => settings.push(setting(next()?)?),
                 "--jsbsim-root" => root = Some(PathBuf::from(next()?)),
+                "--load-factor" => {
+                    let text = next()?;
+                    let n = text.parse::<f64>().ok().filter(|n| n.is_finite());
+                    load_factor = Some(n.ok_or_else(|| {
+                        format!("{spec}: --load-factor {text}: expected a finite number, {usage}")
+                    })?);
+                }
                 _ if CONDITION.contains(&w) => {
                     return Err(format!(
                         "{spec}: {w} is the envelope's to give (its --altitude-m and --mach \
-                         ranges, each point trimmed in level flight), {usage}"
+                         ranges, each point trimmed at the load factor), {usage}"
                     ))
                 }
                 _ if w.starts_with("--") || model.is_some() => {
@@ -67,6 +78,7 @@ impl Source {
             model,
             root,
             settings,
+            load_factor,
         })
     }
 
@@ -85,6 +97,10 @@ mod tests {
         let s = Source::parse("jsbsim:f104 --set fcs/flap-pos-norm=0.5").unwrap();
         assert_eq!(s.model, "f104");
         assert_eq!(s.settings, [("fcs/flap-pos-norm".to_string(), 0.5)]);
+        assert_eq!(s.load_factor, None);
+        let s = Source::parse("jsbsim:f104 --load-factor 0").unwrap();
+        assert_eq!(s.load_factor, Some(0.0));
+        assert!(Source::parse("jsbsim:f104 --load-factor nan").is_err());
         let e = Source::parse("jsbsim:f104 --mach 0.5").unwrap_err();
         assert!(e.contains("--mach is the envelope's"), "{e}");
         assert!(Source::parse("f104").is_err());

@@ -26,7 +26,8 @@ use super::grid::Grid;
 use crate::aircraft::convert::Coefficient;
 use crate::aircraft::{self, Aircraft, AircraftError};
 use crate::jsbsim::condition::{Condition, Speed};
-use crate::jsbsim::import::{aircraft_file, level_flight, Loaded, LEVEL_FLIGHT};
+use crate::jsbsim::import::{given_alpha_file, trimmed_file, Loaded};
+use crate::jsbsim::trim::trim;
 use std::path::Path;
 
 /// The forms SPEC takes, for messages.
@@ -76,9 +77,15 @@ impl Uncertainty {
 
     /// Refuses, before any work, a SPEC the loader refuses at the grid's first point (an unknown
     /// key, a negative width, a width that flips the aileron's sign...): the import's file there,
-    /// at its level flight (or alpha 0 without one), read with and without the table. A point
-    /// where the import itself fails says nothing about SPEC and passes.
-    pub fn check(&self, loaded: &Loaded, name: &str, grid: &Grid) -> Result<(), String> {
+    /// at its trim at `load_factor` (or alpha 0 without one), read with and without the table. A
+    /// point where the import itself fails says nothing about SPEC and passes.
+    pub fn check(
+        &self,
+        loaded: &Loaded,
+        name: &str,
+        grid: &Grid,
+        load_factor: f64,
+    ) -> Result<(), String> {
         let Some(&(h, m)) = grid.points().first() else {
             return Ok(());
         };
@@ -86,8 +93,11 @@ impl Uncertainty {
             return Ok(());
         };
         let setup = loaded.setup(condition);
-        let alpha = level_flight(&setup).unwrap_or(0.0);
-        let Ok(text) = aircraft_file(&setup, alpha, LEVEL_FLIGHT) else {
+        let file = match trim(&setup, load_factor) {
+            Ok(t) => trimmed_file(&setup, &t),
+            Err(_) => given_alpha_file(&setup, 0.0),
+        };
+        let Ok(text) = file else {
             return Ok(());
         };
         if aircraft::parse(&text, name).is_err() {

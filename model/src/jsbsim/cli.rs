@@ -11,10 +11,10 @@ use std::path::PathBuf;
 
 /// Usage, for errors.
 pub const USAGE: &str = "usage: model import jsbsim <MODEL> --altitude-m H (--mach M | --speed V) \
-     [--alpha-deg A | --level-flight] [--set PROPERTY=VALUE]... [--out FILE] [--jsbsim-root DIR]\n       \
+     [--load-factor N | --alpha-deg A] [--set PROPERTY=VALUE]... [--out FILE] [--jsbsim-root DIR]\n       \
      model import jsbsim --list [--jsbsim-root DIR]\n       \
      model import jsbsim --list --analyze --altitude-m H (--mach M | --speed V) \
-     (--alpha-deg A | --level-flight) [--jsbsim-root DIR]";
+     [--load-factor N | --alpha-deg A] [--jsbsim-root DIR]";
 
 /// What `--help` (or `-h`) prints: the usage and what each option means.
 pub const HELP: &str = "Reads a JSBSim aircraft model and writes the aircraft file of the \
@@ -23,8 +23,13 @@ analysis (nondimensional body-axis coefficients linearised at one flight conditi
   <MODEL>               a model of the catalogue (e.g. f104; --list shows them)
   --altitude-m H        geometric altitude, m (standard atmosphere 1976, 0 to 86,000 m)
   --mach M | --speed V  Mach number, or true airspeed in m/s
-  --alpha-deg A         angle of attack to linearise at, deg
-  --level-flight        the angle of attack of level flight (lift equal to weight)
+  --load-factor N       linearise at the trim of a wings-level pull-up at N g (default 1, level
+                        flight; 0 is the unloaded roll): alpha and elevator such that lift = N x
+                        weight (thrust left out) and the pitching moment is zero, pitch rate
+                        (N - 1) g / V, the elevator within its travel (else untrimmable, exit 2).
+                        The analysis's delta_e is the increment from this trim's elevator.
+  --level-flight        the same as --load-factor 1
+  --alpha-deg A         linearise at this angle of attack instead, deg, elevator neutral (not a trim)
   --set PROPERTY=VALUE  a JSBSim property set before the import (not a flight state or control)
   --out FILE            write the aircraft file there instead of standard output
   --jsbsim-root DIR     the JSBSim models (default: $JSBSIM_ROOT, else the Python package's)
@@ -82,14 +87,17 @@ fn parse(args: &[String]) -> Result<Command, String> {
         return Err(format!("the only import source is `jsbsim`\n{USAGE}"));
     }
     let (mut model, mut root, mut altitude, mut speed) = (None, None, None, None);
-    let (mut alpha, mut list, mut file) = (None, false, None);
+    let (mut alpha, mut list, mut file, mut load_factor) = (None, false, None, None);
     let mut settings = Vec::new();
     let mut i = 1;
     while i < args.len() {
         let a = args[i].as_str();
         match a {
             "--list" => list = true,
-            "--level-flight" => alpha = Some(Alpha::LevelFlight),
+            "--level-flight" => alpha = Some(Alpha::Trim(1.0)),
+            "--load-factor" => {
+                load_factor = Some(number(value(args, &mut i, a)?, a)?);
+            }
             "--jsbsim-root" => root = Some(PathBuf::from(value(args, &mut i, a)?)),
             "--out" => file = Some(PathBuf::from(value(args, &mut i, a)?)),
             "--altitude-m" => altitude = Some(number(value(args, &mut i, a)?, a)?),
@@ -113,8 +121,21 @@ fn parse(args: &[String]) -> Result<Command, String> {
     let model = model.ok_or_else(|| format!("no model given\n{USAGE}"))?;
     let altitude_m = altitude.ok_or_else(|| format!("--altitude-m is required\n{USAGE}"))?;
     let speed = speed.ok_or_else(|| format!("--mach or --speed is required\n{USAGE}"))?;
-    let alpha =
-        alpha.ok_or_else(|| format!("--alpha-deg or --level-flight is required\n{USAGE}"))?;
+    let alpha = match (alpha, load_factor) {
+        (None, n) => Alpha::Trim(n.unwrap_or(1.0)),
+        (Some(Alpha::Trim(_)), Some(n)) if n != 1.0 => {
+            return Err(format!(
+                "--level-flight is the trim at --load-factor 1; give one of them\n{USAGE}"
+            ))
+        }
+        (Some(Alpha::Given(_)), Some(_)) => {
+            return Err(format!(
+                "--alpha-deg linearises at a given angle of attack, --load-factor at the trim: \
+                 give one of them\n{USAGE}"
+            ))
+        }
+        (Some(a), _) => a,
+    };
     let request = Request {
         model,
         root,
@@ -153,7 +174,7 @@ fn parse_and_run(args: &[String], out: &mut dyn Write) -> Result<(), String> {
 }
 
 /// The aircraft of a `jsbsim:` source, the import's arguments after the colon in one string
-/// (`"jsbsim:f104 --altitude-m 6096 --mach 0.53 --level-flight"`): what `analyze`, `continue`,
+/// (`"jsbsim:f104 --altitude-m 6096 --mach 0.53 --load-factor 1"`): what `analyze`, `continue`,
 /// `simulate` and `report` accept in place of an aircraft file.
 pub fn source(spec: &str) -> Result<crate::aircraft::Aircraft, String> {
     let rest = spec

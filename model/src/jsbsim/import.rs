@@ -1,5 +1,6 @@
-//! An import from start to end: the model, the flight condition (alpha given or level flight:
-//! lift equal to weight), the coefficients and their derivatives there, and the aircraft file.
+//! An import from start to end: the model, the flight condition, the point of linearisation
+//! (the n-g trim, or an angle of attack given), the coefficients and their derivatives there,
+//! and the aircraft file.
 //! A model read once ([`Loaded`]) gives the aircraft file of any number of flight conditions.
 
 use super::catalogue;
@@ -8,17 +9,17 @@ use super::condition::{Condition, Speed, State};
 use super::derivatives::derivatives;
 use super::model::Model;
 use super::surfaces::surfaces;
-use super::units::SLUG_PER_LB;
+use super::trim::{lift_in_weights, trim, Trim};
 use super::write::Import;
 use std::path::PathBuf;
 
-/// How the angle of attack is chosen.
+/// Where the derivatives are taken.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Alpha {
-    /// Given, rad.
+    /// At this angle of attack, rad, elevator neutral, no pitch rate (not a trim).
     Given(f64),
-    /// Where lift equals weight.
-    LevelFlight,
+    /// At the trim of a wings-level pull-up at this load factor (1: level flight).
+    Trim(f64),
 }
 
 /// What to import.
@@ -43,15 +44,11 @@ pub fn import(request: &Request) -> Result<String, String> {
     let loaded = Loaded::new(&request.model, request.root.as_deref(), &request.settings)?;
     let condition = Condition::new(request.altitude_m, request.speed)?;
     let setup = loaded.setup(condition);
-    let (alpha, alpha_source) = match request.alpha {
-        Alpha::Given(a) => (a, "given".to_string()),
-        Alpha::LevelFlight => (level_flight(&setup)?, LEVEL_FLIGHT.to_string()),
-    };
-    aircraft_file(&setup, alpha, &alpha_source)
+    match request.alpha {
+        Alpha::Given(a) => given_alpha_file(&setup, a),
+        Alpha::Trim(n) => trimmed_file(&setup, &trim(&setup, n)?),
+    }
 }
-
-/// How a level-flight alpha is described in the aircraft file.
-pub const LEVEL_FLIGHT: &str = "level flight: lift equals weight, surfaces neutral";
 
 /// A model read once, with its surfaces and the user's settings checked against it: the setup
 /// of any number of flight conditions.
@@ -130,27 +127,49 @@ fn refuse_driven(model: &Model, settings: &[(String, f64)]) -> Result<(), String
             "--set {name}: the import sets this property itself, from the flight state or a \
              control surface whose derivatives it takes (expected a configuration input such \
              as fcs/flap-pos-norm; give the flight condition with --altitude-m, --mach or \
-             --speed and --alpha-deg or --level-flight)"
+             --speed, and --load-factor or --alpha-deg)"
         )),
         None => Ok(()),
     }
 }
 
-/// The aircraft file (TOML text) of `setup` linearised at angle of attack `alpha` (rad),
-/// chosen as `alpha_source` says, wings level and surfaces neutral.
-pub fn aircraft_file(setup: &Setup, alpha: f64, alpha_source: &str) -> Result<String, String> {
+/// The aircraft file (TOML text) of `setup` linearised at its trim `trim`: the derivatives
+/// taken at the trimmed alpha, elevator and pitch rate.
+pub fn trimmed_file(setup: &Setup, trim: &Trim) -> Result<String, String> {
+    linearised_file(setup, trim.state(), trim.load_factor, Some(trim))
+}
+
+/// The aircraft file (TOML text) of `setup` linearised at angle of attack `alpha` (rad) as
+/// given, wings level, surfaces neutral, no pitch rate: not a trim. Its load factor is the
+/// lift there over the weight.
+pub fn given_alpha_file(setup: &Setup, alpha: f64) -> Result<String, String> {
     let state = State {
         alpha,
         beta: 0.0,
         rates: [0.0; 3],
         surfaces: [0.0; 3],
     };
+    let cl = setup
+        .coefficients(&state)
+        .map_err(|e| e.to_string())?
+        .values[CL];
+    linearised_file(setup, state, lift_in_weights(setup, cl), None)
+}
+
+/// The aircraft file of `setup` linearised at `state`, whose lift is `load_factor` weights.
+fn linearised_file(
+    setup: &Setup,
+    state: State,
+    load_factor: f64,
+    trim: Option<&Trim>,
+) -> Result<String, String> {
     let (base, derivs) = derivatives(setup, &state).map_err(|e| e.to_string())?;
     Ok(Import {
         model: setup.model,
         condition: setup.condition,
         state,
-        alpha_source: alpha_source.to_string(),
+        load_factor,
+        trim: trim.copied(),
         surfaces: &setup.surfaces,
         settings: &setup.settings,
         base: &base,
@@ -182,57 +201,4 @@ pub fn evaluates(model: &Model, path: &std::path::Path) -> Result<(), String> {
         .coefficients(&state)
         .map(|_| ())
         .map_err(|e| e.to_string())
-}
-
-/// The angle of attack (rad) at which lift equals weight, surfaces neutral: the first sign
-/// change of CL - W/(qbar S) from -5 deg up to 30 deg, refined by bisection.
-pub fn level_flight(setup: &Setup) -> Result<f64, String> {
-    let weight = setup.model.totals().weight;
-    let need = weight / (setup.condition.qbar_psf() * setup.model.metrics.wing_area);
-    let excess = |alpha: f64| -> Result<f64, String> {
-        let state = State {
-            alpha,
-            beta: 0.0,
-            rates: [0.0; 3],
-            surfaces: [0.0; 3],
-        };
-        let c = setup.coefficients(&state).map_err(|e| e.to_string())?;
-        Ok(c.values[CL] - need)
-    };
-    let step = 0.25f64.to_radians();
-    let mut lo = (-5.0f64).to_radians();
-    let mut f_lo = excess(lo)?;
-    if f_lo > 0.0 {
-        return Err(format!(
-            "no level flight: at -5 deg alpha the lift coefficient {:.4} already exceeds the \
-             {need:.4} the weight ({weight:.0} lbs) needs (fly slower or higher)",
-            f_lo + need
-        ));
-    }
-    let mut best = f_lo;
-    while lo < 30f64.to_radians() {
-        let hi = lo + step;
-        let f_hi = excess(hi)?;
-        best = best.max(f_hi);
-        if f_lo <= 0.0 && f_hi >= 0.0 {
-            let (mut a, mut b) = (lo, hi);
-            for _ in 0..60 {
-                let m = 0.5 * (a + b);
-                if excess(m)? < 0.0 {
-                    a = m;
-                } else {
-                    b = m;
-                }
-            }
-            return Ok(0.5 * (a + b));
-        }
-        lo = hi;
-        f_lo = f_hi;
-    }
-    Err(format!(
-        "no level flight between -5 and 30 deg alpha: the largest CL found is {:.4}, the weight \
-         ({weight:.0} lbs, {:.0} kg) needs CL = {need:.4} (fly faster or lower)",
-        best + need,
-        weight * SLUG_PER_LB * super::units::KG_PER_SLUG
-    ))
 }

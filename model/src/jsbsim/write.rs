@@ -8,6 +8,7 @@ use super::derivatives::Derivative;
 use super::mass::Totals;
 use super::model::Model;
 use super::surfaces::Surface;
+use super::trim::Trim;
 use super::units::{KG_PER_SLUG, M_PER_FT, SLUG_PER_LB};
 use std::fmt::Write;
 
@@ -36,8 +37,10 @@ pub struct Import<'a> {
     pub condition: Condition,
     /// The state the derivatives are taken at.
     pub state: State,
-    /// How alpha was chosen (given, or level flight).
-    pub alpha_source: String,
+    /// The lift there over the weight.
+    pub load_factor: f64,
+    /// The trim the state is, if it is one (else alpha was given).
+    pub trim: Option<Trim>,
     /// The surfaces.
     pub surfaces: &'a [Surface],
     /// The user's settings.
@@ -105,14 +108,55 @@ impl Import<'_> {
         );
         let _ = writeln!(
             t,
-            "# speed of sound {:.3} m/s; Mach {:.4}; alpha {:.4} deg ({}).",
-            c.air.sound_speed,
-            c.mach,
-            self.state.alpha.to_degrees(),
-            self.alpha_source
+            "# speed of sound {:.3} m/s; Mach {:.4}.",
+            c.air.sound_speed, c.mach
         );
+        self.point(t);
         let _ = writeln!(t, "speed = {}          # m/s, true airspeed", num(c.speed));
         let _ = writeln!(t, "density = {}        # kg/m^3", num(c.air.density));
+        let _ = writeln!(
+            t,
+            "alpha = {}          # rad, body-axis angle of attack at the point",
+            num(self.state.alpha)
+        );
+        let _ = writeln!(
+            t,
+            "load_factor = {}    # lift over weight at the point",
+            num(self.load_factor)
+        );
+    }
+
+    /// The comment that says where the derivatives are taken: the trim, or the alpha given.
+    fn point(&self, t: &mut String) {
+        let alpha = self.state.alpha.to_degrees();
+        let cm = self.base.values[super::coefficients::CM];
+        match &self.trim {
+            Some(trim) => {
+                let _ = writeln!(
+                    t,
+                    "# Trim (the point of linearisation): alpha {alpha:.4} deg, elevator {} \
+                     (JSBSim's sign,\n# positive trailing edge down), n = {}, q = {:.6} rad/s.",
+                    trim.elevator_text(),
+                    trim.load_factor,
+                    trim.q
+                );
+                let _ = writeln!(
+                    t,
+                    "# A wings-level pull-up through level flight, q = (n - 1) g / V: lift = n x \
+                     weight\n# (thrust left out), pitching moment about the CG zero (Cm \
+                     {cm:.1e}), the elevator within its\n# travel. The derivatives are taken \
+                     there, the elevator at its trim position; delta_e is\n# an increment from \
+                     it."
+                );
+            }
+            None => {
+                let _ = writeln!(
+                    t,
+                    "# Alpha {alpha:.4} deg as given, elevator neutral, q = 0: not a trim (Cm = \
+                     {cm:.4} there);\n# load_factor is the lift there over the weight."
+                );
+            }
+        }
     }
 
     fn mass(&self, t: &mut String, totals: Totals) {

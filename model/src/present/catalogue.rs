@@ -2,8 +2,10 @@
 //! imported at one flight condition and analysed, as one Markdown table: whether it imports
 //! (and why not), its critical jump (the first fold of the primary branch: roll rate P0,
 //! aileron, within the aileron limit or not) and its first departure (jump or Hopf point) on
-//! the primary branch, at the default elevator of `analyze` (2 deg). The models are imported
-//! and analysed in parallel.
+//! the primary branch. Each model is linearised at its n-g trim (`--load-factor N`, default 1,
+//! as `import` and the envelope do) and analysed at elevator increment 0 from that trim, so that
+//! a row and the envelope's point at the same condition agree. The models are imported and
+//! analysed in parallel.
 
 use crate::aircraft::Aircraft;
 use crate::analysis::fast::analyze_routed_with;
@@ -12,8 +14,8 @@ use crate::jsbsim::{catalogue, cli};
 use rayon::prelude::*;
 use std::io::Write;
 
-/// The elevator of every row, deg (`analyze`'s default).
-const DELTA_E_DEG: f64 = 2.0;
+/// The elevator increment of every row from its trim, deg (the envelope's default).
+pub const DELTA_E_DEG: f64 = 0.0;
 
 /// Runs the catalogue table with `args` (after `import`, `jsbsim` first, holding `--list` and
 /// `--analyze`), writing to `out`; returns the exit code (2 with a message on bad input).
@@ -61,7 +63,7 @@ fn table(args: &[String]) -> Result<String, String> {
     if !condition.contains("--altitude-m") {
         return Err(format!(
             "--list --analyze needs a flight condition: --altitude-m H (--mach M | --speed V) \
-             (--alpha-deg A | --level-flight)\n{}",
+             [--load-factor N | --alpha-deg A]\n{}",
             cli::USAGE
         ));
     }
@@ -82,7 +84,8 @@ fn table(args: &[String]) -> Result<String, String> {
         .filter(|a| *a != "--list" && *a != "--analyze")
         .collect();
     let mut text = format!(
-        "{} models of {} at `{}`, elevator {DELTA_E_DEG} deg, rudder 0:\n\n\
+        "{} models of {} at `{}`, each linearised at its trim (load factor 1 unless given), \
+         elevator increment {DELTA_E_DEG} deg from the trim, rudder 0:\n\n\
          | model | import | critical jump P0 rad/s | delta_a deg | within aileron limit | \
          first departure | P0 rad/s | delta_a deg |\n|---|---|---:|---:|---|---|---:|---:|\n",
         names.len(),
@@ -100,7 +103,7 @@ fn table(args: &[String]) -> Result<String, String> {
 }
 
 /// The table row of catalogue model `name` imported as `imported`.
-fn row(name: &str, imported: &Result<Aircraft, String>) -> String {
+pub fn row(name: &str, imported: &Result<Aircraft, String>) -> String {
     let ac = match imported {
         Ok(ac) => ac,
         Err(e) => return format!("| {name} | no: {} | | | | | | |\n", cell(e)),

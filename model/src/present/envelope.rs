@@ -12,16 +12,28 @@ use crate::envelope::{cleared_envelope, Elevator, Envelope, Grid, Point, Range};
 use std::io::Write;
 use std::process::ExitCode;
 
-/// The elevator of `a`: the load factor (finite, within +-20 g), the increment, or 1 g.
-fn chosen_elevator(a: &EnvelopeArgs) -> Result<Elevator, Failure> {
-    match (a.load_factor, a.delta_e_deg) {
-        (Some(n), _) if !(n.is_finite() && n.abs() <= 20.0) => Err(Failure::Input(format!(
-            "--load-factor = {n}: expected a finite load factor of at most 20 g"
-        ))),
-        (Some(n), _) => Ok(Elevator::LoadFactor(n)),
-        (None, Some(d)) => Ok(Elevator::Increment(elevator(d)?)),
-        (None, None) => Ok(Elevator::default()),
+/// The elevator of `a` with `source`: the load factor of the trim (the envelope's or the
+/// source's, the same if both; finite, within +-20 g; default 1) and the increment from it
+/// (default 0).
+fn chosen_elevator(a: &EnvelopeArgs, source: &Source) -> Result<Elevator, Failure> {
+    let load_factor = match (a.load_factor, source.load_factor) {
+        (Some(n), Some(m)) if n != m => {
+            return Err(Failure::Input(format!(
+                "--load-factor = {n} but the source says --load-factor {m}: give one"
+            )))
+        }
+        (Some(n), _) | (None, Some(n)) => n,
+        (None, None) => 1.0,
+    };
+    if !(load_factor.is_finite() && load_factor.abs() <= 20.0) {
+        return Err(Failure::Input(format!(
+            "--load-factor = {load_factor}: expected a finite load factor of at most 20 g"
+        )));
     }
+    Ok(Elevator {
+        load_factor,
+        increment: elevator(a.delta_e_deg.unwrap_or(0.0))?,
+    })
 }
 
 /// `model envelope`.
@@ -31,14 +43,15 @@ pub fn command(a: &EnvelopeArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
         Range::parse(&a.altitude_m, "--altitude-m")?,
         Range::parse(&a.mach, "--mach")?,
     )?;
-    let elevator = chosen_elevator(a)?;
+    let elevator = chosen_elevator(a, &source)?;
     let uncertainty = match &a.uncertainty {
         Some(spec) => Some(Uncertainty::parse(spec).map_err(Failure::Input)?),
         None => None,
     };
     let loaded = source.load()?;
     if let Some(u) = &uncertainty {
-        u.check(&loaded, &a.source, &grid).map_err(Failure::Input)?;
+        u.check(&loaded, &a.source, &grid, elevator.load_factor)
+            .map_err(Failure::Input)?;
     }
     let bar = progress_bar("envelope");
     let chosen = (elevator, uncertainty.as_ref());
@@ -79,31 +92,33 @@ pub fn departure_kind(p: &Point) -> &'static str {
 /// The table: one line per point, then the counts.
 pub fn text(env: &Envelope) -> String {
     let mut s = format!(
-        "{}: envelope at elevator {} (delta_e is the increment from each point's level flight)\n\n",
+        "{}: envelope, {} (each point linearised at its own trim; delta_e is the increment \
+         from each point's trim elevator)\n\n",
         env.source, env.elevator
     );
-    s += "altitude_m   mach   V_m_s  alpha_deg  delta_e_deg  p0_rad_s  delta_a_deg  margin_deg  first_departure\n";
+    s += "altitude_m   mach   V_m_s  alpha_deg  de_trim_deg  delta_e_deg  p0_rad_s  delta_a_deg  margin_deg  first_departure\n";
     for p in &env.points {
         let c = p.critical.as_ref();
         s += &format!(
-            "{:>10}  {:>5}  {:>6}  {:>9}  {:>11}  {:>8}  {:>11}  {:>10}  {}\n",
+            "{:>10}  {:>5}  {:>6}  {:>9}  {:>11}  {:>11}  {:>8}  {:>11}  {:>10}  {}\n",
             fixed(p.altitude_m, 0),
             fixed(p.mach, 3),
             fixed(p.speed_m_s, 1),
             cell(p.alpha_deg, 3),
+            cell(p.elevator_trim_deg, 3),
             cell(p.delta_e_deg, 3),
             cell(c.map(|c| c.p0), 4),
             cell(c.map(|c| c.delta_a_deg), 3),
             cell(p.margin_deg, 3),
             match (&p.reason, &p.error) {
-                (Some(_), _) => "no level flight".to_string(),
+                (Some(_), _) => "untrimmable (see --json)".to_string(),
                 (None, Some(_)) => "not analysed (see --json)".to_string(),
                 _ => departure_kind(p).to_string(),
             }
         );
     }
     s += &format!(
-        "\n{} points: {} without level flight, {} answered by the exact path (a case the \
+        "\n{} points: {} untrimmable, {} answered by the exact path (a case the \
          certified route does not cover, or a failed certificate), {} with a full-stick roll that jumps (margin >= 0)\n",
         env.points.len(),
         env.untrimmed,

@@ -87,7 +87,7 @@ pub fn text(env: &Envelope) -> String {
     };
     s + &format!(
         "\n{} points cleared, {} not cleared (a counterexample), {} undecided when the budget \
-         ran out, {} undecided, {} without a clearance (no level flight, an error, or a refused proof)\n",
+         ran out, {} undecided, {} without a clearance (untrimmable, an error, or a refused proof)\n",
         count(Verdict::Cleared),
         count(Verdict::NotCleared),
         count(Verdict::UndecidedBudget),

@@ -12,7 +12,8 @@ use std::path::Path;
 pub fn csv(env: &Envelope) -> String {
     let cleared = env.uncertainty.is_some();
     let mut s = String::from(
-        "altitude_m,mach,speed_m_s,trimmed,alpha_deg,delta_e_deg,critical_p0_rad_s,\
+        "altitude_m,mach,speed_m_s,trimmed,alpha_deg,elevator_trim_deg,delta_e_deg,\
+         critical_p0_rad_s,\
          critical_delta_a_deg,within_limits,aileron_limit_deg,margin_deg,first_departure,\
          first_departure_p0_rad_s,first_departure_delta_a_deg,route",
     );
@@ -30,6 +31,7 @@ pub fn csv(env: &Envelope) -> String {
             p.speed_m_s.to_string(),
             p.trimmed.to_string(),
             num(p.alpha_deg),
+            num(p.elevator_trim_deg),
             num(p.delta_e_deg),
             num(c.map(|c| c.p0)),
             num(c.map(|c| c.delta_a_deg)),

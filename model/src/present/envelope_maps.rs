@@ -7,7 +7,7 @@
 //! On the critical aileron map, the aileron-limit contour is drawn: the line where the margin
 //! (aileron limit minus |critical delta_a|) is zero, by marching squares over the grid's
 //! margins ([`crate::plot::isoline`]) through the cells whose four corners have a margin (a
-//! point without level flight or without a critical jump has none, and the line stops there).
+//! point without a trim or without a critical jump has none, and the line stops there).
 //! On its side of positive margin a full-stick roll reaches the jump. Those points stay
 //! marked with a dot as well: the dots say on which side of the line the departures lie, and
 //! they still show a departure where the line cannot be drawn (a grid of one row or one
@@ -21,7 +21,7 @@ use crate::plot::{Axis, Dash, Figure, LegendPlace, Line, Marker, Panel, PlotStyl
 
 /// Light grey of cells without the mapped number.
 const EMPTY: Rgb = Rgb(215, 215, 215);
-/// Dark grey of cells without level flight.
+/// Dark grey of cells without a trim.
 const UNTRIMMED: Rgb = Rgb(110, 110, 110);
 /// Purple of cells whose trim at P0 = 0 is unstable (the bare airframe needs its augmentation).
 const UNSTABLE_TRIM: Rgb = Rgb(120, 40, 150);
@@ -106,7 +106,7 @@ pub(super) fn missing(p: &Point) -> Cell {
     if p.trimmed {
         (EMPTY, "no critical jump / not analysed".to_string(), 100)
     } else {
-        (UNTRIMMED, "no level flight".to_string(), 101)
+        (UNTRIMMED, "untrimmable".to_string(), 101)
     }
 }
 

@@ -137,7 +137,7 @@ pub struct ClearArgs {
 #[derive(Args)]
 pub struct EnvelopeArgs {
     /// The model: "jsbsim:MODEL [--set PROPERTY=VALUE]... [--jsbsim-root DIR]" (quoted as one;
-    /// the ranges below give the flight conditions, each point trimmed in level flight).
+    /// the ranges below give the flight conditions, each point trimmed at the load factor).
     pub source: String,
     /// Altitudes, m: START:STOP:STEP or one value.
     #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
@@ -145,11 +145,14 @@ pub struct EnvelopeArgs {
     /// Mach numbers: START:STOP:STEP or one value.
     #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
     pub mach: String,
-    /// The elevator increment that holds this load factor (g) before the roll; the default is
-    /// 1 g, i.e. delta_e = 0 (the level flight the derivatives are linearised about).
-    #[arg(long, allow_hyphen_values = true, conflicts_with = "delta_e_deg")]
+    /// Trim every point in a wings-level pull-up at this load factor (g) and linearise there:
+    /// alpha and elevator for lift N x weight and no pitching moment, pitch rate (N - 1) g / V
+    /// (default 1, level flight; 0 is the unloaded roll). A point where the elevator's travel
+    /// or the lift cannot hold it is untrimmable.
+    #[arg(long, allow_hyphen_values = true)]
     pub load_factor: Option<f64>,
-    /// The elevator increment from the level-flight trim, deg (the paper's delta_e).
+    /// The elevator increment from each point's trim elevator, deg (the paper's delta_e;
+    /// default 0, the trim itself).
     #[arg(long, allow_hyphen_values = true)]
     pub delta_e_deg: Option<f64>,
     /// Print JSON instead of a table.

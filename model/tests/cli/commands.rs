@@ -338,7 +338,69 @@ fn import_help_prints_the_options_and_succeeds() {
         let out = model(args);
         assert_eq!(out.status.code(), Some(0), "{args:?}");
         let text = String::from_utf8_lossy(&out.stdout);
-        assert!(text.contains("--level-flight") && text.contains("usage: model import jsbsim"));
+        assert!(text.contains("--load-factor") && text.contains("usage: model import jsbsim"));
         assert!(out.stderr.is_empty(), "{args:?}");
+    }
+}
+
+/// An untrimmable condition is bad input (exit 2) whose message names the limit: the F-104 at
+/// 3,000 m, Mach 1.2 pulling 7 g needs more nose-up elevator than its stabilator's travel
+/// (FCS-pitch.xml: -0.35 rad), and at 6,000 m, Mach 0.6 no alpha up to 30 deg gives 3 g of lift.
+/// The same conditions at 5 g and 1 g trim and import (exit 0).
+#[test]
+fn an_untrimmable_condition_exits_2_naming_the_limit() {
+    if model::jsbsim::catalogue::root(None).is_none() {
+        eprintln!("skipped: the JSBSim models are not installed (pip install jsbsim)");
+        return;
+    }
+    for (mach, altitude, n, limit) in [
+        (
+            "1.2",
+            "3000",
+            "7",
+            "beyond its travel of -20.05 deg to 17.19 deg",
+        ),
+        (
+            "0.6",
+            "6000",
+            "3",
+            "no lift solution from -10 to 30 deg alpha",
+        ),
+    ] {
+        let args = [
+            "import",
+            "jsbsim",
+            "f104",
+            "--altitude-m",
+            altitude,
+            "--mach",
+            mach,
+            "--load-factor",
+            n,
+        ];
+        let out = model(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = stderr(&out);
+        assert!(
+            err.starts_with(&format!("error: untrimmable at n = {n}: ")) && err.contains(limit),
+            "{err}"
+        );
+        assert!(out.stdout.is_empty());
+    }
+    for (mach, altitude, n) in [("1.2", "3000", "5"), ("0.6", "6000", "1")] {
+        let out = model(&[
+            "import",
+            "jsbsim",
+            "f104",
+            "--altitude-m",
+            altitude,
+            "--mach",
+            mach,
+            "--load-factor",
+            n,
+        ]);
+        assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(text.contains(&format!("load_factor = {n}.0")), "{text}");
     }
 }

@@ -1,8 +1,11 @@
 //! Shared by the randomised tests (`certified.rs`, `hopf_fast.rs`, `clearance.rs`,
 //! `envelope_uncertainty.rs`): their size, random aircraft around A and B, the comparison of an
-//! exact and a certified analysis, and whether the JSBSim models are installed.
+//! exact and a certified analysis, whether the JSBSim models are installed, and the JSBSim
+//! tests' Python oracles (`jsbsim.rs`, `jsbsim_trim.rs`).
 
 #![allow(dead_code)]
+
+pub mod oracle;
 
 use model::aircraft::{Aircraft, Param};
 use model::analysis::{Analysis, JumpPoint};
@@ -30,6 +33,60 @@ pub fn jsbsim_installed() -> bool {
         eprintln!("skipped: the JSBSim models are not installed (pip install jsbsim)");
     }
     found
+}
+
+/// The number `v` of an oracle's output.
+pub fn f(v: &serde_json::Value) -> f64 {
+    v.as_f64()
+        .unwrap_or_else(|| panic!("number expected, got {v}"))
+}
+
+/// JSBSim's coefficients (CL, CD, CY, Cl, Cm, Cn) from its body forces and moments.
+pub fn jsbsim_coefficients(out: &serde_json::Value, model: &model::jsbsim::Model) -> [f64; 6] {
+    let atm = &out["atmosphere"];
+    let (a, b) = (f(&atm["alpha"]), f(&atm["beta"]));
+    let qs = f(&atm["qbar"]) * model.metrics.wing_area;
+    let fb: Vec<f64> = out["forces"].as_array().unwrap().iter().map(f).collect();
+    let m: Vec<f64> = out["moments"].as_array().unwrap().iter().map(f).collect();
+    let wx = a.cos() * b.cos() * fb[0] + b.sin() * fb[1] + a.sin() * b.cos() * fb[2];
+    let wz = -a.sin() * fb[0] + a.cos() * fb[2];
+    let (s, c) = (model.metrics.span, model.metrics.chord);
+    [
+        -wz / qs,
+        -wx / qs,
+        fb[1] / qs,
+        m[0] / (qs * s),
+        m[1] / (qs * c),
+        m[2] / (qs * s),
+    ]
+}
+
+/// The oracle's description of `state` at `setup`'s condition: surfaces set as the import sets
+/// them, the clean configuration's zeros (`zeroed`, gear up among them) given to JSBSim too.
+pub fn oracle_state(
+    setup: &model::jsbsim::coefficients::Setup,
+    state: &model::jsbsim::condition::State,
+    zeroed: &[String],
+) -> serde_json::Value {
+    use serde_json::{json, Value};
+    let mut set: serde_json::Map<String, Value> =
+        zeroed.iter().map(|n| (n.clone(), json!(0.0))).collect();
+    set.extend(
+        setup
+            .surfaces
+            .iter()
+            .zip(state.surfaces)
+            .flat_map(|(s, x)| s.values(x))
+            .filter_map(|(n, v)| v.map(|v| (n.to_string(), json!(v)))),
+    );
+    json!({
+        "h_ft": setup.condition.altitude_m / 0.3048,
+        "mach": setup.condition.mach,
+        "alpha_deg": state.alpha.to_degrees(),
+        "beta_deg": state.beta.to_degrees(),
+        "p": state.rates[0], "q": state.rates[1], "r": state.rates[2],
+        "set": set,
+    })
 }
 
 /// The project's seeded generator (SplitMix64), the same as the Monte Carlo's.

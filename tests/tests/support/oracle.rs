@@ -1,6 +1,6 @@
 //! Running a Python oracle script of `tests/oracle/`: the request as JSON on its standard
-//! input, the answer as JSON on the last line of its standard output. Shared by `jsbsim.rs` and
-//! `jsbsim_limits.rs`.
+//! input, the answer as JSON on the last line of its standard output. Shared by `jsbsim.rs`,
+//! `jsbsim_trim.rs` (through `support`) and `jsbsim_limits.rs`.
 
 use serde_json::Value;
 use std::io::Write;

@@ -46,6 +46,10 @@ pub struct Point {
     /// Why a trimmed point has no analysis (import or analysis refused).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
+    /// The warnings of the point's aircraft, as `analyze` gives them (the tables its flight
+    /// state reads beyond their breakpoints, for instance); absent from JSON when none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
     /// The critical jump; `None` with `critical_note` when there is none.
     pub critical: Option<Critical>,
     /// Why there is no critical jump.
@@ -82,6 +86,7 @@ impl Point {
             trimmed: false,
             reason: None,
             error: None,
+            warnings: Vec::new(),
             critical: None,
             critical_note: None,
             first_departure: None,
@@ -150,6 +155,7 @@ impl Point {
     ) -> Result<(), String> {
         let text = aircraft_file(setup, alpha, LEVEL_FLIGHT)?;
         let ac = aircraft::parse(&text, name).map_err(|e| e.to_string())?;
+        self.warnings.clone_from(&ac.warnings);
         self.aileron_limit_deg = ac.limits.aileron_deg;
         let delta_e = elevator.delta_e(&ac)?;
         self.delta_e_deg = Some(delta_e.to_degrees());

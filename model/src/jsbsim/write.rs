@@ -1,6 +1,7 @@
 //! The aircraft file of an import: the nondimensional body-axis format `analyze` reads
 //! (`[flight]`, `[geometry]`, `[inertia]` with `ixz`, `[coefficients]`, `[limits]`), in SI,
-//! with comments that say where every number came from.
+//! with comments that say where every number came from, and `[import]` with the import's
+//! warnings (tables read beyond their breakpoints), which the loader hands to `analyze`.
 
 use super::coefficients::Coefficients;
 use super::condition::{Condition, State};
@@ -63,6 +64,7 @@ impl Import<'_> {
     pub fn toml(&self) -> String {
         let mut t = String::new();
         self.header(&mut t);
+        self.warnings_table(&mut t);
         self.flight(&mut t);
         self.mass(&mut t, self.model.totals());
         self.coefficients(&mut t);
@@ -93,6 +95,28 @@ impl Import<'_> {
         }
         let name = if m.name.is_empty() { &m.file } else { &m.name };
         let _ = writeln!(t, "\nname = {:?}", format!("{name} (JSBSim)"));
+    }
+
+    /// The import's warnings: the tables the flight state reads beyond their breakpoints.
+    pub fn warnings(&self) -> Vec<String> {
+        let place = super::coefficients::place(&self.condition, &self.state);
+        super::clamp::warnings(&self.base.clamps, &self.model.functions, &place)
+    }
+
+    fn warnings_table(&self, t: &mut String) {
+        let warnings = self.warnings();
+        if warnings.is_empty() {
+            return;
+        }
+        let _ = writeln!(t, "\n[import]");
+        for w in &warnings {
+            let _ = writeln!(t, "# Warning: {w}.");
+        }
+        let _ = writeln!(t, "warnings = [");
+        for w in &warnings {
+            let _ = writeln!(t, "    {},", toml_string(w));
+        }
+        let _ = writeln!(t, "]");
     }
 
     fn flight(&self, t: &mut String) {
@@ -236,6 +260,21 @@ impl Import<'_> {
             );
         }
     }
+}
+
+/// `text` as a TOML basic string: quoted, with `"`, `\\` and control characters escaped.
+fn toml_string(text: &str) -> String {
+    let mut s = String::from('"');
+    for c in text.chars() {
+        match c {
+            '"' => s.push_str("\\\""),
+            '\\' => s.push_str("\\\\"),
+            c if c.is_control() => s.push_str(&format!("\\u{:04X}", u32::from(c))),
+            c => s.push(c),
+        }
+    }
+    s.push('"');
+    s
 }
 
 /// A list for a comment.

@@ -473,7 +473,7 @@ fn the_f104_at_mach_5_names_the_tables_it_reads_beyond_their_breakpoints() {
         "the imported flight state (altitude 15000 m, Mach 5, alpha",
         "where JSBSim holds the end value",
         "0.4 to 2 in aero/coefficient/CLo, aero/coefficient/CLalpha",
-        "0.257 to 1.8 in aero/coefficient/CLDh",
+        "0.257 to 1.8 in aero/coefficient/CYb, aero/coefficient/Clb, aero/coefficient/Clp",
         "aero/coefficient/Clp",
     ] {
         assert!(warning.contains(part), "{part} not in {warning}");

@@ -6,6 +6,7 @@
 //! whose tables it leaves, each table's range, and the variable's value.
 
 use super::evaluate::Functions;
+use super::function::Expr;
 
 /// What the warnings of an import begin with (the catalogue tells them from the loader's own).
 pub const WARNING_START: &str = "the imported flight state";
@@ -41,6 +42,40 @@ pub fn record(clamps: &mut Vec<Clamp>, clamp: Clamp) {
     if !clamps.iter().any(|c| c.same_place(&clamp)) {
         clamps.push(clamp);
     }
+}
+
+/// Marks in `seen` every function that `e` reads, directly or through others.
+fn mark_read(functions: &Functions, e: &Expr, seen: &mut [bool]) {
+    let mut symbol = |s: usize, seen: &mut [bool]| {
+        if let Some(f) = functions.defined_by[s] {
+            if !seen[f] {
+                seen[f] = true;
+                mark_read(functions, &functions.list[f].expr, seen);
+            }
+        }
+    };
+    match e {
+        Expr::Value(_) => {}
+        Expr::Property(r) => symbol(r.symbol, seen),
+        Expr::Table(t) => t.keys.iter().for_each(|r| symbol(r.symbol, seen)),
+        Expr::Apply(_, args) => args.iter().for_each(|a| mark_read(functions, a, seen)),
+    }
+}
+
+/// For each function, whether one of `roots` (function indices) or `extra` (an expression)
+/// reads it, directly or through others; a root reads itself.
+pub fn read_by(functions: &Functions, roots: &[usize], extra: Option<&Expr>) -> Vec<bool> {
+    let mut seen = vec![false; functions.list.len()];
+    for &f in roots {
+        if !seen[f] {
+            seen[f] = true;
+            mark_read(functions, &functions.list[f].expr, &mut seen);
+        }
+    }
+    if let Some(e) = extra {
+        mark_read(functions, e, &mut seen);
+    }
+    seen
 }
 
 /// A number for a message: at most 4 decimals, no trailing zeros.

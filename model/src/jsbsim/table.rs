@@ -112,12 +112,9 @@ impl TableData {
                 tables,
             } => {
                 let (b, t) = bracket(breakpoints, keys[2]);
-                let mut used = vec![&tables[b]];
-                if t > 0.0 && b + 1 < tables.len() {
-                    used.push(&tables[b + 1]);
-                }
+                let upper = (t > 0.0 && b + 1 < tables.len()).then(|| &tables[b + 1]);
                 let mut out = [None, None, beyond(breakpoints, keys[2])];
-                for inner in used {
+                for inner in std::iter::once(&tables[b]).chain(upper) {
                     let [r, c, _] = inner.outside(keys);
                     out[0] = out[0].or(r);
                     out[1] = out[1].or(c);

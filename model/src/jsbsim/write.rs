@@ -97,10 +97,30 @@ impl Import<'_> {
         let _ = writeln!(t, "\nname = {:?}", format!("{name} (JSBSim)"));
     }
 
-    /// The import's warnings: the tables the flight state reads beyond their breakpoints.
+    /// The import's warnings: the tables the flight state reads beyond their breakpoints,
+    /// except those that only axis functions read that are zero at the state and move none of
+    /// the file's derivatives (a flap's increment with the flaps up, a hull's water forces in
+    /// flight): no number of the file depends on them.
     pub fn warnings(&self) -> Vec<String> {
         let place = super::coefficients::place(&self.condition, &self.state);
-        super::clamp::warnings(&self.base.clamps, &self.model.functions, &place)
+        let model = self.model;
+        let roots: Vec<usize> = model
+            .aero
+            .terms
+            .iter()
+            .zip(&self.base.terms)
+            .filter(|(t, v)| {
+                let name = &model.functions.list[t.function].name;
+                **v != 0.0 || self.derivatives.iter().any(|d| d.functions.contains(name))
+            })
+            .map(|(t, _)| t.function)
+            .collect();
+        let read = super::clamp::read_by(&model.functions, &roots, model.aero.rp_shift.as_ref());
+        let clamps: Vec<_> = (self.base.clamps.iter())
+            .filter(|c| c.function.is_none_or(|f| read[f]))
+            .cloned()
+            .collect();
+        super::clamp::warnings(&clamps, &model.functions, &place)
     }
 
     fn warnings_table(&self, t: &mut String) {

@@ -386,3 +386,35 @@ fn mass_properties_no_aircraft_has_are_refused() {
     );
     assert!(e.contains("ixx izz - ixz^2 = -"), "{e}");
 }
+
+#[test]
+fn a_non_finite_reference_point_shift_is_refused_with_the_flight_state() {
+    use super::coefficients::Setup;
+    use super::condition::{Condition, Speed, State};
+    let m = model(
+        r#"<aero_ref_pt_shift_x><function><quotient><value>1</value>
+             <property>fcs/shift</property></quotient></function></aero_ref_pt_shift_x>
+           <axis name="LIFT"><function name="aero/lift"><product>
+             <property>aero/qbar-area</property><value>0.3</value></product></function></axis>"#,
+    );
+    let setup = Setup {
+        model: &m,
+        condition: Condition::new(3000.0, Speed::Mach(0.5)).unwrap(),
+        surfaces: Vec::new(),
+        settings: vec![("fcs/shift".to_string(), 0.0)],
+    };
+    let state = State {
+        alpha: 2f64.to_radians(),
+        beta: 0.0,
+        rates: [0.1, 0.0, 0.0],
+        surfaces: [0.0; 3],
+    };
+    let e = setup.coefficients(&state).unwrap_err().to_string();
+    assert!(
+        e.contains(
+            "the coefficient Cm is -inf at altitude 3000 m, Mach 0.5, alpha 2 deg, p 1e-1 rad/s: \
+                    <aero_ref_pt_shift_x>: <quotient> divides 1 by `fcs/shift` = 0"
+        ),
+        "{e}"
+    );
+}

@@ -46,7 +46,7 @@ pub fn record(clamps: &mut Vec<Clamp>, clamp: Clamp) {
 
 /// Marks in `seen` every function that `e` reads, directly or through others.
 fn mark_read(functions: &Functions, e: &Expr, seen: &mut [bool]) {
-    let mut symbol = |s: usize, seen: &mut [bool]| {
+    let symbol = |s: usize, seen: &mut [bool]| {
         if let Some(f) = functions.defined_by[s] {
             if !seen[f] {
                 seen[f] = true;

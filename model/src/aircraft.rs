@@ -92,7 +92,8 @@ pub struct Aircraft {
     /// interval (empty without the table); see [`Uncertain`].
     pub uncertainty: Vec<Uncertain>,
     /// What the loader accepted with a warning (moments of inertia that break the triangle
-    /// inequalities, for instance): each a sentence naming the violation, empty when none.
+    /// inequalities, for instance) and what the file's `[import]` warns of (tables read beyond
+    /// their breakpoints): each a sentence, empty when none.
     pub warnings: Vec<String>,
     /// Whether the file gives the trim its derivatives were taken at (`z_0` or `alpha_t`, or
     /// a body-axis file's `flight.alpha` or `flight.load_factor`): then delta_e is the

@@ -3,14 +3,17 @@
 //! derivatives of an aircraft file that `analyze` reads.
 //!
 //! Data flow: [`xml`] and [`units`] read values; [`table`], [`function`] and [`evaluate`] are
-//! JSBSim's function language; [`metrics`], [`mass`] and [`aerodynamics`] the model's sections,
+//! JSBSim's function language, [`finite`] refuses its non-finite values and [`clamp`] names its
+//! lookups beyond a table's range; [`metrics`], [`mass`] and [`aerodynamics`] the model's sections,
 //! put together in [`model`]; [`systems`] and [`fcs`] read the flight control system, and
-//! [`surfaces`] the controls' travel through it. JSBSim itself (its Python package) is the independent check of the
+//! [`surfaces`] the controls' travel through it. JSBSim itself (its Python package) is the
+//! independent check of the
 //! evaluation, in the integration tests.
 
 pub mod aerodynamics;
 pub mod atmosphere;
 pub mod catalogue;
+pub mod clamp;
 pub mod cli;
 pub mod coefficients;
 pub mod condition;
@@ -18,6 +21,7 @@ pub mod derivatives;
 pub mod error;
 pub mod evaluate;
 pub mod fcs;
+pub mod finite;
 pub mod function;
 pub mod import;
 pub mod mass;

@@ -35,7 +35,7 @@
 //! (`toml_tree.rs`), the valid keys (`keys.rs`), the reader every error takes its place from
 //! (`reader.rs`), text the parser refuses (`syntax.rs`), exact numbers (`number.rs`), the two
 //! formats (`principal_axis.rs`, `body_axis.rs`) and the tables they share (`flight.rs`,
-//! `limits.rs`, `uncertainty.rs`).
+//! `limits.rs`, `uncertainty.rs`) and the warnings an import wrote (`import.rs`).
 
 use super::{Aircraft, Limits, Validity};
 use std::path::Path;
@@ -43,6 +43,7 @@ use std::path::Path;
 mod body_axis;
 mod error;
 mod flight;
+mod import;
 mod inertia;
 mod keys;
 mod limits;
@@ -180,13 +181,18 @@ fn read_document(text: &str, file: &str) -> Result<Parsed, AircraftError> {
             None => Validity::default(),
         },
     };
+    let imported = match tables.get("import") {
+        Some(t) => cx.import_warnings(t)?,
+        None => Vec::new(),
+    };
     if body_axis {
-        let body_axis = cx.body_axis_document(&tables, common)?;
+        let mut body_axis = cx.body_axis_document(&tables, common)?;
+        body_axis.aircraft.warnings.extend(imported);
         return Ok(Parsed::BodyAxis(Box::new(body_axis)));
     }
-    Ok(Parsed::Dimensional(
-        cx.dimensional_document(&tables, common)?,
-    ))
+    let mut aircraft = cx.dimensional_document(&tables, common)?;
+    aircraft.warnings.extend(imported);
+    Ok(Parsed::Dimensional(aircraft))
 }
 
 impl Cx<'_> {

@@ -51,6 +51,10 @@ pub struct Point {
     /// Why a trimmed point has no analysis (import or analysis refused).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
+    /// The warnings of the point's aircraft, as `analyze` gives them (the tables its flight
+    /// state reads beyond their breakpoints, for instance); absent from JSON when none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
     /// The critical jump; `None` with `critical_note` when there is none.
     pub critical: Option<Critical>,
     /// Why there is no critical jump.
@@ -89,6 +93,7 @@ impl Point {
             trimmed: false,
             reason: None,
             error: None,
+            warnings: Vec::new(),
             critical: None,
             critical_note: None,
             first_departure: None,
@@ -161,6 +166,7 @@ impl Point {
     ) -> Result<(), String> {
         let text = trimmed_file(setup, trimmed)?;
         let ac = aircraft::parse(&text, name).map_err(|e| e.to_string())?;
+        self.warnings.clone_from(&ac.warnings);
         self.aileron_limit_deg = ac.limits.aileron_deg;
         let delta_e = elevator.increment;
         let (a, route) = analyze_routed_with(&ac, delta_e, true).map_err(|e| e.to_string())?;

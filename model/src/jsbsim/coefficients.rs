@@ -1,8 +1,11 @@
 //! The aerodynamic coefficients of a model at one flight state: lift, drag and side force, and
 //! the body-axis moments about the centre of gravity, made nondimensional with qbar, S, b and c.
 //! Where the aerodynamics read `aero/cl-squared` (JSBSim feeds back the previous step's lift),
-//! the lift is iterated to its fixed point, the quasi-steady value.
+//! the lift is iterated to its fixed point, the quasi-steady value. A function that is not
+//! finite at the state is refused ([`super::finite`]); the table lookups beyond a table's
+//! breakpoints are kept with the coefficients ([`super::clamp`]).
 
+use super::clamp::{short, Clamp};
 use super::condition::{set_state, Condition, State};
 use super::error::JsbsimError;
 use super::model::Model;
@@ -17,6 +20,8 @@ pub struct Coefficients {
     pub terms: Vec<f64>,
     /// The inputs set to zero (clean configuration).
     pub zeroed: Vec<String>,
+    /// The table lookups beyond a table's breakpoints, one per table and variable.
+    pub clamps: Vec<Clamp>,
 }
 
 /// Index of CL in [`Coefficients::values`].
@@ -72,6 +77,7 @@ impl Setup<'_> {
                 .map(|t| env.function(t.function))
                 .collect::<Result<Vec<_>, _>>()?;
             let values = self.nondimensional(state, loads.force, loads.moment);
+            self.refuse_non_finite(&mut env, state, (&terms, &values), &zeroed)?;
             let next = values[CL] * values[CL];
             let done = (next - cl2).abs() <= 1e-15 * next.max(1.0);
             cl2 = next;
@@ -79,12 +85,67 @@ impl Setup<'_> {
                 values,
                 terms,
                 zeroed,
+                clamps: env.clamps().to_vec(),
             });
             if done {
                 break;
             }
         }
         Ok(last.expect("at least one evaluation"))
+    }
+
+    /// Refuses an axis function or a coefficient that is not finite at `state`, naming the
+    /// function and where its value arose (the coefficients alone are not finite only when the
+    /// reference point's shift is not, or the sums overflow).
+    fn refuse_non_finite(
+        &self,
+        env: &mut super::evaluate::Env,
+        state: &State,
+        (terms, values): (&[f64], &[f64; 6]),
+        zeroed: &[String],
+    ) -> Result<(), JsbsimError> {
+        let place = || place(&self.condition, state);
+        let model = self.model;
+        if let Some((t, v)) = model
+            .aero
+            .terms
+            .iter()
+            .zip(terms)
+            .find(|(_, v)| !v.is_finite())
+        {
+            return Err(super::finite::refusal(
+                env,
+                t.function,
+                *v,
+                &place(),
+                zeroed,
+            ));
+        }
+        match values.iter().position(|v| !v.is_finite()) {
+            None => Ok(()),
+            Some(k) => {
+                let shift = match &model.aero.rp_shift {
+                    Some(e) if !env.eval(e)?.is_finite() => {
+                        format!(
+                            ": <aero_ref_pt_shift_x>: {}",
+                            super::finite::origin(env, e).0
+                        )
+                    }
+                    _ => " (every axis function is finite: their sum overflows)".to_string(),
+                };
+                Err(JsbsimError::new(
+                    &model.file,
+                    0,
+                    "aerodynamics",
+                    format!(
+                        "the coefficient {} is {} at {}{shift} (expected a finite value)",
+                        NAMES[k],
+                        values[k],
+                        place()
+                    ),
+                ))
+            }
+        }
     }
 
     /// Body force and moment (lbs, lbs ft) to CL, CD, CY, Cl, Cm, Cn.
@@ -109,4 +170,29 @@ impl Setup<'_> {
             m[2] / (qs * metrics.span),
         ]
     }
+}
+
+/// Flight state `state` at `condition` in words, for messages: altitude, Mach and alpha, and
+/// beta, the rates and the surfaces where they are not zero.
+pub fn place(condition: &Condition, state: &State) -> String {
+    let mut s = format!(
+        "altitude {} m, Mach {}, alpha {} deg",
+        short(condition.altitude_m),
+        short(condition.mach),
+        short(state.alpha.to_degrees())
+    );
+    if state.beta != 0.0 {
+        s += &format!(", beta {} deg", short(state.beta.to_degrees()));
+    }
+    for (name, v) in ["p", "q", "r"].iter().zip(state.rates) {
+        if v != 0.0 {
+            s += &format!(", {name} {v:e} rad/s");
+        }
+    }
+    for (name, v) in ["aileron", "elevator", "rudder"].iter().zip(state.surfaces) {
+        if v != 0.0 {
+            s += &format!(", {name} {v:e}");
+        }
+    }
+    s
 }

@@ -119,9 +119,26 @@ pub fn derivatives(
             .filter(|(t, (a, b))| a != b && t.axis == axis_of(c))
             .map(|(t, _)| setup.model.functions.list[t.function].name.clone())
             .collect();
+        let value = sign * (forward + backward) / 2.0;
+        if !value.is_finite() {
+            return Err(JsbsimError::new(
+                &setup.model.file,
+                0,
+                key,
+                format!(
+                    "the derivative is {value} at {}: the coefficient {} is {:e} there and \
+                     {:e} / {:e} a step of {STEP} away (expected finite differences)",
+                    super::coefficients::place(&setup.condition, state),
+                    super::coefficients::NAMES[c],
+                    base.values[c],
+                    minus.values[c],
+                    plus.values[c]
+                ),
+            ));
+        }
         out.push(Derivative {
             key,
-            value: sign * (forward + backward) / 2.0,
+            value,
             kink,
             functions,
         });

@@ -2,8 +2,10 @@
 //! function of the model (computed once per state, on demand, so a function may read one
 //! defined after it) or an input given by the caller (the flight state, the surface positions,
 //! the other systems' outputs). A function that reads itself, directly or through others, is an
-//! error naming the loop, never a hang.
+//! error naming the loop, never a hang. Every table lookup beyond the table's breakpoints is
+//! recorded with the function that made it ([`Env::clamps`]).
 
+use super::clamp::{record, Clamp};
 use super::error::JsbsimError;
 use super::function::{Compare, Expr, Op, PropertyRef, Symbols, Unary};
 
@@ -68,6 +70,8 @@ pub struct Env<'m> {
     inputs: Vec<Option<f64>>,
     slots: Vec<Slot>,
     depth: usize,
+    current: Option<usize>,
+    clamps: Vec<Clamp>,
 }
 
 impl<'m> Env<'m> {
@@ -79,7 +83,24 @@ impl<'m> Env<'m> {
             inputs: vec![None; functions.symbols.len()],
             slots: vec![Slot::Unknown; functions.list.len()],
             depth: 0,
+            current: None,
+            clamps: Vec::new(),
         }
+    }
+
+    /// The functions evaluated.
+    pub fn functions(&self) -> &'m Functions {
+        self.functions
+    }
+
+    /// The model's file, for messages.
+    pub fn file(&self) -> &'m str {
+        self.file
+    }
+
+    /// The table lookups beyond a table's breakpoints made so far, one per table and variable.
+    pub fn clamps(&self) -> &[Clamp] {
+        &self.clamps
     }
 
     /// Sets input `name` (ignored if the model never reads it). A name that is one of the
@@ -140,7 +161,9 @@ impl<'m> Env<'m> {
                 }
                 self.slots[f] = Slot::Busy;
                 self.depth += 1;
+                let caller = self.current.replace(f);
                 let v = self.eval(&func.expr);
+                self.current = caller;
                 self.depth -= 1;
                 let v = v?;
                 self.slots[f] = Slot::Done(v);
@@ -192,6 +215,21 @@ impl<'m> Env<'m> {
                 for (k, r) in t.keys.iter().enumerate() {
                     keys[k] = self.symbol(*r)?;
                 }
+                for (k, range) in t.data.outside(&keys).into_iter().enumerate() {
+                    let ground =
+                        |k: usize| is_ground_effect(self.functions.symbols.name(t.keys[k].symbol));
+                    if let Some(range) = range.filter(|_| !ground(k)) {
+                        let clamp = Clamp {
+                            function: self.current,
+                            line: t.line,
+                            symbol: t.keys[k].symbol,
+                            negated: t.keys[k].negated,
+                            value: keys[k],
+                            range,
+                        };
+                        record(&mut self.clamps, clamp);
+                    }
+                }
                 Ok(t.data.lookup(&keys))
             }
             Expr::Apply(op, args) => self.apply(*op, args),
@@ -239,6 +277,12 @@ impl<'m> Env<'m> {
             Op::IfThen => unreachable!("handled above"),
         })
     }
+}
+
+/// Whether `name` is the height over span of ground-effect tables, whose last breakpoint is
+/// where ground effect ends: held beyond it by design, not extrapolated data.
+fn is_ground_effect(name: &str) -> bool {
+    name.starts_with("aero/h_b-")
 }
 
 /// A one-argument function, with JSBSim's values outside the domain.

@@ -160,6 +160,8 @@ pub struct Table {
     pub keys: Vec<PropertyRef>,
     /// The data.
     pub data: TableData,
+    /// The line of its `<table>` element.
+    pub line: u32,
 }
 
 /// An expression of the function language.

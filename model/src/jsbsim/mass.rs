@@ -142,7 +142,72 @@ impl MassBalance {
         {
             masses.push(Self::tank(src, tank, k)?);
         }
-        Ok(MassBalance { masses })
+        let balance = MassBalance { masses };
+        balance.physical(src, node)?;
+        Ok(balance)
+    }
+
+    /// Refuses mass properties no aircraft has: a negative weight, a total weight that is not
+    /// positive (the CG, a weighted mean, would be 0/0 and every inertia NaN), a moment of
+    /// inertia about the CG that is not positive, or an x-z block with ixx izz <= ixz^2 (its
+    /// principal moments not both positive): the equations of motion divide by them.
+    fn physical(&self, src: Source, node: Node) -> Result<(), JsbsimError> {
+        let parts: Vec<String> = self
+            .masses
+            .iter()
+            .map(|m| format!("{} {} lbs", m.name, m.weight))
+            .collect();
+        let parts = parts.join(", ");
+        let weight: f64 = self.masses.iter().map(|m| m.weight).sum();
+        if let Some(m) = self.masses.iter().find(|m| m.weight < 0.0) {
+            return Err(src.error(
+                node,
+                format!(
+                    "the weight of {} is {} lbs (expected zero or more)",
+                    m.name, m.weight
+                ),
+            ));
+        }
+        if !(weight.is_finite() && weight > 0.0) {
+            return Err(src.error(
+                node,
+                format!(
+                    "the total weight is {weight} lbs ({parts}; expected a positive weight from \
+                     <emptywt>, the point masses and the tanks' contents: without one the CG \
+                     and the inertia about it are undefined)"
+                ),
+            ));
+        }
+        let [ix, iy, iz, ixz] = self.totals().moments();
+        let empty = &self.masses[0].inertia;
+        for (k, (name, v)) in [("ixx", ix), ("iyy", iy), ("izz", iz)]
+            .into_iter()
+            .enumerate()
+        {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(src.error(
+                    node,
+                    format!(
+                        "the moment of inertia {name} about the CG is {v} slug ft^2 (<{name}> \
+                         {} slug ft^2 and the masses' parallel-axis terms; expected a positive \
+                         moment: the equations of motion divide by it)",
+                        empty[k][k]
+                    ),
+                ));
+            }
+        }
+        if ix * iz <= ixz * ixz {
+            return Err(src.error(
+                node,
+                format!(
+                    "ixx izz - ixz^2 = {:e} slug^2 ft^4 about the CG (ixx {ix}, izz {iz}, ixz \
+                     {ixz}; expected a positive value: otherwise a principal moment of the x-z \
+                     plane is zero or negative, which no rigid body has)",
+                    ix * iz - ixz * ixz
+                ),
+            ));
+        }
+        Ok(())
     }
 
     /// One tank as loaded: its contents at its location, with the inertia of a sphere of its

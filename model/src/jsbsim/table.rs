@@ -91,6 +91,39 @@ impl TableData {
         }
     }
 
+    /// For each independent variable (row, column, table) whose key in `keys` lies outside the
+    /// breakpoints that the lookup uses, those breakpoints' first and last: where [`lookup`]
+    /// holds the end value. A three-variable table checks the row and column keys against the
+    /// two-variable tables it interpolates between.
+    ///
+    /// [`lookup`]: TableData::lookup
+    pub fn outside(&self, keys: &[f64]) -> [Option<(f64, f64)>; 3] {
+        let beyond = |k: &[f64], key: f64| {
+            let (lo, hi) = (k[0], k[k.len() - 1]);
+            (key < lo || key > hi).then_some((lo, hi))
+        };
+        match self {
+            TableData::One { keys: k, .. } => [beyond(k, keys[0]), None, None],
+            TableData::Two { rows, cols, .. } => {
+                [beyond(rows, keys[0]), beyond(cols, keys[1]), None]
+            }
+            TableData::Three {
+                breakpoints,
+                tables,
+            } => {
+                let (b, t) = bracket(breakpoints, keys[2]);
+                let upper = (t > 0.0 && b + 1 < tables.len()).then(|| &tables[b + 1]);
+                let mut out = [None, None, beyond(breakpoints, keys[2])];
+                for inner in std::iter::once(&tables[b]).chain(upper) {
+                    let [r, c, _] = inner.outside(keys);
+                    out[0] = out[0].or(r);
+                    out[1] = out[1].or(c);
+                }
+                out
+            }
+        }
+    }
+
     /// The breakpoints of independent variable `axis` (0 row, 1 column, 2 table).
     pub fn breakpoints(&self, axis: usize) -> Vec<f64> {
         match (self, axis) {
@@ -136,6 +169,29 @@ mod tests {
         assert_eq!(t.lookup(&[0.5, 1.0]), 6.0);
         assert_eq!(t.lookup(&[2.0, -1.0]), 10.0);
         assert_eq!(t.lookup(&[-1.0, 5.0]), 2.0);
+    }
+
+    #[test]
+    fn keys_beyond_the_breakpoints_are_named_with_the_range() {
+        let t = TableData::Two {
+            rows: vec![0.0, 1.0],
+            cols: vec![0.0, 2.0],
+            values: vec![vec![0.0, 2.0], vec![10.0, 12.0]],
+        };
+        assert_eq!(t.outside(&[0.5, 1.0]), [None, None, None]);
+        assert_eq!(t.outside(&[1.0, 0.0]), [None, None, None]);
+        assert_eq!(
+            t.outside(&[2.0, -1.0]),
+            [Some((0.0, 1.0)), Some((0.0, 2.0)), None]
+        );
+        let three = TableData::Three {
+            breakpoints: vec![0.0, 4.0],
+            tables: vec![t.clone(), t],
+        };
+        assert_eq!(
+            three.outside(&[0.5, 3.0, 5.0])[1..],
+            [Some((0.0, 2.0)), Some((0.0, 4.0))]
+        );
     }
 
     #[test]

@@ -44,7 +44,11 @@ pub fn parse_table(src: Source, node: Node, symbols: &mut Symbols) -> Result<Tab
             format!("a table of {n} independent variables needs {n} <independentVar>s (row, column, table)"),
         )
     })?;
-    Ok(Table { keys, data })
+    Ok(Table {
+        keys,
+        data,
+        line: src.line(node),
+    })
 }
 
 /// A three-variable table: one two-variable block per `breakPoint`.

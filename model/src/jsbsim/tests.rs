@@ -270,3 +270,151 @@ fn a_setting_of_a_property_the_import_moves_is_refused_a_configuration_input_is_
     assert!(load("fcs/flap-pos-norm").is_ok());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn a_table_read_beyond_its_breakpoints_is_recorded_once_with_its_function() {
+    let m = model(
+        r#"<function name="f/t"><sum><table><independentVar>x</independentVar>
+             <tableData>0 1
+                        1 3</tableData></table>
+             <table><independentVar>aero/h_b-mac-ft</independentVar>
+             <tableData>0 1
+                        1 3</tableData></table></sum></function>
+           <function name="f/u"><product><property>f/t</property><property>f/t</property>
+             </product></function>"#,
+    );
+    let mut env: Env = m.environment();
+    env.set("x", 2.0);
+    env.set("aero/h_b-mac-ft", 5.0);
+    assert_eq!(env.property("f/u").unwrap(), 36.0);
+    // The ground-effect table held beyond its end is not a warning; the other one is, once.
+    let [c] = env.clamps() else {
+        panic!("one clamp expected: {:?}", env.clamps());
+    };
+    assert_eq!(c.value, 2.0);
+    assert_eq!(c.range, (0.0, 1.0));
+    let f = c.function.expect("in a function");
+    assert_eq!(m.functions.list[f].name, "f/t");
+    let w = super::clamp::warnings(env.clamps(), &m.functions, "here");
+    assert_eq!(
+        w,
+        [
+            "the imported flight state (here) reads `x` = 2 beyond the breakpoints of 1 table, \
+          where JSBSim holds the end value (no extrapolation): 0 to 1 in f/t"
+        ]
+    );
+}
+
+/// The refusal of the first non-finite function among `names`, as the import words it.
+fn non_finite(m: &Model, names: &[&str], inputs: &[(&str, f64)]) -> String {
+    let mut env: Env = m.environment();
+    for (k, v) in inputs {
+        env.set(k, *v);
+    }
+    for name in names {
+        let f = m
+            .functions
+            .list
+            .iter()
+            .position(|f| f.name == *name)
+            .unwrap();
+        let v = env.function(f).unwrap();
+        if !v.is_finite() {
+            return super::finite::refusal(&mut env, f, v, "the state", &[]).to_string();
+        }
+    }
+    panic!("every function finite");
+}
+
+#[test]
+fn a_non_finite_function_is_refused_naming_where_it_arose() {
+    let m = model(
+        r#"<function name="f/a"><product><property>p</property>
+             <quotient><value>2</value><property>d</property></quotient></product></function>
+           <function name="f/b"><sum><value>1</value><property>f/a</property></sum></function>
+           <function name="f/c"><sqrt><difference><property>p</property><value>1</value>
+             </difference></sqrt></function>
+           <function name="f/d"><atan><quotient><value>1</value><property>d</property>
+             </quotient></atan></function>"#,
+    );
+    let zero = [("p", 0.0), ("d", 0.0)];
+    // JSBSim: the quotient by zero is HUGE_VAL, times p = 0 NaN.
+    let e = non_finite(&m, &["f/b"], &zero);
+    assert!(e.starts_with("test.xml:"), "{e}");
+    assert!(
+        e.contains("`f/b` is NaN at the state: it reads `f/a` = NaN (line")
+            && e.contains("where <quotient> divides 2 by `d` = 0 (JSBSim gives HUGE_VAL there)"),
+        "{e}"
+    );
+    // JSBSim's square root of a negative number is -HUGE_VAL.
+    let e = non_finite(&m, &["f/c"], &zero);
+    assert!(
+        e.contains("`f/c` is -inf at the state: <sqrt> of <difference> = -1 is -inf"),
+        "{e}"
+    );
+    // An infinity inside a function whose value is finite is no refusal.
+    assert_eq!(value(&m, "f/d", &zero), std::f64::consts::FRAC_PI_2);
+}
+
+#[test]
+fn mass_properties_no_aircraft_has_are_refused() {
+    let refused = |from: &str, to: &str| {
+        let xml = model_xml("", "").replace(from, to);
+        assert_ne!(xml, model_xml("", ""), "{from}");
+        Model::parse(&xml, "m.xml").unwrap_err().to_string()
+    };
+    let empty = r#"<emptywt unit="KG">1000</emptywt>"#;
+    let e = refused(empty, r#"<emptywt unit="KG">0</emptywt>"#);
+    assert!(
+        e.contains("m.xml:9: <mass_balance>: the total weight is 0 lbs"),
+        "{e}"
+    );
+    let e = refused(empty, r#"<emptywt unit="KG">-5</emptywt>"#);
+    assert!(e.contains("the weight of empty is"), "{e}");
+    let e = refused(
+        r#"<iyy unit="SLUG*FT2">2000</iyy>"#,
+        r#"<iyy unit="SLUG*FT2">-1</iyy>"#,
+    );
+    assert!(
+        e.contains("the moment of inertia iyy about the CG is -1 slug ft^2"),
+        "{e}"
+    );
+    // ixx = 1000 kg m^2 = 737.56 slug ft^2, izz 3000: an ixz of 1500 leaves ixx izz < ixz^2.
+    let e = refused(
+        r#"<ixz unit="SLUG*FT2">50</ixz>"#,
+        r#"<ixz unit="SLUG*FT2">1500</ixz>"#,
+    );
+    assert!(e.contains("ixx izz - ixz^2 = -"), "{e}");
+}
+
+#[test]
+fn a_non_finite_reference_point_shift_is_refused_with_the_flight_state() {
+    use super::coefficients::Setup;
+    use super::condition::{Condition, Speed, State};
+    let m = model(
+        r#"<aero_ref_pt_shift_x><function><quotient><value>1</value>
+             <property>fcs/shift</property></quotient></function></aero_ref_pt_shift_x>
+           <axis name="LIFT"><function name="aero/lift"><product>
+             <property>aero/qbar-area</property><value>0.3</value></product></function></axis>"#,
+    );
+    let setup = Setup {
+        model: &m,
+        condition: Condition::new(3000.0, Speed::Mach(0.5)).unwrap(),
+        surfaces: Vec::new(),
+        settings: vec![("fcs/shift".to_string(), 0.0)],
+    };
+    let state = State {
+        alpha: 2f64.to_radians(),
+        beta: 0.0,
+        rates: [0.1, 0.0, 0.0],
+        surfaces: [0.0; 3],
+    };
+    let e = setup.coefficients(&state).unwrap_err().to_string();
+    assert!(
+        e.contains(
+            "the coefficient Cm is -inf at altitude 3000 m, Mach 0.5, alpha 2 deg, p 1e-1 rad/s: \
+                    <aero_ref_pt_shift_x>: <quotient> divides 1 by `fcs/shift` = 0"
+        ),
+        "{e}"
+    );
+}

@@ -1,6 +1,7 @@
 //! The aircraft file of an import: the nondimensional body-axis format `analyze` reads
 //! (`[flight]`, `[geometry]`, `[inertia]` with `ixz`, `[coefficients]`, `[limits]`), in SI,
-//! with comments that say where every number came from.
+//! with comments that say where every number came from, and `[import]` with the import's
+//! warnings (tables read beyond their breakpoints), which the loader hands to `analyze`.
 
 use super::coefficients::Coefficients;
 use super::condition::{Condition, State};
@@ -66,6 +67,7 @@ impl Import<'_> {
     pub fn toml(&self) -> String {
         let mut t = String::new();
         self.header(&mut t);
+        self.warnings_table(&mut t);
         self.flight(&mut t);
         self.mass(&mut t, self.model.totals());
         self.coefficients(&mut t);
@@ -96,6 +98,48 @@ impl Import<'_> {
         }
         let name = if m.name.is_empty() { &m.file } else { &m.name };
         let _ = writeln!(t, "\nname = {:?}", format!("{name} (JSBSim)"));
+    }
+
+    /// The import's warnings: the tables the flight state reads beyond their breakpoints,
+    /// except those that only axis functions read that are zero at the state and move none of
+    /// the file's derivatives (a flap's increment with the flaps up, a hull's water forces in
+    /// flight): no number of the file depends on them.
+    pub fn warnings(&self) -> Vec<String> {
+        let place = super::coefficients::place(&self.condition, &self.state);
+        let model = self.model;
+        let roots: Vec<usize> = model
+            .aero
+            .terms
+            .iter()
+            .zip(&self.base.terms)
+            .filter(|(t, v)| {
+                let name = &model.functions.list[t.function].name;
+                **v != 0.0 || self.derivatives.iter().any(|d| d.functions.contains(name))
+            })
+            .map(|(t, _)| t.function)
+            .collect();
+        let read = super::clamp::read_by(&model.functions, &roots, model.aero.rp_shift.as_ref());
+        let clamps: Vec<_> = (self.base.clamps.iter())
+            .filter(|c| c.function.is_none_or(|f| read[f]))
+            .cloned()
+            .collect();
+        super::clamp::warnings(&clamps, &model.functions, &place)
+    }
+
+    fn warnings_table(&self, t: &mut String) {
+        let warnings = self.warnings();
+        if warnings.is_empty() {
+            return;
+        }
+        let _ = writeln!(t, "\n[import]");
+        for w in &warnings {
+            let _ = writeln!(t, "# Warning: {w}.");
+        }
+        let _ = writeln!(t, "warnings = [");
+        for w in &warnings {
+            let _ = writeln!(t, "    {},", toml_string(w));
+        }
+        let _ = writeln!(t, "]");
     }
 
     fn flight(&self, t: &mut String) {
@@ -292,6 +336,21 @@ const LIMITS: &str = "\
 # wings level, no rates, no sideslip. The analysis takes one limit on |deflection|: the
 # smaller end, the travel the surface reaches to either side.
 ";
+
+/// `text` as a TOML basic string: quoted, with `"`, `\\` and control characters escaped.
+fn toml_string(text: &str) -> String {
+    let mut s = String::from('"');
+    for c in text.chars() {
+        match c {
+            '"' => s.push_str("\\\""),
+            '\\' => s.push_str("\\\\"),
+            c if c.is_control() => s.push_str(&format!("\\u{:04X}", u32::from(c))),
+            c => s.push(c),
+        }
+    }
+    s.push('"');
+    s
+}
 
 /// A list for a comment.
 fn list(items: &[String]) -> String {

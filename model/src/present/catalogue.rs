@@ -109,17 +109,30 @@ pub fn row(name: &str, imported: &Result<Aircraft, String>) -> String {
         Err(e) => return format!("| {name} | no: {} | | | | | | |\n", cell(e)),
     };
     let analysis = analyze_routed_with(ac, DELTA_E_DEG.to_radians(), true);
-    let import = if ac.warnings.is_empty() {
-        "yes".to_string()
-    } else {
-        "yes (inertia breaks a triangle inequality)".to_string()
-    };
+    let import = import_cell(&ac.warnings);
     match analysis {
         Ok((a, _)) => format!("| {name} | {import} | {} |\n", answers(&a)),
         Err(e) => format!(
             "| {name} | {import} | not analysed: {} | | | | | |\n",
             cell(&e.to_string())
         ),
+    }
+}
+
+/// The import cell of an aircraft with `warnings`: "yes", with what the warnings concern.
+fn import_cell(warnings: &[String]) -> String {
+    let clamped = |w: &&String| w.starts_with(crate::jsbsim::clamp::WARNING_START);
+    let mut notes = Vec::new();
+    if warnings.iter().any(|w| !clamped(&w)) {
+        notes.push("inertia breaks a triangle inequality");
+    }
+    if warnings.iter().any(|w| clamped(&w)) {
+        notes.push("tables read beyond their range");
+    }
+    if notes.is_empty() {
+        "yes".to_string()
+    } else {
+        format!("yes ({})", notes.join("; "))
     }
 }
 

@@ -1,5 +1,6 @@
 //! The command-line tool end to end, as a user runs it: `analyze` (analyze.rs), the other
-//! commands (commands.rs), and what they write and how they fail (files.rs).
+//! commands (commands.rs), what they write and how they fail (files.rs), and the JSBSim import
+//! of a small model (jsbsim.rs).
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -10,6 +11,7 @@ mod support;
 mod analyze;
 mod commands;
 mod files;
+mod jsbsim;
 
 use support::{json, model, reference};
 

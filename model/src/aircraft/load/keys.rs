@@ -4,7 +4,7 @@
 use super::super::convert::Coefficient;
 use super::super::Param;
 
-pub(super) const TOP_KEYS: [&str; 9] = [
+pub(super) const TOP_KEYS: [&str; 10] = [
     "name",
     "inertia",
     "derivatives",
@@ -14,12 +14,14 @@ pub(super) const TOP_KEYS: [&str; 9] = [
     "limits",
     "validity",
     "uncertainty",
+    "import",
 ];
 pub(super) const INERTIA_KEYS: [&str; 7] = ["C", "D", "E", "ix", "iy", "iz", "ixz"];
 pub(super) const FLIGHT_KEYS: [&str; 5] = ["speed", "density", "altitude", "alpha", "load_factor"];
 pub(super) const GEOMETRY_KEYS: [&str; 4] = ["mass", "wing_area", "span", "chord"];
 pub(super) const LIMIT_KEYS: [&str; 3] = ["aileron", "elevator", "rudder"];
 pub(super) const VALIDITY_KEYS: [&str; 2] = ["alpha_max", "beta_max"];
+pub(super) const IMPORT_KEYS: [&str; 1] = ["warnings"];
 
 pub(super) fn derivative_keys() -> Vec<&'static str> {
     Param::ALL.iter().skip(3).map(|p| p.key()).collect()
@@ -34,7 +36,7 @@ pub(super) fn keys_of(table: &str) -> Vec<&'static str> {
 }
 
 /// The valid keys of each table, `""` being the top level.
-pub(super) fn tables_of_format() -> [(&'static str, Vec<&'static str>); 9] {
+pub(super) fn tables_of_format() -> [(&'static str, Vec<&'static str>); 10] {
     [
         ("", TOP_KEYS.to_vec()),
         ("inertia", INERTIA_KEYS.to_vec()),
@@ -56,6 +58,7 @@ pub(super) fn tables_of_format() -> [(&'static str, Vec<&'static str>); 9] {
                 .chain(Coefficient::ALL.iter().map(|c| c.key()))
                 .collect(),
         ),
+        ("import", IMPORT_KEYS.to_vec()),
     ]
 }
 

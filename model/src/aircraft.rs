@@ -102,6 +102,17 @@ pub struct Aircraft {
     pub trimmed: bool,
 }
 
+/// The trim the derivatives of an aircraft were taken at (see [`Aircraft::trim_state`]).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct TrimState {
+    /// Load factor n, lift over weight: `-z_0 V / g`.
+    pub load_factor: f64,
+    /// Angle of attack of the principal x axis, deg.
+    pub alpha_t_deg: f64,
+    /// True airspeed, m/s.
+    pub speed_m_s: f64,
+}
+
 /// One coordinate of the uncertainty box: the closed interval `[lo, hi]` (exact) of a parameter,
 /// or of a nondimensional coefficient that moves several parameters at once (`coefficient`).
 #[derive(Clone, Debug, PartialEq)]
@@ -206,6 +217,16 @@ impl Aircraft {
             warnings: Vec::new(),
             trimmed: false,
         }
+    }
+
+    /// The trim of an aircraft whose file gives it (else `None`): the flight state every
+    /// increment of the analysis is measured from.
+    pub fn trim_state(&self) -> Option<TrimState> {
+        self.trimmed.then(|| TrimState {
+            load_factor: -self.value(Param::Z0) * self.speed / G,
+            alpha_t_deg: self.value(Param::AlphaT).to_degrees(),
+            speed_m_s: self.speed,
+        })
     }
 
     /// The default elevator of every command, rad: the trim itself (0) for an aircraft whose

@@ -142,8 +142,13 @@ pub struct ZeroSideslip {
 pub struct Analysis {
     /// Aircraft name.
     pub aircraft: String,
-    /// Elevator deflection, rad.
+    /// Elevator deflection, rad: the increment from `trim` when there is one.
     pub delta_e_rad: f64,
+    /// The trim the aircraft's derivatives were taken at (an import), which the states and
+    /// the elevator of every row are increments from; absent from JSON for the paper's
+    /// aircraft, whose angles are measured from zero lift.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trim: Option<crate::aircraft::TrimState>,
     /// The first jump on the primary branch (from P0 = 0, delta_a = 0): the answer a user comes
     /// for, or `None` when the branch diverges or runs off to |delta_a| = 90 deg without a fold
     /// (see `critical_note`). Its aileron is negative for `l_delta_a < 0`; by the symmetry of
@@ -413,6 +418,7 @@ impl Found {
         let analysis = Analysis {
             aircraft: aircraft.name.clone(),
             delta_e_rad,
+            trim: aircraft.trim_state(),
             critical: critical.map(|i: usize| jump[i].clone()),
             critical_note,
             warnings: aircraft.warnings.clone(),

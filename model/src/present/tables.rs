@@ -39,10 +39,24 @@ pub fn analysis(a: &Analysis) -> String {
     let mut s = String::new();
     let list = |v: &[f64]| list(v, 6, "rad/s");
     s += &format!(
-        "{}  (delta_e = {} deg, delta_r = 0)\n\n",
+        "{}  (delta_e = {} deg{}, delta_r = 0)\n\n",
         shown(&a.aircraft),
-        fixed(a.delta_e_rad.to_degrees(), 4)
+        fixed(a.delta_e_rad.to_degrees(), 4),
+        if a.trim.is_some() {
+            " from the trim"
+        } else {
+            ""
+        }
     );
+    if let Some(t) = &a.trim {
+        s += &format!(
+            "At the trim: n = {} g at V = {} m/s, the principal axis at alpha_t = {} deg; alpha, \
+             beta, q, r and delta_e below are increments from it.\n\n",
+            fixed(t.load_factor, 3),
+            fixed(t.speed_m_s, 1),
+            fixed(t.alpha_t_deg, 3)
+        );
+    }
     for w in &a.warnings {
         s += &format!("Warning: {w}.\n\n");
     }

@@ -387,3 +387,40 @@ fn the_paper_aircraft_first_depart_by_their_critical_jump() {
         );
     }
 }
+
+/// A file that gives its trim: the analysis says the flight state (load factor from
+/// `z_0 = -n g / V`, the principal axis' angle of attack) and its elevator defaults to the trim
+/// itself, where the paper's aircraft default to 2 deg from zero lift.
+#[test]
+fn a_trimmed_aircraft_is_analysed_at_its_trim_and_says_it() {
+    // A at V = 150 m/s linearised about 1.5 g with the principal axis 0.05 rad above the path.
+    let z_0 = -1.5 * 9.80665 / 150.0;
+    let (_, path) = variant(
+        "trimmed",
+        &[(
+            "n_delta_r = -1.0",
+            &format!("n_delta_r = -1.0\nz_0 = {z_0}\nalpha_t = 0.05"),
+        )],
+    );
+    let path = path.to_str().unwrap();
+    let v = json(&model(&["analyze", path, "--json"]));
+    assert_eq!(v["delta_e_rad"], 0.0);
+    assert!((v["trim"]["load_factor"].as_f64().unwrap() - 1.5).abs() < 1e-12);
+    assert!((v["trim"]["alpha_t_deg"].as_f64().unwrap() - 0.05f64.to_degrees()).abs() < 1e-12);
+    assert_eq!(v["trim"]["speed_m_s"], 150.0);
+    let text = String::from_utf8(model(&["analyze", path]).stdout).unwrap();
+    assert!(
+        text.contains("(delta_e = 0.0000 deg from the trim"),
+        "{text}"
+    );
+    assert!(
+        text.contains(
+            "At the trim: n = 1.500 g at V = 150.0 m/s, the principal axis at alpha_t = 2.865 deg"
+        ),
+        "{text}"
+    );
+    // The paper's aircraft: no trim, the elevator 2 deg from zero lift.
+    let a = json(&model(&["analyze", "A", "--json"]));
+    assert!(a.get("trim").is_none());
+    assert_eq!(a["delta_e_rad"], 2f64.to_radians());
+}

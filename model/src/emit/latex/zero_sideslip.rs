@@ -127,8 +127,8 @@ impl Writer<'_> {
         let _ = write!(
             out,
             "The trim, $x_0 = -A_1^{{-1}} b_1 u = -\\frac{{\\operatorname{{adj}}[A_1]}}\
-             {{\\det[A_1]}} b_1 u$:\n\\begin{{align*}}\n{} &= \\frac{{{}}}{{\\Delta_1}}, \\quad \
-             {} = \\frac{{{}}}{{\\Delta_1}}, \\quad {} = \\frac{{{}}}{{\\Delta_1}} \\tag{{35}} \\\\\n\
+             {{\\det[A_1]}} b_1 u$:\n\\begin{{align*}}\n{} &= \\frac{{{}}}{{\\Delta_1}} \\\\\n\
+             {} &= \\frac{{{}}}{{\\Delta_1}} \\\\\n{} &= \\frac{{{}}}{{\\Delta_1}} \\tag{{35}} \\\\\n\
              \\delta_r &= {} \\\\\n\\delta_a &= {}\n\\end{{align*}}\n",
             names[0],
             self.inline(&self.grouped(&d.zs_trim[0], &[])),

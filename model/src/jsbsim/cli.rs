@@ -5,7 +5,8 @@
 
 use super::catalogue;
 use super::condition::Speed;
-use super::import::{evaluates, import, Alpha, Request, REFERENCE};
+use super::import::{evaluates, import, import_trimmed, Alpha, Request, REFERENCE};
+use super::trim::Trim;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -163,14 +164,47 @@ fn parse_and_run(args: &[String], out: &mut dyn Write) -> Result<(), String> {
     match parse(args)? {
         Command::List(root) => listing(root, out),
         Command::Import(request, file) => {
-            let text = import(&request)?;
+            let (text, trim) = import_trimmed(&request)?;
             match file {
-                Some(path) => std::fs::write(&path, text)
-                    .map_err(|e| format!("{}: cannot write: {e}", path.display())),
+                Some(path) => {
+                    crate::files::write_output(&path, text.as_bytes())
+                        .map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
+                    let said = written(&path, &request, trim.as_ref());
+                    writeln!(out, "{said}").map_err(|e| e.to_string())
+                }
                 None => out.write_all(text.as_bytes()).map_err(|e| e.to_string()),
             }
         }
     }
+}
+
+/// What `--out` wrote, and at which flight state: the line a user reads after the import.
+fn written(path: &std::path::Path, r: &Request, trim: Option<&Trim>) -> String {
+    let speed = match r.speed {
+        Speed::Mach(m) => format!("Mach {m}"),
+        Speed::True(v) => format!("{v} m/s true airspeed"),
+    };
+    let at = match trim {
+        Some(t) if t.per_unit_travel => format!(
+            "trimmed at n = {} (alpha {:.4} deg, elevator {:.4} of its travel)",
+            t.load_factor,
+            t.alpha.to_degrees(),
+            t.elevator
+        ),
+        Some(t) => format!(
+            "trimmed at n = {} (alpha {:.4} deg, elevator {:.4} deg, JSBSim's sign)",
+            t.load_factor,
+            t.alpha.to_degrees(),
+            t.elevator.to_degrees()
+        ),
+        None => "linearised at the alpha given (not a trim)".to_string(),
+    };
+    format!(
+        "wrote {}: {} at {} m, {speed}, {at}",
+        path.display(),
+        r.model,
+        r.altitude_m
+    )
 }
 
 /// The aircraft of a `jsbsim:` source, the import's arguments after the colon in one string

@@ -41,12 +41,21 @@ pub struct Request {
 
 /// The aircraft file (TOML text) of `request`, or why not.
 pub fn import(request: &Request) -> Result<String, String> {
+    import_trimmed(request).map(|(text, _)| text)
+}
+
+/// The aircraft file of `request` and the trim it was linearised at (`None` for an angle of
+/// attack given), for a caller that says where the aircraft flies.
+pub fn import_trimmed(request: &Request) -> Result<(String, Option<Trim>), String> {
     let loaded = Loaded::new(&request.model, request.root.as_deref(), &request.settings)?;
     let condition = Condition::new(request.altitude_m, request.speed)?;
     let setup = loaded.setup(condition);
     match request.alpha {
-        Alpha::Given(a) => given_alpha_file(&setup, a),
-        Alpha::Trim(n) => trimmed_file(&setup, &trim(&setup, n)?),
+        Alpha::Given(a) => Ok((given_alpha_file(&setup, a)?, None)),
+        Alpha::Trim(n) => {
+            let t = trim(&setup, n)?;
+            Ok((trimmed_file(&setup, &t)?, Some(t)))
+        }
     }
 }
 

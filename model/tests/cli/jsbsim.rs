@@ -196,3 +196,34 @@ fn an_envelope_reports_a_non_finite_point_and_the_warnings_of_each_point() {
         assert_eq!(warned, usize::from(beyond), "{p}");
     }
 }
+
+/// `--out` says what it wrote and where the aircraft was linearised: the trim's load factor,
+/// alpha and elevator, which the file's `[flight]` gives too.
+#[test]
+fn an_import_into_a_file_says_the_trim_it_wrote() {
+    let dir = scratch("jsbsim-said");
+    let xml = dir.join("jet.xml");
+    std::fs::write(&xml, jet()).unwrap();
+    let xml = xml.to_string_lossy().into_owned();
+    let file = dir.join("jet.toml").to_string_lossy().into_owned();
+    let out = import(&xml, &["6096", "--mach", "0.6", "--out", &file]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let said = String::from_utf8(out.stdout).unwrap();
+    let text = std::fs::read_to_string(&file).unwrap();
+    let alpha: f64 = text
+        .lines()
+        .find_map(|l| l.strip_prefix("alpha = "))
+        .and_then(|l| l.split_whitespace().next()?.parse().ok())
+        .expect("the trim's alpha in [flight]");
+    assert!(
+        said.starts_with(&format!(
+            "wrote {file}: {xml} at 6096 m, Mach 0.6, trimmed at n = 1 (alpha "
+        )),
+        "{said}"
+    );
+    assert!(
+        said.contains(&format!("alpha {:.4} deg", alpha.to_degrees())),
+        "{said}"
+    );
+    assert!(said.contains("deg, JSBSim's sign)"), "{said}");
+}

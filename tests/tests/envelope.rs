@@ -466,3 +466,35 @@ fn an_unstable_trim_is_its_own_class_in_the_json_csv_map_and_counts() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The first-departure map tells a departure a full-stick roll reaches from one beyond the
+/// aileron's travel: the F-104 at sea level, Mach 0.9, jumps from 1-g flight only beyond its
+/// 20.05 deg aileron (margin < 0), at 12,000 m, Mach 0.9, unloaded, well within it; each cell
+/// gets the legend entry its JSON margin says.
+#[test]
+fn the_departure_map_tells_departures_within_the_stick_from_those_beyond_it() {
+    if !installed() {
+        return;
+    }
+    for (altitude, n, within) in [("0", 1.0, false), ("12000", 0.0, true)] {
+        let dir =
+            std::env::temp_dir().join(format!("envelope-beyond-{altitude}-{}", std::process::id()));
+        let mut a = args("jsbsim:f104", altitude, "0.9");
+        (a.out, a.load_factor) = (Some(dir.clone()), Some(n));
+        let mut out = Vec::new();
+        command(&a, &mut out).unwrap();
+        let v: Value = serde_json::from_slice(&out).unwrap();
+        let p = &v["points"][0];
+        let margin = p["margin_deg"].as_f64().expect("a margin");
+        assert_eq!(margin >= 0.0, within, "{p}");
+        let kind = p["first_departure"]["kind"].as_str().unwrap();
+        let want = format!(
+            "{} {} the stick's travel",
+            if kind == "hopf" { "Hopf" } else { kind },
+            if within { "within" } else { "beyond" }
+        );
+        let map = std::fs::read_to_string(dir.join("first_departure.csv")).unwrap();
+        assert!(map.contains(&want), "{want} in {map}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}

@@ -196,20 +196,43 @@ fn margins(env: &Envelope) -> Field {
     Field { xs, ys, values }
 }
 
-/// The region map of the first departure's kind, an unstable trim at P0 = 0 its own class.
+/// Pale red of cells whose first departure is a jump beyond the aileron's travel.
+const JUMP_BEYOND: Rgb = Rgb(240, 170, 170);
+/// Pale orange of cells whose first departure is a Hopf point beyond the aileron's travel.
+const HOPF_BEYOND: Rgb = Rgb(250, 215, 160);
+
+/// Whether the first departure of `p` needs more aileron than its limit: a full-stick roll
+/// does not reach it, which the map must not paint as the departure a pilot meets.
+fn beyond_the_stick(p: &Point) -> bool {
+    match (&p.first_departure, p.aileron_limit_deg) {
+        (Some(d), Some(limit)) => d.delta_a_deg.abs() > limit,
+        _ => false,
+    }
+}
+
+/// The region map of the first departure's kind, an unstable trim at P0 = 0 its own class,
+/// and a jump or Hopf point beyond the aileron's travel drawn pale, apart from those a
+/// full-stick roll reaches.
 pub fn departure_regions(env: &Envelope, style: &PlotStyle) -> Figure {
     let title = format!("{}: first departure on the primary branch", env.source);
-    cells(env, title, style, &|p| match departure_kind(p) {
-        "unstable_trim" => (
-            UNSTABLE_TRIM,
-            "unstable trim (bare airframe)".to_string(),
-            0,
-        ),
-        "jump" => (Rgb::RED, "jump".to_string(), 1),
-        "hopf" => (Rgb::ORANGE, "Hopf (oscillation)".to_string(), 2),
-        "none" => (Rgb::GREEN, "none: stable throughout".to_string(), 3),
-        _ => missing(p),
-    })
+    cells(
+        env,
+        title,
+        style,
+        &|p| match (departure_kind(p), beyond_the_stick(p)) {
+            ("unstable_trim", _) => (
+                UNSTABLE_TRIM,
+                "unstable trim (bare airframe)".to_string(),
+                0,
+            ),
+            ("jump", false) => (Rgb::RED, "jump within the stick's travel".to_string(), 1),
+            ("hopf", false) => (Rgb::ORANGE, "Hopf within the stick's travel".to_string(), 2),
+            ("jump", true) => (JUMP_BEYOND, "jump beyond the stick's travel".to_string(), 3),
+            ("hopf", true) => (HOPF_BEYOND, "Hopf beyond the stick's travel".to_string(), 4),
+            ("none", _) => (Rgb::GREEN, "none: stable throughout".to_string(), 5),
+            _ => missing(p),
+        },
+    )
 }
 
 /// Every map with its file stem.

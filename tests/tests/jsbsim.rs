@@ -8,11 +8,9 @@
 //! against the aircraft loader and `analyze`.
 
 use model::jsbsim::catalogue;
-use model::jsbsim::coefficients::Setup;
 use model::jsbsim::condition::{Condition, Speed, State};
 use model::jsbsim::derivatives::{derivatives, moved, DERIVATIVES};
-use model::jsbsim::import::{import, Alpha, Request};
-use model::jsbsim::surfaces::surfaces;
+use model::jsbsim::import::{import, Alpha, Loaded, Request};
 use model::jsbsim::Model;
 use model::random::Rng;
 use serde_json::{json, Value};
@@ -222,14 +220,9 @@ fn derivatives_agree_with_central_differences_in_jsbsim() {
         ("T38", 3000.0, 0.6, 2.5),
         ("f104", 3048.0, 0.9, f64::NAN),
     ] {
-        let path = catalogue::model_path(Some(&root), name).unwrap();
-        let model = Model::load(&path).unwrap();
-        let setup = Setup {
-            model: &model,
-            condition: Condition::new(altitude_m, Speed::Mach(mach)).unwrap(),
-            surfaces: surfaces(&model, &path).unwrap(),
-            settings: Vec::new(),
-        };
+        let loaded = Loaded::new(name, Some(&root), &[]).unwrap();
+        let model = &loaded.model;
+        let setup = loaded.setup(Condition::new(altitude_m, Speed::Mach(mach)).unwrap());
         let state = if alpha_deg.is_nan() {
             model::jsbsim::trim::trim(&setup, 2.0).unwrap().state()
         } else {
@@ -273,8 +266,8 @@ fn derivatives_agree_with_central_differences_in_jsbsim() {
                              "states": states, "quasi_steady": true});
         let out = oracle(&request);
         for (k, ((key, c, _, sign), d)) in DERIVATIVES.iter().zip(&ours).enumerate() {
-            let plus = jsbsim_coefficients(&out[2 * k], &model)[*c];
-            let minus = jsbsim_coefficients(&out[2 * k + 1], &model)[*c];
+            let plus = jsbsim_coefficients(&out[2 * k], model)[*c];
+            let minus = jsbsim_coefficients(&out[2 * k + 1], model)[*c];
             let theirs = sign * (plus - minus) / (2.0 * h);
             let tol = 1e-4 + 1e-3 * theirs.abs();
             eprintln!("{name} {key}: ours {:.6}, JSBSim {theirs:.6}", d.value);

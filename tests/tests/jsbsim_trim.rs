@@ -9,9 +9,8 @@
 use model::jsbsim::catalogue;
 use model::jsbsim::coefficients::{Setup, CL, CM};
 use model::jsbsim::condition::{Condition, Speed, State};
-use model::jsbsim::surfaces::surfaces;
+use model::jsbsim::import::Loaded;
 use model::jsbsim::trim::trim;
-use model::jsbsim::Model;
 use serde_json::json;
 use std::path::Path;
 use support::{f, jsbsim_coefficients, oracle_state};
@@ -28,15 +27,8 @@ fn with_setup<T>(
     (altitude_m, mach): (f64, f64),
     body: impl FnOnce(&Setup) -> T,
 ) -> T {
-    let path = catalogue::model_path(Some(root), name).unwrap();
-    let model = Model::load(&path).unwrap();
-    let setup = Setup {
-        model: &model,
-        condition: Condition::new(altitude_m, Speed::Mach(mach)).unwrap(),
-        surfaces: surfaces(&model, &path).unwrap(),
-        settings: Vec::new(),
-    };
-    body(&setup)
+    let loaded = Loaded::new(name, Some(root), &[]).unwrap();
+    body(&loaded.setup(Condition::new(altitude_m, Speed::Mach(mach)).unwrap()))
 }
 
 /// The trims checked: the F-104 in level flight, pulling 2 and 3 g and unloaded (0 g) at

@@ -343,6 +343,21 @@ fn import_help_prints_the_options_and_succeeds() {
     }
 }
 
+/// `model import jsbsim f104` at an altitude (m), Mach number and load factor.
+fn import_f104(altitude: &str, mach: &str, n: &str) -> std::process::Output {
+    model(&[
+        "import",
+        "jsbsim",
+        "f104",
+        "--altitude-m",
+        altitude,
+        "--mach",
+        mach,
+        "--load-factor",
+        n,
+    ])
+}
+
 /// An untrimmable condition is bad input (exit 2) whose message names the limit: the F-104 at
 /// 3,000 m, Mach 1.2 pulling 7 g needs more nose-up elevator than its stabilator's travel
 /// (FCS-pitch.xml: -0.35 rad), and at 6,000 m, Mach 0.6 no alpha up to 30 deg gives 3 g of lift.
@@ -367,19 +382,12 @@ fn an_untrimmable_condition_exits_2_naming_the_limit() {
             "no lift solution from -10 to 30 deg alpha",
         ),
     ] {
-        let args = [
-            "import",
-            "jsbsim",
-            "f104",
-            "--altitude-m",
-            altitude,
-            "--mach",
-            mach,
-            "--load-factor",
-            n,
-        ];
-        let out = model(&args);
-        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let out = import_f104(altitude, mach, n);
+        assert_eq!(
+            out.status.code(),
+            Some(2),
+            "{altitude} m, Mach {mach}, n = {n}"
+        );
         let err = stderr(&out);
         assert!(
             err.starts_with(&format!("error: untrimmable at n = {n}: ")) && err.contains(limit),
@@ -388,17 +396,7 @@ fn an_untrimmable_condition_exits_2_naming_the_limit() {
         assert!(out.stdout.is_empty());
     }
     for (mach, altitude, n) in [("1.2", "3000", "5"), ("0.6", "6000", "1")] {
-        let out = model(&[
-            "import",
-            "jsbsim",
-            "f104",
-            "--altitude-m",
-            altitude,
-            "--mach",
-            mach,
-            "--load-factor",
-            n,
-        ]);
+        let out = import_f104(altitude, mach, n);
         assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
         let text = String::from_utf8_lossy(&out.stdout);
         assert!(text.contains(&format!("load_factor = {n}.0")), "{text}");

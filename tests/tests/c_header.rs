@@ -660,17 +660,17 @@ fn no_build_contains_a_fused_multiply_add_instruction() {
 }
 
 #[test]
-fn readme_c_example_compiles_warning_free() {
+fn guide_c_example_compiles_warning_free() {
     if !required("gcc") {
         return;
     }
-    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
-    let section = &readme[readme
-        .find("### The same criterion in C")
-        .expect("the C section")..];
+    let page = std::fs::read_to_string(root().join("docs/generated.md")).unwrap();
+    let section = &page[page
+        .find("## The same criterion in C")
+        .expect("the C section of docs/generated.md")..];
     let start = section.find("```c\n").expect("a C example") + 5;
     let example = &section[start..start + section[start..].find("```").unwrap()];
-    let symbols = object_symbols(&GCC, "readme", example);
+    let symbols = object_symbols(&GCC, "guide", example);
     assert!(symbols.contains(" T criterion\n"), "{symbols}");
 }
 

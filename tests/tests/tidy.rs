@@ -142,7 +142,7 @@ fn the_issue_check_sees_each_citation_form() {
 
 /// The README's test command is what CI runs: `.ci/run` runs it stage by stage (to time each),
 /// and its stages joined by ` && ` are the command of the README's fenced block, letter for
-/// letter.
+/// letter, and of the user's guide's page on contributing.
 #[test]
 fn ci_runs_the_readme_test_command_stage_by_stage() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
@@ -162,12 +162,14 @@ fn ci_runs_the_readme_test_command_stage_by_stage() {
         .collect();
     assert!(stages.len() >= 5, "{stages:?}");
     let command = stages.join(" && ");
-    let readme = std::fs::read_to_string(root.join("README.md")).expect("README.md");
     let fenced = format!("```sh\n{command}\n```");
-    assert!(
-        readme.contains(&fenced),
-        "the README's test command is not the stages of .ci/run:\n{command}"
-    );
+    for page in ["README.md", "docs/contributing.md"] {
+        let text = std::fs::read_to_string(root.join(page)).expect(page);
+        assert!(
+            text.contains(&fenced),
+            "the test command of {page} is not the stages of .ci/run:\n{command}"
+        );
+    }
 }
 
 /// One concept per file: a hand-written source longer than this holds several, and is split

@@ -1,5 +1,5 @@
-//! `model analyze` as a user runs it: its table and JSON, the README's main job, bad input and
-//! answers that must be refused rather than printed.
+//! `model analyze` as a user runs it: its table and JSON, bad input and answers that must be
+//! refused rather than printed.
 
 use super::*;
 
@@ -191,33 +191,6 @@ fn names_are_escaped_and_unknown_names_get_the_built_ins() {
         String::from_utf8_lossy(&help.stdout).contains("else the path of an aircraft TOML file")
     );
     std::fs::remove_dir_all(&dir).unwrap();
-}
-
-/// The fenced block of `lang` that follows `after` in the README.
-fn readme_block(after: &str, lang: &str) -> String {
-    let readme = std::fs::read_to_string(repo("README.md")).unwrap();
-    let rest = &readme[readme.find(after).unwrap_or_else(|| panic!("{after}")) + after.len()..];
-    let fence = format!("```{lang}\n");
-    let start = rest.find(&fence).unwrap() + fence.len();
-    let end = start + rest[start..].find("```").unwrap();
-    rest[start..end].to_string()
-}
-
-#[test]
-fn readme_shows_the_real_output_of_the_main_job() {
-    let text = model(&["analyze", "A"]);
-    assert_eq!(
-        readme_block(
-            "cargo run --release -p model -- analyze A\n```\n\nprints",
-            "text"
-        ),
-        String::from_utf8_lossy(&text.stdout)
-    );
-    let json = model(&["analyze", "A", "--json"]);
-    assert_eq!(
-        readme_block("`analyze A --json` prints", "json"),
-        String::from_utf8_lossy(&json.stdout)
-    );
 }
 
 /// A tiny elevator deflection makes two zero-sideslip departure roots round to the same f64:

@@ -1,6 +1,7 @@
 //! The command-line tool end to end, as a user runs it: `analyze` (analyze.rs), the other
-//! commands (commands.rs), what they write and how they fail (files.rs), and the JSBSim import
-//! of a small model (jsbsim.rs).
+//! commands (commands.rs), what they write and how they fail (files.rs), the JSBSim import
+//! of a small model (jsbsim.rs), and the README's first screen and the outputs the README and
+//! the user's guide show (readme.rs).
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -12,6 +13,7 @@ mod analyze;
 mod commands;
 mod files;
 mod jsbsim;
+mod readme;
 
 use support::{json, model, reference};
 

@@ -1,6 +1,7 @@
 //! The README as a new user meets it: short, a first screen with the install line and the two
 //! commands, and, for every command of that screen, the output the README shows for it as the
-//! tool prints it; and the output of `analyze A` that the user's guide explains.
+//! tool prints it; the opening of the tour's F-104 output; and the output of `analyze A` that
+//! the user's guide explains.
 
 use super::*;
 
@@ -124,5 +125,32 @@ fn the_guide_explains_the_real_output_of_analyze_a() {
     assert_eq!(
         shown_block("docs/analyze.md", "`analyze A --json` prints", "json"),
         String::from_utf8_lossy(&json.stdout)
+    );
+}
+
+/// The tour's JSBSim jet: the output the README shows for the unloaded F-104 opens what
+/// `analyze` prints for the import the README names. Skipped with a message when the JSBSim
+/// models are not installed.
+#[test]
+fn the_tours_f104_output_opens_what_analyze_prints() {
+    if model::jsbsim::catalogue::root(None).is_none() {
+        eprintln!("skipped: the JSBSim models are not installed (pip install jsbsim)");
+        return;
+    }
+    let source = "jsbsim:f104 --altitude-m 6096 --mach 0.53 --load-factor 0";
+    let command = format!("cargo run --release -p model -- analyze \"{source}\"");
+    assert!(
+        shell_lines(&text("README.md"))
+            .iter()
+            .any(|line| line.starts_with(&command)),
+        "the README's tour no longer shows `{command}`"
+    );
+    let out = model(&["analyze", source]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let shown = shown_block("README.md", "the output opens with", "text");
+    let printed = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        printed.starts_with(&shown),
+        "the README shows\n{shown}\nbut analyze prints\n{printed}"
     );
 }

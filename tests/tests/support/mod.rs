@@ -16,7 +16,7 @@ pub const FULL_SIZE: &str = "ROLL_FULL_SIZE";
 
 /// `full` when `ROLL_FULL_SIZE=1` is set, else `default`: a randomised property is checked on a
 /// sample sized for a check in the default run (seconds), and on a sample sized for a proof in
-/// the full-size run (minutes; the README's contributing section gives the command).
+/// the full-size run (minutes; docs/contributing.md gives the command).
 pub fn size(default: usize, full: usize) -> usize {
     if std::env::var(FULL_SIZE).is_ok_and(|v| v == "1") {
         full

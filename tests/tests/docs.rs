@@ -3,7 +3,7 @@
 //! of that page (the anchor GitHub and mdBook give it); and every page under docs/ is a chapter
 //! of the mdBook's docs/SUMMARY.md, so that the rendered guide has it too.
 
-use pulldown_cmark::{Event, Options, Parser, Tag, TagEnd};
+use markdown::mdast::Node;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
@@ -54,34 +54,38 @@ fn anchor(heading: &str) -> String {
 /// A Markdown page's link and image targets, and its headings' anchors (a repeated heading's
 /// second anchor ends in `-1`, its third in `-2`, as GitHub and mdBook number them).
 fn links_and_anchors(text: &str) -> (Vec<String>, BTreeSet<String>) {
+    let tree = markdown::to_mdast(text, &markdown::ParseOptions::gfm())
+        .unwrap_or_else(|e| panic!("not Markdown: {e}"));
     let mut links = Vec::new();
+    let mut headings = Vec::new();
+    walk(&tree, &mut links, &mut headings);
     let mut anchors = BTreeSet::new();
     let mut seen: BTreeMap<String, usize> = BTreeMap::new();
-    let mut heading: Option<String> = None;
-    for event in Parser::new_ext(text, Options::ENABLE_TABLES) {
-        match event {
-            Event::Start(Tag::Link { dest_url, .. } | Tag::Image { dest_url, .. }) => {
-                links.push(dest_url.to_string())
-            }
-            Event::Start(Tag::Heading { .. }) => heading = Some(String::new()),
-            Event::Text(t) | Event::Code(t) => {
-                if let Some(h) = heading.as_mut() {
-                    h.push_str(&t);
-                }
-            }
-            Event::End(TagEnd::Heading(_)) => {
-                let base = anchor(&heading.take().unwrap_or_default());
-                let count = seen.entry(base.clone()).or_insert(0);
-                anchors.insert(match *count {
-                    0 => base,
-                    n => format!("{base}-{n}"),
-                });
-                *count += 1;
-            }
-            _ => {}
-        }
+    for heading in headings {
+        let base = anchor(&heading);
+        let count = seen.entry(base.clone()).or_insert(0);
+        anchors.insert(match *count {
+            0 => base,
+            n => format!("{base}-{n}"),
+        });
+        *count += 1;
     }
     (links, anchors)
+}
+
+/// The link and image targets (reference definitions included) and the heading texts under
+/// `node`, in document order.
+fn walk(node: &Node, links: &mut Vec<String>, headings: &mut Vec<String>) {
+    match node {
+        Node::Link(link) => links.push(link.url.clone()),
+        Node::Image(image) => links.push(image.url.clone()),
+        Node::Definition(definition) => links.push(definition.url.clone()),
+        Node::Heading(_) => headings.push(node.to_string()),
+        _ => {}
+    }
+    for child in node.children().into_iter().flatten() {
+        walk(child, links, headings);
+    }
 }
 
 /// Whether a link leaves the repository (a web address, mail).

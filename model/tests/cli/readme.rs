@@ -128,9 +128,9 @@ fn the_guide_explains_the_real_output_of_analyze_a() {
     );
 }
 
-/// The tour's JSBSim jet: the output the README shows for the unloaded F-104 opens what
-/// `analyze` prints for the import the README names. Skipped with a message when the JSBSim
-/// models are not installed.
+/// The tour's JSBSim jet: the output the README and the guide's worked example show for the
+/// unloaded F-104 opens what `analyze` prints for the import the README names. Skipped with a
+/// message when the JSBSim models are not installed.
 #[test]
 fn the_tours_f104_output_opens_what_analyze_prints() {
     if model::jsbsim::catalogue::root(None).is_none() {
@@ -147,10 +147,18 @@ fn the_tours_f104_output_opens_what_analyze_prints() {
     );
     let out = model(&["analyze", source]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-    let shown = shown_block("README.md", "the output opens with", "text");
     let printed = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        printed.starts_with(&shown),
-        "the README shows\n{shown}\nbut analyze prints\n{printed}"
-    );
+    for (page, after) in [
+        ("README.md", "the output opens with"),
+        (
+            "docs/jsbsim.md",
+            "the principal axis 0.98 deg below the flight path) it jumps:",
+        ),
+    ] {
+        let shown = shown_block(page, after, "text");
+        assert!(
+            printed.starts_with(&shown),
+            "{page} shows\n{shown}\nbut analyze prints\n{printed}"
+        );
+    }
 }

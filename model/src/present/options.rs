@@ -101,6 +101,33 @@ pub struct SimulateArgs {
     /// Write the time history as CSV to this file (units in the header).
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
+    /// The native nonlinear 6-DOF of a `jsbsim:` source instead, from its n-g trim
+    /// (`--delta-a-deg` in the paper's sign: positive rolls left).
+    #[arg(long)]
+    pub six_dof: bool,
+    /// 6-DOF: geometric altitude, m (or inside the `jsbsim:` source).
+    #[arg(long, allow_hyphen_values = true, requires = "six_dof")]
+    pub altitude_m: Option<f64>,
+    /// 6-DOF: Mach number (or inside the `jsbsim:` source).
+    #[arg(long, allow_hyphen_values = true, requires = "six_dof")]
+    pub mach: Option<f64>,
+    /// 6-DOF: load factor of the trim the run starts from (default 1; or inside the source).
+    #[arg(long, allow_hyphen_values = true, requires = "six_dof")]
+    pub load_factor: Option<f64>,
+    /// 6-DOF: thrust `off` (gliding) or `trim` (held at the trim's drag balance).
+    #[arg(
+        long,
+        value_name = "off|trim",
+        default_value = "off",
+        requires = "six_dof"
+    )]
+    pub thrust: String,
+    /// 6-DOF: integration step, s (default 1/120, JSBSim's rate).
+    #[arg(long, allow_hyphen_values = true, requires = "six_dof")]
+    pub dt: Option<f64>,
+    /// 6-DOF: write the time-history figure (SVG, PNG and its CSV) into DIR.
+    #[arg(long, value_name = "DIR", requires = "six_dof")]
+    pub out: Option<PathBuf>,
 }
 
 /// Options of `clear`.

@@ -12,6 +12,7 @@ mod analyze;
 mod commands;
 mod files;
 mod jsbsim;
+mod six_dof;
 
 use support::{json, model, reference};
 

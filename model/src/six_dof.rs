@@ -6,10 +6,12 @@
 //! Data flow: [`state`] (the body's state and its attitude), [`airframe`] (the forces and
 //! moments of the model at a state, the import's evaluation with the property names resolved
 //! once), [`motion`] (the equations of motion), [`run`] (the start from the import's n-g trim,
-//! the surfaces held, the integration) and [`history`] (what a run records, as CSV).
+//! the surfaces held, the integration), [`history`] (what a run records, as CSV) and [`jump`] (the rule that calls
+//! a jump in a sweep of aileron steps).
 
 pub mod airframe;
 pub mod history;
+pub mod jump;
 pub mod motion;
 pub mod run;
 pub mod state;

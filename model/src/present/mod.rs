@@ -19,3 +19,4 @@ pub mod progress;
 pub mod report;
 pub mod six_dof;
 pub mod tables;
+pub mod validate;

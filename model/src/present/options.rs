@@ -130,6 +130,31 @@ pub struct SimulateArgs {
     pub out: Option<PathBuf>,
 }
 
+/// Options of `validate`.
+#[derive(Args)]
+pub struct ValidateArgs {
+    /// The model: "jsbsim:MODEL" (the flight condition inside it or as the options below).
+    pub source: String,
+    /// Geometric altitude, m.
+    #[arg(long, allow_hyphen_values = true)]
+    pub altitude_m: Option<f64>,
+    /// Mach number.
+    #[arg(long, allow_hyphen_values = true)]
+    pub mach: Option<f64>,
+    /// Load factor of the trim both models start from (default 1).
+    #[arg(long, allow_hyphen_values = true)]
+    pub load_factor: Option<f64>,
+    /// The aileron steps `A:B:STEP`, deg of |delta_a| (default 1 to the aileron limit + 4, every 1).
+    #[arg(long, value_name = "A:B:STEP")]
+    pub delta_a_deg: Option<String>,
+    /// Length of each run, s.
+    #[arg(long, default_value_t = 10.0, allow_hyphen_values = true)]
+    pub t_end: f64,
+    /// Where the plateau figure goes (default `out/validate-<model>/`).
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+}
+
 /// Options of `clear`.
 #[derive(Args)]
 pub struct ClearArgs {

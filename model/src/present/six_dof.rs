@@ -15,12 +15,12 @@ use crate::six_dof::{simulate, History, Settings, Thrust};
 use std::io::Write;
 use std::process::ExitCode;
 
-/// The source, condition and trim of a 6-DOF command: the `jsbsim:` source with the options
-/// given outside it appended (they win).
+/// The model, condition and load factor of a 6-DOF command, and the `jsbsim:` source with the
+/// options given outside it appended (they win), which the import reads.
 pub fn loaded_source(
     source: &str,
     (altitude_m, mach, load_factor): (Option<f64>, Option<f64>, Option<f64>),
-) -> Result<(Loaded, Condition, f64), Failure> {
+) -> Result<(Loaded, Condition, f64, String), Failure> {
     if !source.starts_with("jsbsim:") {
         return Err(Failure::Input(format!(
             "{source}: the 6-DOF simulates a JSBSim airframe (expected a source jsbsim:MODEL, \
@@ -51,7 +51,7 @@ pub fn loaded_source(
     let speed = request.speed;
     let condition = Condition::new(request.altitude_m, speed)?;
     let loaded = Loaded::new(&request.model, request.root.as_deref(), &request.settings)?;
-    Ok((loaded, condition, n))
+    Ok((loaded, condition, n, spec))
 }
 
 /// The trim of `setup` at `n`, and the JSBSim aileron surface (rad) of the paper's `delta_a_deg`;
@@ -95,7 +95,8 @@ pub fn command(a: &SimulateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
             )))
         }
     };
-    let (loaded, condition, n) = loaded_source(&a.aircraft, (a.altitude_m, a.mach, a.load_factor))?;
+    let (loaded, condition, n, _) =
+        loaded_source(&a.aircraft, (a.altitude_m, a.mach, a.load_factor))?;
     let setup = loaded.setup(condition);
     let (t, aileron) = trim_and_aileron(&setup, n, a.delta_a_deg)?;
     let mut settings = Settings::step(aileron, a.t_end);

@@ -90,7 +90,11 @@ fn the_run_starts_in_the_trims_equilibrium() {
     let text = std::fs::read_to_string(&csv).unwrap();
     let alpha = column(&text, "alpha_rad");
     let q = column(&text, "q_rad_s");
-    assert!((alpha[1] - alpha[0]).abs() < 1e-7, "{}", alpha[1] - alpha[0]);
+    assert!(
+        (alpha[1] - alpha[0]).abs() < 1e-7,
+        "{}",
+        alpha[1] - alpha[0]
+    );
     assert!(q[0] == 0.0 && q[1].abs() < 1e-7, "{}", q[1]);
     // Wings level and no sideslip stay exactly so without an aileron.
     assert!(column(&text, "p_rad_s").iter().all(|p| *p == 0.0));
@@ -127,4 +131,44 @@ fn bad_six_dof_input_is_refused_with_exit_2() {
     // The 6-DOF's options need --six-dof: the 7th-order simulate is unchanged.
     let out = model(&["simulate", "A", "--delta-a-deg", "5", "--mach", "0.5"]);
     assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn validate_writes_the_plateau_and_a_verdict_per_model() {
+    let dir = scratch("validate");
+    let source = source();
+    let args = [
+        "validate",
+        &source,
+        "--altitude-m",
+        "5000",
+        "--mach",
+        "0.6",
+        "--delta-a-deg",
+        "2:6:2",
+        "--t-end",
+        "4",
+        "--out",
+        dir.to_str().unwrap(),
+    ];
+    let out = model(&args);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let said = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        said.contains("7th-order model: ") && said.contains("6-DOF: "),
+        "{said}"
+    );
+    assert!(said.contains("largest change: V"), "{said}");
+    assert!(dir.join("plateau.png").is_file() && dir.join("plateau.csv").is_file());
+    let out = model(&["validate", "A"]);
+    assert_eq!(out.status.code(), Some(2));
+    let mut bad = args;
+    bad[7] = "6:2:1";
+    let out = model(&bad);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("expected A:B:STEP"),
+        "{}",
+        stderr(&out)
+    );
 }

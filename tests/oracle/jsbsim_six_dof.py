@@ -13,6 +13,9 @@ The model is a copy of the catalogue model (see `prepared_model`):
 - its <engine> elements are cut: no engine thrust, no engine torque, no fuel burnt (the tanks and
   their contents stay, so the mass, the centre of gravity and the inertia are the loaded model's
   and frozen; propulsion/fuel_freeze is also set);
+- with `--flat-earth` a <planet> element puts it on a flat, non-rotating planet with standard
+  gravity (no rotation, radius 1e10 ft, no J2, sea-level gravity 32.174049 ft/s^2): the Earth of
+  the native 6-DOF (model/src/six_dof), which tests/tests/six_dof_native.rs compares with;
 - with `--thrust trim` a body-axis force "oracle-thrust" is added at each engine's thruster
   location along its thrust line; its magnitude (the same for every engine) is a trim unknown and
   is held for the whole run (thrust held, not the engine's response to Mach and altitude; the

@@ -41,6 +41,8 @@ mod reference;
 pub mod roots;
 #[cfg(feature = "cli")]
 pub mod simulation;
+#[cfg(feature = "cli")]
+pub mod six_dof;
 pub mod specialise;
 #[cfg(any(feature = "analysis", feature = "continuation"))]
 pub mod spectrum;

@@ -7,7 +7,7 @@ use model::present::commands;
 use model::present::failure::{stdout_error, Failure, BAD_INPUT, FAILED};
 use model::present::options::{
     AnalyzeArgs, ClearArgs, ContinueArgs, ConvertArgs, EmitArgs, EnvelopeArgs, FiguresArgs,
-    SimulateArgs,
+    SimulateArgs, ValidateArgs,
 };
 use std::io::Write;
 use std::process::ExitCode;
@@ -50,6 +50,9 @@ enum Command {
     Plot(FiguresArgs),
     /// Time history of an aileron step from the trim (7th-order model unless --pss).
     Simulate(SimulateArgs),
+    /// Aileron steps in the 7th-order model and the native 6-DOF of a JSBSim airframe at the
+    /// same trim: the settled roll rates against the criterion's critical aileron.
+    Validate(ValidateArgs),
     /// Certified clearance of the critical jump over the file's `[uncertainty]` box.
     Clear(ClearArgs),
     /// The analysis at every altitude and Mach of a grid, each point at its n-g trim (1 g unless
@@ -119,6 +122,7 @@ fn run(cli: Cli, out: &mut dyn Write) -> Result<ExitCode, Failure> {
         Command::Plot(a) => commands::report_command(a, false, out),
         Command::Simulate(a) => commands::simulate_command(a, out),
         Command::Clear(a) => commands::clear_command(a, out),
+        Command::Validate(a) => model::present::validate::command(a, out),
         Command::Envelope(a) => model::present::envelope::command(a, out),
         Command::Convert(a) => commands::convert_command(a, out),
         Command::Import { args } if args.iter().any(|a| a == "--analyze") => Ok(ExitCode::from(
@@ -215,6 +219,7 @@ mod tests {
                     Command::Emit(_)
                     | Command::Convert(_)
                     | Command::Envelope(_)
+                    | Command::Validate(_)
                     | Command::Import { .. } => vec![],
                 };
                 for c in checks {

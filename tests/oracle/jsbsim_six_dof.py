@@ -13,6 +13,9 @@ The model is a copy of the catalogue model (see `prepared_model`):
 - its <engine> elements are cut: no engine thrust, no engine torque, no fuel burnt (the tanks and
   their contents stay, so the mass, the centre of gravity and the inertia are the loaded model's
   and frozen; propulsion/fuel_freeze is also set);
+- with `--flat-earth` a <planet> element puts it on a flat, non-rotating planet with standard
+  gravity (no rotation, radius 1e10 ft, no J2, sea-level gravity 32.174049 ft/s^2): the Earth of
+  the native 6-DOF (model/src/six_dof), which tests/tests/six_dof_native.rs compares with;
 - with `--thrust trim` a body-axis force "oracle-thrust" is added at each engine's thruster
   location along its thrust line; its magnitude (the same for every engine) is a trim unknown and
   is held for the whole run (thrust held, not the engine's response to Mach and altitude; the
@@ -121,13 +124,28 @@ def thrust_forces(lines):
     return "\n".join(out)
 
 
-def prepared_model(root, model, thrust):
-    """A temporary JSBSim root with the model's systems and engines cut (see the module doc);
-    returns (root, number of thrust forces)."""
+# A planet that is locally the flat, non-rotating Earth of the native 6-DOF (model/src/six_dof):
+# no rotation, a radius of 1e10 ft (over 10 s of flight the local vertical turns by 1e-7 rad and
+# gravity falls by 5e-6 per 7 km of altitude), no J2, and GM such that gravity at sea level is
+# standard gravity, 32.174049 ft/s^2.
+FLAT_RADIUS_FT = 1.0e10
+FLAT_PLANET = (
+    '<planet name="flat">'
+    '<semimajor_axis unit="FT">%r</semimajor_axis><semiminor_axis unit="FT">%r</semiminor_axis>'
+    '<rotation_rate unit="RAD/SEC">0</rotation_rate><GM unit="FT3/SEC2">%r</GM><J2>0</J2>'
+    '</planet>' % (FLAT_RADIUS_FT, FLAT_RADIUS_FT, 32.174049 * FLAT_RADIUS_FT ** 2))
+
+
+def prepared_model(root, model, thrust, flat_earth=False):
+    """A temporary JSBSim root with the model's systems and engines cut (see the module doc),
+    on the flat planet with `flat_earth`; returns (root, number of thrust forces)."""
     tmp = prepared_root(root, model)
     xml = os.path.join(tmp, "aircraft", model, model + ".xml")
     with open(xml, encoding="utf-8") as f:
         text = f.read()
+    if flat_earth:
+        text = re.sub(r"<planet\b.*?</planet>", "", text, flags=re.S)
+        text = re.sub(r"(<metrics\b)", FLAT_PLANET + r"\n\1", text, count=1)
     lines = thruster_lines(text)
     text = re.sub(r"<engine\b.*?</engine>", "", text, flags=re.S)
     forces = 0
@@ -266,8 +284,9 @@ def measured_limits(root, model, h_ft, mach):
 class Aircraft:
     """The cut model loaded in JSBSim."""
 
-    def __init__(self, root, model, thrust, limits, dt=DT_DEFAULT):
-        self.tmp, self.forces, text = prepared_model(root, model, thrust)
+    def __init__(self, root, model, thrust, limits, dt=DT_DEFAULT, flat_earth=False,
+                 integrators=None):
+        self.tmp, self.forces, text = prepared_model(root, model, thrust, flat_earth)
         self.limits = limits
         fdm = jsbsim.FGFDMExec(self.tmp)
         fdm.set_debug_level(0)
@@ -278,6 +297,12 @@ class Aircraft:
         for name in self.created:
             fdm[name] = 0.0
         fdm.set_dt(dt)
+        # JSBSim's integrators (FGPropagate): 0 none, 1 rectangular Euler, 2 trapezoidal, 3-5
+        # Adams-Bashforth 2-4; the defaults are 1, 2, 1, 3 for the rotational rate, the
+        # translational rate, the attitude and the position.
+        for name, value in zip(("rate/rotational", "rate/translational", "position/rotational",
+                                "position/translational"), integrators or ()):
+            fdm["simulation/integrator/" + name] = value
         self.fdm = fdm
 
     def close(self):
@@ -577,7 +602,9 @@ def run(args, log=None):
                               % args.elevator_travel_deg)
         limits["elevator_travel"] = (lo, hi)
         limits["elevator_property"] += " (travel given; -norm scaled by the measured one)"
-    ac = Aircraft(root, args.model, args.thrust, limits, args.dt or DT_DEFAULT)
+    integrators = [int(v) for v in args.integrators.split(",")] if args.integrators else None
+    ac = Aircraft(root, args.model, args.thrust, limits, args.dt or DT_DEFAULT, args.flat_earth,
+                  integrators)
     try:
         trimmed = trim(ac, h_ft, args.mach, args.load_factor, args.thrust, log=log)
         out = {"model": args.model, "dt": ac.fdm.get_delta_t(), "trim": trimmed,
@@ -625,6 +652,13 @@ def parser():
                         "(a fly-by-wire stick may not reach the surface's travel in 1 s); "
                         "write it --elevator-travel-deg=-25:25")
     p.add_argument("--sweep", help="A:B:S aileron steps in deg")
+    p.add_argument("--flat-earth", action="store_true",
+                   help="fly on a flat, non-rotating planet with standard gravity (the native "
+                        "6-DOF's Earth) instead of JSBSim's rotating WGS84 Earth")
+    p.add_argument("--integrators",
+                   help="R,T,A,P: JSBSim's integrators of the rotational and translational rates, "
+                        "the attitude and the position (1 Euler, 2 trapezoidal, 3-5 "
+                        "Adams-Bashforth 2-4; default 1,2,1,3)")
     p.add_argument("--record-every", type=int, default=1, help="keep every k-th step")
     p.add_argument("--verbose", action="store_true", help="print the trim iterations on stderr")
     return p

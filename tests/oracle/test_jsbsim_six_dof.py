@@ -139,3 +139,24 @@ if __name__ == "__main__":
             print("FAILED %s: %r" % (test.__name__, e))
     print("%d passed, %d failed" % (len(tests) - failed, failed))
     sys.exit(1 if failed else 0)
+
+
+def test_flat_earth_is_standard_gravity_without_rotation():
+    """On the flat planet the trim's lift is n m g exactly (no centrifugal relief), gravity is
+    32.174049 ft/s^2 scaled by (R / (R + h))^2 with R = 1e10 ft, and the Earth does not turn."""
+    root = jsbsim.get_default_root_dir()
+    h_ft = 6000.0 / FT
+    limits = six.measured_limits(root, "f104", h_ft, 0.7)
+    ac = six.Aircraft(root, "f104", "off", limits, flat_earth=True)
+    try:
+        t = six.trim(ac, h_ft, 0.7, 1.0, "off")
+        r = six.FLAT_RADIUS_FT
+        want = 32.174049 * (r / (r + h_ft)) ** 2
+        assert abs(t["gravity_ft_s2"] - want) < 1e-9 * want, (t["gravity_ft_s2"], want)
+        f = ac.fdm
+        m, g = f["inertia/mass-slugs"], f["accelerations/gravity-ft_sec2"]
+        # JSBSim's wind-axis z force is the lift, positive up (as in lift_error).
+        assert abs((f["forces/fwz-aero-lbs"] - m * g) / (m * g)) < 1e-6
+        assert f["velocities/psidot-rad_sec"] == 0.0 or abs(f["velocities/psidot-rad_sec"]) < 1e-12
+    finally:
+        ac.close()

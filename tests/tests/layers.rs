@@ -32,6 +32,7 @@ const LAYERS: &[&str] = &[
     "clearance",
     "emit",
     "jsbsim",
+    "six_dof",
     "envelope",
     "plot",
     "present",

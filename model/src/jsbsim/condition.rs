@@ -1,7 +1,8 @@
 //! The flight condition of an import and the flight state about it: the standard atmosphere at
 //! the altitude, the speed (true airspeed or Mach), and every `aero/`, `velocities/`,
 //! `atmosphere/` and `position/` property a model reads, set from alpha, beta, the body rates
-//! and the surfaces. Quasi-steady: alpha-dot and beta-dot are zero; the attitude is wings level.
+//! and the surfaces. For the import quasi-steady: alpha-dot and beta-dot are zero, the attitude
+//! wings level ([`Motion::QUASI_STEADY`]); a moving aircraft (the 6-DOF) gives them ([`Motion`]).
 //! Everything else the aerodynamics read that only a system computes (flaps, gear, speed brakes,
 //! boundary-layer control, engine outputs) is zero, the clean power-off configuration, unless
 //! the user sets it.
@@ -143,11 +144,52 @@ pub fn state_properties(model: &Model) -> Vec<&'static str> {
         .collect()
 }
 
+/// What a moving aircraft adds to the quasi-steady state of an import: the rates of change of
+/// the aerodynamic angles, the attitude and the flight path. [`Motion::QUASI_STEADY`] is the
+/// import's: alpha-dot and beta-dot zero, wings level, the pitch attitude alpha on a level path.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Motion {
+    /// Alpha-dot and beta-dot, rad/s.
+    pub angle_rates: [f64; 2],
+    /// Bank and pitch attitude, rad; `None` for wings level at pitch attitude alpha.
+    pub attitude: Option<[f64; 2]>,
+    /// Flight-path angle, rad.
+    pub gamma: f64,
+    /// Downward speed over the ground, ft/s.
+    pub v_down_fps: f64,
+}
+
+impl Motion {
+    /// The import's quasi-steady state.
+    pub const QUASI_STEADY: Motion = Motion {
+        angle_rates: [0.0; 2],
+        attitude: None,
+        gamma: 0.0,
+        v_down_fps: 0.0,
+    };
+}
+
+/// How many flight-state properties [`flight_values`] gives.
+pub const FLIGHT_VALUES: usize = 45;
+
 /// Every flight-state property a model may read, with its value for `state` at `condition`.
 fn state_values(model: &Model, condition: &Condition, state: &State) -> Vec<(&'static str, f64)> {
+    flight_values(model, condition, state, &Motion::QUASI_STEADY).to_vec()
+}
+
+/// Every flight-state property a model may read, with its value for `state` and `motion` at
+/// `condition`, always in the same order (a caller may resolve the names once).
+pub fn flight_values(
+    model: &Model,
+    condition: &Condition,
+    state: &State,
+    motion: &Motion,
+) -> [(&'static str, f64); FLIGHT_VALUES] {
     let vt = condition.speed * FT_PER_M;
     let (a, b) = (state.alpha, state.beta);
     let [p, q, r] = state.rates;
+    let [adot, bdot] = motion.angle_rates;
+    let [phi, theta] = motion.attitude.unwrap_or([0.0, a]);
     let rho = condition.air.density * 0.001_940_320_331_979_716;
     let qbar = 0.5 * rho * vt * vt;
     let m = &model.metrics;
@@ -161,10 +203,10 @@ fn state_values(model: &Model, condition: &Condition, state: &State) -> Vec<(&'s
         ("aero/mag-beta-rad", b.abs()),
         ("aero/mag-beta-deg", b.abs().to_degrees()),
         ("aero/alpha-wing-rad", a + m.incidence),
-        ("aero/alphadot-rad_sec", 0.0),
-        ("aero/betadot-rad_sec", 0.0),
-        ("aero/alphadot-deg_sec", 0.0),
-        ("aero/betadot-deg_sec", 0.0),
+        ("aero/alphadot-rad_sec", adot),
+        ("aero/betadot-rad_sec", bdot),
+        ("aero/alphadot-deg_sec", adot.to_degrees()),
+        ("aero/betadot-deg_sec", bdot.to_degrees()),
         ("aero/qbar-psf", qbar),
         ("aero/qbarUW-psf", 0.5 * rho * (u * u + w * w)),
         ("aero/qbarUV-psf", 0.5 * rho * (u * u + v * v)),
@@ -197,19 +239,20 @@ fn state_values(model: &Model, condition: &Condition, state: &State) -> Vec<(&'s
         ("atmosphere/rho-slugs_ft3", rho),
         ("atmosphere/a-fps", condition.air.sound_speed * FT_PER_M),
         ("position/h-sl-ft", h_ft),
-        ("attitude/roll-rad", 0.0),
-        ("attitude/pitch-rad", a),
-        ("flight-path/gamma-rad", 0.0),
-        ("velocities/v-down-fps", 0.0),
-        ("velocities/h-dot-fps", 0.0),
+        ("attitude/roll-rad", phi),
+        ("attitude/pitch-rad", theta),
+        ("flight-path/gamma-rad", motion.gamma),
+        ("velocities/v-down-fps", motion.v_down_fps),
+        ("velocities/h-dot-fps", -motion.v_down_fps),
     ]
-    .to_vec()
 }
 
 /// Calibrated airspeed, knots: the sea-level speed whose impact pressure equals the one at
 /// the condition (isentropic, subsonic; Rayleigh pitot above Mach 1).
 fn calibrated_kts(c: &Condition) -> f64 {
-    let sl = standard(0.0).expect("sea level is in the atmosphere");
+    static SEA_LEVEL: std::sync::LazyLock<Air> =
+        std::sync::LazyLock::new(|| standard(0.0).expect("sea level is in the atmosphere"));
+    let sl = *SEA_LEVEL;
     let m = c.mach;
     let qc = if m <= 1.0 {
         c.air.pressure * ((1.0 + 0.2 * m * m).powf(3.5) - 1.0)

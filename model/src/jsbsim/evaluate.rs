@@ -63,6 +63,15 @@ enum Slot {
     Done(f64),
 }
 
+/// What setting a property sets: an input, or a function's value overridden.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Target {
+    /// The input of this symbol.
+    Input(usize),
+    /// The value of this function.
+    Function(usize),
+}
+
 /// One evaluation: the inputs' values and the functions' values computed so far.
 pub struct Env<'m> {
     functions: &'m Functions,
@@ -72,6 +81,7 @@ pub struct Env<'m> {
     depth: usize,
     current: Option<usize>,
     clamps: Vec<Clamp>,
+    recording: bool,
 }
 
 impl<'m> Env<'m> {
@@ -85,7 +95,14 @@ impl<'m> Env<'m> {
             depth: 0,
             current: None,
             clamps: Vec::new(),
+            recording: true,
         }
+    }
+
+    /// Whether table lookups beyond the breakpoints are recorded ([`Env::clamps`]; on by
+    /// default): a simulation that does not report them saves the check at every lookup.
+    pub fn record_clamps(&mut self, on: bool) {
+        self.recording = on;
     }
 
     /// The functions evaluated.
@@ -106,12 +123,37 @@ impl<'m> Env<'m> {
     /// Sets input `name` (ignored if the model never reads it). A name that is one of the
     /// model's functions overrides that function.
     pub fn set(&mut self, name: &str, value: f64) {
-        if let Some(s) = self.functions.symbols.get(name) {
-            match self.functions.defined_by[s] {
-                Some(f) => self.slots[f] = Slot::Done(value),
-                None => self.inputs[s] = Some(value),
-            }
+        if let Some(t) = self.target(name) {
+            self.set_target(t, value);
         }
+    }
+
+    /// What setting `name` sets, if the model reads it: found once, so that a caller setting
+    /// the same names at every step of a simulation looks no name up again.
+    pub fn target(&self, name: &str) -> Option<Target> {
+        let s = self.functions.symbols.get(name)?;
+        Some(match self.functions.defined_by[s] {
+            Some(f) => Target::Function(f),
+            None => Target::Input(s),
+        })
+    }
+
+    /// Sets `target` to `value` (as [`Env::set`] its name).
+    pub fn set_target(&mut self, target: Target, value: f64) {
+        match target {
+            Target::Function(f) => self.slots[f] = Slot::Done(value),
+            Target::Input(s) => self.inputs[s] = Some(value),
+        }
+    }
+
+    /// Makes this evaluation the same as `base` (an evaluation of the same functions), its
+    /// inputs and the functions' values, keeping its own memory: a simulation's fresh start at
+    /// each step from the inputs that do not change.
+    pub fn reset_to(&mut self, base: &Env) {
+        self.inputs.clone_from_slice(&base.inputs);
+        self.slots.clone_from_slice(&base.slots);
+        self.clamps.clear();
+        self.clamps.extend_from_slice(&base.clamps);
     }
 
     /// The value given for input `name`, if the model reads it and it was set.
@@ -165,7 +207,7 @@ impl<'m> Env<'m> {
                 let v = self.eval(&func.expr);
                 self.current = caller;
                 self.depth -= 1;
-                let v = v?;
+                let v = v.inspect_err(|_| self.slots[f] = Slot::Unknown)?;
                 self.slots[f] = Slot::Done(v);
                 Ok(v)
             }
@@ -215,7 +257,12 @@ impl<'m> Env<'m> {
                 for (k, r) in t.keys.iter().enumerate() {
                     keys[k] = self.symbol(*r)?;
                 }
-                for (k, range) in t.data.outside(&keys).into_iter().enumerate() {
+                let outside = if self.recording {
+                    t.data.outside(&keys)
+                } else {
+                    [None; 3]
+                };
+                for (k, range) in outside.into_iter().enumerate() {
                     let ground =
                         |k: usize| is_ground_effect(self.functions.symbols.name(t.keys[k].symbol));
                     if let Some(range) = range.filter(|_| !ground(k)) {
@@ -236,46 +283,52 @@ impl<'m> Env<'m> {
         }
     }
 
-    /// The value of an operation.
+    /// The value of an operation. The arguments are folded as they are evaluated (no list of
+    /// them is made: the simulation evaluates the functions at every step), all of them, in
+    /// order, as JSBSim does.
     fn apply(&mut self, op: Op, args: &[Expr]) -> Result<f64, JsbsimError> {
-        let mut v = Vec::with_capacity(args.len());
-        if op == Op::IfThen {
-            let c = self.eval(&args[0])?;
-            return self.eval(&args[if c != 0.0 { 1 } else { 2 }]);
-        }
-        for a in args {
-            v.push(self.eval(a)?);
-        }
+        let fold = |env: &mut Self, init: f64, f: fn(f64, f64) -> f64| {
+            args.iter()
+                .try_fold(init, |acc, a| env.eval(a).map(|x| f(acc, x)))
+        };
         Ok(match op {
-            Op::Product => v.iter().product(),
-            Op::Sum => v.iter().sum(),
-            Op::Avg => v.iter().sum::<f64>() / v.len() as f64,
-            Op::Difference => v[1..].iter().fold(v[0], |acc, x| acc - x),
-            Op::Min => v.iter().copied().fold(f64::INFINITY, f64::min),
-            Op::Max => v.iter().copied().fold(f64::NEG_INFINITY, f64::max),
-            Op::Quotient => {
-                if v[1] != 0.0 {
-                    v[0] / v[1]
-                } else {
-                    f64::INFINITY
-                }
+            Op::Product => fold(self, 1.0, |a, x| a * x)?,
+            Op::Sum => fold(self, 0.0, |a, x| a + x)?,
+            Op::Avg => fold(self, 0.0, |a, x| a + x)? / args.len() as f64,
+            Op::Difference => {
+                let first = self.eval(&args[0])?;
+                args[1..]
+                    .iter()
+                    .try_fold(first, |acc, a| self.eval(a).map(|x| acc - x))?
             }
-            Op::Pow => v[0].powf(v[1]),
-            Op::Atan2 => v[0].atan2(v[1]),
-            Op::Fmod => {
-                if v[1] != 0.0 {
-                    v[0] % v[1]
-                } else {
-                    f64::INFINITY
-                }
+            Op::Min => fold(self, f64::INFINITY, f64::min)?,
+            Op::Max => fold(self, f64::NEG_INFINITY, f64::max)?,
+            Op::And => fold(self, 1.0, |a, x| f64::from(a != 0.0 && x != 0.0))?,
+            Op::Or => fold(self, 0.0, |a, x| f64::from(a != 0.0 || x != 0.0))?,
+            Op::IfThen => {
+                let c = self.eval(&args[0])?;
+                self.eval(&args[if c != 0.0 { 1 } else { 2 }])?
             }
-            Op::Unary(u) => unary(u, v[0]),
-            Op::Compare(c) => f64::from(compare(c, v[0], v[1])),
-            Op::And => f64::from(v.iter().all(|&x| x != 0.0)),
-            Op::Or => f64::from(v.iter().any(|&x| x != 0.0)),
-            Op::Not => f64::from(v[0] == 0.0),
-            Op::IfThen => unreachable!("handled above"),
+            Op::Unary(u) => unary(u, self.eval(&args[0])?),
+            Op::Not => f64::from(self.eval(&args[0])? == 0.0),
+            Op::Quotient | Op::Pow | Op::Atan2 | Op::Fmod | Op::Compare(_) => {
+                let (a, b) = (self.eval(&args[0])?, self.eval(&args[1])?);
+                binary(op, a, b)
+            }
         })
+    }
+}
+
+/// A two-argument operation, with JSBSim's values where it is undefined.
+fn binary(op: Op, a: f64, b: f64) -> f64 {
+    match op {
+        Op::Quotient if b != 0.0 => a / b,
+        Op::Fmod if b != 0.0 => a % b,
+        Op::Quotient | Op::Fmod => f64::INFINITY,
+        Op::Pow => a.powf(b),
+        Op::Atan2 => a.atan2(b),
+        Op::Compare(c) => f64::from(compare(c, a, b)),
+        _ => unreachable!("binary operations only"),
     }
 }
 

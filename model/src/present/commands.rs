@@ -150,6 +150,9 @@ pub fn report_command(
 /// `model simulate`: one aileron step's steady state in a line, and the time history as CSV
 /// with `--csv`.
 pub fn simulate_command(a: &SimulateArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
+    if a.six_dof {
+        return super::six_dof::command(a, out);
+    }
     let ac = load_aircraft(&a.aircraft)?;
     let (t_end, delta_a_deg) = (a.t_end, a.delta_a_deg);
     if !(t_end.is_finite() && t_end > 0.0) {

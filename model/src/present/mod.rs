@@ -17,4 +17,6 @@ pub mod numbers;
 pub mod options;
 pub mod progress;
 pub mod report;
+pub mod six_dof;
 pub mod tables;
+pub mod validate;

@@ -101,6 +101,58 @@ pub struct SimulateArgs {
     /// Write the time history as CSV to this file (units in the header).
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
+    /// The native nonlinear 6-DOF of a `jsbsim:` source instead, from its n-g trim
+    /// (`--delta-a-deg` in the paper's sign: positive rolls left).
+    #[arg(long)]
+    pub six_dof: bool,
+    /// 6-DOF: geometric altitude, m (or inside the `jsbsim:` source).
+    #[arg(long, allow_hyphen_values = true, requires = "six_dof")]
+    pub altitude_m: Option<f64>,
+    /// 6-DOF: Mach number (or inside the `jsbsim:` source).
+    #[arg(long, allow_hyphen_values = true, requires = "six_dof")]
+    pub mach: Option<f64>,
+    /// 6-DOF: load factor of the trim the run starts from (default 1; or inside the source).
+    #[arg(long, allow_hyphen_values = true, requires = "six_dof")]
+    pub load_factor: Option<f64>,
+    /// 6-DOF: thrust `off` (gliding) or `trim` (held at the trim's drag balance).
+    #[arg(
+        long,
+        value_name = "off|trim",
+        default_value = "off",
+        requires = "six_dof"
+    )]
+    pub thrust: String,
+    /// 6-DOF: integration step, s (default 1/120, JSBSim's rate).
+    #[arg(long, allow_hyphen_values = true, requires = "six_dof")]
+    pub dt: Option<f64>,
+    /// 6-DOF: write the time-history figure (SVG, PNG and its CSV) into DIR.
+    #[arg(long, value_name = "DIR", requires = "six_dof")]
+    pub out: Option<PathBuf>,
+}
+
+/// Options of `validate`.
+#[derive(Args)]
+pub struct ValidateArgs {
+    /// The model: "jsbsim:MODEL" (the flight condition inside it or as the options below).
+    pub source: String,
+    /// Geometric altitude, m.
+    #[arg(long, allow_hyphen_values = true)]
+    pub altitude_m: Option<f64>,
+    /// Mach number.
+    #[arg(long, allow_hyphen_values = true)]
+    pub mach: Option<f64>,
+    /// Load factor of the trim both models start from (default 1).
+    #[arg(long, allow_hyphen_values = true)]
+    pub load_factor: Option<f64>,
+    /// The aileron steps `A:B:STEP`, deg of |delta_a| (default 1 to the aileron limit + 4, every 1).
+    #[arg(long, value_name = "A:B:STEP")]
+    pub delta_a_deg: Option<String>,
+    /// Length of each run, s.
+    #[arg(long, default_value_t = 10.0, allow_hyphen_values = true)]
+    pub t_end: f64,
+    /// Where the plateau figure goes (default `out/validate-<model>/`).
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
 }
 
 /// Options of `clear`.

@@ -14,6 +14,7 @@ mod commands;
 mod files;
 mod jsbsim;
 mod readme;
+mod six_dof;
 
 use support::{json, model, reference};
 

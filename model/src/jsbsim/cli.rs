@@ -211,16 +211,20 @@ fn written(path: &std::path::Path, r: &Request, trim: Option<&Trim>) -> String {
 /// (`"jsbsim:f104 --altitude-m 6096 --mach 0.53 --load-factor 1"`): what `analyze`, `continue`,
 /// `simulate` and `report` accept in place of an aircraft file.
 pub fn source(spec: &str) -> Result<crate::aircraft::Aircraft, String> {
+    let text = import(&request(spec)?)?;
+    crate::aircraft::parse(&text, spec).map_err(|e| e.to_string())
+}
+
+/// The import a `jsbsim:` source asks for (see [`source`]), its words checked as `import jsbsim`
+/// checks them.
+pub fn request(spec: &str) -> Result<Request, String> {
     let rest = spec
         .strip_prefix("jsbsim:")
         .ok_or_else(|| format!("{spec}: not a jsbsim: source"))?;
     let mut args = vec!["jsbsim".to_string()];
     args.extend(rest.split_whitespace().map(str::to_string));
     match parse(&args)? {
-        Command::Import(request, None) => {
-            let text = import(&request)?;
-            crate::aircraft::parse(&text, spec).map_err(|e| e.to_string())
-        }
+        Command::Import(request, None) => Ok(request),
         _ => Err(format!("{spec}: a jsbsim: source takes the import's model and flight condition, not --list or --out")),
     }
 }

@@ -1,7 +1,8 @@
 """Notebook-style example: import the F-104 from JSBSim, analyse it at one flight state, map its
 1-g envelope and plot the critical jump's roll rate and the aileron margin with matplotlib.
 
-Run: python docs/python_f104_envelope.py [OUT.png]   (after `pip install ./python`)
+Run: python docs/python_f104_envelope.py [OUT.png [ALTITUDES_M MACHS]]   (after
+`pip install ./python`; the grid defaults to 0:12000:3000 m by Mach 0.3:0.9:0.1)
 """
 
 import sys
@@ -20,7 +21,8 @@ a = rc.analyze(f104)
 print(a)
 
 # %% The envelope: every altitude x Mach point trimmed at 1 g and analysed (local cores).
-env = rc.envelope("jsbsim:f104", altitudes_m="0:12000:3000", machs="0.3:0.9:0.1")
+altitudes_m, machs = sys.argv[2:4] if len(sys.argv) > 3 else ("0:12000:3000", "0.3:0.9:0.1")
+env = rc.envelope("jsbsim:f104", altitudes_m=altitudes_m, machs=machs)
 print(f"{len(env.points)} points, {env.untrimmed} untrimmable ({env.elevator})")
 
 # %% Plot: arrays over altitude x Mach, straight into pcolormesh (NaN where no trim or no jump).

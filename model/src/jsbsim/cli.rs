@@ -215,7 +215,8 @@ pub fn source(spec: &str) -> Result<crate::aircraft::Aircraft, String> {
     crate::aircraft::parse(&text, spec).map_err(|e| e.to_string())
 }
 
-/// The import request of a `jsbsim:` source (see [`source`]).
+/// The import a `jsbsim:` source asks for (see [`source`]), its words checked as `import jsbsim`
+/// checks them.
 pub fn request(spec: &str) -> Result<Request, String> {
     let rest = spec
         .strip_prefix("jsbsim:")

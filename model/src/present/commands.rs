@@ -11,11 +11,12 @@ use super::options::{
 };
 use super::progress::{progress_bar, say_how_long, set};
 use super::report::{report, ReportError, ReportSettings};
-use crate::aircraft::{self, shown};
-use crate::analysis::analyze;
+use crate::aircraft::{self, shown, Aircraft};
 use crate::analysis::fast::analyze_routed_with;
-use crate::continuation::{continue_equilibria, ContinuationParam, Settings};
-use crate::simulation::{simulate, Model, Rudder, SimError, SimSettings};
+use crate::analysis::{analyze, Analysis};
+use crate::clearance::run::Run;
+use crate::continuation::{continue_equilibria, ContinuationParam, Diagram, Settings};
+use crate::simulation::{simulate, Model, Rudder, SimError, SimSettings, TimeHistory};
 use std::io::Write;
 use std::path::Path;
 use std::process::ExitCode;
@@ -31,13 +32,7 @@ macro_rules! say {
 /// of the exact path (the certified route's with `--certified`).
 pub fn analyze_command(a: &AnalyzeArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
     let ac = load_aircraft(&a.aircraft)?;
-    let delta_e = elevator_of(&ac, a.delta_e_deg)?;
-    let result = if a.exact || (a.json && !a.certified) {
-        analyze(&ac, delta_e)
-    } else {
-        analyze_routed_with(&ac, delta_e, true).map(|(a, _)| a)
-    }
-    .map_err(|e| named(&ac, e))?;
+    let result = analysis_of(&ac, a)?;
     if a.json {
         let text = serde_json::to_string_pretty(&result).map_err(|e| e.to_string())?;
         say!(out, "{text}");
@@ -47,9 +42,46 @@ pub fn analyze_command(a: &AnalyzeArgs, out: &mut dyn Write) -> Result<ExitCode,
     Ok(ExitCode::SUCCESS)
 }
 
+/// What `model analyze` computes for `ac` with the options of `a` (the aircraft loaded by the
+/// caller): the exact path for `--exact` and for `--json` without `--certified`, else the
+/// certified route.
+pub fn analysis_of(ac: &Aircraft, a: &AnalyzeArgs) -> Result<Analysis, Failure> {
+    let delta_e = elevator_of(ac, a.delta_e_deg)?;
+    if a.exact || (a.json && !a.certified) {
+        analyze(ac, delta_e)
+    } else {
+        analyze_routed_with(ac, delta_e, true).map(|(a, _)| a)
+    }
+    .map_err(|e| named(ac, e))
+}
+
 /// `model continue`: the continuation's diagram as a summary or JSON, and as CSV with `--csv`.
 pub fn continue_command(a: &ContinueArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
     let ac = load_aircraft(&a.aircraft)?;
+    let bar = progress_bar("continuation");
+    let diagram = diagram_of(&ac, a, &mut |f| set(&bar, f))?;
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    if let Some(path) = &a.csv {
+        write_file(path, diagram.to_csv().as_bytes())?;
+    }
+    if a.json {
+        let text = serde_json::to_string_pretty(&diagram).map_err(|e| e.to_string())?;
+        say!(out, "{text}");
+    } else {
+        write!(out, "{}", super::tables::diagram(&diagram)).map_err(stdout_error)?;
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// What `model continue` computes for `ac` with the options of `a`; `progress` gets the
+/// fraction done.
+pub fn diagram_of(
+    ac: &Aircraft,
+    a: &ContinueArgs,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Diagram, Failure> {
     let (min_deg, max_deg) = (a.min_deg, a.max_deg);
     let (min, max) = (finite_angle("min", min_deg)?, finite_angle("max", max_deg)?);
     if min_deg >= max_deg {
@@ -65,26 +97,11 @@ pub fn continue_command(a: &ContinueArgs, out: &mut dyn Write) -> Result<ExitCod
             .map_err(|e| e.to_string())?,
         min,
         max,
-        delta_e: elevator_of(&ac, a.delta_e_deg)?,
+        delta_e: elevator_of(ac, a.delta_e_deg)?,
         zero_sideslip: a.zero_sideslip,
         ..Settings::default()
     };
-    let bar = progress_bar("continuation");
-    let diagram =
-        continue_equilibria(&ac, &settings, &mut |f| set(&bar, f)).map_err(|e| named(&ac, e))?;
-    if let Some(b) = bar {
-        b.finish_and_clear();
-    }
-    if let Some(path) = &a.csv {
-        write_file(path, diagram.to_csv().as_bytes())?;
-    }
-    if a.json {
-        let text = serde_json::to_string_pretty(&diagram).map_err(|e| e.to_string())?;
-        say!(out, "{text}");
-    } else {
-        write!(out, "{}", super::tables::diagram(&diagram)).map_err(stdout_error)?;
-    }
-    Ok(ExitCode::SUCCESS)
+    continue_equilibria(ac, &settings, progress).map_err(|e| named(ac, e))
 }
 
 /// `model report` (`summary`: with summary.md and summary.json) and `model plot` (the figures
@@ -154,6 +171,36 @@ pub fn simulate_command(a: &SimulateArgs, out: &mut dyn Write) -> Result<ExitCod
         return super::six_dof::command(a, out);
     }
     let ac = load_aircraft(&a.aircraft)?;
+    let (h, model) = history_of(&ac, a)?;
+    if let Some(path) = &a.csv {
+        write_file(path, h.to_csv().as_bytes())?;
+    }
+    let (t_end, delta_a_deg) = (a.t_end, a.delta_a_deg);
+    let st = h.steady(steady_window(t_end));
+    say!(
+        out,
+        "{} ({}), aileron step {delta_a_deg} deg, {} s: steady roll rate {} rad/s (range {} to {}), mean sideslip {} deg, peak |sideslip| {} deg",
+        shown(&ac.name),
+        model.name(),
+        t_end,
+        fixed(st.p_mean, 4),
+        fixed(st.p_min, 4),
+        fixed(st.p_max, 4),
+        fixed(st.beta_mean.to_degrees(), 3),
+        fixed(st.beta_peak_abs.to_degrees(), 3)
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The window of the steady values `model simulate` prints, s: the last 5 s of the run, or its
+/// second half when shorter.
+pub fn steady_window(t_end: f64) -> f64 {
+    5.0_f64.min(t_end / 2.0)
+}
+
+/// What `model simulate` computes for `ac` with the options of `a`: the time history and the
+/// model integrated.
+pub fn history_of(ac: &Aircraft, a: &SimulateArgs) -> Result<(TimeHistory, Model), Failure> {
     let (t_end, delta_a_deg) = (a.t_end, a.delta_a_deg);
     if !(t_end.is_finite() && t_end > 0.0) {
         return Err(Failure::Input(format!(
@@ -175,14 +222,14 @@ pub fn simulate_command(a: &SimulateArgs, out: &mut dyn Write) -> Result<ExitCod
         t_end,
         ..SimSettings::step(
             model,
-            elevator_of(&ac, a.delta_e_deg)?,
+            elevator_of(ac, a.delta_e_deg)?,
             finite_angle("delta_a", delta_a_deg)?,
         )
     };
-    let h = simulate(&ac, &settings).map_err(|e| match e {
+    let h = simulate(ac, &settings).map_err(|e| match e {
         // In the unit typed.
         SimError::ScheduleRange { lo, hi, .. } => named(
-            &ac,
+            ac,
             format!(
                 "--delta-a-deg = {delta_a_deg} is outside the zero-sideslip rudder \
                  schedule, which covers {} to {} deg",
@@ -190,25 +237,9 @@ pub fn simulate_command(a: &SimulateArgs, out: &mut dyn Write) -> Result<ExitCod
                 hi.to_degrees()
             ),
         ),
-        e => named(&ac, e),
+        e => named(ac, e),
     })?;
-    if let Some(path) = &a.csv {
-        write_file(path, h.to_csv().as_bytes())?;
-    }
-    let st = h.steady(5.0_f64.min(t_end / 2.0));
-    say!(
-        out,
-        "{} ({}), aileron step {delta_a_deg} deg, {} s: steady roll rate {} rad/s (range {} to {}), mean sideslip {} deg, peak |sideslip| {} deg",
-        shown(&ac.name),
-        model.name(),
-        t_end,
-        fixed(st.p_mean, 4),
-        fixed(st.p_min, 4),
-        fixed(st.p_max, 4),
-        fixed(st.beta_mean.to_degrees(), 3),
-        fixed(st.beta_peak_abs.to_degrees(), 3)
-    );
-    Ok(ExitCode::SUCCESS)
+    Ok((h, model))
 }
 
 /// `model clear`: for each elevator setting the Monte Carlo and the proof
@@ -216,36 +247,8 @@ pub fn simulate_command(a: &SimulateArgs, out: &mut dyn Write) -> Result<ExitCod
 /// folder of summaries, samples and figures.
 pub fn clear_command(a: &ClearArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
     let ac = load_aircraft(&a.aircraft)?;
-    let settings: Vec<f64> = match &a.delta_e_range {
-        Some(r) => delta_e_list(r)?,
-        None => vec![elevator_of(&ac, a.delta_e_deg)?],
-    };
-    let (samples, tolerance) = (a.samples, a.tolerance);
-    if !(tolerance.is_finite() && tolerance > 0.0) {
-        return Err(Failure::Input(format!(
-            "--tolerance = {tolerance}: expected a finite tolerance > 0 in rad/s"
-        )));
-    }
-    // Each sample's draws and result are kept (samples.csv): about 300 bytes apiece.
-    const MAX_SAMPLES: usize = 10_000_000;
-    if samples > MAX_SAMPLES {
-        return Err(Failure::Input(format!(
-            "--samples = {samples}: expected 0 to {MAX_SAMPLES} Monte Carlo samples"
-        )));
-    }
     let bar = progress_bar("clear");
-    let runs = crate::clearance::run::clear_each(
-        &ac,
-        &settings,
-        (samples, a.seed, tolerance),
-        &mut |f| set(&bar, f),
-        &mut |k, seconds| {
-            if k == 0 && settings.len() > 1 {
-                say_how_long(settings.len(), seconds);
-            }
-        },
-    )
-    .map_err(|e| named(&ac, e))?;
+    let runs = runs_of(&ac, a, &mut |f| set(&bar, f))?;
     if let Some(b) = bar {
         b.finish_and_clear();
     }
@@ -274,6 +277,44 @@ pub fn clear_command(a: &ClearArgs, out: &mut dyn Write) -> Result<ExitCode, Fai
     }
     printed?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// What `model clear` computes for `ac` with the options of `a`: one run per elevator setting;
+/// `progress` gets the fraction done over all settings.
+pub fn runs_of(
+    ac: &Aircraft,
+    a: &ClearArgs,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Vec<Run>, Failure> {
+    let settings: Vec<f64> = match &a.delta_e_range {
+        Some(r) => delta_e_list(r)?,
+        None => vec![elevator_of(ac, a.delta_e_deg)?],
+    };
+    let (samples, tolerance) = (a.samples, a.tolerance);
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return Err(Failure::Input(format!(
+            "--tolerance = {tolerance}: expected a finite tolerance > 0 in rad/s"
+        )));
+    }
+    // Each sample's draws and result are kept (samples.csv): about 300 bytes apiece.
+    const MAX_SAMPLES: usize = 10_000_000;
+    if samples > MAX_SAMPLES {
+        return Err(Failure::Input(format!(
+            "--samples = {samples}: expected 0 to {MAX_SAMPLES} Monte Carlo samples"
+        )));
+    }
+    crate::clearance::run::clear_each(
+        ac,
+        &settings,
+        (samples, a.seed, tolerance),
+        progress,
+        &mut |k, seconds| {
+            if k == 0 && settings.len() > 1 {
+                say_how_long(settings.len(), seconds);
+            }
+        },
+    )
+    .map_err(|e| named(ac, e))
 }
 
 /// `model convert`: the dimensional principal-axis TOML of a nondimensional body-axis file.

@@ -9,6 +9,7 @@ use super::progress::{progress_bar, set};
 use crate::envelope::source::Source;
 use crate::envelope::uncertainty::Uncertainty;
 use crate::envelope::{cleared_envelope, Elevator, Envelope, Grid, Point, Range};
+use crate::jsbsim::import::Loaded;
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -36,26 +37,57 @@ fn chosen_elevator(a: &EnvelopeArgs, source: &Source) -> Result<Elevator, Failur
     })
 }
 
+/// What `model envelope` computes, every option checked and the model read before any work.
+pub struct Plan {
+    /// The model, read once.
+    pub loaded: Loaded,
+    /// The grid of altitudes and Mach numbers.
+    pub grid: Grid,
+    /// The load factor of every point's trim and the elevator increment from it.
+    pub elevator: Elevator,
+    /// The box every point is cleared over, with `--uncertainty`.
+    pub uncertainty: Option<Uncertainty>,
+}
+
+impl Plan {
+    /// The plan of `a`, or the first option that is wrong.
+    pub fn new(a: &EnvelopeArgs) -> Result<Plan, Failure> {
+        let source = Source::parse(&a.source)?;
+        let grid = Grid::new(
+            Range::parse(&a.altitude_m, "--altitude-m")?,
+            Range::parse(&a.mach, "--mach")?,
+        )?;
+        let elevator = chosen_elevator(a, &source)?;
+        let uncertainty = match &a.uncertainty {
+            Some(spec) => Some(Uncertainty::parse(spec).map_err(Failure::Input)?),
+            None => None,
+        };
+        let loaded = source.load()?;
+        if let Some(u) = &uncertainty {
+            u.check(&loaded, &a.source, &grid, elevator.load_factor)
+                .map_err(Failure::Input)?;
+        }
+        Ok(Plan {
+            loaded,
+            grid,
+            elevator,
+            uncertainty,
+        })
+    }
+
+    /// The envelope of the plan, named `source`; `progress` gets the fraction done (from any
+    /// thread).
+    pub fn run(&self, source: &str, progress: &(dyn Fn(f64) + Sync)) -> Envelope {
+        let chosen = (self.elevator, self.uncertainty.as_ref());
+        cleared_envelope(&self.loaded, source, &self.grid, chosen, progress)
+    }
+}
+
 /// `model envelope`.
 pub fn command(a: &EnvelopeArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
-    let source = Source::parse(&a.source)?;
-    let grid = Grid::new(
-        Range::parse(&a.altitude_m, "--altitude-m")?,
-        Range::parse(&a.mach, "--mach")?,
-    )?;
-    let elevator = chosen_elevator(a, &source)?;
-    let uncertainty = match &a.uncertainty {
-        Some(spec) => Some(Uncertainty::parse(spec).map_err(Failure::Input)?),
-        None => None,
-    };
-    let loaded = source.load()?;
-    if let Some(u) = &uncertainty {
-        u.check(&loaded, &a.source, &grid, elevator.load_factor)
-            .map_err(Failure::Input)?;
-    }
+    let plan = Plan::new(a)?;
     let bar = progress_bar("envelope");
-    let chosen = (elevator, uncertainty.as_ref());
-    let env = cleared_envelope(&loaded, &a.source, &grid, chosen, &|f| set(&bar, f));
+    let env = plan.run(&a.source, &|f| set(&bar, f));
     if let Some(b) = bar {
         b.finish_and_clear();
     }

@@ -305,8 +305,9 @@ pub fn load_aircraft(arg: &str) -> Result<Aircraft, String> {
     Ok(ac)
 }
 
-/// The aircraft `arg` names, as [`load_aircraft`] without printing its warnings.
-fn read_aircraft(arg: &str) -> Result<Aircraft, String> {
+/// The aircraft `arg` names, as [`load_aircraft`] without printing its warnings (for a caller
+/// that reports them its own way).
+pub fn read_aircraft(arg: &str) -> Result<Aircraft, String> {
     if let Some(ac) = Aircraft::builtin(arg) {
         return Ok(ac);
     }

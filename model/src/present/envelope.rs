@@ -5,6 +5,7 @@
 use super::failure::{stdout_error, Failure};
 use super::numbers::fixed;
 use super::options::{elevator, EnvelopeArgs};
+use super::outputs::{begin_folder, commit_folder};
 use super::progress::{progress_bar, set};
 use crate::envelope::source::Source;
 use crate::envelope::uncertainty::Uncertainty;
@@ -53,6 +54,11 @@ pub fn command(a: &EnvelopeArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
         u.check(&loaded, &a.source, &grid, elevator.load_factor)
             .map_err(Failure::Input)?;
     }
+    let staged = a
+        .out
+        .as_ref()
+        .map(|dir| begin_folder(dir, "envelope"))
+        .transpose()?;
     let bar = progress_bar("envelope");
     let chosen = (elevator, uncertainty.as_ref());
     let env = cleared_envelope(&loaded, &a.source, &grid, chosen, &|f| set(&bar, f));
@@ -67,8 +73,10 @@ pub fn command(a: &EnvelopeArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
     }
     .and_then(|()| out.flush())
     .map_err(stdout_error);
-    if let Some(dir) = &a.out {
-        super::envelope_folder::write_folder(dir, &env, &json).map_err(Failure::Output)?;
+    if let Some(staged) = staged {
+        super::envelope_folder::write_folder(staged.path(), &env, &json)
+            .map_err(Failure::Output)?;
+        commit_folder(staged)?;
     }
     printed?;
     Ok(ExitCode::SUCCESS)

@@ -1,5 +1,6 @@
 //! The command-line tool end to end, as a user runs it: `analyze` (analyze.rs), the other
-//! commands (commands.rs), what they write and how they fail (files.rs), and the JSBSim import
+//! commands (commands.rs), what they write and how they fail (files.rs), their `--out`
+//! folders (folders.rs), and the JSBSim import
 //! of a small model (jsbsim.rs).
 
 use std::path::PathBuf;
@@ -11,6 +12,7 @@ mod support;
 mod analyze;
 mod commands;
 mod files;
+mod folders;
 mod jsbsim;
 
 use support::{json, model, reference};

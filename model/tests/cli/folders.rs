@@ -4,10 +4,10 @@
 
 use super::{model, repo, scratch, stderr};
 use model::random::Rng;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::{Duration, Instant, SystemTime};
 
 /// Every file of `dir` (relative name, contents); `None` when `dir` does not exist.
 fn snapshot(dir: &Path) -> Option<BTreeMap<String, Vec<u8>>> {
@@ -59,16 +59,23 @@ fn spawn(args: &[&str], dir: &Path) -> std::process::Child {
         .unwrap()
 }
 
-/// Whether a temporary folder of `dir` holds a file besides the marker: the run writes.
-fn writing(dir: &Path) -> bool {
-    let name = dir.file_name().unwrap().to_string_lossy().into_owned();
-    let prefix = format!(".{name}.tmp-");
-    std::fs::read_dir(dir.parent().unwrap())
-        .into_iter()
-        .flatten()
-        .flatten()
-        .filter(|e| e.file_name().to_string_lossy().starts_with(&prefix))
-        .any(|e| std::fs::read_dir(e.path()).is_ok_and(|d| d.count() > 1))
+/// The regular files under `base` (any depth) with their modification times, but for the
+/// marker of a folder `model` writes (its temporary folder is made before any work): when this
+/// changes, a run has begun writing its outputs, wherever it puts them.
+fn files_under(base: &Path) -> BTreeSet<(PathBuf, SystemTime)> {
+    let mut found = BTreeSet::new();
+    let mut stack = vec![base.to_path_buf()];
+    while let Some(dir) = stack.pop() {
+        for e in std::fs::read_dir(&dir).into_iter().flatten().flatten() {
+            let Ok(meta) = e.metadata() else { continue };
+            if meta.is_dir() {
+                stack.push(e.path());
+            } else if e.file_name() != ".model-output" {
+                found.insert((e.path(), meta.modified().unwrap()));
+            }
+        }
+    }
+    found
 }
 
 /// The folder `dir` is absent or equal, file for file and byte for byte, to one of `runs`.
@@ -130,9 +137,10 @@ fn a_run_killed_while_writing_leaves_a_whole_folder() {
         let mut killed_while_writing = 0;
         for trial in 0..10 {
             let args = if trial % 2 == 0 { &second } else { &first };
+            let before = files_under(&base);
             let mut child = spawn(args, &dir);
             let start = Instant::now();
-            while !writing(&dir) && child.try_wait().unwrap().is_none() {
+            while files_under(&base) == before && child.try_wait().unwrap().is_none() {
                 assert!(start.elapsed() < Duration::from_secs(120), "no write phase");
                 std::thread::sleep(Duration::from_micros(200));
             }

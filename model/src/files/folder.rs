@@ -101,7 +101,8 @@ impl Staged {
 
     /// Puts the written folder in `target`'s place: the previous folder (if any) is renamed
     /// away, the new one renamed in, the previous one deleted. When another run puts its folder
-    /// in place between the two renames, that one is renamed away too and this run's wins.
+    /// in place between the two renames, that one is renamed away too and this run's wins. On
+    /// an error the previous folder is put back.
     pub fn commit(mut self) -> std::io::Result<()> {
         let mut olds = Vec::new();
         let mut result = Ok(());
@@ -122,6 +123,12 @@ impl Staged {
             }
         }
         self.committed = result.is_ok();
+        if !self.committed {
+            // The previous folder goes back where it was.
+            if let Some(last) = olds.pop() {
+                let _ = std::fs::rename(last, &self.target);
+            }
+        }
         for old in olds {
             let _ = std::fs::remove_dir_all(old);
         }

@@ -69,6 +69,9 @@ pub(super) fn cells(
     let x = within_grid(Axis::linear("Mach", 0.0, 0.0), &machs, dm);
     let y = within_grid(Axis::linear("altitude (m)", 0.0, 0.0), &alts, dh);
     let px_per_m = (style.height as f64 * 0.83 - 10.0) / (y.hi - y.lo);
+    // A pixel and a half across (the plot area is over 60 % of the figure's width), so that
+    // neighbouring cells overlap rather than leave a gap where their ends round apart.
+    let overlap = 1.5 * (x.hi - x.lo) / (style.width as f64 * 0.6);
     let mut painted: Vec<(usize, &Point, Rgb, String)> = env
         .points
         .iter()
@@ -90,7 +93,7 @@ pub(super) fn cells(
             let width = ((hi - lo) * px_per_m).clamp(1.0, 400.0).ceil() as u32 + 2;
             Line {
                 label: seen.insert(label.clone()).then_some(label),
-                points: vec![(p.mach - dm, at), (p.mach + dm, at)],
+                points: vec![(p.mach - dm - overlap, at), (p.mach + dm + overlap, at)],
                 color,
                 dash: Dash::Band,
                 width,

@@ -69,7 +69,7 @@ pub struct ContinueArgs {
 pub struct FiguresArgs {
     /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
     pub aircraft: String,
-    /// The folder to write the files into (default out/<command>-<aircraft>, e.g.
+    /// The folder to write the files into (default `out/<command>-<aircraft>`, e.g.
     /// out/report-a). Checked before any work; replaced whole when every file is written (an
     /// existing folder only if `model` wrote it or it is empty).
     #[arg(long, value_name = "DIR")]

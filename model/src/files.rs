@@ -21,6 +21,8 @@
 //! std::fs::remove_dir_all(&dir).unwrap();
 //! ```
 
+pub mod folder;
+
 use std::io::Write;
 use std::path::{Path, PathBuf};
 

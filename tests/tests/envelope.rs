@@ -14,6 +14,7 @@ use model::jsbsim::catalogue;
 use model::jsbsim::condition::Speed;
 use model::jsbsim::import::{import, Alpha, Request};
 use model::present::envelope::command;
+use model::present::envelope_maps::maps;
 use model::present::failure::Failure;
 use model::present::options::EnvelopeArgs;
 use model::random::Rng;
@@ -496,5 +497,123 @@ fn the_departure_map_tells_departures_within_the_stick_from_those_beyond_it() {
         let map = std::fs::read_to_string(dir.join("first_departure.csv")).unwrap();
         assert!(map.contains(&want), "{want} in {map}");
         let _ = std::fs::remove_dir_all(&dir);
+    }
+}
+
+/// The F-104's unloaded envelope over 0, 6,000 and 12,000 m and Mach 0.4, 0.65 and 0.9, and
+/// its maps.
+fn f104_maps() -> (
+    model::envelope::Envelope,
+    Vec<(&'static str, model::plot::Figure)>,
+) {
+    let source = Source::parse("jsbsim:f104").unwrap();
+    let grid = Grid::new(
+        Range::parse("0:12000:6000", "--altitude-m").unwrap(),
+        Range::parse("0.4:0.9:0.25", "--mach").unwrap(),
+    )
+    .unwrap();
+    let unloaded = Elevator {
+        load_factor: 0.0,
+        increment: 0.0,
+    };
+    let env = envelope(
+        &source.load().unwrap(),
+        "jsbsim:f104",
+        &grid,
+        unloaded,
+        &|_| {},
+    );
+    let figures = maps(&env, &model::plot::PlotStyle::default());
+    (env, figures)
+}
+
+/// The legend entries of a map's cells and lines.
+fn legend(f: &model::plot::Figure) -> Vec<String> {
+    f.panels[0]
+        .lines
+        .iter()
+        .filter_map(|l| l.label.clone())
+        .collect()
+}
+
+/// The maps read at a glance: titled with the aircraft's own name (JSBSim's `<fdm_config
+/// name="F-104C">`, not the source `jsbsim:f104`), axes spanning the grid and no more (no
+/// altitude below sea level), and on the critical-aileron map the smallest critical |delta_a|
+/// (the dangerous end) warm, red above blue, the largest cool.
+#[test]
+fn the_maps_name_the_aircraft_span_the_grid_and_paint_danger_warm() {
+    if !installed() {
+        return;
+    }
+    let (_, figures) = f104_maps();
+    for (stem, f) in &figures {
+        assert!(f.title.starts_with("F-104C: "), "{stem}: {}", f.title);
+        let (x, y) = (&f.panels[0].x, &f.panels[0].y);
+        assert_eq!((x.lo, x.hi), (0.4, 0.9), "{stem}: Mach axis");
+        assert_eq!((y.lo, y.hi), (0.0, 12000.0), "{stem}: altitude axis");
+    }
+    let aileron = &figures
+        .iter()
+        .find(|f| f.0 == "critical_aileron")
+        .unwrap()
+        .1;
+    // Bands "A to B deg" with their colours, by their lower end.
+    let mut bands: Vec<(f64, model::plot::Rgb)> = aileron.panels[0]
+        .lines
+        .iter()
+        .filter_map(|l| {
+            let label = l.label.as_deref()?.strip_suffix(" deg")?;
+            let (a, _) = label.split_once(" to ")?;
+            Some((a.parse().ok()?, l.color))
+        })
+        .collect();
+    bands.sort_by(|a, b| a.0.total_cmp(&b.0));
+    assert!(bands.len() >= 2, "{:?}", legend(aileron));
+    let (small, large) = (bands[0].1, bands[bands.len() - 1].1);
+    assert!(
+        small.0 > small.2,
+        "smallest critical aileron not warm: {small:?}"
+    );
+    assert!(
+        large.2 > large.0,
+        "largest critical aileron not cool: {large:?}"
+    );
+}
+
+/// One legend entry per meaning: a point analysed without a critical jump, one whose analysis
+/// failed and one without a trim each get their own entry, on both heat maps; on the
+/// departure map a jump of a model without an aileron limit is not called "within the stick's
+/// travel". (The points are the F-104's, their fields set as such points have them.)
+#[test]
+fn the_legends_tell_no_jump_from_not_analysed_and_unknown_travel() {
+    if !installed() {
+        return;
+    }
+    let (mut env, _) = f104_maps();
+    let analysed: Vec<usize> = (0..env.points.len())
+        .filter(|&k| env.points[k].route.is_some() && env.points[k].critical.is_some())
+        .collect();
+    assert!(analysed.len() >= 3, "{:?}", env.points);
+    let (none, failed, no_limit) = (analysed[0], analysed[1], analysed[2]);
+    env.points[none].critical = None;
+    env.points[failed].critical = None;
+    env.points[failed].route = None;
+    env.points[failed].error = Some("a failed analysis".into());
+    let jump = env.points[no_limit].first_departure.as_mut().unwrap();
+    jump.kind = "jump";
+    env.points[no_limit].aileron_limit_deg = None;
+    env.points[no_limit].margin_deg = None;
+    for (stem, f) in maps(&env, &model::plot::PlotStyle::default()) {
+        let entries = legend(&f);
+        if stem == "first_departure" {
+            assert!(
+                entries.contains(&"jump (no aileron limit known)".to_string()),
+                "{entries:?}"
+            );
+            continue;
+        }
+        for want in ["no critical jump", "not analysed"] {
+            assert!(entries.contains(&want.to_string()), "{stem}: {entries:?}");
+        }
     }
 }

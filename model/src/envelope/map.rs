@@ -15,6 +15,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 pub struct Envelope {
     /// The source as given.
     pub source: String,
+    /// The aircraft's own name (a JSBSim model's `<fdm_config name>`; the source when the
+    /// model has none): what the maps' titles say.
+    pub aircraft: String,
     /// The trim and the elevator increment: `"trim at N g, increment D deg"`.
     pub elevator: String,
     /// Points without a trim (untrimmable or outside the atmosphere).
@@ -61,6 +64,10 @@ pub fn cleared_envelope(
         .collect();
     Envelope {
         source: source.to_string(),
+        aircraft: match loaded.model.name.trim() {
+            "" => source.to_string(),
+            name => name.to_string(),
+        },
         elevator: elevator.to_string(),
         untrimmed: points.iter().filter(|p| !p.trimmed).count(),
         exact_fallbacks: points.iter().filter(|p| p.route == Some("exact")).count(),

@@ -9,6 +9,7 @@ use super::options::{
     delta_e_list, elevator_of, finite_angle, load_aircraft, AnalyzeArgs, ClearArgs, ContinueArgs,
     ConvertArgs, EmitArgs, FiguresArgs, SimulateArgs,
 };
+use super::outputs::{begin_folder, commit_folder, default_folder, wrote};
 use super::progress::{progress_bar, say_how_long, set};
 use super::report::{report, ReportError, ReportSettings};
 use crate::aircraft::{self, shown, Aircraft};
@@ -65,6 +66,7 @@ pub fn continue_command(a: &ContinueArgs, out: &mut dyn Write) -> Result<ExitCod
     }
     if let Some(path) = &a.csv {
         write_file(path, diagram.to_csv().as_bytes())?;
+        wrote(path, "every point of the continuation as CSV");
     }
     if a.json {
         let text = serde_json::to_string_pretty(&diagram).map_err(|e| e.to_string())?;
@@ -113,13 +115,18 @@ pub fn report_command(
     out: &mut dyn Write,
 ) -> Result<ExitCode, Failure> {
     let ac = load_aircraft(&a.aircraft)?;
-    let dir = &a.out;
+    let command = if summary { "report" } else { "plot" };
     let settings = ReportSettings {
         summary,
         ..ReportSettings::new(elevator_of(&ac, a.delta_e_deg)?)
     };
-    let bar = progress_bar(if summary { "report" } else { "plot" });
-    let result = report(&ac, dir, &settings, &mut |f| set(&bar, f));
+    let target = a
+        .out
+        .clone()
+        .unwrap_or_else(|| default_folder(command, &a.aircraft));
+    let staged = begin_folder(&target, command)?;
+    let bar = progress_bar(command);
+    let result = report(&ac, staged.path(), &settings, &mut |f| set(&bar, f));
     if let Some(b) = bar {
         b.finish_and_clear();
     }
@@ -127,37 +134,22 @@ pub fn report_command(
         ReportError::Io { .. } => Failure::Output(e.to_string()),
         e => named(&ac, e),
     })?;
-    let failed: Vec<&Path> = result
-        .failed_files
-        .iter()
-        .map(|f| f.path.as_path())
-        .collect();
-    for f in &result.figures {
-        for file in &f.files {
-            say!(out, "wrote {}", dir.join(file).display());
-        }
-    }
-    if summary {
-        for file in ["summary.md", "summary.json"] {
-            let path = dir.join(file);
-            if !failed.contains(&path.as_path()) {
-                say!(out, "wrote {}", path.display());
-            }
-        }
-    }
     for k in &result.skipped {
         say!(out, "skipped: {}", shown(k));
     }
     if result.failed_files.is_empty() {
+        commit_folder(staged)?;
         return Ok(ExitCode::SUCCESS);
     }
+    // The folder is not put in place: the previous run's stays as it was.
     out.flush().map_err(stdout_error)?;
     let mut err = std::io::stderr();
     for f in &result.failed_files {
+        let rel = f.path.strip_prefix(staged.path()).unwrap_or(&f.path);
         let _ = writeln!(
             err,
             "error: cannot write {}: {}",
-            f.path.display(),
+            staged.target().join(rel).display(),
             f.reason
         );
     }
@@ -174,6 +166,7 @@ pub fn simulate_command(a: &SimulateArgs, out: &mut dyn Write) -> Result<ExitCod
     let (h, model) = history_of(&ac, a)?;
     if let Some(path) = &a.csv {
         write_file(path, h.to_csv().as_bytes())?;
+        wrote(path, "the time history as CSV");
     }
     let (t_end, delta_a_deg) = (a.t_end, a.delta_a_deg);
     let st = h.steady(steady_window(t_end));
@@ -247,6 +240,11 @@ pub fn history_of(ac: &Aircraft, a: &SimulateArgs) -> Result<(TimeHistory, Model
 /// folder of summaries, samples and figures.
 pub fn clear_command(a: &ClearArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
     let ac = load_aircraft(&a.aircraft)?;
+    let staged = a
+        .out
+        .as_ref()
+        .map(|dir| begin_folder(dir, "clear"))
+        .transpose()?;
     let bar = progress_bar("clear");
     let runs = runs_of(&ac, a, &mut |f| set(&bar, f))?;
     if let Some(b) = bar {
@@ -272,8 +270,9 @@ pub fn clear_command(a: &ClearArgs, out: &mut dyn Write) -> Result<ExitCode, Fai
     }
     .and_then(|()| out.flush())
     .map_err(stdout_error);
-    if let Some(dir) = &a.out {
-        super::clearance::write_folder(dir, &runs, &text).map_err(Failure::Output)?;
+    if let Some(staged) = staged {
+        super::clearance::write_folder(staged.path(), &runs, &text).map_err(Failure::Output)?;
+        commit_folder(staged)?;
     }
     printed?;
     Ok(ExitCode::SUCCESS)

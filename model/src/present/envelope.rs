@@ -5,6 +5,7 @@
 use super::failure::{stdout_error, Failure};
 use super::numbers::fixed;
 use super::options::{elevator, EnvelopeArgs};
+use super::outputs::{begin_folder, commit_folder};
 use super::progress::{progress_bar, set};
 use crate::envelope::source::Source;
 use crate::envelope::uncertainty::Uncertainty;
@@ -86,6 +87,11 @@ impl Plan {
 /// `model envelope`.
 pub fn command(a: &EnvelopeArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
     let plan = Plan::new(a)?;
+    let staged = a
+        .out
+        .as_ref()
+        .map(|dir| begin_folder(dir, "envelope"))
+        .transpose()?;
     let bar = progress_bar("envelope");
     let env = plan.run(&a.source, &|f| set(&bar, f));
     if let Some(b) = bar {
@@ -99,8 +105,10 @@ pub fn command(a: &EnvelopeArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
     }
     .and_then(|()| out.flush())
     .map_err(stdout_error);
-    if let Some(dir) = &a.out {
-        super::envelope_folder::write_folder(dir, &env, &json).map_err(Failure::Output)?;
+    if let Some(staged) = staged {
+        super::envelope_folder::write_folder(staged.path(), &env, &json)
+            .map_err(Failure::Output)?;
+        commit_folder(staged)?;
     }
     printed?;
     Ok(ExitCode::SUCCESS)

@@ -14,7 +14,7 @@ const UNDECIDED: Rgb = Rgb(240, 200, 60);
 /// The map of the verdicts; `None` without `--uncertainty`.
 pub fn clearance_regions(env: &Envelope, style: &PlotStyle) -> Option<Figure> {
     let spec = env.uncertainty.as_ref()?;
-    let title = format!("{}: cleared against the aileron limit", env.source);
+    let title = format!("{}: cleared against the aileron limit", env.aircraft);
     let mut f = cells(
         env,
         title,

@@ -60,7 +60,7 @@ pub fn markdown(env: &Envelope) -> String {
         .iter()
         .filter_map(|p| p.margin_deg.map(|m| (m, p)))
         .max_by(|a, b| a.0.total_cmp(&b.0));
-    let mut s = format!("# Flight envelope: {}\n\n", env.source);
+    let mut s = format!("# Flight envelope: {} ({})\n\n", env.aircraft, env.source);
     s += &format!("Elevator: {}.\n\n", env.elevator);
     if let Some((m, p)) = worst {
         s += &format!(

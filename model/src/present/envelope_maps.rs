@@ -1,8 +1,10 @@
 //! The maps of `model envelope --out`: over Mach (across) and altitude (up), one cell per grid
 //! point, each drawn as a band of its colour ([`crate::plot`] draws polylines and markers, so a
 //! cell is a line as wide as the cell, as thick as its row, which the legend shows as a filled
-//! box). The critical aileron and the critical roll rate in eight colour bands, and the first
-//! departure's kind as a region map (an unstable trim at P0 = 0, a jump, a Hopf point, none).
+//! box). The critical aileron and the critical roll rate in eight colour bands, small (the
+//! dangerous end) warm and large cool, and the first departure's kind as a region map (an
+//! unstable trim at P0 = 0, a jump or a Hopf point within or beyond the aileron's travel,
+//! none). Titles name the aircraft; the axes span the grid.
 //!
 //! On the critical aileron map, the aileron-limit contour is drawn: the line where the margin
 //! (aileron limit minus |critical delta_a|) is zero, by marching squares over the grid's
@@ -27,6 +29,10 @@ const UNTRIMMED: Rgb = Rgb(110, 110, 110);
 const UNSTABLE_TRIM: Rgb = Rgb(120, 40, 150);
 /// The number of colour bands of a heat map.
 const BANDS: usize = 8;
+
+/// Pale blue of trimmed, analysed cells without a critical jump (no jump at any aileron: the
+/// safe side of a map whose danger is warm).
+const NO_JUMP: Rgb = Rgb(200, 225, 245);
 
 /// The distinct values of `xs`, ascending, and half the smallest spacing (`fallback` for one).
 fn axis_of(xs: impl Iterator<Item = f64>, fallback: f64) -> (Vec<f64>, f64) {
@@ -60,9 +66,12 @@ pub(super) fn cells(
 ) -> Figure {
     let (machs, dm) = axis_of(env.points.iter().map(|p| p.mach), 0.025);
     let (alts, dh) = axis_of(env.points.iter().map(|p| p.altitude_m), 250.0);
-    let row_px = (style.height as f64 * 0.83 - 10.0) / alts.len().max(1) as f64;
-    // Two pixels more than a row, so that neighbouring rows overlap rather than leave a gap.
-    let width = row_px.clamp(1.0, 200.0).ceil() as u32 + 2;
+    let x = within_grid(Axis::linear("Mach", 0.0, 0.0), &machs, dm);
+    let y = within_grid(Axis::linear("altitude (m)", 0.0, 0.0), &alts, dh);
+    let px_per_m = (style.height as f64 * 0.83 - 10.0) / (y.hi - y.lo);
+    // A pixel and a half across (the plot area is over 60 % of the figure's width), so that
+    // neighbouring cells overlap rather than leave a gap where their ends round apart.
+    let overlap = 1.5 * (x.hi - x.lo) / (style.width as f64 * 0.6);
     let mut painted: Vec<(usize, &Point, Rgb, String)> = env
         .points
         .iter()
@@ -75,16 +84,22 @@ pub(super) fn cells(
     let mut seen = std::collections::BTreeSet::new();
     let lines = painted
         .into_iter()
-        .map(|(_, p, color, label)| Line {
-            label: seen.insert(label.clone()).then_some(label),
-            points: vec![(p.mach - dm, p.altitude_m), (p.mach + dm, p.altitude_m)],
-            color,
-            dash: Dash::Band,
-            width,
+        .map(|(_, p, color, label)| {
+            // The cell's rows within the axis: an edge row shows its inner half.
+            let (lo, hi) = ((p.altitude_m - dh).max(y.lo), (p.altitude_m + dh).min(y.hi));
+            let at = (lo + hi) / 2.0;
+            // Two pixels more than a row, so that neighbouring rows overlap rather than leave
+            // a gap.
+            let width = ((hi - lo) * px_per_m).clamp(1.0, 400.0).ceil() as u32 + 2;
+            Line {
+                label: seen.insert(label.clone()).then_some(label),
+                points: vec![(p.mach - dm - overlap, at), (p.mach + dm + overlap, at)],
+                color,
+                dash: Dash::Band,
+                width,
+            }
         })
         .collect();
-    let x = Axis::linear("Mach", machs[0] - dm, machs[machs.len() - 1] + dm);
-    let y = Axis::linear("altitude (m)", alts[0] - dh, alts[alts.len() - 1] + dh);
     Figure {
         title,
         panels: vec![Panel {
@@ -101,16 +116,36 @@ pub(super) fn cells(
     }
 }
 
-/// The colour and legend entry of a point without the mapped number.
-pub(super) fn missing(p: &Point) -> Cell {
-    if p.trimmed {
-        (EMPTY, "no critical jump / not analysed".to_string(), 100)
+/// `axis` spanning the grid's values `vs` (ascending): from the first to the last, so that no
+/// axis runs beyond the grid (an altitude below sea level); the cells at the edges show half.
+/// A grid of one value gets `half` either side of it.
+fn within_grid(axis: Axis, vs: &[f64], half: f64) -> Axis {
+    let (lo, hi) = (vs[0], vs[vs.len() - 1]);
+    if hi > lo {
+        Axis { lo, hi, ..axis }
     } else {
-        (UNTRIMMED, "untrimmable".to_string(), 101)
+        Axis {
+            lo: lo - half,
+            hi: hi + half,
+            ..axis
+        }
     }
 }
 
-/// A heat map of `value` (in `unit`) in eight bands from its smallest to its largest value.
+/// The colour and legend entry of a point without the mapped number, one entry per reason:
+/// no critical jump (analysed: no jump at any aileron), not analysed (the analysis failed),
+/// untrimmable.
+pub(super) fn missing(p: &Point) -> Cell {
+    match (p.trimmed, p.route) {
+        (true, Some(_)) => (NO_JUMP, "no critical jump".to_string(), 100),
+        (true, None) => (EMPTY, "not analysed".to_string(), 101),
+        (false, _) => (UNTRIMMED, "untrimmable".to_string(), 102),
+    }
+}
+
+/// A heat map of `value` (in `unit`) in eight bands from its smallest to its largest value,
+/// the smallest warm (red) and the largest cool (blue): the mapped numbers say how far a roll
+/// is from its jump, so small is the dangerous end.
 pub fn heat_map(
     env: &Envelope,
     what: &str,
@@ -123,13 +158,13 @@ pub fn heat_map(
     let hi = vs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let step = ((hi - lo) / BANDS as f64).max(1e-9);
     let band = |v: f64| (((v - lo) / step) as usize).min(BANDS - 1);
-    let title = format!("{}: {what} over the envelope", env.source);
+    let title = format!("{}: {what} over the envelope", env.aircraft);
     cells(env, title, style, &|p| match value(p) {
         Some(v) => {
             let k = band(v);
             let (a, b) = (lo + k as f64 * step, lo + (k + 1) as f64 * step);
             (
-                Rgb::sequential(k, BANDS),
+                Rgb::sequential(BANDS - 1 - k, BANDS),
                 format!("{a:.2} to {b:.2} {unit}"),
                 k,
             )
@@ -201,12 +236,13 @@ const JUMP_BEYOND: Rgb = Rgb(240, 170, 170);
 /// Pale orange of cells whose first departure is a Hopf point beyond the aileron's travel.
 const HOPF_BEYOND: Rgb = Rgb(250, 215, 160);
 
-/// Whether the first departure of `p` needs more aileron than its limit: a full-stick roll
-/// does not reach it, which the map must not paint as the departure a pilot meets.
-fn beyond_the_stick(p: &Point) -> bool {
+/// Whether the first departure of `p` needs more aileron than its limit (a full-stick roll
+/// does not reach it, which the map must not paint as the departure a pilot meets); `None`
+/// when the model gives no aileron limit.
+fn beyond_the_stick(p: &Point) -> Option<bool> {
     match (&p.first_departure, p.aileron_limit_deg) {
-        (Some(d), Some(limit)) => d.delta_a_deg.abs() > limit,
-        _ => false,
+        (Some(d), Some(limit)) => Some(d.delta_a_deg.abs() > limit),
+        _ => None,
     }
 }
 
@@ -214,7 +250,7 @@ fn beyond_the_stick(p: &Point) -> bool {
 /// and a jump or Hopf point beyond the aileron's travel drawn pale, apart from those a
 /// full-stick roll reaches.
 pub fn departure_regions(env: &Envelope, style: &PlotStyle) -> Figure {
-    let title = format!("{}: first departure on the primary branch", env.source);
+    let title = format!("{}: first departure on the primary branch", env.aircraft);
     cells(
         env,
         title,
@@ -225,11 +261,13 @@ pub fn departure_regions(env: &Envelope, style: &PlotStyle) -> Figure {
                 "unstable trim (bare airframe)".to_string(),
                 0,
             ),
-            ("jump", false) => (Rgb::RED, "jump within the stick's travel".to_string(), 1),
-            ("hopf", false) => (Rgb::ORANGE, "Hopf within the stick's travel".to_string(), 2),
-            ("jump", true) => (JUMP_BEYOND, "jump beyond the stick's travel".to_string(), 3),
-            ("hopf", true) => (HOPF_BEYOND, "Hopf beyond the stick's travel".to_string(), 4),
-            ("none", _) => (Rgb::GREEN, "none: stable throughout".to_string(), 5),
+            ("jump", Some(false)) => (Rgb::RED, "jump within the stick's travel".to_string(), 1),
+            ("hopf", Some(false)) => (Rgb::ORANGE, "Hopf within the stick's travel".to_string(), 2),
+            ("jump", Some(true)) => (JUMP_BEYOND, "jump beyond the stick's travel".to_string(), 3),
+            ("hopf", Some(true)) => (HOPF_BEYOND, "Hopf beyond the stick's travel".to_string(), 4),
+            ("jump", None) => (Rgb::RED, "jump (no aileron limit known)".to_string(), 5),
+            ("hopf", None) => (Rgb::ORANGE, "Hopf (no aileron limit known)".to_string(), 6),
+            ("none", _) => (Rgb::GREEN, "none: stable throughout".to_string(), 7),
             _ => missing(p),
         },
     )

@@ -15,6 +15,7 @@ pub mod envelope_maps;
 pub mod failure;
 pub mod numbers;
 pub mod options;
+pub mod outputs;
 pub mod progress;
 pub mod report;
 pub mod six_dof;

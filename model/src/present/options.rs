@@ -58,7 +58,8 @@ pub struct ContinueArgs {
     /// Print JSON instead of a summary.
     #[arg(long)]
     pub json: bool,
-    /// Also write every point as CSV to this file (units in the header).
+    /// Also write every point as CSV to the one file FILE (units in the header), replaced
+    /// whole.
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
 }
@@ -68,9 +69,11 @@ pub struct ContinueArgs {
 pub struct FiguresArgs {
     /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
     pub aircraft: String,
-    /// Output folder DIR (created if needed).
+    /// The folder to write the files into (default `out/<command>-<aircraft>`, e.g.
+    /// out/report-a). Checked before any work; replaced whole when every file is written (an
+    /// existing folder only if `model` wrote it or it is empty).
     #[arg(long, value_name = "DIR")]
-    pub out: PathBuf,
+    pub out: Option<PathBuf>,
     /// Elevator in degrees: the increment from the trim for an aircraft whose file gives its
     /// trim (an import; default 0), else the deflection from zero lift (default 2, Figs 7-8).
     #[arg(long, allow_hyphen_values = true)]
@@ -98,7 +101,8 @@ pub struct SimulateArgs {
     /// Integrate the PSS model instead of the 7th-order model.
     #[arg(long)]
     pub pss: bool,
-    /// Write the time history as CSV to this file (units in the header).
+    /// Also write the time history as CSV to the one file FILE (units in the header),
+    /// replaced whole.
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
     /// The native nonlinear 6-DOF of a `jsbsim:` source instead, from its n-g trim
@@ -180,7 +184,9 @@ pub struct ClearArgs {
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
-    /// Write summary.md, summary.json and samples.csv into DIR.
+    /// Also write summary.md, summary.json, samples.csv and the histograms into the folder DIR
+    /// (nothing is written without it). Checked before any work; replaced whole when every
+    /// file is written (an existing folder only if `model` wrote it or it is empty).
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
 }
@@ -210,7 +216,9 @@ pub struct EnvelopeArgs {
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,
-    /// Write envelope.csv, summary.md, summary.json and the maps (SVG, PNG) into DIR.
+    /// Also write envelope.csv, summary.md, summary.json and the maps (SVG, PNG, CSV) into the
+    /// folder DIR (nothing is written without it). Checked before any work; replaced whole
+    /// when every file is written (an existing folder only if `model` wrote it or it is empty).
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
     /// Make every point a certified clearance over a box of its coefficients: a relative width

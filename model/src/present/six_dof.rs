@@ -5,6 +5,7 @@
 use super::failure::{stdout_error, write_file, Failure};
 use super::numbers::fixed;
 use super::options::SimulateArgs;
+use super::outputs::{begin_folder, commit_folder, wrote};
 use crate::jsbsim::coefficients::Setup;
 use crate::jsbsim::condition::Condition;
 use crate::jsbsim::import::{Alpha, Loaded};
@@ -116,9 +117,15 @@ pub fn command(a: &SimulateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
             settings.dt
         )));
     }
+    let staged = a
+        .out
+        .as_ref()
+        .map(|dir| begin_folder(dir, "simulate"))
+        .transpose()?;
     let h = simulate(&setup, &t, &settings)?;
     if let Some(path) = &a.csv {
         write_file(path, h.to_csv().as_bytes())?;
+        wrote(path, "the time history as CSV");
     }
     let title = format!(
         "{} 6-DOF, {} m, Mach {}, n = {n}: aileron step {} deg",
@@ -127,12 +134,14 @@ pub fn command(a: &SimulateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
         fixed(condition.mach, 3),
         a.delta_a_deg
     );
-    if let Some(dir) = &a.out {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| Failure::Output(format!("cannot create {}: {e}", dir.display())))?;
-        let stem = dir.join("six_dof");
-        render(&stem, &figure(&h, &title), &PlotStyle::default())
-            .map_err(|e| Failure::Output(e.to_string()))?;
+    if let Some(staged) = staged {
+        render(
+            &staged.path().join("six_dof"),
+            &figure(&h, &title),
+            &PlotStyle::default(),
+        )
+        .map_err(|e| Failure::Output(e.to_string()))?;
+        commit_folder(staged)?;
     }
     writeln!(out, "{}", summary(&h, &t, &title)).map_err(stdout_error)?;
     Ok(ExitCode::SUCCESS)

@@ -8,6 +8,7 @@
 use super::failure::{stdout_error, Failure};
 use super::numbers::fixed;
 use super::options::ValidateArgs;
+use super::outputs::{begin_folder, commit_folder, default_folder};
 use super::six_dof::{loaded_source, settled, trim_and_aileron};
 use crate::analysis::analyze;
 use crate::plot::{render, Axis, Dash, Figure, LegendPlace, Line, Panel, PlotStyle, Rgb};
@@ -15,7 +16,6 @@ use crate::simulation::{simulate, Model, SimSettings};
 use crate::six_dof::jump::{find_jump, Jump};
 use crate::six_dof::Settings;
 use std::io::Write;
-use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// The judging window at the end of each run, s.
@@ -83,6 +83,11 @@ pub fn command(a: &ValidateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
     }
     let (loaded, condition, n, spec) =
         loaded_source(&a.source, (a.altitude_m, a.mach, a.load_factor))?;
+    let target = a
+        .out
+        .clone()
+        .unwrap_or_else(|| default_folder("validate", &a.source));
+    let staged = begin_folder(&target, "validate")?;
     let ac = crate::jsbsim::cli::source(&spec)?;
     let analysis = analyze(&ac, 0.0).map_err(|e| e.to_string())?;
     let critical = analysis.critical.as_ref().map(|j| j.delta_a_deg.abs());
@@ -108,18 +113,13 @@ pub fn command(a: &ValidateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
     }
     let range = (degs[0], degs[degs.len() - 1]);
     let name = &loaded.model.name;
-    let dir = a.out.clone().unwrap_or_else(|| {
-        PathBuf::from(format!("out/validate-{}", file_name(&loaded.model.file)))
-    });
-    std::fs::create_dir_all(&dir)
-        .map_err(|e| Failure::Output(format!("cannot create {}: {e}", dir.display())))?;
     let title = format!(
         "{name}, {} m, Mach {}, n = {n}: settled roll rate after an aileron step",
         condition.altitude_m,
         fixed(condition.mach, 3)
     );
-    let files = render(
-        &dir.join("plateau"),
+    render(
+        &staged.path().join("plateau"),
         &figure(&title, &degs, (&seventh, &six), critical, limit),
         &PlotStyle::default(),
     )
@@ -140,26 +140,12 @@ pub fn command(a: &ValidateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
             fixed(drift[1], 0),
             fixed(drift[2], 3)
         ),
-        format!(
-            "wrote {}",
-            files
-                .iter()
-                .map(|f| f.display().to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
     ];
+    commit_folder(staged)?;
     for l in lines {
         writeln!(out, "{l}").map_err(stdout_error)?;
     }
     Ok(ExitCode::SUCCESS)
-}
-
-/// The model file's stem (`f104`).
-fn file_name(path: &str) -> String {
-    std::path::Path::new(path)
-        .file_stem()
-        .map_or("model".to_string(), |s| s.to_string_lossy().into_owned())
 }
 
 /// The plateau figure: both models' settled |p| against |delta_a|, the critical aileron and

@@ -164,47 +164,40 @@ fn csv_goes_into_devices_and_through_symlinks_and_failures_are_reported() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// An old run's folder, whatever it holds (a directory where a figure goes, temporaries of a
+/// killed run), is replaced whole by the next run; a temporary folder of a killed run beside it
+/// is removed.
 #[test]
-fn plot_writes_what_it_can_names_each_failed_file_and_removes_stale_temporaries() {
-    let dir = scratch("plot-fail");
-    // A directory where a figure should go, and the temporary of a killed run (no such PID).
+fn plot_replaces_an_old_runs_folder_whole() {
+    let base = scratch("plot-replace");
+    let dir = base.join("figs");
     std::fs::create_dir_all(dir.join("fig07_det_k.png")).unwrap();
-    let stale = dir.join(".fig01_bifurcation.svg.tmp-4194305-0");
-    std::fs::write(&stale, "half a figure").unwrap();
-    // ... and of a file `plot` does not write (a killed `report`'s summary).
-    let stale_summary = dir.join(".summary.md.tmp-4194305-1");
-    std::fs::write(&stale_summary, "half a summary").unwrap();
+    std::fs::write(dir.join(".model-output"), "plot\n").unwrap();
+    std::fs::write(dir.join(".fig01_bifurcation.svg.tmp-4194305-0"), "half").unwrap();
+    std::fs::write(dir.join("summary.md"), "an old report's summary").unwrap();
+    // A killed run's temporary folder (no process has PID 4194305).
+    std::fs::create_dir_all(base.join(".figs.tmp-4194305-0")).unwrap();
     let out = model(&["plot", "B", "--out", dir.to_str().unwrap()]);
-    let err = stderr(&out);
-    assert_eq!(out.status.code(), Some(1), "{err}");
-    assert!(err.contains("fig07_det_k.png"), "{err}");
-    assert_eq!(err.lines().count(), 1, "{err}");
-    assert!(
-        !stale.exists() && !stale_summary.exists(),
-        "stale temporaries removed"
-    );
-    // The written files of the incomplete figure are announced like the others.
-    let text = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        text.contains("fig07_det_k.svg") && text.contains("fig07_det_k.csv"),
-        "{text}"
-    );
-    assert!(!text.contains("fig07_det_k.png"), "{text}");
-    for f in [
-        "fig01_bifurcation.svg",
-        "fig07_det_k.svg",
-        "fig07_det_k.csv",
-        "fig11_zero_sideslip_det_k.png",
-    ] {
-        assert!(dir.join(f).is_file(), "{f}");
-    }
-    let leftovers: Vec<String> = std::fs::read_dir(&dir)
+    assert!(out.status.success(), "{}", stderr(&out));
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .filter(|n| n.contains(".tmp"))
         .collect();
-    assert!(leftovers.is_empty(), "{leftovers:?}");
-    std::fs::remove_dir_all(&dir).unwrap();
+    names.sort();
+    assert_eq!(names.len(), 22, "{names:?}");
+    assert!(
+        names
+            .iter()
+            .all(|n| n.starts_with("fig") || n == ".model-output"),
+        "{names:?}"
+    );
+    assert!(dir.join("fig07_det_k.png").is_file());
+    assert_eq!(
+        std::fs::read_dir(&base).unwrap().count(),
+        1,
+        "only the folder"
+    );
+    std::fs::remove_dir_all(&base).unwrap();
 }
 
 #[test]

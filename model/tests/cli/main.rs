@@ -1,7 +1,8 @@
 //! The command-line tool end to end, as a user runs it: `analyze` (analyze.rs), the other
-//! commands (commands.rs), what they write and how they fail (files.rs), the JSBSim import
-//! of a small model (jsbsim.rs), and the README's first screen and the outputs the README and
-//! the user's guide show (readme.rs).
+//! commands (commands.rs), what they write and how they fail (files.rs), their `--out`
+//! folders (folders.rs), the JSBSim import of a small model (jsbsim.rs), the 6-DOF
+//! (six_dof.rs), and the README's first screen and the outputs the README and the user's guide
+//! show (readme.rs).
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -12,6 +13,7 @@ mod support;
 mod analyze;
 mod commands;
 mod files;
+mod folders;
 mod jsbsim;
 mod readme;
 mod six_dof;

@@ -41,6 +41,7 @@ fn column(csv: &str, name: &str) -> Vec<f64> {
 fn the_six_dof_writes_its_time_history_and_figure() {
     let dir = scratch("six-dof-run");
     let csv = dir.join("run.csv");
+    let figures = dir.join("figures");
     let out = six_dof(&[
         "--delta-a-deg",
         "-5",
@@ -49,7 +50,7 @@ fn the_six_dof_writes_its_time_history_and_figure() {
         "--csv",
         csv.to_str().unwrap(),
         "--out",
-        dir.to_str().unwrap(),
+        figures.to_str().unwrap(),
     ]);
     assert!(out.status.success(), "{}", stderr(&out));
     let text = std::fs::read_to_string(&csv).unwrap();
@@ -61,7 +62,7 @@ fn the_six_dof_writes_its_time_history_and_figure() {
     assert_eq!(p.len(), 241);
     assert!(p[240] > 0.1, "{}", p[240]);
     for f in ["six_dof.svg", "six_dof.png", "six_dof.csv"] {
-        assert!(dir.join(f).is_file(), "{f}");
+        assert!(figures.join(f).is_file(), "{f}");
     }
     let said = String::from_utf8_lossy(&out.stdout);
     assert!(

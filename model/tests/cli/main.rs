@@ -9,9 +9,11 @@ use std::process::{Command, Output};
 mod support;
 
 mod analyze;
+mod answers;
 mod commands;
 mod files;
 mod jsbsim;
+mod options;
 
 use support::{json, model, reference};
 

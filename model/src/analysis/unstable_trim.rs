@@ -315,10 +315,10 @@ pub fn significant(x: f64) -> String {
     let magnitude = x.abs().log10().floor() as i32;
     let digits = (3 - magnitude).clamp(0, 12) as usize;
     let s = format!("{x:.digits$}");
-    match s.strip_prefix('-') {
-        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
-        _ => s,
+    if s.chars().all(|c| matches!(c, '-' | '0' | '.')) {
+        return "0".into();
     }
+    s
 }
 
 #[cfg(test)]

@@ -1,8 +1,8 @@
 //! The U.S. Standard Atmosphere 1976 up to 86 km geometric altitude (84.852 km geopotential),
 //! the model JSBSim's `FGStandardAtmosphere` uses on a standard day: temperature linear in
 //! geopotential altitude within each layer, pressure from the hydrostatic equation, density
-//! from the ideal gas law, speed of sound sqrt(gamma R T), geometric altitude (above mean sea level) converted to
-//! geopotential with the Earth radius 6,356,766 m.
+//! from the ideal gas law, speed of sound sqrt(gamma R T), geometric altitude (above mean sea
+//! level) converted to geopotential with the Earth radius 6,356,766 m.
 
 /// Base geopotential altitude (m) and temperature lapse rate (K/m) of each layer.
 const LAYERS: [(f64, f64); 7] = [

@@ -27,6 +27,7 @@ pub fn analyze<'py>(
         json: true,
         exact: false,
         certified,
+        all: false,
     };
     let result = detached(py, move || analysis_of(&ac, &args))?.map_err(raised)?;
     to_python(py, &result)

@@ -43,6 +43,14 @@ pub fn envelope(
     cleared_envelope(loaded, source, grid, (elevator, None), progress)
 }
 
+/// The aircraft's name on the maps and in the JSON: the model's own name, else the source.
+pub fn aircraft_name(loaded: &Loaded, source: &str) -> String {
+    match loaded.model.name.trim() {
+        "" => source.to_string(),
+        name => name.to_string(),
+    }
+}
+
 /// [`envelope`], and with `uncertainty` every point also the certified clearance of its box.
 pub fn cleared_envelope(
     loaded: &Loaded,
@@ -64,10 +72,7 @@ pub fn cleared_envelope(
         .collect();
     Envelope {
         source: source.to_string(),
-        aircraft: match loaded.model.name.trim() {
-            "" => source.to_string(),
-            name => name.to_string(),
-        },
+        aircraft: aircraft_name(loaded, source),
         elevator: elevator.to_string(),
         untrimmed: points.iter().filter(|p| !p.trimmed).count(),
         exact_fallbacks: points.iter().filter(|p| p.route == Some("exact")).count(),

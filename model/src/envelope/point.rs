@@ -67,6 +67,10 @@ pub struct Point {
     /// reaches the jump (by this much), negative where the jump lies beyond the stick's travel;
     /// `None` without a limit or without a critical jump.
     pub margin_deg: Option<f64>,
+    /// The aileron limit minus the |delta_a| of the first departure (a jump or a Hopf point),
+    /// deg: as `margin_deg`, for the departure the branch meets first, which may be a Hopf
+    /// point where there is no jump; `None` without a limit or without a jump or Hopf departure.
+    pub departure_margin_deg: Option<f64>,
     /// `"certified"` or `"exact"` (the certified route did not answer, a case it does not
     /// cover or a failed certificate, and the exact path did).
     pub route: Option<&'static str>,
@@ -99,6 +103,7 @@ impl Point {
             first_departure: None,
             aileron_limit_deg: None,
             margin_deg: None,
+            departure_margin_deg: None,
             route: None,
             clearance: None,
             clearance_error: None,
@@ -195,10 +200,13 @@ impl Point {
             within_limits: c.within_limits,
         });
         self.critical_note = a.critical_note;
-        self.first_departure = a.first_departure;
-        self.margin_deg = match (&self.critical, self.aileron_limit_deg) {
-            (Some(c), Some(limit)) => Some(limit - c.delta_a_deg.abs()),
+        self.margin_deg = a.margin_deg;
+        self.departure_margin_deg = match (&a.first_departure, self.aileron_limit_deg) {
+            (Some(d), Some(limit)) if d.kind != "unstable_trim" => {
+                Some(limit - d.delta_a_deg.abs())
+            }
             _ => None,
         };
+        self.first_departure = a.first_departure;
     }
 }

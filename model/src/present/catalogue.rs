@@ -56,6 +56,7 @@ fn table(args: &[String]) -> Result<String, String> {
         None => catalogue::root(None),
     }
     .ok_or_else(|| catalogue::HOW_TO_GET.to_string())?;
+    catalogue::checked_root(&root)?;
     if given_root.is_none() {
         rest.extend(["--jsbsim-root".to_string(), root.display().to_string()]);
     }

@@ -6,8 +6,8 @@
 use super::failure::{named, stdout_error, write_file, Failure, FAILED};
 use super::numbers::fixed;
 use super::options::{
-    delta_e_list, elevator_of, finite_angle, load_aircraft, AnalyzeArgs, ClearArgs, ContinueArgs,
-    ConvertArgs, EmitArgs, FiguresArgs, SimulateArgs,
+    delta_e_list, elevator_of, finite_angle, load_aircraft, read_aircraft, AnalyzeArgs, ClearArgs,
+    ContinueArgs, ConvertArgs, EmitArgs, FiguresArgs, SimulateArgs,
 };
 use super::outputs::{begin_folder, commit_folder, default_folder, wrote};
 use super::progress::{progress_bar, say_how_long, set};
@@ -32,13 +32,19 @@ macro_rules! say {
 /// `model analyze`: the table of the certified route (the exact path with `--exact`), or JSON
 /// of the exact path (the certified route's with `--certified`).
 pub fn analyze_command(a: &AnalyzeArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
-    let ac = load_aircraft(&a.aircraft)?;
+    // The text carries the aircraft's warnings itself; JSON carries them as a field, and they
+    // go to stderr as well.
+    let ac = if a.json {
+        load_aircraft(&a.aircraft)?
+    } else {
+        read_aircraft(&a.aircraft)?
+    };
     let result = analysis_of(&ac, a)?;
     if a.json {
         let text = serde_json::to_string_pretty(&result).map_err(|e| e.to_string())?;
         say!(out, "{text}");
     } else {
-        write!(out, "{}", super::tables::analysis(&result)).map_err(stdout_error)?;
+        write!(out, "{}", super::tables::analysis(&result, a.all)).map_err(stdout_error)?;
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -235,6 +241,12 @@ pub fn history_of(ac: &Aircraft, a: &SimulateArgs) -> Result<(TimeHistory, Model
     Ok((h, model))
 }
 
+/// The smallest `--tolerance` of `clear`, rad/s. The proof's bounds are f64 interval enclosures:
+/// on the shipped box of aircraft A (P0 = 1.57 rad/s) the roll-rate gap closes to 4e-14 rad/s at
+/// `--tolerance 1e-13` in a second, while at 1e-14 it runs on (over a minute) without closing.
+/// 1e-12 leaves a margin of ten for larger roll rates.
+pub const MIN_TOLERANCE: f64 = 1e-12;
+
 /// `model clear`: for each elevator setting the Monte Carlo and the proof
 /// ([`crate::clearance::run::clear_each`]), printed as text or JSON, and with `--out` the
 /// folder of summaries, samples and figures.
@@ -290,9 +302,12 @@ pub fn runs_of(
         None => vec![elevator_of(ac, a.delta_e_deg)?],
     };
     let (samples, tolerance) = (a.samples, a.tolerance);
-    if !(tolerance.is_finite() && tolerance > 0.0) {
+    if !(tolerance.is_finite() && tolerance >= MIN_TOLERANCE) {
         return Err(Failure::Input(format!(
-            "--tolerance = {tolerance}: expected a finite tolerance > 0 in rad/s"
+            "--tolerance = {tolerance:e}: expected a finite tolerance of at least \
+             {MIN_TOLERANCE:e} rad/s, the smallest gap the proof can close (its bounds are f64 \
+             interval enclosures of roll rates of order 1 rad/s, which resolve them to about \
+             1e-13 rad/s, a few hundred f64 steps)"
         )));
     }
     // Each sample's draws and result are kept (samples.csv): about 300 bytes apiece.
@@ -316,9 +331,16 @@ pub fn runs_of(
     .map_err(|e| named(ac, e))
 }
 
-/// `model convert`: the dimensional principal-axis TOML of a nondimensional body-axis file.
+/// `model convert`: the dimensional principal-axis TOML of a nondimensional body-axis file or
+/// of a `jsbsim:` source (the file its import writes).
 pub fn convert_command(a: &ConvertArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
-    let text = aircraft::convert_file(&a.file).map_err(|e| e.to_string())?;
+    let text = if a.file.starts_with("jsbsim:") {
+        let imported = crate::jsbsim::cli::source_text(&a.file)?;
+        aircraft::convert_text(&imported, &a.file)
+    } else {
+        aircraft::convert_file(Path::new(&a.file))
+    }
+    .map_err(|e| e.to_string())?;
     write!(out, "{text}").map_err(stdout_error)?;
     Ok(ExitCode::SUCCESS)
 }

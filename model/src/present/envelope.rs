@@ -138,7 +138,16 @@ pub fn text(env: &Envelope) -> String {
     );
     s += "altitude_m   mach   V_m_s  alpha_deg  de_trim_deg  delta_e_deg  p0_rad_s  delta_a_deg  margin_deg  first_departure\n";
     for p in &env.points {
-        let c = p.critical.as_ref();
+        // A Hopf departure without a jump shows the Hopf point's roll rate, aileron and margin.
+        let hopf_only =
+            p.critical.is_none() && p.first_departure.as_ref().is_some_and(|d| d.kind == "hopf");
+        let (p0, delta_a, margin) = match (&p.critical, &p.first_departure) {
+            (Some(c), _) => (Some(c.p0), Some(c.delta_a_deg), p.margin_deg),
+            (None, Some(d)) if hopf_only => {
+                (Some(d.p0), Some(d.delta_a_deg), p.departure_margin_deg)
+            }
+            _ => (None, None, None),
+        };
         s += &format!(
             "{:>10}  {:>5}  {:>6}  {:>9}  {:>11}  {:>11}  {:>8}  {:>11}  {:>10}  {}\n",
             fixed(p.altitude_m, 0),
@@ -147,12 +156,14 @@ pub fn text(env: &Envelope) -> String {
             cell(p.alpha_deg, 3),
             cell(p.elevator_trim_deg, 3),
             cell(p.delta_e_deg, 3),
-            cell(c.map(|c| c.p0), 4),
-            cell(c.map(|c| c.delta_a_deg), 3),
-            cell(p.margin_deg, 3),
+            cell(p0, 4),
+            cell(delta_a, 3),
+            cell(margin, 3),
             match (&p.reason, &p.error) {
                 (Some(_), _) => "untrimmable (see --json)".to_string(),
                 (None, Some(_)) => "not analysed (see --json)".to_string(),
+                _ if hopf_only =>
+                    "hopf (no jump: p0, delta_a, margin of the Hopf point)".to_string(),
                 _ => departure_kind(p).to_string(),
             }
         );
@@ -180,5 +191,42 @@ pub fn text(env: &Envelope) -> String {
              airframe that cannot hold the trim unaided\n"
         );
     }
+    s += &warnings_text(env);
     s + &super::envelope_clearance::text(env)
+}
+
+/// The aircraft's warnings over the grid, each kind once: an inertia no rigid body has (with
+/// the first point's sentence) and tables read beyond their breakpoints, with how many points
+/// have each.
+fn warnings_text(env: &Envelope) -> String {
+    let clamped = |w: &String| w.starts_with(crate::jsbsim::clamp::WARNING_START);
+    let mut s = String::new();
+    let inertia: Vec<(&Point, &String)> = env
+        .points
+        .iter()
+        .filter_map(|p| p.warnings.iter().find(|w| !clamped(w)).map(|w| (p, w)))
+        .collect();
+    if let Some((p, w)) = inertia.first() {
+        s += &format!(
+            "Warning: at {} of {} points the aircraft is analysed with a warning; at altitude {} m, \
+             Mach {}: {w}\n",
+            inertia.len(),
+            env.points.len(),
+            fixed(p.altitude_m, 0),
+            fixed(p.mach, 3)
+        );
+    }
+    let tables = env
+        .points
+        .iter()
+        .filter(|p| p.warnings.iter().any(clamped))
+        .count();
+    if tables > 0 {
+        s += &format!(
+            "Warning: at {tables} of {} points the flight state reads tables beyond their \
+             breakpoints (each point's warnings are in --json)\n",
+            env.points.len()
+        );
+    }
+    s
 }

@@ -13,7 +13,8 @@ use super::progress::{progress_bar, say_how_long, set};
 use super::report::{report, ReportError, ReportSettings};
 use crate::aircraft::{self, shown};
 use crate::analysis::analyze;
-use crate::analysis::fast::analyze_routed_with;
+use crate::analysis::fast::{analyze_routed_with, Route};
+use crate::analysis::Analysis;
 use crate::continuation::{continue_equilibria, ContinuationParam, Settings};
 use crate::simulation::{simulate, Model, Rudder, SimError, SimSettings};
 use std::io::Write;
@@ -27,19 +28,37 @@ macro_rules! say {
     };
 }
 
+/// The JSON of `model analyze`: the analysis and, with `--certified`, the route that answered
+/// and, when the certified route fell back, why. The exact path's JSON (plain `--json`, or
+/// `--exact`) is the analysis alone.
+#[derive(serde::Serialize)]
+struct Routed<'a> {
+    #[serde(flatten)]
+    analysis: &'a Analysis,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    route: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    fallback: Option<&'static str>,
+}
+
 /// `model analyze`: the table of the certified route (the exact path with `--exact`), or JSON
 /// of the exact path (the certified route's with `--certified`).
 pub fn analyze_command(a: &AnalyzeArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
     let ac = load_aircraft(&a.aircraft)?;
     let delta_e = elevator_of(&ac, a.delta_e_deg)?;
-    let result = if a.exact || (a.json && !a.certified) {
-        analyze(&ac, delta_e)
+    let (result, route) = if a.exact || (a.json && !a.certified) {
+        analyze(&ac, delta_e).map(|r| (r, None))
     } else {
-        analyze_routed_with(&ac, delta_e, true).map(|(a, _)| a)
+        analyze_routed_with(&ac, delta_e, true).map(|(a, route)| (a, Some(route)))
     }
     .map_err(|e| named(&ac, e))?;
     if a.json {
-        let text = serde_json::to_string_pretty(&result).map_err(|e| e.to_string())?;
+        let routed = Routed {
+            analysis: &result,
+            route: route.map(Route::name),
+            fallback: route.and_then(Route::fallback),
+        };
+        let text = serde_json::to_string_pretty(&routed).map_err(|e| e.to_string())?;
         say!(out, "{text}");
     } else {
         write!(out, "{}", super::tables::analysis(&result)).map_err(stdout_error)?;

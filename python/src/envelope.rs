@@ -92,6 +92,7 @@ pub fn envelope_plan<'py>(
             "load_factor": e.load_factor,
             "increment_rad": e.increment,
             "elevator": e.to_string(),
+            "aircraft": model::envelope::map::aircraft_name(&plan.loaded, source),
         }),
     )
 }

@@ -31,6 +31,15 @@ pub struct Envelope {
     pub points: Vec<Point>,
 }
 
+/// The name an envelope of `loaded` (read from `source`) gives its aircraft: the model's own,
+/// else the source.
+pub fn aircraft_name(loaded: &Loaded, source: &str) -> String {
+    match loaded.model.name.trim() {
+        "" => source.to_string(),
+        name => name.to_string(),
+    }
+}
+
 /// The envelope of `loaded` (named `source`) over `grid` at `elevator`; `progress` gets the
 /// fraction done (from any thread).
 pub fn envelope(
@@ -64,10 +73,7 @@ pub fn cleared_envelope(
         .collect();
     Envelope {
         source: source.to_string(),
-        aircraft: match loaded.model.name.trim() {
-            "" => source.to_string(),
-            name => name.to_string(),
-        },
+        aircraft: aircraft_name(loaded, source),
         elevator: elevator.to_string(),
         untrimmed: points.iter().filter(|p| !p.trimmed).count(),
         exact_fallbacks: points.iter().filter(|p| p.route == Some("exact")).count(),

@@ -257,7 +257,7 @@ def import_jsbsim_list(
     for flag, value in (("--altitude-m", altitude_m), ("--mach", mach), ("--speed", speed),
                         ("--load-factor", load_factor), ("--alpha-deg", alpha_deg)):
         if value is not None:
-            args += [flag, _number(value)]
+            args += [flag, str(value) if isinstance(value, int) else _number(value)]
     for k, v in (settings or {}).items():
         args += ["--set", f"{k}={_number(v)}"]
     if jsbsim_root is not None:

@@ -3,7 +3,6 @@
 //! spreads them over workers. A worker reads each model once and keeps it for its later points.
 
 use crate::run::{detached, raised, to_python};
-use model::envelope::map::aircraft_name;
 use model::envelope::source::Source;
 use model::envelope::uncertainty::Uncertainty;
 use model::envelope::{Elevator, Point};
@@ -93,7 +92,7 @@ pub fn envelope_plan<'py>(
             "load_factor": e.load_factor,
             "increment_rad": e.increment,
             "elevator": e.to_string(),
-            "aircraft": aircraft_name(&plan.loaded, source),
+            "aircraft": model::envelope::map::aircraft_name(&plan.loaded, source),
         }),
     )
 }

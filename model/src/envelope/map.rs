@@ -31,6 +31,15 @@ pub struct Envelope {
     pub points: Vec<Point>,
 }
 
+/// The name an envelope of `loaded` (read from `source`) gives its aircraft: the model's own,
+/// else the source.
+pub fn aircraft_name(loaded: &Loaded, source: &str) -> String {
+    match loaded.model.name.trim() {
+        "" => source.to_string(),
+        name => name.to_string(),
+    }
+}
+
 /// The envelope of `loaded` (named `source`) over `grid` at `elevator`; `progress` gets the
 /// fraction done (from any thread).
 pub fn envelope(
@@ -41,14 +50,6 @@ pub fn envelope(
     progress: &(dyn Fn(f64) + Sync),
 ) -> Envelope {
     cleared_envelope(loaded, source, grid, (elevator, None), progress)
-}
-
-/// The aircraft's name on the maps and in the JSON: the model's own name, else the source.
-pub fn aircraft_name(loaded: &Loaded, source: &str) -> String {
-    match loaded.model.name.trim() {
-        "" => source.to_string(),
-        name => name.to_string(),
-    }
 }
 
 /// [`envelope`], and with `uncertainty` every point also the certified clearance of its box.

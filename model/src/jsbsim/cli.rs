@@ -258,6 +258,21 @@ fn imports(name: &str, root: &std::path::Path) -> Result<(), String> {
 
 /// Prints the catalogue.
 fn listing(root: Option<PathBuf>, out: &mut dyn Write) -> Result<(), String> {
+    out.write_all(listing_text(root)?.as_bytes())
+        .map_err(|e| e.to_string())
+}
+
+/// What `import jsbsim --list` prints for `args` (after `import`, `jsbsim` first), or its
+/// message for bad arguments: shared by the command line and Python.
+pub fn listing_of(args: &[String]) -> Result<String, String> {
+    match parse(args)? {
+        Command::List(root) => listing_text(root),
+        Command::Import(..) => Err(format!("expected --list\n{USAGE}")),
+    }
+}
+
+/// The catalogue listing: every model of the root, and whether it reads.
+fn listing_text(root: Option<PathBuf>) -> Result<String, String> {
     let root = catalogue::root(root.as_deref()).ok_or_else(|| catalogue::HOW_TO_GET.to_string())?;
     catalogue::checked_root(&root)?;
     let entries: Vec<(String, Result<String, String>)> = catalogue::listing(&root)
@@ -297,5 +312,5 @@ fn listing(root: Option<PathBuf>, out: &mut dyn Write) -> Result<(), String> {
         };
         text.push_str(&line);
     }
-    out.write_all(text.as_bytes()).map_err(|e| e.to_string())
+    Ok(text)
 }

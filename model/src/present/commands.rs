@@ -19,7 +19,7 @@ use crate::clearance::run::Run;
 use crate::continuation::{continue_equilibria, ContinuationParam, Diagram, Settings};
 use crate::simulation::{simulate, Model, Rudder, SimError, SimSettings, TimeHistory};
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// Prints to `out` (stdout), turning a write error into a [`Failure`].
@@ -33,13 +33,24 @@ macro_rules! say {
 /// and, when the certified route fell back, why. The exact path's JSON (plain `--json`, or
 /// `--exact`) is the analysis alone.
 #[derive(serde::Serialize)]
-struct Routed<'a> {
+pub struct Routed<'a> {
     #[serde(flatten)]
     analysis: &'a Analysis,
     #[serde(skip_serializing_if = "Option::is_none")]
     route: Option<&'static str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     fallback: Option<&'static str>,
+}
+
+impl<'a> Routed<'a> {
+    /// `analysis` with the route that answered it (none on the exact path by request).
+    pub fn new(analysis: &'a Analysis, route: Option<Route>) -> Routed<'a> {
+        Routed {
+            analysis,
+            route: route.map(Route::name),
+            fallback: route.and_then(Route::fallback),
+        }
+    }
 }
 
 /// `model analyze`: the table of the certified route (the exact path with `--exact`), or JSON
@@ -54,11 +65,7 @@ pub fn analyze_command(a: &AnalyzeArgs, out: &mut dyn Write) -> Result<ExitCode,
     };
     let (result, route) = routed_analysis_of(&ac, a)?;
     if a.json {
-        let routed = Routed {
-            analysis: &result,
-            route: route.map(Route::name),
-            fallback: route.and_then(Route::fallback),
-        };
+        let routed = Routed::new(&result, route);
         let text = serde_json::to_string_pretty(&routed).map_err(|e| e.to_string())?;
         say!(out, "{text}");
     } else {
@@ -148,44 +155,80 @@ pub fn report_command(
 ) -> Result<ExitCode, Failure> {
     let ac = load_aircraft(&a.aircraft)?;
     let command = if summary { "report" } else { "plot" };
+    let bar = progress_bar(command);
+    let written = figures_of(&ac, a, summary, &mut |f| set(&bar, f));
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let written = written?;
+    for k in &written.skipped {
+        say!(out, "skipped: {}", shown(k));
+    }
+    if written.failed.is_empty() {
+        return Ok(ExitCode::SUCCESS);
+    }
+    // The folder is not put in place: the previous run's stays as it was.
+    out.flush().map_err(stdout_error)?;
+    let mut err = std::io::stderr();
+    for f in &written.failed {
+        let _ = writeln!(err, "error: {f}");
+    }
+    Ok(ExitCode::from(FAILED))
+}
+
+/// What `model report` or `model plot` wrote.
+pub struct Figures {
+    /// The folder (in place only when `failed` is empty).
+    pub folder: PathBuf,
+    /// The sections skipped, each with its reason.
+    pub skipped: Vec<String>,
+    /// The files that could not be written: `cannot write PATH: reason`.
+    pub failed: Vec<String>,
+}
+
+/// What `model report` (`summary`) or `model plot` writes for `ac` with the options of `a` (the
+/// aircraft loaded by the caller, `a.aircraft` naming the default folder): the folder is put in
+/// place when every file was written; `progress` gets the fraction done.
+pub fn figures_of(
+    ac: &Aircraft,
+    a: &FiguresArgs,
+    summary: bool,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Figures, Failure> {
+    let command = if summary { "report" } else { "plot" };
     let settings = ReportSettings {
         summary,
-        ..ReportSettings::new(elevator_of(&ac, a.delta_e_deg)?)
+        ..ReportSettings::new(elevator_of(ac, a.delta_e_deg)?)
     };
     let target = a
         .out
         .clone()
         .unwrap_or_else(|| default_folder(command, &a.aircraft));
     let staged = begin_folder(&target, command)?;
-    let bar = progress_bar(command);
-    let result = report(&ac, staged.path(), &settings, &mut |f| set(&bar, f));
-    if let Some(b) = bar {
-        b.finish_and_clear();
-    }
-    let result = result.map_err(|e| match e {
+    let result = report(ac, staged.path(), &settings, progress).map_err(|e| match e {
         ReportError::Io { .. } => Failure::Output(e.to_string()),
-        e => named(&ac, e),
+        e => named(ac, e),
     })?;
-    for k in &result.skipped {
-        say!(out, "skipped: {}", shown(k));
-    }
-    if result.failed_files.is_empty() {
+    let failed: Vec<String> = result
+        .failed_files
+        .iter()
+        .map(|f| {
+            let rel = f.path.strip_prefix(staged.path()).unwrap_or(&f.path);
+            format!(
+                "cannot write {}: {}",
+                staged.target().join(rel).display(),
+                f.reason
+            )
+        })
+        .collect();
+    if failed.is_empty() {
         commit_folder(staged)?;
-        return Ok(ExitCode::SUCCESS);
     }
-    // The folder is not put in place: the previous run's stays as it was.
-    out.flush().map_err(stdout_error)?;
-    let mut err = std::io::stderr();
-    for f in &result.failed_files {
-        let rel = f.path.strip_prefix(staged.path()).unwrap_or(&f.path);
-        let _ = writeln!(
-            err,
-            "error: cannot write {}: {}",
-            staged.target().join(rel).display(),
-            f.reason
-        );
-    }
-    Ok(ExitCode::from(FAILED))
+    Ok(Figures {
+        folder: target,
+        skipped: result.skipped,
+        failed,
+    })
 }
 
 /// `model simulate`: one aileron step's steady state in a line, and the time history as CSV

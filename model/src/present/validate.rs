@@ -16,6 +16,7 @@ use crate::simulation::{simulate, Model, SimSettings};
 use crate::six_dof::jump::{find_jump, Jump};
 use crate::six_dof::Settings;
 use std::io::Write;
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// The judging window at the end of each run, s.
@@ -72,8 +73,38 @@ fn verdict(name: &str, jump: Option<Jump>, critical: Option<f64>, range: (f64, f
     }
 }
 
+/// What `validate` computes and writes: the aileron steps, each model's settled |p| at each,
+/// the criterion's critical aileron and the aileron limit, the folder written and the lines the
+/// command prints.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct Validation {
+    /// The aileron steps, deg of |delta_a|.
+    pub delta_a_deg: Vec<f64>,
+    /// The 7th-order model's settled |p| at each step, rad/s.
+    pub seventh_order_p: Vec<f64>,
+    /// The 6-DOF's settled |p| at each step, rad/s.
+    pub six_dof_p: Vec<f64>,
+    /// The criterion's critical aileron, deg of |delta_a| (none without a jump).
+    pub critical_deg: Option<f64>,
+    /// The model's aileron limit, deg (when it gives one).
+    pub limit_deg: Option<f64>,
+    /// The folder holding the plateau figure.
+    pub folder: PathBuf,
+    /// The lines the command prints: title, a verdict per model, the 6-DOF's drift.
+    pub lines: Vec<String>,
+}
+
 /// Runs the command.
 pub fn command(a: &ValidateArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
+    for l in validation_of(a)?.lines {
+        writeln!(out, "{l}").map_err(stdout_error)?;
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// What `validate` computes and writes for the options of `a`: everything but the printing,
+/// shared by the command line and Python.
+pub fn validation_of(a: &ValidateArgs) -> Result<Validation, Failure> {
     if !(a.t_end.is_finite() && a.t_end >= 2.0 * WINDOW_S && a.t_end <= 600.0) {
         return Err(Failure::Input(format!(
             "--t-end = {}: expected the length of each run, {} to 600 s",
@@ -142,10 +173,15 @@ pub fn command(a: &ValidateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
         ),
     ];
     commit_folder(staged)?;
-    for l in lines {
-        writeln!(out, "{l}").map_err(stdout_error)?;
-    }
-    Ok(ExitCode::SUCCESS)
+    Ok(Validation {
+        delta_a_deg: degs,
+        seventh_order_p: seventh,
+        six_dof_p: six,
+        critical_deg: critical,
+        limit_deg: limit,
+        folder: target,
+        lines: lines.to_vec(),
+    })
 }
 
 /// The plateau figure: both models' settled |p| against |delta_a|, the critical aileron and

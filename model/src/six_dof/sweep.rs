@@ -8,6 +8,7 @@ use super::history::History;
 use super::jump::{find_jump, Jump};
 use super::run::{simulate, Settings};
 use crate::jsbsim::coefficients::Setup;
+use crate::jsbsim::surfaces::Control;
 use crate::jsbsim::trim::Trim;
 use rayon::prelude::*;
 
@@ -38,8 +39,20 @@ pub fn settled(h: &History, window: f64) -> f64 {
 }
 
 /// The sweep of `aileron_deg` (ascending, deg of |delta_a|) from `trim` at `setup`'s condition,
-/// each run `t_end` s long at 120 Hz with the thrust off; the runs in parallel.
+/// each run `t_end` s long at 120 Hz with the thrust off; the runs in parallel. Refused for a
+/// model that reads its aileron only as normalised travel: its steps have no angle.
 pub fn sweep(setup: &Setup, trim: &Trim, aileron_deg: &[f64], t_end: f64) -> Result<Sweep, String> {
+    if setup
+        .surfaces
+        .iter()
+        .any(|s| s.control == Control::Aileron && s.per_unit_travel)
+    {
+        return Err(format!(
+            "{}: the aerodynamics read the aileron only as normalised travel, which has no \
+             angle to step",
+            setup.model.file
+        ));
+    }
     let runs: Vec<(f64, [f64; 3])> = aileron_deg
         .par_iter()
         .map(|d| {

@@ -7,7 +7,7 @@
 //! moments of the model at a state, the import's evaluation with the property names resolved
 //! once), [`motion`] (the equations of motion), [`run`] (the start from the import's n-g trim,
 //! the surfaces held, the integration), [`history`] (what a run records, as CSV), [`jump`] (the rule that calls
-//! a jump in a sweep of aileron steps) and [`sweep`] (a sweep's runs and verdict).
+//! a jump in a sweep of aileron steps) and [`mod@sweep`] (a sweep's runs and verdict).
 
 pub mod airframe;
 pub mod history;

@@ -1,5 +1,5 @@
 //! `model envelope --validate`: the native 6-DOF's verdict at grid points, by the rule of
-//! `model validate` ([`crate::six_dof::sweep`], [`crate::six_dof::jump`]). Every point whose
+//! `model validate` ([`mod@crate::six_dof::sweep`], [`crate::six_dof::jump`]). Every point whose
 //! criterion predicts a jump within the aileron limit is swept around its critical aileron; a
 //! seeded sample of the other analysed points is swept over the top of the stick's travel,
 //! where a jump the criterion missed would be met first. The sweeps are short, so that a map of

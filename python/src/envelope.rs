@@ -31,6 +31,8 @@ fn args(
         json: true,
         out: None,
         uncertainty,
+        validate: false,
+        validate_sample: 0.1,
     }
 }
 

@@ -27,6 +27,10 @@ pub struct Envelope {
     /// `--uncertainty` as given, when every point is a clearance of its box.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub uncertainty: Option<String>,
+    /// `--validate-sample` as given, when the points were validated by the 6-DOF
+    /// ([`super::validation`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub validate_sample: Option<f64>,
     /// Every grid point.
     pub points: Vec<Point>,
 }
@@ -78,6 +82,7 @@ pub fn cleared_envelope(
         untrimmed: points.iter().filter(|p| !p.trimmed).count(),
         exact_fallbacks: points.iter().filter(|p| p.route == Some("exact")).count(),
         uncertainty: uncertainty.map(|u| u.spec.clone()),
+        validate_sample: None,
         points,
     }
 }

@@ -6,6 +6,7 @@
 use super::clearance::{clear_point, PointClearance};
 use super::elevator::Elevator;
 use super::uncertainty::Uncertainty;
+use super::validation::Validation;
 use crate::aircraft;
 use crate::analysis::fast::analyze_routed_with;
 use crate::analysis::{Analysis, FirstDeparture};
@@ -81,6 +82,12 @@ pub struct Point {
     /// nominal analysis above stands.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub clearance_error: Option<String>,
+    /// The native 6-DOF's verdict with `--validate` (absent at points not validated).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub validation: Option<Validation>,
+    /// Why a point chosen for `--validate` has no verdict (the 6-DOF refused it).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub validation_error: Option<String>,
 }
 
 impl Point {
@@ -107,6 +114,8 @@ impl Point {
             route: None,
             clearance: None,
             clearance_error: None,
+            validation: None,
+            validation_error: None,
         }
     }
 

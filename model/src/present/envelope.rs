@@ -9,6 +9,7 @@ use super::outputs::{begin_folder, commit_folder};
 use super::progress::{progress_bar, set};
 use crate::envelope::source::Source;
 use crate::envelope::uncertainty::Uncertainty;
+use crate::envelope::validation::validate_envelope;
 use crate::envelope::{cleared_envelope, Elevator, Envelope, Grid, Point, Range};
 use crate::jsbsim::import::Loaded;
 use std::io::Write;
@@ -48,6 +49,29 @@ pub struct Plan {
     pub elevator: Elevator,
     /// The box every point is cleared over, with `--uncertainty`.
     pub uncertainty: Option<Uncertainty>,
+    /// With `--validate`, the fraction of the points without a predicted jump validated too.
+    pub validate_sample: Option<f64>,
+}
+
+/// The sample of `--validate`, checked: `None` without it.
+fn validate_sample(a: &EnvelopeArgs, elevator: Elevator) -> Result<Option<f64>, Failure> {
+    if !a.validate {
+        return Ok(None);
+    }
+    if !(a.validate_sample.is_finite() && (0.0..=1.0).contains(&a.validate_sample)) {
+        return Err(Failure::Input(format!(
+            "--validate-sample = {}: expected a fraction of the points, 0 to 1",
+            a.validate_sample
+        )));
+    }
+    if elevator.increment != 0.0 {
+        return Err(Failure::Input(format!(
+            "--validate with --delta-e-deg {}: the 6-DOF holds each point's trim elevator \
+             (expected no --delta-e-deg, or 0)",
+            elevator.increment.to_degrees()
+        )));
+    }
+    Ok(Some(a.validate_sample))
 }
 
 impl Plan {
@@ -63,6 +87,7 @@ impl Plan {
             Some(spec) => Some(Uncertainty::parse(spec).map_err(Failure::Input)?),
             None => None,
         };
+        let validate_sample = validate_sample(a, elevator)?;
         let loaded = source.load()?;
         if let Some(u) = &uncertainty {
             u.check(&loaded, &a.source, &grid, elevator.load_factor)
@@ -73,14 +98,22 @@ impl Plan {
             grid,
             elevator,
             uncertainty,
+            validate_sample,
         })
     }
 
-    /// The envelope of the plan, named `source`; `progress` gets the fraction done (from any
-    /// thread).
+    /// The envelope of the plan, named `source`, validated with `--validate`; `progress` gets
+    /// the fraction done (from any thread): with `--validate`, the analysis counts for the
+    /// first fifth and the 6-DOF's sweeps for the rest.
     pub fn run(&self, source: &str, progress: &(dyn Fn(f64) + Sync)) -> Envelope {
         let chosen = (self.elevator, self.uncertainty.as_ref());
-        cleared_envelope(&self.loaded, source, &self.grid, chosen, progress)
+        let Some(sample) = self.validate_sample else {
+            return cleared_envelope(&self.loaded, source, &self.grid, chosen, progress);
+        };
+        let first = |f: f64| progress(0.2 * f);
+        let mut env = cleared_envelope(&self.loaded, source, &self.grid, chosen, &first);
+        validate_envelope(&mut env, &self.loaded, sample, &|f| progress(0.2 + 0.8 * f));
+        env
     }
 }
 
@@ -192,7 +225,7 @@ pub fn text(env: &Envelope) -> String {
         );
     }
     s += &warnings_text(env);
-    s + &super::envelope_clearance::text(env)
+    s + &super::envelope_clearance::text(env) + &super::envelope_validation::text(env)
 }
 
 /// The aircraft's warnings over the grid, each kind once: an inertia no rigid body has (with

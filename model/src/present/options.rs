@@ -241,6 +241,20 @@ pub struct EnvelopeArgs {
     /// half-widths), or a TOML file whose `[uncertainty]` table is read as `model clear` reads it.
     #[arg(long, value_name = "SPEC", allow_hyphen_values = true)]
     pub uncertainty: Option<String>,
+    /// Check the criterion with the native 6-DOF: every point that predicts a jump within the
+    /// aileron limit, and a seeded sample of the others, gets a short aileron sweep and the
+    /// verdict of `model validate` (JSON `validation`, CSV columns, the map `validation`).
+    #[arg(long)]
+    pub validate: bool,
+    /// With --validate: the fraction of the other analysed points validated too (seeded), 0 to 1.
+    #[arg(
+        long,
+        value_name = "F",
+        default_value_t = 0.1,
+        allow_hyphen_values = true,
+        requires = "validate"
+    )]
+    pub validate_sample: f64,
 }
 
 /// Options of `convert`.

@@ -12,6 +12,7 @@ use crate::jsbsim::import::{Alpha, Loaded};
 use crate::jsbsim::surfaces::Control;
 use crate::jsbsim::trim::{trim, Trim};
 use crate::plot::{render, Axis, Dash, Figure, LegendPlace, Line, Panel, PlotStyle, Rgb};
+use crate::six_dof::sweep::settled;
 use crate::six_dof::{simulate, History, Settings, Thrust};
 use std::io::Write;
 use std::process::ExitCode;
@@ -188,14 +189,6 @@ pub fn summary(h: &History, t: &Trim, title: &str) -> String {
         fixed(h.mach[0], 3),
         fixed(h.mach[end], 3)
     )
-}
-
-/// The mean roll rate over the last `window` s, rad/s.
-pub fn settled(h: &History, window: f64) -> f64 {
-    let t_end = h.t.last().copied().unwrap_or(0.0);
-    let from = h.t.partition_point(|t| *t < t_end - window - 1e-9);
-    let p = &h.p[from..];
-    p.iter().sum::<f64>() / p.len().max(1) as f64
 }
 
 /// A panel of series against time.

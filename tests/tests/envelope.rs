@@ -6,6 +6,8 @@
 //! has the shape the documentation gives. Skipped with a message when the JSBSim models are not
 //! installed.
 
+mod support;
+
 use model::aircraft;
 use model::analysis::fast::analyze_routed_with;
 use model::envelope::source::Source;
@@ -623,22 +625,17 @@ fn the_legends_tell_no_jump_from_not_analysed_and_unknown_travel() {
 /// JSBSim's verdict over the F-104's aileron steps `from..=to` (1 deg apart, 10 s each) at a
 /// 0-g trim, by the oracle's own rule: the step past its jump, if any.
 fn jsbsim_jump_to(altitude_m: f64, mach: f64, from: f64, to: f64) -> Option<f64> {
-    let script = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("oracle/jsbsim_six_dof.py");
-    let out = std::process::Command::new("python3")
-        .arg(&script)
-        .args(["--model", "f104", "--flat-earth", "--load-factor", "0"])
-        .args(["--altitude-m", &altitude_m.to_string()])
-        .args(["--mach", &mach.to_string()])
-        .args(["--sweep", &format!("{from}:{to}:1")])
-        .args(["--time", "10"])
-        .output()
-        .expect("python3 runs");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let v = support::oracle::six_dof(
+        "f104",
+        (altitude_m, mach, 0.0),
+        &[
+            "--flat-earth".into(),
+            "--sweep".into(),
+            format!("{from}:{to}:1"),
+            "--time".into(),
+            "10".into(),
+        ],
     );
-    let v: Value = serde_json::from_slice(&out.stdout).expect("sweep JSON");
     (v["jump"]["jump"] == Value::Bool(true)).then(|| v["jump"]["between_deg"][1].as_f64().unwrap())
 }
 

@@ -9,6 +9,8 @@
 //! or on neither, and where both jump, the step past the jump the same within one step of the
 //! sweep. Skipped with a message when the `jsbsim` package is not installed.
 
+mod support;
+
 use model::jsbsim::catalogue;
 use model::jsbsim::condition::{Condition, Speed};
 use model::jsbsim::import::Loaded;
@@ -16,8 +18,6 @@ use model::jsbsim::trim::trim;
 use model::random::Rng;
 use model::six_dof::sweep;
 use serde_json::Value;
-use std::path::Path;
-use std::process::Command;
 
 /// The aileron steps of both sweeps, deg (JSBSim's left aileron, a roll to the right): every
 /// degree over the F-104's travel (20 deg) and a little past it, where its unloaded rolls jump.
@@ -67,24 +67,18 @@ fn steps() -> Vec<f64> {
 /// JSBSim's sweep of `c`: its verdict (the step past the jump, if any) and its settled roll
 /// rates.
 fn jsbsim_sweep(c: &Case) -> (Option<f64>, Vec<f64>) {
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("oracle/jsbsim_six_dof.py");
     let (a, b, s) = STEPS;
-    let out = Command::new("python3")
-        .arg(&script)
-        .args(["--model", c.model, "--flat-earth"])
-        .args(["--altitude-m", &c.altitude_m.to_string()])
-        .args(["--mach", &c.mach.to_string()])
-        .args(["--load-factor", &c.load_factor.to_string()])
-        .args(["--sweep", &format!("{a}:{b}:{s}")])
-        .args(["--time", &RUN_S.to_string()])
-        .output()
-        .expect("python3 runs");
-    assert!(
-        out.status.success(),
-        "JSBSim sweep failed for {c:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
+    let v = support::oracle::six_dof(
+        c.model,
+        (c.altitude_m, c.mach, c.load_factor),
+        &[
+            "--flat-earth".into(),
+            "--sweep".into(),
+            format!("{a}:{b}:{s}"),
+            "--time".into(),
+            RUN_S.to_string(),
+        ],
     );
-    let v: Value = serde_json::from_slice(&out.stdout).expect("sweep JSON");
     let jump = (v["jump"]["jump"] == Value::Bool(true))
         .then(|| v["jump"]["between_deg"][1].as_f64().expect("between_deg"));
     let p = v["sweep"]

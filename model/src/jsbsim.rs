@@ -4,7 +4,7 @@
 //!
 //! Data flow: [`xml`] and [`units`] read values; [`table`], [`function`] and [`evaluate`] are
 //! JSBSim's function language, [`finite`] refuses its non-finite values and [`clamp`] names its
-//! lookups beyond a table's range; [`metrics`], [`mass`] and [`aerodynamics`] the model's sections,
+//! lookups beyond a table's range, [`digits`] writes their numbers; [`metrics`], [`mass`] and [`aerodynamics`] the model's sections,
 //! put together in [`model`]; [`systems`] and [`fcs`] read the flight control system, and
 //! [`surfaces`] the controls' travel through it. JSBSim itself (its Python package) is the
 //! independent check of the
@@ -18,6 +18,7 @@ pub mod cli;
 pub mod coefficients;
 pub mod condition;
 pub mod derivatives;
+pub mod digits;
 pub mod error;
 pub mod evaluate;
 pub mod fcs;

@@ -55,8 +55,8 @@ enum Command {
     Validate(ValidateArgs),
     /// Certified clearance of the critical jump over the file's `[uncertainty]` box.
     Clear(ClearArgs),
-    /// The analysis at every altitude and Mach of a grid, each point at its n-g trim (1 g unless
-    /// --load-factor):
+    /// The analysis at every altitude and speed (Mach or true airspeed) of a grid, each point at
+    /// its n-g trim (1 g unless --load-factor):
     /// critical jump, first departure and margin to the aileron limit, as a table, JSON or maps.
     Envelope(EnvelopeArgs),
     /// Print the dimensional principal-axis TOML equivalent to a nondimensional body-axis file.

@@ -30,7 +30,8 @@ fn args(source: &str, altitude_m: &str, mach: &str) -> EnvelopeArgs {
     EnvelopeArgs {
         source: source.to_string(),
         altitude_m: altitude_m.to_string(),
-        mach: mach.to_string(),
+        mach: Some(mach.to_string()),
+        speed: None,
         load_factor: None,
         delta_e_deg: None,
         json: true,

@@ -34,7 +34,8 @@ fn args(altitude_m: &str, mach: &str, uncertainty: &str) -> EnvelopeArgs {
     EnvelopeArgs {
         source,
         altitude_m,
-        mach,
+        mach: Some(mach),
+        speed: None,
         uncertainty: Some(uncertainty),
         json: true,
         load_factor: None,
@@ -100,7 +101,13 @@ fn no_exact_sample_of_a_box_beats_its_certified_lower_bound() {
     for _ in 0..n_points {
         let h = (rng.unit() * 4.0).floor() * 3000.0;
         let m = 0.45 + (rng.unit() * 4.0).floor() * 0.1;
-        let p = Point::cleared_at(&loaded, "jsbsim:f104", (h, m), unloaded, Some(&u));
+        let p = Point::cleared_at(
+            &loaded,
+            "jsbsim:f104",
+            (h, Speed::Mach(m)),
+            unloaded,
+            Some(&u),
+        );
         let request = Request {
             model: "f104".to_string(),
             root: None,

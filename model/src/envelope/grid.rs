@@ -1,8 +1,12 @@
 //! The grid of an envelope: a range `START:STOP:STEP` (or one value) of altitudes and one of
-//! Mach numbers, checked before any work starts (reversed, zero step, too many points, altitudes
-//! outside the standard atmosphere of the import).
+//! speeds, Mach numbers or true airspeeds (the two ways `import jsbsim` takes a speed), checked
+//! before any work starts (reversed, zero step, too many points, altitudes outside the standard
+//! atmosphere of the import, speeds not positive).
 
 use crate::jsbsim::atmosphere::standard;
+use crate::jsbsim::condition::Speed;
+use crate::jsbsim::digits::every_digit;
+use serde::Serialize;
 
 /// The most grid points one envelope computes.
 pub const MAX_POINTS: usize = 1_000_000;
@@ -48,26 +52,90 @@ impl Range {
     }
 }
 
-/// Altitudes (m) by Mach numbers: the points of an envelope.
+/// What the speed axis of a grid holds: Mach numbers (`--mach`) or true airspeeds in m/s
+/// (`--speed`). Serialised as the name of the points' field the grid steps over.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum SpeedAxis {
+    /// Mach numbers: the points' `mach`.
+    #[serde(rename = "mach")]
+    Mach,
+    /// True airspeeds, m/s: the points' `speed_m_s`.
+    #[serde(rename = "speed_m_s")]
+    TrueAirspeed,
+}
+
+impl SpeedAxis {
+    /// The command line's option for the axis.
+    pub fn flag(self) -> &'static str {
+        match self {
+            SpeedAxis::Mach => "--mach",
+            SpeedAxis::TrueAirspeed => "--speed",
+        }
+    }
+
+    /// The axis in words, with its unit: what the maps' axes say.
+    pub fn label(self) -> &'static str {
+        match self {
+            SpeedAxis::Mach => "Mach",
+            SpeedAxis::TrueAirspeed => "true airspeed, m/s",
+        }
+    }
+
+    /// The values in the plural, for messages.
+    fn plural(self) -> &'static str {
+        match self {
+            SpeedAxis::Mach => "Mach numbers",
+            SpeedAxis::TrueAirspeed => "true airspeeds",
+        }
+    }
+
+    /// The flight condition's speed of value `v` on this axis.
+    pub fn speed(self, v: f64) -> Speed {
+        match self {
+            SpeedAxis::Mach => Speed::Mach(v),
+            SpeedAxis::TrueAirspeed => Speed::True(v),
+        }
+    }
+
+    /// The value on this axis of a point at Mach `mach` and true airspeed `speed_m_s`.
+    pub fn of(self, mach: f64, speed_m_s: f64) -> f64 {
+        match self {
+            SpeedAxis::Mach => mach,
+            SpeedAxis::TrueAirspeed => speed_m_s,
+        }
+    }
+}
+
+/// Altitudes (m) by speeds (Mach numbers or true airspeeds): the points of an envelope.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Grid {
     /// Geometric altitudes, m.
     pub altitudes_m: Range,
-    /// Mach numbers.
-    pub machs: Range,
+    /// What `speeds` holds.
+    pub axis: SpeedAxis,
+    /// Mach numbers or true airspeeds (m/s), as `axis` says.
+    pub speeds: Range,
 }
 
 impl Grid {
-    /// The grid of the two ranges, or why it cannot be flown: more than [`MAX_POINTS`] points,
-    /// an altitude outside the standard atmosphere, a Mach number not positive.
+    /// The grid of altitudes by Mach numbers: [`Grid::over`] [`SpeedAxis::Mach`].
     pub fn new(altitudes_m: Range, machs: Range) -> Result<Grid, String> {
-        let n = altitudes_m.values.len().saturating_mul(machs.values.len());
+        Grid::over(altitudes_m, SpeedAxis::Mach, machs)
+    }
+
+    /// The grid of the two ranges, `speeds` on `axis`, or why it cannot be flown: more than
+    /// [`MAX_POINTS`] points, an altitude outside the standard atmosphere, a speed not
+    /// positive (at every altitude a positive true airspeed is a positive Mach number and back,
+    /// so the import takes every point's speed then).
+    pub fn over(altitudes_m: Range, axis: SpeedAxis, speeds: Range) -> Result<Grid, String> {
+        let n = altitudes_m.values.len().saturating_mul(speeds.values.len());
         if n > MAX_POINTS {
             return Err(format!(
-                "{} altitudes by {} Mach numbers is {n} points, more than the {MAX_POINTS} an \
-                 envelope computes (take larger steps)",
+                "{} altitudes by {} {} is {n} points, more than the {MAX_POINTS} an envelope \
+                 computes (take larger steps)",
                 altitudes_m.values.len(),
-                machs.values.len()
+                speeds.values.len(),
+                axis.plural()
             ));
         }
         let (lo, hi) = (
@@ -76,25 +144,44 @@ impl Grid {
         );
         if let Some(h) = [lo, hi].into_iter().find(|h| standard(*h).is_none()) {
             return Err(format!(
-                "--altitude-m: {h} m is outside the standard atmosphere of the import (0 to \
-                 86,000 m)"
+                "--altitude-m: {} m is outside the standard atmosphere of the import (0 to \
+                 86,000 m)",
+                every_digit(h)
             ));
         }
-        if machs.values[0] <= 0.0 {
+        if speeds.values[0] <= 0.0 {
+            let what = match axis {
+                SpeedAxis::Mach => "a positive Mach number",
+                SpeedAxis::TrueAirspeed => "a positive true airspeed, m/s",
+            };
             return Err(format!(
-                "--mach: {} is not a positive Mach number",
-                machs.values[0]
+                "{}: {} is not {what}",
+                axis.flag(),
+                every_digit(speeds.values[0])
             ));
         }
-        Ok(Grid { altitudes_m, machs })
+        Ok(Grid {
+            altitudes_m,
+            axis,
+            speeds,
+        })
     }
 
-    /// Every point (altitude m, Mach), altitude by altitude, Mach ascending within each.
-    pub fn points(&self) -> Vec<(f64, f64)> {
+    /// Every point (altitude m, value on the speed axis), altitude by altitude, speed
+    /// ascending within each.
+    pub fn pairs(&self) -> Vec<(f64, f64)> {
         self.altitudes_m
             .values
             .iter()
-            .flat_map(|h| self.machs.values.iter().map(move |m| (*h, *m)))
+            .flat_map(|h| self.speeds.values.iter().map(move |v| (*h, *v)))
+            .collect()
+    }
+
+    /// Every point (altitude m, speed) in the order of [`Grid::pairs`].
+    pub fn points(&self) -> Vec<(f64, Speed)> {
+        self.pairs()
+            .into_iter()
+            .map(|(h, v)| (h, self.axis.speed(v)))
             .collect()
     }
 }
@@ -139,5 +226,18 @@ mod tests {
             .contains("points"));
         assert!(grid("0", "0:1:0.5").unwrap_err().contains("Mach"));
         assert_eq!(grid("0:1000:500", "0.5:0.6:0.1").unwrap().points().len(), 6);
+        let speeds = |v: &str| Grid::over(r("0:1000:1000"), SpeedAxis::TrueAirspeed, r(v));
+        let e = speeds("0:100:50").unwrap_err();
+        assert!(
+            e.starts_with("--speed: 0 is not a positive true airspeed"),
+            "{e}"
+        );
+        let e = speeds("1:600000:1").unwrap_err();
+        assert!(e.contains("true airspeeds"), "{e}");
+        let points = speeds("100:150:50").unwrap().points();
+        assert_eq!(points[1], (0.0, Speed::True(150.0)));
+        assert_eq!(points.len(), 4);
+        let e = grid("1e300", "0.5").unwrap_err();
+        assert!(e.contains("1e300 m"), "{e}");
     }
 }

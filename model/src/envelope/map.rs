@@ -2,7 +2,7 @@
 //! the fraction done reported as the points finish.
 
 use super::elevator::Elevator;
-use super::grid::Grid;
+use super::grid::{Grid, SpeedAxis};
 use super::point::Point;
 use super::uncertainty::Uncertainty;
 use crate::jsbsim::import::Loaded;
@@ -10,7 +10,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// The envelope of one model: its points, altitude by altitude, Mach ascending within each.
+/// The envelope of one model: its points, altitude by altitude, speed ascending within each.
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct Envelope {
     /// The source as given.
@@ -20,6 +20,9 @@ pub struct Envelope {
     pub aircraft: String,
     /// The trim and the elevator increment: `"trim at N g, increment D deg"`.
     pub elevator: String,
+    /// The grid's speed axis: `"mach"` (`--mach`) or `"speed_m_s"` (`--speed`, true
+    /// airspeed in m/s), the points' field that steps over the grid's values.
+    pub speed_axis: SpeedAxis,
     /// Points without a trim (untrimmable or outside the atmosphere).
     pub untrimmed: usize,
     /// Trimmed points the certified route could not answer, so the exact path did.
@@ -68,8 +71,8 @@ pub fn cleared_envelope(
     let done = AtomicUsize::new(0);
     let points: Vec<Point> = all
         .par_iter()
-        .map(|&(h, m)| {
-            let p = Point::cleared_at(loaded, source, (h, m), elevator, uncertainty);
+        .map(|&at| {
+            let p = Point::cleared_at(loaded, source, at, elevator, uncertainty);
             let k = done.fetch_add(1, Ordering::Relaxed) + 1;
             progress(k as f64 / all.len() as f64);
             p
@@ -79,6 +82,7 @@ pub fn cleared_envelope(
         source: source.to_string(),
         aircraft: aircraft_name(loaded, source),
         elevator: elevator.to_string(),
+        speed_axis: grid.axis,
         untrimmed: points.iter().filter(|p| !p.trimmed).count(),
         exact_fallbacks: points.iter().filter(|p| p.route == Some("exact")).count(),
         uncertainty: uncertainty.map(|u| u.spec.clone()),

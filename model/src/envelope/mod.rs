@@ -1,6 +1,6 @@
 //! The flight envelope: the analysis of `model analyze` at every point of a grid of altitude
-//! and Mach, each point linearised about its own n-g trim (alpha and elevator) from a JSBSim
-//! model read once.
+//! and speed (Mach or true airspeed), each point linearised about its own n-g trim (alpha and
+//! elevator) from a JSBSim model read once.
 //!
 //! Data flow: [`grid`] (the ranges, checked before any work) and [`source`] (the model and its
 //! settings) give the points; [`elevator`] says the load factor of the trim and the elevator
@@ -20,6 +20,6 @@ pub mod uncertainty;
 pub mod validation;
 
 pub use elevator::Elevator;
-pub use grid::{Grid, Range};
+pub use grid::{Grid, Range, SpeedAxis};
 pub use map::{cleared_envelope, envelope, Envelope};
 pub use point::{Critical, Point};

@@ -1,4 +1,4 @@
-//! One point of an envelope: the n-g trim at its altitude and Mach (alpha and elevator for lift
+//! One point of an envelope: the n-g trim at its altitude and speed (alpha and elevator for lift
 //! n times the weight and no pitching moment), the aircraft file the import writes there, and
 //! the analysis `model analyze` makes of it (the certified route, the exact path where a
 //! certificate fails) at the elevator increment from the trim.
@@ -127,27 +127,38 @@ impl Point {
         mach: f64,
         elevator: Elevator,
     ) -> Point {
-        Point::cleared_at(loaded, name, (altitude_m, mach), elevator, None)
+        Point::cleared_at(
+            loaded,
+            name,
+            (altitude_m, Speed::Mach(mach)),
+            elevator,
+            None,
+        )
     }
 
-    /// [`Point::at`], and with `uncertainty` the certified clearance of the point's box at the
-    /// same elevator increment.
+    /// The point at `altitude_m` and `speed` (Mach or true airspeed) as [`Point::at`], and with
+    /// `uncertainty` the certified clearance of the point's box at the same elevator increment.
     pub fn cleared_at(
         loaded: &Loaded,
         name: &str,
-        (altitude_m, mach): (f64, f64),
+        (altitude_m, speed): (f64, Speed),
         elevator: Elevator,
         uncertainty: Option<&Uncertainty>,
     ) -> Point {
-        let condition = match Condition::new(altitude_m, Speed::Mach(mach)) {
+        let condition = match Condition::new(altitude_m, speed) {
             Ok(c) => c,
             Err(reason) => {
-                let mut p = Point::empty(altitude_m, mach, 0.0, elevator);
+                // Outside the atmosphere the other speed is unknown: zero, the point untrimmed.
+                let (mach, speed_m_s) = match speed {
+                    Speed::Mach(m) => (m, 0.0),
+                    Speed::True(v) => (0.0, v),
+                };
+                let mut p = Point::empty(altitude_m, mach, speed_m_s, elevator);
                 p.reason = Some(reason);
                 return p;
             }
         };
-        let mut p = Point::empty(altitude_m, mach, condition.speed, elevator);
+        let mut p = Point::empty(altitude_m, condition.mach, condition.speed, elevator);
         let setup = loaded.setup(condition);
         let trimmed = match trim(&setup, elevator.load_factor) {
             Ok(t) => t,

@@ -1,7 +1,8 @@
 //! The aircraft of an envelope: a `jsbsim:` source without a flight condition,
 //! `"jsbsim:MODEL [--load-factor N] [--set PROPERTY=VALUE]... [--jsbsim-root DIR]"` (the words
-//! `import jsbsim` takes for the model and its trim); the grid's `--altitude-m` and `--mach` give
-//! every flight condition, and each point is trimmed at the load factor (default 1 g).
+//! `import jsbsim` takes for the model and its trim); the grid's `--altitude-m` and `--mach` (or
+//! `--speed`) give every flight condition, and each point is trimmed at the load factor
+//! (default 1 g).
 
 use crate::jsbsim::cli::setting;
 use crate::jsbsim::import::Loaded;
@@ -62,8 +63,8 @@ impl Source {
                 }
                 _ if CONDITION.contains(&w) => {
                     return Err(format!(
-                        "{spec}: {w} is the envelope's to give (its --altitude-m and --mach \
-                         ranges, each point trimmed at the load factor), {usage}"
+                        "{spec}: {w} is the envelope's to give (its --altitude-m range and its \
+                         --mach or --speed range, each point trimmed at the load factor), {usage}"
                     ))
                 }
                 _ if w.starts_with("--") || model.is_some() => {

@@ -25,7 +25,7 @@
 use super::grid::Grid;
 use crate::aircraft::convert::Coefficient;
 use crate::aircraft::{self, Aircraft, AircraftError};
-use crate::jsbsim::condition::{Condition, Speed};
+use crate::jsbsim::condition::Condition;
 use crate::jsbsim::import::{given_alpha_file, trimmed_file, Loaded};
 use crate::jsbsim::trim::trim;
 use std::path::Path;
@@ -86,10 +86,10 @@ impl Uncertainty {
         grid: &Grid,
         load_factor: f64,
     ) -> Result<(), String> {
-        let Some(&(h, m)) = grid.points().first() else {
+        let Some(&(h, speed)) = grid.points().first() else {
             return Ok(());
         };
-        let Ok(condition) = Condition::new(h, Speed::Mach(m)) else {
+        let Ok(condition) = Condition::new(h, speed) else {
             return Ok(());
         };
         let setup = loaded.setup(condition);

@@ -6,9 +6,10 @@
 //! hundreds of points validates in seconds: [`BELOW`] + [`ABOVE`] + 1 steps [`STEP_DEG`] apart,
 //! each run [`RUN_S`] s.
 
+use super::grid::SpeedAxis;
 use super::map::Envelope;
 use super::point::Point;
-use crate::jsbsim::condition::{Condition, Speed};
+use crate::jsbsim::condition::Condition;
 use crate::jsbsim::import::Loaded;
 use crate::jsbsim::trim::trim;
 use crate::random::Rng;
@@ -84,9 +85,11 @@ pub fn chosen(k: usize, p: &Point, sample: f64) -> bool {
     p.route.is_some() && (predicted(p) || Rng::new(SEED + k as u64).unit() < sample)
 }
 
-/// The 6-DOF's verdict at `p` of `loaded`, from the trim at its load factor.
-pub fn validate_point(loaded: &Loaded, p: &Point) -> Result<Validation, String> {
-    let setup = loaded.setup(Condition::new(p.altitude_m, Speed::Mach(p.mach))?);
+/// The 6-DOF's verdict at `p` of `loaded`, from the trim at its load factor; `axis` is the
+/// grid's, whose value of `p` gives the flight condition exactly as the envelope flew it.
+pub fn validate_point(loaded: &Loaded, p: &Point, axis: SpeedAxis) -> Result<Validation, String> {
+    let speed = axis.speed(axis.of(p.mach, p.speed_m_s));
+    let setup = loaded.setup(Condition::new(p.altitude_m, speed)?);
     let t = trim(&setup, p.load_factor)?;
     let degs = steps(p);
     let s = sweep::sweep(&setup, &t, &degs, RUN_S)?;
@@ -121,7 +124,7 @@ pub fn validate_envelope(
     let verdicts: Vec<(usize, Result<Validation, String>)> = picked
         .par_iter()
         .map(|&k| {
-            let v = validate_point(loaded, &env.points[k]);
+            let v = validate_point(loaded, &env.points[k], env.speed_axis);
             let n = done.fetch_add(1, Ordering::Relaxed) + 1;
             progress(n as f64 / picked.len() as f64);
             (k, v)

@@ -5,6 +5,7 @@
 //! evaluation and reported as a warning: one per independent variable, naming the functions
 //! whose tables it leaves, each table's range, and the variable's value.
 
+use super::digits::short;
 use super::evaluate::Functions;
 use super::function::Expr;
 
@@ -78,17 +79,6 @@ pub fn read_by(functions: &Functions, roots: &[usize], extra: Option<&Expr>) -> 
     seen
 }
 
-/// A number for a message: at most 4 decimals, no trailing zeros.
-pub fn short(x: f64) -> String {
-    let s = format!("{x:.4}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.into()
-    }
-}
-
 /// The name of the function (or element) that holds a table.
 fn holder(functions: &Functions, clamp: &Clamp) -> String {
     match clamp.function {
@@ -138,17 +128,4 @@ pub fn warnings(clamps: &[Clamp], functions: &Functions, place: &str) -> Vec<Str
             )
         })
         .collect()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn numbers_are_short() {
-        assert_eq!(short(5.0), "5");
-        assert_eq!(short(0.257), "0.257");
-        assert_eq!(short(-0.00002), "0");
-        assert_eq!(short(1.23456), "1.2346");
-    }
 }

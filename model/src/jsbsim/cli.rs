@@ -5,6 +5,7 @@
 
 use super::catalogue;
 use super::condition::Speed;
+use super::digits::every_digit;
 use super::import::{evaluates, import, import_trimmed, Alpha, Request, REFERENCE};
 use super::trim::Trim;
 use std::io::Write;
@@ -186,8 +187,8 @@ fn parse_and_run(args: &[String], out: &mut dyn Write) -> Result<(), String> {
 /// What `--out` wrote, and at which flight state: the line a user reads after the import.
 fn written(path: &std::path::Path, r: &Request, trim: Option<&Trim>) -> String {
     let speed = match r.speed {
-        Speed::Mach(m) => format!("Mach {m}"),
-        Speed::True(v) => format!("{v} m/s true airspeed"),
+        Speed::Mach(m) => format!("Mach {}", every_digit(m)),
+        Speed::True(v) => format!("{} m/s true airspeed", every_digit(v)),
     };
     let at = match trim {
         Some(t) if t.per_unit_travel => format!(
@@ -208,7 +209,7 @@ fn written(path: &std::path::Path, r: &Request, trim: Option<&Trim>) -> String {
         "wrote {}: {} at {} m, {speed}, {at}",
         path.display(),
         r.model,
-        r.altitude_m
+        every_digit(r.altitude_m)
     )
 }
 

@@ -5,8 +5,9 @@
 //! finite at the state is refused ([`super::finite`]); the table lookups beyond a table's
 //! breakpoints are kept with the coefficients ([`super::clamp`]).
 
-use super::clamp::{short, Clamp};
+use super::clamp::Clamp;
 use super::condition::{set_state, Condition, State};
+use super::digits::short;
 use super::error::JsbsimError;
 use super::model::Model;
 use super::surfaces::Surface;

@@ -8,6 +8,7 @@
 //! the user sets it.
 
 use super::atmosphere::{standard, Air};
+use super::digits::every_digit;
 use super::error::JsbsimError;
 use super::evaluate::Env;
 use super::model::Model;
@@ -44,14 +45,20 @@ impl Condition {
     /// the speed is not positive.
     pub fn new(altitude_m: f64, speed: Speed) -> Result<Condition, String> {
         let air = standard(altitude_m).ok_or_else(|| {
-            format!("altitude {altitude_m} m is outside the standard atmosphere (expected 0 to 86,000 m)")
+            format!(
+                "altitude {} m is outside the standard atmosphere (expected 0 to 86,000 m)",
+                every_digit(altitude_m)
+            )
         })?;
         let (speed, mach) = match speed {
             Speed::Mach(m) => (m * air.sound_speed, m),
             Speed::True(v) => (v, v / air.sound_speed),
         };
         if !(speed.is_finite() && speed > 0.0) {
-            return Err(format!("speed {speed} m/s (expected a positive speed)"));
+            return Err(format!(
+                "speed {} m/s (expected a positive speed)",
+                every_digit(speed)
+            ));
         }
         Ok(Condition {
             altitude_m,

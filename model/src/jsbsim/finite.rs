@@ -5,6 +5,7 @@
 //! arose from finite operands (the divisor that is zero, the negative number under a root) with
 //! the properties it read, and the flight state.
 
+use super::digits::every_digit;
 use super::error::JsbsimError;
 use super::evaluate::{Env, Functions};
 use super::function::{Compare, Expr, Op, Unary};
@@ -65,7 +66,7 @@ fn unary_name(u: Unary) -> &'static str {
 /// An expression in words, for a message: a property by name, a number, or the element.
 fn shown(e: &Expr, functions: &Functions) -> String {
     match e {
-        Expr::Value(v) => format!("{v}"),
+        Expr::Value(v) => every_digit(*v),
         Expr::Property(r) => format!(
             "`{}{}`",
             if r.negated { "-" } else { "" },
@@ -103,8 +104,10 @@ pub fn origin(env: &mut Env, e: &Expr) -> (String, Vec<usize>) {
             let v = env.function(f).unwrap_or(f64::NAN);
             return (
                 format!(
-                    "it reads `{}` = {v} (line {}), where {inner}",
-                    func.name, func.line
+                    "it reads `{}` = {} (line {}), where {inner}",
+                    func.name,
+                    every_digit(v),
+                    func.line
                 ),
                 read,
             );
@@ -129,8 +132,8 @@ pub fn origin(env: &mut Env, e: &Expr) -> (String, Vec<usize>) {
         })
         .collect();
     let operand = |k: usize| match args[k].0 {
-        Expr::Value(v) => format!("{v}"),
-        a => format!("{} = {}", shown(a, functions), args[k].1),
+        Expr::Value(v) => every_digit(*v),
+        a => format!("{} = {}", shown(a, functions), every_digit(args[k].1)),
     };
     let text = match op {
         Op::Quotient | Op::Fmod if args[1].1 == 0.0 => format!(

@@ -15,6 +15,7 @@
 
 use super::coefficients::{Setup, CL, CM};
 use super::condition::State;
+use super::digits::{every_digit, short};
 use super::surfaces::Control;
 use super::units::{KG_PER_SLUG, SLUG_PER_LB};
 
@@ -128,8 +129,11 @@ impl Travel {
     }
 }
 
-/// `x` with four decimals, never `-0.0000`.
+/// `x` with four decimals, never `-0.0000`; from 1e9 on in exponent notation ([`short`]).
 fn four(x: f64) -> String {
+    if x.is_finite() && x.abs() >= 1e9 {
+        return short(x);
+    }
     let s = format!("{x:.4}");
     match s.strip_prefix('-') {
         Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
@@ -232,13 +236,7 @@ pub fn with_settings(message: String, settings: &[(String, f64)]) -> String {
     }
     let set: Vec<String> = settings
         .iter()
-        .map(|(k, v)| {
-            if *v != 0.0 && !(1e-4..1e15).contains(&v.abs()) {
-                format!("--set {k}={v:e}")
-            } else {
-                format!("--set {k}={v}")
-            }
-        })
+        .map(|(k, v)| format!("--set {k}={}", every_digit(*v)))
         .collect();
     format!("{message} (with {})", set.join(" "))
 }

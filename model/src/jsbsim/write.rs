@@ -6,6 +6,7 @@
 use super::coefficients::Coefficients;
 use super::condition::{Condition, State};
 use super::derivatives::Derivative;
+use super::digits::{every_digit, short};
 use super::mass::Totals;
 use super::model::Model;
 use super::surfaces::Surface;
@@ -92,7 +93,7 @@ impl Import<'_> {
             let set: Vec<String> = self
                 .settings
                 .iter()
-                .map(|(k, v)| format!("{k} = {v}"))
+                .map(|(k, v)| format!("{k} = {}", every_digit(*v)))
                 .collect();
             let _ = writeln!(t, "# Set by --set: {}.", set.join(", "));
         }
@@ -258,7 +259,13 @@ impl Import<'_> {
                 let v: Vec<String> = super::coefficients::NAMES
                     .iter()
                     .zip(self.base.values)
-                    .map(|(n, v)| format!("{n} {v:.5}"))
+                    .map(|(n, v)| {
+                        if v.abs() >= 1e9 {
+                            format!("{n} {}", short(v))
+                        } else {
+                            format!("{n} {v:.5}")
+                        }
+                    })
                     .collect();
                 v.join(", ")
             }

@@ -10,7 +10,7 @@ use super::progress::{progress_bar, set};
 use crate::envelope::source::Source;
 use crate::envelope::uncertainty::Uncertainty;
 use crate::envelope::validation::validate_envelope;
-use crate::envelope::{cleared_envelope, Elevator, Envelope, Grid, Point, Range};
+use crate::envelope::{cleared_envelope, Elevator, Envelope, Grid, Point, Range, SpeedAxis};
 use crate::jsbsim::import::Loaded;
 use std::io::Write;
 use std::process::ExitCode;
@@ -39,11 +39,30 @@ fn chosen_elevator(a: &EnvelopeArgs, source: &Source) -> Result<Elevator, Failur
     })
 }
 
+/// The grid's speed axis of `a` and its range as given: `--mach` or `--speed`, exactly one
+/// (the command line's parser says so too; a caller that fills in the options checks here).
+fn speed_axis(a: &EnvelopeArgs) -> Result<(SpeedAxis, &str), Failure> {
+    match (&a.mach, &a.speed) {
+        (Some(m), None) => Ok((SpeedAxis::Mach, m)),
+        (None, Some(v)) => Ok((SpeedAxis::TrueAirspeed, v)),
+        (Some(_), Some(_)) => Err(Failure::Input(
+            "--mach and --speed: give one (the grid's speeds are Mach numbers or true \
+             airspeeds in m/s, not both)"
+                .to_string(),
+        )),
+        (None, None) => Err(Failure::Input(
+            "--mach or --speed is required: the grid's speeds, Mach numbers (--mach \
+             START:STOP:STEP) or true airspeeds in m/s (--speed START:STOP:STEP)"
+                .to_string(),
+        )),
+    }
+}
+
 /// What `model envelope` computes, every option checked and the model read before any work.
 pub struct Plan {
     /// The model, read once.
     pub loaded: Loaded,
-    /// The grid of altitudes and Mach numbers.
+    /// The grid of altitudes and speeds.
     pub grid: Grid,
     /// The load factor of every point's trim and the elevator increment from it.
     pub elevator: Elevator,
@@ -78,9 +97,11 @@ impl Plan {
     /// The plan of `a`, or the first option that is wrong.
     pub fn new(a: &EnvelopeArgs) -> Result<Plan, Failure> {
         let source = Source::parse(&a.source)?;
-        let grid = Grid::new(
+        let (axis, speeds) = speed_axis(a)?;
+        let grid = Grid::over(
             Range::parse(&a.altitude_m, "--altitude-m")?,
-            Range::parse(&a.mach, "--mach")?,
+            axis,
+            Range::parse(speeds, axis.flag())?,
         )?;
         let elevator = chosen_elevator(a, &source)?;
         let uncertainty = match &a.uncertainty {
@@ -162,14 +183,41 @@ pub fn departure_kind(p: &Point) -> &'static str {
     }
 }
 
+/// The headers of the flight state's columns that begin every table's rows: altitude, Mach and
+/// true airspeed, whichever the grid steps over.
+pub const STATE_HEADER: &str = "altitude_m   mach   V_m_s";
+
+/// The flight state's cells of `p` under [`STATE_HEADER`].
+pub fn state_cells(p: &Point) -> String {
+    format!(
+        "{:>10}  {:>5}  {:>6}",
+        fixed(p.altitude_m, 0),
+        fixed(p.mach, 3),
+        fixed(p.speed_m_s, 1)
+    )
+}
+
+/// The flight state of `p` in words: `"altitude 3000 m, Mach 0.500, 164.3 m/s"`.
+fn state_words(p: &Point) -> String {
+    format!(
+        "altitude {} m, Mach {}, {} m/s",
+        fixed(p.altitude_m, 0),
+        fixed(p.mach, 3),
+        fixed(p.speed_m_s, 1)
+    )
+}
+
 /// The table: one line per point, then the counts.
 pub fn text(env: &Envelope) -> String {
     let mut s = format!(
-        "{}: envelope, {} (each point linearised at its own trim; delta_e is the increment \
-         from each point's trim elevator)\n\n",
-        env.source, env.elevator
+        "{}: envelope over altitude x {}; {} (each point linearised at its own trim; delta_e \
+         is the increment from each point's trim elevator)\n\n",
+        env.source,
+        env.speed_axis.label(),
+        env.elevator
     );
-    s += "altitude_m   mach   V_m_s  alpha_deg  de_trim_deg  delta_e_deg  p0_rad_s  delta_a_deg  margin_deg  first_departure\n";
+    s += STATE_HEADER;
+    s += "  alpha_deg  de_trim_deg  delta_e_deg  p0_rad_s  delta_a_deg  margin_deg  first_departure\n";
     for p in &env.points {
         // A Hopf departure without a jump shows the Hopf point's roll rate, aileron and margin.
         let hopf_only =
@@ -182,10 +230,8 @@ pub fn text(env: &Envelope) -> String {
             _ => (None, None, None),
         };
         s += &format!(
-            "{:>10}  {:>5}  {:>6}  {:>9}  {:>11}  {:>11}  {:>8}  {:>11}  {:>10}  {}\n",
-            fixed(p.altitude_m, 0),
-            fixed(p.mach, 3),
-            fixed(p.speed_m_s, 1),
+            "{}  {:>9}  {:>11}  {:>11}  {:>8}  {:>11}  {:>10}  {}\n",
+            state_cells(p),
             cell(p.alpha_deg, 3),
             cell(p.elevator_trim_deg, 3),
             cell(p.delta_e_deg, 3),
@@ -241,12 +287,10 @@ fn warnings_text(env: &Envelope) -> String {
         .collect();
     if let Some((p, w)) = inertia.first() {
         s += &format!(
-            "Warning: at {} of {} points the aircraft is analysed with a warning; at altitude {} m, \
-             Mach {}: {w}\n",
+            "Warning: at {} of {} points the aircraft is analysed with a warning; at {}: {w}\n",
             inertia.len(),
             env.points.len(),
-            fixed(p.altitude_m, 0),
-            fixed(p.mach, 3)
+            state_words(p)
         );
     }
     let tables = env

@@ -3,7 +3,7 @@
 //! found, and the verdict against the aileron limit with what decided it (the counterexample's
 //! critical aileron, or the gap the proof reached when its budget ran out).
 
-use super::envelope::cell;
+use super::envelope::{cell, state_cells, STATE_HEADER};
 use super::numbers::fixed;
 use crate::clearance::Verdict;
 use crate::envelope::clearance::PointClearance;
@@ -55,22 +55,18 @@ pub fn text(env: &Envelope) -> String {
         "\nCertified clearance over the box of --uncertainty {spec} (lo proven for every \
          aircraft of the box, hi attained by one):\n\n"
     );
-    s += "altitude_m   mach  boxed  delta_a_lo_deg  delta_a_hi_deg  p0_lo_rad_s  verdict           detail\n";
+    s += STATE_HEADER;
+    s += "  boxed  delta_a_lo_deg  delta_a_hi_deg  p0_lo_rad_s  verdict           detail\n";
     for p in &env.points {
         let Some(c) = &p.clearance else {
             if let Some(e) = &p.clearance_error {
-                s += &format!(
-                    "{:>10}  {:>5}  clearance refused: {e}\n",
-                    fixed(p.altitude_m, 0),
-                    fixed(p.mach, 3)
-                );
+                s += &format!("{}  clearance refused: {e}\n", state_cells(p));
             }
             continue;
         };
         s += &format!(
-            "{:>10}  {:>5}  {:>5}  {:>14}  {:>14}  {:>11}  {:<16}  {}\n",
-            fixed(p.altitude_m, 0),
-            fixed(p.mach, 3),
+            "{}  {:>5}  {:>14}  {:>14}  {:>11}  {:<16}  {}\n",
+            state_cells(p),
             c.uncertain,
             cell(c.delta_a_lo_deg, 4),
             cell(c.delta_a_hi_deg, 4),

@@ -69,15 +69,21 @@ pub fn markdown(env: &Envelope) -> String {
         .iter()
         .filter_map(|p| p.margin_deg.map(|m| (m, p)))
         .max_by(|a, b| a.0.total_cmp(&b.0));
-    let mut s = format!("# Flight envelope: {} ({})\n\n", env.aircraft, env.source);
+    let mut s = format!(
+        "# Flight envelope: {} ({}), altitude x {}\n\n",
+        env.aircraft,
+        env.source,
+        env.speed_axis.label()
+    );
     s += &format!("Elevator: {}.\n\n", env.elevator);
     if let Some((m, p)) = worst {
         s += &format!(
             "Largest margin to the aileron limit (how far inside the stick's travel the \
-             jump comes; negative: beyond it everywhere): {} deg at {} m, Mach {}.\n\n",
+             jump comes; negative: beyond it everywhere): {} deg at {} m, Mach {}, {} m/s.\n\n",
             cell(Some(m), 3),
             p.altitude_m,
-            p.mach
+            p.mach,
+            p.speed_m_s
         );
     }
     s += "![critical aileron](critical_aileron.svg)\n\n![first departure](first_departure.svg)\n\n\

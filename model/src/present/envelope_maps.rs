@@ -1,4 +1,5 @@
-//! The maps of `model envelope --out`: over Mach (across) and altitude (up), one cell per grid
+//! The maps of `model envelope --out`: over the grid's speed (across: Mach, or true airspeed in
+//! m/s with `--speed`) and altitude (up), one cell per grid
 //! point, each drawn as a band of its colour ([`crate::plot`] draws polylines and markers, so a
 //! cell is a line as wide as the cell, as thick as its row, which the legend shows as a filled
 //! box). The critical aileron and the critical roll rate in eight colour bands, small (the
@@ -16,7 +17,7 @@
 //! column, a point whose neighbours have no margin).
 
 use super::envelope::departure_kind;
-use crate::envelope::{Envelope, Point};
+use crate::envelope::{Envelope, Point, SpeedAxis};
 use crate::plot::isoline::{isolines, Field};
 use crate::plot::TextAt;
 use crate::plot::{Axis, Dash, Figure, LegendPlace, Line, Marker, Panel, PlotStyle, Rgb, Shape};
@@ -53,6 +54,19 @@ fn axis_of(xs: impl Iterator<Item = f64>, fallback: f64) -> (Vec<f64>, f64) {
     )
 }
 
+/// The value of `p` across the maps: its Mach number or true airspeed, as the grid steps.
+fn across(env: &Envelope, p: &Point) -> f64 {
+    env.speed_axis.of(p.mach, p.speed_m_s)
+}
+
+/// Half a cell's width across a grid of one speed: 0.025 in Mach, 10 m/s in true airspeed.
+fn lone_half(env: &Envelope) -> f64 {
+    match env.speed_axis {
+        SpeedAxis::Mach => 0.025,
+        SpeedAxis::TrueAirspeed => 10.0,
+    }
+}
+
 /// A cell's colour, legend entry and the entry's place in the legend.
 pub(super) type Cell = (Rgb, String, usize);
 
@@ -64,9 +78,9 @@ pub(super) fn cells(
     style: &PlotStyle,
     cell: &dyn Fn(&Point) -> Cell,
 ) -> Figure {
-    let (machs, dm) = axis_of(env.points.iter().map(|p| p.mach), 0.025);
+    let (speeds, dm) = axis_of(env.points.iter().map(|p| across(env, p)), lone_half(env));
     let (alts, dh) = axis_of(env.points.iter().map(|p| p.altitude_m), 250.0);
-    let x = within_grid(Axis::linear("Mach", 0.0, 0.0), &machs, dm);
+    let x = within_grid(Axis::linear(env.speed_axis.label(), 0.0, 0.0), &speeds, dm);
     let y = within_grid(Axis::linear("altitude (m)", 0.0, 0.0), &alts, dh);
     let px_per_m = (style.height as f64 * 0.83 - 10.0) / (y.hi - y.lo);
     // A pixel and a half across (the plot area is over 60 % of the figure's width), so that
@@ -93,7 +107,10 @@ pub(super) fn cells(
             let width = ((hi - lo) * px_per_m).clamp(1.0, 400.0).ceil() as u32 + 2;
             Line {
                 label: seen.insert(label.clone()).then_some(label),
-                points: vec![(p.mach - dm - overlap, at), (p.mach + dm + overlap, at)],
+                points: vec![
+                    (across(env, p) - dm - overlap, at),
+                    (across(env, p) + dm + overlap, at),
+                ],
                 color,
                 dash: Dash::Band,
                 width,
@@ -204,7 +221,7 @@ pub fn critical_aileron(env: &Envelope, style: &PlotStyle) -> Figure {
             label: std::mem::take(&mut first).then(|| "full-stick roll jumps".to_string()),
             text: None,
             text_at: TextAt::AboveRight,
-            x: p.mach,
+            x: across(env, p),
             y: p.altitude_m,
             shape: Shape::Circle,
             color: Rgb::BLACK,
@@ -215,14 +232,14 @@ pub fn critical_aileron(env: &Envelope, style: &PlotStyle) -> Figure {
     f
 }
 
-/// The margin to the aileron limit over the grid (Mach across, altitude up), missing where a
+/// The margin to the aileron limit over the grid (speed across, altitude up), missing where a
 /// point has none or the grid has no point.
 fn margins(env: &Envelope) -> Field {
-    let (xs, _) = axis_of(env.points.iter().map(|p| p.mach), 0.0);
+    let (xs, _) = axis_of(env.points.iter().map(|p| across(env, p)), 0.0);
     let (ys, _) = axis_of(env.points.iter().map(|p| p.altitude_m), 0.0);
     let mut values = vec![None; xs.len() * ys.len()];
     for p in &env.points {
-        let i = xs.iter().position(|&x| x == p.mach);
+        let i = xs.iter().position(|&x| x == across(env, p));
         let j = ys.iter().position(|&y| y == p.altitude_m);
         if let (Some(i), Some(j)) = (i, j) {
             values[j * xs.len() + i] = p.margin_deg;

@@ -3,6 +3,7 @@
 //! rate jumps and whether it agrees ([`crate::envelope::validation`]); the counts after the
 //! table.
 
+use super::envelope::{state_cells, STATE_HEADER};
 use super::numbers::fixed;
 use crate::envelope::{Envelope, Point};
 
@@ -16,20 +17,16 @@ pub fn text(env: &Envelope) -> String {
          aileron limit, and a seeded {} % of the others; aileron steps of 1 deg, 10 s each):\n\n",
         fixed(100.0 * sample, 0)
     );
-    s += "altitude_m   mach  predicted   swept_deg  6-DOF_jump_deg  mach_change  agrees\n";
+    s += STATE_HEADER;
+    s += "  predicted   swept_deg  6-DOF_jump_deg  mach_change  agrees\n";
     for p in &env.points {
         if let Some(e) = &p.validation_error {
-            s += &format!(
-                "{:>10}  {:>5}  6-DOF refused: {e}\n",
-                fixed(p.altitude_m, 0),
-                fixed(p.mach, 3)
-            );
+            s += &format!("{}  6-DOF refused: {e}\n", state_cells(p));
         }
         let Some(v) = &p.validation else { continue };
         s += &format!(
-            "{:>10}  {:>5}  {:>9}  {:>10}  {:>14}  {:>11}  {}\n",
-            fixed(p.altitude_m, 0),
-            fixed(p.mach, 3),
+            "{}  {:>9}  {:>10}  {:>14}  {:>11}  {}\n",
+            state_cells(p),
             v.predicted,
             format!("{}-{}", fixed(v.swept_deg[0], 1), fixed(v.swept_deg[1], 1)),
             v.between_deg.map_or("none".to_string(), |[a, b]| {

@@ -208,6 +208,12 @@ pub struct ClearArgs {
 
 /// Options of `envelope`.
 #[derive(Args)]
+#[command(group(
+    clap::ArgGroup::new("speed_axis")
+        .required(true)
+        .multiple(false)
+        .args(["mach", "speed"])
+))]
 pub struct EnvelopeArgs {
     /// The model: "jsbsim:MODEL [--set PROPERTY=VALUE]... [--jsbsim-root DIR]" (quoted as one;
     /// the ranges below give the flight conditions, each point trimmed at the load factor).
@@ -215,9 +221,14 @@ pub struct EnvelopeArgs {
     /// Altitudes, m: START:STOP:STEP or one value.
     #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
     pub altitude_m: String,
-    /// Mach numbers: START:STOP:STEP or one value.
+    /// Mach numbers: START:STOP:STEP or one value (the grid is altitude x Mach; or --speed).
     #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
-    pub mach: String,
+    pub mach: Option<String>,
+    /// True airspeeds, m/s: START:STOP:STEP or one value (the grid is altitude x true
+    /// airspeed, each point's Mach that speed over the speed of sound at its altitude; or
+    /// --mach).
+    #[arg(long, value_name = "START:STOP:STEP", allow_hyphen_values = true)]
+    pub speed: Option<String>,
     /// Trim every point in a wings-level pull-up at this load factor (g) and linearise there:
     /// alpha and elevator for lift N x weight and no pitching moment, pitch rate (N - 1) g / V
     /// (default 1, level flight; 0 is the unloaded roll). A point where the elevator's travel

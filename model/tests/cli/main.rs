@@ -13,6 +13,7 @@ mod support;
 mod analyze;
 mod answers;
 mod commands;
+mod envelope_speed;
 mod files;
 mod folders;
 mod jsbsim;

@@ -174,6 +174,63 @@ fn bad_edges_are_refused_before_any_work_with_a_true_message() {
     );
 }
 
+/// A huge `--set` value is quoted in short form wherever a message or the file shows it (the
+/// setting, a refusal's operands, the trim's lift, a table read beyond its breakpoints), never
+/// as the hundreds of digits of its plain decimal form.
+#[test]
+fn a_huge_set_value_is_quoted_without_hundreds_of_digits() {
+    let long_run = |text: &str| {
+        let mut run = 0;
+        text.chars().any(|c| {
+            run = if c.is_ascii_digit() { run + 1 } else { 0 };
+            run > 20
+        })
+    };
+    for (value, expect) in [
+        ("1e308", "`fcs/flap-pos-deg` = 1e308"),
+        ("-1e308", "`fcs/flap-pos-deg` = -1e308"),
+        ("1e300", "lift coefficient 1e298 already exceeds"),
+    ] {
+        let set = format!("fcs/flap-pos-deg={value}");
+        let out = model(&[
+            "import",
+            "jsbsim",
+            &fixture(),
+            "--altitude-m",
+            "6096",
+            "--mach",
+            "0.6",
+            "--set",
+            &set,
+        ]);
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(err.contains(expect), "{expect} not in {err}");
+        assert!(!long_run(&err), "{err}");
+    }
+    // Imported at alpha 0 (no trim), the setting and the table's lookup are in the file.
+    let out = model(&[
+        "import",
+        "jsbsim",
+        &fixture(),
+        "--altitude-m",
+        "6096",
+        "--mach",
+        "0.6",
+        "--alpha-deg",
+        "0",
+        "--set",
+        "fcs/flap-pos-deg=1e300",
+    ]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(
+        text.contains("# Set by --set: fcs/flap-pos-deg = 1e300."),
+        "{text}"
+    );
+    assert!(!long_run(&text), "{text}");
+}
+
 /// `import jsbsim --list` calls a model importable exactly when `--list --analyze` at its
 /// reference condition (3000 m, Mach 0.3, 1 g) imports it: one check. Skipped without the
 /// JSBSim models.

@@ -14,8 +14,12 @@ the wait.
 
 from __future__ import annotations
 
+import math
+import numbers
 import os
-from typing import Any, Dict, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
 
 from . import _core
 from ._core import InputError
@@ -175,6 +179,32 @@ def _number(x: float) -> str:
     return repr(float(x))
 
 
+def _word(x: float) -> str:
+    """``x`` as a word of the command line: an integer as written (``6096``, which the
+    commands that echo their options show as given), any other number as :func:`_number`."""
+    return str(int(x)) if isinstance(x, numbers.Integral) else _number(x)
+
+
+_JSBSIM_OPTIONS = (("altitude_m", "--altitude-m"), ("mach", "--mach"), ("speed", "--speed"),
+                   ("load_factor", "--load-factor"), ("alpha_deg", "--alpha-deg"))
+
+
+def _jsbsim_flags(given: Mapping[str, Any]) -> List[str]:
+    """The words of ``import jsbsim``'s options for the values ``given`` by their Python names
+    (``altitude_m``, ``mach``, ``speed``, ``load_factor``, ``alpha_deg``, ``settings``,
+    ``jsbsim_root``; the others and ``None`` left out), each number a :func:`_word`: one
+    writer for ``import_jsbsim``'s source and ``import_jsbsim_list``'s arguments."""
+    words: List[str] = []
+    for name, flag in _JSBSIM_OPTIONS:
+        if given.get(name) is not None:
+            words += [flag, _word(given[name])]
+    for k, v in (given.get("settings") or {}).items():
+        words += ["--set", f"{k}={_word(v)}"]
+    if given.get("jsbsim_root") is not None:
+        words += ["--jsbsim-root", os.fspath(given["jsbsim_root"])]
+    return words
+
+
 def import_jsbsim(
     model: str,
     altitude_m: float,
@@ -189,53 +219,76 @@ def import_jsbsim(
     linearised at its trim at ``load_factor`` g (default 1, level flight), or at ``alpha_deg``
     (not a trim). Give ``mach`` or ``speed`` (true airspeed, m/s). ``settings``: JSBSim
     properties set before the import (``{"fcs/flap-pos-norm": 0.5}``)."""
-    spec = f"jsbsim:{model} --altitude-m {_number(altitude_m)}"
-    if mach is not None:
-        spec += f" --mach {_number(mach)}"
-    if speed is not None:
-        spec += f" --speed {_number(speed)}"
-    if load_factor is not None:
-        spec += f" --load-factor {_number(load_factor)}"
-    if alpha_deg is not None:
-        spec += f" --alpha-deg {_number(alpha_deg)}"
-    for k, v in (settings or {}).items():
-        spec += f" --set {k}={_number(v)}"
-    if jsbsim_root is not None:
-        spec += f" --jsbsim-root {os.fspath(jsbsim_root)}"
+    spec = " ".join([f"jsbsim:{model}"] + _jsbsim_flags(locals()))
     text, trim = _core.import_jsbsim(spec)
     return Aircraft(text, spec, trim)
 
 
-Axis = Union[str, float, Sequence[float]]
+Axis = Union[str, float, Sequence[float], "np.ndarray"]
 
 
-def axis(values: Axis) -> str:
-    """An envelope's axis as the command line takes it: ``"START:STOP:STEP"``, one value, or a
-    (start, stop, step) triple."""
+def axis(values: Axis, option: str = "--altitude-m") -> str:
+    """An envelope's axis (the values of ``option``) as the command line takes it:
+    ``"START:STOP:STEP"`` or one value as given, a number, or a sequence (list, tuple, numpy
+    array) of evenly spaced ascending values. The command takes ranges, so a sequence becomes
+    the range from its first value to its last in its step, whose values equal the given ones
+    to 1e-9 of a step; values not evenly spaced raise ``InputError`` naming the option."""
     if isinstance(values, str):
         return values
-    if isinstance(values, (int, float)):
+    if isinstance(values, numbers.Real):
         return _number(values)
-    parts = list(values)
-    if len(parts) != 3:
-        raise InputError(f"{parts!r}: expected START:STOP:STEP, (start, stop, step) or one value")
-    return ":".join(_number(v) for v in parts)
+    parts = [float(v) for v in np.asarray(values, dtype=float).ravel()]
+    shown = f"{option} {parts[:6]}{' ...' if len(parts) > 6 else ''}"
+    if not parts:
+        raise InputError(f"{shown}: no values (expected evenly spaced ascending values, "
+                         "START:STOP:STEP or one value)")
+    if not all(math.isfinite(v) for v in parts):
+        raise InputError(f"{shown}: not finite numbers")
+    if len(parts) == 1:
+        return _number(parts[0])
+    step = (parts[-1] - parts[0]) / (len(parts) - 1)
+    even = step > 0 and all(abs(v - (parts[0] + i * step)) <= 1e-9 * step for i, v in enumerate(parts))
+    if not even:
+        raise InputError(f"{shown}: not evenly spaced ascending values (the command takes a "
+                         "range START:STOP:STEP: give evenly spaced values, the range as a "
+                         "string, or one envelope per spacing)")
+    return f"{_number(parts[0])}:{_number(parts[-1])}:{_number(step)}"
+
+
+def _speed_axes(machs: Optional[Axis], speeds_m_s: Optional[Axis]) -> Tuple[Optional[str], Optional[str]]:
+    """``--mach`` and ``--speed`` as the command line takes them (the command refuses both or
+    neither)."""
+    return (None if machs is None else axis(machs, "--mach"),
+            None if speeds_m_s is None else axis(speeds_m_s, "--speed"))
 
 
 def envelope(
     source: str,
     altitudes_m: Axis,
-    machs: Axis,
+    machs: Optional[Axis] = None,
     load_factor: Optional[float] = None,
     delta_e_deg: Optional[float] = None,
     uncertainty: Optional[str] = None,
+    *,
+    speeds_m_s: Optional[Axis] = None,
+    validate: bool = False,
+    validate_sample: Optional[float] = None,
 ) -> Envelope:
-    """``model envelope SOURCE --altitude-m H --mach M --json`` on the local cores: the
-    analysis at every altitude (m) and Mach of the grid, each point linearised at its own trim
-    at ``load_factor`` g (default 1). ``source``: ``"jsbsim:MODEL [--set P=V]..."``. With
-    ``uncertainty`` (``"10%"``, ``"Cl_p=10%,Cn_r=0.02"`` or a TOML file) every point is also the
-    certified clearance of its box. The result's arrays are over altitude x Mach."""
-    return Envelope(_core.envelope(source, axis(altitudes_m), axis(machs), load_factor, delta_e_deg, uncertainty))
+    """``model envelope SOURCE --altitude-m H (--mach M | --speed V) --json`` on the local
+    cores: the analysis at every altitude (m) and speed of the grid, each point linearised at
+    its own trim at ``load_factor`` g (default 1). Give ``machs`` (Mach numbers) or
+    ``speeds_m_s`` (true airspeeds, m/s), not both; each axis is ``"START:STOP:STEP"``, one
+    value or evenly spaced values (:func:`axis`). ``source``: ``"jsbsim:MODEL [--set P=V]..."``.
+    With ``uncertainty`` (``"10%"``, ``"Cl_p=10%,Cn_r=0.02"`` or a TOML file) every point is
+    also the certified clearance of its box. With ``validate`` (``--validate``) the native
+    6-DOF checks every point that predicts a jump within the aileron limit and the seeded
+    fraction ``validate_sample`` of the others (``--validate-sample``, default 0.1, only with
+    ``validate``): each point's ``validation`` (or ``validation_error``), and the arrays
+    ``validated``, ``validation_agrees``, ``validation_jumps``. The result's arrays are over
+    altitude x the grid's speed (``speed_axis``)."""
+    mach_axis, speed_axis = _speed_axes(machs, speeds_m_s)
+    return Envelope(_core.envelope(source, axis(altitudes_m), mach_axis, speed_axis, load_factor,
+                                   delta_e_deg, uncertainty, validate, validate_sample))
 
 
 def import_jsbsim_list(
@@ -254,14 +307,7 @@ def import_jsbsim_list(
     linearised at its trim at ``load_factor`` g (default 1) and analysed: its critical jump and
     first departure. The text the command prints."""
     args = ["--list"] + (["--analyze"] if analyze else [])
-    for flag, value in (("--altitude-m", altitude_m), ("--mach", mach), ("--speed", speed),
-                        ("--load-factor", load_factor), ("--alpha-deg", alpha_deg)):
-        if value is not None:
-            args += [flag, str(value) if isinstance(value, int) else _number(value)]
-    for k, v in (settings or {}).items():
-        args += ["--set", f"{k}={_number(v)}"]
-    if jsbsim_root is not None:
-        args += ["--jsbsim-root", os.fspath(jsbsim_root)]
+    args += _jsbsim_flags(locals())
     return _core.import_jsbsim_list(args)
 
 
@@ -303,12 +349,12 @@ def validate(
     t_end: float = 10.0,
     out: Optional["os.PathLike[str]"] = None,
 ) -> Validation:
-    """``model validate jsbsim:MODEL``: aileron steps ``delta_a_deg`` (``"A:B:STEP"`` or a
-    triple, deg of |delta_a|; default 1 to the aileron limit + 4, every 1) of ``t_end`` s in the
+    """``model validate jsbsim:MODEL``: aileron steps ``delta_a_deg`` (``"A:B:STEP"`` or evenly
+    spaced values, deg of |delta_a|; default 1 to the aileron limit + 4, every 1) of ``t_end`` s in the
     7th-order model and in the native 6-DOF from the same trim at ``load_factor`` g (default 1),
     at ``altitude_m`` and ``mach`` (or inside the source). Returns each model's settled |p|
     (mean over the last 2 s, rad/s) at each step, the criterion's critical aileron, the lines
     the command prints (a verdict per model) and the folder of the plateau figure (default
     ``out/validate-<model>``)."""
-    steps = None if delta_a_deg is None else axis(delta_a_deg)
+    steps = None if delta_a_deg is None else axis(delta_a_deg, "--delta-a-deg")
     return Validation(_core.validate(source, altitude_m, mach, load_factor, steps, t_end, _out(out)))

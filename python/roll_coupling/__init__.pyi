@@ -94,18 +94,36 @@ class Clearance(Record):
     monte_carlo: Record
 
 class Envelope(Record):
+    """`model envelope --json`, with arrays over altitude x the grid's speed."""
     source: str
     aircraft: str
     elevator: str
     untrimmed: int
     exact_fallbacks: int
     uncertainty: Optional[str]
+    validate_sample: Optional[float]
     points: List[Record]
+    @property
+    def speed_axis(self) -> str:
+        """`"mach"` or `"speed_m_s"`: the points' field the grid steps over."""
     @property
     def altitudes_m(self) -> np.ndarray: ...
     @property
-    def machs(self) -> np.ndarray: ...
+    def speeds(self) -> np.ndarray:
+        """The grid's speeds: Mach numbers or true airspeeds (m/s), as `speed_axis` says."""
+    @property
+    def machs(self) -> np.ndarray:
+        """The grid's Mach numbers (ValueError on a grid over true airspeed)."""
+    @property
+    def speeds_m_s(self) -> np.ndarray:
+        """The grid's true airspeeds, m/s (ValueError on a grid over Mach)."""
     def grid(self, path: str) -> np.ndarray: ...
+    @property
+    def validated(self) -> np.ndarray: ...
+    @property
+    def validation_agrees(self) -> np.ndarray: ...
+    @property
+    def validation_jumps(self) -> np.ndarray: ...
     @property
     def p0(self) -> np.ndarray: ...
     @property
@@ -125,7 +143,7 @@ class Aircraft(Record):
     def __init__(self, toml: str, source: Optional[str] = ..., trim: Optional[Dict[str, Any]] = ...) -> None: ...
 
 AircraftLike = Union[str, os.PathLike[str], Aircraft, Mapping[str, Any]]
-Axis = Union[str, float, Sequence[float]]
+Axis = Union[str, float, Sequence[float], np.ndarray]
 
 def analyze(aircraft: AircraftLike, delta_e_deg: Optional[float] = ..., certified: bool = ...) -> Analysis:
     """`model analyze AIRCRAFT --json`."""
@@ -151,16 +169,21 @@ def import_jsbsim(model: str, altitude_m: float, mach: Optional[float] = ..., sp
                   settings: Optional[Mapping[str, float]] = ..., jsbsim_root: Optional[str] = ...) -> Aircraft:
     """`model import jsbsim MODEL --altitude-m H --mach M`."""
 
-def axis(values: Axis) -> str: ...
+def axis(values: Axis, option: str = ...) -> str:
+    """`"START:STOP:STEP"`, one value, or evenly spaced ascending values as the range over them."""
 
-def envelope(source: str, altitudes_m: Axis, machs: Axis, load_factor: Optional[float] = ...,
-             delta_e_deg: Optional[float] = ..., uncertainty: Optional[str] = ...) -> Envelope:
-    """`model envelope SOURCE --altitude-m H --mach M --json`."""
+def envelope(source: str, altitudes_m: Axis, machs: Optional[Axis] = ..., load_factor: Optional[float] = ...,
+             delta_e_deg: Optional[float] = ..., uncertainty: Optional[str] = ..., *,
+             speeds_m_s: Optional[Axis] = ..., validate: bool = ...,
+             validate_sample: Optional[float] = ...) -> Envelope:
+    """`model envelope SOURCE --altitude-m H (--mach M | --speed V) [--validate] --json`."""
 
-def envelope_clearance(source: str, altitudes_m: Axis, machs: Axis, uncertainty: Optional[str],
-                       load_factor: Optional[float] = ..., delta_e_deg: Optional[float] = ...,
-                       client: Any = ..., retries: int = ...) -> Envelope:
-    """The envelope with every point's box cleared, locally or one Dask task per point."""
+def envelope_clearance(source: str, altitudes_m: Axis, machs: Optional[Axis] = ...,
+                       uncertainty: Optional[str] = ..., load_factor: Optional[float] = ...,
+                       delta_e_deg: Optional[float] = ..., client: Any = ..., retries: int = ..., *,
+                       speeds_m_s: Optional[Axis] = ...) -> Envelope:
+    """The envelope (over Mach or true airspeed) with every point's box cleared, locally or one
+    Dask task per point."""
 
 def import_jsbsim_list(analyze: bool = ..., altitude_m: Optional[float] = ..., mach: Optional[float] = ...,
                        speed: Optional[float] = ..., load_factor: Optional[float] = ...,

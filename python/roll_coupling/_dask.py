@@ -16,30 +16,35 @@ from ._records import Envelope
 
 class IncompleteEnvelope(RuntimeError):
     """Some points failed on the cluster after every retry. ``failed`` lists them as
-    ``(altitude_m, mach, error)``; ``envelope`` holds the points that were computed, the
+    ``(altitude_m, speed, error)``, the speed on the grid's axis (Mach, or true airspeed in m/s
+    for a grid over ``speeds_m_s``); ``envelope`` holds the points that were computed, the
     failed ones with their ``error`` field set, so that none is silently missing."""
 
     def __init__(self, failed: List[Tuple[float, float, str]], envelope: Envelope):
         self.failed = failed
         self.envelope = envelope
-        where = "; ".join(f"{h} m, Mach {m}: {e}" for h, m, e in failed[:5])
+        speed = "{} m/s" if envelope.speed_axis == "speed_m_s" else "Mach {}"
+        where = "; ".join(f"{h} m, {speed.format(v)}: {e}" for h, v, e in failed[:5])
         super().__init__(f"{len(failed)} of {len(envelope.points)} points failed after their retries: {where}")
 
 
-def point(altitude_m: float, mach: float, source: str, load_factor: float, increment_rad: float,
-          uncertainty: Optional[str]) -> Dict[str, Any]:
-    """One grid point, as the envelope's JSON holds it (the task each worker runs; the worker
-    reads the model on its first point and keeps it)."""
-    return _core.envelope_point(source, altitude_m, mach, load_factor, increment_rad, uncertainty)
+def point(altitude_m: float, speed: float, source: str, load_factor: float, increment_rad: float,
+          uncertainty: Optional[str], speed_axis: str = "mach") -> Dict[str, Any]:
+    """One grid point at ``speed`` on ``speed_axis`` (``"mach"`` or ``"speed_m_s"``), as the
+    envelope's JSON holds it (the task each worker runs; the worker reads the model on its first
+    point and keeps it)."""
+    return _core.envelope_point(source, altitude_m, speed, load_factor, increment_rad, uncertainty,
+                                speed_axis)
 
 
-def assembled(source: str, aircraft: str, elevator: str, uncertainty: Optional[str],
+def assembled(source: str, plan: Dict[str, Any], uncertainty: Optional[str],
               points: List[Dict[str, Any]]) -> Envelope:
     """The envelope's JSON around its points, as ``model envelope`` writes it."""
     data: Dict[str, Any] = {
         "source": source,
-        "aircraft": aircraft,
-        "elevator": elevator,
+        "aircraft": plan["aircraft"],
+        "elevator": plan["elevator"],
+        "speed_axis": plan["speed_axis"],
         "untrimmed": sum(1 for p in points if not p["trimmed"]),
         "exact_fallbacks": sum(1 for p in points if p["route"] == "exact"),
     }
@@ -52,50 +57,59 @@ def assembled(source: str, aircraft: str, elevator: str, uncertainty: Optional[s
 def envelope_clearance(
     source: str,
     altitudes_m: Any,
-    machs: Any,
-    uncertainty: Optional[str],
+    machs: Any = None,
+    uncertainty: Optional[str] = None,
     load_factor: Optional[float] = None,
     delta_e_deg: Optional[float] = None,
     client: Any = None,
     retries: int = 2,
+    *,
+    speeds_m_s: Any = None,
 ) -> Envelope:
     """``model envelope SOURCE ... --uncertainty SPEC --json``: every grid point's nominal
     analysis and the certified clearance of its box (``uncertainty`` as the command takes it:
     ``"10%"``, ``"Cl_p=10%,Cn_r=0.02"`` or a TOML file with an ``[uncertainty]`` table, which
-    every worker must be able to read; ``None`` for the nominal envelope alone).
+    every worker must be able to read; ``None`` for the nominal envelope alone). The grid is
+    altitude x Mach (``machs``) or altitude x true airspeed in m/s (``speeds_m_s``), one of
+    them, each axis as :func:`roll_coupling.envelope` takes it.
 
     Without ``client``, on the local cores (as :func:`roll_coupling.envelope`). With a
     ``distributed.Client``, each grid point is a task on the cluster's workers, retried up to
     ``retries`` times when it fails (a task on a worker that dies is rescheduled by Dask
     itself); the answers are gathered into the same arrays, bit for bit the local run's. Points
     that still fail raise :class:`IncompleteEnvelope`, which names them."""
-    from . import axis
+    from . import _speed_axes, axis
 
-    h_axis, m_axis = axis(altitudes_m), axis(machs)
+    h_axis = axis(altitudes_m)
+    mach_axis, speed_axis = _speed_axes(machs, speeds_m_s)
     if client is None:
-        return Envelope(_core.envelope(source, h_axis, m_axis, load_factor, delta_e_deg, uncertainty))
-    plan = _core.envelope_plan(source, h_axis, m_axis, load_factor, delta_e_deg, uncertainty)
+        return Envelope(_core.envelope(source, h_axis, mach_axis, speed_axis, load_factor,
+                                       delta_e_deg, uncertainty))
+    plan = _core.envelope_plan(source, h_axis, mach_axis, speed_axis, load_factor, delta_e_deg,
+                               uncertainty)
     hs = [h for h, _ in plan["points"]]
-    ms = [m for _, m in plan["points"]]
+    vs = [v for _, v in plan["points"]]
     futures = client.map(
-        point, hs, ms,
+        point, hs, vs,
         source=source,
         load_factor=plan["load_factor"],
         increment_rad=plan["increment_rad"],
         uncertainty=uncertainty,
+        speed_axis=plan["speed_axis"],
         retries=retries,
         pure=False,
     )
     points: List[Dict[str, Any]] = []
     failed: List[Tuple[float, float, str]] = []
-    for h, m, f in zip(hs, ms, futures):
+    field = plan["speed_axis"]
+    for h, v, f in zip(hs, vs, futures):
         try:
             points.append(f.result())
         except Exception as e:  # a task that failed on every try: reported, never dropped
-            failed.append((h, m, f"{type(e).__name__}: {e}"))
-            points.append({"altitude_m": h, "mach": m, "trimmed": False, "route": None,
+            failed.append((h, v, f"{type(e).__name__}: {e}"))
+            points.append({"altitude_m": h, field: v, "trimmed": False, "route": None,
                            "error": f"task failed after {retries} retries: {type(e).__name__}: {e}"})
-    env = assembled(source, plan["aircraft"], plan["elevator"], uncertainty, points)
+    env = assembled(source, plan, uncertainty, points)
     if failed:
         raise IncompleteEnvelope(failed, env)
     return env

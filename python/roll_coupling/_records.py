@@ -124,8 +124,15 @@ class Clearance(Record):
 
 
 class Envelope(Record):
-    """``model envelope --json``: every grid point, and arrays over altitude x Mach (rows by
-    altitude, columns by Mach, ready for ``pcolormesh(machs, altitudes_m, grid)``)."""
+    """``model envelope --json``: every grid point, and arrays over altitude x the grid's speed
+    (rows by altitude, columns by Mach, or by true airspeed for a grid given in ``speeds_m_s``:
+    ready for ``pcolormesh(env.speeds, env.altitudes_m, grid)``). ``speed_axis`` says which:
+    ``"mach"`` or ``"speed_m_s"``, the points' field the grid steps over."""
+
+    @property
+    def speed_axis(self) -> str:
+        """The points' field the grid steps over: ``"mach"`` or ``"speed_m_s"`` (m/s)."""
+        return str(self._data.get("speed_axis", "mach"))
 
     @property
     def altitudes_m(self) -> np.ndarray:
@@ -133,51 +140,90 @@ class Envelope(Record):
         return np.array(sorted({p["altitude_m"] for p in self._data["points"]}))
 
     @property
+    def speeds(self) -> np.ndarray:
+        """The grid's speeds, ascending: Mach numbers or true airspeeds (m/s), as
+        ``speed_axis`` says."""
+        return np.array(sorted({p[self.speed_axis] for p in self._data["points"]}))
+
+    def _axis(self, field: str, other: str) -> np.ndarray:
+        if self.speed_axis != field:
+            raise ValueError(
+                f"this envelope's grid is over {self.speed_axis!r}, not {field!r}: see "
+                f"{other}, and grid({field!r}) for each point's value")
+        return self.speeds
+
+    @property
     def machs(self) -> np.ndarray:
-        """The grid's Mach numbers, ascending."""
-        return np.array(sorted({p["mach"] for p in self._data["points"]}))
+        """The grid's Mach numbers, ascending (a grid over Mach; ``grid("mach")`` gives each
+        point's Mach on a grid over true airspeed)."""
+        return self._axis("mach", "speeds_m_s")
+
+    @property
+    def speeds_m_s(self) -> np.ndarray:
+        """The grid's true airspeeds, m/s, ascending (a grid over true airspeed;
+        ``grid("speed_m_s")`` gives each point's on a grid over Mach)."""
+        return self._axis("speed_m_s", "machs")
 
     def grid(self, path: str) -> np.ndarray:
         """The field ``path`` of every point (dotted for nested ones: ``"critical.p0"``,
-        ``"clearance.p0_lower"``) as a float array over altitude x Mach; NaN where a point has
-        none (untrimmable, no critical jump)."""
-        h, m = self.altitudes_m, self.machs
-        out = np.full((len(h), len(m)), np.nan)
-        row = {v: i for i, v in enumerate(h)}
-        col = {v: j for j, v in enumerate(m)}
+        ``"clearance.p0_lo"``, ``"validation.agrees"``) as a float array over altitude x the
+        grid's speed; NaN where a point has none (untrimmable, no critical jump, not
+        validated)."""
+        h, v = self.altitudes_m, self.speeds
+        out = np.full((len(h), len(v)), np.nan)
+        row = {x: i for i, x in enumerate(h)}
+        col = {x: j for j, x in enumerate(v)}
         for p in self._data["points"]:
-            v: Any = p
+            x: Any = p
             for key in path.split("."):
-                v = v.get(key) if isinstance(v, dict) else None
-            if isinstance(v, bool):
-                v = float(v)
-            if isinstance(v, (int, float)):
-                out[row[p["altitude_m"]], col[p["mach"]]] = v
+                x = x.get(key) if isinstance(x, dict) else None
+            if isinstance(x, bool):
+                x = float(x)
+            if isinstance(x, (int, float)):
+                out[row[p["altitude_m"]], col[p[self.speed_axis]]] = x
         return out
 
     @property
+    def validated(self) -> np.ndarray:
+        """Whether each point has the 6-DOF's verdict (``validate=True``), over altitude x
+        speed."""
+        return ~np.isnan(self.grid("validation.agrees"))
+
+    @property
+    def validation_agrees(self) -> np.ndarray:
+        """1 where the 6-DOF says what the criterion says, 0 where not, NaN where the point was
+        not validated; over altitude x speed."""
+        return self.grid("validation.agrees")
+
+    @property
+    def validation_jumps(self) -> np.ndarray:
+        """1 where the 6-DOF's roll rate jumps within the sweep, 0 where not, NaN where the
+        point was not validated; over altitude x speed."""
+        return self.grid("validation.jumps")
+
+    @property
     def p0(self) -> np.ndarray:
-        """Roll rate of the critical jump, rad/s, over altitude x Mach."""
+        """Roll rate of the critical jump, rad/s, over altitude x speed."""
         return self.grid("critical.p0")
 
     @property
     def delta_a_deg(self) -> np.ndarray:
-        """Aileron of the critical jump, deg, over altitude x Mach."""
+        """Aileron of the critical jump, deg, over altitude x speed."""
         return self.grid("critical.delta_a_deg")
 
     @property
     def margin_deg(self) -> np.ndarray:
-        """Aileron limit minus |critical aileron|, deg, over altitude x Mach."""
+        """Aileron limit minus |critical aileron|, deg, over altitude x speed."""
         return self.grid("margin_deg")
 
     @property
     def alpha_deg(self) -> np.ndarray:
-        """The trim's angle of attack, deg, over altitude x Mach."""
+        """The trim's angle of attack, deg, over altitude x speed."""
         return self.grid("alpha_deg")
 
     @property
     def trimmed(self) -> np.ndarray:
-        """Whether each point has a trim, over altitude x Mach."""
+        """Whether each point has a trim, over altitude x speed."""
         return self.grid("trimmed") == 1.0
 
     def records(self) -> List[Dict[str, Any]]:

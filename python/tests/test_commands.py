@@ -100,10 +100,105 @@ def test_envelope_equals_the_cli_json_and_its_arrays_the_csv(tmp_path):
                 assert (math.isnan(grid[i, j]) and cell in ("", "-")) or float(cell) == grid[i, j], (column, r)
 
 
-def test_envelope_axes_as_triples_or_numbers_mean_the_same():
-    a = rc.envelope("jsbsim:f104", (0, 3000, 3000), 0.6).to_dict()
+def test_envelope_axes_as_lists_arrays_or_numbers_mean_the_ranges():
+    a = rc.envelope("jsbsim:f104", [0, 3000], 0.6).to_dict()
     b = rc.envelope("jsbsim:f104", "0:3000:3000", "0.6").to_dict()
     assert a["points"] == b["points"]
+    c = rc.envelope("jsbsim:f104", np.arange(0.0, 3001.0, 3000.0), np.array([0.5, 0.75])).to_dict()
+    assert c == cli_json("envelope", "jsbsim:f104", "--altitude-m", "0:3000:3000", "--mach", "0.5:0.75:0.25",
+                         "--json")
+    assert rc.axis([0.3, 0.4, 0.5], "--mach") == "0.3:0.5:0.1"
+    for bad in ([0.5, 0.6, 0.8], [0.8, 0.6], []):
+        with pytest.raises(rc.InputError) as e:
+            rc.envelope("jsbsim:f104", "0", bad)
+        assert str(e.value).startswith("--mach [") and ("evenly spaced" in str(e.value) or "no values" in str(e.value))
+
+
+SPEEDS = ("jsbsim:f104", "0:6000:6000", "150:250:100")
+
+
+def isa_sound_speed(h):
+    """The U.S. Standard Atmosphere 1976's speed of sound below 11 km (its own constants), m/s."""
+    z = h * 6356766.0 / (6356766.0 + h)
+    return math.sqrt(1.4 * 8.31432 / 0.0289644 * (288.15 - 0.0065 * z))
+
+
+def test_envelope_over_true_airspeed_equals_the_cli_json_and_its_arrays_the_csv(tmp_path):
+    source, h, v = SPEEDS
+    env = rc.envelope(source, h, speeds_m_s=v)
+    out = tmp_path / "env"
+    expected = cli_json("envelope", source, "--altitude-m", h, "--speed", v, "--json", "--out", str(out))
+    assert env.to_dict() == expected
+    assert env.speed_axis == "speed_m_s"
+    assert list(env.altitudes_m) == [0.0, 6000.0]
+    assert list(env.speeds) == list(env.speeds_m_s) == [150.0, 250.0]
+    with pytest.raises(ValueError):
+        env.machs
+    mach = env.grid("mach")
+    assert mach.shape == (2, 2)
+    for i, alt in enumerate(env.altitudes_m):
+        for j, speed in enumerate(env.speeds):
+            assert abs(mach[i, j] / (speed / isa_sound_speed(alt)) - 1) < 1e-5
+    rows = list(csv.DictReader(io.StringIO((out / "envelope.csv").read_text())))
+    assert len(rows) == 4
+    for r in rows:
+        i = list(env.altitudes_m).index(float(r["altitude_m"]))
+        j = list(env.speeds).index(float(r["speed_m_s"]))
+        assert float(r["mach"]) == mach[i, j]
+        for column, grid in (("alpha_deg", env.alpha_deg), ("margin_deg", env.margin_deg)):
+            cell = r[column]
+            assert (math.isnan(grid[i, j]) and cell == "") or float(cell) == grid[i, j], (column, r)
+
+
+def test_envelope_clearance_over_true_airspeed_equals_the_cli_json():
+    got = rc.envelope_clearance("jsbsim:f104", "3000", speeds_m_s=[200.0], uncertainty="Cl_p=10%").to_dict()
+    expected = cli_json("envelope", "jsbsim:f104", "--altitude-m", "3000", "--speed", "200",
+                        "--uncertainty", "Cl_p=10%", "--json")
+    assert got == expected
+    assert got["speed_axis"] == "speed_m_s" and "clearance" in got["points"][0]
+
+
+def test_envelope_validate_equals_the_cli_json_and_gives_arrays():
+    env = rc.envelope("jsbsim:f104", "6000", "0.5:0.7:0.2", load_factor=0, validate=True, validate_sample=1.0)
+    expected = cli_json("envelope", "jsbsim:f104", "--altitude-m", "6000", "--mach", "0.5:0.7:0.2",
+                        "--load-factor", "0", "--validate", "--validate-sample", "1", "--json")
+    assert env.to_dict() == expected
+    assert env.validate_sample == 1.0
+    assert env.validated.shape == (1, 2)
+    for j, p in enumerate(expected["points"]):
+        v = p.get("validation")
+        assert env.validated[0, j] == (v is not None)
+        if v is not None:
+            assert env.validation_agrees[0, j] == float(v["agrees"])
+            assert env.validation_jumps[0, j] == float(v["jumps"])
+    records = env.records()
+    assert "validation.agrees" in records[0] or "validation_error" in records[0]
+
+
+@pytest.mark.parametrize(
+    "call, words",
+    [
+        (lambda: rc.envelope("jsbsim:f104", "0"), ["--mach or --speed is required"]),
+        (lambda: rc.envelope("jsbsim:f104", "0", 0.5, speeds_m_s=200), ["--mach and --speed: give one"]),
+        (lambda: rc.envelope("jsbsim:f104", "0", speeds_m_s="0:200:100"),
+         ["--speed: 0 is not a positive true airspeed, m/s"]),
+        (lambda: rc.envelope("jsbsim:f104", "0", 0.5, validate_sample=0.5), ["--validate-sample needs --validate"]),
+        (lambda: rc.envelope_clearance("jsbsim:f104", "0", uncertainty="10%"), ["--mach or --speed is required"]),
+    ],
+)
+def test_envelope_speed_axis_errors_name_the_options(call, words):
+    with pytest.raises(rc.InputError) as e:
+        call()
+    for w in words:
+        assert w in str(e.value)
+
+
+def test_speed_refusal_is_the_clis_message():
+    with pytest.raises(rc.InputError) as e:
+        rc.envelope("jsbsim:f104", "0", speeds_m_s="0:200:100")
+    done = cli("envelope", "jsbsim:f104", "--altitude-m", "0", "--speed", "0:200:100", check=False)
+    assert done.returncode == 2
+    assert done.stderr.strip() == f"error: {e.value}"
 
 
 @pytest.mark.parametrize(

@@ -86,7 +86,7 @@ def test_six_dof_takes_the_condition_as_options_and_refuses_as_the_cli():
 
 
 def test_validate_prints_and_writes_what_the_cli_does(tmp_path):
-    v = rc.validate("jsbsim:f104", altitude_m=6096, mach=0.53, delta_a_deg=(2, 6, 2), t_end=4.0,
+    v = rc.validate("jsbsim:f104", altitude_m=6096, mach=0.53, delta_a_deg=(2, 4, 6), t_end=4.0,
                     out=tmp_path / "py")
     printed = cli("validate", "jsbsim:f104", "--altitude-m", "6096", "--mach", "0.53",
                   "--delta-a-deg", "2:6:2", "--t-end", "4", "--out", str(tmp_path / "cli")).stdout

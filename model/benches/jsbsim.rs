@@ -9,6 +9,21 @@
 //! - `import_and_analyze_f104`: both, the figure of "import plus analyze of one model";
 //! - `analyze_f104_jump_part`: the analysis without the departures (Hopf points, landings),
 //!   which the certified route answers.
+//!
+//! Where `analyze` spends its time on a real jet, and the certified route against the exact
+//! path in the same run, on the F-104 imported at 6,000 m, Mach 0.6, trimmed at 1 g and
+//! analysed at the trim's elevator (`delta_e = 0`), as
+//! `model import jsbsim f104 --altitude-m 6000 --mach 0.6` and `model analyze` give it:
+//!
+//! - `routes::analyze_exact`: the exact path (`model analyze --exact`), the baseline;
+//! - `routes::analyze_routed`: what `model analyze` runs (the certified route with departures,
+//!   the exact path where it cannot certify: the F-104's aileron yaws, so its Hopf points fall
+//!   back);
+//! - `routes::analyze_routed_jump_part`: the same without departures, which the certified route
+//!   answers;
+//! - `routes::criterion_polys_exact`, `routes::hopf_polys_exact`: the exact path's stages, the
+//!   criterion polynomials (det A, trim, det J5, d specialised) and the Hopf polynomial (the
+//!   resultant in delta_a, in big rationals).
 
 use model::analysis::fast::analyze_routed_with;
 use model::jsbsim::condition::Speed;
@@ -67,4 +82,56 @@ fn import_and_analyze_f104() {
 fn analyze_f104_jump_part(bencher: divan::Bencher) {
     let text = import(&request()).expect("the F-104 imports");
     bencher.bench(|| analyze(&text, false));
+}
+
+/// The F-104 at 6,000 m, Mach 0.6, 1 g, by route and by stage of the exact path.
+mod routes {
+    use super::*;
+    use model::aircraft::Aircraft;
+    use model::analysis::{analyze, parametric, CriterionPolys, HopfPolys};
+
+    /// The imported F-104 at 6,000 m, Mach 0.6, 1 g.
+    fn f104() -> Aircraft {
+        let request = Request {
+            model: std::env::var("F104_XML").expect("set by main"),
+            root: None,
+            altitude_m: 6000.0,
+            speed: Speed::Mach(0.6),
+            alpha: Alpha::Trim(1.0),
+            settings: Vec::new(),
+        };
+        let text = import(&request).expect("the F-104 imports");
+        model::aircraft::parse(&text, "f104.toml").expect("the import loads")
+    }
+
+    #[divan::bench(sample_count = 10)]
+    fn analyze_exact(bencher: divan::Bencher) {
+        let ac = f104();
+        bencher.bench(|| analyze(divan::black_box(&ac), 0.0).expect("analysed"));
+    }
+
+    #[divan::bench(sample_count = 10)]
+    fn analyze_routed(bencher: divan::Bencher) {
+        let ac = f104();
+        bencher.bench(|| analyze_routed_with(divan::black_box(&ac), 0.0, true).expect("analysed"));
+    }
+
+    #[divan::bench(sample_count = 10)]
+    fn analyze_routed_jump_part(bencher: divan::Bencher) {
+        let ac = f104();
+        bencher.bench(|| analyze_routed_with(divan::black_box(&ac), 0.0, false).expect("analysed"));
+    }
+
+    #[divan::bench(sample_count = 10)]
+    fn criterion_polys_exact(bencher: divan::Bencher) {
+        let ac = f104();
+        bencher.bench(|| CriterionPolys::new(parametric(), divan::black_box(&ac), 0.0));
+    }
+
+    #[divan::bench(sample_count = 10)]
+    fn hopf_polys_exact(bencher: divan::Bencher) {
+        let ac = f104();
+        let cp = CriterionPolys::new(parametric(), &ac, 0.0);
+        bencher.bench(|| HopfPolys::new(divan::black_box(&cp), &ac, 0.0));
+    }
 }

@@ -46,6 +46,34 @@ pub enum Route {
     Exact(Uncertified),
 }
 
+impl Route {
+    /// `"certified"` or `"exact"`: the route's name, as `analyze --json` and the envelope
+    /// report it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Route::Certified(_) => "certified",
+            Route::Exact(_) => "exact",
+        }
+    }
+
+    /// Why the certified route did not answer (`None` when it did), in words.
+    pub fn fallback(self) -> Option<&'static str> {
+        let Route::Exact(why) = self else {
+            return None;
+        };
+        Some(match why {
+            Uncertified::Uncovered => {
+                "a case the certified route does not cover (the Hopf points of an aircraft \
+                 whose aileron yaws)"
+            }
+            Uncertified::Degenerate => "a polynomial that may vanish or drop in degree",
+            Uncertified::Sign => "a sign the enclosures could not decide",
+            Uncertified::Budget => "roots closer than the enclosures resolve",
+            Uncertified::Wide => "a root double precision cannot pin down",
+        })
+    }
+}
+
 /// The widest relative bracket the certified route reports; a root that double precision
 /// cannot pin down closer (an ill-conditioned root, e.g. next to a divergence roll rate) sends
 /// the aircraft to the exact path.

@@ -7,7 +7,7 @@ use super::clearance::{clear_point, PointClearance};
 use super::elevator::Elevator;
 use super::uncertainty::Uncertainty;
 use crate::aircraft;
-use crate::analysis::fast::{analyze_routed_with, Route};
+use crate::analysis::fast::analyze_routed_with;
 use crate::analysis::{Analysis, FirstDeparture};
 use crate::jsbsim::condition::{Condition, Speed};
 use crate::jsbsim::import::{trimmed_file, Loaded};
@@ -170,10 +170,7 @@ impl Point {
         self.aileron_limit_deg = ac.limits.aileron_deg;
         let delta_e = elevator.increment;
         let (a, route) = analyze_routed_with(&ac, delta_e, true).map_err(|e| e.to_string())?;
-        self.route = Some(match route {
-            Route::Certified(_) => "certified",
-            Route::Exact(_) => "exact",
-        });
+        self.route = Some(route.name());
         self.take(a);
         if let Some(u) = uncertainty {
             let boxed = u

@@ -13,7 +13,7 @@ use super::outputs::{begin_folder, commit_folder, default_folder, wrote};
 use super::progress::{progress_bar, say_how_long, set};
 use super::report::{report, ReportError, ReportSettings};
 use crate::aircraft::{self, shown, Aircraft};
-use crate::analysis::fast::analyze_routed_with;
+use crate::analysis::fast::{analyze_routed_with, Route};
 use crate::analysis::{analyze, Analysis};
 use crate::clearance::run::Run;
 use crate::continuation::{continue_equilibria, ContinuationParam, Diagram, Settings};
@@ -29,13 +29,31 @@ macro_rules! say {
     };
 }
 
+/// The JSON of `model analyze`: the analysis and, with `--certified`, the route that answered
+/// and, when the certified route fell back, why. The exact path's JSON (plain `--json`, or
+/// `--exact`) is the analysis alone.
+#[derive(serde::Serialize)]
+struct Routed<'a> {
+    #[serde(flatten)]
+    analysis: &'a Analysis,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    route: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    fallback: Option<&'static str>,
+}
+
 /// `model analyze`: the table of the certified route (the exact path with `--exact`), or JSON
 /// of the exact path (the certified route's with `--certified`).
 pub fn analyze_command(a: &AnalyzeArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
     let ac = load_aircraft(&a.aircraft)?;
-    let result = analysis_of(&ac, a)?;
+    let (result, route) = routed_analysis_of(&ac, a)?;
     if a.json {
-        let text = serde_json::to_string_pretty(&result).map_err(|e| e.to_string())?;
+        let routed = Routed {
+            analysis: &result,
+            route: route.map(Route::name),
+            fallback: route.and_then(Route::fallback),
+        };
+        let text = serde_json::to_string_pretty(&routed).map_err(|e| e.to_string())?;
         say!(out, "{text}");
     } else {
         write!(out, "{}", super::tables::analysis(&result)).map_err(stdout_error)?;
@@ -47,11 +65,20 @@ pub fn analyze_command(a: &AnalyzeArgs, out: &mut dyn Write) -> Result<ExitCode,
 /// caller): the exact path for `--exact` and for `--json` without `--certified`, else the
 /// certified route.
 pub fn analysis_of(ac: &Aircraft, a: &AnalyzeArgs) -> Result<Analysis, Failure> {
+    routed_analysis_of(ac, a).map(|(result, _)| result)
+}
+
+/// The analysis `model analyze` prints, with the route that answered (`None` when the exact path
+/// answered by request).
+fn routed_analysis_of(
+    ac: &Aircraft,
+    a: &AnalyzeArgs,
+) -> Result<(Analysis, Option<Route>), Failure> {
     let delta_e = elevator_of(ac, a.delta_e_deg)?;
     if a.exact || (a.json && !a.certified) {
-        analyze(ac, delta_e)
+        analyze(ac, delta_e).map(|r| (r, None))
     } else {
-        analyze_routed_with(ac, delta_e, true).map(|(a, _)| a)
+        analyze_routed_with(ac, delta_e, true).map(|(a, route)| (a, Some(route)))
     }
     .map_err(|e| named(ac, e))
 }

@@ -397,3 +397,25 @@ fn a_trimmed_aircraft_is_analysed_at_its_trim_and_says_it() {
     assert!(a.get("trim").is_none());
     assert_eq!(a["delta_e_rad"], 2f64.to_radians());
 }
+
+/// `--json --certified` says which route answered: aircraft A (no aileron yaw) is certified
+/// whole; the fighter's aileron yaws, so its Hopf points, and with them the whole answer, come
+/// from the exact path, with the reason. Plain `--json` is the exact path by request and has
+/// no route field.
+#[test]
+fn certified_json_names_the_route_and_why_it_fell_back() {
+    let a = json(&model(&["analyze", "A", "--json", "--certified"]));
+    assert_eq!(a["route"], "certified");
+    assert!(a.get("fallback").is_none());
+    let fighter = json(&model(&[
+        "analyze",
+        &repo("aircraft/fighter.toml"),
+        "--json",
+        "--certified",
+    ]));
+    assert_eq!(fighter["route"], "exact");
+    let why = fighter["fallback"].as_str().expect("a reason");
+    assert!(why.contains("aileron yaws"), "{why}");
+    let plain = json(&model(&["analyze", "A", "--json"]));
+    assert!(plain.get("route").is_none());
+}

@@ -41,6 +41,7 @@ pub mod num;
 pub(crate) mod tape;
 
 mod at_roll_rate;
+mod branch;
 mod characteristic;
 mod elimination;
 mod enclosed;
@@ -51,6 +52,7 @@ mod rolls;
 mod values;
 
 pub use at_roll_rate::{at_roll_rate, trim_condition_at, value_at, AtRollRate, Criterion};
+pub use branch::first_hopf_on_branch;
 pub use elimination::{eliminate, Coeff, Scalar};
 pub use enclosed::{EnclosedPolys, JumpPolys};
 pub use hopf::EnclosedHopf;

@@ -36,7 +36,7 @@ pub const PIECE_BUDGET: usize = 4000;
 /// either excludes zero (no root in the piece) or it does not, when the piece is split. A root
 /// is bracketed by a sign-definite cover of `[0, lo]` and a point `hi` of the opposite sign.
 /// Where the branch turns in P0 (the trim condition's slope in delta_a vanishes) or a piece
-/// cannot be decided within [`PIECE_BUDGET`] pieces, the answer is an [`Uncertified`] reason.
+/// cannot be decided within `PIECE_BUDGET` pieces, the answer is an [`Uncertified`] reason.
 pub fn first_hopf_on_branch(
     v: &Values,
     p_end: f64,

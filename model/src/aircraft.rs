@@ -24,7 +24,7 @@ mod exact;
 mod load;
 mod param;
 pub use exact::{decimal_to_rational, f64_to_rational, rational_to_f64};
-pub use load::{convert_file, load, parse, AircraftError, Location};
+pub use load::{convert_file, convert_text, load, parse, AircraftError, Location};
 pub use param::Param;
 
 /// Standard acceleration due to gravity, m/s^2: the g of the 7th-order model's g/V terms
@@ -58,7 +58,7 @@ pub struct Limits {
 }
 
 /// Range in which the linear aerodynamics are trusted, from the optional `[validity]` table, degrees.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Validity {
     /// |alpha| limit, deg (default 30).
     pub alpha_max_deg: f64,

@@ -27,7 +27,7 @@
 //! // negative aileron (l_delta_a < 0 rolls to positive p).
 //! let critical = a.critical.as_ref().unwrap();
 //! assert_eq!(critical.p0, a.jump[0].p0);
-//! assert!(critical.delta_a_rad < 0.0 && critical.valid);
+//! assert!(critical.delta_a_rad < 0.0 && critical.within_validity);
 //! ```
 
 use crate::aircraft::Aircraft;
@@ -75,7 +75,7 @@ pub struct JumpPoint {
     /// `None` when the file gives no limit for them.
     pub within_limits: Option<bool>,
     /// Whether |alpha| and |beta| are within the `[validity]` range of the linear aerodynamics.
-    pub valid: bool,
+    pub within_validity: bool,
     /// For a jump point: the stable equilibria at the same aileron the jump can land on (empty:
     /// divergence); absent for poles and Hopf points.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -120,7 +120,7 @@ pub struct DeparturePoint {
     /// Whether aileron, rudder (and elevator) are within `[limits]`; `None` without limits.
     pub within_limits: Option<bool>,
     /// Whether |alpha| is within the `[validity]` range (beta = 0 here).
-    pub valid: bool,
+    pub within_validity: bool,
 }
 
 /// The zero-sideslip part of the analysis (section V).
@@ -156,6 +156,16 @@ pub struct Analysis {
     pub critical: Option<JumpPoint>,
     /// Why there is no critical jump, or `None` when there is one.
     pub critical_note: Option<String>,
+    /// The aircraft's aileron limit (`[limits]`), deg; `None` when the file gives none.
+    pub aileron_limit_deg: Option<f64>,
+    /// The margin of the critical jump to the aileron limit, deg: the limit minus the critical
+    /// |delta_a|. Zero or positive: a full-stick roll reaches the jump, with this much travel
+    /// to spare; negative: the jump lies this far beyond the stick's travel. The envelope's
+    /// `margin_deg` is the same quantity. `None` without a limit or a critical jump.
+    pub margin_deg: Option<f64>,
+    /// The range of |alpha| and |beta| the aircraft's linear aerodynamics are trusted in
+    /// (`[validity]`, 30 deg each by default): each row's `within_validity` is checked against it.
+    pub validity: crate::aircraft::Validity,
     /// The aircraft's [`warnings`](crate::aircraft::Aircraft::warnings): what its file gives
     /// that no rigid body has, analysed as given (absent from JSON when empty).
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -331,6 +341,15 @@ pub(crate) struct Found {
     pub lateral_authority: bool,
 }
 
+/// The aileron limit of `aircraft` minus the |delta_a| of `point`, deg (see
+/// [`Analysis::margin_deg`]); `None` without a limit.
+pub fn margin_deg(aircraft: &Aircraft, point: &JumpPoint) -> Option<f64> {
+    aircraft
+        .limits
+        .aileron_deg
+        .map(|limit| limit - point.delta_a_deg.abs())
+}
+
 impl Found {
     /// The jump part of the analysis (no Hopf points, landings or first departure) and the
     /// index of the critical jump in its `jump` list.
@@ -411,7 +430,7 @@ impl Found {
                     delta_r_rad: dr,
                     delta_r_deg: dr.to_degrees(),
                     within_limits: aircraft.within_limits(da, delta_e_rad, Some(dr)),
-                    valid: aircraft.valid(alpha, 0.0),
+                    within_validity: aircraft.valid(alpha, 0.0),
                 }
             })
             .collect();
@@ -420,6 +439,9 @@ impl Found {
             delta_e_rad,
             trim: aircraft.trim_state(),
             critical: critical.map(|i: usize| jump[i].clone()),
+            margin_deg: critical.and_then(|i| margin_deg(aircraft, &jump[i])),
+            aileron_limit_deg: aircraft.limits.aileron_deg,
+            validity: aircraft.validity,
             critical_note,
             warnings: aircraft.warnings.clone(),
             divergence_roll_rates: self.divergence.clone(),

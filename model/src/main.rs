@@ -61,10 +61,9 @@ enum Command {
     Envelope(EnvelopeArgs),
     /// Print the dimensional principal-axis TOML equivalent to a nondimensional body-axis file.
     Convert(ConvertArgs),
-    /// Write an aircraft file from another tool's model: `import jsbsim <MODEL> --altitude-m H
-    /// (--mach M | --speed V) [--load-factor N | --alpha-deg A] [--set PROPERTY=VALUE]...
-    /// [--out FILE] [--jsbsim-root DIR]`, or `import jsbsim --list`.
-    #[command(disable_help_flag = true)]
+    /// Write an aircraft file from a JSBSim model, trimmed at n g (1 g unless --load-factor or
+    /// --alpha-deg); `import jsbsim --help` for its options.
+    #[command(disable_help_flag = true, override_help = model::jsbsim::cli::HELP)]
     Import {
         /// The source (`jsbsim`) and its arguments.
         #[arg(trailing_var_arg = true, allow_hyphen_values = true, num_args = 0..)]

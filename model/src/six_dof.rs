@@ -6,8 +6,8 @@
 //! Data flow: [`state`] (the body's state and its attitude), [`airframe`] (the forces and
 //! moments of the model at a state, the import's evaluation with the property names resolved
 //! once), [`motion`] (the equations of motion), [`run`] (the start from the import's n-g trim,
-//! the surfaces held, the integration), [`history`] (what a run records, as CSV) and [`jump`] (the rule that calls
-//! a jump in a sweep of aileron steps).
+//! the surfaces held, the integration), [`history`] (what a run records, as CSV), [`jump`] (the rule that calls
+//! a jump in a sweep of aileron steps) and [`mod@sweep`] (a sweep's runs and verdict).
 
 pub mod airframe;
 pub mod history;
@@ -15,6 +15,8 @@ pub mod jump;
 pub mod motion;
 pub mod run;
 pub mod state;
+pub mod sweep;
 
 pub use history::History;
 pub use run::{simulate, Settings, Thrust};
+pub use sweep::{sweep, Sweep};

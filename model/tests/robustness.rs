@@ -168,12 +168,14 @@ fn finite_aircraft(ac: &Aircraft) -> bool {
 /// Every number of an analysis, through its JSON form (a non-finite f64 becomes null).
 fn finite_analysis(a: &Analysis) -> bool {
     // Null is a number that did not make it (NaN or inf in serde_json), except where it means
-    // "none": no critical jump (and then no note's absence), no limit given, no loss of
-    // stability on the primary branch, a zero-sideslip section not withheld.
-    const MAY_BE_NULL: [&str; 5] = [
+    // "none": no critical jump (and then no note's absence), no limit given (and then no
+    // margin), no loss of stability on the primary branch, a zero-sideslip section not withheld.
+    const MAY_BE_NULL: [&str; 7] = [
         "critical",
         "critical_note",
         "within_limits",
+        "aileron_limit_deg",
+        "margin_deg",
         "first_departure",
         "withheld",
     ];

@@ -2,7 +2,8 @@
 
 Every function is a command of ``model`` with the same names and defaults, computed by the same
 library (not by parsing its output): ``analyze``, ``continue_``, ``simulate``, ``clear``,
-``import_jsbsim``, ``envelope`` and ``envelope_clearance`` (the envelope with each point's
+``import_jsbsim``, ``import_jsbsim_list``, ``convert``, ``report``, ``plot``, ``validate``,
+``envelope`` and ``envelope_clearance`` (the envelope with each point's
 uncertainty box cleared, on the local cores or spread over a Dask cluster). Bad input raises
 ``InputError`` with the command line's message. Long work releases the GIL; Ctrl-C interrupts
 the wait.
@@ -19,7 +20,18 @@ from typing import Any, Dict, Mapping, Optional, Sequence, Tuple, Union
 from . import _core
 from ._core import InputError
 from ._dask import IncompleteEnvelope, envelope_clearance
-from ._records import Aircraft, Analysis, Clearance, Diagram, Envelope, Record, TimeHistory
+from ._records import (
+    Aircraft,
+    Analysis,
+    Clearance,
+    Diagram,
+    Envelope,
+    Folder,
+    Record,
+    SixDofHistory,
+    TimeHistory,
+    Validation,
+)
 from ._toml import toml_text
 
 __all__ = [
@@ -29,13 +41,21 @@ __all__ = [
     "Clearance",
     "Diagram",
     "Envelope",
+    "Folder",
     "Record",
+    "SixDofHistory",
     "TimeHistory",
+    "Validation",
     "analyze",
     "continue_",
     "simulate",
     "clear",
     "import_jsbsim",
+    "import_jsbsim_list",
+    "convert",
+    "report",
+    "plot",
+    "validate",
     "envelope",
     "envelope_clearance",
     "IncompleteEnvelope",
@@ -100,11 +120,33 @@ def simulate(
     t_end: float = 20.0,
     zero_sideslip: bool = False,
     pss: bool = False,
-) -> TimeHistory:
+    six_dof: bool = False,
+    altitude_m: Optional[float] = None,
+    mach: Optional[float] = None,
+    load_factor: Optional[float] = None,
+    thrust: str = "off",
+    dt: Optional[float] = None,
+    out: Optional["os.PathLike[str]"] = None,
+) -> Union[TimeHistory, SixDofHistory]:
     """``model simulate AIRCRAFT --delta-a-deg D``: the time history of an aileron step of
     ``delta_a_deg`` from the trim over ``t_end`` s (7th-order model, the PSS model with
     ``pss=True``; the rudder on the zero-sideslip schedule with ``zero_sideslip=True``). Angles
-    in rad, rates in rad/s, as in ``--csv``."""
+    in rad, rates in rad/s, as in ``--csv``.
+
+    With ``six_dof=True`` (``--six-dof``) the native nonlinear 6-DOF of a ``"jsbsim:MODEL ..."``
+    source from its trim at ``load_factor`` g (default 1) at ``altitude_m`` and ``mach`` (or
+    inside the source): a :class:`SixDofHistory`; ``thrust`` ``"off"`` (gliding) or ``"trim"``,
+    ``dt`` the step in s (default 1/120), ``out`` a folder for its figure (SVG, PNG, CSV)."""
+    if six_dof:
+        arg = aircraft if isinstance(aircraft, str) else _aircraft(aircraft)[0]
+        return SixDofHistory(_core.simulate_six_dof(
+            arg, delta_a_deg, t_end, altitude_m, mach, load_factor, thrust, dt,
+            None if out is None else os.fspath(out), delta_e_deg, zero_sideslip, pss))
+    given = {"altitude_m": altitude_m, "mach": mach, "load_factor": load_factor, "dt": dt, "out": out}
+    for name, value in list(given.items()) + [("thrust", None if thrust == "off" else thrust)]:
+        if value is not None:
+            flag = "--" + name.replace("_", "-")
+            raise InputError(f"{flag}: an option of the 6-DOF (expected six_dof=True, as --six-dof)")
     arg, toml = _aircraft(aircraft)
     return TimeHistory(_core.simulate(arg, delta_a_deg, toml, delta_e_deg, t_end, zero_sideslip, pss))
 
@@ -194,3 +236,79 @@ def envelope(
     ``uncertainty`` (``"10%"``, ``"Cl_p=10%,Cn_r=0.02"`` or a TOML file) every point is also the
     certified clearance of its box. The result's arrays are over altitude x Mach."""
     return Envelope(_core.envelope(source, axis(altitudes_m), axis(machs), load_factor, delta_e_deg, uncertainty))
+
+
+def import_jsbsim_list(
+    analyze: bool = False,
+    altitude_m: Optional[float] = None,
+    mach: Optional[float] = None,
+    speed: Optional[float] = None,
+    load_factor: Optional[float] = None,
+    alpha_deg: Optional[float] = None,
+    settings: Optional[Mapping[str, float]] = None,
+    jsbsim_root: Optional[str] = None,
+) -> str:
+    """``model import jsbsim --list``: JSBSim's catalogue, every model and whether it imports
+    (read and evaluated at a reference condition). With ``analyze=True`` (``--list --analyze``)
+    the Markdown table of every model imported at ``altitude_m`` and ``mach`` (or ``speed``),
+    linearised at its trim at ``load_factor`` g (default 1) and analysed: its critical jump and
+    first departure. The text the command prints."""
+    args = ["--list"] + (["--analyze"] if analyze else [])
+    for flag, value in (("--altitude-m", altitude_m), ("--mach", mach), ("--speed", speed),
+                        ("--load-factor", load_factor), ("--alpha-deg", alpha_deg)):
+        if value is not None:
+            args += [flag, str(value) if isinstance(value, int) else _number(value)]
+    for k, v in (settings or {}).items():
+        args += ["--set", f"{k}={_number(v)}"]
+    if jsbsim_root is not None:
+        args += ["--jsbsim-root", os.fspath(jsbsim_root)]
+    return _core.import_jsbsim_list(args)
+
+
+def convert(file: "Union[str, os.PathLike[str]]") -> str:
+    """``model convert FILE``: the dimensional principal-axis aircraft TOML of a nondimensional
+    body-axis file (its text, as the command prints it)."""
+    return _core.convert(os.fspath(file))
+
+
+def _out(out: Optional["os.PathLike[str]"]) -> Optional[str]:
+    return None if out is None else os.fspath(out)
+
+
+def report(aircraft: AircraftLike, out: Optional["os.PathLike[str]"] = None,
+           delta_e_deg: Optional[float] = None) -> Folder:
+    """``model report AIRCRAFT [--out DIR]``: the figures, tables, summary.md and summary.json
+    written into ``out`` (default ``out/report-<aircraft>`` under the working directory,
+    ``<aircraft>`` the letter, the file's stem, the JSBSim model or a TOML text's name), the
+    folder replaced whole or not at all. Returns the folder, its files (relative paths) and the
+    sections skipped with their reasons; a file that cannot be written raises ``OSError``."""
+    arg, toml = _aircraft(aircraft)
+    return Folder(_core.report(arg, toml, _out(out), delta_e_deg))
+
+
+def plot(aircraft: AircraftLike, out: Optional["os.PathLike[str]"] = None,
+         delta_e_deg: Optional[float] = None) -> Folder:
+    """``model plot AIRCRAFT [--out DIR]``: the report's figures alone (default folder
+    ``out/plot-<aircraft>``), as :func:`report`."""
+    arg, toml = _aircraft(aircraft)
+    return Folder(_core.plot(arg, toml, _out(out), delta_e_deg))
+
+
+def validate(
+    source: str,
+    altitude_m: Optional[float] = None,
+    mach: Optional[float] = None,
+    load_factor: Optional[float] = None,
+    delta_a_deg: Optional[Axis] = None,
+    t_end: float = 10.0,
+    out: Optional["os.PathLike[str]"] = None,
+) -> Validation:
+    """``model validate jsbsim:MODEL``: aileron steps ``delta_a_deg`` (``"A:B:STEP"`` or a
+    triple, deg of |delta_a|; default 1 to the aileron limit + 4, every 1) of ``t_end`` s in the
+    7th-order model and in the native 6-DOF from the same trim at ``load_factor`` g (default 1),
+    at ``altitude_m`` and ``mach`` (or inside the source). Returns each model's settled |p|
+    (mean over the last 2 s, rad/s) at each step, the criterion's critical aileron, the lines
+    the command prints (a verdict per model) and the folder of the plateau figure (default
+    ``out/validate-<model>``)."""
+    steps = None if delta_a_deg is None else axis(delta_a_deg)
+    return Validation(_core.validate(source, altitude_m, mach, load_factor, steps, t_end, _out(out)))

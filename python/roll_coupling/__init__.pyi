@@ -48,6 +48,42 @@ class TimeHistory(Record):
     steady: Record
     def records(self) -> List[Dict[str, float]]: ...
 
+class SixDofHistory(Record):
+    model: str
+    summary: str
+    trim: Record
+    jsbsim_aileron: float
+    thrust_lbs: float
+    folder: Optional[Record]
+    t: np.ndarray
+    alpha: np.ndarray
+    beta: np.ndarray
+    p: np.ndarray
+    q: np.ndarray
+    r: np.ndarray
+    speed: np.ndarray
+    altitude: np.ndarray
+    mach: np.ndarray
+    phi: np.ndarray
+    theta: np.ndarray
+    psi: np.ndarray
+    def records(self) -> List[Dict[str, float]]: ...
+
+class Folder(Record):
+    folder: str
+    files: List[str]
+    skipped: List[str]
+
+class Validation(Record):
+    delta_a_deg: np.ndarray
+    seventh_order_p: np.ndarray
+    six_dof_p: np.ndarray
+    critical_deg: Optional[float]
+    limit_deg: Optional[float]
+    folder: str
+    files: List[str]
+    lines: List[str]
+
 class Diagram(Record):
     aircraft: str
     parameter: str
@@ -59,6 +95,7 @@ class Clearance(Record):
 
 class Envelope(Record):
     source: str
+    aircraft: str
     elevator: str
     untrimmed: int
     exact_fallbacks: int
@@ -98,8 +135,11 @@ def continue_(aircraft: AircraftLike, param: str = ..., min_deg: float = ..., ma
     """`model continue AIRCRAFT --json`."""
 
 def simulate(aircraft: AircraftLike, delta_a_deg: float, delta_e_deg: Optional[float] = ..., t_end: float = ...,
-             zero_sideslip: bool = ..., pss: bool = ...) -> TimeHistory:
-    """`model simulate AIRCRAFT --delta-a-deg D`."""
+             zero_sideslip: bool = ..., pss: bool = ..., six_dof: bool = ..., altitude_m: Optional[float] = ...,
+             mach: Optional[float] = ..., load_factor: Optional[float] = ..., thrust: str = ...,
+             dt: Optional[float] = ..., out: Optional[os.PathLike[str]] = ...) -> Union[TimeHistory, SixDofHistory]:
+    """`model simulate AIRCRAFT --delta-a-deg D`; with six_dof=True `--six-dof`, the native 6-DOF
+    of a jsbsim: source (a SixDofHistory)."""
 
 def clear(aircraft: AircraftLike, uncertainty: Optional[Mapping[str, Any]] = ..., delta_e_deg: Optional[float] = ...,
           delta_e_range: Optional[str] = ..., samples: int = ..., tolerance: float = ...,
@@ -121,3 +161,25 @@ def envelope_clearance(source: str, altitudes_m: Axis, machs: Axis, uncertainty:
                        load_factor: Optional[float] = ..., delta_e_deg: Optional[float] = ...,
                        client: Any = ..., retries: int = ...) -> Envelope:
     """The envelope with every point's box cleared, locally or one Dask task per point."""
+
+def import_jsbsim_list(analyze: bool = ..., altitude_m: Optional[float] = ..., mach: Optional[float] = ...,
+                       speed: Optional[float] = ..., load_factor: Optional[float] = ...,
+                       alpha_deg: Optional[float] = ..., settings: Optional[Mapping[str, float]] = ...,
+                       jsbsim_root: Optional[str] = ...) -> str:
+    """`model import jsbsim --list [--analyze] ...`: the text the command prints."""
+
+def convert(file: Union[str, os.PathLike[str]]) -> str:
+    """`model convert FILE`: the dimensional principal-axis TOML."""
+
+def report(aircraft: AircraftLike, out: Optional[os.PathLike[str]] = ...,
+           delta_e_deg: Optional[float] = ...) -> Folder:
+    """`model report AIRCRAFT [--out DIR]` (default out/report-<aircraft>)."""
+
+def plot(aircraft: AircraftLike, out: Optional[os.PathLike[str]] = ...,
+         delta_e_deg: Optional[float] = ...) -> Folder:
+    """`model plot AIRCRAFT [--out DIR]` (default out/plot-<aircraft>)."""
+
+def validate(source: str, altitude_m: Optional[float] = ..., mach: Optional[float] = ...,
+             load_factor: Optional[float] = ..., delta_a_deg: Optional[Axis] = ..., t_end: float = ...,
+             out: Optional[os.PathLike[str]] = ...) -> Validation:
+    """`model validate jsbsim:MODEL` (default folder out/validate-<model>)."""

@@ -33,10 +33,12 @@ def point(altitude_m: float, mach: float, source: str, load_factor: float, incre
     return _core.envelope_point(source, altitude_m, mach, load_factor, increment_rad, uncertainty)
 
 
-def assembled(source: str, elevator: str, uncertainty: Optional[str], points: List[Dict[str, Any]]) -> Envelope:
+def assembled(source: str, aircraft: str, elevator: str, uncertainty: Optional[str],
+              points: List[Dict[str, Any]]) -> Envelope:
     """The envelope's JSON around its points, as ``model envelope`` writes it."""
     data: Dict[str, Any] = {
         "source": source,
+        "aircraft": aircraft,
         "elevator": elevator,
         "untrimmed": sum(1 for p in points if not p["trimmed"]),
         "exact_fallbacks": sum(1 for p in points if p["route"] == "exact"),
@@ -93,7 +95,7 @@ def envelope_clearance(
             failed.append((h, m, f"{type(e).__name__}: {e}"))
             points.append({"altitude_m": h, "mach": m, "trimmed": False, "route": None,
                            "error": f"task failed after {retries} retries: {type(e).__name__}: {e}"})
-    env = assembled(source, plan["elevator"], uncertainty, points)
+    env = assembled(source, plan["aircraft"], plan["elevator"], uncertainty, points)
     if failed:
         raise IncompleteEnvelope(failed, env)
     return env

@@ -79,6 +79,41 @@ class TimeHistory(Record):
         return [dict(zip(names, row)) for row in zip(*(self._data[s] for s in names))]
 
 
+class SixDofHistory(Record):
+    """``model simulate --six-dof``: the native 6-DOF's time history, every series a numpy array
+    (the columns of its ``--csv``: SI units and rad), the trim it started from and the summary
+    line the command prints."""
+
+    SERIES = ("t", "alpha", "beta", "p", "q", "r", "speed", "altitude", "mach", "phi", "theta", "psi")
+
+    def __getattr__(self, name: str) -> Any:
+        if name in SixDofHistory.SERIES:
+            return np.asarray(self._data[name], dtype=float)
+        return super().__getattr__(name)
+
+    def records(self) -> List[Dict[str, float]]:
+        """One dict per sample (for ``pandas.DataFrame``)."""
+        return [dict(zip(SixDofHistory.SERIES, row)) for row in zip(*(self._data[s] for s in SixDofHistory.SERIES))]
+
+
+class Folder(Record):
+    """What ``model report`` or ``model plot`` wrote: ``folder``, its ``files`` (paths relative
+    to it) and the sections ``skipped`` with their reasons."""
+
+
+class Validation(Record):
+    """``model validate``: the aileron steps (``delta_a_deg``), each model's settled |p| at each
+    (``seventh_order_p``, ``six_dof_p``, rad/s, numpy arrays), ``critical_deg``, ``limit_deg``,
+    the printed ``lines``, the ``folder`` of the plateau figure and its ``files``."""
+
+    SERIES = ("delta_a_deg", "seventh_order_p", "six_dof_p")
+
+    def __getattr__(self, name: str) -> Any:
+        if name in Validation.SERIES:
+            return np.asarray(self._data[name], dtype=float)
+        return super().__getattr__(name)
+
+
 class Diagram(Record):
     """``model continue --json``: the branches of the PSS equilibria and their special points."""
 

@@ -1,10 +1,12 @@
-//! The commands `analyze`, `continue`, `simulate`, `clear` and `import jsbsim` for Python: the
-//! options filled in as the command line's parser fills them (the same defaults, checked by the
+//! The commands `analyze`, `continue`, `simulate`, `clear`, `convert` and `import jsbsim` (with
+//! its `--list`) for Python: the options filled in as the command line's parser fills them (the same defaults, checked by the
 //! same functions, refused with the same messages), the result as its JSON's objects.
 
 use crate::aircraft::load;
 use crate::run::{detached, raised, to_python};
-use model::present::commands::{analysis_of, diagram_of, history_of, runs_of, steady_window};
+use model::present::commands::{
+    diagram_of, history_of, routed_analysis_of, runs_of, steady_window, Routed,
+};
 use model::present::options::{AnalyzeArgs, ClearArgs, ContinueArgs, SimulateArgs};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -27,9 +29,10 @@ pub fn analyze<'py>(
         json: true,
         exact: false,
         certified,
+        all: false,
     };
-    let result = detached(py, move || analysis_of(&ac, &args))?.map_err(raised)?;
-    to_python(py, &result)
+    let (result, route) = detached(py, move || routed_analysis_of(&ac, &args))?.map_err(raised)?;
+    to_python(py, &Routed::new(&result, route))
 }
 
 /// `model continue AIRCRAFT --json`.
@@ -154,4 +157,29 @@ pub fn import_jsbsim<'py>(py: Python<'py>, spec: &str) -> PyResult<Bound<'py, Py
         })
     });
     to_python(py, &(text, trim))
+}
+
+/// `model import jsbsim --list [--analyze] ...` with the words after `jsbsim` in `args`: the
+/// catalogue (every model and whether it reads), or with `--analyze` the table of every model
+/// analysed at the flight condition in `args`; the text the command prints.
+#[pyfunction]
+pub fn import_jsbsim_list(py: Python<'_>, args: Vec<String>) -> PyResult<String> {
+    let mut all = vec!["jsbsim".to_string()];
+    all.extend(args);
+    let text = detached(py, move || {
+        if all.iter().any(|a| a == "--analyze") {
+            model::present::catalogue::table(&all)
+        } else {
+            model::jsbsim::cli::listing_of(&all)
+        }
+    })?;
+    text.map_err(|m| raised(m.into()))
+}
+
+/// `model convert FILE`: the dimensional principal-axis TOML of a nondimensional body-axis
+/// file, the text the command prints.
+#[pyfunction]
+pub fn convert(py: Python<'_>, file: std::path::PathBuf) -> PyResult<String> {
+    let text = detached(py, move || model::aircraft::convert_file(&file))?;
+    text.map_err(|e| raised(e.to_string().into()))
 }

@@ -31,6 +31,8 @@ fn args(
         json: true,
         out: None,
         uncertainty,
+        validate: false,
+        validate_sample: 0.1,
     }
 }
 
@@ -92,6 +94,7 @@ pub fn envelope_plan<'py>(
             "load_factor": e.load_factor,
             "increment_rad": e.increment,
             "elevator": e.to_string(),
+            "aircraft": model::envelope::map::aircraft_name(&plan.loaded, source),
         }),
     )
 }

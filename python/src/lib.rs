@@ -7,6 +7,7 @@
 mod aircraft;
 mod commands;
 mod envelope;
+mod folders;
 mod run;
 
 use pyo3::prelude::*;
@@ -20,6 +21,12 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(commands::simulate, m)?)?;
     m.add_function(wrap_pyfunction!(commands::clear, m)?)?;
     m.add_function(wrap_pyfunction!(commands::import_jsbsim, m)?)?;
+    m.add_function(wrap_pyfunction!(commands::import_jsbsim_list, m)?)?;
+    m.add_function(wrap_pyfunction!(commands::convert, m)?)?;
+    m.add_function(wrap_pyfunction!(folders::report, m)?)?;
+    m.add_function(wrap_pyfunction!(folders::plot, m)?)?;
+    m.add_function(wrap_pyfunction!(folders::validate, m)?)?;
+    m.add_function(wrap_pyfunction!(folders::simulate_six_dof, m)?)?;
     m.add_function(wrap_pyfunction!(envelope::envelope, m)?)?;
     m.add_function(wrap_pyfunction!(envelope::envelope_plan, m)?)?;
     m.add_function(wrap_pyfunction!(envelope::envelope_point, m)?)?;

@@ -6,6 +6,8 @@
 //! has the shape the documentation gives. Skipped with a message when the JSBSim models are not
 //! installed.
 
+mod support;
+
 use model::aircraft;
 use model::analysis::fast::analyze_routed_with;
 use model::envelope::source::Source;
@@ -34,6 +36,8 @@ fn args(source: &str, altitude_m: &str, mach: &str) -> EnvelopeArgs {
         json: true,
         out: None,
         uncertainty: None,
+        validate: false,
+        validate_sample: 0.1,
     }
 }
 
@@ -616,4 +620,119 @@ fn the_legends_tell_no_jump_from_not_analysed_and_unknown_travel() {
             assert!(entries.contains(&want.to_string()), "{stem}: {entries:?}");
         }
     }
+}
+
+/// JSBSim's verdict over the F-104's aileron steps `from..=to` (1 deg apart, 10 s each) at a
+/// 0-g trim, by the oracle's own rule: the step past its jump, if any.
+fn jsbsim_jump_to(altitude_m: f64, mach: f64, from: f64, to: f64) -> Option<f64> {
+    let v = support::oracle::six_dof(
+        "f104",
+        (altitude_m, mach, 0.0),
+        &[
+            "--flat-earth".into(),
+            "--sweep".into(),
+            format!("{from}:{to}:1"),
+            "--time".into(),
+            "10".into(),
+        ],
+    );
+    (v["jump"]["jump"] == Value::Bool(true)).then(|| v["jump"]["between_deg"][1].as_f64().unwrap())
+}
+
+/// `--validate` on the F-104 at 0 g over a small grid (two points that predict a jump within
+/// the aileron limit, two that do not): with `--validate-sample 1` every analysed point has the
+/// 6-DOF's verdict in the JSON and the CSV and the agreement map is written; with
+/// `--validate-sample 0` only the predicted jumps are validated; one predicted point's verdict
+/// is JSBSim's over the same aileron steps, within one step; bad options are refused.
+#[test]
+fn validate_gives_the_6_dof_verdict_at_predicted_jumps_and_a_sample() {
+    if !installed() {
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("envelope-validate-{}", std::process::id()));
+    let mut a = args("jsbsim:f104", "2000:10000:8000", "0.6:0.8:0.2");
+    a.load_factor = Some(0.0);
+    a.validate = true;
+    a.validate_sample = 1.0;
+    a.out = Some(dir.clone());
+    let mut out = Vec::new();
+    command(&a, &mut out).unwrap();
+    let v: Value = serde_json::from_slice(&out).unwrap();
+    let points = v["points"].as_array().unwrap();
+    let predicted = |p: &Value| p["margin_deg"].as_f64().is_some_and(|m| m >= 0.0);
+    assert_eq!(points.iter().filter(|p| predicted(p)).count(), 2);
+    for p in points {
+        let val = &p["validation"];
+        assert_eq!(val["predicted"].as_bool(), Some(predicted(p)), "{p}");
+        let jumps = val["jumps"].as_bool().unwrap();
+        assert_eq!(val["between_deg"].is_array(), jumps, "{p}");
+        let [from, to] = [0, 1].map(|i| val["swept_deg"][i].as_f64().unwrap());
+        if predicted(p) {
+            let c = p["critical"]["delta_a_deg"].as_f64().unwrap().abs();
+            assert!(from < c && c < to, "{p}");
+        } else {
+            assert_eq!(to, p["aileron_limit_deg"].as_f64().unwrap(), "{p}");
+        }
+    }
+    // One predicted point against JSBSim's own sweep over the same steps.
+    let p = points.iter().find(|p| predicted(p)).unwrap();
+    let val = &p["validation"];
+    let ours = val["between_deg"][1].as_f64();
+    let [from, to] = [0, 1].map(|i| val["swept_deg"][i].as_f64().unwrap());
+    let (h, m) = (
+        p["altitude_m"].as_f64().unwrap(),
+        p["mach"].as_f64().unwrap(),
+    );
+    if std::process::Command::new("python3")
+        .args(["-c", "import jsbsim"])
+        .status()
+        .is_ok_and(|s| s.success())
+    {
+        let theirs = jsbsim_jump_to(h, m, from, to);
+        assert!(
+            ours.zip(theirs).is_some_and(|(a, b)| (a - b).abs() <= 1.0) || ours == theirs,
+            "{h} m Mach {m}: 6-DOF {ours:?}, JSBSim {theirs:?}"
+        );
+    }
+    let csv = std::fs::read_to_string(dir.join("envelope.csv")).unwrap();
+    assert!(csv
+        .lines()
+        .next()
+        .unwrap()
+        .ends_with(",validation_agrees,validation_mach_change"));
+    assert!(
+        csv.lines().skip(1).all(|row| row
+            .split(',')
+            .nth(19)
+            .is_some_and(|j| j == "true" || j == "false")),
+        "{csv}"
+    );
+    for ext in ["svg", "png", "csv"] {
+        assert!(
+            dir.join(format!("validation.{ext}")).is_file(),
+            "validation.{ext}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    // Without the sample, only the predicted jumps.
+    a.validate_sample = 0.0;
+    a.out = None;
+    let mut out = Vec::new();
+    command(&a, &mut out).unwrap();
+    let v: Value = serde_json::from_slice(&out).unwrap();
+    for p in v["points"].as_array().unwrap() {
+        assert_eq!(p.get("validation").is_some(), predicted(p), "{p}");
+    }
+    // Bad options: a sample outside 0..1, an elevator increment the 6-DOF does not hold.
+    a.validate_sample = 1.5;
+    assert!(matches!(
+        command(&a, &mut Vec::new()),
+        Err(Failure::Input(_))
+    ));
+    a.validate_sample = 0.1;
+    a.delta_e_deg = Some(1.0);
+    assert!(matches!(
+        command(&a, &mut Vec::new()),
+        Err(Failure::Input(_))
+    ));
 }

@@ -40,6 +40,8 @@ fn args(altitude_m: &str, mach: &str, uncertainty: &str) -> EnvelopeArgs {
         load_factor: None,
         delta_e_deg: None,
         out: None,
+        validate: false,
+        validate_sample: 0.1,
     }
 }
 

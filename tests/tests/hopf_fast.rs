@@ -40,12 +40,16 @@ fn same_departures(e: &Analysis, f: &Analysis, w: f64) -> Result<(), String> {
     }
     for (x, y) in e.hopf.iter().zip(&f.hopf) {
         let (p, q) = (&x.point, &y.point);
-        if !close_roots(p.p0, q.p0, w) || p.valid != q.valid || p.within_limits != q.within_limits {
+        if !close_roots(p.p0, q.p0, w)
+            || p.within_validity != q.within_validity
+            || p.within_limits != q.within_limits
+        {
             return Err(format!("Hopf point {p:?} vs {q:?}"));
         }
         // Outside the validity range the trim is a badly conditioned f64 evaluation on both
         // routes (see `certified.rs`): only the roll rate and the marks are compared there.
-        if p.valid && !(close(x.omega, y.omega) && close(x.l1, y.l1) && x.kind == y.kind) {
+        if p.within_validity && !(close(x.omega, y.omega) && close(x.l1, y.l1) && x.kind == y.kind)
+        {
             return Err(format!(
                 "Hopf point at P0 = {}: omega {} vs {}, l1 {} vs {}",
                 p.p0, x.omega, y.omega, x.l1, y.l1

@@ -15,6 +15,7 @@ use serde_json::{json, Value};
 use std::path::Path;
 use std::process::Command;
 
+#[allow(dead_code)]
 #[path = "support/oracle.rs"]
 mod oracle;
 

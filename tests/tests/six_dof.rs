@@ -18,6 +18,8 @@
 //! The test prints its agreement table (`--nocapture`) and is skipped with a message when the
 //! `jsbsim` package is not installed (`.ci/run` installs it).
 
+mod support;
+
 use model::aircraft::{parse, Aircraft};
 use model::analysis::analyze;
 use model::jsbsim::catalogue;
@@ -26,8 +28,6 @@ use model::jsbsim::import::{import, Alpha, Request};
 use model::random::Rng;
 use model::simulation::{simulate, Model, SimSettings};
 use serde_json::Value;
-use std::path::Path;
-use std::process::Command;
 
 /// Relative agreement of the settled roll rates before a jump. Both sides integrate accurately
 /// (JSBSim's Euler rates converge to 5e-4 rad/s in the settled roll rate, measured at half its
@@ -97,24 +97,17 @@ fn imported(c: &Case) -> Aircraft {
 
 /// JSBSim's sweep of the case.
 fn jsbsim_sweep(c: &Case) -> Value {
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("oracle/jsbsim_six_dof.py");
     let (a, b, s) = SWEEP;
-    let out = Command::new("python3")
-        .arg(&script)
-        .args(["--model", c.model])
-        .args(["--altitude-m", &c.altitude_m.to_string()])
-        .args(["--mach", &c.mach.to_string()])
-        .args(["--load-factor", &c.load_factor.to_string()])
-        .args(["--sweep", &format!("{a}:{b}:{s}")])
-        .args(["--time", &RUN_S.to_string()])
-        .output()
-        .expect("python3 runs");
-    assert!(
-        out.status.success(),
-        "JSBSim sweep failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("sweep JSON")
+    support::oracle::six_dof(
+        c.model,
+        (c.altitude_m, c.mach, c.load_factor),
+        &[
+            "--sweep".into(),
+            format!("{a}:{b}:{s}"),
+            "--time".into(),
+            RUN_S.to_string(),
+        ],
+    )
 }
 
 /// The 7th-order model's settled roll rate after an aileron step of JSBSim's `deg` (the mean of

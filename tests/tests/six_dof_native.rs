@@ -20,8 +20,6 @@ use model::jsbsim::import::Loaded;
 use model::jsbsim::trim::trim;
 use model::six_dof::{simulate, History, Settings};
 use serde_json::Value;
-use std::path::Path;
-use std::process::Command;
 
 #[path = "support/mod.rs"]
 mod support;
@@ -40,24 +38,19 @@ const RUN_S: f64 = 10.0;
 
 /// JSBSim's run of `c` at `dt` on the flat planet.
 fn jsbsim(c: &Case, dt: f64) -> Value {
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("oracle/jsbsim_six_dof.py");
-    let out = Command::new("python3")
-        .arg(&script)
-        .args(["--model", c.model, "--flat-earth"])
-        .args(["--altitude-m", &c.altitude_m.to_string()])
-        .args(["--mach", &c.mach.to_string()])
-        .args(["--load-factor", &c.load_factor.to_string()])
-        .args(["--aileron-deg", &c.aileron_deg.to_string()])
-        .args(["--time", &RUN_S.to_string()])
-        .args(["--dt", &dt.to_string()])
-        .output()
-        .expect("python3 runs");
-    assert!(
-        out.status.success(),
-        "JSBSim run failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("run JSON")
+    support::oracle::six_dof(
+        c.model,
+        (c.altitude_m, c.mach, c.load_factor),
+        &[
+            "--flat-earth".into(),
+            "--aileron-deg".into(),
+            c.aileron_deg.to_string(),
+            "--time".into(),
+            RUN_S.to_string(),
+            "--dt".into(),
+            dt.to_string(),
+        ],
+    )
 }
 
 /// Our run of `c` at `dt`.

@@ -83,8 +83,14 @@ pub fn parse(text: &str, file: &str) -> Result<Aircraft, AircraftError> {
 /// Reads a nondimensional body-axis file and writes the equivalent dimensional principal-axis
 /// TOML (see [`Converted::to_toml`](super::convert::Converted::to_toml)); a dimensional file is refused.
 pub fn convert_file(path: &Path) -> Result<String, AircraftError> {
-    let file = path.display().to_string();
-    match read_document(&read(path)?, &file)? {
+    convert_text(&read(path)?, &path.display().to_string())
+}
+
+/// [`convert_file`] of the file text `text`, named `file` in messages (a path, or the
+/// `jsbsim:` source that made the text).
+pub fn convert_text(text: &str, file: &str) -> Result<String, AircraftError> {
+    let file = file.to_string();
+    match read_document(text, &file)? {
         Parsed::BodyAxis(c) => Ok(c.converted.to_toml(&c.aircraft, &file)),
         Parsed::Dimensional(_) => Err(AircraftError::AlreadyDimensional {
             at: Location {

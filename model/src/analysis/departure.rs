@@ -541,7 +541,7 @@ pub(crate) fn trim_point(
         q,
         r,
         within_limits: marks.0.within_limits(da, marks.1, None),
-        valid: marks.0.valid(alpha, beta),
+        within_validity: marks.0.valid(alpha, beta),
         lands_at: None,
     }
 }

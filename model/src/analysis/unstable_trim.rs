@@ -304,18 +304,21 @@ fn l_r(trim: &[f64; 5]) -> &'static str {
     }
 }
 
-/// `x` to four significant digits (in exponent form when far from 1), never `-0`: how the causes
-/// and `analyze`'s text print the numbers of an unstable trim.
+/// `x` to four significant digits as a plain decimal (never in exponent form, so that it reads
+/// beside the fixed decimals of the rest of the output; at most 12 decimals, so that a value
+/// below 5e-13 prints as 0), never `-0`: how the causes, `analyze`'s text and the summary print
+/// the numbers of an unstable trim and the first Lyapunov coefficients.
 pub fn significant(x: f64) -> String {
-    if x == 0.0 {
-        return "0".into();
+    if x == 0.0 || !x.is_finite() {
+        return if x == 0.0 { "0".into() } else { x.to_string() };
     }
     let magnitude = x.abs().log10().floor() as i32;
-    if !(-3..6).contains(&magnitude) {
-        return format!("{x:.3e}");
+    let digits = (3 - magnitude).clamp(0, 12) as usize;
+    let s = format!("{x:.digits$}");
+    if s.chars().all(|c| matches!(c, '-' | '0' | '.')) {
+        return "0".into();
     }
-    let digits = (3 - magnitude).max(0) as usize;
-    format!("{x:.digits$}")
+    s
 }
 
 #[cfg(test)]
@@ -377,7 +380,10 @@ mod tests {
         assert_eq!(significant(0.2945123), "0.2945");
         assert_eq!(significant(-4.0), "-4.000");
         assert_eq!(significant(1234.5678), "1235");
-        assert_eq!(significant(2.5e-7), "2.500e-7");
+        assert_eq!(significant(2.5e-7), "0.0000002500");
+        assert_eq!(significant(-2.986e-8), "-0.00000002986");
+        assert_eq!(significant(1.5e7), "15000000");
+        assert_eq!(significant(-1e-14), "0");
         assert_eq!(significant(-0.0), "0");
     }
 }

@@ -27,8 +27,21 @@ pub struct Envelope {
     /// `--uncertainty` as given, when every point is a clearance of its box.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub uncertainty: Option<String>,
+    /// `--validate-sample` as given, when the points were validated by the 6-DOF
+    /// ([`super::validation`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub validate_sample: Option<f64>,
     /// Every grid point.
     pub points: Vec<Point>,
+}
+
+/// The name an envelope of `loaded` (read from `source`) gives its aircraft: the model's own,
+/// else the source.
+pub fn aircraft_name(loaded: &Loaded, source: &str) -> String {
+    match loaded.model.name.trim() {
+        "" => source.to_string(),
+        name => name.to_string(),
+    }
 }
 
 /// The envelope of `loaded` (named `source`) over `grid` at `elevator`; `progress` gets the
@@ -64,14 +77,12 @@ pub fn cleared_envelope(
         .collect();
     Envelope {
         source: source.to_string(),
-        aircraft: match loaded.model.name.trim() {
-            "" => source.to_string(),
-            name => name.to_string(),
-        },
+        aircraft: aircraft_name(loaded, source),
         elevator: elevator.to_string(),
         untrimmed: points.iter().filter(|p| !p.trimmed).count(),
         exact_fallbacks: points.iter().filter(|p| p.route == Some("exact")).count(),
         uncertainty: uncertainty.map(|u| u.spec.clone()),
+        validate_sample: None,
         points,
     }
 }

@@ -6,7 +6,9 @@
 //! settings) give the points; [`elevator`] says the load factor of the trim and the elevator
 //! increment from it (the paper's `delta_e`); [`point`] trims, imports and analyses one
 //! point; [`map`] runs every point in parallel. With `--uncertainty`, [`uncertainty`] gives each
-//! point's aircraft its `[uncertainty]` box and [`clearance`] clears it.
+//! point's aircraft its `[uncertainty]` box and [`clearance`] clears it. With `--validate`,
+//! [`validation`] adds the native 6-DOF's verdict at the points that predict a jump and a
+//! seeded sample of the others.
 
 pub mod clearance;
 pub mod elevator;
@@ -15,6 +17,7 @@ pub mod map;
 pub mod point;
 pub mod source;
 pub mod uncertainty;
+pub mod validation;
 
 pub use elevator::Elevator;
 pub use grid::{Grid, Range};

@@ -6,6 +6,7 @@
 use super::clearance::{clear_point, PointClearance};
 use super::elevator::Elevator;
 use super::uncertainty::Uncertainty;
+use super::validation::Validation;
 use crate::aircraft;
 use crate::analysis::fast::analyze_routed_with;
 use crate::analysis::{Analysis, FirstDeparture};
@@ -67,6 +68,10 @@ pub struct Point {
     /// reaches the jump (by this much), negative where the jump lies beyond the stick's travel;
     /// `None` without a limit or without a critical jump.
     pub margin_deg: Option<f64>,
+    /// The aileron limit minus the |delta_a| of the first departure (a jump or a Hopf point),
+    /// deg: as `margin_deg`, for the departure the branch meets first, which may be a Hopf
+    /// point where there is no jump; `None` without a limit or without a jump or Hopf departure.
+    pub departure_margin_deg: Option<f64>,
     /// `"certified"` or `"exact"` (the certified route did not answer, a case it does not
     /// cover or a failed certificate, and the exact path did).
     pub route: Option<&'static str>,
@@ -77,6 +82,12 @@ pub struct Point {
     /// nominal analysis above stands.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub clearance_error: Option<String>,
+    /// The native 6-DOF's verdict with `--validate` (absent at points not validated).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub validation: Option<Validation>,
+    /// Why a point chosen for `--validate` has no verdict (the 6-DOF refused it).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub validation_error: Option<String>,
 }
 
 impl Point {
@@ -99,9 +110,12 @@ impl Point {
             first_departure: None,
             aileron_limit_deg: None,
             margin_deg: None,
+            departure_margin_deg: None,
             route: None,
             clearance: None,
             clearance_error: None,
+            validation: None,
+            validation_error: None,
         }
     }
 
@@ -192,10 +206,13 @@ impl Point {
             within_limits: c.within_limits,
         });
         self.critical_note = a.critical_note;
-        self.first_departure = a.first_departure;
-        self.margin_deg = match (&self.critical, self.aileron_limit_deg) {
-            (Some(c), Some(limit)) => Some(limit - c.delta_a_deg.abs()),
+        self.margin_deg = a.margin_deg;
+        self.departure_margin_deg = match (&a.first_departure, self.aileron_limit_deg) {
+            (Some(d), Some(limit)) if d.kind != "unstable_trim" => {
+                Some(limit - d.delta_a_deg.abs())
+            }
             _ => None,
         };
+        self.first_departure = a.first_departure;
     }
 }

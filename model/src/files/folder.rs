@@ -203,26 +203,11 @@ pub fn remove_stale_folders(target: &Path) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn scratch(tag: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("folder-test-{tag}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        dir
-    }
-
-    fn names(dir: &Path) -> Vec<String> {
-        let mut v: Vec<String> = std::fs::read_dir(dir)
-            .unwrap()
-            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-            .collect();
-        v.sort();
-        v
-    }
+    use crate::files::tests::{names, temp_dir};
 
     #[test]
     fn an_uncommitted_folder_leaves_the_previous_one_untouched() {
-        let dir = scratch("drop");
+        let dir = temp_dir("folder-drop");
         let out = dir.join("out");
         let s = Staged::begin(&out, "test").unwrap();
         std::fs::write(s.path().join("a"), "1").unwrap();
@@ -237,7 +222,7 @@ mod tests {
 
     #[test]
     fn folders_of_killed_runs_are_removed_and_foreign_folders_refused() {
-        let dir = scratch("stale");
+        let dir = temp_dir("folder-stale");
         let out = dir.join("out");
         // PIDs above the kernel's limit (2^22) belong to no process.
         for d in [".out.tmp-4194305-0", ".out.old-4194306-1"] {

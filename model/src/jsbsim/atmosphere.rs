@@ -1,8 +1,8 @@
-//! The U.S. Standard Atmosphere 1976 up to 84.852 km geopotential altitude, the model JSBSim's
-//! `FGStandardAtmosphere` uses on a standard day: temperature linear in geopotential altitude
-//! within each layer, pressure from the hydrostatic equation, density from the ideal gas law,
-//! speed of sound sqrt(gamma R T), geometric altitude (above mean sea level) converted to
-//! geopotential with the Earth radius 6,356,766 m.
+//! The U.S. Standard Atmosphere 1976 up to 86 km geometric altitude (84.852 km geopotential),
+//! the model JSBSim's `FGStandardAtmosphere` uses on a standard day: temperature linear in
+//! geopotential altitude within each layer, pressure from the hydrostatic equation, density
+//! from the ideal gas law, speed of sound sqrt(gamma R T), geometric altitude (above mean sea
+//! level) converted to geopotential with the Earth radius 6,356,766 m.
 
 /// Base geopotential altitude (m) and temperature lapse rate (K/m) of each layer.
 const LAYERS: [(f64, f64); 7] = [
@@ -14,8 +14,10 @@ const LAYERS: [(f64, f64); 7] = [
     (51_000.0, -0.0028),
     (71_000.0, -0.002),
 ];
-/// The top of the model, geopotential m.
-pub const TOP_M: f64 = 84_852.0;
+/// The top of the model, geometric m: the standard's 86 km (84,852 m geopotential in its table,
+/// 84,852.05 m with this Earth radius), the highest altitude accepted; the top layer extends to
+/// it.
+pub const TOP_GEOMETRIC_M: f64 = 86_000.0;
 /// Sea-level temperature, K.
 const T0: f64 = 288.15;
 /// Sea-level pressure, Pa: JSBSim's 2116.228 psf, 5e-6 above the standard's 101,325 Pa.
@@ -44,15 +46,15 @@ pub struct Air {
 }
 
 /// The standard atmosphere at geometric altitude `h` m above mean sea level (0 up to the top of
-/// the model); `None` outside.
+/// the model, [`TOP_GEOMETRIC_M`] included); `None` outside.
 pub fn standard(h: f64) -> Option<Air> {
-    let z = h * EARTH_RADIUS_M / (EARTH_RADIUS_M + h);
-    if !(0.0..=TOP_M).contains(&z) {
+    if !(0.0..=TOP_GEOMETRIC_M).contains(&h) {
         return None;
     }
+    let z = h * EARTH_RADIUS_M / (EARTH_RADIUS_M + h);
     let (mut t, mut p) = (T0, P0);
     for (k, &(base, lapse)) in LAYERS.iter().enumerate() {
-        let top = LAYERS.get(k + 1).map_or(TOP_M, |l| l.0);
+        let top = LAYERS.get(k + 1).map_or(f64::INFINITY, |l| l.0);
         let dz = z.min(top) - base;
         let t1 = t + lapse * dz;
         p *= if lapse == 0.0 {
@@ -87,5 +89,16 @@ mod tests {
         let h20 = standard(20_063.1).unwrap();
         assert!((h20.pressure - 5_474.9).abs() < 1.0);
         assert!(standard(-1.0).is_none() && standard(90_000.0).is_none());
+        // The top, 86 km geometric, is in (the message says "0 to 86,000 m"); above it is not.
+        // The 1976 standard's table at 84.852 km geopotential: molecular-scale temperature
+        // 186.946 K, pressure 0.37338 Pa.
+        let top = standard(86_000.0).unwrap();
+        assert!(
+            (top.temperature - 186.946).abs() < 1e-2,
+            "{}",
+            top.temperature
+        );
+        assert!((top.pressure - 0.3734).abs() < 1e-3, "{}", top.pressure);
+        assert!(standard(86_000.001).is_none());
     }
 }

@@ -32,6 +32,32 @@ pub fn root(explicit: Option<&Path>) -> Option<PathBuf> {
     (out.status.success() && dir.join("aircraft").is_dir()).then_some(dir)
 }
 
+/// `root` if it is a folder holding `aircraft/`, else why it is not JSBSim's root (a file, a
+/// missing path, a folder without `aircraft/`).
+pub fn checked_root(root: &Path) -> Result<&Path, String> {
+    let expected =
+        "expected the folder holding aircraft/NAME/NAME.xml (--jsbsim-root, else $JSBSIM_ROOT)";
+    if root.is_file() {
+        return Err(format!(
+            "the JSBSim root {} is a file; {expected}",
+            root.display()
+        ));
+    }
+    if !root.is_dir() {
+        return Err(format!(
+            "the JSBSim root {} does not exist; {expected}",
+            root.display()
+        ));
+    }
+    if !root.join("aircraft").is_dir() {
+        return Err(format!(
+            "the JSBSim root {} has no aircraft/ folder; {expected}",
+            root.display()
+        ));
+    }
+    Ok(root)
+}
+
 /// The XML file of `model`: a path if it names an existing file, else the catalogue entry
 /// `root/aircraft/NAME/NAME.xml` (the name matched without regard to case).
 pub fn model_path(root: Option<&Path>, model: &str) -> Result<PathBuf, String> {
@@ -39,7 +65,7 @@ pub fn model_path(root: Option<&Path>, model: &str) -> Result<PathBuf, String> {
     if p.is_file() {
         return Ok(p.to_path_buf());
     }
-    let root = root.ok_or_else(|| HOW_TO_GET.to_string())?;
+    let root = checked_root(root.ok_or_else(|| HOW_TO_GET.to_string())?)?;
     let names = names(root);
     let name = names
         .iter()

@@ -10,43 +10,47 @@ use super::trim::Trim;
 use std::io::Write;
 use std::path::PathBuf;
 
-/// Usage, for errors.
-pub const USAGE: &str = "usage: model import jsbsim <MODEL> --altitude-m H (--mach M | --speed V) \
-     [--load-factor N | --alpha-deg A] [--set PROPERTY=VALUE]... [--out FILE] [--jsbsim-root DIR]\n       \
-     model import jsbsim --list [--jsbsim-root DIR]\n       \
-     model import jsbsim --list --analyze --altitude-m H (--mach M | --speed V) \
-     [--load-factor N | --alpha-deg A] [--jsbsim-root DIR]";
+/// Usage, for errors (and the help's Usage lines).
+pub const USAGE: &str = "Usage: model import jsbsim [OPTIONS] --altitude-m <H> <--mach <M>|--speed <V>> <MODEL>\n       \
+     model import jsbsim --list [--jsbsim-root <DIR>]\n       \
+     model import jsbsim --list --analyze [OPTIONS] --altitude-m <H> <--mach <M>|--speed <V>>";
 
-/// What `--help` (or `-h`) prints: the usage and what each option means.
-pub const HELP: &str = "Reads a JSBSim aircraft model and writes the aircraft file of the \
-analysis (nondimensional body-axis coefficients linearised at one flight condition).
+/// What `--help` (or `-h`, or `model help import`) prints, in the layout clap gives the other
+/// commands: what the command does, its usage, its arguments and its options.
+pub const HELP: &str = "Write an aircraft file from a JSBSim model: nondimensional body-axis \
+coefficients linearised at one flight condition, trimmed at n g (1 g unless --load-factor or \
+--alpha-deg)
 
-  <MODEL>               a model of the catalogue (e.g. f104; --list shows them)
-  --altitude-m H        geometric altitude, m (standard atmosphere 1976, 0 to 86,000 m)
-  --mach M | --speed V  Mach number, or true airspeed in m/s
-  --load-factor N       linearise at the trim of a wings-level pull-up at N g (default 1, level
-                        flight; 0 is the unloaded roll): alpha and elevator such that lift = N x
-                        weight (thrust left out) and the pitching moment is zero, pitch rate
-                        (N - 1) g / V, the elevator within its travel (else untrimmable, exit 2).
-                        The analysis's delta_e is the increment from this trim's elevator.
-  --level-flight        the same as --load-factor 1
-  --alpha-deg A         linearise at this angle of attack instead, deg, elevator neutral (not a trim)
-  --set PROPERTY=VALUE  a JSBSim property set before the import (not a flight state or control)
-  --out FILE            write the aircraft file there instead of standard output
-  --jsbsim-root DIR     the JSBSim models (default: $JSBSIM_ROOT, else the Python package's)
-  --list                the catalogue: every model, and whether it reads
-  --list --analyze      the catalogue with each model's analysis at the flight condition
+Usage: model import jsbsim [OPTIONS] --altitude-m <H> <--mach <M>|--speed <V>> <MODEL>
+       model import jsbsim --list [--jsbsim-root <DIR>]
+       model import jsbsim --list --analyze [OPTIONS] --altitude-m <H> <--mach <M>|--speed <V>>
+
+Arguments:
+  <MODEL>  A model of the catalogue (e.g. f104; --list shows them), or the path of its XML file
+
+Options:
+      --altitude-m <H>          Geometric altitude, m (standard atmosphere 1976, 0 to 86,000 m)
+      --mach <M>                Mach number
+      --speed <V>               True airspeed, m/s (instead of --mach)
+      --load-factor <N>         Linearise at the trim of a wings-level pull-up at N g: alpha and elevator such that lift = N x weight (thrust left out) and the pitching moment is zero, pitch rate (N - 1) g / V, the elevator within its travel (else untrimmable, exit 2); the analysis's delta_e is the increment from this trim's elevator [default: 1; 0 is the unloaded roll]
+      --alpha-deg <A>           Linearise at this angle of attack instead, deg, elevator neutral (not a trim)
+      --set <PROPERTY=VALUE>    A JSBSim property set before the import (not a flight state or control); may be repeated
+      --out <FILE>              Write the aircraft file there instead of standard output
+      --jsbsim-root <DIR>       The JSBSim root, the folder holding aircraft/NAME/NAME.xml [default: $JSBSIM_ROOT, else the Python package's]
+      --list                    The catalogue: every model, and whether it imports (trimmed at 1 g at 3000 m, Mach 0.3)
+      --analyze                 With --list: each model's analysis at the flight condition given
+  -h, --help                    Print help
 ";
 
 /// The exit code of bad input.
 pub const BAD_INPUT: u8 = 2;
 
 /// Runs `model import` with `args` (after `import`), writing to `out`; returns the exit code.
-/// Errors go to standard error; `--help` anywhere prints [`HELP`] and [`USAGE`] instead.
+/// Errors go to standard error; `--help` anywhere prints [`HELP`] instead.
 pub fn run(args: &[String], out: &mut dyn Write) -> u8 {
     if args.iter().any(|a| a == "--help" || a == "-h") {
         // A closed pipe ends the help quietly.
-        let _ = writeln!(out, "{HELP}\n{USAGE}");
+        let _ = write!(out, "{HELP}");
         return 0;
     }
     match parse_and_run(args, out) {
@@ -95,6 +99,7 @@ fn parse(args: &[String]) -> Result<Command, String> {
         let a = args[i].as_str();
         match a {
             "--list" => list = true,
+            // The same as --load-factor 1 (kept for scripts; the help shows --load-factor).
             "--level-flight" => alpha = Some(Alpha::Trim(1.0)),
             "--load-factor" => {
                 load_factor = Some(number(value(args, &mut i, a)?, a)?);
@@ -211,8 +216,14 @@ fn written(path: &std::path::Path, r: &Request, trim: Option<&Trim>) -> String {
 /// (`"jsbsim:f104 --altitude-m 6096 --mach 0.53 --load-factor 1"`): what `analyze`, `continue`,
 /// `simulate` and `report` accept in place of an aircraft file.
 pub fn source(spec: &str) -> Result<crate::aircraft::Aircraft, String> {
-    let text = import(&request(spec)?)?;
+    let text = source_text(spec)?;
     crate::aircraft::parse(&text, spec).map_err(|e| e.to_string())
+}
+
+/// The aircraft file (TOML text) of a `jsbsim:` source, as `import` writes it: what `convert`
+/// converts in place of a file.
+pub fn source_text(spec: &str) -> Result<String, String> {
+    import(&request(spec)?)
 }
 
 /// The import a `jsbsim:` source asks for (see [`source`]), its words checked as `import jsbsim`
@@ -229,9 +240,41 @@ pub fn request(spec: &str) -> Result<Request, String> {
     }
 }
 
+/// Whether catalogue model `name` under `root` imports at the [`REFERENCE`] altitude and Mach,
+/// trimmed at 1 g, as an aircraft the analysis loads: the check of a `jsbsim:` source (and so
+/// of `--list --analyze`), its refusal as the reason.
+fn imports(name: &str, root: &std::path::Path) -> Result<(), String> {
+    let (h, mach, _) = REFERENCE;
+    let spec = format!(
+        "jsbsim:{name} --altitude-m {h} --mach {mach} --jsbsim-root {}",
+        root.display()
+    );
+    source(&spec).map(|_| ()).map_err(|e| {
+        let rest = e.strip_prefix(&spec).unwrap_or(&e);
+        let rest = rest.trim_start_matches(|c: char| c == ':' || c.is_ascii_digit());
+        rest.trim_start().to_string()
+    })
+}
+
 /// Prints the catalogue.
 fn listing(root: Option<PathBuf>, out: &mut dyn Write) -> Result<(), String> {
+    out.write_all(listing_text(root)?.as_bytes())
+        .map_err(|e| e.to_string())
+}
+
+/// What `import jsbsim --list` prints for `args` (after `import`, `jsbsim` first), or its
+/// message for bad arguments: shared by the command line and Python.
+pub fn listing_of(args: &[String]) -> Result<String, String> {
+    match parse(args)? {
+        Command::List(root) => listing_text(root),
+        Command::Import(..) => Err(format!("expected --list\n{USAGE}")),
+    }
+}
+
+/// The catalogue listing: every model of the root, and whether it reads.
+fn listing_text(root: Option<PathBuf>) -> Result<String, String> {
     let root = catalogue::root(root.as_deref()).ok_or_else(|| catalogue::HOW_TO_GET.to_string())?;
+    catalogue::checked_root(&root)?;
     let entries: Vec<(String, Result<String, String>)> = catalogue::listing(&root)
         .into_iter()
         .map(|(name, model)| {
@@ -239,23 +282,35 @@ fn listing(root: Option<PathBuf>, out: &mut dyn Write) -> Result<(), String> {
                 .join("aircraft")
                 .join(&name)
                 .join(format!("{name}.xml"));
-            let checked = model.and_then(|m| evaluates(&m, &path).map(|()| m.name));
+            let checked = model
+                .and_then(|m| evaluates(&m, &path).map(|()| m.name))
+                .and_then(|full| imports(&name, &root).map(|()| full));
             (name, checked)
         })
         .collect();
+    // The trim's refusals (`jsbsim::trim`) start so; the loader's name the source first.
+    let untrimmable = |e: &String| e.starts_with("untrimmable at");
     let ok = entries.iter().filter(|(_, m)| m.is_ok()).count();
-    let (h, mach, alpha) = REFERENCE;
+    let no_trim = entries
+        .iter()
+        .filter(|(_, m)| m.as_ref().is_err_and(untrimmable))
+        .count();
+    let (h, mach, _) = REFERENCE;
     let mut text = format!(
-        "{} ({} models, {ok} importable: read and evaluated at {h} m, Mach {mach}, alpha {alpha} deg)\n",
+        "{} ({} models, {ok} importable: read, trimmed at 1 g at {h} m, Mach {mach} and loaded as \
+         an aircraft, the check of `import` and of `--list --analyze`; {no_trim} read but do not \
+         trim there (\"no trim\": another flight condition may); the others are refused \
+         anywhere)\n",
         root.join("aircraft").display(),
         entries.len()
     );
     for (name, model) in entries {
         let line = match model {
             Ok(full) => format!("{name:<18} ok      {full}\n"),
+            Err(e) if untrimmable(&e) => format!("{name:<18} no trim {e}\n"),
             Err(e) => format!("{name:<18} refused {e}\n"),
         };
         text.push_str(&line);
     }
-    out.write_all(text.as_bytes()).map_err(|e| e.to_string())
+    Ok(text)
 }

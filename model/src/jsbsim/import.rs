@@ -51,7 +51,11 @@ pub fn import_trimmed(request: &Request) -> Result<(String, Option<Trim>), Strin
     let condition = Condition::new(request.altitude_m, request.speed)?;
     let setup = loaded.setup(condition);
     match request.alpha {
-        Alpha::Given(a) => Ok((given_alpha_file(&setup, a)?, None)),
+        Alpha::Given(a) => Ok((
+            given_alpha_file(&setup, a)
+                .map_err(|e| super::trim::with_settings(e, &setup.settings))?,
+            None,
+        )),
         Alpha::Trim(n) => {
             let t = trim(&setup, n)?;
             Ok((trimmed_file(&setup, &t)?, Some(t)))

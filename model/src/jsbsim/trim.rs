@@ -219,8 +219,32 @@ fn pitch_balance(
 }
 
 /// The trim of `setup` at load factor `n`, or why it is untrimmable (the message names the
-/// limit: the elevator's travel, no pitch balance, or no lift solution below CLmax).
+/// limit: the elevator's travel, no pitch balance, or no lift solution below CLmax, and the
+/// user's `--set` values, which may be what moved the model there).
 pub fn trim(setup: &Setup, n: f64) -> Result<Trim, String> {
+    trim_unnamed(setup, n).map_err(|e| with_settings(e, &setup.settings))
+}
+
+/// `message` followed by the `--set` values it arose under, if any.
+pub fn with_settings(message: String, settings: &[(String, f64)]) -> String {
+    if settings.is_empty() {
+        return message;
+    }
+    let set: Vec<String> = settings
+        .iter()
+        .map(|(k, v)| {
+            if *v != 0.0 && !(1e-4..1e15).contains(&v.abs()) {
+                format!("--set {k}={v:e}")
+            } else {
+                format!("--set {k}={v}")
+            }
+        })
+        .collect();
+    format!("{message} (with {})", set.join(" "))
+}
+
+/// [`trim`] without naming the `--set` values.
+fn trim_unnamed(setup: &Setup, n: f64) -> Result<Trim, String> {
     if !(n.is_finite() && n.abs() <= 20.0) {
         return Err(format!(
             "load factor {n}: expected a finite load factor of at most 20 g"

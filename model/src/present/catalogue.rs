@@ -35,8 +35,10 @@ pub fn catalogue_command(args: &[String], out: &mut dyn Write) -> u8 {
     }
 }
 
-/// The Markdown table, or why it cannot be made (no models found, no flight condition).
-fn table(args: &[String]) -> Result<String, String> {
+/// The Markdown table `import jsbsim --list --analyze` prints for `args` (after `import`,
+/// `jsbsim` first), or why it cannot be made (no models found, no flight condition): shared by
+/// the command line and Python.
+pub fn table(args: &[String]) -> Result<String, String> {
     if !args.iter().any(|a| a == "--list") {
         return Err(format!(
             "--analyze goes with --list (the whole catalogue); for one model, `model analyze \
@@ -56,6 +58,7 @@ fn table(args: &[String]) -> Result<String, String> {
         None => catalogue::root(None),
     }
     .ok_or_else(|| catalogue::HOW_TO_GET.to_string())?;
+    catalogue::checked_root(&root)?;
     if given_root.is_none() {
         rest.extend(["--jsbsim-root".to_string(), root.display().to_string()]);
     }

@@ -6,8 +6,8 @@
 use super::failure::{named, stdout_error, write_file, Failure, FAILED};
 use super::numbers::fixed;
 use super::options::{
-    delta_e_list, elevator_of, finite_angle, load_aircraft, AnalyzeArgs, ClearArgs, ContinueArgs,
-    ConvertArgs, EmitArgs, FiguresArgs, SimulateArgs,
+    delta_e_list, elevator_of, finite_angle, load_aircraft, read_aircraft, AnalyzeArgs, ClearArgs,
+    ContinueArgs, ConvertArgs, EmitArgs, FiguresArgs, SimulateArgs,
 };
 use super::outputs::{begin_folder, commit_folder, default_folder, wrote};
 use super::progress::{progress_bar, say_how_long, set};
@@ -19,7 +19,7 @@ use crate::clearance::run::Run;
 use crate::continuation::{continue_equilibria, ContinuationParam, Diagram, Settings};
 use crate::simulation::{simulate, Model, Rudder, SimError, SimSettings, TimeHistory};
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// Prints to `out` (stdout), turning a write error into a [`Failure`].
@@ -33,7 +33,7 @@ macro_rules! say {
 /// and, when the certified route fell back, why. The exact path's JSON (plain `--json`, or
 /// `--exact`) is the analysis alone.
 #[derive(serde::Serialize)]
-struct Routed<'a> {
+pub struct Routed<'a> {
     #[serde(flatten)]
     analysis: &'a Analysis,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -42,21 +42,34 @@ struct Routed<'a> {
     fallback: Option<&'static str>,
 }
 
+impl<'a> Routed<'a> {
+    /// `analysis` with the route that answered it (none on the exact path by request).
+    pub fn new(analysis: &'a Analysis, route: Option<Route>) -> Routed<'a> {
+        Routed {
+            analysis,
+            route: route.map(Route::name),
+            fallback: route.and_then(Route::fallback),
+        }
+    }
+}
+
 /// `model analyze`: the table of the certified route (the exact path with `--exact`), or JSON
 /// of the exact path (the certified route's with `--certified`).
 pub fn analyze_command(a: &AnalyzeArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
-    let ac = load_aircraft(&a.aircraft)?;
+    // The text carries the aircraft's warnings itself; JSON carries them as a field, and they
+    // go to stderr as well.
+    let ac = if a.json {
+        load_aircraft(&a.aircraft)?
+    } else {
+        read_aircraft(&a.aircraft)?
+    };
     let (result, route) = routed_analysis_of(&ac, a)?;
     if a.json {
-        let routed = Routed {
-            analysis: &result,
-            route: route.map(Route::name),
-            fallback: route.and_then(Route::fallback),
-        };
+        let routed = Routed::new(&result, route);
         let text = serde_json::to_string_pretty(&routed).map_err(|e| e.to_string())?;
         say!(out, "{text}");
     } else {
-        write!(out, "{}", super::tables::analysis(&result)).map_err(stdout_error)?;
+        write!(out, "{}", super::tables::analysis(&result, a.all)).map_err(stdout_error)?;
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -65,12 +78,11 @@ pub fn analyze_command(a: &AnalyzeArgs, out: &mut dyn Write) -> Result<ExitCode,
 /// caller): the exact path for `--exact` and for `--json` without `--certified`, else the
 /// certified route.
 pub fn analysis_of(ac: &Aircraft, a: &AnalyzeArgs) -> Result<Analysis, Failure> {
-    routed_analysis_of(ac, a).map(|(result, _)| result)
+    routed_analysis_of(ac, a).map(|(analysis, _)| analysis)
 }
 
-/// The analysis `model analyze` prints, with the route that answered (`None` when the exact path
-/// answered by request).
-fn routed_analysis_of(
+/// [`analysis_of`] and the route that answered it (none on the exact path by request).
+pub fn routed_analysis_of(
     ac: &Aircraft,
     a: &AnalyzeArgs,
 ) -> Result<(Analysis, Option<Route>), Failure> {
@@ -78,7 +90,7 @@ fn routed_analysis_of(
     if a.exact || (a.json && !a.certified) {
         analyze(ac, delta_e).map(|r| (r, None))
     } else {
-        analyze_routed_with(ac, delta_e, true).map(|(a, route)| (a, Some(route)))
+        analyze_routed_with(ac, delta_e, true).map(|(r, route)| (r, Some(route)))
     }
     .map_err(|e| named(ac, e))
 }
@@ -143,44 +155,80 @@ pub fn report_command(
 ) -> Result<ExitCode, Failure> {
     let ac = load_aircraft(&a.aircraft)?;
     let command = if summary { "report" } else { "plot" };
+    let bar = progress_bar(command);
+    let written = figures_of(&ac, a, summary, &mut |f| set(&bar, f));
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let written = written?;
+    for k in &written.skipped {
+        say!(out, "skipped: {}", shown(k));
+    }
+    if written.failed.is_empty() {
+        return Ok(ExitCode::SUCCESS);
+    }
+    // The folder is not put in place: the previous run's stays as it was.
+    out.flush().map_err(stdout_error)?;
+    let mut err = std::io::stderr();
+    for f in &written.failed {
+        let _ = writeln!(err, "error: {f}");
+    }
+    Ok(ExitCode::from(FAILED))
+}
+
+/// What `model report` or `model plot` wrote.
+pub struct Figures {
+    /// The folder (in place only when `failed` is empty).
+    pub folder: PathBuf,
+    /// The sections skipped, each with its reason.
+    pub skipped: Vec<String>,
+    /// The files that could not be written: `cannot write PATH: reason`.
+    pub failed: Vec<String>,
+}
+
+/// What `model report` (`summary`) or `model plot` writes for `ac` with the options of `a` (the
+/// aircraft loaded by the caller, `a.aircraft` naming the default folder): the folder is put in
+/// place when every file was written; `progress` gets the fraction done.
+pub fn figures_of(
+    ac: &Aircraft,
+    a: &FiguresArgs,
+    summary: bool,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Figures, Failure> {
+    let command = if summary { "report" } else { "plot" };
     let settings = ReportSettings {
         summary,
-        ..ReportSettings::new(elevator_of(&ac, a.delta_e_deg)?)
+        ..ReportSettings::new(elevator_of(ac, a.delta_e_deg)?)
     };
     let target = a
         .out
         .clone()
         .unwrap_or_else(|| default_folder(command, &a.aircraft));
     let staged = begin_folder(&target, command)?;
-    let bar = progress_bar(command);
-    let result = report(&ac, staged.path(), &settings, &mut |f| set(&bar, f));
-    if let Some(b) = bar {
-        b.finish_and_clear();
-    }
-    let result = result.map_err(|e| match e {
+    let result = report(ac, staged.path(), &settings, progress).map_err(|e| match e {
         ReportError::Io { .. } => Failure::Output(e.to_string()),
-        e => named(&ac, e),
+        e => named(ac, e),
     })?;
-    for k in &result.skipped {
-        say!(out, "skipped: {}", shown(k));
-    }
-    if result.failed_files.is_empty() {
+    let failed: Vec<String> = result
+        .failed_files
+        .iter()
+        .map(|f| {
+            let rel = f.path.strip_prefix(staged.path()).unwrap_or(&f.path);
+            format!(
+                "cannot write {}: {}",
+                staged.target().join(rel).display(),
+                f.reason
+            )
+        })
+        .collect();
+    if failed.is_empty() {
         commit_folder(staged)?;
-        return Ok(ExitCode::SUCCESS);
     }
-    // The folder is not put in place: the previous run's stays as it was.
-    out.flush().map_err(stdout_error)?;
-    let mut err = std::io::stderr();
-    for f in &result.failed_files {
-        let rel = f.path.strip_prefix(staged.path()).unwrap_or(&f.path);
-        let _ = writeln!(
-            err,
-            "error: cannot write {}: {}",
-            staged.target().join(rel).display(),
-            f.reason
-        );
-    }
-    Ok(ExitCode::from(FAILED))
+    Ok(Figures {
+        folder: target,
+        skipped: result.skipped,
+        failed,
+    })
 }
 
 /// `model simulate`: one aileron step's steady state in a line, and the time history as CSV
@@ -262,6 +310,12 @@ pub fn history_of(ac: &Aircraft, a: &SimulateArgs) -> Result<(TimeHistory, Model
     Ok((h, model))
 }
 
+/// The smallest `--tolerance` of `clear`, rad/s. The proof's bounds are f64 interval enclosures:
+/// on the shipped box of aircraft A (P0 = 1.57 rad/s) the roll-rate gap closes to 4e-14 rad/s at
+/// `--tolerance 1e-13` in a second, while at 1e-14 it runs on (over a minute) without closing.
+/// 1e-12 leaves a margin of ten for larger roll rates.
+pub const MIN_TOLERANCE: f64 = 1e-12;
+
 /// `model clear`: for each elevator setting the Monte Carlo and the proof
 /// ([`crate::clearance::run::clear_each`]), printed as text or JSON, and with `--out` the
 /// folder of summaries, samples and figures.
@@ -317,9 +371,12 @@ pub fn runs_of(
         None => vec![elevator_of(ac, a.delta_e_deg)?],
     };
     let (samples, tolerance) = (a.samples, a.tolerance);
-    if !(tolerance.is_finite() && tolerance > 0.0) {
+    if !(tolerance.is_finite() && tolerance >= MIN_TOLERANCE) {
         return Err(Failure::Input(format!(
-            "--tolerance = {tolerance}: expected a finite tolerance > 0 in rad/s"
+            "--tolerance = {tolerance:e}: expected a finite tolerance of at least \
+             {MIN_TOLERANCE:e} rad/s, the smallest gap the proof can close (its bounds are f64 \
+             interval enclosures of roll rates of order 1 rad/s, which resolve them to about \
+             1e-13 rad/s, a few hundred f64 steps)"
         )));
     }
     // Each sample's draws and result are kept (samples.csv): about 300 bytes apiece.
@@ -343,9 +400,16 @@ pub fn runs_of(
     .map_err(|e| named(ac, e))
 }
 
-/// `model convert`: the dimensional principal-axis TOML of a nondimensional body-axis file.
+/// `model convert`: the dimensional principal-axis TOML of a nondimensional body-axis file or
+/// of a `jsbsim:` source (the file its import writes).
 pub fn convert_command(a: &ConvertArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
-    let text = aircraft::convert_file(&a.file).map_err(|e| e.to_string())?;
+    let text = if a.file.starts_with("jsbsim:") {
+        let imported = crate::jsbsim::cli::source_text(&a.file)?;
+        aircraft::convert_text(&imported, &a.file)
+    } else {
+        aircraft::convert_file(Path::new(&a.file))
+    }
+    .map_err(|e| e.to_string())?;
     write!(out, "{text}").map_err(stdout_error)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -9,6 +9,7 @@ use super::outputs::{begin_folder, commit_folder};
 use super::progress::{progress_bar, set};
 use crate::envelope::source::Source;
 use crate::envelope::uncertainty::Uncertainty;
+use crate::envelope::validation::validate_envelope;
 use crate::envelope::{cleared_envelope, Elevator, Envelope, Grid, Point, Range};
 use crate::jsbsim::import::Loaded;
 use std::io::Write;
@@ -48,6 +49,29 @@ pub struct Plan {
     pub elevator: Elevator,
     /// The box every point is cleared over, with `--uncertainty`.
     pub uncertainty: Option<Uncertainty>,
+    /// With `--validate`, the fraction of the points without a predicted jump validated too.
+    pub validate_sample: Option<f64>,
+}
+
+/// The sample of `--validate`, checked: `None` without it.
+fn validate_sample(a: &EnvelopeArgs, elevator: Elevator) -> Result<Option<f64>, Failure> {
+    if !a.validate {
+        return Ok(None);
+    }
+    if !(a.validate_sample.is_finite() && (0.0..=1.0).contains(&a.validate_sample)) {
+        return Err(Failure::Input(format!(
+            "--validate-sample = {}: expected a fraction of the points, 0 to 1",
+            a.validate_sample
+        )));
+    }
+    if elevator.increment != 0.0 {
+        return Err(Failure::Input(format!(
+            "--validate with --delta-e-deg {}: the 6-DOF holds each point's trim elevator \
+             (expected no --delta-e-deg, or 0)",
+            elevator.increment.to_degrees()
+        )));
+    }
+    Ok(Some(a.validate_sample))
 }
 
 impl Plan {
@@ -63,6 +87,7 @@ impl Plan {
             Some(spec) => Some(Uncertainty::parse(spec).map_err(Failure::Input)?),
             None => None,
         };
+        let validate_sample = validate_sample(a, elevator)?;
         let loaded = source.load()?;
         if let Some(u) = &uncertainty {
             u.check(&loaded, &a.source, &grid, elevator.load_factor)
@@ -73,14 +98,22 @@ impl Plan {
             grid,
             elevator,
             uncertainty,
+            validate_sample,
         })
     }
 
-    /// The envelope of the plan, named `source`; `progress` gets the fraction done (from any
-    /// thread).
+    /// The envelope of the plan, named `source`, validated with `--validate`; `progress` gets
+    /// the fraction done (from any thread): with `--validate`, the analysis counts for the
+    /// first fifth and the 6-DOF's sweeps for the rest.
     pub fn run(&self, source: &str, progress: &(dyn Fn(f64) + Sync)) -> Envelope {
         let chosen = (self.elevator, self.uncertainty.as_ref());
-        cleared_envelope(&self.loaded, source, &self.grid, chosen, progress)
+        let Some(sample) = self.validate_sample else {
+            return cleared_envelope(&self.loaded, source, &self.grid, chosen, progress);
+        };
+        let first = |f: f64| progress(0.2 * f);
+        let mut env = cleared_envelope(&self.loaded, source, &self.grid, chosen, &first);
+        validate_envelope(&mut env, &self.loaded, sample, &|f| progress(0.2 + 0.8 * f));
+        env
     }
 }
 
@@ -138,7 +171,16 @@ pub fn text(env: &Envelope) -> String {
     );
     s += "altitude_m   mach   V_m_s  alpha_deg  de_trim_deg  delta_e_deg  p0_rad_s  delta_a_deg  margin_deg  first_departure\n";
     for p in &env.points {
-        let c = p.critical.as_ref();
+        // A Hopf departure without a jump shows the Hopf point's roll rate, aileron and margin.
+        let hopf_only =
+            p.critical.is_none() && p.first_departure.as_ref().is_some_and(|d| d.kind == "hopf");
+        let (p0, delta_a, margin) = match (&p.critical, &p.first_departure) {
+            (Some(c), _) => (Some(c.p0), Some(c.delta_a_deg), p.margin_deg),
+            (None, Some(d)) if hopf_only => {
+                (Some(d.p0), Some(d.delta_a_deg), p.departure_margin_deg)
+            }
+            _ => (None, None, None),
+        };
         s += &format!(
             "{:>10}  {:>5}  {:>6}  {:>9}  {:>11}  {:>11}  {:>8}  {:>11}  {:>10}  {}\n",
             fixed(p.altitude_m, 0),
@@ -147,12 +189,14 @@ pub fn text(env: &Envelope) -> String {
             cell(p.alpha_deg, 3),
             cell(p.elevator_trim_deg, 3),
             cell(p.delta_e_deg, 3),
-            cell(c.map(|c| c.p0), 4),
-            cell(c.map(|c| c.delta_a_deg), 3),
-            cell(p.margin_deg, 3),
+            cell(p0, 4),
+            cell(delta_a, 3),
+            cell(margin, 3),
             match (&p.reason, &p.error) {
                 (Some(_), _) => "untrimmable (see --json)".to_string(),
                 (None, Some(_)) => "not analysed (see --json)".to_string(),
+                _ if hopf_only =>
+                    "hopf (no jump: p0, delta_a, margin of the Hopf point)".to_string(),
                 _ => departure_kind(p).to_string(),
             }
         );
@@ -180,5 +224,42 @@ pub fn text(env: &Envelope) -> String {
              airframe that cannot hold the trim unaided\n"
         );
     }
-    s + &super::envelope_clearance::text(env)
+    s += &warnings_text(env);
+    s + &super::envelope_clearance::text(env) + &super::envelope_validation::text(env)
+}
+
+/// The aircraft's warnings over the grid, each kind once: an inertia no rigid body has (with
+/// the first point's sentence) and tables read beyond their breakpoints, with how many points
+/// have each.
+fn warnings_text(env: &Envelope) -> String {
+    let clamped = |w: &String| w.starts_with(crate::jsbsim::clamp::WARNING_START);
+    let mut s = String::new();
+    let inertia: Vec<(&Point, &String)> = env
+        .points
+        .iter()
+        .filter_map(|p| p.warnings.iter().find(|w| !clamped(w)).map(|w| (p, w)))
+        .collect();
+    if let Some((p, w)) = inertia.first() {
+        s += &format!(
+            "Warning: at {} of {} points the aircraft is analysed with a warning; at altitude {} m, \
+             Mach {}: {w}\n",
+            inertia.len(),
+            env.points.len(),
+            fixed(p.altitude_m, 0),
+            fixed(p.mach, 3)
+        );
+    }
+    let tables = env
+        .points
+        .iter()
+        .filter(|p| p.warnings.iter().any(clamped))
+        .count();
+    if tables > 0 {
+        s += &format!(
+            "Warning: at {tables} of {} points the flight state reads tables beyond their \
+             breakpoints (each point's warnings are in --json)\n",
+            env.points.len()
+        );
+    }
+    s
 }

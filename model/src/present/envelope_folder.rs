@@ -1,9 +1,11 @@
 //! What `model envelope --out DIR` writes: envelope.csv (one row per grid point, every number),
 //! summary.md, summary.json and the maps ([`super::envelope_maps`], SVG, PNG and the plotted
-//! data as CSV), each file atomically.
+//! data as CSV; with `--uncertainty` the clearance's, with `--validate` the 6-DOF's agreement),
+//! each file atomically.
 
 use super::envelope::{cell, departure_kind, text};
 use super::envelope_clearance::{csv_cells, CSV_HEADER};
+use super::envelope_validation as validation;
 use crate::envelope::Envelope;
 use std::path::Path;
 
@@ -19,6 +21,10 @@ pub fn csv(env: &Envelope) -> String {
     );
     if cleared {
         s += CSV_HEADER;
+    }
+    let validated = env.validate_sample.is_some();
+    if validated {
+        s += validation::CSV_HEADER;
     }
     s.push('\n');
     let num = |x: Option<f64>| x.map_or(String::new(), |v| v.to_string());
@@ -46,6 +52,9 @@ pub fn csv(env: &Envelope) -> String {
         ];
         if cleared {
             row.extend(csv_cells(p));
+        }
+        if validated {
+            row.extend(validation::csv_cells(p));
         }
         s += &row.join(",");
         s.push('\n');
@@ -76,6 +85,9 @@ pub fn markdown(env: &Envelope) -> String {
     if env.uncertainty.is_some() {
         s += "![clearance over the box](clearance.svg)\n\n";
     }
+    if env.validate_sample.is_some() {
+        s += "![the criterion against the 6-DOF](validation.svg)\n\n";
+    }
     s + "```\n" + &text(env) + "```\n"
 }
 
@@ -91,9 +103,11 @@ pub fn write_folder(dir: &Path, env: &Envelope, json: &str) -> Result<(), String
     write("summary.json", format!("{json}\n").as_bytes())?;
     let style = crate::plot::PlotStyle::default();
     let clearance = super::envelope_clearance_map::clearance_regions(env, &style);
+    let agreement = super::envelope_validation_map::agreement(env, &style);
     let maps = super::envelope_maps::maps(env, &style)
         .into_iter()
-        .chain(clearance.map(|f| ("clearance", f)));
+        .chain(clearance.map(|f| ("clearance", f)))
+        .chain(agreement.map(|f| ("validation", f)));
     for (stem, figure) in maps {
         crate::plot::render(&dir.join(stem), &figure, &style).map_err(|e| e.to_string())?;
     }

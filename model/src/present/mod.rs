@@ -12,6 +12,8 @@ pub mod envelope_clearance;
 pub mod envelope_clearance_map;
 pub mod envelope_folder;
 pub mod envelope_maps;
+pub mod envelope_validation;
+pub mod envelope_validation_map;
 pub mod failure;
 pub mod numbers;
 pub mod options;

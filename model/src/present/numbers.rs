@@ -53,9 +53,9 @@ pub fn first_departure_text(a: &Analysis) -> String {
     );
     if let (Some(w), Some(l1), Some(k)) = (f.omega, f.l1, f.hopf_kind) {
         s += &format!(
-            " (oscillation omega = {} rad/s, l1 = {:.4e}, {k})",
+            " (oscillation omega = {} rad/s, l1 = {}, {k})",
             fixed(w, 4),
-            l1
+            significant(l1)
         );
     }
     s += "\n";
@@ -65,15 +65,40 @@ pub fn first_departure_text(a: &Analysis) -> String {
         }
         for e in l {
             s += &format!(
-                "  lands at P0 = {} rad/s (jump {} rad/s), alpha = {} deg, beta = {} deg\n",
+                "  lands at P0 = {} rad/s (jump {} rad/s), alpha = {} deg, beta = {} deg{}\n",
                 fixed(e.p0, 6),
                 fixed(e.p0 - f.p0, 6),
                 fixed(e.alpha.to_degrees(), 4),
-                fixed(e.beta.to_degrees(), 4)
+                fixed(e.beta.to_degrees(), 4),
+                validity_mark(e.alpha, e.beta, a)
             );
         }
     }
     s + "\n"
+}
+
+/// `  [outside validity range: ...]` naming the angle beyond the aircraft's validity range, or
+/// nothing within it.
+pub fn validity_mark(alpha: f64, beta: f64, a: &Analysis) -> String {
+    let v = &a.validity;
+    let beyond: Vec<String> = [
+        ("alpha", alpha, v.alpha_max_deg),
+        ("beta", beta, v.beta_max_deg),
+    ]
+    .into_iter()
+    .filter(|(_, x, max)| x.to_degrees().abs() > *max)
+    .map(|(name, x, max)| {
+        format!(
+            "|{name}| = {} deg > {max} deg",
+            fixed(x.to_degrees().abs(), 1)
+        )
+    })
+    .collect();
+    if beyond.is_empty() {
+        String::new()
+    } else {
+        format!("  [outside validity range: {}]", beyond.join(", "))
+    }
 }
 
 /// The unstable start of the primary branch: the bare airframe cannot hold the trim, each
@@ -139,7 +164,7 @@ pub fn hopf_cells(h: &HopfPoint) -> [String; 8] {
         beta,
         fixed(h.omega, 4),
         fixed(h.period, 4),
-        format!("{:.3e}", h.l1),
+        significant(h.l1),
         h.kind.to_string(),
     ]
 }

@@ -11,7 +11,9 @@ use std::path::{Path, PathBuf};
 /// Options of `analyze`.
 #[derive(Args)]
 pub struct AnalyzeArgs {
-    /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
+    /// `A` or `B` (the paper's aircraft), the path of an aircraft TOML file, or a JSBSim model
+    /// as "jsbsim:MODEL --altitude-m H (--mach M | --speed V) [--load-factor N]" (quoted as
+    /// one).
     pub aircraft: String,
     /// Elevator in degrees: the increment from the trim for an aircraft whose file gives its
     /// trim (an import; default 0), else the deflection from zero lift (default 2, Figs 7-8).
@@ -31,12 +33,18 @@ pub struct AnalyzeArgs {
     /// the last digits differ from the exact path's).
     #[arg(long)]
     pub certified: bool,
+    /// Print every row of the tables; by default a table shows the rows within the aircraft's
+    /// limits and validity range and counts the others (JSON always has every row).
+    #[arg(long)]
+    pub all: bool,
 }
 
 /// Options of `continue`.
 #[derive(Args)]
 pub struct ContinueArgs {
-    /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
+    /// `A` or `B` (the paper's aircraft), the path of an aircraft TOML file, or a JSBSim model
+    /// as "jsbsim:MODEL --altitude-m H (--mach M | --speed V) [--load-factor N]" (quoted as
+    /// one).
     pub aircraft: String,
     /// The continuation parameter: delta_a, delta_e or delta_r.
     #[arg(long, default_value = "delta_a")]
@@ -67,7 +75,9 @@ pub struct ContinueArgs {
 /// Options of `report` and `plot`.
 #[derive(Args)]
 pub struct FiguresArgs {
-    /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
+    /// `A` or `B` (the paper's aircraft), the path of an aircraft TOML file, or a JSBSim model
+    /// as "jsbsim:MODEL --altitude-m H (--mach M | --speed V) [--load-factor N]" (quoted as
+    /// one).
     pub aircraft: String,
     /// The folder to write the files into (default `out/<command>-<aircraft>`, e.g.
     /// out/report-a). Checked before any work; replaced whole when every file is written (an
@@ -83,7 +93,9 @@ pub struct FiguresArgs {
 /// Options of `simulate`.
 #[derive(Args)]
 pub struct SimulateArgs {
-    /// `A` or `B` (the paper's aircraft), else the path of an aircraft TOML file.
+    /// `A` or `B` (the paper's aircraft), the path of an aircraft TOML file, or a JSBSim model
+    /// as "jsbsim:MODEL --altitude-m H (--mach M | --speed V) [--load-factor N]" (quoted as
+    /// one).
     pub aircraft: String,
     /// Aileron step, degrees.
     #[arg(long, allow_hyphen_values = true)]
@@ -162,7 +174,9 @@ pub struct ValidateArgs {
 /// Options of `clear`.
 #[derive(Args)]
 pub struct ClearArgs {
-    /// Path of an aircraft TOML file with an `[uncertainty]` table (or `A`/`B`: a point).
+    /// The path of an aircraft TOML file with an `[uncertainty]` table (or `A`/`B`, or a JSBSim
+    /// model as "jsbsim:MODEL --altitude-m H (--mach M | --speed V) [--load-factor N]": a
+    /// point).
     pub aircraft: String,
     /// Elevator in degrees: the increment from the trim for an aircraft whose file gives its
     /// trim (an import; default 0), else the deflection from zero lift (default 2, Figs 7-8).
@@ -175,7 +189,8 @@ pub struct ClearArgs {
     /// to 10^7 per setting.
     #[arg(long, default_value_t = 1000, allow_hyphen_values = true)]
     pub samples: usize,
-    /// Tolerance on the roll-rate gap, rad/s (the aileron gap is 10 times it, in deg).
+    /// Tolerance on the roll-rate gap, rad/s, at least 1e-12 (the aileron gap is 10 times it,
+    /// in deg).
     #[arg(long, default_value_t = 1e-3, allow_hyphen_values = true)]
     pub tolerance: f64,
     /// Seed of the Monte Carlo samples and of the worst-case search.
@@ -226,13 +241,29 @@ pub struct EnvelopeArgs {
     /// half-widths), or a TOML file whose `[uncertainty]` table is read as `model clear` reads it.
     #[arg(long, value_name = "SPEC", allow_hyphen_values = true)]
     pub uncertainty: Option<String>,
+    /// Check the criterion with the native 6-DOF: every point that predicts a jump within the
+    /// aileron limit, and a seeded sample of the others, gets a short aileron sweep and the
+    /// verdict of `model validate` (JSON `validation`, CSV columns, the map `validation`).
+    #[arg(long)]
+    pub validate: bool,
+    /// With --validate: the fraction of the other analysed points validated too (seeded), 0 to 1.
+    #[arg(
+        long,
+        value_name = "F",
+        default_value_t = 0.1,
+        allow_hyphen_values = true,
+        requires = "validate"
+    )]
+    pub validate_sample: f64,
 }
 
 /// Options of `convert`.
 #[derive(Args)]
 pub struct ConvertArgs {
-    /// Path of a nondimensional body-axis aircraft TOML file.
-    pub file: PathBuf,
+    /// The path of a nondimensional body-axis aircraft TOML file, or a JSBSim model as
+    /// "jsbsim:MODEL --altitude-m H (--mach M | --speed V) [--load-factor N]" (quoted as one).
+    #[arg(value_name = "AIRCRAFT")]
+    pub file: String,
 }
 
 /// Options of `emit`.
@@ -313,8 +344,8 @@ pub fn load_aircraft(arg: &str) -> Result<Aircraft, String> {
     Ok(ac)
 }
 
-/// The aircraft `arg` names, as [`load_aircraft`] without printing its warnings (for a caller
-/// that reports them its own way).
+/// The aircraft `arg` names, as [`load_aircraft`] without printing its warnings (for a command
+/// whose output carries them).
 pub fn read_aircraft(arg: &str) -> Result<Aircraft, String> {
     if let Some(ac) = Aircraft::builtin(arg) {
         return Ok(ac);

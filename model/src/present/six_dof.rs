@@ -12,6 +12,7 @@ use crate::jsbsim::import::{Alpha, Loaded};
 use crate::jsbsim::surfaces::Control;
 use crate::jsbsim::trim::{trim, Trim};
 use crate::plot::{render, Axis, Dash, Figure, LegendPlace, Line, Panel, PlotStyle, Rgb};
+use crate::six_dof::sweep::settled;
 use crate::six_dof::{simulate, History, Settings, Thrust};
 use std::io::Write;
 use std::process::ExitCode;
@@ -78,8 +79,27 @@ pub fn trim_and_aileron(setup: &Setup, n: f64, delta_a_deg: f64) -> Result<(Trim
     Ok((t, -delta_a_deg.to_radians()))
 }
 
+/// A 6-DOF run as `simulate --six-dof` makes it: the time history, the trim it started from
+/// and the summary line the command prints.
+pub struct SixDofRun {
+    /// The time history.
+    pub history: History,
+    /// The n-g trim the run started from.
+    pub trim: Trim,
+    /// The summary line.
+    pub summary: String,
+}
+
 /// Runs the command.
 pub fn command(a: &SimulateArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
+    let run = six_dof_of(a)?;
+    writeln!(out, "{}", run.summary).map_err(stdout_error)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// What `simulate --six-dof` computes and writes for the options of `a` (the CSV of `--csv`,
+/// the folder of `--out`): everything but the printing, shared by the command line and Python.
+pub fn six_dof_of(a: &SimulateArgs) -> Result<SixDofRun, Failure> {
     if a.pss || a.zero_sideslip || a.delta_e_deg.is_some() {
         return Err(Failure::Input(
             "--six-dof: --pss, --zero-sideslip and --delta-e-deg belong to the 7th-order model \
@@ -143,8 +163,11 @@ pub fn command(a: &SimulateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
         .map_err(|e| Failure::Output(e.to_string()))?;
         commit_folder(staged)?;
     }
-    writeln!(out, "{}", summary(&h, &t, &title)).map_err(stdout_error)?;
-    Ok(ExitCode::SUCCESS)
+    Ok(SixDofRun {
+        summary: summary(&h, &t, &title),
+        history: h,
+        trim: t,
+    })
 }
 
 /// The summary line: the trim, the settled roll rate (last 2 s) and how far the speed,
@@ -166,14 +189,6 @@ pub fn summary(h: &History, t: &Trim, title: &str) -> String {
         fixed(h.mach[0], 3),
         fixed(h.mach[end], 3)
     )
-}
-
-/// The mean roll rate over the last `window` s, rad/s.
-pub fn settled(h: &History, window: f64) -> f64 {
-    let t_end = h.t.last().copied().unwrap_or(0.0);
-    let from = h.t.partition_point(|t| *t < t_end - window - 1e-9);
-    let p = &h.p[from..];
-    p.iter().sum::<f64>() / p.len().max(1) as f64
 }
 
 /// A panel of series against time.

@@ -1,6 +1,8 @@
 //! The text tables of `model analyze` and `model continue`.
 
-use super::numbers::{departure_cells, first_departure_text, fixed, hopf_cells, jump_cells, list};
+use super::numbers::{
+    departure_cells, first_departure_text, fixed, hopf_cells, jump_cells, list, validity_mark,
+};
 use crate::aircraft::shown;
 use crate::analysis::Analysis;
 use crate::continuation::Diagram;
@@ -17,25 +19,120 @@ fn marks(within_limits: Option<bool>, valid: bool) -> String {
     m
 }
 
-/// The Hopf points (complex pair on the imaginary axis), with omega and l1.
-fn hopf_table(a: &Analysis) -> String {
-    let mut s = "\nHopf points, Delta4 = 0 with omega^2 > 0 (oscillatory departure):\n".to_string();
-    if a.hopf.is_empty() {
+/// Whether a row is shown without `--all`: within the control limits (or none given) and the
+/// validity range.
+fn shown_row(within_limits: Option<bool>, valid: bool) -> bool {
+    within_limits != Some(false) && valid
+}
+
+/// A table of `rows` (each with its limits and validity marks) under `title` and `header`:
+/// the rows within the limits and the validity range, or every row with `all`, and the count
+/// of the rows left out.
+fn table(
+    title: &str,
+    header: &str,
+    rows: &[(String, Option<bool>, bool)],
+    what: &str,
+    all: bool,
+) -> String {
+    let mut s = format!("{title}\n");
+    if rows.is_empty() {
         return s + "  none\n";
     }
-    s += "     P0 rad/s   delta_a deg   alpha deg    beta deg  omega rad/s    period s          l1  kind\n";
-    for h in &a.hopf {
-        let [p0, da, alpha, beta, omega, period, l1, kind] = hopf_cells(h);
+    let kept: Vec<&(String, Option<bool>, bool)> = rows
+        .iter()
+        .filter(|(_, l, v)| all || shown_row(*l, *v))
+        .collect();
+    if !kept.is_empty() {
+        s += header;
+        for (row, l, v) in &kept {
+            s += &format!("{row}{}\n", marks(*l, *v));
+        }
+    }
+    let left = rows.len() - kept.len();
+    if left > 0 {
+        let more = if kept.is_empty() { "" } else { " more" };
         s += &format!(
-            "  {p0:>11} {da:>13} {alpha:>11} {beta:>11} {omega:>12} {period:>11} {l1:>11}  {kind}{}\n",
-            marks(h.point.within_limits, h.point.valid)
+            "  {left}{more} {what} row{} beyond the limits or validity range: --all\n",
+            if left == 1 { "" } else { "s" }
         );
     }
     s
 }
 
-/// The text `model analyze` prints.
-pub fn analysis(a: &Analysis) -> String {
+/// The column header of a table (`columns` ending in a newline), saying where its `states`
+/// (e.g. "alpha, beta, q, r") are increments from the trim.
+fn header(columns: &str, states: &str, a: &Analysis) -> String {
+    if a.trim.is_some() {
+        format!(
+            "{}   ({states}: increments from the trim)\n",
+            columns.trim_end()
+        )
+    } else {
+        columns.to_string()
+    }
+}
+
+/// The Hopf points (complex pair on the imaginary axis), with omega and l1.
+fn hopf_table(a: &Analysis, all: bool) -> String {
+    let rows: Vec<(String, Option<bool>, bool)> = a
+        .hopf
+        .iter()
+        .map(|h| {
+            let [p0, da, alpha, beta, omega, period, l1, kind] = hopf_cells(h);
+            (
+                format!("  {p0:>11} {da:>13} {alpha:>11} {beta:>11} {omega:>12} {period:>11} {l1:>15}  {kind}"),
+                h.point.within_limits,
+                h.point.within_validity,
+            )
+        })
+        .collect();
+    table(
+        "\nHopf points, Delta4 = 0 with omega^2 > 0 (oscillatory departure):",
+        &header("     P0 rad/s   delta_a deg   alpha deg    beta deg  omega rad/s    period s              l1  kind\n", "alpha, beta", a),
+        &rows,
+        "Hopf",
+        all,
+    )
+}
+
+/// The critical jump with the aileron limit and the margin to it, or why there is none.
+fn critical_text(a: &Analysis) -> String {
+    let c = match (&a.critical, &a.critical_note) {
+        (Some(c), _) => c,
+        (None, Some(note)) => return format!("No critical jump: {note}.\n"),
+        (None, None) => return String::new(),
+    };
+    let mut s = format!(
+        "Critical jump (first fold of the primary branch): P0 = {} rad/s at delta_a = {} deg (and the mirror point -P0 at {:+.4} deg){}\n",
+        fixed(c.p0, 6),
+        fixed(c.delta_a_deg, 4),
+        -c.delta_a_deg,
+        validity_mark(c.alpha, c.beta, a)
+    );
+    s += &match (a.aileron_limit_deg, a.margin_deg) {
+        (Some(limit), Some(m)) if m >= 0.0 => format!(
+            "  aileron limit {} deg, margin {} deg (the limit minus |delta_a|): a full-stick roll reaches the jump with {} deg of travel to spare\n",
+            fixed(limit, 4),
+            fixed(m, 4),
+            fixed(m, 4)
+        ),
+        (Some(limit), Some(m)) => format!(
+            "  aileron limit {} deg, margin {} deg (the limit minus |delta_a|): the jump lies {} deg beyond the stick's travel\n",
+            fixed(limit, 4),
+            fixed(m, 4),
+            fixed(-m, 4)
+        ),
+        _ => "  aileron limit: none in the aircraft file (no [limits] aileron), so no margin\n"
+            .to_string(),
+    };
+    s
+}
+
+/// The text `model analyze` prints: the answer first (the critical jump with the aileron
+/// limit and the margin, the first departure), then the tables, each with only its rows within
+/// the limits and the validity range unless `all`.
+pub fn analysis(a: &Analysis, all: bool) -> String {
     let mut s = String::new();
     let list = |v: &[f64]| list(v, 6, "rad/s");
     s += &format!(
@@ -60,22 +157,10 @@ pub fn analysis(a: &Analysis) -> String {
     for w in &a.warnings {
         s += &format!("Warning: {w}.\n\n");
     }
-    match (&a.critical, &a.critical_note) {
-        (Some(c), _) => {
-            s += &format!(
-                "Critical jump (first fold of the primary branch): P0 = {:.6} rad/s at delta_a = {:.4} deg (and the mirror point -P0 at {:+.4} deg){}\n\n",
-                c.p0,
-                c.delta_a_deg,
-                -c.delta_a_deg,
-                match c.within_limits {
-                    Some(true) => ", within the aileron limit",
-                    Some(false) => ", OUTSIDE the aileron limit",
-                    None => "",
-                }
-            );
-        }
-        (None, Some(note)) => s += &format!("No critical jump: {note}.\n\n"),
-        (None, None) => {}
+    let critical = critical_text(a);
+    if !critical.is_empty() {
+        s += &critical;
+        s += "\n";
     }
     s += &first_departure_text(a);
     s += &format!(
@@ -86,35 +171,59 @@ pub fn analysis(a: &Analysis) -> String {
         "Poles of det K, d = 0:          {}\n\n",
         list(&a.det_k_poles.iter().map(|j| j.p0).collect::<Vec<_>>())
     );
-    s += "Jump points, det K = 0 (saddle-nodes of the PSS equilibria):\n";
-    if a.jump.is_empty() {
-        s += "  none\n";
-    } else {
-        s += "     P0 rad/s   delta_a deg   alpha deg    beta deg     q rad/s     r rad/s\n";
-        for j in &a.jump {
+    let jumps: Vec<(String, Option<bool>, bool)> = a
+        .jump
+        .iter()
+        .map(|j| {
             let [p0, da, alpha, beta, q, r] = jump_cells(j);
-            s += &format!(
-                "  {p0:>11} {da:>13} {alpha:>11} {beta:>11} {q:>11} {r:>11}{}\n",
-                marks(j.within_limits, j.valid)
-            );
-        }
-    }
-    s += &hopf_table(a);
-    s += "\nZero-sideslip departure, det K = 0 at beta = 0 (section V):\n";
+            (
+                format!("  {p0:>11} {da:>13} {alpha:>11} {beta:>11} {q:>11} {r:>11}"),
+                j.within_limits,
+                j.within_validity,
+            )
+        })
+        .collect();
+    s += &table(
+        "Jump points, det K = 0 (saddle-nodes of the PSS equilibria):",
+        &header(
+            "     P0 rad/s   delta_a deg   alpha deg    beta deg     q rad/s     r rad/s\n",
+            "alpha, beta, q, r",
+            a,
+        ),
+        &jumps,
+        "jump",
+        all,
+    );
+    s += &hopf_table(a, all);
+    let title = "\nZero-sideslip departure, det K = 0 at beta = 0 (section V):";
     if let Some(why) = &a.zero_sideslip.withheld {
-        s += &format!("  withheld: {why}\n");
-    } else if a.zero_sideslip.departure.is_empty() {
-        s += "  none\n";
-    } else {
-        s += "     P0 rad/s   delta_a deg   delta_r deg   alpha deg     q rad/s     r rad/s\n";
-        for j in &a.zero_sideslip.departure {
-            let [p0, da, dr, alpha, q, r] = departure_cells(j);
-            s += &format!(
-                "  {p0:>11} {da:>13} {dr:>13} {alpha:>11} {q:>11} {r:>11}{}\n",
-                marks(j.within_limits, j.valid)
-            );
-        }
+        s += &format!("{title}\n  withheld: {why}\n");
+        return s;
     }
+    let departures: Vec<(String, Option<bool>, bool)> = a
+        .zero_sideslip
+        .departure
+        .iter()
+        .map(|j| {
+            let [p0, da, dr, alpha, q, r] = departure_cells(j);
+            (
+                format!("  {p0:>11} {da:>13} {dr:>13} {alpha:>11} {q:>11} {r:>11}"),
+                j.within_limits,
+                j.within_validity,
+            )
+        })
+        .collect();
+    s += &table(
+        title,
+        &header(
+            "     P0 rad/s   delta_a deg   delta_r deg   alpha deg     q rad/s     r rad/s\n",
+            "alpha, q, r",
+            a,
+        ),
+        &departures,
+        "departure",
+        all,
+    );
     s
 }
 

@@ -9,17 +9,15 @@ use super::failure::{stdout_error, Failure};
 use super::numbers::fixed;
 use super::options::ValidateArgs;
 use super::outputs::{begin_folder, commit_folder, default_folder};
-use super::six_dof::{loaded_source, settled, trim_and_aileron};
+use super::six_dof::{loaded_source, trim_and_aileron};
 use crate::analysis::analyze;
 use crate::plot::{render, Axis, Dash, Figure, LegendPlace, Line, Panel, PlotStyle, Rgb};
 use crate::simulation::{simulate, Model, SimSettings};
 use crate::six_dof::jump::{find_jump, Jump};
-use crate::six_dof::Settings;
+use crate::six_dof::sweep::{sweep, WINDOW_S};
 use std::io::Write;
+use std::path::PathBuf;
 use std::process::ExitCode;
-
-/// The judging window at the end of each run, s.
-const WINDOW_S: f64 = 2.0;
 
 /// The aileron steps of `spec` (`A:B:STEP`, deg), or from 1 deg to 4 deg past `limit`.
 fn steps(spec: Option<&str>, limit: Option<f64>) -> Result<Vec<f64>, Failure> {
@@ -72,8 +70,38 @@ fn verdict(name: &str, jump: Option<Jump>, critical: Option<f64>, range: (f64, f
     }
 }
 
+/// What `validate` computes and writes: the aileron steps, each model's settled |p| at each,
+/// the criterion's critical aileron and the aileron limit, the folder written and the lines the
+/// command prints.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct Validation {
+    /// The aileron steps, deg of |delta_a|.
+    pub delta_a_deg: Vec<f64>,
+    /// The 7th-order model's settled |p| at each step, rad/s.
+    pub seventh_order_p: Vec<f64>,
+    /// The 6-DOF's settled |p| at each step, rad/s.
+    pub six_dof_p: Vec<f64>,
+    /// The criterion's critical aileron, deg of |delta_a| (none without a jump).
+    pub critical_deg: Option<f64>,
+    /// The model's aileron limit, deg (when it gives one).
+    pub limit_deg: Option<f64>,
+    /// The folder holding the plateau figure.
+    pub folder: PathBuf,
+    /// The lines the command prints: title, a verdict per model, the 6-DOF's drift.
+    pub lines: Vec<String>,
+}
+
 /// Runs the command.
 pub fn command(a: &ValidateArgs, out: &mut dyn Write) -> Result<ExitCode, Failure> {
+    for l in validation_of(a)?.lines {
+        writeln!(out, "{l}").map_err(stdout_error)?;
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// What `validate` computes and writes for the options of `a`: everything but the printing,
+/// shared by the command line and Python.
+pub fn validation_of(a: &ValidateArgs) -> Result<Validation, Failure> {
     if !(a.t_end.is_finite() && a.t_end >= 2.0 * WINDOW_S && a.t_end <= 600.0) {
         return Err(Failure::Input(format!(
             "--t-end = {}: expected the length of each run, {} to 600 s",
@@ -95,8 +123,7 @@ pub fn command(a: &ValidateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
     let degs = steps(a.delta_a_deg.as_deref(), limit)?;
     let setup = loaded.setup(condition);
     let (trim, _) = trim_and_aileron(&setup, n, 0.0)?;
-    let (mut seventh, mut six) = (Vec::new(), Vec::new());
-    let mut drift = [0.0f64; 3];
+    let mut seventh = Vec::new();
     for &d in &degs {
         let settings = SimSettings {
             t_end: a.t_end,
@@ -104,13 +131,9 @@ pub fn command(a: &ValidateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
         };
         let run = simulate(&ac, &settings).map_err(|e| e.to_string())?;
         seventh.push(run.steady(WINDOW_S).p_mean.abs());
-        let h = crate::six_dof::simulate(&setup, &trim, &Settings::step(d.to_radians(), a.t_end))?;
-        six.push(settled(&h, WINDOW_S).abs());
-        let end = h.t.len() - 1;
-        for (k, v) in [&h.speed, &h.altitude, &h.mach].into_iter().enumerate() {
-            drift[k] = drift[k].max((v[end] - v[0]).abs());
-        }
     }
+    let six = sweep(&setup, &trim, &degs, a.t_end)?;
+    let drift = six.drift;
     let range = (degs[0], degs[degs.len() - 1]);
     let name = &loaded.model.name;
     let title = format!(
@@ -120,7 +143,7 @@ pub fn command(a: &ValidateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
     );
     render(
         &staged.path().join("plateau"),
-        &figure(&title, &degs, (&seventh, &six), critical, limit),
+        &figure(&title, &degs, (&seventh, &six.settled), critical, limit),
         &PlotStyle::default(),
     )
     .map_err(|e| Failure::Output(e.to_string()))?;
@@ -132,7 +155,7 @@ pub fn command(a: &ValidateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
             critical,
             range,
         ),
-        verdict("6-DOF", find_jump(&degs, &six), critical, range),
+        verdict("6-DOF", six.jump, critical, range),
         format!(
             "6-DOF over each {} s run, largest change: V {} m/s, altitude {} m, Mach {}",
             a.t_end,
@@ -142,10 +165,15 @@ pub fn command(a: &ValidateArgs, out: &mut dyn Write) -> Result<ExitCode, Failur
         ),
     ];
     commit_folder(staged)?;
-    for l in lines {
-        writeln!(out, "{l}").map_err(stdout_error)?;
-    }
-    Ok(ExitCode::SUCCESS)
+    Ok(Validation {
+        delta_a_deg: degs,
+        seventh_order_p: seventh,
+        six_dof_p: six.settled,
+        critical_deg: critical,
+        limit_deg: limit,
+        folder: target,
+        lines: lines.to_vec(),
+    })
 }
 
 /// The plateau figure: both models' settled |p| against |delta_a|, the critical aileron and

@@ -334,11 +334,12 @@ fn import_help_prints_the_options_and_succeeds() {
         &["import", "--help"][..],
         &["import", "jsbsim", "--help"],
         &["import", "jsbsim", "f104", "-h"],
+        &["help", "import"],
     ] {
         let out = model(args);
         assert_eq!(out.status.code(), Some(0), "{args:?}");
         let text = String::from_utf8_lossy(&out.stdout);
-        assert!(text.contains("--load-factor") && text.contains("usage: model import jsbsim"));
+        assert!(text.contains("--load-factor") && text.contains("Usage: model import jsbsim"));
         assert!(out.stderr.is_empty(), "{args:?}");
     }
 }

@@ -11,10 +11,12 @@ use std::process::{Command, Output};
 mod support;
 
 mod analyze;
+mod answers;
 mod commands;
 mod files;
 mod folders;
 mod jsbsim;
+mod options;
 mod readme;
 mod six_dof;
 

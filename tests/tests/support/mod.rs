@@ -163,13 +163,13 @@ pub fn same_point(e: &JumpPoint, f: &JumpPoint, w: f64) -> Result<(), String> {
     if !close_roots(e.p0, f.p0, w) {
         return Err(format!("P0 {} vs {}", e.p0, f.p0));
     }
-    if e.within_limits != f.within_limits || e.valid != f.valid {
+    if e.within_limits != f.within_limits || e.within_validity != f.within_validity {
         return Err(format!("marks at P0 = {}", e.p0));
     }
     // Outside the validity range (trims of hundreds of degrees, where the linear model means
     // nothing) the trim is a badly conditioned f64 evaluation on both routes: only the roll
     // rate and the marks are compared there.
-    if !e.valid {
+    if !e.within_validity {
         return Ok(());
     }
     for (name, x, y) in [
@@ -228,8 +228,8 @@ pub fn same_analysis(e: &Analysis, f: &Analysis, w: f64) -> Result<(), String> {
     {
         let ok = close_roots(x.p0, y.p0, w)
             && x.within_limits == y.within_limits
-            && x.valid == y.valid
-            && (!x.valid
+            && x.within_validity == y.within_validity
+            && (!x.within_validity
                 || close(x.delta_a_rad, y.delta_a_rad)
                     && close(x.delta_r_rad, y.delta_r_rad)
                     && close(x.alpha, y.alpha));

@@ -1,6 +1,8 @@
 //! Running a Python oracle script of `tests/oracle/`: the request as JSON on its standard
 //! input, the answer as JSON on the last line of its standard output. Shared by `jsbsim.rs`,
-//! `jsbsim_trim.rs` (through `support`) and `jsbsim_limits.rs`.
+//! `jsbsim_trim.rs` (through `support`) and `jsbsim_limits.rs`; and JSBSim's own 6-DOF, run
+//! from its command line, by `six_dof.rs`, `six_dof_native.rs`, `validate_vs_jsbsim.rs` and
+//! `envelope.rs`.
 
 use serde_json::Value;
 use std::io::Write;
@@ -36,4 +38,31 @@ pub fn run(script: &str, request: &Value) -> Value {
     let stdout = String::from_utf8_lossy(&out.stdout);
     let last = stdout.lines().last().expect("oracle output");
     serde_json::from_str(last).expect("oracle JSON")
+}
+
+/// The answer of `tests/oracle/jsbsim_six_dof.py` (JSBSim's own 6-DOF, its flight control
+/// system cut) for `model` trimmed at `(altitude m, Mach, load factor)`, with the rest of its
+/// command line `args` (a step or a sweep, the run's length, the planet); panics with the
+/// script's standard error when it fails.
+pub fn six_dof(
+    model: &str,
+    (altitude_m, mach, load_factor): (f64, f64, f64),
+    args: &[String],
+) -> Value {
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("oracle/jsbsim_six_dof.py");
+    let out = Command::new("python3")
+        .arg(&script)
+        .args(["--model", model])
+        .args(["--altitude-m", &altitude_m.to_string()])
+        .args(["--mach", &mach.to_string()])
+        .args(["--load-factor", &load_factor.to_string()])
+        .args(args)
+        .output()
+        .expect("python3 runs");
+    assert!(
+        out.status.success(),
+        "JSBSim's 6-DOF failed for {model} at {altitude_m} m, Mach {mach}, n = {load_factor}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("the oracle's JSON")
 }

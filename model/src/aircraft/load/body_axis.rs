@@ -4,7 +4,7 @@
 
 use super::super::convert::{self, BodyAxisInput, Coefficient};
 use super::super::{rational_to_f64, Aircraft, Param};
-use super::triangle::triangle_violation;
+use super::triangle::{moment_text, triangle_violation};
 use super::{
     inertia_coefficients, keys_of, list, qualified, AircraftError, Common, Cx, Table, Tables,
     F64_RANGE,
@@ -182,10 +182,10 @@ impl Cx<'_> {
         let [ix, iy, iz] = &converted.principal;
         let f = rational_to_f64;
         let moments = format!(
-            "ix' = {:e}, iy = {:e}, iz' = {:e} kg m^2",
-            f(ix),
-            f(iy),
-            f(iz)
+            "ix' = {}, iy = {}, iz' = {} kg m^2",
+            moment_text(f(ix)),
+            moment_text(f(iy)),
+            moment_text(f(iz))
         );
         // The x-z block [[ix, -ixz], [-ixz, iz]] has the principal moments ix', iz' as its
         // eigenvalues: both are positive iff ix iz - ixz^2 > 0 (ix, iz > 0 read before).

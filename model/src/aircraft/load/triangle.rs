@@ -14,6 +14,22 @@ use super::{AircraftError, Cx, Table};
 use crate::aircraft::rational_to_f64;
 use num_rational::BigRational;
 
+/// A moment of inertia to four significant digits as a plain decimal (`7834`, `35116`,
+/// `0.1250`), in exponent form only beyond the magnitudes an aircraft file gives (below 1e-3 or
+/// from 1e9 on).
+pub(super) fn moment_text(x: f64) -> String {
+    let magnitude = if x == 0.0 {
+        0
+    } else {
+        x.abs().log10().floor() as i32
+    };
+    if !(-3..9).contains(&magnitude) {
+        return format!("{x:e}");
+    }
+    let digits = (3 - magnitude).max(0) as usize;
+    format!("{x:.digits$}")
+}
+
 /// The warning for principal moments `[ix, iy, iz]` (named by `names`, in kg m^2 or any one
 /// unit) that break a triangle inequality, or `None` when they satisfy all three.
 pub(super) fn triangle_violation(
@@ -35,12 +51,12 @@ pub(super) fn triangle_violation(
     }
     let f = rational_to_f64;
     Some(format!(
-        "the principal moments of inertia {nx} = {:e}, {ny} = {:e}, {nz} = {:e} break the \
+        "the principal moments of inertia {nx} = {}, {ny} = {}, {nz} = {} break the \
          triangle inequality {} (no rigid body has them: each principal moment is at most the \
          sum of the other two); analysed as given, with inertia coefficients C, D, E = {}",
-        f(ix),
-        f(iy),
-        f(iz),
+        moment_text(f(ix)),
+        moment_text(f(iy)),
+        moment_text(f(iz)),
         broken.join(" and "),
         super::inertia_coefficients(ix, iy, iz)
             .iter()

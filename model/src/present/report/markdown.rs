@@ -157,7 +157,7 @@ mod tests {
         assert!(
             text.starts_with(
                 "First loss of stability on the primary branch: HOPF at P0 = 3.100000 rad/s, \
-                 delta_a = -20.6000 deg (oscillation omega = 0.8800 rad/s, l1 = -1.7460e-1, \
+                 delta_a = -20.6000 deg (oscillation omega = 0.8800 rad/s, l1 = -0.1746, \
                  supercritical)\n"
             ),
             "{text}"

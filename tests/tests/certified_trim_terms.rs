@@ -13,7 +13,8 @@
 //! (`ROLL_FULL_SIZE=1`) 2,000 (400). The first departure the envelope asks for
 //! (`analyze_first_departure`, certified along the primary branch where its certificate
 //! succeeds) is checked on 60 aircraft (600 full size): the same first departure and critical
-//! jump as the exact path, each within the route's bracket where it is certified.
+//! jump as the exact path, each within the route's bracket where it is certified, and the
+//! certificate answering for at least 80% of them.
 
 mod support;
 
@@ -149,7 +150,11 @@ fn first_departure_along_the_branch_is_the_exact_paths_with_yaw_and_trim_terms()
         }
     }
     println!("{n} aircraft: {compared} compared, {certified} certified, {hopf} certified Hopf");
-    // The branch's certificate does not yet answer for these aircraft (see
-    // docs/certified_route.md): what holds whatever the route is the same answer.
-    assert!(compared > 0, "nothing compared");
+    // The walk along the branch answers for most of them (54 of 60 by default, 514 of 600 full
+    // size; the rest turn or diverge before the aileron range ends, or need brackets double
+    // precision cannot give): at least 80%, or the comparison says little.
+    assert!(
+        compared > 0 && certified * 5 >= compared * 4,
+        "{certified} of {compared} certified"
+    );
 }

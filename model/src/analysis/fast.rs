@@ -27,7 +27,7 @@ use crate::aircraft::Aircraft;
 use crate::algebra::{PolyF64, Sym, MAX_SYMS};
 use crate::certified::dense::{IPoly, IPoly2};
 use crate::certified::{
-    first_hopf_on_branch, positive_roots_by, real_roots_outside, trim_condition_at, value_at,
+    first_hopf_on_branch, positive_roots_by, BranchEnd, real_roots_outside, trim_condition_at, value_at,
     Bracket, Criterion, EnclosedHopf, EnclosedPolys, JumpPolys, Uncertified, Values,
 };
 use crate::equations::symbols;
@@ -126,9 +126,10 @@ pub fn analyze_routed_with(
 ///
 /// With aileron yaw the first departure is certified along the primary branch
 /// ([`crate::certified::first_hopf_on_branch`]): the first sign change of the Hopf
-/// determinant on the branch up to the critical jump, which the exact path finds among the
-/// roots of its Hopf resultant. Without a critical jump (the branch diverges or leaves the
-/// aileron range first), or where the branch turns in P0 before it, the exact path answers.
+/// determinant on the branch up to the critical jump (without one, up to where the branch
+/// leaves the aileron range), which the exact path finds among the roots of its Hopf
+/// resultant. Where the branch turns in P0 or diverges before that, or a piece of it cannot be
+/// decided, the exact path answers.
 pub fn analyze_first_departure(
     aircraft: &Aircraft,
     delta_e_rad: f64,
@@ -325,25 +326,37 @@ struct Branch<'a> {
 impl Branch<'_> {
     /// Sets the first departure of `analysis` (whose critical jump is `critical`) and the
     /// critical jump's landings, from the first Hopf root on the primary branch up to the
-    /// critical jump ([`first_hopf_on_branch`]); the widest relative bracket used.
+    /// critical jump, or without one up to the aileron range's end ([`first_hopf_on_branch`]);
+    /// the widest relative bracket used.
     fn first_departure(
         &self,
         analysis: &mut Analysis,
         critical: Option<usize>,
         at: &AtTrim<'_>,
     ) -> Result<f64, Uncertified> {
-        let i = critical.ok_or(Uncertified::Uncovered)?;
         let (g, trims) = (&self.found.g, &self.found.trims);
-        let fold = analysis.jump[i].clone();
-        let root = first_hopf_on_branch(self.v, fold.p0, Some(fold.delta_a_rad), MAX_WIDTH)?;
-        let landing = landing_roots(self.v, self.e, &fold, &det_a_roots(self.divergence))?;
-        let value = |b: &[Bracket]| b.iter().map(|r| r.value).collect::<Vec<f64>>();
-        analysis.jump[i].lands_at = Some(departure::landings(at, trims, &fold, &value(&landing)));
-        analysis.critical = Some(analysis.jump[i].clone());
-        let mut width = landing
-            .iter()
-            .map(Bracket::relative_width)
-            .fold(0.0, f64::max);
+        let bound = self.marks.0.aileron_range();
+        let end = match critical {
+            Some(i) => BranchEnd::Fold {
+                p0: analysis.jump[i].p0,
+                delta_a: analysis.jump[i].delta_a_rad,
+            },
+            None => BranchEnd::Bound(bound),
+        };
+        let root = first_hopf_on_branch(self.v, end, MAX_WIDTH)?;
+        let mut width = 0.0_f64;
+        if let Some(i) = critical {
+            let fold = analysis.jump[i].clone();
+            let landing = landing_roots(self.v, self.e, &fold, &det_a_roots(self.divergence))?;
+            let value = |b: &[Bracket]| b.iter().map(|r| r.value).collect::<Vec<f64>>();
+            analysis.jump[i].lands_at =
+                Some(departure::landings(at, trims, &fold, &value(&landing)));
+            analysis.critical = Some(analysis.jump[i].clone());
+            width = landing
+                .iter()
+                .map(Bracket::relative_width)
+                .fold(0.0, f64::max);
+        }
         let hopf = match root {
             Some((b, da)) => {
                 apart(&[b], self.divergence)?;
@@ -368,13 +381,15 @@ impl Branch<'_> {
             &self.found.divergence,
             &analysis.jump,
             &hopf,
-            self.marks.0.aileron_range(),
+            bound,
         );
-        // The f64 walk of the branch must agree with the certified one on which comes first.
+        // The f64 walk of the branch must agree with the certified one on which comes first
+        // (without a critical jump, on the branch leaving the aileron range first).
         let kind = first.as_ref().map(|f| f.kind);
         let agrees = match (hopf.is_empty(), kind) {
             (_, Some(k)) if k != "jump" && k != "hopf" => true,
             (true, Some("jump")) | (false, Some("hopf")) => true,
+            (true, None) => critical.is_none(),
             _ => false,
         };
         if !agrees || width > MAX_WIDTH {

@@ -104,9 +104,14 @@ pub fn first_hopf_on_branch(
             h /= 2.0;
             continue;
         };
-        if piece.hopf(v).sign() == Some(s0) {
+        let (form, at_c) = piece.hopf(v);
+        // The mean-value form's half-width grows about as the square of the piece's (the
+        // derivative's overestimate grows with the piece): the piece that would just be decided.
+        let fit = 0.8 * (b - lo) * (at_c.mig() / (form.width() / 2.0)).sqrt();
+        let fit = if fit.is_finite() { fit } else { h };
+        if form.sign() == Some(s0) {
             (lo, e_lo) = (b, piece.at_end);
-            h = (2.0 * h).min(1.0);
+            h = fit.clamp(h / 2.0, 2.0 * h).min(1.0);
             continue;
         }
         match hopf_at(v, b, piece.at_end).sign() {
@@ -116,7 +121,7 @@ pub fn first_hopf_on_branch(
                 if hi.is_none() {
                     hi = beyond(v, b, b + h, piece.at_end, s0);
                 }
-                h /= 2.0;
+                h = fit.clamp(h / 16.0, h / 2.0);
             }
         }
     }
@@ -217,11 +222,13 @@ impl Piece {
         })
     }
 
-    /// The determinant over the piece along the branch: its mean-value form.
-    fn hopf(&self, v: &Values) -> I {
-        hopf_with(OverPiece(Slope::variable(self.x)), v, self.over).map_or_else(I::entire, |s| {
-            s.mean_value(self.x, self.c, hopf_at(v, self.c, self.at_c))
-        })
+    /// The determinant over the piece along the branch (its mean-value form) and at the
+    /// piece's centre.
+    fn hopf(&self, v: &Values) -> (I, I) {
+        let at_c = hopf_at(v, self.c, self.at_c);
+        let form = hopf_with(OverPiece(Slope::variable(self.x)), v, self.over)
+            .map_or_else(I::entire, |s| s.mean_value(self.x, self.c, at_c));
+        (form, at_c)
     }
 }
 

@@ -27,8 +27,8 @@ use crate::aircraft::Aircraft;
 use crate::algebra::{PolyF64, Sym, MAX_SYMS};
 use crate::certified::dense::{IPoly, IPoly2};
 use crate::certified::{
-    first_hopf_on_branch, positive_roots_by, BranchEnd, real_roots_outside, trim_condition_at, value_at,
-    Bracket, Criterion, EnclosedHopf, EnclosedPolys, JumpPolys, Uncertified, Values,
+    first_hopf_on_branch, positive_roots_by, real_roots_outside, trim_condition_at, value_at,
+    Bracket, BranchEnd, Criterion, EnclosedHopf, EnclosedPolys, JumpPolys, Uncertified, Values,
 };
 use crate::equations::symbols;
 use crate::interval::I;

@@ -49,19 +49,20 @@ pub enum BranchEnd {
 /// branch's enclosure at its roll rate (the caller's fold is on this branch); past a
 /// [`BranchEnd::Bound`] the walk may find a root beyond the bound, which the caller places.
 ///
-/// Each piece `[a, b]` of roll rates is decided by mean-value forms in P0 ([`Slope`]): the
-/// branch's aileron over it is enclosed by parametric interval Newton on the trim condition in
-/// delta_a (the Newton image strictly inside the candidate interval proves exactly one trim
-/// there for every roll rate of the piece, so the enclosures of consecutive pieces, each
-/// containing the previous end's, follow one continuous branch), its slope in P0 by the
-/// implicit function theorem over the piece, and the determinant over the piece by its value
-/// at the piece's centre plus its enclosed derivative along the branch times the half-width:
-/// either that excludes zero (no root in the piece) or it does not, when the piece is split. A
-/// root is bracketed by a sign-definite cover of `[0, lo]` and a point `hi` of the opposite
-/// sign, and the bracket is narrowed by interval Newton on the determinant along the branch
-/// (every root in the bracket stays in its Newton image). Where the branch turns in P0 (the
-/// trim condition's slope in delta_a vanishes) or a piece cannot be decided within
-/// `PIECE_BUDGET` pieces, the answer is an [`Uncertified`] reason.
+/// Each piece `[a, b]` of roll rates is decided by mean-value forms in P0 (numbers carrying
+/// their derivative in P0, enclosed over the piece): the branch's aileron over it is enclosed
+/// by parametric interval Newton on the trim condition in delta_a (the Newton image strictly
+/// inside the candidate interval proves exactly one trim there for every roll rate of the
+/// piece, so the enclosures of consecutive pieces, each containing the previous end's, follow
+/// one continuous branch), its slope in P0 by the implicit function theorem over the piece,
+/// and the determinant over the piece by its value at the piece's centre plus its enclosed
+/// derivative along the branch times the piece's offsets from the centre: either that
+/// excludes zero (no root in the piece) or the next piece is smaller. A root is bracketed by a
+/// sign-definite cover of `[0, lo]` and a point `hi` of the opposite sign, and the bracket is
+/// narrowed by interval Newton on the determinant along the branch (every root in the bracket
+/// stays in its Newton image). Where the branch turns in P0 (the trim condition's slope in
+/// delta_a vanishes) or a piece cannot be decided within `PIECE_BUDGET` pieces, the answer is
+/// an [`Uncertified`] reason.
 pub fn first_hopf_on_branch(
     v: &Values,
     end: BranchEnd,
@@ -133,13 +134,13 @@ pub fn first_hopf_on_branch(
 /// branch).
 fn ended(end: BranchEnd, lo: f64, e_lo: I) -> Option<Result<Option<(Bracket, I)>, Uncertified>> {
     match end {
-        BranchEnd::Fold { p0, delta_a } if lo >= p0 => {
-            Some(if (delta_a - e_lo.mid()).abs() > 1e-6 * (1.0 + delta_a.abs()) {
+        BranchEnd::Fold { p0, delta_a } if lo >= p0 => Some(
+            if (delta_a - e_lo.mid()).abs() > 1e-6 * (1.0 + delta_a.abs()) {
                 Err(Uncertified::Uncovered)
             } else {
                 Ok(None)
-            })
-        }
+            },
+        ),
         BranchEnd::Bound(bound) if e_lo.lo > bound || e_lo.hi < -bound => Some(Ok(None)),
         _ => None,
     }
@@ -213,10 +214,7 @@ impl Piece {
         Some(Piece {
             x,
             c,
-            over: Slope {
-                v: image,
-                d: slope,
-            },
+            over: Slope { v: image, d: slope },
             at_c: contract(&g_c, image),
             at_end: contract(&g_b, image),
         })

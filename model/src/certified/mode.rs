@@ -220,11 +220,13 @@ impl Mode for OverPiece {
         if p.0.len() > 4 {
             return Cow::Owned(Da::anything());
         }
-        let mut out = [Slope::constant(I::point(0.0)); 4];
+        let zero = Slope::constant(I::point(0.0));
+        let mut out = [zero; 4];
         for (o, c) in out.iter_mut().zip(&p.0) {
-            *o = c.0.iter().rev().fold(Slope::constant(I::point(0.0)), |acc, k| {
-                acc * self.0 + Slope::constant(*k)
-            });
+            *o =
+                c.0.iter()
+                    .rev()
+                    .fold(zero, |acc, k| acc * self.0 + Slope::constant(*k));
         }
         Cow::Owned(Da::new(out))
     }

@@ -132,7 +132,9 @@ mod tests {
         let x = I::new(0.9, 1.1);
         let s = Slope::variable(x);
         let one = Slope::constant(I::point(1.0));
-        let f = (s * s + one).div(s + Slope::constant(I::point(3.0))).unwrap();
+        let f = (s * s + one)
+            .div(s + Slope::constant(I::point(3.0)))
+            .unwrap();
         let exact = |x: f64| (x * x + 1.0) / (x + 3.0);
         let form = f.mean_value(x, 1.0, I::point(0.5));
         assert!(form.lo <= exact(0.9) && form.hi >= exact(1.1));

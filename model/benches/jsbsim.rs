@@ -19,6 +19,8 @@
 //! - `routes::analyze_routed`: what `model analyze` runs (the certified route with departures,
 //!   the exact path where it cannot certify: the F-104's aileron yaws, so its Hopf points fall
 //!   back);
+//! - `routes::analyze_first_departure`: the jump part and the first departure (what the
+//!   envelope reports), certified along the primary branch;
 //! - `routes::analyze_routed_jump_part`: the same without departures, which the certified route
 //!   answers;
 //! - `routes::criterion_polys_exact`, `routes::hopf_polys_exact`: the exact path's stages, the
@@ -114,6 +116,15 @@ mod routes {
     fn analyze_routed(bencher: divan::Bencher) {
         let ac = f104();
         bencher.bench(|| analyze_routed_with(divan::black_box(&ac), 0.0, true).expect("analysed"));
+    }
+
+    #[divan::bench(sample_count = 10)]
+    fn analyze_first_departure(bencher: divan::Bencher) {
+        let ac = f104();
+        bencher.bench(|| {
+            model::analysis::fast::analyze_first_departure(divan::black_box(&ac), 0.0)
+                .expect("analysed")
+        });
     }
 
     #[divan::bench(sample_count = 10)]

@@ -1,7 +1,9 @@
 //! `model envelope` against the path a user takes by hand: at grid points chosen by a seeded
 //! generator, the envelope's numbers equal those of `import jsbsim ... --load-factor N` followed
-//! by `analyze` at the elevator increment (the certified route with its exact fallback, as the
-//! CLI's table) at that flight condition, and the catalogue table's row agrees with the
+//! by the analysis of the first departure at the elevator increment (`analyze_first_departure`:
+//! the certified route with its exact fallback) at that flight condition, with the roll rates
+//! of `analyze` (the CLI's table) within their certified brackets, and the catalogue table's
+//! row agrees with the
 //! envelope's point at the same condition. Bad ranges are refused before any work, and `--json`
 //! has the shape the documentation gives. Skipped with a message when the JSBSim models are not
 //! installed.
@@ -9,7 +11,7 @@
 mod support;
 
 use model::aircraft;
-use model::analysis::fast::analyze_routed_with;
+use model::analysis::fast::{analyze_first_departure, analyze_routed_with, MAX_WIDTH};
 use model::envelope::source::Source;
 use model::envelope::{envelope, Elevator, Grid, Range};
 use model::jsbsim::catalogue;
@@ -102,7 +104,24 @@ fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
         assert!((p.speed_m_s - ac.speed).abs() <= 1e-9 * ac.speed);
         assert_eq!(p.delta_e_deg, Some(increment.to_degrees()));
         assert_eq!(p.load_factor, n);
-        let (a, _) = analyze_routed_with(&ac, increment, true).unwrap();
+        let (a, _) = analyze_first_departure(&ac, increment).unwrap();
+        // `analyze` (the exact path for this aircraft's Hopf points) gives the same roots, each
+        // within its certified bracket.
+        let (full, _) = analyze_routed_with(&ac, increment, true).unwrap();
+        let p0 = |a: &model::analysis::Analysis| {
+            let d = a.first_departure.as_ref();
+            [a.critical.as_ref().map(|c| c.p0), d.map(|d| d.p0)]
+        };
+        for (x, y) in p0(&a).into_iter().zip(p0(&full)) {
+            match (x, y) {
+                (Some(x), Some(y)) => assert!(support::close_roots(x, y, MAX_WIDTH), "{x} vs {y}"),
+                (x, y) => assert_eq!(x, y),
+            }
+        }
+        assert_eq!(
+            a.first_departure.as_ref().map(|d| d.kind),
+            full.first_departure.as_ref().map(|d| d.kind)
+        );
         let critical = a.critical.as_ref();
         let envelope_critical = p.critical.as_ref();
         assert_eq!(critical.map(|c| c.p0), envelope_critical.map(|c| c.p0));
@@ -122,7 +141,7 @@ fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
         }
         checked += 1;
     }
-    println!("envelope: {checked} of 5 random grid points trimmed and equal to import + analyze");
+    println!("envelope: {checked} of 5 random grid points trimmed and equal to import + analysis");
 }
 
 /// Bad ranges exit 2 (an input error) naming the option, before the model is even read (the

@@ -441,28 +441,40 @@ pub(crate) fn hopf_points(
     trims: &[InAileron],
     marks: (&Aircraft, f64),
 ) -> Vec<HopfPoint> {
-    let o: &Orlando = orlando();
     roots
         .iter()
         .filter_map(|&p0| {
             let da = hopf_aileron(at, g, hopf_ia, trims, p0)?;
-            let point = trim_point(p0, da, trims, marks);
-            let t = [point.alpha, point.beta, p0, point.q, point.r];
-            let omega = omega_at(o, &at.coefficients(&t))?;
-            let l1 = at.lyapunov(&t, omega)?;
-            Some(HopfPoint {
-                point,
-                omega,
-                period: 2.0 * std::f64::consts::PI / omega,
-                l1,
-                kind: if l1 < 0.0 {
-                    "supercritical"
-                } else {
-                    "subcritical"
-                },
-            })
+            hopf_point(at, p0, da, trims, marks)
         })
         .collect()
+}
+
+/// The Hopf point at the root `p0` of the Hopf polynomial on the trim of aileron `da`, with its
+/// omega, period and l1; `None` for a neutral saddle (omega^2 <= 0) or values that cannot be
+/// computed.
+pub(crate) fn hopf_point(
+    at: &AtTrim<'_>,
+    p0: f64,
+    da: f64,
+    trims: &[InAileron],
+    marks: (&Aircraft, f64),
+) -> Option<HopfPoint> {
+    let point = trim_point(p0, da, trims, marks);
+    let t = [point.alpha, point.beta, p0, point.q, point.r];
+    let omega = omega_at(orlando(), &at.coefficients(&t))?;
+    let l1 = at.lyapunov(&t, omega)?;
+    Some(HopfPoint {
+        point,
+        omega,
+        period: 2.0 * std::f64::consts::PI / omega,
+        l1,
+        kind: if l1 < 0.0 {
+            "supercritical"
+        } else {
+            "subcritical"
+        },
+    })
 }
 
 /// The aileron of the trim at a root `p0` of the Hopf polynomial: of the trims of that roll rate

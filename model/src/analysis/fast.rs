@@ -18,7 +18,7 @@
 //! assert!((a.critical.unwrap().p0 - 1.706288).abs() < 1e-6);
 //! ```
 
-use super::departure::fold_window;
+use super::departure::{self, fold_window};
 use super::{
     analyze_with, check, parametric, withhold_zero_sideslip, Analysis, AnalysisError, AtTrim,
     Departures, Found, InAileron, JumpPoint, LocalPolys,
@@ -27,8 +27,8 @@ use crate::aircraft::Aircraft;
 use crate::algebra::{PolyF64, Sym, MAX_SYMS};
 use crate::certified::dense::{IPoly, IPoly2};
 use crate::certified::{
-    positive_roots_by, real_roots_outside, trim_condition_at, value_at, Bracket, Criterion,
-    EnclosedHopf, EnclosedPolys, JumpPolys, Uncertified, Values,
+    first_hopf_on_branch, positive_roots_by, real_roots_outside, trim_condition_at, value_at,
+    Bracket, BranchEnd, Criterion, EnclosedHopf, EnclosedPolys, JumpPolys, Uncertified, Values,
 };
 use crate::equations::symbols;
 use crate::interval::I;
@@ -115,7 +115,51 @@ pub fn analyze_routed_with(
     if !delta_e_rad.is_finite() || delta_e_rad.abs() > std::f64::consts::FRAC_PI_2 {
         return Err(AnalysisError::DeltaE(delta_e_rad));
     }
-    let why = match certified(aircraft, delta_e_rad, departures) {
+    let part = if departures { Part::All } else { Part::Jump };
+    routed(aircraft, delta_e_rad, part)
+}
+
+/// The jump part of [`super::analyze`] and its first departure (no other Hopf points, no
+/// landings but the critical jump's, no zero-sideslip Hopf roll rates: what the envelope and
+/// the clearance report), by the certified route where it succeeds, saying which route
+/// answered; the exact path's whole analysis otherwise.
+///
+/// With aileron yaw the first departure is certified along the primary branch
+/// ([`crate::certified::first_hopf_on_branch`]): the first sign change of the Hopf
+/// determinant on the branch up to the critical jump (without one, up to where the branch
+/// leaves the aileron range), which the exact path finds among the roots of its Hopf
+/// resultant. Where the branch turns in P0 or diverges before that, or a piece of it cannot be
+/// decided, the exact path answers.
+pub fn analyze_first_departure(
+    aircraft: &Aircraft,
+    delta_e_rad: f64,
+) -> Result<(Analysis, Route), AnalysisError> {
+    if !delta_e_rad.is_finite() || delta_e_rad.abs() > std::f64::consts::FRAC_PI_2 {
+        return Err(AnalysisError::DeltaE(delta_e_rad));
+    }
+    routed(aircraft, delta_e_rad, Part::First)
+}
+
+/// How much of the analysis a route computes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Part {
+    /// The jump part alone.
+    Jump,
+    /// The jump part and the first departure.
+    First,
+    /// Everything [`super::analyze`] gives.
+    All,
+}
+
+/// [`analyze_routed_with`] for `part` of the analysis (the exact path's fallback answers
+/// with departures unless `part` is [`Part::Jump`]).
+fn routed(
+    aircraft: &Aircraft,
+    delta_e_rad: f64,
+    part: Part,
+) -> Result<(Analysis, Route), AnalysisError> {
+    let departures = part != Part::Jump;
+    let why = match certified(aircraft, delta_e_rad, part) {
         Ok((mut a, width)) => {
             withhold_zero_sideslip(&mut a);
             match check(&a) {
@@ -141,7 +185,7 @@ pub fn analyze_routed_with(
 fn certified(
     aircraft: &Aircraft,
     delta_e_rad: f64,
-    departures: bool,
+    departures: Part,
 ) -> Result<(Analysis, f64), Uncertified> {
     let lifted = std::cell::OnceCell::new();
     let v = || lifted.get_or_init(|| Values::of(aircraft, delta_e_rad, 0.0));
@@ -163,7 +207,7 @@ fn certified(
 fn certified_with<'v>(
     aircraft: &Aircraft,
     delta_e_rad: f64,
-    departures: bool,
+    departures: Part,
     e: &EnclosedPolys,
     v: &dyn Fn() -> &'v Values,
 ) -> Result<(Analysis, f64), Uncertified> {
@@ -244,15 +288,144 @@ fn certified_with<'v>(
         )
     };
     let (mut analysis, critical) = found.assemble(aircraft, delta_e_rad, &zs_controls);
-    if !departures {
+    if departures == Part::Jump {
         return Ok((analysis, width));
     }
     let local = LocalPolys::parametric();
     let mut values: Vec<(Sym, f64)> = s.params.iter().copied().zip(data).collect();
     values.extend([(s.delta_e, delta_e_rad), (s.delta_r, 0.0)]);
-    let input = certified_departures(v(), e, &divergence, &analysis.jump, local.at(&values))?;
+    let at = || local.at(&values);
+    let input = match certified_departures(v(), e, &divergence, &analysis.jump, at()) {
+        Err(Uncertified::Uncovered) if departures == Part::First => {
+            let marks = (aircraft, delta_e_rad);
+            let on = Branch {
+                v: v(),
+                e,
+                found: &found,
+                divergence: &divergence,
+                marks,
+            };
+            let w = on.first_departure(&mut analysis, critical, &at())?;
+            return Ok((analysis, width.max(w)));
+        }
+        input => input?,
+    };
     found.add_departures(&mut analysis, critical, &input.0, (aircraft, delta_e_rad));
     Ok((analysis, width.max(input.1)))
+}
+
+/// What the first departure along the primary branch reads (aileron yaw).
+struct Branch<'a> {
+    v: &'a Values,
+    e: &'a EnclosedPolys,
+    found: &'a Found,
+    divergence: &'a [Bracket],
+    marks: (&'a Aircraft, f64),
+}
+
+impl Branch<'_> {
+    /// Sets the first departure of `analysis` (whose critical jump is `critical`) and the
+    /// critical jump's landings, from the first Hopf root on the primary branch up to the
+    /// critical jump, or without one up to the aileron range's end ([`first_hopf_on_branch`]);
+    /// the widest relative bracket used.
+    fn first_departure(
+        &self,
+        analysis: &mut Analysis,
+        critical: Option<usize>,
+        at: &AtTrim<'_>,
+    ) -> Result<f64, Uncertified> {
+        let (g, trims) = (&self.found.g, &self.found.trims);
+        let bound = self.marks.0.aileron_range();
+        let end = match critical {
+            Some(i) => BranchEnd::Fold {
+                p0: analysis.jump[i].p0,
+                delta_a: analysis.jump[i].delta_a_rad,
+            },
+            None => BranchEnd::Bound(bound),
+        };
+        let root = first_hopf_on_branch(self.v, end, MAX_WIDTH)?;
+        let mut width = 0.0_f64;
+        if let Some(i) = critical {
+            let fold = analysis.jump[i].clone();
+            let landing = landing_roots(self.v, self.e, &fold, &det_a_roots(self.divergence))?;
+            let value = |b: &[Bracket]| b.iter().map(|r| r.value).collect::<Vec<f64>>();
+            analysis.jump[i].lands_at =
+                Some(departure::landings(at, trims, &fold, &value(&landing)));
+            analysis.critical = Some(analysis.jump[i].clone());
+            width = landing
+                .iter()
+                .map(Bracket::relative_width)
+                .fold(0.0, f64::max);
+        }
+        let hopf = match root {
+            Some((b, da)) => {
+                apart(&[b], self.divergence)?;
+                width = width.max(b.relative_width());
+                // The trim of the root's roll rate on the branch, as the f64 roots of the trim
+                // condition give it (the exact path's choice among them).
+                let da = g
+                    .aileron_roots(b.value)
+                    .to_vec()
+                    .into_iter()
+                    .min_by(|x, y| (x - da.mid()).abs().total_cmp(&(y - da.mid()).abs()))
+                    .unwrap_or(da.mid());
+                let p = departure::hopf_point(at, b.value, da, trims, self.marks);
+                vec![p.ok_or(Uncertified::Sign)?]
+            }
+            None => Vec::new(),
+        };
+        let first = departure::first_departure(
+            at,
+            g,
+            trims,
+            &self.found.divergence,
+            &analysis.jump,
+            &hopf,
+            bound,
+        );
+        // The f64 walk of the branch must agree with the certified one on which comes first
+        // (without a critical jump, on the branch leaving the aileron range first).
+        let kind = first.as_ref().map(|f| f.kind);
+        let agrees = match (hopf.is_empty(), kind) {
+            (_, Some(k)) if k != "jump" && k != "hopf" => true,
+            (true, Some("jump")) | (false, Some("hopf")) => true,
+            (true, None) => critical.is_none(),
+            _ => false,
+        };
+        if !agrees || width > MAX_WIDTH {
+            return Err(Uncertified::Sign);
+        }
+        analysis.first_departure = first;
+        Ok(width)
+    }
+}
+
+/// det A's real roots from its positive ones `divergence` (det A is even in P0).
+fn det_a_roots(divergence: &[Bracket]) -> Vec<Bracket> {
+    divergence
+        .iter()
+        .map(|b| Bracket {
+            lo: -b.hi,
+            hi: -b.lo,
+            value: -b.value,
+        })
+        .chain(divergence.iter().copied())
+        .collect()
+}
+
+/// The certified real roots of the trim condition at the aileron of the fold `j` (where it can
+/// land), proven apart from det A's roots `det_a_roots`.
+fn landing_roots(
+    v: &Values,
+    e: &EnclosedPolys,
+    j: &JumpPoint,
+    det_a_roots: &[Bracket],
+) -> Result<Vec<Bracket>, Uncertified> {
+    let g = e.trim_condition.at_aileron(I::point(j.delta_a_rad));
+    let value = |x: f64| trim_condition_at(v, x, j.delta_a_rad);
+    let roots = real_roots_outside(&g, fold_window(j), Some(&value), MAX_WIDTH)?;
+    apart(&roots, det_a_roots)?;
+    Ok(roots)
 }
 
 /// The zero-sideslip controls of the parametric derivation (numerator and denominator of
@@ -294,23 +467,11 @@ fn certified_departures<'a>(
     )?;
     apart(&zs_hopf, &zs_det)?;
     // det A is even in P0: its real roots are the divergence roll rates and their mirrors.
-    let det_a_roots: Vec<Bracket> = divergence
+    let det_a_roots = det_a_roots(divergence);
+    let landing = jump
         .iter()
-        .map(|b| Bracket {
-            lo: -b.hi,
-            hi: -b.lo,
-            value: -b.value,
-        })
-        .chain(divergence.iter().copied())
-        .collect();
-    let mut landing = Vec::with_capacity(jump.len());
-    for j in jump {
-        let g = e.trim_condition.at_aileron(I::point(j.delta_a_rad));
-        let value = |x: f64| trim_condition_at(v, x, j.delta_a_rad);
-        let roots = real_roots_outside(&g, fold_window(j), Some(&value), MAX_WIDTH)?;
-        apart(&roots, &det_a_roots)?;
-        landing.push(roots);
-    }
+        .map(|j| landing_roots(v, e, j, &det_a_roots))
+        .collect::<Result<Vec<_>, _>>()?;
     let width = [&hopf, &zs_hopf]
         .into_iter()
         .chain(&landing)

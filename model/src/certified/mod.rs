@@ -41,6 +41,7 @@ pub mod num;
 pub(crate) mod tape;
 
 mod at_roll_rate;
+mod branch;
 mod characteristic;
 mod elimination;
 mod enclosed;
@@ -48,9 +49,11 @@ mod hopf;
 mod lifted;
 mod mode;
 mod rolls;
+mod slope;
 mod values;
 
 pub use at_roll_rate::{at_roll_rate, trim_condition_at, value_at, AtRollRate, Criterion};
+pub use branch::{first_hopf_on_branch, BranchEnd};
 pub use elimination::{eliminate, Coeff, Scalar};
 pub use enclosed::{EnclosedPolys, JumpPolys};
 pub use hopf::EnclosedHopf;

@@ -1,12 +1,14 @@
 //! How the lifted results are evaluated ([`Mode`]): the ring of step 8 as polynomials in P0 and
 //! delta_a ([`InP0`], to build the criterion polynomials) or as polynomials in delta_a at one
-//! roll rate ([`AtP0`], to evaluate them there tightly through the trim).
+//! roll rate ([`AtP0`], to evaluate them there tightly through the trim) or over a piece of roll
+//! rates with their derivative in it ([`OverPiece`], for mean-value forms along a branch).
 
 use super::compiled::Cleared;
 use super::dense::{Dense, Dense2};
 use super::elimination::{Coeff, Scalar};
 use super::isolate::Uncertified;
 use super::num::Num;
+use super::slope::Slope;
 use crate::derivation::{Clearing, TrimProducts};
 use crate::interval::I;
 use std::borrow::Cow;
@@ -128,21 +130,21 @@ impl<T: Num> Da<T> {
     pub(super) fn anything() -> Da<T> {
         Da::new([T::constant(I::entire()); 4])
     }
-}
 
-impl<T: Num> Clearing for AtP0<T> {
-    type Value = Da<T>;
-    fn lift(&mut self, p: &crate::algebra::Poly) -> Da<T> {
+    /// A constant of step 8.
+    fn lift(p: &crate::algebra::Poly) -> Da<T> {
         let mut c = [T::constant(I::point(0.0)); 4];
         c[0] = T::constant(constant(p));
         Da::new(c)
     }
-    fn add(&mut self, a: &Da<T>, b: &Da<T>) -> Da<T> {
-        Da::new(std::array::from_fn(|i| a.c[i] + b.c[i]))
+
+    fn add(&self, b: &Da<T>) -> Da<T> {
+        Da::new(std::array::from_fn(|i| self.c[i] + b.c[i]))
     }
-    fn mul(&mut self, a: &Da<T>, b: &Da<T>) -> Da<T> {
+
+    fn mul(&self, b: &Da<T>) -> Da<T> {
         let mut c = [T::constant(I::point(0.0)); 4];
-        for i in 0..a.len {
+        for i in 0..self.len {
             for j in 0..b.len {
                 // Step 8's products stay within degree 3 in delta_a (trim numerators are affine
                 // in it, every trim quantity at most quadratic in the trim states); a product
@@ -150,10 +152,28 @@ impl<T: Num> Clearing for AtP0<T> {
                 let Some(slot) = c.get_mut(i + j) else {
                     return Da::anything();
                 };
-                *slot = *slot + a.c[i] * b.c[j];
+                *slot = *slot + self.c[i] * b.c[j];
             }
         }
         Da::new(c)
+    }
+
+    /// The value at the aileron `da`.
+    pub(super) fn at(&self, da: T) -> T {
+        super::dense::horner(&self.c[..self.len], da)
+    }
+}
+
+impl<T: Num> Clearing for AtP0<T> {
+    type Value = Da<T>;
+    fn lift(&mut self, p: &crate::algebra::Poly) -> Da<T> {
+        Da::lift(p)
+    }
+    fn add(&mut self, a: &Da<T>, b: &Da<T>) -> Da<T> {
+        a.add(b)
+    }
+    fn mul(&mut self, a: &Da<T>, b: &Da<T>) -> Da<T> {
+        a.mul(b)
     }
 }
 
@@ -171,6 +191,46 @@ impl<T: Num> Mode for AtP0<T> {
         Cow::Owned(Da::new(out))
     }
     fn in_aileron(v: &Da<T>) -> Vec<Scalar<T>> {
+        v.c[..v.len].iter().map(|c| Scalar(*c)).collect()
+    }
+}
+
+/// The criterion over a piece of roll rates `.0` (the roll rate as a [`Slope`] variable) with
+/// its derivative in the roll rate: values are polynomials in delta_a with [`Slope`]
+/// coefficients, lifted from the same interval results as [`AtP0`].
+pub(super) struct OverPiece(pub(super) Slope);
+
+impl Clearing for OverPiece {
+    type Value = Da<Slope>;
+    fn lift(&mut self, p: &crate::algebra::Poly) -> Da<Slope> {
+        Da::lift(p)
+    }
+    fn add(&mut self, a: &Da<Slope>, b: &Da<Slope>) -> Da<Slope> {
+        a.add(b)
+    }
+    fn mul(&mut self, a: &Da<Slope>, b: &Da<Slope>) -> Da<Slope> {
+        a.mul(b)
+    }
+}
+
+impl Mode for OverPiece {
+    type Num = I;
+    type Coef = Scalar<Slope>;
+    fn lifted_ref<'a>(&self, p: &'a Dense2<I>) -> Cow<'a, Da<Slope>> {
+        if p.0.len() > 4 {
+            return Cow::Owned(Da::anything());
+        }
+        let zero = Slope::constant(I::point(0.0));
+        let mut out = [zero; 4];
+        for (o, c) in out.iter_mut().zip(&p.0) {
+            *o =
+                c.0.iter()
+                    .rev()
+                    .fold(zero, |acc, k| acc * self.0 + Slope::constant(*k));
+        }
+        Cow::Owned(Da::new(out))
+    }
+    fn in_aileron(v: &Da<Slope>) -> Vec<Scalar<Slope>> {
         v.c[..v.len].iter().map(|c| Scalar(*c)).collect()
     }
 }

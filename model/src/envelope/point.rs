@@ -8,7 +8,7 @@ use super::elevator::Elevator;
 use super::uncertainty::Uncertainty;
 use super::validation::Validation;
 use crate::aircraft;
-use crate::analysis::fast::analyze_routed_with;
+use crate::analysis::fast::analyze_first_departure;
 use crate::analysis::{Analysis, FirstDeparture};
 use crate::jsbsim::condition::{Condition, Speed};
 use crate::jsbsim::import::{trimmed_file, Loaded};
@@ -194,7 +194,7 @@ impl Point {
         self.warnings.clone_from(&ac.warnings);
         self.aileron_limit_deg = ac.limits.aileron_deg;
         let delta_e = elevator.increment;
-        let (a, route) = analyze_routed_with(&ac, delta_e, true).map_err(|e| e.to_string())?;
+        let (a, route) = analyze_first_departure(&ac, delta_e).map_err(|e| e.to_string())?;
         self.route = Some(route.name());
         self.take(a);
         if let Some(u) = uncertainty {

@@ -1,0 +1,324 @@
+//! The first Hopf point on the primary branch of an aircraft whose aileron yaws, certified by
+//! mean-value forms along the branch ([`first_hopf_on_branch`]) instead of through the Hopf
+//! resultant in delta_a.
+//!
+//! With aileron yaw the exact path eliminates delta_a from `det(A)^6 Delta4` by a resultant with
+//! the trim condition, a polynomial of degree 52 in P0 whose enclosure dividing out `det(A)^12`
+//! destroys. The envelope and the clearance need only the first departure on the primary branch,
+//! so here the branch itself is enclosed piece by piece in P0 (interval Newton on the trim
+//! condition in delta_a: a unique trim of each roll rate of the piece lies in the enclosure),
+//! and `det(A)^6 Delta4` is enclosed over each piece along the branch by its value at the
+//! piece's centre and its derivative over the piece ([`Slope`]): plain interval evaluation over
+//! a piece overestimates the range by orders of magnitude, the mean-value form only by the
+//! derivative's overestimate times the piece's width.
+
+use super::characteristic::hopf_in;
+use super::compiled::Characteristic;
+use super::dense::horner;
+use super::elimination::Scalar;
+use super::isolate::{Bracket, Uncertified};
+use super::mode::{AtP0, Da, Mode, OverPiece};
+use super::num::Num;
+use super::rolls::Unconstrained;
+use super::slope::Slope;
+use super::values::Values;
+use crate::interval::I;
+
+/// How many pieces [`first_hopf_on_branch`] evaluates before it gives up.
+pub const PIECE_BUDGET: usize = 1000;
+
+/// Where the walk along the primary branch ends.
+#[derive(Clone, Copy, Debug)]
+pub enum BranchEnd {
+    /// At the fold of the critical jump, roll rate `p0` and aileron `delta_a` (rad), which must
+    /// lie on the walked branch.
+    Fold {
+        /// The fold's roll rate, rad/s.
+        p0: f64,
+        /// The fold's aileron, rad.
+        delta_a: f64,
+    },
+    /// Where the branch's aileron leaves `[-bound, bound]` (rad): proven outside at the end.
+    Bound(f64),
+}
+
+/// The first root on the primary branch (from `P0 = 0, delta_a = 0`) of the Hopf determinant
+/// `det(A)^6 Delta4` of the data `v` before the branch's `end`: its certified bracket (relative
+/// width at most `width`) and an enclosure of the branch's aileron there, or `None` when the
+/// determinant keeps its sign up to the end, proven. A [`BranchEnd::Fold`] must lie in the
+/// branch's enclosure at its roll rate (the caller's fold is on this branch); past a
+/// [`BranchEnd::Bound`] the walk may find a root beyond the bound, which the caller places.
+///
+/// Each piece `[a, b]` of roll rates is decided by mean-value forms in P0 (numbers carrying
+/// their derivative in P0, enclosed over the piece): the branch's aileron over it is enclosed
+/// by parametric interval Newton on the trim condition in delta_a (the Newton image strictly
+/// inside the candidate interval proves exactly one trim there for every roll rate of the
+/// piece, so the enclosures of consecutive pieces, each containing the previous end's, follow
+/// one continuous branch), its slope in P0 by the implicit function theorem over the piece,
+/// and the determinant over the piece by its value at the piece's centre plus its enclosed
+/// derivative along the branch times the piece's offsets from the centre: either that
+/// excludes zero (no root in the piece) or the next piece is smaller. A root is bracketed by a
+/// sign-definite cover of `[0, lo]` and a point `hi` of the opposite sign, and the bracket is
+/// narrowed by interval Newton on the determinant along the branch (every root in the bracket
+/// stays in its Newton image). Where the branch turns in P0 (the trim condition's slope in
+/// delta_a vanishes) or a piece cannot be decided within `PIECE_BUDGET` pieces, the answer is
+/// an [`Uncertified`] reason.
+pub fn first_hopf_on_branch(
+    v: &Values,
+    end: BranchEnd,
+    width: f64,
+) -> Result<Option<(Bracket, I)>, Uncertified> {
+    let p_end = match end {
+        BranchEnd::Fold { p0, .. } => p0,
+        BranchEnd::Bound(_) => f64::INFINITY,
+    };
+    let g0 = trim_condition(v, 0.0).ok_or(Uncertified::Degenerate)?;
+    let start = newton(&g0, I::new(-1e-9, 1e-9)).ok_or(Uncertified::Degenerate)?;
+    let s0 = hopf_at(v, 0.0, start).sign().ok_or(Uncertified::Sign)?;
+    let (mut lo, mut e_lo) = (0.0_f64, start);
+    let mut hi: Option<(f64, I)> = None;
+    let mut h = p_end.min(1.0) / 16.0;
+    for _ in 0..PIECE_BUDGET {
+        if let Some((b, e_b)) = hi {
+            if b - lo <= width * b.abs() {
+                return Ok(Some((bracket(lo, b), e_b)));
+            }
+            if let Some((l, u, over)) = newton_hopf(v, lo, b, e_lo) {
+                if u - l < 0.5 * (b - lo) {
+                    let g = trim_condition(v, l).ok_or(Uncertified::Degenerate)?;
+                    (lo, e_lo, hi) = (l, contract(&g, over), Some((u, over)));
+                    continue;
+                }
+            }
+            h = h.min((b - lo) / 2.0);
+        } else if let Some(answer) = ended(end, lo, e_lo) {
+            return answer;
+        }
+        let b = match hi {
+            Some((b, _)) => (lo + h).min(b),
+            None => (lo + h).min(p_end),
+        };
+        if h <= 4.0 * f64::EPSILON * lo.max(1e-3) {
+            return Err(Uncertified::Budget);
+        }
+        let Some(piece) = Piece::over(v, lo, b, e_lo) else {
+            h /= 2.0;
+            continue;
+        };
+        let (form, at_c) = piece.hopf(v);
+        // The mean-value form's half-width grows about as the square of the piece's (the
+        // derivative's overestimate grows with the piece): the piece that would just be decided.
+        let fit = 0.8 * (b - lo) * (at_c.mig() / (form.width() / 2.0)).sqrt();
+        let fit = if fit.is_finite() { fit } else { h };
+        if form.sign() == Some(s0) {
+            (lo, e_lo) = (b, piece.at_end);
+            h = fit.clamp(h / 2.0, 2.0 * h).min(1.0);
+            continue;
+        }
+        match hopf_at(v, b, piece.at_end).sign() {
+            Some(s) if s != s0 => hi = Some((b, piece.at_end)),
+            _ => {
+                // The root may lie just beyond b: a point of the opposite sign there bounds it.
+                if hi.is_none() {
+                    hi = beyond(v, b, b + h, piece.at_end, s0);
+                }
+                h = fit.clamp(h / 16.0, h / 2.0);
+            }
+        }
+    }
+    Err(Uncertified::Budget)
+}
+
+/// Whether the walk at `lo`, the branch's aileron there in `e_lo`, is at its `end`: then no
+/// root (the fold's aileron in `e_lo`) or [`Uncertified::Uncovered`] (the fold is on another
+/// branch).
+fn ended(end: BranchEnd, lo: f64, e_lo: I) -> Option<Result<Option<(Bracket, I)>, Uncertified>> {
+    match end {
+        BranchEnd::Fold { p0, delta_a } if lo >= p0 => Some(
+            if (delta_a - e_lo.mid()).abs() > 1e-6 * (1.0 + delta_a.abs()) {
+                Err(Uncertified::Uncovered)
+            } else {
+                Ok(None)
+            },
+        ),
+        BranchEnd::Bound(bound) if e_lo.lo > bound || e_lo.hi < -bound => Some(Ok(None)),
+        _ => None,
+    }
+}
+
+/// The point `c` (beyond `b`, where the branch's trim is `e_b`) and the branch's trim there,
+/// when the determinant's sign at `c` is proven opposite to `s0`.
+fn beyond(v: &Values, b: f64, c: f64, e_b: I, s0: f64) -> Option<(f64, I)> {
+    let p = Piece::over(v, b, c, e_b)?;
+    let s = hopf_at(v, c, p.at_end).sign()?;
+    (s != s0).then_some((c, p.at_end))
+}
+
+/// One interval Newton step on the determinant along the branch over `[lo, hi]` (the branch's
+/// trim at `lo` in `e_lo`): the bracket that holds every root of `[lo, hi]`, and the branch's
+/// aileron over `[lo, hi]`; `None` when the derivative's enclosure may vanish.
+fn newton_hopf(v: &Values, lo: f64, hi: f64, e_lo: I) -> Option<(f64, f64, I)> {
+    let p = Piece::over(v, lo, hi, e_lo)?;
+    let slope = hopf_with(OverPiece(Slope::variable(p.x)), v, p.over)?;
+    let image = I::point(p.c) - hopf_at(v, p.c, p.at_c).checked_div(slope.d)?;
+    let x = image.intersect(p.x)?;
+    Some((x.lo, x.hi, p.over.v))
+}
+
+/// The bracket `[lo, hi]` with its midpoint as the value.
+fn bracket(lo: f64, hi: f64) -> Bracket {
+    Bracket {
+        lo,
+        hi,
+        value: lo + (hi - lo) / 2.0,
+    }
+}
+
+/// The branch over one piece `x` of roll rates: its aileron over the piece with its slope in
+/// P0, and the aileron's enclosures at the piece's centre `c` and at its end.
+struct Piece {
+    x: I,
+    c: f64,
+    over: Slope,
+    at_c: I,
+    at_end: I,
+}
+
+impl Piece {
+    /// The branch over `[a, b]` from its enclosure `e_a` at `a`, or `None` when interval Newton
+    /// does not prove a unique trim (the piece is too wide, or the branch turns in P0).
+    fn over(v: &Values, a: f64, b: f64, e_a: I) -> Option<Piece> {
+        let (x, c) = (I::new(a, b), a + (b - a) / 2.0);
+        let (g_c, g_b) = (trim_condition(v, c)?, trim_condition(v, b)?);
+        let g_x = trim_condition_in(OverPiece(Slope::variable(x)), v)?;
+        // The f64 trims at c and b, from the branch's aileron at a, for the candidate.
+        let (mut lo, mut hi) = (e_a.lo, e_a.hi);
+        for g in [&g_c, &g_b] {
+            let guess = root_near(g, e_a.mid())?;
+            (lo, hi) = (lo.min(guess), hi.max(guess));
+        }
+        let pad = 2.0 * (hi - lo) + 1e-12 * (1.0 + lo.abs().max(hi.abs()));
+        let candidate = I::new(lo - pad, hi + pad);
+        // Parametric interval Newton: the trim condition at the candidate's midpoint over the
+        // piece by its mean-value form in P0.
+        let m = I::point(candidate.mid());
+        let value = horner(&g_x, Slope::constant(m)).mean_value(x, c, horner(&g_c, m));
+        let values: Vec<I> = g_x.iter().map(|s| s.v).collect();
+        let image = m - value.checked_div(in_aileron_slope(&values, candidate))?;
+        if !(image.lo > candidate.lo && image.hi < candidate.hi) {
+            return None;
+        }
+        // The branch's slope over the piece: -g_P0 / g_delta_a on the piece and the image.
+        let g_p0 = horner(&g_x, Slope::constant(image)).d;
+        let slope = (-g_p0).checked_div(in_aileron_slope(&values, image))?;
+        Some(Piece {
+            x,
+            c,
+            over: Slope { v: image, d: slope },
+            at_c: contract(&g_c, image),
+            at_end: contract(&g_b, image),
+        })
+    }
+
+    /// The determinant over the piece along the branch (its mean-value form) and at the
+    /// piece's centre.
+    fn hopf(&self, v: &Values) -> (I, I) {
+        let at_c = hopf_at(v, self.c, self.at_c);
+        let form = hopf_with(OverPiece(Slope::variable(self.x)), v, self.over)
+            .map_or_else(I::entire, |s| s.mean_value(self.x, self.c, at_c));
+        (form, at_c)
+    }
+}
+
+/// The trim condition's coefficients in delta_a in the ring `m`.
+fn trim_condition_in<M, T>(mut m: M, v: &Values) -> Option<Vec<T>>
+where
+    M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
+    T: Num,
+{
+    let u = Unconstrained::new(&mut m, &v.lifted).ok()?;
+    let g = &u.trim_condition;
+    Some(g.c[..g.len].to_vec())
+}
+
+/// The trim condition's coefficients in delta_a at the roll rate `p`.
+fn trim_condition(v: &Values, p: f64) -> Option<Vec<I>> {
+    trim_condition_in(AtP0(I::point(p)), v)
+}
+
+/// The f64 root nearest `da` of the trim condition `c` (at one roll rate): a few Newton steps
+/// on its midpoints, a guess for interval Newton to prove.
+fn root_near(c: &[I], da: f64) -> Option<f64> {
+    let c: Vec<f64> = c.iter().map(|k| k.mid()).collect();
+    let mut x = da;
+    for _ in 0..6 {
+        let value = c.iter().rev().fold(0.0, |acc, k| acc * x + k);
+        let slope = c
+            .iter()
+            .enumerate()
+            .skip(1)
+            .rev()
+            .fold(0.0, |acc, (k, ck)| acc * x + ck * k as f64);
+        x -= value / slope;
+    }
+    x.is_finite().then_some(x)
+}
+
+/// The derivative in delta_a of the polynomial `c` over the ailerons `d`.
+fn in_aileron_slope(c: &[I], d: I) -> I {
+    c.iter()
+        .enumerate()
+        .skip(1)
+        .rev()
+        .fold(I::point(0.0), |acc, (k, ck)| {
+            acc * d + *ck * I::point(k as f64)
+        })
+}
+
+/// The interval Newton image of `d` for the trim condition `c` at one roll rate, or `None`
+/// when the slope may vanish.
+fn newton_image(c: &[I], d: I) -> Option<I> {
+    let mid = I::point(d.mid());
+    Some(mid - horner(c, mid).checked_div(in_aileron_slope(c, d))?)
+}
+
+/// One interval Newton step on the trim condition `c` (at one roll rate) from the candidate
+/// `d`: the image, when it lies strictly inside `d` (then exactly one trim lies in `d`, and in
+/// the image), else `None`.
+fn newton(c: &[I], d: I) -> Option<I> {
+    let image = newton_image(c, d)?;
+    (image.lo > d.lo && image.hi < d.hi).then_some(image)
+}
+
+/// The enclosure `d` of a trim of the trim condition `c` (at one roll rate) contracted by
+/// interval Newton steps (each image holds every root in `d`).
+fn contract(c: &[I], mut d: I) -> I {
+    for _ in 0..4 {
+        match newton_image(c, d).and_then(|n| n.intersect(d)) {
+            Some(n) if n.width() < d.width() => d = n,
+            _ => break,
+        }
+    }
+    d
+}
+
+/// An enclosure of `det(A)^6 Delta4` (the Hopf polynomial of the exact path before the aileron
+/// is eliminated) in the ring `m` with the aileron `da`, or `None` where it cannot be formed.
+fn hopf_with<M, T>(mut m: M, v: &Values, da: T) -> Option<T>
+where
+    M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
+    T: Num,
+{
+    let t = &v.lifted;
+    let den = m.lifted(&t.det_a);
+    let zero = T::constant(I::point(0.0));
+    let num: [Da<T>; 4] =
+        std::array::from_fn(|i| Da::new([m.lifted(&t.trim[i]).at(da), zero, zero, zero]));
+    let r = hopf_in(&mut m, &Characteristic::get().c, &t.hopf().c, &num, &den).ok()?;
+    Some(r.delta4().0)
+}
+
+/// An enclosure of `det(A)^6 Delta4` at the roll rate `p` with the aileron anywhere in `da`.
+fn hopf_at(v: &Values, p: f64, da: I) -> I {
+    hopf_with(AtP0(I::point(p)), v, da).unwrap_or_else(I::entire)
+}

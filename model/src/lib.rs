@@ -13,6 +13,7 @@ pub mod aircraft;
 pub mod algebra;
 #[cfg(feature = "analysis")]
 pub mod analysis;
+#[cfg(feature = "analysis")]
 pub mod certified;
 #[cfg(feature = "cli")]
 pub mod clearance;
@@ -25,6 +26,7 @@ pub mod envelope;
 pub mod equations;
 pub mod files;
 pub mod interval;
+#[cfg(feature = "jsbsim")]
 pub mod jsbsim;
 #[cfg(feature = "cli")]
 pub mod plot;

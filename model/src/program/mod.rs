@@ -10,6 +10,8 @@
 //! module uses neither: it sits below both.
 
 pub(crate) mod builder;
+// The certified route's only: the proc-macro's build (no `analysis`) leaves it out.
+#[cfg(feature = "analysis")]
 pub(crate) mod criterion;
 pub(crate) mod expr;
 pub(crate) mod linear;

@@ -27,6 +27,7 @@ use model::jsbsim::condition::Speed;
 use model::jsbsim::import::{import, Alpha, Request};
 use model::random::Rng;
 use model::simulation::{simulate, Model, SimSettings};
+use rayon::prelude::*;
 use serde_json::Value;
 
 /// Relative agreement of the settled roll rates before a jump. Both sides integrate accurately
@@ -160,12 +161,14 @@ fn the_criterion_and_the_7th_order_model_agree_with_jsbsims_6_dof() {
     );
     let mut failures = Vec::new();
     let (mut compared, mut judged) = (0, 0);
-    for c in cases() {
+    // JSBSim's sweeps are independent processes: run them on every core at once.
+    let cases = cases();
+    let sweeps: Vec<Value> = cases.par_iter().map(jsbsim_sweep).collect();
+    for (c, sweep) in cases.into_iter().zip(sweeps) {
         let ac = imported(&c);
         let analysis = analyze(&ac, 0.0).expect("analysis");
         let critical = analysis.critical.as_ref().map(|j| j.delta_a_deg.abs());
         let limit = ac.limits.aileron_deg.expect("an aileron limit");
-        let sweep = jsbsim_sweep(&c);
         let travel = sweep["trim"]["aileron_travel_deg"][1]
             .as_f64()
             .expect("travel");

@@ -122,14 +122,16 @@ pub fn analyze_routed_with(
 /// The jump part of [`super::analyze`] and its first departure (no other Hopf points, no
 /// landings but the critical jump's, no zero-sideslip Hopf roll rates: what the envelope and
 /// the clearance report), by the certified route where it succeeds, saying which route
-/// answered; the exact path's whole analysis otherwise.
+/// answered; otherwise the exact path's (reported as [`Route::Exact`]).
 ///
 /// With aileron yaw the first departure is certified along the primary branch
 /// ([`crate::certified::first_hopf_on_branch`]): the first sign change of the Hopf
 /// determinant on the branch up to the critical jump (without one, up to where the branch
 /// leaves the aileron range), which the exact path finds among the roots of its Hopf
-/// resultant. Where the branch turns in P0 or diverges before that, or a piece of it cannot be
-/// decided, the exact path answers.
+/// resultant. Where the jump part's certificate fails, the exact path's jump part answers and
+/// the same walk starts from its critical jump (a fraction of the exact Hopf resultant's cost);
+/// where the branch turns in P0 or diverges before that, or a piece of it cannot be decided,
+/// the whole exact path answers.
 pub fn analyze_first_departure(
     aircraft: &Aircraft,
     delta_e_rad: f64,

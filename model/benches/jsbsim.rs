@@ -25,7 +25,15 @@
 //!   answers;
 //! - `routes::criterion_polys_exact`, `routes::hopf_polys_exact`: the exact path's stages, the
 //!   criterion polynomials (det A, trim, det J5, d specialised) and the Hopf polynomial (the
-//!   resultant in delta_a, in big rationals).
+//!   resultant in delta_a, in big rationals);
+//! - `routes::analyze_exact_jump_part`: the exact path without departures (its jump part).
+//!
+//! And at 0 m, Mach 0.7, 1 g, a point where the enclosures of the jump polynomial cannot certify
+//! its roots (the first departure falls back):
+//!
+//! - `routes::fallback_analyze_exact`: the exact path there, the baseline;
+//! - `routes::fallback_first_departure`: what the envelope runs there (the exact path's jump
+//!   part, the first departure certified along the primary branch).
 
 use model::analysis::fast::analyze_routed_with;
 use model::jsbsim::condition::Speed;
@@ -90,15 +98,20 @@ fn analyze_f104_jump_part(bencher: divan::Bencher) {
 mod routes {
     use super::*;
     use model::aircraft::Aircraft;
-    use model::analysis::{analyze, parametric, CriterionPolys, HopfPolys};
+    use model::analysis::{analyze, analyze_with, parametric, CriterionPolys, HopfPolys};
 
     /// The imported F-104 at 6,000 m, Mach 0.6, 1 g.
     fn f104() -> Aircraft {
+        f104_at(6000.0, 0.6)
+    }
+
+    /// The imported F-104 at `altitude_m` and Mach `mach`, 1 g.
+    fn f104_at(altitude_m: f64, mach: f64) -> Aircraft {
         let request = Request {
             model: std::env::var("F104_XML").expect("set by main"),
             root: None,
-            altitude_m: 6000.0,
-            speed: Speed::Mach(0.6),
+            altitude_m,
+            speed: Speed::Mach(mach),
             alpha: Alpha::Trim(1.0),
             settings: Vec::new(),
         };
@@ -144,5 +157,26 @@ mod routes {
         let ac = f104();
         let cp = CriterionPolys::new(parametric(), &ac, 0.0);
         bencher.bench(|| HopfPolys::new(divan::black_box(&cp), &ac, 0.0));
+    }
+
+    #[divan::bench(sample_count = 10)]
+    fn analyze_exact_jump_part(bencher: divan::Bencher) {
+        let ac = f104();
+        bencher.bench(|| analyze_with(divan::black_box(&ac), 0.0, false).expect("analysed"));
+    }
+
+    #[divan::bench(sample_count = 10)]
+    fn fallback_analyze_exact(bencher: divan::Bencher) {
+        let ac = f104_at(0.0, 0.7);
+        bencher.bench(|| analyze(divan::black_box(&ac), 0.0).expect("analysed"));
+    }
+
+    #[divan::bench(sample_count = 10)]
+    fn fallback_first_departure(bencher: divan::Bencher) {
+        let ac = f104_at(0.0, 0.7);
+        bencher.bench(|| {
+            model::analysis::fast::analyze_first_departure(divan::black_box(&ac), 0.0)
+                .expect("analysed")
+        });
     }
 }

@@ -34,12 +34,13 @@ use crate::aircraft::Aircraft;
 use crate::algebra::{Poly, Sym};
 use crate::derivation::{eliminate_aileron, zero_sideslip_step8, Derivation, Ratio};
 use crate::equations::symbols;
-use crate::roots::{positive_roots, RealRoot, UPoly};
+use crate::roots::{positive_roots, UPoly};
 use serde::Serialize;
 
 mod departure;
 #[cfg(feature = "cli")]
 pub mod diagram;
+mod exact_jump;
 pub mod fast;
 pub(crate) mod primary;
 #[cfg(feature = "cli")]
@@ -51,6 +52,7 @@ pub use crate::specialise::{
 };
 use crate::specialise::{on_trim, OnTrim};
 pub use departure::{omega_at, AtTrim, FirstDeparture, HopfPoint, HopfPolys, Landing, LocalPolys};
+pub(crate) use exact_jump::{exact_jump_part, ExactJumpPart};
 pub use primary::Outcome;
 
 /// A trim on the unconstrained roll (delta_r = 0) at which something happens: a jump point (a
@@ -237,45 +239,15 @@ pub fn analyze_with(
     if !delta_e_rad.is_finite() || delta_e_rad.abs() > std::f64::consts::FRAC_PI_2 {
         return Err(AnalysisError::DeltaE(delta_e_rad));
     }
-    let s = symbols();
-    let d = CriterionPolys::new(parametric(), aircraft, delta_e_rad);
-    let u = |p: &Poly| univariate(p, s.p0);
-
-    let det_a = u(&d.det_a);
-    if det_a.is_zero() {
-        return Err(AnalysisError::Degenerate("det A"));
-    }
-    if d.jump.is_zero() {
-        return Err(AnalysisError::Degenerate("det J5"));
-    }
-    let values = |roots: Vec<RealRoot>| roots.iter().map(|r| r.value).collect::<Vec<f64>>();
-    // Every root shared with det A is a trim at infinity (divergence), not a pole on the curve;
-    // a root shared with det A after cancellation has no finite trim: not a jump point.
-    let zs_det = u(&d.zs_det);
-    let zs_num = strip(&cancel(&u(&d.zs_jump), &u(&d.zs_d_det)).0, &zs_det);
-    let found = Found {
-        divergence: values(positive_roots(&det_a)),
-        jump_roots: values(positive_roots(&strip(&cancel(&d.jump, &d.poles).0, &det_a))),
-        pole_roots: values(positive_roots(&strip(&d.poles, &det_a))),
-        zs_roots: values(positive_roots(&zs_num)),
-        g: in_aileron(&d.trim_condition),
-        // The trim numerators share det A's scale, so that their ratios are the trim.
-        trims: in_aileron_all(&[&d.det_a, &d.trim[0], &d.trim[1], &d.trim[2], &d.trim[3]]),
-        jump_at: in_aileron(&d.jump_at),
-        d_at: in_aileron(&d.d_at),
-        // Numerators share the determinant's scale (see `in_aileron_all`).
-        zs_trims: in_aileron_all(&[&d.zs_det, &d.zs_trim[0], &d.zs_trim[1], &d.zs_trim[2]]),
-        // Without lateral control authority (l_delta_a n_delta_r = l_delta_r n_delta_a) no
-        // zero-sideslip trim exists: there is nothing to report.
-        lateral_authority: !d.zs_delta_a.den.is_zero(),
-    };
-    let zs_controls =
-        |at: &[(Sym, f64)]| (eval_trim(&d.zs_delta_a, at), eval_trim(&d.zs_delta_r, at));
-    let (mut analysis, critical) = found.assemble(aircraft, delta_e_rad, &zs_controls);
-
+    let ExactJumpPart {
+        d,
+        found,
+        mut analysis,
+        critical,
+    } = exact_jump_part(aircraft, delta_e_rad)?;
     if departures {
         let hp = HopfPolys::new(&d, aircraft, delta_e_rad);
-        let roots = |p: &UPoly| values(positive_roots(p));
+        let roots = |p: &UPoly| positive_roots(p).iter().map(|r| r.value).collect();
         let landing_roots = analysis
             .jump
             .iter()

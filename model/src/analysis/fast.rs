@@ -20,10 +20,10 @@
 
 use super::departure::{self, fold_window};
 use super::{
-    analyze_with, check, parametric, withhold_zero_sideslip, Analysis, AnalysisError, AtTrim,
-    Departures, Found, InAileron, JumpPoint, LocalPolys,
+    analyze_with, check, exact_jump_part, parametric, withhold_zero_sideslip, Analysis,
+    AnalysisError, AtTrim, Departures, ExactJumpPart, Found, InAileron, JumpPoint, LocalPolys,
 };
-use crate::aircraft::Aircraft;
+use crate::aircraft::{Aircraft, Param};
 use crate::algebra::{PolyF64, Sym, MAX_SYMS};
 use crate::certified::dense::{IPoly, IPoly2};
 use crate::certified::{
@@ -122,14 +122,16 @@ pub fn analyze_routed_with(
 /// The jump part of [`super::analyze`] and its first departure (no other Hopf points, no
 /// landings but the critical jump's, no zero-sideslip Hopf roll rates: what the envelope and
 /// the clearance report), by the certified route where it succeeds, saying which route
-/// answered; the exact path's whole analysis otherwise.
+/// answered; otherwise the exact path's (reported as [`Route::Exact`]).
 ///
 /// With aileron yaw the first departure is certified along the primary branch
 /// ([`crate::certified::first_hopf_on_branch`]): the first sign change of the Hopf
 /// determinant on the branch up to the critical jump (without one, up to where the branch
 /// leaves the aileron range), which the exact path finds among the roots of its Hopf
-/// resultant. Where the branch turns in P0 or diverges before that, or a piece of it cannot be
-/// decided, the exact path answers.
+/// resultant. Where the jump part's certificate fails, the exact path's jump part answers and
+/// the same walk starts from its critical jump (a fraction of the exact Hopf resultant's cost);
+/// where the branch turns in P0 or diverges before that, or a piece of it cannot be decided,
+/// the whole exact path answers.
 pub fn analyze_first_departure(
     aircraft: &Aircraft,
     delta_e_rad: f64,
@@ -172,7 +174,75 @@ fn routed(
         }
         Err(why) => why,
     };
+    if part == Part::First {
+        if let Some(a) = exact_jumps_then_branch(aircraft, delta_e_rad) {
+            return Ok((a, Route::Exact(why)));
+        }
+    }
     analyze_with(aircraft, delta_e_rad, departures).map(|a| (a, Route::Exact(why)))
+}
+
+/// The fallback of [`analyze_first_departure`] for an aircraft whose aileron yaws: the exact
+/// path's jump part (its exact roots, a few milliseconds) and the first departure certified
+/// along the primary branch from its critical jump ([`Branch::first_departure`]), instead of
+/// the exact path's Hopf resultant (about 60 of its 100 ms on the F-104). `None` where the
+/// exact path refuses the data, the aileron does not yaw, or a certificate of the walk fails:
+/// the whole exact path answers then.
+fn exact_jumps_then_branch(aircraft: &Aircraft, delta_e_rad: f64) -> Option<Analysis> {
+    if num_traits::Zero::is_zero(aircraft.exact(Param::NDeltaA)) {
+        return None;
+    }
+    let ExactJumpPart {
+        found,
+        mut analysis,
+        critical,
+        ..
+    } = exact_jump_part(aircraft, delta_e_rad).ok()?;
+    let v = Values::of(aircraft, delta_e_rad, 0.0);
+    let e = EnclosedPolys::new(&v).ok()?;
+    let divergence = positive_roots_by(
+        &e.det_a,
+        Some(&|x| value_at(&v, Criterion::DetA, x)),
+        MAX_WIDTH,
+    )
+    .ok()?;
+    // The certified divergence roll rates must be the exact path's (the walk proves its roots
+    // apart from the former, the f64 walk of the branch stops at the latter).
+    let same = divergence.len() == found.divergence.len()
+        && divergence
+            .iter()
+            .zip(&found.divergence)
+            .all(|(b, x)| b.lo <= *x && *x <= b.hi);
+    if !same {
+        return None;
+    }
+    let at = at_trim_values(aircraft, delta_e_rad);
+    let on = Branch {
+        v: &v,
+        e: &e,
+        found: &found,
+        divergence: &divergence,
+        marks: (aircraft, delta_e_rad),
+    };
+    on.first_departure(&mut analysis, critical, &LocalPolys::parametric().at(&at))
+        .ok()?;
+    withhold_zero_sideslip(&mut analysis);
+    check(&analysis).ok()?;
+    Some(analysis)
+}
+
+/// Every parameter's f64 value of `aircraft`, the elevator `delta_e_rad` and `delta_r = 0`:
+/// what [`LocalPolys::at`] evaluates the f64 trims at.
+fn at_trim_values(aircraft: &Aircraft, delta_e_rad: f64) -> Vec<(Sym, f64)> {
+    let s = symbols();
+    let mut values: Vec<(Sym, f64)> = s
+        .params
+        .iter()
+        .copied()
+        .zip(aircraft.values_f64())
+        .collect();
+    values.extend([(s.delta_e, delta_e_rad), (s.delta_r, 0.0)]);
+    values
 }
 
 /// The certified route and its widest relative bracket, or why it cannot certify.
@@ -292,8 +362,7 @@ fn certified_with<'v>(
         return Ok((analysis, width));
     }
     let local = LocalPolys::parametric();
-    let mut values: Vec<(Sym, f64)> = s.params.iter().copied().zip(data).collect();
-    values.extend([(s.delta_e, delta_e_rad), (s.delta_r, 0.0)]);
+    let values = at_trim_values(aircraft, delta_e_rad);
     let at = || local.at(&values);
     let input = match certified_departures(v(), e, &divergence, &analysis.jump, at()) {
         Err(Uncertified::Uncovered) if departures == Part::First => {

@@ -8,13 +8,15 @@ use super::error::JsbsimError;
 use super::table::TableData;
 use super::xml::Source;
 use roxmltree::Node;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 /// Property names seen in a model, each with a stable index.
 #[derive(Clone, Debug, Default)]
 pub struct Symbols {
     names: Vec<String>,
-    index: HashMap<String, usize>,
+    /// FxHash: names are looked up at every evaluation of the coefficients (the trim of one
+    /// envelope point makes hundreds), where SipHash's resistance to collisions buys nothing.
+    index: FxHashMap<String, usize>,
 }
 
 impl Symbols {

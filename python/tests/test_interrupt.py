@@ -7,8 +7,11 @@ import time
 
 from conftest import ROOT
 
+# The child handles SIGINT as an interactive Python does, whatever it inherits: a shell that
+# starts the tests in the background without job control hands them SIGINT ignored.
 LONG = """
-import roll_coupling as rc, sys, time
+import roll_coupling as rc, signal, sys, time
+signal.signal(signal.SIGINT, signal.default_int_handler)
 print("start", flush=True)
 t = time.perf_counter()
 try:

@@ -25,10 +25,10 @@ use model::analysis::analyze;
 use model::jsbsim::catalogue;
 use model::jsbsim::condition::Speed;
 use model::jsbsim::import::{import, Alpha, Request};
-use model::random::Rng;
 use model::simulation::{simulate, Model, SimSettings};
 use rayon::prelude::*;
 use serde_json::Value;
+use support::oracle::{seeded_cases, Case};
 
 /// Relative agreement of the settled roll rates before a jump. Both sides integrate accurately
 /// (JSBSim's Euler rates converge to 5e-4 rad/s in the settled roll rate, measured at half its
@@ -52,34 +52,10 @@ const SWEEP: (f64, f64, f64) = (4.0, 30.0, 0.5);
 /// up to 0.14 in 15 s).
 const RUN_S: f64 = 15.0;
 
-/// One condition of the comparison.
-struct Case {
-    model: &'static str,
-    altitude_m: f64,
-    mach: f64,
-    load_factor: f64,
-}
-
 /// Six F-104 and three F-15 points drawn over their envelopes (seeded), each in 1-g level
 /// flight and in an unloaded roll.
 fn cases() -> Vec<Case> {
-    let mut rng = Rng::new(43);
-    let mut out = Vec::new();
-    for (model, count) in [("f104", 6), ("f15", 3)] {
-        for _ in 0..count {
-            let altitude_m = (rng.uniform(0.0, 10_000.0) / 100.0).round() * 100.0;
-            let mach = (rng.uniform(0.5, 0.9) * 100.0).round() / 100.0;
-            for load_factor in [1.0, 0.0] {
-                out.push(Case {
-                    model,
-                    altitude_m,
-                    mach,
-                    load_factor,
-                });
-            }
-        }
-    }
-    out
+    seeded_cases(43, &[("f104", 6), ("f15", 3)], (0.0, 10_000.0), (0.5, 0.9))
 }
 
 /// The imported aircraft at the case's n-g trim.

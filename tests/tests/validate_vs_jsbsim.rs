@@ -15,9 +15,9 @@ use model::jsbsim::catalogue;
 use model::jsbsim::condition::{Condition, Speed};
 use model::jsbsim::import::Loaded;
 use model::jsbsim::trim::trim;
-use model::random::Rng;
 use model::six_dof::sweep;
 use serde_json::Value;
+use support::oracle::{seeded_cases, Case};
 
 /// The aileron steps of both sweeps, deg (JSBSim's left aileron, a roll to the right): every
 /// degree over the F-104's travel (20 deg) and a little past it, where its unloaded rolls jump.
@@ -26,35 +26,15 @@ const STEPS: (f64, f64, f64) = (8.0, 22.0, 1.0);
 /// The length of each run, s (`model validate`'s default).
 const RUN_S: f64 = 10.0;
 
-/// One condition of the comparison.
-#[derive(Debug)]
-struct Case {
-    model: &'static str,
-    altitude_m: f64,
-    mach: f64,
-    load_factor: f64,
-}
-
 /// Two F-104 points and one F-15 point drawn over their envelopes (seeded), each in 1-g level
 /// flight and in an unloaded roll.
 fn cases() -> Vec<Case> {
-    let mut rng = Rng::new(45);
-    let mut out = Vec::new();
-    for (model, count) in [("f104", 2), ("f15", 1)] {
-        for _ in 0..count {
-            let altitude_m = (rng.uniform(2_000.0, 10_000.0) / 100.0).round() * 100.0;
-            let mach = (rng.uniform(0.6, 0.9) * 100.0).round() / 100.0;
-            for load_factor in [1.0, 0.0] {
-                out.push(Case {
-                    model,
-                    altitude_m,
-                    mach,
-                    load_factor,
-                });
-            }
-        }
-    }
-    out
+    seeded_cases(
+        45,
+        &[("f104", 2), ("f15", 1)],
+        (2_000.0, 10_000.0),
+        (0.6, 0.9),
+    )
 }
 
 /// The aileron steps, deg.

@@ -2,8 +2,9 @@
 //! input, the answer as JSON on the last line of its standard output. Shared by `jsbsim.rs`,
 //! `jsbsim_trim.rs` (through `support`) and `jsbsim_limits.rs`; and JSBSim's own 6-DOF, run
 //! from its command line, by `six_dof.rs`, `six_dof_native.rs`, `validate_vs_jsbsim.rs` and
-//! `envelope.rs`.
+//! `envelope.rs`, the first and the third at seeded flight conditions drawn here.
 
+use model::random::Rng;
 use serde_json::Value;
 use std::io::Write;
 use std::path::Path;
@@ -65,4 +66,40 @@ pub fn six_dof(
         String::from_utf8_lossy(&out.stderr)
     );
     serde_json::from_slice(&out.stdout).expect("the oracle's JSON")
+}
+
+/// One flight condition of a comparison with JSBSim's 6-DOF.
+#[derive(Debug)]
+pub struct Case {
+    pub model: &'static str,
+    pub altitude_m: f64,
+    pub mach: f64,
+    pub load_factor: f64,
+}
+
+/// `count` points of each model drawn (seeded) over `altitude_m` (rounded to 100 m) and `mach`
+/// (rounded to 0.01), each in 1-g level flight and in an unloaded roll.
+pub fn seeded_cases(
+    seed: u64,
+    models: &[(&'static str, usize)],
+    altitude_m: (f64, f64),
+    mach: (f64, f64),
+) -> Vec<Case> {
+    let mut rng = Rng::new(seed);
+    let mut out = Vec::new();
+    for &(model, count) in models {
+        for _ in 0..count {
+            let h = (rng.uniform(altitude_m.0, altitude_m.1) / 100.0).round() * 100.0;
+            let m = (rng.uniform(mach.0, mach.1) * 100.0).round() / 100.0;
+            for load_factor in [1.0, 0.0] {
+                out.push(Case {
+                    model,
+                    altitude_m: h,
+                    mach: m,
+                    load_factor,
+                });
+            }
+        }
+    }
+    out
 }

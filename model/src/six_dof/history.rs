@@ -19,7 +19,7 @@ pub struct History {
     pub alpha: Vec<f64>,
     /// Sideslip, rad.
     pub beta: Vec<f64>,
-    /// Body rates p, q, r, rad/s.
+    /// Roll rate, rad/s.
     pub p: Vec<f64>,
     /// Pitch rate, rad/s.
     pub q: Vec<f64>,

@@ -37,6 +37,9 @@ use num_traits::{One, Zero};
 
 mod dimensional_toml;
 mod isa;
+mod unreduced;
+
+use unreduced::Unreduced;
 
 pub use dimensional_toml::toml_number;
 pub use isa::{isa_density, ISA_G0_M_S2, ISA_LAPSE_K_M, ISA_P0_PA, ISA_R_J_KG_K, ISA_T0_K};
@@ -228,13 +231,13 @@ fn tilt(ix: f64, iz: f64, ixz: f64) -> f64 {
 /// the angle of attack of the principal axis `alpha_t = alpha - eps` (the principal x axis lies
 /// `eps` below the body x axis, so the flight path is `alpha - eps` below it); `alpha_t` is 0 when
 /// the file gives no trim alpha.
-fn trim_terms(input: &BodyAxisInput, eps: &f64) -> (BigRational, BigRational) {
-    let g = BigRational::new(980_665.into(), 100_000.into());
-    let z_0 = -(&input.load_factor * g / &input.speed);
+fn trim_terms(input: &BodyAxisInput, eps: &f64) -> (Unreduced, Unreduced) {
+    let g = Unreduced::from(&BigRational::new(980_665.into(), 100_000.into()));
+    let z_0 = -&(&(&Unreduced::from(&input.load_factor) * &g) / &Unreduced::from(&input.speed));
     let alpha_t = match &input.trim_alpha {
-        None => BigRational::zero(),
-        Some(a) if *eps == 0.0 => a.clone(),
-        Some(a) => a - q(*eps),
+        None => Unreduced::integer(0),
+        Some(a) if *eps == 0.0 => a.into(),
+        Some(a) => &Unreduced::from(a) - &Unreduced::from(&q(*eps)),
     };
     (z_0, alpha_t)
 }
@@ -281,109 +284,117 @@ fn air_density(density: &Density) -> (BigRational, String, bool) {
     }
 }
 
-/// `x` rounded to the nearest f64; a value beyond f64 stays exact here, for the loader to refuse
-/// with its name.
-fn round_once(x: &BigRational) -> BigRational {
-    let v = rational_to_f64(x);
-    if v.is_finite() {
+/// `x` rounded to the nearest f64 (`round`), or exact; a value beyond f64 stays exact, for the
+/// loader to refuse with its name.
+fn finished(x: &Unreduced, round: bool) -> BigRational {
+    let v = x.to_f64();
+    if round && v.is_finite() {
         q(v)
     } else {
-        x.clone()
+        x.reduced()
     }
 }
 
 /// [`convert`], with the results rounded once each to f64 when an irrational step went
-/// through f64 (`round`), or left exact.
+/// through f64 (`round`), or left exact. The arithmetic reduces only the results
+/// ([`Unreduced`]).
 fn convert_rounding(input: &BodyAxisInput, round: bool) -> Converted {
     let f = rational_to_f64;
     let (density, density_source, mut rounded) = air_density(&input.density);
-    let v = &input.speed;
-    let two = BigRational::from_integer(2.into());
-    let qbar = &density * v * v / &two;
-    let qs = &qbar * &input.wing_area;
-    let (b, c, m) = (&input.span, &input.chord, &input.mass);
-    let k = |x: Coefficient| input.coefficient(x).clone();
+    let u = |x: &BigRational| Unreduced::from(x);
+    let v = &u(&input.speed);
+    let two = &Unreduced::integer(2);
+    let qbar = &(&(&(&u(&density) * v) * v) / two);
+    let qs = &(qbar * &u(&input.wing_area));
+    let (b, c, m, iy) = (
+        &u(&input.span),
+        &u(&input.chord),
+        &u(&input.mass),
+        &u(&input.iy),
+    );
+    let k = |x: Coefficient| u(input.coefficient(x));
 
-    let z_alpha = -(&qs * k(Coefficient::CLAlpha)) / (m * v);
-    let y_beta = &qs * k(Coefficient::CYBeta) / (m * v);
-    let lat = &qs * b;
-    let lat_rate = &lat * b / (&two * v);
-    let lon = &qs * c;
-    let lon_rate = &lon * c / (&two * v);
-    let m_alpha = &lon * k(Coefficient::CmAlpha) / &input.iy;
-    let m_q = &lon_rate * k(Coefficient::CmQ) / &input.iy;
-    let m_delta_e = &lon * k(Coefficient::CmDeltaE) / &input.iy;
+    let z_alpha = -&(&(qs * &k(Coefficient::CLAlpha)) / &(m * v));
+    let y_beta = &(qs * &k(Coefficient::CYBeta)) / &(m * v);
+    let lat = &(qs * b);
+    let lat_rate = &(&(lat * b) / &(two * v));
+    let lon = &(qs * c);
+    let lon_rate = &(&(lon * c) / &(two * v));
+    let m_alpha = &(lon * &k(Coefficient::CmAlpha)) / iy;
+    let m_q = &(lon_rate * &k(Coefficient::CmQ)) / iy;
+    let m_delta_e = &(lon * &k(Coefficient::CmDeltaE)) / iy;
 
     let eps = tilt(f(&input.ix), f(&input.iz), f(&input.ixz));
     let (cs, sn) = if input.ixz.is_zero() {
-        (BigRational::one(), BigRational::zero())
+        (Unreduced::integer(1), Unreduced::integer(0))
     } else {
         rounded = true;
-        (q(eps.cos()), q(eps.sin()))
+        (u(&q(eps.cos())), u(&q(eps.sin())))
     };
-    let (a, d, h) = (&input.ix, &input.iz, &input.ixz);
+    let (cs, sn) = (&cs, &sn);
+    let (a, d, h) = (&u(&input.ix), &u(&input.iz), &u(&input.ixz));
     // R^T [[ix, -ixz], [-ixz, iz]] R with R = [[c, -s], [s, c]]
-    let ix_p = &cs * &cs * a - &two * &cs * &sn * h + &sn * &sn * d;
-    let iz_p = &sn * &sn * a + &two * &cs * &sn * h + &cs * &cs * d;
+    let cc = &(cs * cs);
+    let (ss, cs2) = (&(sn * sn), &(&(two * cs) * sn));
+    let ix_p = &(&(cc * a) - &(cs2 * h)) + &(ss * d);
+    let iz_p = &(&(ss * a) + &(cs2 * h)) + &(cc * d);
 
     // (L, N) -> R^T (L, N) = (c L + s N, -s L + c N)
-    let rotate = |l: BigRational, n: BigRational| (&cs * &l + &sn * &n, -(&sn * &l) + &cs * &n);
-    let moments = |cl: Coefficient, cn: Coefficient, scale: &BigRational| {
-        rotate(scale * k(cl), scale * k(cn))
-    };
-    let (l_beta, n_beta) = moments(Coefficient::ClBeta, Coefficient::CnBeta, &lat);
-    let (l_da, n_da) = moments(Coefficient::ClDeltaA, Coefficient::CnDeltaA, &lat);
-    let (l_dr, n_dr) = moments(Coefficient::ClDeltaR, Coefficient::CnDeltaR, &lat);
+    let rotate = |l: &Unreduced, n: &Unreduced| (&(cs * l) + &(sn * n), &(cs * n) - &(sn * l));
+    let moments = |cl: Coefficient, cn: Coefficient| rotate(&(lat * &k(cl)), &(lat * &k(cn)));
+    let (l_beta, n_beta) = moments(Coefficient::ClBeta, Coefficient::CnBeta);
+    let (l_da, n_da) = moments(Coefficient::ClDeltaA, Coefficient::CnDeltaA);
+    let (l_dr, n_dr) = moments(Coefficient::ClDeltaR, Coefficient::CnDeltaR);
     // Rate block: R^T A R, column by column: A R's columns are A (c, s) and A (-s, c).
     let (lp, lr) = (
-        &lat_rate * k(Coefficient::ClP),
-        &lat_rate * k(Coefficient::ClR),
+        &(lat_rate * &k(Coefficient::ClP)),
+        &(lat_rate * &k(Coefficient::ClR)),
     );
     let (np, nr) = (
-        &lat_rate * k(Coefficient::CnP),
-        &lat_rate * k(Coefficient::CnR),
+        &(lat_rate * &k(Coefficient::CnP)),
+        &(lat_rate * &k(Coefficient::CnR)),
     );
-    let col1 = rotate(&lp * &cs + &lr * &sn, &np * &cs + &nr * &sn);
-    let col2 = rotate(-(&lp * &sn) + &lr * &cs, -(&np * &sn) + &nr * &cs);
-    let (l_p, n_p) = col1;
-    let (l_r, n_r) = col2;
+    let (l_p, n_p) = rotate(&(&(lp * cs) + &(lr * sn)), &(&(np * cs) + &(nr * sn)));
+    let (l_r, n_r) = rotate(&(&(lr * cs) - &(lp * sn)), &(&(nr * cs) - &(np * sn)));
 
-    let by = |x: BigRational, i: &BigRational| {
+    let by = |x: &Unreduced, i: &Unreduced| {
         if i.is_zero() {
-            BigRational::zero()
+            Unreduced::integer(0)
         } else {
             x / i
         }
     };
     let (z_0, alpha_t) = trim_terms(input, &eps);
+    let round = rounded && round;
     let mut derivatives = Vec::with_capacity(Param::COUNT - 3);
     for p in Param::ALL.iter().skip(3) {
-        derivatives.push(match p {
+        let x = match p {
             Param::ZAlpha => z_alpha.clone(),
             Param::YBeta => y_beta.clone(),
-            Param::Lp => by(l_p.clone(), &ix_p),
-            Param::Lr => by(l_r.clone(), &ix_p),
-            Param::LBeta => by(l_beta.clone(), &ix_p),
-            Param::LDeltaA => by(l_da.clone(), &ix_p),
-            Param::LDeltaR => by(l_dr.clone(), &ix_p),
+            Param::Lp => by(&l_p, &ix_p),
+            Param::Lr => by(&l_r, &ix_p),
+            Param::LBeta => by(&l_beta, &ix_p),
+            Param::LDeltaA => by(&l_da, &ix_p),
+            Param::LDeltaR => by(&l_dr, &ix_p),
             Param::Mq => m_q.clone(),
             Param::MAlpha => m_alpha.clone(),
             Param::MDeltaE => m_delta_e.clone(),
-            Param::Np => by(n_p.clone(), &iz_p),
-            Param::Nr => by(n_r.clone(), &iz_p),
-            Param::NBeta => by(n_beta.clone(), &iz_p),
-            Param::NDeltaA => by(n_da.clone(), &iz_p),
-            Param::NDeltaR => by(n_dr.clone(), &iz_p),
+            Param::Np => by(&n_p, &iz_p),
+            Param::Nr => by(&n_r, &iz_p),
+            Param::NBeta => by(&n_beta, &iz_p),
+            Param::NDeltaA => by(&n_da, &iz_p),
+            Param::NDeltaR => by(&n_dr, &iz_p),
             Param::Z0 => z_0.clone(),
             Param::AlphaT => alpha_t.clone(),
             Param::C | Param::D | Param::E => continue,
-        });
+        };
+        derivatives.push(finished(&x, round));
     }
-    let mut principal = [ix_p, input.iy.clone(), iz_p];
-    if rounded && round {
-        derivatives = derivatives.iter().map(round_once).collect();
-        principal = principal.map(|x| round_once(&x));
-    }
+    let principal = [
+        finished(&ix_p, round),
+        finished(iy, round),
+        finished(&iz_p, round),
+    ];
     Converted {
         principal,
         derivatives,
@@ -391,7 +402,7 @@ fn convert_rounding(input: &BodyAxisInput, round: bool) -> Converted {
         rounded,
         density: f(&density),
         density_source,
-        speed: v.clone(),
+        speed: input.speed.clone(),
     }
 }
 

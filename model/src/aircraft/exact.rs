@@ -45,7 +45,7 @@ pub fn decimal_to_rational(s: &str) -> Option<BigRational> {
     Some(if scale >= 0 {
         BigRational::from_integer(num * p)
     } else {
-        BigRational::new(num, p)
+        crate::algebra::big_rational::reduced(num, p)
     })
 }
 

@@ -23,6 +23,7 @@ pub mod error;
 pub mod evaluate;
 pub mod fcs;
 pub mod finite;
+pub mod fixed;
 pub mod function;
 pub mod import;
 pub mod mass;

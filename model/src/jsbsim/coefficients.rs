@@ -6,11 +6,13 @@
 //! breakpoints are kept with the coefficients ([`super::clamp`]).
 
 use super::clamp::Clamp;
-use super::condition::{set_state, Condition, State};
+use super::condition::{Condition, State};
 use super::digits::short;
 use super::error::JsbsimError;
+use super::fixed::{Fixed, CL_SQUARED};
 use super::model::Model;
 use super::surfaces::Surface;
+use std::sync::OnceLock;
 
 /// Coefficients at one state, with each axis function's value.
 #[derive(Clone, Debug, PartialEq)]
@@ -50,26 +52,44 @@ pub struct Setup<'a> {
     pub surfaces: Vec<Surface>,
     /// The user's `--set` values.
     pub settings: Vec<(String, f64)>,
+    /// What every evaluation sets the same, made at the first.
+    fixed: OnceLock<Fixed<'a>>,
 }
 
-impl Setup<'_> {
+impl<'a> Setup<'a> {
+    /// The setup of `model` at `condition` with `surfaces` and the user's `settings`.
+    pub fn new(
+        model: &'a Model,
+        condition: Condition,
+        surfaces: Vec<Surface>,
+        settings: Vec<(String, f64)>,
+    ) -> Setup<'a> {
+        Setup {
+            model,
+            condition,
+            surfaces,
+            settings,
+            fixed: OnceLock::new(),
+        }
+    }
+
     /// The coefficients at `state`.
     pub fn coefficients(&self, state: &State) -> Result<Coefficients, JsbsimError> {
         let model = self.model;
-        let feedback = model.functions.symbols.get("aero/cl-squared").is_some();
+        let fixed = self
+            .fixed
+            .get_or_init(|| Fixed::new(model, &self.condition, &self.surfaces, &self.settings));
+        let feedback = model.functions.symbols.get(CL_SQUARED).is_some();
         let mut cl2 = 0.0;
         let mut last = None;
         for _ in 0..if feedback { 60 } else { 1 } {
-            let mut env = model.environment();
-            let zeroed = set_state(
-                &mut env,
-                model,
-                &self.condition,
+            let mut env = fixed.env(
+                (model, &self.condition),
                 state,
-                &self.surfaces,
-                &self.settings,
-            )?;
-            env.set("aero/cl-squared", cl2);
+                (&self.surfaces, &self.settings),
+                cl2,
+            );
+            let zeroed = fixed.zeroed.clone();
             let loads = model.loads(&mut env, state.alpha, state.beta)?;
             let terms = model
                 .aero

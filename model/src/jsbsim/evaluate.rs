@@ -73,6 +73,7 @@ pub enum Target {
 }
 
 /// One evaluation: the inputs' values and the functions' values computed so far.
+#[derive(Clone)]
 pub struct Env<'m> {
     functions: &'m Functions,
     file: &'m str,

@@ -111,12 +111,12 @@ impl Loaded {
 
     /// The setup at `condition`.
     pub fn setup(&self, condition: Condition) -> Setup<'_> {
-        Setup {
-            model: &self.model,
+        Setup::new(
+            &self.model,
             condition,
-            surfaces: self.surfaces.clone(),
-            settings: self.settings.clone(),
-        }
+            self.surfaces.clone(),
+            self.settings.clone(),
+        )
     }
 }
 
@@ -198,12 +198,12 @@ pub const REFERENCE: (f64, f64, f64) = (3000.0, 0.3, 2.0);
 /// by the user; the error says which input is missing.
 pub fn evaluates(model: &Model, path: &std::path::Path) -> Result<(), String> {
     let (h, mach, alpha) = REFERENCE;
-    let setup = Setup {
+    let setup = Setup::new(
         model,
-        condition: Condition::new(h, Speed::Mach(mach))?,
-        surfaces: surfaces(model, path)?,
-        settings: Vec::new(),
-    };
+        Condition::new(h, Speed::Mach(mach))?,
+        surfaces(model, path)?,
+        Vec::new(),
+    );
     let state = State {
         alpha: alpha.to_radians(),
         beta: 0.0,

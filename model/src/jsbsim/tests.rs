@@ -397,12 +397,12 @@ fn a_non_finite_reference_point_shift_is_refused_with_the_flight_state() {
            <axis name="LIFT"><function name="aero/lift"><product>
              <property>aero/qbar-area</property><value>0.3</value></product></function></axis>"#,
     );
-    let setup = Setup {
-        model: &m,
-        condition: Condition::new(3000.0, Speed::Mach(0.5)).unwrap(),
-        surfaces: Vec::new(),
-        settings: vec![("fcs/shift".to_string(), 0.0)],
-    };
+    let setup = Setup::new(
+        &m,
+        Condition::new(3000.0, Speed::Mach(0.5)).unwrap(),
+        Vec::new(),
+        vec![("fcs/shift".to_string(), 0.0)],
+    );
     let state = State {
         alpha: 2f64.to_radians(),
         beta: 0.0,

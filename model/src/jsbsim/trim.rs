@@ -203,7 +203,9 @@ fn cl_cm(setup: &Setup, alpha: f64, de: f64, q: f64) -> Result<(f64, f64), Strin
 }
 
 /// The elevator that zeroes the pitching moment at `alpha` within the search interval, with
-/// the lift coefficient there; `None` when the moment keeps one sign over the interval.
+/// the lift coefficient there; `None` when the moment keeps one sign over the interval. The
+/// zero is one of the elevators evaluated on the way, whose lift is kept rather than evaluated
+/// again.
 fn pitch_balance(
     setup: &Setup,
     travel: &Travel,
@@ -211,15 +213,58 @@ fn pitch_balance(
     q: f64,
 ) -> Result<Option<(f64, f64)>, String> {
     let (lo, hi) = travel.search;
-    let (_, m_lo) = cl_cm(setup, alpha, lo, q)?;
-    let (_, m_hi) = cl_cm(setup, alpha, hi, q)?;
+    let (cl_lo, m_lo) = cl_cm(setup, alpha, lo, q)?;
+    let (cl_hi, m_hi) = cl_cm(setup, alpha, hi, q)?;
     if (m_lo > 0.0) == (m_hi > 0.0) && m_lo != 0.0 && m_hi != 0.0 {
         return Ok(None);
     }
-    let mut cm = |de: f64| cl_cm(setup, alpha, de, q).map(|(_, m)| m);
-    let de = zero(&mut cm, (lo, m_lo), (hi, m_hi), 1e-13)?;
-    let (cl, _) = cl_cm(setup, alpha, de, q)?;
+    let mut lifts = vec![(lo, cl_lo), (hi, cl_hi)];
+    let de = {
+        let mut cm = |de: f64| {
+            cl_cm(setup, alpha, de, q).map(|(cl, m)| {
+                lifts.push((de, cl));
+                m
+            })
+        };
+        zero(&mut cm, (lo, m_lo), (hi, m_hi), 1e-13)?
+    };
+    let cl = match lifts
+        .iter()
+        .rev()
+        .find(|(d, _)| d.to_bits() == de.to_bits())
+    {
+        Some(&(_, cl)) => cl,
+        None => cl_cm(setup, alpha, de, q)?.0,
+    };
     Ok(Some((de, cl)))
+}
+
+/// The pitch balances found at each angle of attack (rad) of one trim, so that none is sought
+/// twice.
+#[derive(Default)]
+struct Balances(Vec<(f64, Option<(f64, f64)>)>);
+
+impl Balances {
+    /// [`pitch_balance`] at `alpha`, sought once.
+    fn at(
+        &mut self,
+        setup: &Setup,
+        travel: &Travel,
+        alpha: f64,
+        q: f64,
+    ) -> Result<Option<(f64, f64)>, String> {
+        if let Some(&(_, b)) = self
+            .0
+            .iter()
+            .rev()
+            .find(|(a, _)| a.to_bits() == alpha.to_bits())
+        {
+            return Ok(b);
+        }
+        let b = pitch_balance(setup, travel, alpha, q)?;
+        self.0.push((alpha, b));
+        Ok(b)
+    }
 }
 
 /// The trim of `setup` at load factor `n`, or why it is untrimmable (the message names the
@@ -260,9 +305,10 @@ fn trim_unnamed(setup: &Setup, n: f64) -> Result<Trim, String> {
     let mut best: Option<(f64, f64)> = None;
     let mut balanced_any = false;
     let mut gap_from: Option<f64> = None;
+    let mut balances = Balances::default();
     for k in 0..=steps {
         let alpha = (a0 + k as f64 * ALPHA_STEP_DEG).to_radians();
-        let Some((_, cl)) = pitch_balance(setup, &travel, alpha, q)? else {
+        let Some((_, cl)) = balances.at(setup, &travel, alpha, q)? else {
             gap_from = gap_from.or(last.map(|(a, _)| a)).or(Some(alpha));
             continue;
         };
@@ -295,7 +341,7 @@ fn trim_unnamed(setup: &Setup, n: f64) -> Result<Trim, String> {
                     )));
                 }
                 return refine(
-                    setup,
+                    (setup, &mut balances),
                     &travel,
                     (n, need, q),
                     (a_prev, e_prev),
@@ -333,14 +379,14 @@ fn trim_unnamed(setup: &Setup, n: f64) -> Result<Trim, String> {
 /// The trim between two alphas of the search whose lift excess changes sign, then the travel
 /// checked.
 fn refine(
-    setup: &Setup,
+    (setup, balances): (&Setup, &mut Balances),
     travel: &Travel,
     (n, need, q): (f64, f64, f64),
     lo: (f64, f64),
     hi: (f64, f64),
 ) -> Result<Trim, String> {
     let mut excess = |alpha: f64| -> Result<f64, String> {
-        match pitch_balance(setup, travel, alpha, q)? {
+        match balances.at(setup, travel, alpha, q)? {
             Some((_, cl)) => Ok(cl - need),
             None => Err(format!(
                 "untrimmable at n = {n}: no elevator zeroes the pitching moment at alpha {:.3} \
@@ -350,7 +396,8 @@ fn refine(
         }
     };
     let alpha = zero(&mut excess, lo, hi, 1e-13)?;
-    let (elevator, _) = pitch_balance(setup, travel, alpha, q)?
+    let (elevator, _) = balances
+        .at(setup, travel, alpha, q)?
         .ok_or_else(|| format!("untrimmable at n = {n}: no pitch balance at the trim's alpha"))?;
     if let Some((min, max, source)) = &travel.limits {
         if elevator < *min || elevator > *max {
@@ -435,16 +482,16 @@ mod tests {
             at_minus: -0.3,
             source: "the test".to_string(),
         };
-        let setup = Setup {
-            model: &model,
-            condition: Condition::new(3000.0, Speed::Mach(0.5)).unwrap(),
-            surfaces: vec![
+        let setup = Setup::new(
+            &model,
+            Condition::new(3000.0, Speed::Mach(0.5)).unwrap(),
+            vec![
                 surface(Control::Aileron, None),
                 surface(Control::Elevator, Some(elevator)),
                 surface(Control::Rudder, None),
             ],
-            settings: Vec::new(),
-        };
+            Vec::new(),
+        );
         body(&setup)
     }
 

@@ -12,12 +12,10 @@ use crate::jsbsim::condition::{
 };
 use crate::jsbsim::error::JsbsimError;
 use crate::jsbsim::evaluate::{Env, Functions, Target};
+use crate::jsbsim::fixed::CL_SQUARED;
 use crate::jsbsim::function::{Expr, PropertyRef};
 use crate::jsbsim::model::Model;
 use crate::jsbsim::surfaces::Surface;
-
-/// JSBSim's name of the lift coefficient squared of the previous step, which some models read.
-const CL_SQUARED: &str = "aero/cl-squared";
 
 /// The airframe of a run: the model, what stays fixed, and its evaluation.
 pub struct Airframe<'m> {

@@ -347,3 +347,40 @@ pub(super) fn search_candidates(
     let from_da = coords(&worst.da);
     descend(worst, params, from_da, |_, d| d)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::clearance::split_box;
+
+    /// Though the certified route settles most candidates alone, the worst cases kept (which
+    /// set hi) are the exact path's answers for their aircraft, as the full `analyze` gives
+    /// them: aircraft A with n_delta_a in [20, 40] at delta_e = -4 deg, where every aircraft
+    /// has a critical jump.
+    #[test]
+    fn the_worst_cases_kept_are_the_exact_paths_answers() {
+        let q = |n: i64| BigRational::from_integer(n.into());
+        let mut a = Aircraft::a().with(Param::NDeltaA, q(30));
+        a.uncertainty = vec![Uncertain::param(Param::NDeltaA, q(20), q(40))];
+        let de = (-4f64).to_radians();
+        let (base, params) = split_box(&a);
+        let mut worst = Worst::new(&base, &params, None, de);
+        let settings = Settings {
+            delta_e_rad: de,
+            candidates: 16,
+            ..Settings::default()
+        };
+        search_candidates(&mut worst, &settings, &mut |_| {}).expect("candidates");
+        let (p0, by_p0) = worst.p0.as_ref().expect("a worst case");
+        let (da, by_da) = worst.da.as_ref().expect("a worst case for the aileron");
+        for case in [by_p0, by_da] {
+            let j = crate::analysis::analyze(&case.aircraft, de)
+                .expect("analysed")
+                .critical
+                .expect("a critical jump");
+            assert_eq!((j.p0, j.delta_a_deg), (case.p0, case.delta_a_deg));
+        }
+        assert_eq!(*p0, by_p0.p0);
+        assert_eq!(*da, by_da.delta_a_deg.abs());
+    }
+}

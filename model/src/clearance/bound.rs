@@ -53,6 +53,7 @@ use crate::certified::{at_roll_rate, AtRollRate, Values};
 use crate::equations::symbols;
 use crate::interval::{next_down, next_up, I};
 use crate::specialise::parametric;
+use std::sync::Arc;
 
 /// Why a slab could not be certified.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -112,6 +113,26 @@ pub struct LiftedBox {
     /// it is not certain): the branch is the root `-2 g0 / (g1 + side sqrt(disc))` of the trim
     /// condition on every certified slab ([`BoxPolys::trim`]).
     side: Option<f64>,
+    /// Its faces lifted so far ([`BoxPolys::face`]).
+    faces: Faces,
+}
+
+/// The last few faces of a lifted box that were lifted ([`BoxPolys::face`]): the face where
+/// J or |delta_a| comes closest to zero is set by the signs of their gradients, which rarely
+/// change from one slab of roll rates to the next, and lifting a box costs more than the chain
+/// on it. A lifted box is a pure function of its box and side, so a face taken from here is
+/// the one lifting it again would give.
+#[derive(Debug, Default)]
+struct Faces(std::sync::Mutex<Vec<Arc<LiftedBox>>>);
+
+/// How many faces of a lifted box [`Faces`] keeps (each as large as the box lifted).
+const FACES: usize = 2;
+
+impl Clone for Faces {
+    /// None: a clone is lifted data shared no further.
+    fn clone(&self) -> Self {
+        Faces::default()
+    }
 }
 
 impl LiftedBox {
@@ -254,6 +275,20 @@ impl BoxPolys {
         self.lift_on_side(theta, whole.side)
     }
 
+    /// [`BoxPolys::lift_part`] of the face `theta` of `whole`, taken from the faces of `whole`
+    /// lifted so far when it is one of them.
+    fn face(&self, theta: &[I], whole: &LiftedBox) -> Arc<LiftedBox> {
+        let lock = || whole.faces.0.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(f) = lock().iter().find(|f| f.theta == theta) {
+            return Arc::clone(f);
+        }
+        let f = Arc::new(self.lift_part(theta, whole));
+        let mut faces = lock();
+        faces.insert(0, Arc::clone(&f));
+        faces.truncate(FACES);
+        f
+    }
+
     /// [`BoxPolys::lift`] of a box on the branch's side `side` (that of the lifted box it was
     /// a part of, [`LiftedBox::side`]), computed from the box when `None`: a sub-box lifted
     /// again, as [`BoxPolys::lift_part`] lifted it first.
@@ -285,6 +320,7 @@ impl BoxPolys {
             over: Values::new(over, self.delta_e_rad, 0.0),
             at_centre: Values::new(at, self.delta_e_rad, 0.0),
             side,
+            faces: Faces::default(),
         };
         if side.is_none() {
             bx.side = self
@@ -569,7 +605,7 @@ impl BoxPolys {
             })
             .collect();
         let on_face = self
-            .chain(&self.lift_part(&face, bx), I::point(p))
+            .chain(&self.face(&face, bx), I::point(p))
             .map_or(0.0, |c| {
                 if c.da.v.sign() == Some(sign) {
                     c.da.v.mig()
@@ -631,7 +667,7 @@ impl BoxPolys {
         if !moved {
             return Err(Failure::Jump);
         }
-        let face_box = self.lift_part(&face[..face.len() - 1], bx);
+        let face_box = self.face(&face[..face.len() - 1], bx);
         let on_face = self.chain(&face_box, face[face.len() - 1])?;
         match on_face.jump.v.sign() {
             Some(s) if s == centre_sign => Ok(chain.da.v),

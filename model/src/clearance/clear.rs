@@ -32,7 +32,7 @@ pub fn clear(
     };
     if params.is_empty() {
         // A point: the exact analysis is the proof.
-        let (lo, da) = match worst.try_at(&[])? {
+        let (lo, da) = match worst.exact_at(&[])? {
             Some((p, d)) => (p, d),
             None => (f64::INFINITY, f64::INFINITY),
         };

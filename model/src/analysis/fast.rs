@@ -34,6 +34,8 @@ use crate::equations::symbols;
 use crate::interval::I;
 use std::sync::OnceLock;
 
+mod on_branch;
+
 /// Which route gave the answer.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Route {
@@ -161,6 +163,13 @@ fn routed(
     part: Part,
 ) -> Result<(Analysis, Route), AnalysisError> {
     let departures = part != Part::Jump;
+    if part == Part::First {
+        if let Ok((a, width)) = on_branch::on_branch(aircraft, delta_e_rad) {
+            if check(&a).is_ok() {
+                return Ok((a, Route::Certified(width)));
+            }
+        }
+    }
     let why = match certified(aircraft, delta_e_rad, part) {
         Ok((mut a, width)) => {
             withhold_zero_sideslip(&mut a);
@@ -219,7 +228,7 @@ fn exact_jumps_then_branch(aircraft: &Aircraft, delta_e_rad: f64) -> Option<Anal
     let at = at_trim_values(aircraft, delta_e_rad);
     let on = Branch {
         v: &v,
-        e: &e,
+        trim_condition: &e.trim_condition,
         found: &found,
         divergence: &divergence,
         marks: (aircraft, delta_e_rad),
@@ -369,7 +378,7 @@ fn certified_with<'v>(
             let marks = (aircraft, delta_e_rad);
             let on = Branch {
                 v: v(),
-                e,
+                trim_condition: &e.trim_condition,
                 found: &found,
                 divergence: &divergence,
                 marks,
@@ -386,7 +395,7 @@ fn certified_with<'v>(
 /// What the first departure along the primary branch reads (aileron yaw).
 struct Branch<'a> {
     v: &'a Values,
-    e: &'a EnclosedPolys,
+    trim_condition: &'a IPoly2,
     found: &'a Found,
     divergence: &'a [Bracket],
     marks: (&'a Aircraft, f64),
@@ -416,7 +425,12 @@ impl Branch<'_> {
         let mut width = 0.0_f64;
         if let Some(i) = critical {
             let fold = analysis.jump[i].clone();
-            let landing = landing_roots(self.v, self.e, &fold, &det_a_roots(self.divergence))?;
+            let landing = landing_roots(
+                self.v,
+                self.trim_condition,
+                &fold,
+                &det_a_roots(self.divergence),
+            )?;
             let value = |b: &[Bracket]| b.iter().map(|r| r.value).collect::<Vec<f64>>();
             analysis.jump[i].lands_at =
                 Some(departure::landings(at, trims, &fold, &value(&landing)));
@@ -486,11 +500,11 @@ fn det_a_roots(divergence: &[Bracket]) -> Vec<Bracket> {
 /// land), proven apart from det A's roots `det_a_roots`.
 fn landing_roots(
     v: &Values,
-    e: &EnclosedPolys,
+    trim_condition: &IPoly2,
     j: &JumpPoint,
     det_a_roots: &[Bracket],
 ) -> Result<Vec<Bracket>, Uncertified> {
-    let g = e.trim_condition.at_aileron(I::point(j.delta_a_rad));
+    let g = trim_condition.at_aileron(I::point(j.delta_a_rad));
     let value = |x: f64| trim_condition_at(v, x, j.delta_a_rad);
     let roots = real_roots_outside(&g, fold_window(j), Some(&value), MAX_WIDTH)?;
     apart(&roots, det_a_roots)?;
@@ -539,7 +553,7 @@ fn certified_departures<'a>(
     let det_a_roots = det_a_roots(divergence);
     let landing = jump
         .iter()
-        .map(|j| landing_roots(v, e, j, &det_a_roots))
+        .map(|j| landing_roots(v, &e.trim_condition, j, &det_a_roots))
         .collect::<Result<Vec<_>, _>>()?;
     let width = [&hopf, &zs_hopf]
         .into_iter()

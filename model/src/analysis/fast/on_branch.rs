@@ -1,0 +1,121 @@
+//! The critical jump and the first departure of an aircraft whose aileron yaws, certified by
+//! walking the primary branch alone ([`on_branch`]).
+//!
+//! With aileron yaw the jump and pole polynomials are resultants in delta_a whose enclosures
+//! are wide, and the certified route of the jump part must isolate every one of their positive
+//! roots, on every branch, or fall back to the exact path. The envelope needs only the critical
+//! jump, the first fold on the primary branch: here the jump determinant `det J5 det(A)^2` is
+//! followed along the branch from `P0 = 0` by mean-value forms ([`first_root_on_branch`] with
+//! [`Det::Jump`]) up to the first divergence roll rate or to where the branch's aileron is
+//! proven beyond the aileron range, and its first sign change, narrowed to [`MAX_WIDTH`], is the
+//! critical jump; the pole polynomial is proven nonzero over its bracket (the exact path
+//! cancels common roots of the two). The first departure is then the first Hopf root on the
+//! same branch before it ([`Branch::first_departure`]).
+
+use super::{apart, at_trim_values, Branch, MAX_WIDTH};
+use crate::aircraft::{Aircraft, Param};
+use crate::analysis::{Analysis, Found, InAileron, LocalPolys};
+use crate::certified::dense::{IPoly, IPoly2};
+use crate::certified::{
+    first_root_on_branch, positive_roots_by, value_at, value_over, Bracket, BranchEnd, Criterion,
+    Det, TrimPolys, Uncertified, Values,
+};
+use crate::interval::I;
+
+/// What the zero-sideslip section says on this route, which does not compute it.
+pub(super) const ZERO_SIDESLIP_WITHHELD: &str = "not computed: the first departure's route \
+     follows the primary branch alone (analyze gives this section)";
+
+/// The critical jump, its landings and the first departure of `aircraft` at elevator
+/// `delta_e_rad`, all certified along the primary branch, and the widest relative bracket;
+/// [`Uncertified::Uncovered`] without aileron yaw (the jump part's certified route answers
+/// those), or why a certificate fails.
+///
+/// The analysis holds what is true on this route: the divergence roll rates (every positive
+/// root of det A, certified), the critical jump as the only entry of `jump` (the other roots
+/// of the jump polynomial are not sought), no poles of det K, no Hopf points but through the
+/// first departure, and the zero-sideslip section withheld with [`ZERO_SIDESLIP_WITHHELD`].
+/// `critical_note` is the f64 walk's ([`crate::analysis::primary::follow`]) as on every
+/// route, which must agree with the certified walk on whether the branch reaches the jump.
+pub(super) fn on_branch(
+    aircraft: &Aircraft,
+    delta_e_rad: f64,
+) -> Result<(Analysis, f64), Uncertified> {
+    if num_traits::Zero::is_zero(aircraft.exact(Param::NDeltaA)) {
+        return Err(Uncertified::Uncovered);
+    }
+    let v = Values::of(aircraft, delta_e_rad, 0.0);
+    let t = TrimPolys::new(&v)?;
+    let divergence = positive_roots_by(
+        &t.det_a,
+        Some(&|x| value_at(&v, Criterion::DetA, x)),
+        MAX_WIDTH,
+    )?;
+    let bound = aircraft.aileron_range();
+    let end = BranchEnd::Before {
+        p0: divergence.first().map_or(f64::INFINITY, |b| b.lo),
+        bound,
+    };
+    let jump = first_root_on_branch(&v, Det::Jump, end, MAX_WIDTH)?;
+    if let Some((b, _)) = &jump {
+        apart(&[*b], &divergence)?;
+        if value_over(&v, Criterion::Poles, I::new(b.lo, b.hi)).contains_zero() {
+            return Err(Uncertified::Sign);
+        }
+    }
+    let found = found(&t, &divergence, jump.as_ref().map(|(b, _)| b.value));
+    let (mut analysis, critical) = found.assemble(aircraft, delta_e_rad, &|_| (f64::NAN, f64::NAN));
+    // The f64 walk must reach the certified jump, at its aileron, and find none without it.
+    let agrees = match (&jump, critical) {
+        (Some((_, e)), Some(0)) => {
+            let da = analysis.jump[0].delta_a_rad;
+            (da - e.mid()).abs() <= 1e-6 * (1.0 + da.abs())
+        }
+        (None, None) => true,
+        _ => false,
+    };
+    if !agrees {
+        return Err(Uncertified::Sign);
+    }
+    let on = Branch {
+        v: &v,
+        trim_condition: &t.trim_condition,
+        found: &found,
+        divergence: &divergence,
+        marks: (aircraft, delta_e_rad),
+    };
+    let values = at_trim_values(aircraft, delta_e_rad);
+    let w = on.first_departure(
+        &mut analysis,
+        critical,
+        &LocalPolys::parametric().at(&values),
+    )?;
+    analysis.zero_sideslip.withheld = Some(ZERO_SIDESLIP_WITHHELD.to_string());
+    let width = divergence
+        .iter()
+        .chain(jump.iter().map(|(b, _)| b))
+        .map(Bracket::relative_width)
+        .fold(w, f64::max);
+    Ok((analysis, width))
+}
+
+/// What the walk found, as the routes' [`Found`]: the certified divergence roll rates, the
+/// critical jump's roll rate as the only jump root, and the f64 polynomials of `t`.
+fn found(t: &TrimPolys, divergence: &[Bracket], critical: Option<f64>) -> Found {
+    let f64s = |p: &IPoly2| InAileron(p.0.iter().map(|c| c.mid()).collect());
+    let univariate = |p: &IPoly| f64s(&IPoly2::new(vec![p.clone()]));
+    Found {
+        divergence: divergence.iter().map(|b| b.value).collect(),
+        jump_roots: critical.into_iter().collect(),
+        pole_roots: Vec::new(),
+        zs_roots: Vec::new(),
+        g: f64s(&t.trim_condition),
+        trims: std::iter::once(univariate(&t.det_a))
+            .chain(t.trim.iter().map(f64s))
+            .collect(),
+        jump_at: f64s(&t.jump_at),
+        d_at: InAileron(Vec::new()),
+        zs_trims: Vec::new(),
+        lateral_authority: false,
+    }
+}

@@ -412,6 +412,19 @@ impl Branch<'_> {
         critical: Option<usize>,
         at: &AtTrim<'_>,
     ) -> Result<f64, Uncertified> {
+        let bound = self.marks.0.aileron_range();
+        self.first_departure_before(analysis, critical, at, BranchEnd::Bound(bound))
+    }
+
+    /// [`Branch::first_departure`], the walk without a critical jump ending at `end` (where
+    /// the f64 walk of the branch ends: the aileron range, or a divergence roll rate).
+    fn first_departure_before(
+        &self,
+        analysis: &mut Analysis,
+        critical: Option<usize>,
+        at: &AtTrim<'_>,
+        end: BranchEnd,
+    ) -> Result<f64, Uncertified> {
         let (g, trims) = (&self.found.g, &self.found.trims);
         let bound = self.marks.0.aileron_range();
         let end = match critical {
@@ -419,7 +432,7 @@ impl Branch<'_> {
                 p0: analysis.jump[i].p0,
                 delta_a: analysis.jump[i].delta_a_rad,
             },
-            None => BranchEnd::Bound(bound),
+            None => end,
         };
         let root = first_hopf_on_branch(self.v, end, MAX_WIDTH)?;
         let mut width = 0.0_f64;

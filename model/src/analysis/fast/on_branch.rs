@@ -14,6 +14,7 @@
 
 use super::{apart, at_trim_values, Branch, MAX_WIDTH};
 use crate::aircraft::{Aircraft, Param};
+use crate::analysis::primary::{follow_to, Outcome};
 use crate::analysis::{Analysis, Found, InAileron, LocalPolys};
 use crate::certified::dense::{IPoly, IPoly2};
 use crate::certified::{
@@ -51,11 +52,7 @@ pub(super) fn on_branch(
         Some(&|x| value_at(&v, Criterion::DetA, x)),
         MAX_WIDTH,
     )?;
-    let bound = aircraft.aileron_range();
-    let end = BranchEnd::Before {
-        p0: divergence.first().map_or(f64::INFINITY, |b| b.lo),
-        bound,
-    };
+    let end = end(aircraft, &t, &divergence)?;
     let jump = first_root_on_branch(&v, Det::Jump, end, MAX_WIDTH)?;
     if let Some((b, _)) = &jump {
         apart(&[*b], &divergence)?;
@@ -85,11 +82,8 @@ pub(super) fn on_branch(
         marks: (aircraft, delta_e_rad),
     };
     let values = at_trim_values(aircraft, delta_e_rad);
-    let w = on.first_departure(
-        &mut analysis,
-        critical,
-        &LocalPolys::parametric().at(&values),
-    )?;
+    let at = LocalPolys::parametric().at(&values);
+    let w = on.first_departure_before(&mut analysis, critical, &at, end)?;
     analysis.zero_sideslip.withheld = Some(ZERO_SIDESLIP_WITHHELD.to_string());
     let width = divergence
         .iter()
@@ -97,6 +91,27 @@ pub(super) fn on_branch(
         .map(Bracket::relative_width)
         .fold(w, f64::max);
     Ok((analysis, width))
+}
+
+/// Where the walks along the branch end: at the aileron range, or where the f64 walk of the
+/// branch ([`follow_to`]) starts the step that meets the first divergence roll rate (the exact
+/// path reports the divergence there, and no jump root between there and the divergence: the
+/// jump determinant, which holds the factor `det(A)^2`, need not be decided up to it).
+fn end(
+    aircraft: &Aircraft,
+    t: &TrimPolys,
+    divergence: &[Bracket],
+) -> Result<BranchEnd, Uncertified> {
+    let bound = aircraft.aileron_range();
+    let first = divergence.first().map_or(f64::INFINITY, |b| b.lo);
+    let f = found(t, divergence, None);
+    let values: Vec<f64> = divergence.iter().map(|b| b.value).collect();
+    let p0 = match follow_to(&f.g, &f.trims[0], &values, &[], bound) {
+        (Outcome::Divergence(_), p) if p < first => p,
+        (Outcome::Divergence(_), _) => return Err(Uncertified::Sign),
+        _ => first,
+    };
+    Ok(BranchEnd::Before { p0, bound })
 }
 
 /// What the walk found, as the routes' [`Found`]: the certified divergence roll rates, the
@@ -117,5 +132,52 @@ fn found(t: &TrimPolys, divergence: &[Bracket], critical: Option<f64>) -> Found 
         d_at: InAileron(Vec::new()),
         zs_trims: Vec::new(),
         lateral_authority: false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{analyze_first_departure, Route};
+    use super::*;
+    use crate::analysis::analyze;
+    use num_rational::BigRational;
+
+    /// Aircraft B with aileron yaw (n_delta_a = -1.5): at delta_e = 2 deg its branch reaches a
+    /// jump, at -4 deg it diverges first. Either way the branch route answers alone, with the
+    /// exact path's critical jump (within the bracket), note and first departure, and says
+    /// what it leaves out.
+    #[test]
+    fn the_branch_route_gives_the_exact_paths_critical_jump_and_first_departure() {
+        let ac = Aircraft::b().with(Param::NDeltaA, BigRational::new((-3).into(), 2.into()));
+        for de in [2f64.to_radians(), (-4f64).to_radians()] {
+            let exact = analyze(&ac, de).unwrap();
+            let (a, route) = analyze_first_departure(&ac, de).unwrap();
+            let Route::Certified(w) = route else {
+                panic!("delta_e {de}: {route:?}");
+            };
+            assert!(w <= MAX_WIDTH);
+            let p0 = |a: &Analysis| a.critical.as_ref().map(|c| c.p0);
+            match (p0(&exact), p0(&a)) {
+                (Some(x), Some(y)) => assert!((x - y).abs() <= 2.0 * w * x, "{x} vs {y}"),
+                (x, y) => assert_eq!(x, y, "delta_e {de}"),
+            }
+            assert_eq!(a.critical_note, exact.critical_note);
+            assert_eq!(
+                a.divergence_roll_rates.len(),
+                exact.divergence_roll_rates.len()
+            );
+            let first = |a: &Analysis| a.first_departure.as_ref().map(|f| (f.kind, f.p0));
+            match (first(&exact), first(&a)) {
+                (Some((k, x)), Some((l, y))) => {
+                    assert_eq!(k, l);
+                    assert!((x - y).abs() <= 2.0 * w * x, "{x} vs {y}");
+                }
+                (x, y) => assert_eq!(x, y, "delta_e {de}"),
+            }
+            assert_eq!(a.jump.len(), usize::from(a.critical.is_some()));
+            assert!(a.det_k_poles.is_empty());
+            let withheld = a.zero_sideslip.withheld.as_deref();
+            assert_eq!(withheld, Some(ZERO_SIDESLIP_WITHHELD));
+        }
     }
 }

@@ -434,7 +434,11 @@ impl Branch<'_> {
             },
             None => end,
         };
-        let root = first_hopf_on_branch(self.v, end, MAX_WIDTH)?;
+        // An unstable trim at the branch's start is the first departure: no Hopf root to seek.
+        let root = match departure::start(at, trims) {
+            super::unstable_trim::Start::Unstable(_) => None,
+            _ => first_hopf_on_branch(self.v, end, MAX_WIDTH)?,
+        };
         let mut width = 0.0_f64;
         if let Some(i) = critical {
             let fold = analysis.jump[i].clone();

@@ -126,14 +126,18 @@ pub fn analyze_routed_with(
 /// the clearance report), by the certified route where it succeeds, saying which route
 /// answered; otherwise the exact path's (reported as [`Route::Exact`]).
 ///
-/// With aileron yaw the first departure is certified along the primary branch
-/// ([`crate::certified::first_hopf_on_branch`]): the first sign change of the Hopf
-/// determinant on the branch up to the critical jump (without one, up to where the branch
-/// leaves the aileron range), which the exact path finds among the roots of its Hopf
-/// resultant. Where the jump part's certificate fails, the exact path's jump part answers and
-/// the same walk starts from its critical jump (a fraction of the exact Hopf resultant's cost);
-/// where the branch turns in P0 or diverges before that, or a piece of it cannot be decided,
-/// the whole exact path answers.
+/// With aileron yaw both are certified along the primary branch alone
+/// ([`crate::certified::first_root_on_branch`], the route of `on_branch`): the critical jump is
+/// the first sign change of the jump determinant on the branch (up to the first divergence
+/// roll rate or the aileron range), and the first departure the first sign change of the Hopf
+/// determinant before it, which the exact path finds among the roots of its resultants. The
+/// analysis of that route holds the critical jump as the only entry of `jump`, no poles of
+/// det K, and the zero-sideslip section withheld (not computed); callers read the critical
+/// jump, its note and margin, and the first departure. Where a certificate of that route
+/// fails, the certified jump part (every root of the enclosed resultants isolated) and the
+/// same walk for the first departure are tried; where that fails, the exact path's jump part
+/// answers and the walk starts from its critical jump; where the branch turns in P0 or a piece
+/// of it cannot be decided, the whole exact path answers.
 pub fn analyze_first_departure(
     aircraft: &Aircraft,
     delta_e_rad: f64,

@@ -96,7 +96,9 @@ pub(super) fn on_branch(
 /// Where the walks along the branch end: at the aileron range, or where the f64 walk of the
 /// branch ([`follow_to`]) starts the step that meets the first divergence roll rate (the exact
 /// path reports the divergence there, and no jump root between there and the divergence: the
-/// jump determinant, which holds the factor `det(A)^2`, need not be decided up to it).
+/// jump determinant, which holds the factor `det(A)^2`, need not be decided up to it). A
+/// divergence the f64 walk meets after the branch turned in P0 is not covered (the walk in
+/// increasing P0 would not reach the branch's part beyond the turn).
 fn end(
     aircraft: &Aircraft,
     t: &TrimPolys,

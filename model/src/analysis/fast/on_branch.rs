@@ -183,3 +183,106 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+mod walk_tests {
+    //! The walk of the jump determinant along the branch (`certified::branch`), against the
+    //! exact path.
+    use crate::aircraft::{Aircraft, Param};
+    use crate::analysis::analyze_with;
+    use crate::certified::{first_root_on_branch, BranchEnd, Det, Values};
+    use num_rational::BigRational;
+
+    /// The paper's aircraft with aileron yaw `n_delta_a` (a ratio), at elevator `de_deg`.
+    fn yawing(ac: Aircraft, n_delta_a: (i64, i64), de_deg: f64) -> (Aircraft, f64) {
+        let n = BigRational::new(n_delta_a.0.into(), n_delta_a.1.into());
+        (ac.with(Param::NDeltaA, n), de_deg.to_radians())
+    }
+
+    fn cases() -> Vec<(Aircraft, f64)> {
+        vec![
+            yawing(Aircraft::b(), (-3, 2), 2.0),
+            yawing(Aircraft::b(), (30, 1), -4.0),
+            yawing(Aircraft::a(), (-5, 1), 2.0),
+        ]
+    }
+
+    /// Where the exact path finds no critical jump (aircraft B with n_delta_a = -1.5 at
+    /// delta_e = -4 deg diverges first; aircraft A with n_delta_a = 30 there reaches
+    /// |delta_a| = 90 deg first), the walk up to the aileron range, or to the largest step of
+    /// the exact path's walk before the first divergence roll rate, finds no root.
+    #[test]
+    fn no_jump_root_where_the_branch_diverges_or_leaves_the_range_first() {
+        for (i, (ac, de)) in [
+            yawing(Aircraft::b(), (-3, 2), -4.0),
+            yawing(Aircraft::a(), (30, 1), -4.0),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let exact = analyze_with(&ac, de, false).unwrap();
+            assert!(exact.critical.is_none(), "case {i}");
+            let divergence = exact.divergence_roll_rates.first().copied();
+            let end = BranchEnd::Before {
+                p0: divergence.map_or(f64::INFINITY, |d| d - crate::analysis::primary::TURN_STEP),
+                bound: ac.aileron_range(),
+            };
+            let root = first_root_on_branch(&Values::of(&ac, de, 0.0), Det::Jump, end, 1e-9);
+            assert!(matches!(root, Ok(None)), "case {i}: {root:?}");
+        }
+    }
+
+    /// The first root of the jump determinant on the branch is the exact path's critical jump
+    /// (the first root of its jump resultant that its f64 walk of the branch meets): the
+    /// exact root lies in the certified bracket, and its aileron in the branch's enclosure.
+    #[test]
+    fn the_first_jump_root_on_the_branch_brackets_the_exact_critical_jump() {
+        for (i, (ac, de)) in cases().into_iter().enumerate() {
+            let exact = analyze_with(&ac, de, false).unwrap();
+            let c = exact.critical.expect("a critical jump");
+            let v = Values::of(&ac, de, 0.0);
+            let end = BranchEnd::Before {
+                p0: f64::INFINITY,
+                bound: ac.aileron_range(),
+            };
+            let (b, da) = first_root_on_branch(&v, Det::Jump, end, 1e-9)
+                .unwrap()
+                .expect("a root");
+            let slack = 4.0 * f64::EPSILON * c.p0;
+            assert!(b.hi - b.lo <= 1e-9 * b.hi, "case {i}: {b:?}");
+            assert!(
+                b.lo - slack <= c.p0 && c.p0 <= b.hi + slack,
+                "case {i}: {b:?} vs {}",
+                c.p0
+            );
+            assert!(
+                (da.mid() - c.delta_a_rad).abs() <= 1e-6,
+                "case {i}: {da:?} vs {}",
+                c.delta_a_rad
+            );
+        }
+    }
+
+    /// The walk ends without a root where the branch's aileron passes a bound below the exact
+    /// critical jump's |delta_a|, and at a roll rate below the jump's.
+    #[test]
+    fn the_walk_ends_before_the_jump_at_a_smaller_bound_or_roll_rate() {
+        for (i, (ac, de)) in cases().into_iter().enumerate() {
+            let c = analyze_with(&ac, de, false).unwrap().critical.unwrap();
+            let v = Values::of(&ac, de, 0.0);
+            for end in [
+                BranchEnd::Before {
+                    p0: f64::INFINITY,
+                    bound: c.delta_a_rad.abs() / 2.0,
+                },
+                BranchEnd::Before {
+                    p0: c.p0 / 2.0,
+                    bound: ac.aileron_range(),
+                },
+            ] {
+                let root = first_root_on_branch(&v, Det::Jump, end, 1e-9);
+                assert!(matches!(root, Ok(None)), "case {i}, {end:?}: {root:?}");
+            }
+        }
+    }
+}

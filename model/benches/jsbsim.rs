@@ -29,11 +29,11 @@
 //! - `routes::analyze_exact_jump_part`: the exact path without departures (its jump part).
 //!
 //! And at 0 m, Mach 0.7, 1 g, a point where the enclosures of the jump polynomial cannot certify
-//! its roots (the first departure falls back):
+//! its roots (the certified jump part falls back; the walks along the primary branch answer):
 //!
 //! - `routes::fallback_analyze_exact`: the exact path there, the baseline;
-//! - `routes::fallback_first_departure`: what the envelope runs there (the exact path's jump
-//!   part, the first departure certified along the primary branch).
+//! - `routes::fallback_first_departure`: what the envelope runs there (the critical jump and
+//!   the first departure certified along the primary branch).
 
 use model::analysis::fast::analyze_routed_with;
 use model::jsbsim::condition::Speed;

@@ -14,7 +14,7 @@
 //! (`analyze_first_departure`, certified along the primary branch where its certificate
 //! succeeds) is checked on 60 aircraft (600 full size): the same first departure and critical
 //! jump as the exact path, each within the route's bracket where it is certified, and the
-//! certificate answering for at least 85% of them.
+//! certificate answering for at least 95% of them.
 
 mod support;
 
@@ -150,11 +150,11 @@ fn first_departure_along_the_branch_is_the_exact_paths_with_yaw_and_trim_terms()
         }
     }
     println!("{n} aircraft: {compared} compared, {certified} certified, {hopf} certified Hopf");
-    // The walk along the branch answers for most of them (57 of 60 by default, 547 of 600 full
-    // size; the rest turn or diverge before the aileron range ends, or need brackets double
-    // precision cannot give): at least 85%, or the comparison says little.
+    // The walks along the branch answer for nearly all of them (60 of 60 by default, 596 of
+    // 600 full size; the rest turn in P0 before the aileron range ends, or need brackets double
+    // precision cannot give): at least 95%, or the comparison says little.
     assert!(
-        compared > 0 && certified * 20 >= compared * 17,
+        compared > 0 && certified * 20 >= compared * 19,
         "{certified} of {compared} certified"
     );
 }

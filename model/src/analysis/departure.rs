@@ -599,6 +599,20 @@ pub(crate) fn landings(
         .collect()
 }
 
+/// Whether the trim at `P0 = 0, delta_a = 0` (the primary branch's start) is stable: when it
+/// is not, it is the first departure, whatever lies along the branch.
+pub(crate) fn start(h: &AtTrim<'_>, trims: &[InAileron]) -> Start {
+    let dv = trims[0].eval(0.0, 0.0);
+    let origin: [f64; 5] = [
+        trims[1].eval(0.0, 0.0) / dv,
+        trims[2].eval(0.0, 0.0) / dv,
+        0.0,
+        trims[3].eval(0.0, 0.0) / dv,
+        trims[4].eval(0.0, 0.0) / dv,
+    ];
+    unstable_trim::start(&h.j5(&origin), &origin)
+}
+
 /// The first loss of stability along the primary branch: the wings-level trim P0 = 0,
 /// delta_a = 0 itself when an eigenvalue of J5 there lies in the right half-plane
 /// ([`unstable_trim::start`]), else the first jump or Hopf point the branch meets when followed
@@ -618,15 +632,7 @@ pub(crate) fn first_departure(
     hopf: &[HopfPoint],
     bound: f64,
 ) -> Option<FirstDeparture> {
-    let dv = trims[0].eval(0.0, 0.0);
-    let origin: [f64; 5] = [
-        trims[1].eval(0.0, 0.0) / dv,
-        trims[2].eval(0.0, 0.0) / dv,
-        0.0,
-        trims[3].eval(0.0, 0.0) / dv,
-        trims[4].eval(0.0, 0.0) / dv,
-    ];
-    match unstable_trim::start(&h.j5(&origin), &origin) {
+    match start(h, trims) {
         Start::Stable => {}
         Start::Unstable(u) => return Some(FirstDeparture::at_start(u)),
         Start::Undecided => return None,

@@ -34,6 +34,8 @@ use crate::equations::symbols;
 use crate::interval::I;
 use std::sync::OnceLock;
 
+mod on_branch;
+
 /// Which route gave the answer.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Route {
@@ -124,14 +126,18 @@ pub fn analyze_routed_with(
 /// the clearance report), by the certified route where it succeeds, saying which route
 /// answered; otherwise the exact path's (reported as [`Route::Exact`]).
 ///
-/// With aileron yaw the first departure is certified along the primary branch
-/// ([`crate::certified::first_hopf_on_branch`]): the first sign change of the Hopf
-/// determinant on the branch up to the critical jump (without one, up to where the branch
-/// leaves the aileron range), which the exact path finds among the roots of its Hopf
-/// resultant. Where the jump part's certificate fails, the exact path's jump part answers and
-/// the same walk starts from its critical jump (a fraction of the exact Hopf resultant's cost);
-/// where the branch turns in P0 or diverges before that, or a piece of it cannot be decided,
-/// the whole exact path answers.
+/// With aileron yaw both are certified along the primary branch alone
+/// ([`crate::certified::first_root_on_branch`], the route of `on_branch`): the critical jump is
+/// the first sign change of the jump determinant on the branch (up to the first divergence
+/// roll rate or the aileron range), and the first departure the first sign change of the Hopf
+/// determinant before it, which the exact path finds among the roots of its resultants. The
+/// analysis of that route holds the critical jump as the only entry of `jump`, no poles of
+/// det K, and the zero-sideslip section withheld (not computed); callers read the critical
+/// jump, its note and margin, and the first departure. Where a certificate of that route
+/// fails, the certified jump part (every root of the enclosed resultants isolated) and the
+/// same walk for the first departure are tried; where that fails, the exact path's jump part
+/// answers and the walk starts from its critical jump; where the branch turns in P0 or a piece
+/// of it cannot be decided, the whole exact path answers.
 pub fn analyze_first_departure(
     aircraft: &Aircraft,
     delta_e_rad: f64,
@@ -161,6 +167,13 @@ fn routed(
     part: Part,
 ) -> Result<(Analysis, Route), AnalysisError> {
     let departures = part != Part::Jump;
+    if part == Part::First {
+        if let Ok((a, width)) = on_branch::on_branch(aircraft, delta_e_rad) {
+            if check(&a).is_ok() {
+                return Ok((a, Route::Certified(width)));
+            }
+        }
+    }
     let why = match certified(aircraft, delta_e_rad, part) {
         Ok((mut a, width)) => {
             withhold_zero_sideslip(&mut a);
@@ -219,7 +232,7 @@ fn exact_jumps_then_branch(aircraft: &Aircraft, delta_e_rad: f64) -> Option<Anal
     let at = at_trim_values(aircraft, delta_e_rad);
     let on = Branch {
         v: &v,
-        e: &e,
+        trim_condition: &e.trim_condition,
         found: &found,
         divergence: &divergence,
         marks: (aircraft, delta_e_rad),
@@ -369,7 +382,7 @@ fn certified_with<'v>(
             let marks = (aircraft, delta_e_rad);
             let on = Branch {
                 v: v(),
-                e,
+                trim_condition: &e.trim_condition,
                 found: &found,
                 divergence: &divergence,
                 marks,
@@ -386,7 +399,7 @@ fn certified_with<'v>(
 /// What the first departure along the primary branch reads (aileron yaw).
 struct Branch<'a> {
     v: &'a Values,
-    e: &'a EnclosedPolys,
+    trim_condition: &'a IPoly2,
     found: &'a Found,
     divergence: &'a [Bracket],
     marks: (&'a Aircraft, f64),
@@ -403,6 +416,19 @@ impl Branch<'_> {
         critical: Option<usize>,
         at: &AtTrim<'_>,
     ) -> Result<f64, Uncertified> {
+        let bound = self.marks.0.aileron_range();
+        self.first_departure_before(analysis, critical, at, BranchEnd::Bound(bound))
+    }
+
+    /// [`Branch::first_departure`], the walk without a critical jump ending at `end` (where
+    /// the f64 walk of the branch ends: the aileron range, or a divergence roll rate).
+    fn first_departure_before(
+        &self,
+        analysis: &mut Analysis,
+        critical: Option<usize>,
+        at: &AtTrim<'_>,
+        end: BranchEnd,
+    ) -> Result<f64, Uncertified> {
         let (g, trims) = (&self.found.g, &self.found.trims);
         let bound = self.marks.0.aileron_range();
         let end = match critical {
@@ -410,13 +436,22 @@ impl Branch<'_> {
                 p0: analysis.jump[i].p0,
                 delta_a: analysis.jump[i].delta_a_rad,
             },
-            None => BranchEnd::Bound(bound),
+            None => end,
         };
-        let root = first_hopf_on_branch(self.v, end, MAX_WIDTH)?;
+        // An unstable trim at the branch's start is the first departure: no Hopf root to seek.
+        let root = match departure::start(at, trims) {
+            super::unstable_trim::Start::Unstable(_) => None,
+            _ => first_hopf_on_branch(self.v, end, MAX_WIDTH)?,
+        };
         let mut width = 0.0_f64;
         if let Some(i) = critical {
             let fold = analysis.jump[i].clone();
-            let landing = landing_roots(self.v, self.e, &fold, &det_a_roots(self.divergence))?;
+            let landing = landing_roots(
+                self.v,
+                self.trim_condition,
+                &fold,
+                &det_a_roots(self.divergence),
+            )?;
             let value = |b: &[Bracket]| b.iter().map(|r| r.value).collect::<Vec<f64>>();
             analysis.jump[i].lands_at =
                 Some(departure::landings(at, trims, &fold, &value(&landing)));
@@ -486,11 +521,11 @@ fn det_a_roots(divergence: &[Bracket]) -> Vec<Bracket> {
 /// land), proven apart from det A's roots `det_a_roots`.
 fn landing_roots(
     v: &Values,
-    e: &EnclosedPolys,
+    trim_condition: &IPoly2,
     j: &JumpPoint,
     det_a_roots: &[Bracket],
 ) -> Result<Vec<Bracket>, Uncertified> {
-    let g = e.trim_condition.at_aileron(I::point(j.delta_a_rad));
+    let g = trim_condition.at_aileron(I::point(j.delta_a_rad));
     let value = |x: f64| trim_condition_at(v, x, j.delta_a_rad);
     let roots = real_roots_outside(&g, fold_window(j), Some(&value), MAX_WIDTH)?;
     apart(&roots, det_a_roots)?;
@@ -539,7 +574,7 @@ fn certified_departures<'a>(
     let det_a_roots = det_a_roots(divergence);
     let landing = jump
         .iter()
-        .map(|j| landing_roots(v, e, j, &det_a_roots))
+        .map(|j| landing_roots(v, &e.trim_condition, j, &det_a_roots))
         .collect::<Result<Vec<_>, _>>()?;
     let width = [&hopf, &zs_hopf]
         .into_iter()

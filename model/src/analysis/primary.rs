@@ -56,18 +56,35 @@ pub fn follow(
     jumps: &[(f64, f64)],
     max_abs_delta_a: f64,
 ) -> Outcome {
+    follow_to(g, det_a, divergence, jumps, max_abs_delta_a).0
+}
+
+/// [`follow`], with the roll rate its last step started from: the branch up to there holds
+/// none of `jumps` and no divergence roll rate (a jump root between there and the end of a
+/// step that meets a divergence roll rate is not reached). NaN once the curve has turned in
+/// P0: the roll rate then no longer tells how far along the branch the walk is.
+pub fn follow_to(
+    g: &InAileron,
+    det_a: &InAileron,
+    divergence: &[f64],
+    jumps: &[(f64, f64)],
+    max_abs_delta_a: f64,
+) -> (Outcome, f64) {
     let graph = g.0.len() <= 2 && det_a.0.len() <= 1;
     let max_step: f64 = if graph { MAX_STEP } else { TURN_STEP };
     const MAX_STEPS: usize = 2_000_000;
     let Some(mut da) = g.aileron_roots(0.0).nearest(0.0) else {
-        return Outcome::Lost("no trim at P0 = 0");
+        return (Outcome::Lost("no trim at P0 = 0"), 0.0);
     };
     if da.abs() > 1e-9 {
-        return Outcome::Lost(
-            "the trim at P0 = 0 needs aileron (n_p or delta_r break the symmetry)",
+        return (
+            Outcome::Lost("the trim at P0 = 0 needs aileron (n_p or delta_r break the symmetry)"),
+            0.0,
         );
     }
     let (mut p, mut dir, mut slope) = (0.0f64, 1.0f64, 0.0f64);
+    // `p` while the curve has not turned in P0, NaN after.
+    let mut since = p;
     // Whether the last step's change of delta_a was at most its length: then |slope| <= 1 and
     // the next step is full, `max_step / |slope| >= max_step` (the division rounds
     // monotonically), without waiting for the division that gives the slope (its latency was
@@ -97,11 +114,15 @@ pub fn follow(
         let Some(da_new) = next else {
             if back_from_turn.is_some() {
                 // No trim a step to either side: the curve closes within one step of P0.
-                return Outcome::Lost("the equilibrium curve turns twice within one step");
+                return (
+                    Outcome::Lost("the equilibrium curve turns twice within one step"),
+                    since,
+                );
             }
             // The two trims of this roll rate merged and vanished: the curve turns in P0 and
             // continues on the other root, P0 running back.
             dir = -dir;
+            since = f64::NAN;
             let back = g.aileron_roots(p);
             match back
                 .into_iter()
@@ -117,14 +138,14 @@ pub fn follow(
                     da = other;
                     continue;
                 }
-                None => return Outcome::Lost("the equilibrium curve ends"),
+                None => return (Outcome::Lost("the equilibrium curve ends"), since),
             }
         };
         // A jump root between p and p_new whose aileron is this branch's.
         let (lo, hi) = if p < p_new { (p, p_new) } else { (p_new, p) };
         let diverges = divergence.iter().any(|d| *d > lo && *d <= hi);
         if diverges || det_a_new.signum() != sign_det_a {
-            return Outcome::Divergence(p_new);
+            return (Outcome::Divergence(p_new), since);
         }
         let hit = jumps
             .iter()
@@ -137,17 +158,23 @@ pub fn follow(
             })
             .min_by(|a, b| ((a.1 .0 - p).abs()).total_cmp(&(b.1 .0 - p).abs()));
         if let Some((i, _)) = hit {
-            return Outcome::Jump(i);
+            return (Outcome::Jump(i), since);
         }
         if da_new.abs() > max_abs_delta_a {
-            return Outcome::Unbounded;
+            return (Outcome::Unbounded, since);
         }
         slope = (da_new - da) / (dir * h);
         full = (da_new - da).abs() <= h;
         da = da_new;
         p = p_new;
+        if !since.is_nan() {
+            since = p;
+        }
     }
-    Outcome::Lost("the primary branch was followed for 2e6 steps without an end")
+    (
+        Outcome::Lost("the primary branch was followed for 2e6 steps without an end"),
+        since,
+    )
 }
 
 /// How many full steps [`Ahead`] evaluates at once.

@@ -40,8 +40,15 @@ pub enum Criterion {
 ///
 /// [`EnclosedPolys`]: super::EnclosedPolys
 pub fn value_at(v: &Values, which: Criterion, x: f64) -> I {
+    value_over(v, which, I::point(x))
+}
+
+/// An enclosure of the values over the roll rates `x` of a criterion polynomial, as
+/// [`value_at`]: over a bracket of a root of another polynomial, what proves the two roots
+/// apart without isolating this polynomial's roots.
+pub fn value_over(v: &Values, which: Criterion, x: I) -> I {
     type M1 = AtP0<I>;
-    let mut m = AtP0(I::point(x));
+    let mut m = AtP0(x);
     let t = &v.lifted;
     let value = match which {
         Criterion::DetA | Criterion::Jump | Criterion::Poles => {

@@ -1,6 +1,6 @@
-//! The first Hopf point on the primary branch of an aircraft whose aileron yaws, certified by
-//! mean-value forms along the branch ([`first_hopf_on_branch`]) instead of through the Hopf
-//! resultant in delta_a.
+//! The first Hopf point and the first jump on the primary branch of an aircraft whose aileron
+//! yaws, certified by mean-value forms along the branch ([`first_root_on_branch`]) instead of
+//! through the resultants in delta_a.
 //!
 //! With aileron yaw the exact path eliminates delta_a from `det(A)^6 Delta4` by a resultant with
 //! the trim condition, a polynomial of degree 52 in P0 whose enclosure dividing out `det(A)^12`
@@ -10,7 +10,9 @@
 //! and `det(A)^6 Delta4` is enclosed over each piece along the branch by its value at the
 //! piece's centre and its derivative over the piece ([`Slope`]): plain interval evaluation over
 //! a piece overestimates the range by orders of magnitude, the mean-value form only by the
-//! derivative's overestimate times the piece's width.
+//! derivative's overestimate times the piece's width. The jump determinant `det J5 det(A)^2` on
+//! the trim is walked the same way ([`Det::Jump`]): its first sign change on the branch is the
+//! critical jump, without isolating the roots of the jump resultant on every other branch.
 
 use super::characteristic::hopf_in;
 use super::compiled::Characteristic;
@@ -27,6 +29,16 @@ use crate::interval::I;
 /// How many pieces [`first_hopf_on_branch`] evaluates before it gives up.
 pub const PIECE_BUDGET: usize = 1000;
 
+/// Which determinant [`first_root_on_branch`] follows along the branch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Det {
+    /// The Hopf determinant `det(A)^6 Delta4` (its roots on the branch are Hopf points).
+    Hopf,
+    /// The jump determinant `det J5 det(A)^2` on the trim (its roots on the branch are folds
+    /// in the aileron: jump points).
+    Jump,
+}
+
 /// Where the walk along the primary branch ends.
 #[derive(Clone, Copy, Debug)]
 pub enum BranchEnd {
@@ -40,14 +52,33 @@ pub enum BranchEnd {
     },
     /// Where the branch's aileron leaves `[-bound, bound]` (rad): proven outside at the end.
     Bound(f64),
+    /// At the roll rate `p0` (rad/s; e.g. the lower end of the first divergence roll rate's
+    /// bracket) or where the branch's aileron leaves `[-bound, bound]` (rad), whichever comes
+    /// first.
+    Before {
+        /// The roll rate the walk stops at, rad/s.
+        p0: f64,
+        /// The aileron bound, rad.
+        bound: f64,
+    },
 }
 
-/// The first root on the primary branch (from `P0 = 0, delta_a = 0`) of the Hopf determinant
-/// `det(A)^6 Delta4` of the data `v` before the branch's `end`: its certified bracket (relative
+/// [`first_root_on_branch`] of the Hopf determinant.
+pub fn first_hopf_on_branch(
+    v: &Values,
+    end: BranchEnd,
+    width: f64,
+) -> Result<Option<(Bracket, I)>, Uncertified> {
+    first_root_on_branch(v, Det::Hopf, end, width)
+}
+
+/// The first root on the primary branch (from `P0 = 0, delta_a = 0`) of the determinant `det`
+/// of the data `v` before the branch's `end`: its certified bracket (relative
 /// width at most `width`) and an enclosure of the branch's aileron there, or `None` when the
 /// determinant keeps its sign up to the end, proven. A [`BranchEnd::Fold`] must lie in the
 /// branch's enclosure at its roll rate (the caller's fold is on this branch); past a
-/// [`BranchEnd::Bound`] the walk may find a root beyond the bound, which the caller places.
+/// [`BranchEnd::Bound`] the walk may find a root beyond the bound, which the caller places
+/// (so may it before a [`BranchEnd::Before`]'s bound, not beyond its roll rate).
 ///
 /// Each piece `[a, b]` of roll rates is decided by mean-value forms in P0 (numbers carrying
 /// their derivative in P0, enclosed over the piece): the branch's aileron over it is enclosed
@@ -63,18 +94,19 @@ pub enum BranchEnd {
 /// stays in its Newton image). Where the branch turns in P0 (the trim condition's slope in
 /// delta_a vanishes) or a piece cannot be decided within `PIECE_BUDGET` pieces, the answer is
 /// an [`Uncertified`] reason.
-pub fn first_hopf_on_branch(
+pub fn first_root_on_branch(
     v: &Values,
+    det: Det,
     end: BranchEnd,
     width: f64,
 ) -> Result<Option<(Bracket, I)>, Uncertified> {
     let p_end = match end {
-        BranchEnd::Fold { p0, .. } => p0,
+        BranchEnd::Fold { p0, .. } | BranchEnd::Before { p0, .. } => p0,
         BranchEnd::Bound(_) => f64::INFINITY,
     };
     let g0 = trim_condition(v, 0.0).ok_or(Uncertified::Degenerate)?;
     let start = newton(&g0, I::new(-1e-9, 1e-9)).ok_or(Uncertified::Degenerate)?;
-    let s0 = hopf_at(v, 0.0, start).sign().ok_or(Uncertified::Sign)?;
+    let s0 = det_at(det, v, 0.0, start).sign().ok_or(Uncertified::Sign)?;
     let (mut lo, mut e_lo) = (0.0_f64, start);
     let mut hi: Option<(f64, I)> = None;
     let mut h = p_end.min(1.0) / 16.0;
@@ -83,7 +115,7 @@ pub fn first_hopf_on_branch(
             if b - lo <= width * b.abs() {
                 return Ok(Some((bracket(lo, b), e_b)));
             }
-            if let Some((l, u, over)) = newton_hopf(v, lo, b, e_lo) {
+            if let Some((l, u, over)) = newton_det(det, v, lo, b, e_lo) {
                 if u - l < 0.5 * (b - lo) {
                     let g = trim_condition(v, l).ok_or(Uncertified::Degenerate)?;
                     (lo, e_lo, hi) = (l, contract(&g, over), Some((u, over)));
@@ -105,7 +137,7 @@ pub fn first_hopf_on_branch(
             h /= 2.0;
             continue;
         };
-        let (form, at_c) = piece.hopf(v);
+        let (form, at_c) = piece.det(det, v);
         // The mean-value form's half-width grows about as the square of the piece's (the
         // derivative's overestimate grows with the piece): the piece that would just be decided.
         let fit = 0.8 * (b - lo) * (at_c.mig() / (form.width() / 2.0)).sqrt();
@@ -115,12 +147,12 @@ pub fn first_hopf_on_branch(
             h = fit.clamp(h / 2.0, 2.0 * h).min(1.0);
             continue;
         }
-        match hopf_at(v, b, piece.at_end).sign() {
+        match det_at(det, v, b, piece.at_end).sign() {
             Some(s) if s != s0 => hi = Some((b, piece.at_end)),
             _ => {
                 // The root may lie just beyond b: a point of the opposite sign there bounds it.
                 if hi.is_none() {
-                    hi = beyond(v, b, b + h, piece.at_end, s0);
+                    hi = beyond(det, v, b, b + h, piece.at_end, s0);
                 }
                 h = fit.clamp(h / 16.0, h / 2.0);
             }
@@ -142,25 +174,28 @@ fn ended(end: BranchEnd, lo: f64, e_lo: I) -> Option<Result<Option<(Bracket, I)>
             },
         ),
         BranchEnd::Bound(bound) if e_lo.lo > bound || e_lo.hi < -bound => Some(Ok(None)),
+        BranchEnd::Before { p0, bound } if lo >= p0 || e_lo.lo > bound || e_lo.hi < -bound => {
+            Some(Ok(None))
+        }
         _ => None,
     }
 }
 
 /// The point `c` (beyond `b`, where the branch's trim is `e_b`) and the branch's trim there,
 /// when the determinant's sign at `c` is proven opposite to `s0`.
-fn beyond(v: &Values, b: f64, c: f64, e_b: I, s0: f64) -> Option<(f64, I)> {
+fn beyond(det: Det, v: &Values, b: f64, c: f64, e_b: I, s0: f64) -> Option<(f64, I)> {
     let p = Piece::over(v, b, c, e_b)?;
-    let s = hopf_at(v, c, p.at_end).sign()?;
+    let s = det_at(det, v, c, p.at_end).sign()?;
     (s != s0).then_some((c, p.at_end))
 }
 
 /// One interval Newton step on the determinant along the branch over `[lo, hi]` (the branch's
 /// trim at `lo` in `e_lo`): the bracket that holds every root of `[lo, hi]`, and the branch's
 /// aileron over `[lo, hi]`; `None` when the derivative's enclosure may vanish.
-fn newton_hopf(v: &Values, lo: f64, hi: f64, e_lo: I) -> Option<(f64, f64, I)> {
+fn newton_det(det: Det, v: &Values, lo: f64, hi: f64, e_lo: I) -> Option<(f64, f64, I)> {
     let p = Piece::over(v, lo, hi, e_lo)?;
-    let slope = hopf_with(OverPiece(Slope::variable(p.x)), v, p.over)?;
-    let image = I::point(p.c) - hopf_at(v, p.c, p.at_c).checked_div(slope.d)?;
+    let slope = det_with(det, OverPiece(Slope::variable(p.x)), v, p.over)?;
+    let image = I::point(p.c) - det_at(det, v, p.c, p.at_c).checked_div(slope.d)?;
     let x = image.intersect(p.x)?;
     Some((x.lo, x.hi, p.over.v))
 }
@@ -220,11 +255,11 @@ impl Piece {
         })
     }
 
-    /// The determinant over the piece along the branch (its mean-value form) and at the
+    /// The determinant `det` over the piece along the branch (its mean-value form) and at the
     /// piece's centre.
-    fn hopf(&self, v: &Values) -> (I, I) {
-        let at_c = hopf_at(v, self.c, self.at_c);
-        let form = hopf_with(OverPiece(Slope::variable(self.x)), v, self.over)
+    fn det(&self, det: Det, v: &Values) -> (I, I) {
+        let at_c = det_at(det, v, self.c, self.at_c);
+        let form = det_with(det, OverPiece(Slope::variable(self.x)), v, self.over)
             .map_or_else(I::entire, |s| s.mean_value(self.x, self.c, at_c));
         (form, at_c)
     }
@@ -318,7 +353,31 @@ where
     Some(r.delta4().0)
 }
 
-/// An enclosure of `det(A)^6 Delta4` at the roll rate `p` with the aileron anywhere in `da`.
-fn hopf_at(v: &Values, p: f64, da: I) -> I {
-    hopf_with(AtP0(I::point(p)), v, da).unwrap_or_else(I::entire)
+/// An enclosure of `det J5 det(A)^2` on the trim in the ring `m` with the aileron `da`, or
+/// `None` where it cannot be formed.
+fn jump_with<M, T>(mut m: M, v: &Values, da: T) -> Option<T>
+where
+    M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
+    T: Num,
+{
+    let u = Unconstrained::new(&mut m, &v.lifted).ok()?;
+    Some(u.on_trim(&mut m, &v.lifted, true).at(da))
+}
+
+/// An enclosure of the determinant `det` in the ring `m` with the aileron `da`.
+fn det_with<M, T>(det: Det, m: M, v: &Values, da: T) -> Option<T>
+where
+    M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
+    T: Num,
+{
+    match det {
+        Det::Hopf => hopf_with(m, v, da),
+        Det::Jump => jump_with(m, v, da),
+    }
+}
+
+/// An enclosure of the determinant `det` at the roll rate `p` with the aileron anywhere in
+/// `da`.
+fn det_at(det: Det, v: &Values, p: f64, da: I) -> I {
+    det_with(det, AtP0(I::point(p)), v, da).unwrap_or_else(I::entire)
 }

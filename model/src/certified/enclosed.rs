@@ -179,6 +179,40 @@ impl CriterionTape {
     }
 }
 
+/// The part of [`EnclosedPolys`] that needs no elimination of the aileron: det A, the trim and
+/// the trim condition, and det J5 on the trim, in P0 and delta_a. What the walk along the
+/// primary branch ([`super::first_root_on_branch`]) reports from (the trim at its roots, the
+/// f64 branch, the landings), without the resultants of the jump and pole polynomials.
+pub struct TrimPolys {
+    /// det A (Eq. 4) in P0 (as in [`EnclosedPolys`]).
+    pub det_a: IPoly,
+    /// det A in P0 and delta_a (as the trim is evaluated).
+    pub det_a_value: IPoly2,
+    /// Numerators of [alpha0, beta0, Q0, R0] over `det_a`, in P0 and delta_a.
+    pub trim: [IPoly2; 4],
+    /// The trim condition `det(A)^2 p_dot` on the trim.
+    pub trim_condition: IPoly2,
+    /// `det J5 det(A)^2` on the trim.
+    pub jump_at: IPoly2,
+}
+
+impl TrimPolys {
+    /// Encloses the trim-level polynomials of the data `v` (the same construction as
+    /// [`EnclosedPolys::new`]'s).
+    pub fn new(v: &Values) -> Result<TrimPolys, Uncertified> {
+        let (l, m) = (&v.lifted, &mut InP0::new());
+        let u = Unconstrained::new(m, l)?;
+        let jump_at = u.on_trim(m, l, true);
+        Ok(TrimPolys {
+            det_a: u.det_a.symmetric(),
+            det_a_value: u.det_a_value,
+            trim: u.trim,
+            trim_condition: u.trim_condition,
+            jump_at,
+        })
+    }
+}
+
 /// The part of [`EnclosedPolys`] the critical jump needs: det A, the trim condition, det J5 on
 /// the trim and the jump polynomial (the Monte Carlo's lean route).
 pub struct JumpPolys {

@@ -52,10 +52,12 @@ mod rolls;
 mod slope;
 mod values;
 
-pub use at_roll_rate::{at_roll_rate, trim_condition_at, value_at, AtRollRate, Criterion};
-pub use branch::{first_hopf_on_branch, BranchEnd};
+pub use at_roll_rate::{
+    at_roll_rate, trim_condition_at, value_at, value_over, AtRollRate, Criterion,
+};
+pub use branch::{first_hopf_on_branch, first_root_on_branch, BranchEnd, Det};
 pub use elimination::{eliminate, Coeff, Scalar};
-pub use enclosed::{EnclosedPolys, JumpPolys};
+pub use enclosed::{EnclosedPolys, JumpPolys, TrimPolys};
 pub use hopf::EnclosedHopf;
 pub use isolate::{
     positive_roots, positive_roots_by, positive_roots_windowed, positive_roots_windowed_even,

@@ -29,6 +29,7 @@ pub mod import;
 pub mod mass;
 pub mod metrics;
 pub mod model;
+pub mod readers;
 pub mod surfaces;
 pub mod systems;
 pub mod table;
@@ -42,5 +43,7 @@ pub use error::JsbsimError;
 pub use model::Model;
 #[cfg(test)]
 mod fcs_tests;
+#[cfg(test)]
+mod readers_tests;
 #[cfg(test)]
 mod tests;

@@ -8,6 +8,8 @@
 use super::clamp::{record, Clamp};
 use super::error::JsbsimError;
 use super::function::{Compare, Expr, Op, PropertyRef, Symbols, Unary};
+use super::readers::Readers;
+use std::sync::OnceLock;
 
 /// A named function of the model.
 #[derive(Clone, Debug)]
@@ -29,6 +31,8 @@ pub struct Functions {
     pub list: Vec<Function>,
     /// For each symbol, the function that defines it, if any.
     pub defined_by: Vec<Option<usize>>,
+    /// Which functions read each property, found at the first use.
+    readers: OnceLock<Option<Readers>>,
 }
 
 impl Functions {
@@ -40,6 +44,13 @@ impl Functions {
                 self.defined_by[s] = Some(i);
             }
         }
+    }
+
+    /// Which functions read each property, directly or through others; `None` when the
+    /// functions may loop or chain too deep for an evaluation to keep any value
+    /// ([`Env::keep_from`]). Call once every function is read and linked.
+    pub fn readers(&self) -> Option<&Readers> {
+        self.readers.get_or_init(|| Readers::of(self)).as_ref()
     }
 
     /// The symbols no function defines: what the caller must give.
@@ -155,6 +166,35 @@ impl<'m> Env<'m> {
         self.slots.clone_from_slice(&base.slots);
         self.clamps.clear();
         self.clamps.extend_from_slice(&base.clamps);
+    }
+
+    /// Keeps from `previous` (an evaluation of the same functions, with every value it
+    /// computed) the value of each function that reads no input set differently here, directly
+    /// or through others, so that this evaluation computes only the others. Its numbers and
+    /// errors are those of a fresh evaluation: a kept value is what the function gives with
+    /// these inputs. `stale` is scratch memory. Table lookups beyond the breakpoints inside the
+    /// kept functions are not recorded again.
+    pub fn keep_from(&mut self, previous: &Env, readers: &Readers, stale: &mut Vec<bool>) {
+        stale.clear();
+        stale.resize(self.slots.len(), false);
+        let mut mark = |fs: &[usize]| fs.iter().for_each(|&f| stale[f] = true);
+        for (s, (now, then)) in self.inputs.iter().zip(&previous.inputs).enumerate() {
+            if now.map(f64::to_bits) != then.map(f64::to_bits) {
+                mark(readers.of_symbol(s));
+            }
+        }
+        for (f, (now, then)) in self.slots.iter().zip(&previous.slots).enumerate() {
+            if let Slot::Done(v) = now {
+                if !matches!(then, Slot::Done(w) if w.to_bits() == v.to_bits()) {
+                    mark(readers.of_function(f));
+                }
+            }
+        }
+        for ((now, then), &stale) in self.slots.iter_mut().zip(&previous.slots).zip(stale.iter()) {
+            if matches!((&now, then), (Slot::Unknown, Slot::Done(_))) && !stale {
+                *now = *then;
+            }
+        }
     }
 
     /// The value given for input `name`, if the model reads it and it was set.

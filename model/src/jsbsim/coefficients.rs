@@ -87,7 +87,7 @@ impl<'a> Setup<'a> {
         self.fixed_point(|cl2| {
             let mut env = self.env(fixed, state, cl2);
             let zeroed = fixed.zeroed.clone();
-            let values = self.evaluate(&mut env, state, &zeroed)?;
+            let values = self.evaluate(&mut env, (state, fixed.cg), &zeroed)?;
             let terms = self
                 .model
                 .aero
@@ -149,14 +149,17 @@ impl<'a> Setup<'a> {
         Ok(last.expect("at least one evaluation"))
     }
 
-    /// The coefficients of `env` (every input set for `state`), refused when not finite.
+    /// The coefficients of `env` (every input set for `state`), the moments about `cg` (the
+    /// model's as loaded), refused when not finite.
     fn evaluate(
         &self,
         env: &mut Env,
-        state: &State,
+        (state, cg): (&State, [f64; 3]),
         zeroed: &[String],
     ) -> Result<[f64; 6], JsbsimError> {
-        let loads = self.model.loads(env, state.alpha, state.beta)?;
+        let metrics = &self.model.metrics;
+        let angles = (state.alpha, state.beta);
+        let loads = (self.model.aero).loads(env, angles, cg, metrics.aero_rp, metrics.chord)?;
         let values = self.nondimensional(state, loads.force, loads.moment);
         self.refuse_non_finite(env, state, &values, zeroed)?;
         Ok(values)
@@ -259,7 +262,7 @@ impl<'s, 'a> Sequence<'s, 'a> {
             if let (Some(previous), Some(readers)) = (self.previous.take(), readers) {
                 env.keep_from(&previous, readers, &mut self.stale);
             }
-            let values = setup.evaluate(&mut env, state, &fixed.zeroed)?;
+            let values = setup.evaluate(&mut env, (state, fixed.cg), &fixed.zeroed)?;
             self.previous = Some(env);
             Ok(values)
         })

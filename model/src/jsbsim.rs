@@ -3,12 +3,13 @@
 //! derivatives of an aircraft file that `analyze` reads.
 //!
 //! Data flow: [`xml`] and [`units`] read values; [`table`], [`function`] and [`evaluate`] are
-//! JSBSim's function language, [`finite`] refuses its non-finite values and [`clamp`] names its
-//! lookups beyond a table's range, [`digits`] writes their numbers; [`metrics`], [`mass`] and [`aerodynamics`] the model's sections,
-//! put together in [`model`]; [`systems`] and [`fcs`] read the flight control system, and
-//! [`surfaces`] the controls' travel through it. JSBSim itself (its Python package) is the
-//! independent check of the
-//! evaluation, in the integration tests.
+//! JSBSim's function language, [`readers`] which functions read each property (what an
+//! evaluation computes again when a few inputs change), [`finite`] refuses its non-finite values
+//! and [`clamp`] names its lookups beyond a table's range, [`digits`] writes their numbers;
+//! [`metrics`], [`mass`] and [`aerodynamics`] the model's sections, put together in [`model`];
+//! [`systems`] and [`fcs`] read the flight control system, and [`surfaces`] the controls' travel
+//! through it. JSBSim itself (its Python package) is the independent check of the evaluation,
+//! in the integration tests.
 
 pub mod aerodynamics;
 pub mod atmosphere;

@@ -255,12 +255,12 @@ impl<'s, 'a> Sequence<'s, 'a> {
     pub fn values(&mut self, state: &State) -> Result<[f64; 6], JsbsimError> {
         let setup = self.setup;
         let fixed = setup.fixed();
-        let readers = setup.model.functions.readers();
+        let readers = setup.model.readers();
         setup.fixed_point(|cl2| {
             let mut env = setup.env(fixed, state, cl2);
             env.record_clamps(false);
             if let (Some(previous), Some(readers)) = (self.previous.take(), readers) {
-                env.keep_from(&previous, readers, &mut self.stale);
+                readers.keep(&mut env, &previous, &mut self.stale);
             }
             let values = setup.evaluate(&mut env, (state, fixed.cg), &fixed.zeroed)?;
             self.previous = Some(env);

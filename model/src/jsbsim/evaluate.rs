@@ -8,8 +8,6 @@
 use super::clamp::{record, Clamp};
 use super::error::JsbsimError;
 use super::function::{Compare, Expr, Op, PropertyRef, Symbols, Unary};
-use super::readers::Readers;
-use std::sync::OnceLock;
 
 /// A named function of the model.
 #[derive(Clone, Debug)]
@@ -31,8 +29,6 @@ pub struct Functions {
     pub list: Vec<Function>,
     /// For each symbol, the function that defines it, if any.
     pub defined_by: Vec<Option<usize>>,
-    /// Which functions read each property, found at the first use.
-    readers: OnceLock<Option<Readers>>,
 }
 
 impl Functions {
@@ -44,13 +40,6 @@ impl Functions {
                 self.defined_by[s] = Some(i);
             }
         }
-    }
-
-    /// Which functions read each property, directly or through others; `None` when the
-    /// functions may loop or chain too deep for an evaluation to keep any value
-    /// ([`Env::keep_from`]). Call once every function is read and linked.
-    pub fn readers(&self) -> Option<&Readers> {
-        self.readers.get_or_init(|| Readers::of(self)).as_ref()
     }
 
     /// The symbols no function defines: what the caller must give.
@@ -172,21 +161,29 @@ impl<'m> Env<'m> {
     /// computed) the value of each function that reads no input set differently here, directly
     /// or through others, so that this evaluation computes only the others. Its numbers and
     /// errors are those of a fresh evaluation: a kept value is what the function gives with
-    /// these inputs. `stale` is scratch memory. Table lookups beyond the breakpoints inside the
-    /// kept functions are not recorded again.
-    pub fn keep_from(&mut self, previous: &Env, readers: &Readers, stale: &mut Vec<bool>) {
+    /// these inputs. `readers` gives for each symbol the functions that read it, directly or
+    /// through others (of every branch), and for each function its symbol; they must never loop
+    /// nor chain beyond [`MAX_CHAIN`], whose checks a kept value skips
+    /// ([`super::readers::Readers`]). `stale` is scratch memory. Table lookups beyond the
+    /// breakpoints inside the kept functions are not recorded again.
+    pub fn keep_from(
+        &mut self,
+        previous: &Env,
+        (of_symbol, symbol_of): (&[Vec<usize>], &[usize]),
+        stale: &mut Vec<bool>,
+    ) {
         stale.clear();
         stale.resize(self.slots.len(), false);
         let mut mark = |fs: &[usize]| fs.iter().for_each(|&f| stale[f] = true);
         for (s, (now, then)) in self.inputs.iter().zip(&previous.inputs).enumerate() {
             if now.map(f64::to_bits) != then.map(f64::to_bits) {
-                mark(readers.of_symbol(s));
+                mark(&of_symbol[s]);
             }
         }
         for (f, (now, then)) in self.slots.iter().zip(&previous.slots).enumerate() {
             if let Slot::Done(v) = now {
                 if !matches!(then, Slot::Done(w) if w.to_bits() == v.to_bits()) {
-                    mark(readers.of_function(f));
+                    mark(&of_symbol[symbol_of[f]]);
                 }
             }
         }

@@ -2,7 +2,7 @@
 //! must be computed again when an evaluation's inputs change in a few properties. A trim
 //! evaluates the coefficients hundreds of times at one condition, each time moving only alpha
 //! or the elevator, and most of a model's functions read neither; an evaluation that keeps the
-//! others' values from the previous one ([`super::evaluate::Env::keep_from`]) gives the same
+//! others' values from the previous one ([`Env::keep_from`]) gives the same
 //! numbers and the same errors, for a function's value is a function of what it reads.
 //!
 //! The reads are those of every branch of every `<ifthen>`: a superset of what one evaluation
@@ -11,7 +11,7 @@
 //! [`MAX_CHAIN`] functions), so the readers are known only for functions where neither can
 //! happen at all.
 
-use super::evaluate::{Functions, MAX_CHAIN};
+use super::evaluate::{Env, Functions, MAX_CHAIN};
 use super::function::Expr;
 
 /// For each property, the functions that read it.
@@ -88,6 +88,12 @@ impl Readers {
     /// The functions reading function `f`'s value, directly or through others.
     pub fn of_function(&self, f: usize) -> &[usize] {
         &self.of_symbol[self.symbol_of[f]]
+    }
+
+    /// Keeps in `env` the values of `previous` that its inputs leave unchanged
+    /// ([`Env::keep_from`]); `stale` is scratch memory.
+    pub fn keep(&self, env: &mut Env, previous: &Env, stale: &mut Vec<bool>) {
+        env.keep_from(previous, (&self.of_symbol, &self.symbol_of), stale);
     }
 }
 

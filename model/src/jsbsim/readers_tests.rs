@@ -44,7 +44,7 @@ fn the_readers_of_a_property_are_the_functions_reading_it_in_any_branch() {
              <value>0</value><property>a1</property></ifthen></function>
            <axis name="LIFT"><function name="lift"><sum><property>m1</property><property>branch</property></sum></function></axis>"#,
     );
-    let r = m.functions.readers().expect("no loop");
+    let r = m.readers().expect("no loop");
     let symbol = |n: &str| m.functions.symbols.get(n).unwrap();
     let sorted = |mut v: Vec<usize>| {
         v.sort_unstable();
@@ -71,7 +71,7 @@ fn no_readers_where_functions_loop_or_chain_beyond_the_limit() {
         r#"<function name="a"><property>b</property></function>
            <function name="b"><sum><property>a</property><value>1</value></sum></function>"#,
     );
-    assert!(looped.functions.readers().is_none());
+    assert!(looped.readers().is_none());
     let chain = |n: usize| {
         let links: String = (0..n)
             .map(|k| {
@@ -86,8 +86,8 @@ fn no_readers_where_functions_loop_or_chain_beyond_the_limit() {
         ))
     };
     // f0 .. f100: 101 functions in one chain, one more than an evaluation follows.
-    assert!(chain(100).functions.readers().is_none());
-    assert!(chain(99).functions.readers().is_some());
+    assert!(chain(100).readers().is_none());
+    assert!(chain(99).readers().is_some());
 }
 
 /// A pseudo-random number in [0, 1) from `seed` (an LCG: reproducible, no dependency).

@@ -9,6 +9,7 @@ use super::clamp::Clamp;
 use super::condition::{Condition, State};
 use super::digits::short;
 use super::error::JsbsimError;
+use super::evaluate::Env;
 use super::fixed::{Fixed, CL_SQUARED};
 use super::model::Model;
 use super::surfaces::Surface;
@@ -73,41 +74,74 @@ impl<'a> Setup<'a> {
         }
     }
 
+    /// What every evaluation of this setup sets the same, made at the first.
+    fn fixed(&self) -> &Fixed<'a> {
+        self.fixed
+            .get_or_init(|| Fixed::new(self.model, &self.condition, &self.surfaces, &self.settings))
+    }
+
     /// The coefficients at `state`.
     pub fn coefficients(&self, state: &State) -> Result<Coefficients, JsbsimError> {
-        let model = self.model;
-        let fixed = self
-            .fixed
-            .get_or_init(|| Fixed::new(model, &self.condition, &self.surfaces, &self.settings));
-        let feedback = model.functions.symbols.get(CL_SQUARED).is_some();
-        let mut cl2 = 0.0;
+        let fixed = self.fixed();
         let mut last = None;
-        for _ in 0..if feedback { 60 } else { 1 } {
-            let mut env = fixed.env(
-                (model, &self.condition),
-                state,
-                (&self.surfaces, &self.settings),
-                cl2,
-            );
+        self.fixed_point(|cl2| {
+            let mut env = self.env(fixed, state, cl2);
             let zeroed = fixed.zeroed.clone();
-            let loads = model.loads(&mut env, state.alpha, state.beta)?;
-            let terms = model
+            let values = self.evaluate(&mut env, (state, fixed.cg), &zeroed)?;
+            let terms = self
+                .model
                 .aero
                 .terms
                 .iter()
                 .map(|t| env.function(t.function))
                 .collect::<Result<Vec<_>, _>>()?;
-            let values = self.nondimensional(state, loads.force, loads.moment);
-            self.refuse_non_finite(&mut env, state, (&terms, &values), &zeroed)?;
-            let next = values[CL] * values[CL];
-            let done = (next - cl2).abs() <= 1e-15 * next.max(1.0);
-            cl2 = next;
             last = Some(Coefficients {
                 values,
                 terms,
                 zeroed,
                 clamps: env.clamps().to_vec(),
             });
+            Ok(values)
+        })?;
+        Ok(last.expect("at least one evaluation"))
+    }
+
+    /// The evaluations of this setup at a sequence of states, each computing again only the
+    /// functions that read what changed since the previous one: the trim's.
+    pub fn sequence(&self) -> Sequence<'_, 'a> {
+        Sequence {
+            setup: self,
+            previous: None,
+            stale: Vec::new(),
+        }
+    }
+
+    /// The evaluation of `state` with the lift coefficient squared `cl2`.
+    fn env(&self, fixed: &Fixed<'a>, state: &State, cl2: f64) -> Env<'a> {
+        fixed.env(
+            (self.model, &self.condition),
+            state,
+            (&self.surfaces, &self.settings),
+            cl2,
+        )
+    }
+
+    /// The coefficients `evaluate` gives, with the lift coefficient squared that the model
+    /// reads at its fixed point: where the aerodynamics read `aero/cl-squared`, evaluated again
+    /// until it is the square of the lift coefficient found (at most 60 times).
+    fn fixed_point(
+        &self,
+        mut evaluate: impl FnMut(f64) -> Result<[f64; 6], JsbsimError>,
+    ) -> Result<[f64; 6], JsbsimError> {
+        let feedback = self.model.functions.symbols.get(CL_SQUARED).is_some();
+        let mut cl2 = 0.0;
+        let mut last = None;
+        for _ in 0..if feedback { 60 } else { 1 } {
+            let values = evaluate(cl2)?;
+            let next = values[CL] * values[CL];
+            let done = (next - cl2).abs() <= 1e-15 * next.max(1.0);
+            cl2 = next;
+            last = Some(values);
             if done {
                 break;
             }
@@ -115,32 +149,39 @@ impl<'a> Setup<'a> {
         Ok(last.expect("at least one evaluation"))
     }
 
+    /// The coefficients of `env` (every input set for `state`), the moments about `cg` (the
+    /// model's as loaded), refused when not finite.
+    fn evaluate(
+        &self,
+        env: &mut Env,
+        (state, cg): (&State, [f64; 3]),
+        zeroed: &[String],
+    ) -> Result<[f64; 6], JsbsimError> {
+        let metrics = &self.model.metrics;
+        let angles = (state.alpha, state.beta);
+        let loads = (self.model.aero).loads(env, angles, cg, metrics.aero_rp, metrics.chord)?;
+        let values = self.nondimensional(state, loads.force, loads.moment);
+        self.refuse_non_finite(env, state, &values, zeroed)?;
+        Ok(values)
+    }
+
     /// Refuses an axis function or a coefficient that is not finite at `state`, naming the
     /// function and where its value arose (the coefficients alone are not finite only when the
     /// reference point's shift is not, or the sums overflow).
     fn refuse_non_finite(
         &self,
-        env: &mut super::evaluate::Env,
+        env: &mut Env,
         state: &State,
-        (terms, values): (&[f64], &[f64; 6]),
+        values: &[f64; 6],
         zeroed: &[String],
     ) -> Result<(), JsbsimError> {
         let place = || place(&self.condition, state);
         let model = self.model;
-        if let Some((t, v)) = model
-            .aero
-            .terms
-            .iter()
-            .zip(terms)
-            .find(|(_, v)| !v.is_finite())
-        {
-            return Err(super::finite::refusal(
-                env,
-                t.function,
-                *v,
-                &place(),
-                zeroed,
-            ));
+        for t in &model.aero.terms {
+            let v = env.function(t.function)?;
+            if !v.is_finite() {
+                return Err(super::finite::refusal(env, t.function, v, &place(), zeroed));
+            }
         }
         match values.iter().position(|v| !v.is_finite()) {
             None => Ok(()),
@@ -190,6 +231,41 @@ impl<'a> Setup<'a> {
             m[1] / (qs * metrics.chord),
             m[2] / (qs * metrics.span),
         ]
+    }
+}
+
+/// A setup's evaluations at a sequence of states ([`Setup::sequence`]): the coefficients alone,
+/// without the table lookups beyond the breakpoints, each evaluation keeping from the previous
+/// one the functions that read nothing it changed ([`Env::keep_from`]).
+pub struct Sequence<'s, 'a> {
+    setup: &'s Setup<'a>,
+    /// The last evaluation that succeeded.
+    previous: Option<Env<'a>>,
+    stale: Vec<bool>,
+}
+
+impl<'s, 'a> Sequence<'s, 'a> {
+    /// The setup evaluated.
+    pub fn setup(&self) -> &'s Setup<'a> {
+        self.setup
+    }
+
+    /// [`Coefficients::values`] at `state`, the same numbers and errors as
+    /// [`Setup::coefficients`].
+    pub fn values(&mut self, state: &State) -> Result<[f64; 6], JsbsimError> {
+        let setup = self.setup;
+        let fixed = setup.fixed();
+        let readers = setup.model.readers();
+        setup.fixed_point(|cl2| {
+            let mut env = setup.env(fixed, state, cl2);
+            env.record_clamps(false);
+            if let (Some(previous), Some(readers)) = (self.previous.take(), readers) {
+                readers.keep(&mut env, &previous, &mut self.stale);
+            }
+            let values = setup.evaluate(&mut env, (state, fixed.cg), &fixed.zeroed)?;
+            self.previous = Some(env);
+            Ok(values)
+        })
     }
 }
 

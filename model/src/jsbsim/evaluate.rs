@@ -157,6 +157,43 @@ impl<'m> Env<'m> {
         self.clamps.extend_from_slice(&base.clamps);
     }
 
+    /// Keeps from `previous` (an evaluation of the same functions, with every value it
+    /// computed) the value of each function that reads no input set differently here, directly
+    /// or through others, so that this evaluation computes only the others. Its numbers and
+    /// errors are those of a fresh evaluation: a kept value is what the function gives with
+    /// these inputs. `readers` gives for each symbol the functions that read it, directly or
+    /// through others (of every branch), and for each function its symbol; they must never loop
+    /// nor chain beyond [`MAX_CHAIN`], whose checks a kept value skips
+    /// ([`super::readers::Readers`]). `stale` is scratch memory. Table lookups beyond the
+    /// breakpoints inside the kept functions are not recorded again.
+    pub fn keep_from(
+        &mut self,
+        previous: &Env,
+        (of_symbol, symbol_of): (&[Vec<usize>], &[usize]),
+        stale: &mut Vec<bool>,
+    ) {
+        stale.clear();
+        stale.resize(self.slots.len(), false);
+        let mut mark = |fs: &[usize]| fs.iter().for_each(|&f| stale[f] = true);
+        for (s, (now, then)) in self.inputs.iter().zip(&previous.inputs).enumerate() {
+            if now.map(f64::to_bits) != then.map(f64::to_bits) {
+                mark(&of_symbol[s]);
+            }
+        }
+        for (f, (now, then)) in self.slots.iter().zip(&previous.slots).enumerate() {
+            if let Slot::Done(v) = now {
+                if !matches!(then, Slot::Done(w) if w.to_bits() == v.to_bits()) {
+                    mark(&of_symbol[symbol_of[f]]);
+                }
+            }
+        }
+        for ((now, then), &stale) in self.slots.iter_mut().zip(&previous.slots).zip(stale.iter()) {
+            if matches!((&now, then), (Slot::Unknown, Slot::Done(_))) && !stale {
+                *now = *then;
+            }
+        }
+    }
+
     /// The value given for input `name`, if the model reads it and it was set.
     pub fn input(&self, name: &str) -> Option<f64> {
         let s = self.functions.symbols.get(name)?;

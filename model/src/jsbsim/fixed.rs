@@ -26,6 +26,9 @@ pub struct Fixed<'m> {
     settings: Vec<Option<Target>>,
     /// What [`CL_SQUARED`] sets, if the model reads it.
     pub cl_squared: Option<Target>,
+    /// The centre of gravity as loaded (inches, structural frame), about which the moments are
+    /// taken.
+    pub cg: [f64; 3],
 }
 
 impl<'m> Fixed<'m> {
@@ -61,6 +64,7 @@ impl<'m> Fixed<'m> {
                 .collect(),
             settings: settings.iter().map(|(n, _)| base.target(n)).collect(),
             cl_squared: base.target(CL_SQUARED),
+            cg: model.totals().cg,
             zeroed,
             base,
         }

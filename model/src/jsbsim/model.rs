@@ -6,8 +6,10 @@ use super::error::JsbsimError;
 use super::evaluate::{Env, Functions};
 use super::mass::{MassBalance, Totals};
 use super::metrics::Metrics;
+use super::readers::Readers;
 use super::xml::{child, Source};
 use std::path::Path;
+use std::sync::OnceLock;
 
 /// The largest model file read, bytes: the catalogue's largest is well under 1 MB.
 pub const MAX_FILE_BYTES: u64 = 16 << 20;
@@ -27,6 +29,8 @@ pub struct Model {
     pub functions: Functions,
     /// The aerodynamics.
     pub aero: Aerodynamics,
+    /// Which functions read each property, found at the first use.
+    readers: OnceLock<Option<Readers>>,
 }
 
 impl Model {
@@ -76,7 +80,17 @@ impl Model {
             mass,
             functions,
             aero,
+            readers: OnceLock::new(),
         })
+    }
+
+    /// Which functions read each property, directly or through others; `None` when the
+    /// functions may loop or chain too deep for an evaluation to keep any value
+    /// ([`Env::keep_from`]).
+    pub fn readers(&self) -> Option<&Readers> {
+        self.readers
+            .get_or_init(|| Readers::of(&self.functions))
+            .as_ref()
     }
 
     /// Weight, CG and inertia as loaded.

@@ -13,7 +13,7 @@
 //! The elevator is found at each alpha (the pitching moment's zero over the elevator), then alpha
 //! where the lift is met, the first from below; the elevator must lie within its travel.
 
-use super::coefficients::{Setup, CL, CM};
+use super::coefficients::{Sequence, Setup, CL, CM};
 use super::condition::State;
 use super::digits::{every_digit, short};
 use super::surfaces::Control;
@@ -182,15 +182,15 @@ fn zero(
 }
 
 /// CL and Cm at `alpha`, elevator `de` and pitch rate `q`, refused when not finite.
-fn cl_cm(setup: &Setup, alpha: f64, de: f64, q: f64) -> Result<(f64, f64), String> {
+fn cl_cm(setup: &mut Sequence, alpha: f64, de: f64, q: f64) -> Result<(f64, f64), String> {
     let state = State {
         alpha,
         beta: 0.0,
         rates: [0.0, q, 0.0],
         surfaces: [0.0, de, 0.0],
     };
-    let c = setup.coefficients(&state).map_err(|e| e.to_string())?;
-    let (cl, cm) = (c.values[CL], c.values[CM]);
+    let values = setup.values(&state).map_err(|e| e.to_string())?;
+    let (cl, cm) = (values[CL], values[CM]);
     if !(cl.is_finite() && cm.is_finite()) {
         return Err(format!(
             "the trim met CL = {cl}, Cm = {cm} at alpha {:.3} deg, elevator {:.3}: the model's \
@@ -207,7 +207,7 @@ fn cl_cm(setup: &Setup, alpha: f64, de: f64, q: f64) -> Result<(f64, f64), Strin
 /// zero is one of the elevators evaluated on the way, whose lift is kept rather than evaluated
 /// again.
 fn pitch_balance(
-    setup: &Setup,
+    setup: &mut Sequence,
     travel: &Travel,
     alpha: f64,
     q: f64,
@@ -248,7 +248,7 @@ impl Balances {
     /// [`pitch_balance`] at `alpha`, sought once.
     fn at(
         &mut self,
-        setup: &Setup,
+        setup: &mut Sequence,
         travel: &Travel,
         alpha: f64,
         q: f64,
@@ -298,6 +298,7 @@ fn trim_unnamed(setup: &Setup, n: f64) -> Result<Trim, String> {
     let need = n * weight / qs;
     let q = pull_up_rate(n, setup.condition.speed);
     let travel = Travel::of(setup);
+    let setup = &mut setup.sequence();
     let untrimmable = |why: String| format!("untrimmable at n = {n}: {why}");
     let (a0, a1) = ALPHA_SEARCH_DEG;
     let steps = ((a1 - a0) / ALPHA_STEP_DEG).round() as usize;
@@ -379,7 +380,7 @@ fn trim_unnamed(setup: &Setup, n: f64) -> Result<Trim, String> {
 /// The trim between two alphas of the search whose lift excess changes sign, then the travel
 /// checked.
 fn refine(
-    (setup, balances): (&Setup, &mut Balances),
+    (setup, balances): (&mut Sequence, &mut Balances),
     travel: &Travel,
     (n, need, q): (f64, f64, f64),
     lo: (f64, f64),

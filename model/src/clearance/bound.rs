@@ -640,9 +640,6 @@ impl BoxPolys {
     /// ```
     pub fn no_trim_within(&self, bx: &LiftedBox, p: f64, l: f64) -> bool {
         const PIECES: usize = 16;
-        let Ok(k) = self.coefficients(bx, I::point(p)) else {
-            return false;
-        };
         // Ends of the pieces; neighbours share an end, so the pieces cover [-l, l] whatever
         // the rounding.
         let end = |i: usize| -l + 2.0 * l * (i as f64) / (PIECES as f64);
@@ -653,8 +650,22 @@ impl BoxPolys {
                 .min(end(a + 1).abs())
                 .total_cmp(&end(*b).abs().min(end(b + 1).abs()))
         });
+        let piece = |i: usize| I::new(end(i), if i + 1 == PIECES { l } else { end(i + 1) });
+        // The centre's aircraft first, in plain intervals: where it has a trim within l, so
+        // has the box (the common case below the target, and a tenth of the cost).
+        let Ok(m) = at_roll_rate(&bx.at_centre, I::point(p)) else {
+            return false;
+        };
+        let coef_c = |i: usize| m.g.get(i).copied().unwrap_or(I::point(0.0));
+        let at_centre = |d: I| coef_c(0) + coef_c(1) * d + coef_c(2) * d.sqr();
+        if order.iter().any(|i| at_centre(piece(*i)).contains_zero()) {
+            return false;
+        }
+        let Ok(k) = self.coefficients(bx, I::point(p)) else {
+            return false;
+        };
         order.into_iter().all(|i| {
-            let d = I::new(end(i), if i + 1 == PIECES { l } else { end(i + 1) });
+            let d = piece(i);
             let ([g0, g1, g2], [g0c, g1c, g2c]) = (k.g, k.g_c);
             let (dd, d2) = (Dual::constant(d), Dual::constant(d.sqr()));
             let over = g0 + g1 * dd + g2 * d2;

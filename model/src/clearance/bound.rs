@@ -643,13 +643,8 @@ impl BoxPolys {
         // Ends of the pieces; neighbours share an end, so the pieces cover [-l, l] whatever
         // the rounding.
         let end = |i: usize| -l + 2.0 * l * (i as f64) / (PIECES as f64);
-        let mut order: Vec<usize> = (0..PIECES).collect();
-        order.sort_by(|a, b| {
-            end(*a)
-                .abs()
-                .min(end(a + 1).abs())
-                .total_cmp(&end(*b).abs().min(end(b + 1).abs()))
-        });
+        let half = PIECES / 2;
+        let order: Vec<usize> = (0..half).flat_map(|j| [half - 1 - j, half + j]).collect();
         let piece = |i: usize| I::new(end(i), if i + 1 == PIECES { l } else { end(i + 1) });
         // The centre's aircraft first, in plain intervals: where it has a trim within l, so
         // has the box (the common case below the target, and a tenth of the cost).

@@ -616,6 +616,59 @@ impl BoxPolys {
         Some(on_face.max(da.mig()))
     }
 
+    /// Whether no aircraft of the box has a trim with |delta_a| <= `l` at roll rate `p`: det A
+    /// has no zero there and the trim condition `G = g0 + g1 delta_a + g2 delta_a^2` no zero
+    /// for delta_a in [-l, l]. The primary branch at `p` is such a root, so then its |delta_a|
+    /// exceeds `l` for every aircraft, whichever root it is: a bound that needs no enclosure of
+    /// the root itself, which near a steep stretch of the branch (delta_a changing fast with
+    /// P0, the discriminant small) is far wider than the data's spread. [-l, l] is cut into
+    /// pieces, checked from 0 outwards (a root near 0 fails first); on each, G is enclosed with
+    /// delta_a as an interval, in its mean-value form in the parameters around the centre.
+    ///
+    /// ```
+    /// use model::aircraft::{Aircraft, Param};
+    /// use model::clearance::bound::BoxPolys;
+    /// use model::interval::I;
+    ///
+    /// // Aircraft A with l_p free in [-21.8, -21.7] 1/s, its primary branch at P0 = 1 rad/s.
+    /// let b = BoxPolys::new(&Aircraft::a(), &[Param::Lp], 2f64.to_radians());
+    /// let l_p = b.lift(&[I::new(-21.8, -21.7)]);
+    /// let da = b.certify(&l_p, I::point(1.0)).unwrap();
+    /// // No trim within 0.99 of the branch's smallest |delta_a|; one within 1.01 of its largest.
+    /// assert!(b.no_trim_within(&l_p, 1.0, 0.99 * da.mig()));
+    /// assert!(!b.no_trim_within(&l_p, 1.0, 1.01 * da.mag()));
+    /// ```
+    pub fn no_trim_within(&self, bx: &LiftedBox, p: f64, l: f64) -> bool {
+        const PIECES: usize = 16;
+        // Ends of the pieces; neighbours share an end, so the pieces cover [-l, l] whatever
+        // the rounding.
+        let end = |i: usize| -l + 2.0 * l * (i as f64) / (PIECES as f64);
+        let half = PIECES / 2;
+        let order: Vec<usize> = (0..half).flat_map(|j| [half - 1 - j, half + j]).collect();
+        let piece = |i: usize| I::new(end(i), if i + 1 == PIECES { l } else { end(i + 1) });
+        // The centre's aircraft first, in plain intervals: where it has a trim within l, so
+        // has the box (the common case below the target, and a tenth of the cost).
+        let Ok(m) = at_roll_rate(&bx.at_centre, I::point(p)) else {
+            return false;
+        };
+        let coef_c = |i: usize| m.g.get(i).copied().unwrap_or(I::point(0.0));
+        let at_centre = |d: I| coef_c(0) + coef_c(1) * d + coef_c(2) * d.sqr();
+        if order.iter().any(|i| at_centre(piece(*i)).contains_zero()) {
+            return false;
+        }
+        let Ok(k) = self.coefficients(bx, I::point(p)) else {
+            return false;
+        };
+        order.into_iter().all(|i| {
+            let d = piece(i);
+            let ([g0, g1, g2], [g0c, g1c, g2c]) = (k.g, k.g_c);
+            let (dd, d2) = (Dual::constant(d), Dual::constant(d.sqr()));
+            let over = g0 + g1 * dd + g2 * d2;
+            let centre = g0c + g1c * d + g2c * d.sqr();
+            tight(over, centre, &k.x, &k.c).is_ok_and(|g| !g.v.contains_zero())
+        })
+    }
+
     /// Certifies the slab `p x theta` (see the module documentation); on success returns the
     /// enclosure of the primary branch's aileron on it.
     pub fn certify(&self, bx: &LiftedBox, p: I) -> Result<I, Failure> {

@@ -204,6 +204,8 @@ struct Search<'a> {
     /// The aileron range `analyze` follows the primary branch to, rad (infinite when the trim
     /// at P0 = 0 needs aileron for some aircraft).
     range: f64,
+    /// The aileron limit, rad (infinite without one).
+    limit_rad: f64,
     leaves: Vec<Leaf>,
     boxes: usize,
     slabs: usize,
@@ -242,6 +244,10 @@ impl<'a> Search<'a> {
             first_step,
             min_step: settings.tolerance_p0 / 8.0,
             range,
+            limit_rad: aircraft
+                .limits
+                .aileron_deg
+                .map_or(f64::INFINITY, f64::to_radians),
             leaves,
             boxes: 1,
             slabs: 0,
@@ -409,6 +415,7 @@ impl<'a> Search<'a> {
             min_step: self.min_step,
             first_step: self.first_step,
             range: self.range,
+            limit_rad: self.limit_rad,
         };
         let leaves = &self.leaves;
         let steps: Vec<(Leaf, Option<Leaf>)> =

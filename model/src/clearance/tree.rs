@@ -218,6 +218,8 @@ pub(super) struct Walk<'a> {
     /// The aileron range `analyze` follows the primary branch to, rad (infinite when the trim
     /// at P0 = 0 needs aileron for some aircraft: then |delta_a| is not bounded from 0).
     pub(super) range: f64,
+    /// The aileron limit of the verdict, rad (infinite without one).
+    pub(super) limit_rad: f64,
 }
 
 impl Walk<'_> {
@@ -258,7 +260,7 @@ impl Walk<'_> {
         let top = (leaf.depth + leaf.step).min(self.limit.max(leaf.depth + self.min_step));
         let slab = I::new(leaf.depth, top);
         let why = match polys.certify_with_other(&lifted, slab, self.range) {
-            Ok((_, other)) => {
+            Ok((da, other)) => {
                 leaf.record_other_trim(slab, other);
                 leaf.last = None;
                 leaf.depth = top;
@@ -266,6 +268,7 @@ impl Walk<'_> {
                 if let Some(lower) = polys.aileron_lower(&lifted, top) {
                     leaf.raise_aileron(lower, self.range);
                 }
+                self.raise_past_targets(&mut leaf, &lifted, da);
                 return (leaf, None);
             }
             Err(why) => why,
@@ -285,6 +288,28 @@ impl Walk<'_> {
             }
         }
         self.split(leaf, &lifted, slab, why)
+    }
+
+    /// Raises `leaf`'s aileron bound past the aileron range, else past the aileron limit, when
+    /// no aircraft of the sub-box has a trim within it at the depth
+    /// ([`BoxPolys::no_trim_within`]), with a margin of 2e-9 relative (the range's test is 1e-9
+    /// relative, the verdict's strict). Tried only where `da`, the enclosure of the branch's
+    /// aileron over the slab just certified, reaches past the value: elsewhere the branch is
+    /// within it and the test cannot succeed.
+    fn raise_past_targets(&self, leaf: &mut Leaf, lifted: &LiftedBox, da: I) {
+        if !self.range.is_finite() {
+            return;
+        }
+        for target in [self.range, self.limit_rad] {
+            let l = target * (1.0 + 2e-9);
+            if !l.is_finite() || leaf.da_lo >= l || da.mag() <= l {
+                continue;
+            }
+            if self.polys.no_trim_within(lifted, leaf.depth, l) {
+                leaf.raise_aileron(l, self.range);
+                return;
+            }
+        }
     }
 
     /// Looks, from the depth down to `from` (the top of the lowest doubt), for a slab of at
@@ -390,6 +415,7 @@ mod tests {
             min_step: 1e-4,
             first_step: 0.05,
             range: a.aileron_range(),
+            limit_rad: f64::INFINITY,
         };
         let (mut kept, mut dropped) = (Leaf::new(&polys, &theta0, 0.05), None);
         for slab in 0..12 {

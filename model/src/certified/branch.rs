@@ -197,7 +197,7 @@ fn beyond(det: Det, v: &Values, b: f64, c: f64, e_b: I, s0: f64) -> Option<(f64,
 /// aileron over `[lo, hi]`; `None` when the derivative's enclosure may vanish.
 fn newton_det(det: Det, v: &Values, lo: f64, hi: f64, e_lo: I) -> Option<(f64, f64, I)> {
     let p = Piece::over(v, lo, hi, e_lo)?;
-    let slope = det_with(det, OverPiece(Slope::variable(p.x)), v, p.over.slope())?;
+    let slope = det_with(det, OverPiece::<Slope>::over(p.x), v, p.over.slope())?;
     let image = I::point(p.c) - det_at(det, v, p.c, p.at_c.v).checked_div(slope.d)?;
     let x = image.intersect(p.x)?;
     Some((x.lo, x.hi, p.over.v))
@@ -246,10 +246,10 @@ impl Piece {
     /// does not prove a unique trim (the piece is too wide, or the branch turns in P0).
     fn over(v: &Values, a: f64, b: f64, e_a: I) -> Option<Piece> {
         let (x, c) = (I::new(a, b), a + (b - a) / 2.0);
-        let g_c_slope = trim_condition_in(OverPiece(Slope::variable(I::point(c))), v)?;
+        let g_c_slope = trim_condition_in(OverPiece::<Slope>::over(I::point(c)), v)?;
         let g_c: Vec<I> = g_c_slope.iter().map(|s| s.v).collect();
         let g_b = trim_condition(v, b)?;
-        let g_x = trim_condition_in(OverPiece(Taylor2::variable(x)), v)?;
+        let g_x = trim_condition_in(OverPiece::<Taylor2>::over(x), v)?;
         // The f64 trims at c and b, from the branch's aileron at a, for the candidate.
         let (mut lo, mut hi) = (e_a.lo, e_a.hi);
         for g in [&g_c, &g_b] {
@@ -284,13 +284,13 @@ impl Piece {
     /// The determinant `det` over the piece along the branch (its Taylor form) and at the
     /// piece's centre.
     fn det(&self, det: Det, v: &Values) -> Form {
-        let point = OverPiece(Slope::variable(I::point(self.c)));
+        let point = OverPiece::<Slope>::over(I::point(self.c));
         let entire = Slope {
             v: I::entire(),
             d: I::entire(),
         };
         let at_c = det_with(det, point, v, self.at_c).unwrap_or(entire);
-        let over = det_with(det, OverPiece(Taylor2::variable(self.x)), v, self.over);
+        let over = det_with(det, OverPiece::<Taylor2>::over(self.x), v, self.over);
         let range = over.map_or_else(I::entire, |t| t.taylor(self.x, self.c, at_c.v, at_c.d));
         Form {
             range,

@@ -19,6 +19,36 @@ use super::num::Num;
 use crate::interval::I;
 use std::ops::{Add, Mul, Neg, Sub};
 
+/// Numbers that carry derivatives in the roll rate over a piece of it.
+pub(super) trait InRollRate: Num {
+    /// The polynomial with coefficients `c` (in increasing powers) in the roll rate over the
+    /// piece `x`, with its derivatives: Horner's scheme on the value and the derivatives
+    /// together, each step a product by the roll rate alone (whose derivative is 1).
+    fn polynomial(c: &[I], x: I) -> Self;
+}
+
+impl InRollRate for Slope {
+    fn polynomial(c: &[I], x: I) -> Slope {
+        let zero = I::point(0.0);
+        let (v, d) = c
+            .iter()
+            .rev()
+            .fold((zero, zero), |(v, d), k| (v * x + *k, d * x + v));
+        Slope { v, d }
+    }
+}
+
+impl InRollRate for Taylor2 {
+    fn polynomial(c: &[I], x: I) -> Taylor2 {
+        let zero = I::point(0.0);
+        let two = I::point(2.0);
+        let (v, d, dd) = c.iter().rev().fold((zero, zero, zero), |(v, d, dd), k| {
+            (v * x + *k, d * x + v, dd * x + two * d)
+        });
+        Taylor2 { v, d, dd }
+    }
+}
+
 /// A function of the roll rate over a piece of roll rates: enclosures of its values and of its
 /// derivative over the piece.
 #[derive(Clone, Copy, Debug)]
@@ -31,6 +61,7 @@ pub(super) struct Slope {
 
 impl Slope {
     /// The roll rate itself over the piece `x`.
+    #[cfg(test)]
     pub(super) fn variable(x: I) -> Slope {
         Slope {
             v: x,
@@ -142,6 +173,7 @@ pub(super) struct Taylor2 {
 
 impl Taylor2 {
     /// The roll rate itself over the piece `x`.
+    #[cfg(test)]
     pub(super) fn variable(x: I) -> Taylor2 {
         Taylor2 {
             v: x,
@@ -310,5 +342,33 @@ mod tests {
             "{:?}",
             over.dd
         );
+    }
+
+    #[test]
+    fn a_polynomial_in_the_roll_rate_has_the_derivatives_of_its_products() {
+        // 1 - 2 x + 3 x^3 over [0.5, 0.75]: by Horner's scheme on the value and derivatives
+        // and by the ring's products, both holding the exact values and derivatives at the
+        // ends (f' = -2 + 9 x^2, f'' = 18 x).
+        let c = [I::point(1.0), I::point(-2.0), I::point(0.0), I::point(3.0)];
+        let x = I::new(0.5, 0.75);
+        let t = Taylor2::polynomial(&c, x);
+        let v = Taylor2::variable(x);
+        let k = Taylor2::constant;
+        let r = k(c[0]) + k(c[1]) * v + k(c[3]) * v * v * v;
+        for y in [0.5, 0.75] {
+            let (f, d, dd) = (
+                1.0 - 2.0 * y + 3.0 * y * y * y,
+                -2.0 + 9.0 * y * y,
+                18.0 * y,
+            );
+            for (e, a, b) in [(f, t.v, r.v), (d, t.d, r.d), (dd, t.dd, r.dd)] {
+                assert!(
+                    a.lo <= e && e <= a.hi && b.lo <= e && e <= b.hi,
+                    "{e} {a:?} {b:?}"
+                );
+            }
+        }
+        let s = Slope::polynomial(&c, x);
+        assert!(s.v.lo == t.v.lo && s.d.hi == t.d.hi);
     }
 }

@@ -7,10 +7,13 @@
 //! destroys. The envelope and the clearance need only the first departure on the primary branch,
 //! so here the branch itself is enclosed piece by piece in P0 (interval Newton on the trim
 //! condition in delta_a: a unique trim of each roll rate of the piece lies in the enclosure),
-//! and `det(A)^6 Delta4` is enclosed over each piece along the branch by its value at the
-//! piece's centre and its derivative over the piece ([`Slope`]): plain interval evaluation over
-//! a piece overestimates the range by orders of magnitude, the mean-value form only by the
-//! derivative's overestimate times the piece's width. The jump determinant `det J5 det(A)^2` on
+//! and `det(A)^6 Delta4` is enclosed over each piece along the branch by its value and
+//! derivative at the piece's centre and its second derivative over the piece ([`Taylor2`]):
+//! plain interval evaluation over a piece overestimates the range by orders of magnitude, the
+//! mean-value form ([`Slope`]) by the derivative's overestimate times the piece's width (itself
+//! of the order of the width: the form's error grows as the width squared), the Taylor form by
+//! the second derivative's times the width squared (the error grows as its cube), so its
+//! pieces are several times wider for the same decision. The jump determinant `det J5 det(A)^2` on
 //! the trim is walked the same way ([`Det::Jump`]): its first sign change on the branch is the
 //! critical jump, without isolating the roots of the jump resultant on every other branch.
 
@@ -22,7 +25,7 @@ use super::isolate::{Bracket, Uncertified};
 use super::mode::{AtP0, Da, Mode, OverPiece};
 use super::num::Num;
 use super::rolls::Unconstrained;
-use super::slope::Slope;
+use super::slope::{Slope, Taylor2};
 use super::values::Values;
 use crate::interval::I;
 
@@ -83,15 +86,16 @@ pub fn first_hopf_on_branch(
 /// [`BranchEnd::Bound`] the walk may find a root beyond the bound, which the caller places
 /// (so may it before a [`BranchEnd::Before`]'s bound, not beyond its roll rate).
 ///
-/// Each piece `[a, b]` of roll rates is decided by mean-value forms in P0 (numbers carrying
-/// their derivative in P0, enclosed over the piece): the branch's aileron over it is enclosed
-/// by parametric interval Newton on the trim condition in delta_a (the Newton image strictly
-/// inside the candidate interval proves exactly one trim there for every roll rate of the
-/// piece, so the enclosures of consecutive pieces, each containing the previous end's, follow
-/// one continuous branch), its slope in P0 by the implicit function theorem over the piece,
-/// and the determinant over the piece by its value at the piece's centre plus its enclosed
-/// derivative along the branch times the piece's offsets from the centre: either that
-/// excludes zero (no root in the piece) or the next piece is smaller. A root is bracketed by a
+/// Each piece `[a, b]` of roll rates is decided by Taylor forms in P0 (numbers carrying their
+/// first and second derivatives in P0, enclosed over the piece): the branch's aileron over it
+/// is enclosed by parametric interval Newton on the trim condition in delta_a (the Newton image
+/// strictly inside the candidate interval proves exactly one trim there for every roll rate of
+/// the piece, so the enclosures of consecutive pieces, each containing the previous end's,
+/// follow one continuous branch), its first and second derivatives in P0 by the implicit
+/// function theorem over the piece, and the determinant over the piece by its value and
+/// derivative along the branch at the piece's centre plus its enclosed second derivative over
+/// the piece times half the squared offsets from the centre: either that excludes zero (no
+/// root in the piece) or the next piece is smaller. A root is bracketed by a
 /// sign-definite cover of `[0, lo]` and a point `hi` of the opposite sign, and the bracket is
 /// narrowed by interval Newton on the determinant along the branch (every root in the bracket
 /// stays in its Newton image). Where the branch turns in P0 (the trim condition's slope in
@@ -140,11 +144,10 @@ pub fn first_root_on_branch(
             h /= 2.0;
             continue;
         };
-        let (form, at_c) = piece.det(det, v);
-        // The mean-value form's half-width grows about as the square of the piece's (the
-        // derivative's overestimate grows with the piece): the piece that would just be decided.
-        let fit = 0.8 * (b - lo) * (at_c.mig() / (form.width() / 2.0)).sqrt();
-        let fit = if fit.is_finite() { fit } else { h };
+        let form = piece.det(det, v);
+        let fit = form.fit();
+        let fit = if fit.is_finite() && fit > 0.0 { fit } else { h };
+        let form = form.range;
         if form.sign() == Some(s0) {
             (lo, e_lo) = (b, piece.at_end);
             h = fit.clamp(h / 2.0, 2.0 * h).min(1.0);
@@ -197,8 +200,8 @@ fn beyond(det: Det, v: &Values, b: f64, c: f64, e_b: I, s0: f64) -> Option<(f64,
 /// aileron over `[lo, hi]`; `None` when the derivative's enclosure may vanish.
 fn newton_det(det: Det, v: &Values, lo: f64, hi: f64, e_lo: I) -> Option<(f64, f64, I)> {
     let p = Piece::over(v, lo, hi, e_lo)?;
-    let slope = det_with(det, OverPiece(Slope::variable(p.x)), v, p.over)?;
-    let image = I::point(p.c) - det_at(det, v, p.c, p.at_c).checked_div(slope.d)?;
+    let slope = det_with(det, OverPiece::<Slope>::over(p.x), v, p.over.slope())?;
+    let image = I::point(p.c) - det_at(det, v, p.c, p.at_c.v).checked_div(slope.d)?;
     let x = image.intersect(p.x)?;
     Some((x.lo, x.hi, p.over.v))
 }
@@ -212,14 +215,33 @@ fn bracket(lo: f64, hi: f64) -> Bracket {
     }
 }
 
-/// The branch over one piece `x` of roll rates: its aileron over the piece with its slope in
-/// P0, and the aileron's enclosures at the piece's centre `c` and at its end.
+/// The branch over one piece `x` of roll rates: its aileron over the piece with its first and
+/// second derivatives in P0, the aileron's enclosure at the piece's centre `c` with its slope
+/// there, and its enclosure at the piece's end.
 struct Piece {
     x: I,
     c: f64,
-    over: Slope,
-    at_c: I,
+    over: Taylor2,
+    at_c: Slope,
     at_end: I,
+}
+
+/// The determinant over a piece along the branch: its Taylor form over the piece of width
+/// `width`, and its value and derivative at the piece's centre.
+struct Form {
+    range: I,
+    width: f64,
+    at_c: Slope,
+}
+
+impl Form {
+    /// The width of the piece the Taylor form would decide here with a margin (its half-width
+    /// at half the value's magnitude), taking the half-width to grow as the cube of the
+    /// piece's width (the second derivative's overestimate grows with the piece).
+    fn fit(&self) -> f64 {
+        let half = (self.range.hi - self.at_c.v.mid()).max(self.at_c.v.mid() - self.range.lo);
+        self.width * (0.5 * self.at_c.v.mig() / half).cbrt()
+    }
 }
 
 impl Piece {
@@ -227,8 +249,10 @@ impl Piece {
     /// does not prove a unique trim (the piece is too wide, or the branch turns in P0).
     fn over(v: &Values, a: f64, b: f64, e_a: I) -> Option<Piece> {
         let (x, c) = (I::new(a, b), a + (b - a) / 2.0);
-        let (g_c, g_b) = (trim_condition(v, c)?, trim_condition(v, b)?);
-        let g_x = trim_condition_in(OverPiece(Slope::variable(x)), v)?;
+        let g_c_slope = trim_condition_in(OverPiece::<Slope>::over(I::point(c)), v)?;
+        let g_c: Vec<I> = g_c_slope.iter().map(|s| s.v).collect();
+        let g_b = trim_condition(v, b)?;
+        let g_x = trim_condition_in(OverPiece::<Taylor2>::over(x), v)?;
         // The f64 trims at c and b, from the branch's aileron at a, for the candidate.
         let (mut lo, mut hi) = (e_a.lo, e_a.hi);
         for g in [&g_c, &g_b] {
@@ -240,32 +264,78 @@ impl Piece {
         // Parametric interval Newton: the trim condition at the candidate's midpoint over the
         // piece by its mean-value form in P0.
         let m = I::point(candidate.mid());
-        let value = horner(&g_x, Slope::constant(m)).mean_value(x, c, horner(&g_c, m));
+        let at_m = horner(&g_c_slope, Slope::constant(m));
+        let value = horner(&g_x, Taylor2::constant(m)).taylor(x, c, at_m.v, at_m.d);
         let values: Vec<I> = g_x.iter().map(|s| s.v).collect();
         let image = m - value.checked_div(in_aileron_slope(&values, candidate))?;
         if !(image.lo > candidate.lo && image.hi < candidate.hi) {
             return None;
         }
-        // The branch's slope over the piece: -g_P0 / g_delta_a on the piece and the image.
-        let g_p0 = horner(&g_x, Slope::constant(image)).d;
-        let slope = (-g_p0).checked_div(in_aileron_slope(&values, image))?;
+        let at_c = contract(&g_c, image);
         Some(Piece {
             x,
             c,
-            over: Slope { v: image, d: slope },
-            at_c: contract(&g_c, image),
+            over: implicit(&g_x, image)?,
+            at_c: Slope {
+                v: at_c,
+                d: implicit_slope(&g_c_slope, at_c)?,
+            },
             at_end: contract(&g_b, image),
         })
     }
 
-    /// The determinant `det` over the piece along the branch (its mean-value form) and at the
+    /// The determinant `det` over the piece along the branch (its Taylor form) and at the
     /// piece's centre.
-    fn det(&self, det: Det, v: &Values) -> (I, I) {
-        let at_c = det_at(det, v, self.c, self.at_c);
-        let form = det_with(det, OverPiece(Slope::variable(self.x)), v, self.over)
-            .map_or_else(I::entire, |s| s.mean_value(self.x, self.c, at_c));
-        (form, at_c)
+    fn det(&self, det: Det, v: &Values) -> Form {
+        let point = OverPiece::<Slope>::over(I::point(self.c));
+        let entire = Slope {
+            v: I::entire(),
+            d: I::entire(),
+        };
+        let at_c = det_with(det, point, v, self.at_c).unwrap_or(entire);
+        let over = det_with(det, OverPiece::<Taylor2>::over(self.x), v, self.over);
+        let range = over.map_or_else(I::entire, |t| t.taylor(self.x, self.c, at_c.v, at_c.d));
+        Form {
+            range,
+            width: self.x.width(),
+            at_c,
+        }
     }
+}
+
+/// The branch's aileron over a piece as a function of P0 to second order, from the trim
+/// condition `g` over the piece (coefficients in delta_a) and the aileron's enclosure `da`
+/// over it (holding one trim of each roll rate): `g(P0, a(P0)) = 0` gives
+/// `a' = -g_P / g_a` and `a'' = -(g_PP + 2 g_Pa a' + g_aa a'^2) / g_a`, every partial
+/// derivative enclosed over the piece and `da`.
+fn implicit(g: &[Taylor2], da: I) -> Option<Taylor2> {
+    let values: Vec<I> = g.iter().map(|s| s.v).collect();
+    let g_a = in_aileron_slope(&values, da);
+    let at = horner(g, Taylor2::constant(da));
+    let d = (-at.d).checked_div(g_a)?;
+    let in_a: Vec<Taylor2> = derivative(g);
+    let g_pa = horner(&in_a, Taylor2::constant(da)).d;
+    let g_aa = in_aileron_slope(&derivative(&values), da);
+    let two = I::point(2.0);
+    let dd = (-(at.dd + two * g_pa * d + g_aa * d.sqr())).checked_div(g_a)?;
+    Some(Taylor2 { v: da, d, dd })
+}
+
+/// The branch's slope in P0 at one roll rate, `-g_P / g_a`, from the trim condition `g` there
+/// with its derivative in P0 and the aileron's enclosure `da`.
+fn implicit_slope(g: &[Slope], da: I) -> Option<I> {
+    let values: Vec<I> = g.iter().map(|s| s.v).collect();
+    let at = horner(g, Slope::constant(da));
+    (-at.d).checked_div(in_aileron_slope(&values, da))
+}
+
+/// The derivative in delta_a of the polynomial `c`, as coefficients.
+fn derivative<T: Num>(c: &[T]) -> Vec<T> {
+    c.iter()
+        .enumerate()
+        .skip(1)
+        .map(|(k, ck)| T::constant(I::point(k as f64)) * *ck)
+        .collect()
 }
 
 /// The trim condition's coefficients in delta_a in the ring `m`.

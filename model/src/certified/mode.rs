@@ -8,7 +8,7 @@ use super::dense::{Dense, Dense2};
 use super::elimination::{Coeff, Scalar};
 use super::isolate::Uncertified;
 use super::num::Num;
-use super::slope::Slope;
+use super::slope::InRollRate;
 use crate::derivation::{Clearing, TrimProducts};
 use crate::interval::I;
 use std::borrow::Cow;
@@ -195,42 +195,51 @@ impl<T: Num> Mode for AtP0<T> {
     }
 }
 
-/// The criterion over a piece of roll rates `.0` (the roll rate as a [`Slope`] variable) with
-/// its derivative in the roll rate: values are polynomials in delta_a with [`Slope`]
-/// coefficients, lifted from the same interval results as [`AtP0`].
-pub(super) struct OverPiece(pub(super) Slope);
+/// The criterion over a piece of roll rates `x` with its derivatives in the roll rate (numbers
+/// `T`, a [`super::slope::Slope`] or [`super::slope::Taylor2`]): values are polynomials in
+/// delta_a with such coefficients, lifted from the same interval results as [`AtP0`].
+pub(super) struct OverPiece<T> {
+    x: I,
+    of: std::marker::PhantomData<T>,
+}
 
-impl Clearing for OverPiece {
-    type Value = Da<Slope>;
-    fn lift(&mut self, p: &crate::algebra::Poly) -> Da<Slope> {
+impl<T> OverPiece<T> {
+    /// Over the roll rates `x`.
+    pub(super) fn over(x: I) -> OverPiece<T> {
+        OverPiece {
+            x,
+            of: std::marker::PhantomData,
+        }
+    }
+}
+
+impl<T: InRollRate> Clearing for OverPiece<T> {
+    type Value = Da<T>;
+    fn lift(&mut self, p: &crate::algebra::Poly) -> Da<T> {
         Da::lift(p)
     }
-    fn add(&mut self, a: &Da<Slope>, b: &Da<Slope>) -> Da<Slope> {
+    fn add(&mut self, a: &Da<T>, b: &Da<T>) -> Da<T> {
         a.add(b)
     }
-    fn mul(&mut self, a: &Da<Slope>, b: &Da<Slope>) -> Da<Slope> {
+    fn mul(&mut self, a: &Da<T>, b: &Da<T>) -> Da<T> {
         a.mul(b)
     }
 }
 
-impl Mode for OverPiece {
+impl<T: InRollRate> Mode for OverPiece<T> {
     type Num = I;
-    type Coef = Scalar<Slope>;
-    fn lifted_ref<'a>(&self, p: &'a Dense2<I>) -> Cow<'a, Da<Slope>> {
+    type Coef = Scalar<T>;
+    fn lifted_ref<'a>(&self, p: &'a Dense2<I>) -> Cow<'a, Da<T>> {
         if p.0.len() > 4 {
             return Cow::Owned(Da::anything());
         }
-        let zero = Slope::constant(I::point(0.0));
-        let mut out = [zero; 4];
+        let mut out = [T::constant(I::point(0.0)); 4];
         for (o, c) in out.iter_mut().zip(&p.0) {
-            *o =
-                c.0.iter()
-                    .rev()
-                    .fold(zero, |acc, k| acc * self.0 + Slope::constant(*k));
+            *o = T::polynomial(&c.0, self.x);
         }
         Cow::Owned(Da::new(out))
     }
-    fn in_aileron(v: &Da<Slope>) -> Vec<Scalar<Slope>> {
+    fn in_aileron(v: &Da<T>) -> Vec<Scalar<T>> {
         v.c[..v.len].iter().map(|c| Scalar(*c)).collect()
     }
 }

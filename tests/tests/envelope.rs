@@ -144,6 +144,49 @@ fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
     println!("envelope: {checked} of 5 random grid points trimmed and equal to import + analysis");
 }
 
+/// The F-16 at 8,600 m, Mach 0.87, 1 g: the f64 walk of its primary branch turns in P0 and
+/// meets a divergence at a negative roll rate, and its critical jump lies beyond the turn. The
+/// envelope's route must give the exact path's critical jump and first departure there, as
+/// everywhere.
+#[test]
+fn a_branch_that_turns_before_its_jump_gets_the_exact_paths_answer() {
+    if !installed() {
+        return;
+    }
+    let request = Request {
+        model: "f16".to_string(),
+        root: None,
+        altitude_m: 8600.0,
+        speed: Speed::Mach(0.87),
+        alpha: Alpha::Trim(1.0),
+        settings: Vec::new(),
+    };
+    let text = import(&request).unwrap();
+    let ac = aircraft::parse(&text, "jsbsim:f16").unwrap();
+    let (a, _) = analyze_first_departure(&ac, 0.0).unwrap();
+    let exact = model::analysis::analyze(&ac, 0.0).unwrap();
+    let jump = |a: &model::analysis::Analysis| a.critical.as_ref().map(|c| (c.p0, c.delta_a_deg));
+    let ((p0, da), (exact_p0, exact_da)) = (jump(&a).unwrap(), jump(&exact).unwrap());
+    assert!(
+        support::close_roots(p0, exact_p0, MAX_WIDTH),
+        "{p0} vs {exact_p0}"
+    );
+    assert!(
+        (da - exact_da).abs() <= 1e-6 * exact_da.abs(),
+        "{da} vs {exact_da}"
+    );
+    assert_eq!(a.critical_note, exact.critical_note);
+    let departure =
+        |a: &model::analysis::Analysis| a.first_departure.as_ref().map(|d| (d.kind, d.p0));
+    match (departure(&a), departure(&exact)) {
+        (Some((kind, x)), Some((exact_kind, y))) => {
+            assert_eq!(kind, exact_kind);
+            assert!(support::close_roots(x, y, MAX_WIDTH), "{x} vs {y}");
+        }
+        (x, y) => assert_eq!(x, y),
+    }
+}
+
 /// Bad ranges exit 2 (an input error) naming the option, before the model is even read (the
 /// source names a model that does not exist).
 #[test]

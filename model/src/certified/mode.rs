@@ -181,14 +181,7 @@ impl<T: Num> Mode for AtP0<T> {
     type Num = T;
     type Coef = Scalar<T>;
     fn lifted_ref<'a>(&self, p: &'a Dense2<T>) -> Cow<'a, Da<T>> {
-        if p.0.len() > 4 {
-            return Cow::Owned(Da::anything());
-        }
-        let mut out = [T::constant(I::point(0.0)); 4];
-        for (o, c) in out.iter_mut().zip(&p.0) {
-            *o = c.eval(self.0);
-        }
-        Cow::Owned(Da::new(out))
+        Cow::Owned(in_aileron_each(&p.0, |c| c.eval(self.0)))
     }
     fn in_aileron(v: &Da<T>) -> Vec<Scalar<T>> {
         v.c[..v.len].iter().map(|c| Scalar(*c)).collect()
@@ -230,16 +223,23 @@ impl<T: InRollRate> Mode for OverPiece<T> {
     type Num = I;
     type Coef = Scalar<T>;
     fn lifted_ref<'a>(&self, p: &'a Dense2<I>) -> Cow<'a, Da<T>> {
-        if p.0.len() > 4 {
-            return Cow::Owned(Da::anything());
-        }
-        let mut out = [T::constant(I::point(0.0)); 4];
-        for (o, c) in out.iter_mut().zip(&p.0) {
-            *o = T::polynomial(&c.0, self.x);
-        }
-        Cow::Owned(Da::new(out))
+        Cow::Owned(in_aileron_each(&p.0, |c| T::polynomial(&c.0, self.x)))
     }
     fn in_aileron(v: &Da<T>) -> Vec<Scalar<T>> {
         v.c[..v.len].iter().map(|c| Scalar(*c)).collect()
     }
+}
+
+/// The polynomial in delta_a whose coefficients are `f` of each of `coefs` (lowest degree
+/// first), or [`Da::anything`] beyond the degree a [`Da`] holds: how the pointwise and the
+/// piecewise modes lift a result in P0 and delta_a.
+fn in_aileron_each<C, T: Num>(coefs: &[C], f: impl Fn(&C) -> T) -> Da<T> {
+    if coefs.len() > 4 {
+        return Da::anything();
+    }
+    let mut out = [T::constant(I::point(0.0)); 4];
+    for (o, c) in out.iter_mut().zip(coefs) {
+        *o = f(c);
+    }
+    Da::new(out)
 }

@@ -144,10 +144,8 @@ fn envelope_points_equal_import_then_analyze_at_random_grid_points() {
     println!("envelope: {checked} of 5 random grid points trimmed and equal to import + analysis");
 }
 
-/// The F-16 at 8,600 m, Mach 0.87, 1 g: the f64 walk of its primary branch turns in P0 and
-/// meets a divergence at a negative roll rate, and its critical jump lies beyond the turn. The
-/// envelope's route must give the exact path's critical jump and first departure there, as
-/// everywhere.
+/// The F-16 at 8,600 m, Mach 0.87, 1 g: its primary branch turns in P0 before its critical
+/// jump; the envelope's route gives the exact path's jump and first departure there too.
 #[test]
 fn a_branch_that_turns_before_its_jump_gets_the_exact_paths_answer() {
     if !installed() {

@@ -52,7 +52,8 @@ pub(super) fn on_branch(
         Some(&|x| value_at(&v, Criterion::DetA, x)),
         MAX_WIDTH,
     )?;
-    let end = end(aircraft, &t, &divergence)?;
+    let mut found = found(&t, &divergence);
+    let end = end(aircraft, &found, &divergence)?;
     let jump = first_root_on_branch(&v, Det::Jump, end, MAX_WIDTH)?;
     if let Some((b, _)) = &jump {
         apart(&[*b], &divergence)?;
@@ -60,7 +61,7 @@ pub(super) fn on_branch(
             return Err(Uncertified::Sign);
         }
     }
-    let found = found(&t, &divergence, jump.as_ref().map(|(b, _)| b.value));
+    found.jump_roots = jump.iter().map(|(b, _)| b.value).collect();
     let (mut analysis, critical) = found.assemble(aircraft, delta_e_rad, &|_| (f64::NAN, f64::NAN));
     // The f64 walk must reach the certified jump, at its aileron, and find none without it.
     let agrees = match (&jump, critical) {
@@ -99,16 +100,10 @@ pub(super) fn on_branch(
 /// jump determinant, which holds the factor `det(A)^2`, need not be decided up to it). A
 /// divergence the f64 walk meets after the branch turned in P0 is not covered (the walk in
 /// increasing P0 would not reach the branch's part beyond the turn).
-fn end(
-    aircraft: &Aircraft,
-    t: &TrimPolys,
-    divergence: &[Bracket],
-) -> Result<BranchEnd, Uncertified> {
+fn end(aircraft: &Aircraft, f: &Found, divergence: &[Bracket]) -> Result<BranchEnd, Uncertified> {
     let bound = aircraft.aileron_range();
     let first = divergence.first().map_or(f64::INFINITY, |b| b.lo);
-    let f = found(t, divergence, None);
-    let values: Vec<f64> = divergence.iter().map(|b| b.value).collect();
-    let p0 = match follow_to(&f.g, &f.trims[0], &values, &[], bound) {
+    let p0 = match follow_to(&f.g, &f.trims[0], &f.divergence, &[], bound) {
         (Outcome::Divergence(_), p) if p < first => p,
         (Outcome::Divergence(_), _) => return Err(Uncertified::Sign),
         _ => first,
@@ -116,14 +111,14 @@ fn end(
     Ok(BranchEnd::Before { p0, bound })
 }
 
-/// What the walk found, as the routes' [`Found`]: the certified divergence roll rates, the
-/// critical jump's roll rate as the only jump root, and the f64 polynomials of `t`.
-fn found(t: &TrimPolys, divergence: &[Bracket], critical: Option<f64>) -> Found {
+/// What the walk reads, as the routes' [`Found`]: the certified divergence roll rates and the
+/// f64 polynomials of `t`, without jump roots (the walk sets the critical jump's, the only one).
+fn found(t: &TrimPolys, divergence: &[Bracket]) -> Found {
     let f64s = |p: &IPoly2| InAileron(p.0.iter().map(|c| c.mid()).collect());
     let univariate = |p: &IPoly| f64s(&IPoly2::new(vec![p.clone()]));
     Found {
         divergence: divergence.iter().map(|b| b.value).collect(),
-        jump_roots: critical.into_iter().collect(),
+        jump_roots: Vec::new(),
         pole_roots: Vec::new(),
         zs_roots: Vec::new(),
         g: f64s(&t.trim_condition),

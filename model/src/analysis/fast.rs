@@ -443,6 +443,9 @@ impl Branch<'_> {
             super::unstable_trim::Start::Unstable(_) => None,
             _ => first_hopf_on_branch(self.v, end, MAX_WIDTH)?,
         };
+        // A first root whose aileron is proven beyond the range is where the branch has left
+        // the range before: no departure within it (as the f64 walk, which ends there).
+        let root = root.filter(|(_, da)| da.lo <= bound && da.hi >= -bound);
         let mut width = 0.0_f64;
         if let Some(i) = critical {
             let fold = analysis.jump[i].clone();

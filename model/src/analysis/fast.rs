@@ -136,8 +136,8 @@ pub fn analyze_routed_with(
 /// jump, its note and margin, and the first departure. Where a certificate of that route
 /// fails, the certified jump part (every root of the enclosed resultants isolated) and the
 /// same walk for the first departure are tried; where that fails, the exact path's jump part
-/// answers and the walk starts from its critical jump; where the branch turns in P0 or a piece
-/// of it cannot be decided, the whole exact path answers.
+/// answers and the walk starts from its critical jump; where a piece of the branch cannot be
+/// decided (in P0, or in delta_a past a turn in P0), the whole exact path answers.
 pub fn analyze_first_departure(
     aircraft: &Aircraft,
     delta_e_rad: f64,

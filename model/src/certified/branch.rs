@@ -100,8 +100,9 @@ pub fn first_hopf_on_branch(
 /// sign-definite cover of `[0, lo]` and a point `hi` of the opposite sign, and the bracket is
 /// narrowed by interval Newton on the determinant along the branch (every root in the bracket
 /// stays in its Newton image). Where the branch turns in P0 (the trim condition's slope in
-/// delta_a vanishes) or a piece cannot be decided within `PIECE_BUDGET` pieces, the answer is
-/// an [`Uncertified`] reason.
+/// delta_a vanishes: pieces in P0 shrink to nothing) the walk goes on in delta_a
+/// (`certified/turn.rs`); where a piece cannot be decided within `PIECE_BUDGET` pieces, the answer
+/// is an [`Uncertified`] reason.
 pub fn first_root_on_branch(
     v: &Values,
     det: Det,

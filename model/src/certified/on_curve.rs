@@ -67,7 +67,7 @@ mod tests {
         ]);
         let da = OnCurve(p).lifted(&poly);
         assert_eq!(da.len, 2);
-        for x in [0.9, 1.0, 1.1] {
+        for x in [0.9_f64, 1.0, 1.1] {
             let want = [
                 [1.0 + 2.0 * x.powi(4), 8.0 * x.powi(3), 24.0 * x * x],
                 [3.0 * x * x, 6.0 * x, 6.0],

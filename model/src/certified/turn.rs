@@ -182,8 +182,8 @@ impl Piece {
         let pad = 2.0 * (hi - lo) + 1e-12 * (1.0 + lo.abs().max(hi.abs()));
         let candidate = I::new(lo - pad, hi + pad);
         // Parametric interval Newton in P0: the trim condition at the candidate's midpoint
-        // over the piece (exact in delta_a: a polynomial shifted to the centre), over its slope
-        // in P0 over the candidate and the piece.
+        // over the piece (a polynomial in delta_a shifted to the centre: tight over the piece),
+        // over its slope in P0 over the candidate and the piece.
         let m = candidate.mid();
         let at_m = trim_condition_in(AtP0(I::point(m)), v)?;
         let g_x = trim_condition_in(OverPiece::<Slope>::over(candidate), v)?;
@@ -326,4 +326,49 @@ fn ended(end: BranchEnd, s: f64, p: I) -> Option<Answer> {
 /// `p`.
 fn det_at(det: Det, v: &Values, s: f64, p: I) -> I {
     det_with(det, OnCurve(p), v, I::point(s)).unwrap_or_else(I::entire)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::certified::num::Num;
+
+    /// On the circle `g = P^2 + a^2 - 1` (coefficients in `a`: `P^2 - 1`, 0, 1, with their
+    /// derivatives in P) the branch `P(a) = sqrt(1 - a^2)` has `P' = -a / P` and
+    /// `P'' = -1 / P^3`, by hand; over `a` in [0.55, 0.65] and P in [0.75, 0.85] (which holds
+    /// every `P(a)` there) both lie in the enclosures of the implicit function theorem, and
+    /// `P'` at `a = 0.6` (P = 0.8) in the pointwise one.
+    #[test]
+    fn the_roll_rate_along_the_aileron_has_the_implicit_derivatives() {
+        let (s, p) = (I::new(0.55, 0.65), I::new(0.75, 0.85));
+        let k = |v: I, d: I, dd: f64| Taylor2 {
+            v,
+            d,
+            dd: I::point(dd),
+        };
+        let zero = I::point(0.0);
+        let g = [
+            k(p.sqr() - I::point(1.0), I::point(2.0) * p, 2.0),
+            k(zero, zero, 0.0),
+            k(I::point(1.0), zero, 0.0),
+        ];
+        let t = implicit(&g, s, p).unwrap();
+        for a in [0.55_f64, 0.6, 0.65] {
+            let r = (1.0 - a * a).sqrt();
+            let (d, dd) = (-a / r, -1.0 / r.powi(3));
+            assert!(t.d.lo <= d && d <= t.d.hi, "{:?} vs {d}", t.d);
+            assert!(t.dd.lo <= dd && dd <= t.dd.hi, "{:?} vs {dd}", t.dd);
+        }
+        let at = |v: I| Slope {
+            v,
+            d: I::point(2.0) * I::point(0.8),
+        };
+        let g_c = [
+            at(I::point(0.8).sqr() - I::point(1.0)),
+            Slope::constant(zero),
+            Slope::constant(I::point(1.0)),
+        ];
+        let d = implicit_slope(&g_c, I::point(0.6)).unwrap();
+        assert!(d.lo <= -0.75 && -0.75 <= d.hi && d.width() < 1e-12, "{d:?}");
+    }
 }

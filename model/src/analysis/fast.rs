@@ -136,8 +136,8 @@ pub fn analyze_routed_with(
 /// jump, its note and margin, and the first departure. Where a certificate of that route
 /// fails, the certified jump part (every root of the enclosed resultants isolated) and the
 /// same walk for the first departure are tried; where that fails, the exact path's jump part
-/// answers and the walk starts from its critical jump; where the branch turns in P0 or a piece
-/// of it cannot be decided, the whole exact path answers.
+/// answers and the walk starts from its critical jump; where a piece of the branch cannot be
+/// decided (in P0, or in delta_a past a turn in P0), the whole exact path answers.
 pub fn analyze_first_departure(
     aircraft: &Aircraft,
     delta_e_rad: f64,
@@ -443,6 +443,9 @@ impl Branch<'_> {
             super::unstable_trim::Start::Unstable(_) => None,
             _ => first_hopf_on_branch(self.v, end, MAX_WIDTH)?,
         };
+        // A first root whose aileron is proven beyond the range is where the branch has left
+        // the range before: no departure within it (as the f64 walk, which ends there).
+        let root = root.filter(|(_, da)| da.lo <= bound && da.hi >= -bound);
         let mut width = 0.0_f64;
         if let Some(i) = critical {
             let fold = analysis.jump[i].clone();

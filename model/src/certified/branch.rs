@@ -26,6 +26,7 @@ use super::mode::{AtP0, Da, Mode, OverPiece};
 use super::num::Num;
 use super::rolls::Unconstrained;
 use super::slope::{Slope, Taylor2};
+use super::turn::round_turn;
 use super::values::Values;
 use crate::interval::I;
 
@@ -99,8 +100,9 @@ pub fn first_hopf_on_branch(
 /// sign-definite cover of `[0, lo]` and a point `hi` of the opposite sign, and the bracket is
 /// narrowed by interval Newton on the determinant along the branch (every root in the bracket
 /// stays in its Newton image). Where the branch turns in P0 (the trim condition's slope in
-/// delta_a vanishes) or a piece cannot be decided within `PIECE_BUDGET` pieces, the answer is
-/// an [`Uncertified`] reason.
+/// delta_a vanishes: pieces in P0 shrink to nothing) the walk goes on in delta_a
+/// (`certified/turn.rs`); where a piece cannot be decided within `PIECE_BUDGET` pieces, the answer
+/// is an [`Uncertified`] reason.
 pub fn first_root_on_branch(
     v: &Values,
     det: Det,
@@ -138,7 +140,11 @@ pub fn first_root_on_branch(
             None => (lo + h).min(p_end),
         };
         if h <= 4.0 * f64::EPSILON * lo.max(1e-3) {
-            return Err(Uncertified::Budget);
+            // Pieces in P0 cannot pass here (the branch turns in P0): on in delta_a.
+            return match hi {
+                None => round_turn(v, det, end, width, lo, e_lo, s0),
+                Some(_) => Err(Uncertified::Budget),
+            };
         }
         let Some(piece) = Piece::over(v, lo, b, e_lo) else {
             h /= 2.0;
@@ -157,8 +163,8 @@ pub fn first_root_on_branch(
             Some(s) if s != s0 => hi = Some((b, piece.at_end)),
             _ => {
                 // The root may lie just beyond b: a point of the opposite sign there bounds it.
-                if hi.is_none() {
-                    hi = beyond(det, v, b, b + h, piece.at_end, s0);
+                if hi.is_none() && b < p_end {
+                    hi = beyond(det, v, b, (b + h).min(p_end), piece.at_end, s0);
                 }
                 h = fit.clamp(h / 16.0, h / 2.0);
             }
@@ -207,7 +213,7 @@ fn newton_det(det: Det, v: &Values, lo: f64, hi: f64, e_lo: I) -> Option<(f64, f
 }
 
 /// The bracket `[lo, hi]` with its midpoint as the value.
-fn bracket(lo: f64, hi: f64) -> Bracket {
+pub(super) fn bracket(lo: f64, hi: f64) -> Bracket {
     Bracket {
         lo,
         hi,
@@ -228,17 +234,17 @@ struct Piece {
 
 /// The determinant over a piece along the branch: its Taylor form over the piece of width
 /// `width`, and its value and derivative at the piece's centre.
-struct Form {
-    range: I,
-    width: f64,
-    at_c: Slope,
+pub(super) struct Form {
+    pub(super) range: I,
+    pub(super) width: f64,
+    pub(super) at_c: Slope,
 }
 
 impl Form {
     /// The width of the piece the Taylor form would decide here with a margin (its half-width
     /// at half the value's magnitude), taking the half-width to grow as the cube of the
     /// piece's width (the second derivative's overestimate grows with the piece).
-    fn fit(&self) -> f64 {
+    pub(super) fn fit(&self) -> f64 {
         let half = (self.range.hi - self.at_c.v.mid()).max(self.at_c.v.mid() - self.range.lo);
         self.width * (0.5 * self.at_c.v.mig() / half).cbrt()
     }
@@ -330,7 +336,7 @@ fn implicit_slope(g: &[Slope], da: I) -> Option<I> {
 }
 
 /// The derivative in delta_a of the polynomial `c`, as coefficients.
-fn derivative<T: Num>(c: &[T]) -> Vec<T> {
+pub(super) fn derivative<T: Num>(c: &[T]) -> Vec<T> {
     c.iter()
         .enumerate()
         .skip(1)
@@ -339,7 +345,7 @@ fn derivative<T: Num>(c: &[T]) -> Vec<T> {
 }
 
 /// The trim condition's coefficients in delta_a in the ring `m`.
-fn trim_condition_in<M, T>(mut m: M, v: &Values) -> Option<Vec<T>>
+pub(super) fn trim_condition_in<M, T>(mut m: M, v: &Values) -> Option<Vec<T>>
 where
     M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
     T: Num,
@@ -438,7 +444,7 @@ where
 }
 
 /// An enclosure of the determinant `det` in the ring `m` with the aileron `da`.
-fn det_with<M, T>(det: Det, m: M, v: &Values, da: T) -> Option<T>
+pub(super) fn det_with<M, T>(det: Det, m: M, v: &Values, da: T) -> Option<T>
 where
     M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
     T: Num,

@@ -48,8 +48,10 @@ mod enclosed;
 mod hopf;
 mod lifted;
 mod mode;
+mod on_curve;
 mod rolls;
 mod slope;
+mod turn;
 mod values;
 
 pub use at_roll_rate::{

@@ -132,17 +132,17 @@ impl<T: Num> Da<T> {
     }
 
     /// A constant of step 8.
-    fn lift(p: &crate::algebra::Poly) -> Da<T> {
+    pub(super) fn lift(p: &crate::algebra::Poly) -> Da<T> {
         let mut c = [T::constant(I::point(0.0)); 4];
         c[0] = T::constant(constant(p));
         Da::new(c)
     }
 
-    fn add(&self, b: &Da<T>) -> Da<T> {
+    pub(super) fn add(&self, b: &Da<T>) -> Da<T> {
         Da::new(std::array::from_fn(|i| self.c[i] + b.c[i]))
     }
 
-    fn mul(&self, b: &Da<T>) -> Da<T> {
+    pub(super) fn mul(&self, b: &Da<T>) -> Da<T> {
         let mut c = [T::constant(I::point(0.0)); 4];
         for i in 0..self.len {
             for j in 0..b.len {
@@ -233,7 +233,7 @@ impl<T: InRollRate> Mode for OverPiece<T> {
 /// The polynomial in delta_a whose coefficients are `f` of each of `coefs` (lowest degree
 /// first), or [`Da::anything`] beyond the degree a [`Da`] holds: how the pointwise and the
 /// piecewise modes lift a result in P0 and delta_a.
-fn in_aileron_each<C, T: Num>(coefs: &[C], f: impl Fn(&C) -> T) -> Da<T> {
+pub(super) fn in_aileron_each<C, T: Num>(coefs: &[C], f: impl Fn(&C) -> T) -> Da<T> {
     if coefs.len() > 4 {
         return Da::anything();
     }

@@ -97,14 +97,16 @@ pub(super) fn on_branch(
 /// Where the walks along the branch end: at the aileron range, or where the f64 walk of the
 /// branch ([`follow_to`]) starts the step that meets the first divergence roll rate (the exact
 /// path reports the divergence there, and no jump root between there and the divergence: the
-/// jump determinant, which holds the factor `det(A)^2`, need not be decided up to it). A
-/// divergence the f64 walk meets after the branch turned in P0 is not covered (the walk in
-/// increasing P0 would not reach the branch's part beyond the turn).
+/// jump determinant, which holds the factor `det(A)^2`, need not be decided up to it). Where
+/// the f64 walk meets it after the branch turned in P0, the walks end at the first divergence
+/// roll rate: the certified walk past the turn (in delta_a) does not cover a branch that comes
+/// back to it, and a root before the turn is one the f64 walk must reach too.
 fn end(aircraft: &Aircraft, f: &Found, divergence: &[Bracket]) -> Result<BranchEnd, Uncertified> {
     let bound = aircraft.aileron_range();
     let first = divergence.first().map_or(f64::INFINITY, |b| b.lo);
     let p0 = match follow_to(&f.g, &f.trims[0], &f.divergence, &[], bound) {
         (Outcome::Divergence(_), p) if p < first => p,
+        (Outcome::Divergence(_), p) if p.is_nan() => first,
         (Outcome::Divergence(_), _) => return Err(Uncertified::Sign),
         _ => first,
     };

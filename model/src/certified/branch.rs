@@ -295,17 +295,7 @@ impl Piece {
             (lo, hi) = (lo.min(guess), hi.max(guess));
         }
         let pad = 2.0 * (hi - lo) + 1e-12 * (1.0 + lo.abs().max(hi.abs()));
-        let candidate = I::new(lo - pad, hi + pad);
-        // Parametric interval Newton: the trim condition at the candidate's midpoint over the
-        // piece by its mean-value form in P0.
-        let m = I::point(candidate.mid());
-        let at_m = horner(&g_c_slope, Slope::constant(m));
-        let value = horner(&g_x, Taylor2::constant(m)).taylor(x, c, at_m.v, at_m.d);
-        let values: Vec<I> = g_x.iter().map(|s| s.v).collect();
-        let image = m - value.checked_div(in_aileron_slope(&values, candidate))?;
-        if !(image.lo > candidate.lo && image.hi < candidate.hi) {
-            return None;
-        }
+        let image = branch_image(&g_c_slope, &g_x, (x, c), I::new(lo - pad, hi + pad))?;
         let at_c = contract(&g_c, image);
         Some(Piece {
             x,
@@ -373,6 +363,31 @@ impl Piece {
             at_end: contract(&trim_condition(v, b)?, self.over.v),
         })
     }
+}
+
+/// The enclosure of the branch's aileron over the piece `x` (centre `c`) by parametric
+/// interval Newton from `candidate`: the trim condition at the candidate's midpoint over the
+/// piece by its Taylor form in P0 (`g_c` at the centre, `g_x` over the piece), its image
+/// strictly inside the candidate. An image that leaves the candidate gives a wider one, its
+/// hull with the image inflated by a tenth (epsilon-inflation), twice at most: the
+/// polynomials are evaluated once, so a retry costs a few Horner steps, where a smaller piece
+/// would cost new ones.
+fn branch_image(g_c: &[Slope], g_x: &[Taylor2], (x, c): (I, f64), candidate: I) -> Option<I> {
+    let values: Vec<I> = g_x.iter().map(|s| s.v).collect();
+    let mut candidate = candidate;
+    for _ in 0..3 {
+        let m = I::point(candidate.mid());
+        let at_m = horner(g_c, Slope::constant(m));
+        let value = horner(g_x, Taylor2::constant(m)).taylor(x, c, at_m.v, at_m.d);
+        let image = m - value.checked_div(in_aileron_slope(&values, candidate))?;
+        if image.lo > candidate.lo && image.hi < candidate.hi {
+            return Some(image);
+        }
+        let hull = candidate.hull(image);
+        let pad = 0.1 * hull.width();
+        candidate = I::new(hull.lo - pad, hull.hi + pad);
+    }
+    None
 }
 
 /// The branch's aileron over a piece as a function of P0 to second order, from the trim

@@ -7,7 +7,9 @@
 //! destroys. The envelope and the clearance need only the first departure on the primary branch,
 //! so here the branch itself is enclosed piece by piece in P0 (interval Newton on the trim
 //! condition in delta_a: a unique trim of each roll rate of the piece lies in the enclosure),
-//! and `det(A)^6 Delta4` is enclosed over each piece along the branch by its value and
+//! and `det(A)^6 Delta4` (or, where det A is proven nonzero over the piece, `Delta4` of the trim
+//! states themselves: the same sign, without the cancellation that forms the factor `det(A)^6`)
+//! is enclosed over each piece along the branch by its value and
 //! derivative at the piece's centre and its second derivative over the piece ([`Taylor2`]):
 //! plain interval evaluation over a piece overestimates the range by orders of magnitude, the
 //! mean-value form ([`Slope`]) by the derivative's overestimate times the piece's width (itself

@@ -7,7 +7,9 @@
 //! destroys. The envelope and the clearance need only the first departure on the primary branch,
 //! so here the branch itself is enclosed piece by piece in P0 (interval Newton on the trim
 //! condition in delta_a: a unique trim of each roll rate of the piece lies in the enclosure),
-//! and `det(A)^6 Delta4` is enclosed over each piece along the branch by its value and
+//! and `det(A)^6 Delta4` (or, where det A is proven nonzero over the piece, `Delta4` of the trim
+//! states themselves: the same sign, without the cancellation that forms the factor `det(A)^6`)
+//! is enclosed over each piece along the branch by its value and
 //! derivative at the piece's centre and its second derivative over the piece ([`Taylor2`]):
 //! plain interval evaluation over a piece overestimates the range by orders of magnitude, the
 //! mean-value form ([`Slope`]) by the derivative's overestimate times the piece's width (itself
@@ -119,6 +121,10 @@ pub fn first_root_on_branch(
     let (mut lo, mut e_lo) = (0.0_f64, start);
     let mut hi: Option<(f64, I)> = None;
     let mut h = p_end.min(1.0) / 16.0;
+    // Below a width at which a piece failed (the branch's enclosure or the determinant's sign),
+    // a bound on the next pieces' that grows again with each piece decided: the forms' growth
+    // with the width steepens where the branch does, beyond what `Form::fit` foresees.
+    let mut cap = f64::INFINITY;
     for _ in 0..PIECE_BUDGET {
         if let Some((b, e_b)) = hi {
             if b - lo <= width * b.abs() {
@@ -147,17 +153,24 @@ pub fn first_root_on_branch(
             };
         }
         let Some(piece) = Piece::over(v, lo, b, e_lo) else {
-            h /= 2.0;
+            (h, cap) = (h / 2.0, 0.75 * (b - lo));
             continue;
         };
         let form = piece.det(det, v);
         let fit = form.fit();
         let fit = if fit.is_finite() && fit > 0.0 { fit } else { h };
-        let form = form.range;
-        if form.sign() == Some(s0) {
+        if form.range.sign() == Some(s0) {
             (lo, e_lo) = (b, piece.at_end);
-            h = fit.clamp(h / 2.0, 2.0 * h).min(1.0);
+            h = fit.clamp(h / 2.0, 2.0 * h).min(1.0).min(cap);
+            cap *= 1.25;
             continue;
+        }
+        if hi.is_none() {
+            if let Some((half, fit)) = first_half(det, v, &piece, &form, s0) {
+                (lo, e_lo, cap) = (half.x.hi, half.at_end, 0.75 * (b - lo));
+                h = fit.clamp(h / 4.0, h / 2.0);
+                continue;
+            }
         }
         match det_at(det, v, b, piece.at_end).sign() {
             Some(s) if s != s0 => hi = Some((b, piece.at_end)),
@@ -166,11 +179,23 @@ pub fn first_root_on_branch(
                 if hi.is_none() && b < p_end {
                     hi = beyond(det, v, b, (b + h).min(p_end), piece.at_end, s0);
                 }
-                h = fit.clamp(h / 16.0, h / 2.0);
+                (h, cap) = (fit.clamp(h / 16.0, h / 2.0), 0.75 * (b - lo));
             }
         }
     }
     Err(Uncertified::Budget)
+}
+
+/// The first half of `piece` and the width its form fits, when the determinant `det`'s sign
+/// over it is proven `s0` by the second derivative of the whole piece's `form` (a quarter of
+/// its second-order term, for the new value at the half's centre alone): a piece the walk
+/// could not decide, because its width outgrew the forms, costs a third of a new piece's
+/// evaluation more instead of a whole one.
+fn first_half(det: Det, v: &Values, piece: &Piece, form: &Form, s0: f64) -> Option<(Piece, f64)> {
+    let half = piece.first_half(v)?;
+    let f = half.form(det, v, form.over, form.per_trim);
+    let fit = f.fit();
+    (f.range.sign() == Some(s0) && fit.is_finite() && fit > 0.0).then_some((half, fit))
 }
 
 /// Whether the walk at `lo`, the branch's aileron there in `e_lo`, is at its `end`: then no
@@ -206,8 +231,16 @@ fn beyond(det: Det, v: &Values, b: f64, c: f64, e_b: I, s0: f64) -> Option<(f64,
 /// aileron over `[lo, hi]`; `None` when the derivative's enclosure may vanish.
 fn newton_det(det: Det, v: &Values, lo: f64, hi: f64, e_lo: I) -> Option<(f64, f64, I)> {
     let p = Piece::over(v, lo, hi, e_lo)?;
-    let slope = det_with(det, OverPiece::<Slope>::over(p.x), v, p.over.slope())?;
-    let image = I::point(p.c) - det_at(det, v, p.c, p.at_c.v).checked_div(slope.d)?;
+    let per_trim = per_trim_over(v, p.x);
+    let slope = det_with(
+        det,
+        OverPiece::<Slope>::over(p.x),
+        v,
+        p.over.slope(),
+        per_trim,
+    )?;
+    let at_c = det_with(det, AtP0(I::point(p.c)), v, p.at_c.v, per_trim)?;
+    let image = I::point(p.c) - at_c.checked_div(slope.d)?;
     let x = image.intersect(p.x)?;
     Some((x.lo, x.hi, p.over.v))
 }
@@ -233,11 +266,15 @@ struct Piece {
 }
 
 /// The determinant over a piece along the branch: its Taylor form over the piece of width
-/// `width`, and its value and derivative at the piece's centre.
+/// `width`, its value and derivative at the piece's centre, and its enclosure over the piece
+/// (`over`, evaluated per trim state or not as `per_trim`) that the form takes its second
+/// derivative from.
 pub(super) struct Form {
     pub(super) range: I,
     pub(super) width: f64,
     pub(super) at_c: Slope,
+    pub(super) over: Option<Taylor2>,
+    pub(super) per_trim: bool,
 }
 
 impl Form {
@@ -266,17 +303,7 @@ impl Piece {
             (lo, hi) = (lo.min(guess), hi.max(guess));
         }
         let pad = 2.0 * (hi - lo) + 1e-12 * (1.0 + lo.abs().max(hi.abs()));
-        let candidate = I::new(lo - pad, hi + pad);
-        // Parametric interval Newton: the trim condition at the candidate's midpoint over the
-        // piece by its mean-value form in P0.
-        let m = I::point(candidate.mid());
-        let at_m = horner(&g_c_slope, Slope::constant(m));
-        let value = horner(&g_x, Taylor2::constant(m)).taylor(x, c, at_m.v, at_m.d);
-        let values: Vec<I> = g_x.iter().map(|s| s.v).collect();
-        let image = m - value.checked_div(in_aileron_slope(&values, candidate))?;
-        if !(image.lo > candidate.lo && image.hi < candidate.hi) {
-            return None;
-        }
+        let image = branch_image(&g_c_slope, &g_x, (x, c), I::new(lo - pad, hi + pad))?;
         let at_c = contract(&g_c, image);
         Some(Piece {
             x,
@@ -293,20 +320,82 @@ impl Piece {
     /// The determinant `det` over the piece along the branch (its Taylor form) and at the
     /// piece's centre.
     fn det(&self, det: Det, v: &Values) -> Form {
+        let per_trim = per_trim_over(v, self.x);
+        let over = det_with(
+            det,
+            OverPiece::<Taylor2>::over(self.x),
+            v,
+            self.over,
+            per_trim,
+        );
+        self.form(det, v, over, per_trim)
+    }
+
+    /// The Taylor form of the determinant `det` over the piece from its enclosure `over` over
+    /// the piece or one holding it (evaluated per trim state or not as `per_trim`), and its
+    /// value and derivative at the piece's centre.
+    fn form(&self, det: Det, v: &Values, over: Option<Taylor2>, per_trim: bool) -> Form {
         let point = OverPiece::<Slope>::over(I::point(self.c));
         let entire = Slope {
             v: I::entire(),
             d: I::entire(),
         };
-        let at_c = det_with(det, point, v, self.at_c).unwrap_or(entire);
-        let over = det_with(det, OverPiece::<Taylor2>::over(self.x), v, self.over);
+        let at_c = det_with(det, point, v, self.at_c, per_trim).unwrap_or(entire);
         let range = over.map_or_else(I::entire, |t| t.taylor(self.x, self.c, at_c.v, at_c.d));
         Form {
             range,
             width: self.x.width(),
             at_c,
+            over,
+            per_trim,
         }
     }
+
+    /// The piece's first half, its branch taken from the piece's own enclosure (interval
+    /// Newton's image over the piece holds the one trim of each roll rate of the half too):
+    /// only the trims at the half's centre and end are new.
+    fn first_half(&self, v: &Values) -> Option<Piece> {
+        let (a, b) = (self.x.lo, self.c);
+        let c = a + (b - a) / 2.0;
+        let g_c_slope = trim_condition_in(OverPiece::<Slope>::over(I::point(c)), v)?;
+        let g_c: Vec<I> = g_c_slope.iter().map(|s| s.v).collect();
+        let at_c = contract(&g_c, self.over.v);
+        Some(Piece {
+            x: I::new(a, b),
+            c,
+            over: self.over,
+            at_c: Slope {
+                v: at_c,
+                d: implicit_slope(&g_c_slope, at_c)?,
+            },
+            at_end: contract(&trim_condition(v, b)?, self.over.v),
+        })
+    }
+}
+
+/// The enclosure of the branch's aileron over the piece `x` (centre `c`) by parametric
+/// interval Newton from `candidate`: the trim condition at the candidate's midpoint over the
+/// piece by its Taylor form in P0 (`g_c` at the centre, `g_x` over the piece), its image
+/// strictly inside the candidate. An image that leaves the candidate gives a wider one, its
+/// hull with the image inflated by a tenth (epsilon-inflation), twice at most: the
+/// polynomials are evaluated once, so a retry costs a few Horner steps, where a smaller piece
+/// would cost new ones.
+fn branch_image(g_c: &[Slope], g_x: &[Taylor2], (x, c): (I, f64), candidate: I) -> Option<I> {
+    let values: Vec<I> = g_x.iter().map(|s| s.v).collect();
+    let mut candidate = candidate;
+    for _ in 0..3 {
+        let m = I::point(candidate.mid());
+        let at_m = horner(g_c, Slope::constant(m));
+        let value = horner(g_x, Taylor2::constant(m)).taylor(x, c, at_m.v, at_m.d);
+        let image = m - value.checked_div(in_aileron_slope(&values, candidate))?;
+        if image.lo > candidate.lo && image.hi < candidate.hi {
+            return Some(image);
+        }
+        let hull = candidate.hull(image);
+        let pad = 0.1 * hull.width();
+        candidate = I::new(hull.lo - pad, hull.hi + pad);
+    }
+    None
 }
 
 /// The branch's aileron over a piece as a function of P0 to second order, from the trim
@@ -417,19 +506,41 @@ fn contract(c: &[I], mut d: I) -> I {
 }
 
 /// An enclosure of `det(A)^6 Delta4` (the Hopf polynomial of the exact path before the aileron
-/// is eliminated) in the ring `m` with the aileron `da`, or `None` where it cannot be formed.
-fn hopf_with<M, T>(mut m: M, v: &Values, da: T) -> Option<T>
+/// is eliminated) in the ring `m` with the aileron `da`, or with `per_trim` of `Delta4` itself
+/// (the same sign and roots where det A does not vanish), or `None` where it cannot be formed.
+///
+/// On the branch `det(A)^6 Delta4` holds the factor `det(A)^6` only through cancellation among
+/// its cleared terms (products of the trim's numerators), so an enclosure over a piece is
+/// overestimated relative to its value by about `det(A)^-6`: towards the F-104's jump at
+/// 2.05 rad/s, where det A is a quarter of its value at `P0 = 0`, its Taylor form decides only
+/// pieces a few thousandths of a rad/s wide. `Delta4` of the trim states themselves
+/// (`num / det A`, divided over the piece: den `= 1`) has no such cancellation.
+fn hopf_with<M, T>(mut m: M, v: &Values, da: T, per_trim: bool) -> Option<T>
 where
     M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
     T: Num,
 {
     let t = &v.lifted;
-    let den = m.lifted(&t.det_a);
     let zero = T::constant(I::point(0.0));
-    let num: [Da<T>; 4] =
-        std::array::from_fn(|i| Da::new([m.lifted(&t.trim[i]).at(da), zero, zero, zero]));
+    let mut den = m.lifted(&t.det_a);
+    let mut trims: [T; 4] = std::array::from_fn(|i| m.lifted(&t.trim[i]).at(da));
+    if per_trim {
+        let d = M::univariate(&den).ok()?.0;
+        for x in &mut trims {
+            *x = x.div(d)?;
+        }
+        den = Da::new([T::constant(I::point(1.0)), zero, zero, zero]);
+    }
+    let num = trims.map(|x| Da::new([x, zero, zero, zero]));
     let r = hopf_in(&mut m, &Characteristic::get().c, &t.hopf().c, &num, &den).ok()?;
     Some(r.delta4().0)
+}
+
+/// Whether the Hopf determinant is evaluated per trim state over the roll rates `x`
+/// ([`hopf_with`]): where det A, the trims' denominator, is proven nonzero over `x`.
+fn per_trim_over(v: &Values, x: I) -> bool {
+    let det_a = v.lifted.det_a.0.first().map_or(&[][..], |c| &c.0[..]);
+    !horner(det_a, x).contains_zero()
 }
 
 /// An enclosure of `det J5 det(A)^2` on the trim in the ring `m` with the aileron `da`, or
@@ -443,14 +554,16 @@ where
     Some(u.on_trim(&mut m, &v.lifted, true).at(da))
 }
 
-/// An enclosure of the determinant `det` in the ring `m` with the aileron `da`.
-pub(super) fn det_with<M, T>(det: Det, m: M, v: &Values, da: T) -> Option<T>
+/// An enclosure of the determinant `det` in the ring `m` with the aileron `da` (the Hopf
+/// determinant with `per_trim` as [`hopf_with`]'s: the same choice over a piece and at its
+/// centre, so that a form of the two encloses one function).
+pub(super) fn det_with<M, T>(det: Det, m: M, v: &Values, da: T, per_trim: bool) -> Option<T>
 where
     M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
     T: Num,
 {
     match det {
-        Det::Hopf => hopf_with(m, v, da),
+        Det::Hopf => hopf_with(m, v, da, per_trim),
         Det::Jump => jump_with(m, v, da),
     }
 }
@@ -458,5 +571,36 @@ where
 /// An enclosure of the determinant `det` at the roll rate `p` with the aileron anywhere in
 /// `da`.
 fn det_at(det: Det, v: &Values, p: f64, da: I) -> I {
-    det_with(det, AtP0(I::point(p)), v, da).unwrap_or_else(I::entire)
+    let per_trim = per_trim_over(v, I::point(p));
+    det_with(det, AtP0(I::point(p)), v, da, per_trim).unwrap_or_else(I::entire)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::aircraft::{Aircraft, Param};
+    use num_rational::BigRational;
+
+    /// The Hopf determinant per trim state is the cleared one divided by `det(A)^6` (the
+    /// trims' denominator to the power the exact path's `det(A)^6 Delta4` names): the same
+    /// sign and roots wherever det A does not vanish. Aircraft B with aileron yaw
+    /// (n_delta_a = -1.5) at delta_e = 2 deg, on its branch below its first divergence roll
+    /// rate, det A evaluated from its own lifted polynomial.
+    #[test]
+    fn the_hopf_determinant_per_trim_is_the_cleared_one_over_det_a_to_the_sixth() {
+        let ac = Aircraft::b().with(Param::NDeltaA, BigRational::new((-3).into(), 2.into()));
+        let v = Values::of(&ac, 2f64.to_radians(), 0.0);
+        let det_a = &v.lifted.det_a.0[0].0;
+        for p in [0.3, 0.9, 1.4] {
+            let g = trim_condition(&v, p).unwrap();
+            let guess = root_near(&g, 0.0).unwrap();
+            let da = contract(&g, I::new(guess - 1e-9, guess + 1e-9));
+            let cleared = hopf_with(AtP0(I::point(p)), &v, da, false).unwrap();
+            let per_trim = hopf_with(AtP0(I::point(p)), &v, da, true).unwrap();
+            let scale = horner(det_a, I::point(p)).mid().powi(6);
+            let (x, y) = (cleared.mid(), per_trim.mid() * scale);
+            assert!(per_trim_over(&v, I::point(p)), "P0 = {p}");
+            assert!((x - y).abs() <= 1e-8 * x.abs(), "P0 = {p}: {x} vs {y}");
+        }
+    }
 }

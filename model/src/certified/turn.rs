@@ -129,7 +129,7 @@ fn narrowed(v: &Values, det: Det, width: f64, (s, p): (f64, I), t: f64) -> Narro
         v: piece.s,
         d: I::point(1.0),
     };
-    let Some(slope) = det_with(det, OnCurve(piece.over.slope()), v, variable) else {
+    let Some(slope) = det_with(det, OnCurve(piece.over.slope()), v, variable, false) else {
         return Narrowed::Not;
     };
     let at_c = det_at(det, v, piece.c, piece.at_c.v);
@@ -220,18 +220,21 @@ impl Piece {
             v: I::point(self.c),
             d: I::point(1.0),
         };
-        let at_c = det_with(det, OnCurve(self.at_c), v, centre).unwrap_or(entire);
+        let at_c = det_with(det, OnCurve(self.at_c), v, centre, false).unwrap_or(entire);
         let variable = Taylor2 {
             v: self.s,
             d: I::point(1.0),
             dd: I::point(0.0),
         };
-        let over = det_with(det, OnCurve(self.over), v, variable);
+        let over = det_with(det, OnCurve(self.over), v, variable, false);
         let range = over.map_or_else(I::entire, |t| t.taylor(self.s, self.c, at_c.v, at_c.d));
+        // No enclosure in P0 to split a piece by: the walk in delta_a halves its own pieces.
         Form {
             range,
             width: self.s.width(),
             at_c,
+            over: None,
+            per_trim: false,
         }
     }
 }
@@ -325,7 +328,7 @@ fn ended(end: BranchEnd, s: f64, p: I) -> Option<Answer> {
 /// An enclosure of the determinant `det` at the aileron `s`, the branch's roll rate there in
 /// `p`.
 fn det_at(det: Det, v: &Values, s: f64, p: I) -> I {
-    det_with(det, OnCurve(p), v, I::point(s)).unwrap_or_else(I::entire)
+    det_with(det, OnCurve(p), v, I::point(s), false).unwrap_or_else(I::entire)
 }
 
 #[cfg(test)]

@@ -124,13 +124,10 @@ pub fn at_roll_rate<T: Num>(v: &Values<T>, p0: T) -> Result<AtRollRate<T>, Uncer
     at_roll_rate_with(v, p0, true)
 }
 
-/// [`at_roll_rate`] without `jump_at` (left empty): det A and the trim condition alone, the
-/// same values, for what needs only the trim (its roots in delta_a), at about half the work.
-pub fn trim_at_roll_rate<T: Num>(v: &Values<T>, p0: T) -> Result<AtRollRate<T>, Uncertified> {
-    at_roll_rate_with(v, p0, false)
-}
-
-fn at_roll_rate_with<T: Num>(
+/// [`at_roll_rate`], or without `jump_at` (left empty) unless `jump`: det A and the trim
+/// condition alone are the same values at about half the work, for what needs only the trim
+/// (its roots in delta_a).
+pub fn at_roll_rate_with<T: Num>(
     v: &Values<T>,
     p0: T,
     jump: bool,

@@ -49,11 +49,13 @@ use crate::aircraft::{Aircraft, Param, Uncertain};
 use crate::analysis::primary::TURN_STEP;
 use crate::certified::dense::horner;
 use crate::certified::num::{Dual, Num, GRADIENT};
-use crate::certified::{at_roll_rate, trim_at_roll_rate, AtRollRate, Values};
+use crate::certified::{at_roll_rate, at_roll_rate_with, AtRollRate, Values};
 use crate::equations::symbols;
 use crate::interval::{next_down, next_up, I};
 use crate::specialise::parametric;
-use std::sync::Arc;
+
+mod faces;
+use faces::Faces;
 
 /// Why a slab could not be certified.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -115,24 +117,6 @@ pub struct LiftedBox {
     side: Option<f64>,
     /// Its faces lifted so far ([`BoxPolys::face`]).
     faces: Faces,
-}
-
-/// The last few faces of a lifted box that were lifted ([`BoxPolys::face`]): the face where
-/// J or |delta_a| comes closest to zero is set by the signs of their gradients, which rarely
-/// change from one slab of roll rates to the next, and lifting a box costs more than the chain
-/// on it. A lifted box is a pure function of its box and side, so a face taken from here is
-/// the one lifting it again would give.
-#[derive(Debug, Default)]
-struct Faces(std::sync::Mutex<Vec<Arc<LiftedBox>>>);
-
-/// How many faces of a lifted box [`Faces`] keeps (each as large as the box lifted).
-const FACES: usize = 2;
-
-impl Clone for Faces {
-    /// None: a clone is lifted data shared no further.
-    fn clone(&self) -> Self {
-        Faces::default()
-    }
 }
 
 impl LiftedBox {
@@ -283,20 +267,6 @@ impl BoxPolys {
         self.lift_on_side(theta, whole.side)
     }
 
-    /// [`BoxPolys::lift_part`] of the face `theta` of `whole`, taken from the faces of `whole`
-    /// lifted so far when it is one of them.
-    fn face(&self, theta: &[I], whole: &LiftedBox) -> Arc<LiftedBox> {
-        let lock = || whole.faces.0.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some(f) = lock().iter().find(|f| f.theta == theta) {
-            return Arc::clone(f);
-        }
-        let f = Arc::new(self.lift_part(theta, whole));
-        let mut faces = lock();
-        faces.insert(0, Arc::clone(&f));
-        faces.truncate(FACES);
-        f
-    }
-
     /// [`BoxPolys::lift`] of a box on the branch's side `side` (that of the lifted box it was
     /// a part of, [`LiftedBox::side`]), computed from the box when `None`: a sub-box lifted
     /// again, as [`BoxPolys::lift_part`] lifted it first.
@@ -349,14 +319,9 @@ impl BoxPolys {
         let c: Vec<f64> = bx.centre.iter().copied().chain([p.mid()]).collect();
         let (vb, pb) = (&bx.over, Dual::variable(p, n - 1, n));
         let (vc, pc) = (&bx.at_centre, I::point(c[n - 1]));
-        let (b, m) = match need {
-            Need::Jump => (at_roll_rate(vb, pb), at_roll_rate(vc, pc)),
-            Need::Trim => (trim_at_roll_rate(vb, pb), trim_at_roll_rate(vc, pc)),
-        };
-        let (b, m) = (
-            b.map_err(|_| Failure::Divergence)?,
-            m.map_err(|_| Failure::Divergence)?,
-        );
+        let jump = need == Need::Jump;
+        let b = at_roll_rate_with(vb, pb, jump).map_err(|_| Failure::Divergence)?;
+        let m = at_roll_rate_with(vc, pc, jump).map_err(|_| Failure::Divergence)?;
         let det_a = tight(b.det_a, m.det_a, &x, &c)?;
         if det_a.v.contains_zero() {
             return Err(Failure::Divergence);
@@ -681,7 +646,7 @@ impl BoxPolys {
         let piece = |i: usize| I::new(end(i), if i + 1 == PIECES { l } else { end(i + 1) });
         // The centre's aircraft first, in plain intervals: where it has a trim within l, so
         // has the box (the common case below the target, and a tenth of the cost).
-        let Ok(m) = trim_at_roll_rate(&bx.at_centre, I::point(p)) else {
+        let Ok(m) = at_roll_rate_with(&bx.at_centre, I::point(p), false) else {
             return false;
         };
         let coef_c = |i: usize| m.g.get(i).copied().unwrap_or(I::point(0.0));

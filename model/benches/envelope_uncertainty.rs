@@ -2,8 +2,12 @@
 //! the F-104 (6,000 m, Mach 0.6, 1 g) against the number of uncertain coefficients (2, 6 and all
 //! 15) and their relative width (5, 10 and 20 %), with the settings of an envelope's point
 //! ([`model::envelope::clearance::settings`]). One sample each: a point can take tens of seconds.
-//! Run with `cargo bench -p model --bench envelope_uncertainty`; nothing runs when the JSBSim
-//! models are not installed. Under the command-line tool's allocator (mimalloc), as `model` runs.
+//! The point of `model envelope jsbsim:f104 --altitude-m 6000 --mach 0.6 --uncertainty 10%`
+//! (all 15 coefficients +- 10 %) has its own case, sampled for a median, beside a same-run
+//! baseline: the exact analysis of its nominal aircraft (`analyze`'s jump part), one of the
+//! analyses the clearance's worst-case search makes. Run with `cargo bench -p model --bench
+//! envelope_uncertainty` (`-- point` for those two alone); nothing runs when the JSBSim models
+//! are not installed. Under the command-line tool's allocator (mimalloc), as `model` runs.
 
 use model::aircraft::convert::Coefficient;
 use model::envelope::clearance::clear_point;
@@ -61,5 +65,25 @@ fn clearance_f104_6000_m_mach_0_6<const N: usize>(percent: u32) -> bool {
         let u = Uncertainty::parse(&spec(N, percent)).unwrap();
         let a = u.aircraft(text, "jsbsim:f104").unwrap();
         clear_point(&a, 0.0).is_ok()
+    })
+}
+
+/// The envelope's point with `--uncertainty 10%`: every coefficient +- 10 %, as `model envelope`
+/// clears it.
+#[divan::bench(sample_count = 7, sample_size = 1)]
+fn point_clearance_15_coefficients_10_percent() -> bool {
+    f104().is_some_and(|text| {
+        let u = Uncertainty::parse("10%").unwrap();
+        let a = u.aircraft(text, "jsbsim:f104").unwrap();
+        clear_point(&a, 0.0).is_ok()
+    })
+}
+
+/// Baseline of the same run: the exact path's critical jump of the point's nominal aircraft.
+#[divan::bench(sample_count = 7, sample_size = 1)]
+fn point_baseline_exact_analysis_nominal() -> bool {
+    f104().is_some_and(|text| {
+        let a = model::aircraft::parse(text, "jsbsim:f104").unwrap();
+        model::clearance::critical(&a, 0.0).is_ok()
     })
 }

@@ -121,14 +121,29 @@ pub struct AtRollRate<T> {
 
 /// [`AtRollRate`] of the data `v` at the roll rate `p0` (both in the numbers `T`).
 pub fn at_roll_rate<T: Num>(v: &Values<T>, p0: T) -> Result<AtRollRate<T>, Uncertified> {
+    at_roll_rate_with(v, p0, true)
+}
+
+/// [`at_roll_rate`], or without `jump_at` (left empty) unless `jump`: det A and the trim
+/// condition alone are the same values at about half the work, for what needs only the trim
+/// (its roots in delta_a).
+pub fn at_roll_rate_with<T: Num>(
+    v: &Values<T>,
+    p0: T,
+    jump: bool,
+) -> Result<AtRollRate<T>, Uncertified> {
     let m = &mut AtP0(p0);
     let l = &v.lifted;
     let u = Unconstrained::new(m, l)?;
-    let jump_at = u.on_trim(m, l, true);
     let coeffs = |d: &Da<T>| d.c[..d.len].to_vec();
+    let jump_at = if jump {
+        coeffs(&u.on_trim(m, l, true))
+    } else {
+        Vec::new()
+    };
     Ok(AtRollRate {
         det_a: u.det_a.0,
         g: coeffs(&u.trim_condition),
-        jump_at: coeffs(&jump_at),
+        jump_at,
     })
 }

@@ -306,9 +306,11 @@ pub struct Dense2<T>(pub Vec<Dense<T>>);
 /// The value at `x` of the polynomial with ascending coefficients `c`, by Horner's scheme: the
 /// one evaluation of enclosed coefficients (an enclosure of the range over `x`).
 pub fn horner<T: Num>(c: &[T], x: T) -> T {
-    c.iter()
-        .rev()
-        .fold(T::constant(I::point(0.0)), |acc, c| acc * x + *c)
+    let mut acc = T::constant(I::point(0.0));
+    for c in c.iter().rev() {
+        acc.mul_add_assign(&x, c);
+    }
+    acc
 }
 
 /// A polynomial with enclosed coefficients, made ready to enclose its value at many doubles

@@ -55,7 +55,7 @@ mod turn;
 mod values;
 
 pub use at_roll_rate::{
-    at_roll_rate, trim_condition_at, value_at, value_over, AtRollRate, Criterion,
+    at_roll_rate, at_roll_rate_with, trim_condition_at, value_at, value_over, AtRollRate, Criterion,
 };
 pub use branch::{first_hopf_on_branch, first_root_on_branch, BranchEnd, Det};
 pub use elimination::{eliminate, Coeff, Scalar};

@@ -120,11 +120,15 @@ pub(super) struct Da<T> {
 
 impl<T: Num> Da<T> {
     pub(super) fn new(c: [T; 4]) -> Da<T> {
-        let len = c
-            .iter()
-            .rposition(|x| !x.is_exact_zero())
-            .map_or(0, |i| i + 1);
+        let len = Da::degree_bound(&c);
         Da { c, len }
+    }
+
+    /// How many coefficients are left when the trailing exact zeros of `c` are dropped.
+    fn degree_bound(c: &[T; 4]) -> usize {
+        c.iter()
+            .rposition(|x| !x.is_exact_zero())
+            .map_or(0, |i| i + 1)
     }
 
     pub(super) fn anything() -> Da<T> {
@@ -152,10 +156,31 @@ impl<T: Num> Da<T> {
                 let Some(slot) = c.get_mut(i + j) else {
                     return Da::anything();
                 };
-                *slot = *slot + self.c[i] * b.c[j];
+                slot.add_product_assign(&self.c[i], &b.c[j]);
             }
         }
         Da::new(c)
+    }
+
+    /// `self + a b` in place, by the same interval operations as [`Da::mul`] then [`Da::add`]
+    /// (each coefficient of the product summed from 0 in the same order, then added), without
+    /// the two polynomials in between.
+    fn add_product(&mut self, a: &Da<T>, b: &Da<T>) {
+        if a.len > 0 && b.len > 0 && a.len + b.len > 5 {
+            let term = a.mul(b);
+            *self = self.add(&term);
+            return;
+        }
+        for k in 0..4 {
+            let mut t = T::constant(I::point(0.0));
+            for i in 0..a.len.min(k + 1) {
+                if k - i < b.len {
+                    t.add_product_assign(&a.c[i], &b.c[k - i]);
+                }
+            }
+            self.c[k] = self.c[k] + t;
+        }
+        self.len = Da::degree_bound(&self.c);
     }
 
     /// The value at the aileron `da`.
@@ -174,6 +199,9 @@ impl<T: Num> Clearing for AtP0<T> {
     }
     fn mul(&mut self, a: &Da<T>, b: &Da<T>) -> Da<T> {
         a.mul(b)
+    }
+    fn add_product(&mut self, acc: &mut Da<T>, a: &Da<T>, b: &Da<T>) {
+        acc.add_product(a, b);
     }
 }
 

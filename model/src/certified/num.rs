@@ -45,6 +45,16 @@ pub trait Num:
     fn interval(&self) -> Option<I> {
         None
     }
+    /// `self = self x + c`, by the same operations as the expression (in place for a
+    /// [`Dual`], whose copies cost more than its arithmetic): Horner's step.
+    fn mul_add_assign(&mut self, x: &Self, c: &Self) {
+        *self = *self * *x + *c;
+    }
+    /// `self = self + a b`, by the same operations as the expression (in place for a
+    /// [`Dual`]): a product's term summed into its coefficient.
+    fn add_product_assign(&mut self, a: &Self, b: &Self) {
+        *self = *self + *a * *b;
+    }
     /// `self^k`.
     fn powi(self, k: u32) -> Self {
         match k {
@@ -118,35 +128,52 @@ impl Dual {
         g[i] = I::point(1.0);
         Dual { v: x, g, n }
     }
-
-    fn with_gradient(v: I, n: usize, f: impl Fn(usize) -> I) -> Dual {
-        let mut g = [I::point(0.0); GRADIENT];
-        for (i, gi) in g.iter_mut().enumerate().take(n) {
-            *gi = f(i);
-        }
-        Dual { v, g, n }
-    }
 }
+
+// The operations work in place on their first operand: a `Dual` is 328 bytes, and building
+// each result afresh copied it several times per operation. Every entry of a gradient beyond
+// its `n` is an exact zero (every constructor above keeps it so), and each entry below the
+// result's `n` is computed by the same interval operations as the product and sum rules.
 
 impl Add for Dual {
     type Output = Dual;
-    fn add(self, o: Dual) -> Dual {
+    #[inline]
+    fn add(mut self, o: Dual) -> Dual {
         let n = self.n.max(o.n);
-        Dual::with_gradient(self.v + o.v, n, |i| self.g[i] + o.g[i])
+        self.v = self.v + o.v;
+        for (a, b) in self.g[..n].iter_mut().zip(&o.g[..n]) {
+            *a = *a + *b;
+        }
+        self.n = n;
+        self
     }
 }
 
 impl Sub for Dual {
     type Output = Dual;
-    fn sub(self, o: Dual) -> Dual {
-        self + -o
+    /// `self + -o`, entry by entry: `-o` has exact zeros beyond its `n`.
+    #[inline]
+    fn sub(mut self, o: Dual) -> Dual {
+        let n = self.n.max(o.n);
+        self.v = self.v + -o.v;
+        for (i, a) in self.g[..n].iter_mut().enumerate() {
+            let b = if i < o.n { -o.g[i] } else { I::point(0.0) };
+            *a = *a + b;
+        }
+        self.n = n;
+        self
     }
 }
 
 impl Neg for Dual {
     type Output = Dual;
-    fn neg(self) -> Dual {
-        Dual::with_gradient(-self.v, self.n, |i| -self.g[i])
+    #[inline]
+    fn neg(mut self) -> Dual {
+        self.v = -self.v;
+        for a in &mut self.g[..self.n] {
+            *a = -*a;
+        }
+        self
     }
 }
 
@@ -154,13 +181,48 @@ impl Mul for Dual {
     type Output = Dual;
     // The product rule adds: (a b)' = a b' + b a'.
     #[allow(clippy::suspicious_arithmetic_impl)]
-    fn mul(self, o: Dual) -> Dual {
+    #[inline]
+    fn mul(mut self, o: Dual) -> Dual {
         let n = self.n.max(o.n);
-        Dual::with_gradient(self.v * o.v, n, |i| self.v * o.g[i] + o.v * self.g[i])
+        let a = self.v;
+        self.v = a * o.v;
+        for (ga, gb) in self.g[..n].iter_mut().zip(&o.g[..n]) {
+            *ga = a * *gb + o.v * *ga;
+        }
+        self.n = n;
+        self
     }
 }
 
 impl Num for Dual {
+    fn mul_add_assign(&mut self, x: &Dual, c: &Dual) {
+        // The product's gradient has exact zeros from `max(n, x.n)` on, to which `c`'s adds.
+        let (np, n) = (self.n.max(x.n), self.n.max(x.n).max(c.n));
+        let a = self.v;
+        self.v = a * x.v + c.v;
+        for (i, g) in self.g[..n].iter_mut().enumerate() {
+            let p = if i < np {
+                a * x.g[i] + x.v * *g
+            } else {
+                I::point(0.0)
+            };
+            *g = p + c.g[i];
+        }
+        self.n = n;
+    }
+    fn add_product_assign(&mut self, a: &Dual, b: &Dual) {
+        let (np, n) = (a.n.max(b.n), self.n.max(a.n.max(b.n)));
+        self.v = self.v + a.v * b.v;
+        for (i, g) in self.g[..n].iter_mut().enumerate() {
+            let p = if i < np {
+                a.v * b.g[i] + b.v * a.g[i]
+            } else {
+                I::point(0.0)
+            };
+            *g = *g + p;
+        }
+        self.n = n;
+    }
     fn sqrt(self) -> Option<Dual> {
         // (sqrt a)' = a' / (2 sqrt a), a > 0 on the whole box.
         if self.v.lo <= 0.0 {

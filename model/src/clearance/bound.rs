@@ -49,11 +49,13 @@ use crate::aircraft::{Aircraft, Param, Uncertain};
 use crate::analysis::primary::TURN_STEP;
 use crate::certified::dense::horner;
 use crate::certified::num::{Dual, Num, GRADIENT};
-use crate::certified::{at_roll_rate, AtRollRate, Values};
+use crate::certified::{at_roll_rate, at_roll_rate_with, AtRollRate, Values};
 use crate::equations::symbols;
 use crate::interval::{next_down, next_up, I};
 use crate::specialise::parametric;
-use std::sync::Arc;
+
+mod faces;
+use faces::Faces;
 
 /// Why a slab could not be certified.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -117,24 +119,6 @@ pub struct LiftedBox {
     faces: Faces,
 }
 
-/// The last few faces of a lifted box that were lifted ([`BoxPolys::face`]): the face where
-/// J or |delta_a| comes closest to zero is set by the signs of their gradients, which rarely
-/// change from one slab of roll rates to the next, and lifting a box costs more than the chain
-/// on it. A lifted box is a pure function of its box and side, so a face taken from here is
-/// the one lifting it again would give.
-#[derive(Debug, Default)]
-struct Faces(std::sync::Mutex<Vec<Arc<LiftedBox>>>);
-
-/// How many faces of a lifted box [`Faces`] keeps (each as large as the box lifted).
-const FACES: usize = 2;
-
-impl Clone for Faces {
-    /// None: a clone is lifted data shared no further.
-    fn clone(&self) -> Self {
-        Faces::default()
-    }
-}
-
 impl LiftedBox {
     /// The box.
     pub fn theta(&self) -> &[I] {
@@ -172,6 +156,14 @@ struct Trim {
 }
 
 /// det A and the trim condition's coefficients over a slab and the box ([`BoxPolys::coefficients`]).
+/// What an evaluation over a slab needs of the criterion: the trim condition alone (the
+/// branch's aileron, the roots in delta_a) or J on the trim too, which costs about as much again.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Need {
+    Trim,
+    Jump,
+}
+
 struct Coefficients {
     /// The criterion's quantities over the box and at the centre.
     at: (AtRollRate<Dual>, AtRollRate<I>),
@@ -275,20 +267,6 @@ impl BoxPolys {
         self.lift_on_side(theta, whole.side)
     }
 
-    /// [`BoxPolys::lift_part`] of the face `theta` of `whole`, taken from the faces of `whole`
-    /// lifted so far when it is one of them.
-    fn face(&self, theta: &[I], whole: &LiftedBox) -> Arc<LiftedBox> {
-        let lock = || whole.faces.0.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some(f) = lock().iter().find(|f| f.theta == theta) {
-            return Arc::clone(f);
-        }
-        let f = Arc::new(self.lift_part(theta, whole));
-        let mut faces = lock();
-        faces.insert(0, Arc::clone(&f));
-        faces.truncate(FACES);
-        f
-    }
-
     /// [`BoxPolys::lift`] of a box on the branch's side `side` (that of the lifted box it was
     /// a part of, [`LiftedBox::side`]), computed from the box when `None`: a sub-box lifted
     /// again, as [`BoxPolys::lift_part`] lifted it first.
@@ -324,7 +302,7 @@ impl BoxPolys {
         };
         if side.is_none() {
             bx.side = self
-                .coefficients(&bx, I::point(0.0))
+                .coefficients(&bx, I::point(0.0), Need::Trim)
                 .ok()
                 .and_then(|k| k.g[1].v.sign());
         }
@@ -333,15 +311,17 @@ impl BoxPolys {
 
     /// det A and the coefficients of the trim condition over `p x` the box, det A and `g1`
     /// tightened by their mean-value forms around the centre and det A proven nonzero, or the
-    /// first link that fails.
-    fn coefficients(&self, bx: &LiftedBox, p: I) -> Result<Coefficients, Failure> {
+    /// first link that fails; with J's polynomial in delta_a on the trim when `need` says so
+    /// (else that is left empty).
+    fn coefficients(&self, bx: &LiftedBox, p: I, need: Need) -> Result<Coefficients, Failure> {
         let n = self.coordinates.len() + 1;
         let x: Vec<I> = bx.theta.iter().copied().chain([p]).collect();
         let c: Vec<f64> = bx.centre.iter().copied().chain([p.mid()]).collect();
         let (vb, pb) = (&bx.over, Dual::variable(p, n - 1, n));
         let (vc, pc) = (&bx.at_centre, I::point(c[n - 1]));
-        let b = at_roll_rate(vb, pb).map_err(|_| Failure::Divergence)?;
-        let m = at_roll_rate(vc, pc).map_err(|_| Failure::Divergence)?;
+        let jump = need == Need::Jump;
+        let b = at_roll_rate_with(vb, pb, jump).map_err(|_| Failure::Divergence)?;
+        let m = at_roll_rate_with(vc, pc, jump).map_err(|_| Failure::Divergence)?;
         let det_a = tight(b.det_a, m.det_a, &x, &c)?;
         if det_a.v.contains_zero() {
             return Err(Failure::Divergence);
@@ -375,9 +355,14 @@ impl BoxPolys {
 
     /// The trim condition's part of the chain over `p x` the box (det A, the coefficients of
     /// `G` in delta_a and its discriminant), every value tightened by its mean-value form around
-    /// the centre, or the first link that fails.
+    /// the centre, or the first link that fails; with J's polynomial for the rest of the chain.
     fn trim(&self, bx: &LiftedBox, p: I) -> Result<Trim, Failure> {
-        let k = self.coefficients(bx, p)?;
+        self.trim_for(bx, p, Need::Jump)
+    }
+
+    /// [`BoxPolys::trim`], with J's polynomial only if `need` says so.
+    fn trim_for(&self, bx: &LiftedBox, p: I, need: Need) -> Result<Trim, Failure> {
+        let k = self.coefficients(bx, p, need)?;
         let ([g0, g1, g2], [g0c, g1c, g2c]) = (k.g, k.g_c);
         let Some(s) = bx.side else {
             return Err(Failure::Turn);
@@ -416,19 +401,32 @@ impl BoxPolys {
     /// The chain on the trim condition's part `t` of it.
     fn chain_on(&self, t: &Trim) -> Result<Chain<Dual>, Failure> {
         let ((b, m), (x, c)) = (&t.at, (&t.x, &t.c));
-        let ((g0, _), (g0c, _), (den, den_c)) = (t.g, t.g_c, t.den);
-        let minus_two = I::point(-2.0);
-        let da_box = (Dual::constant(minus_two) * g0)
-            .div(den)
-            .ok_or(Failure::Turn)?;
-        let da_c = (minus_two * g0c).checked_div(den_c).ok_or(Failure::Turn)?;
-        let da = tight(da_box, da_c, x, c)?;
+        let (da, da_c) = BoxPolys::aileron_on(t)?;
         let jump = tight(horner(&b.jump_at, da), horner(&m.jump_at, da_c), x, c)?;
         Ok(Chain {
             det_a: t.det_a,
             da,
             jump,
         })
+    }
+
+    /// The primary branch's aileron over the box and at the centre, on the trim condition's
+    /// part `t` of the chain: the root `-2 g0 / (g1 + s sqrt(disc))`, tightened by its
+    /// mean-value form.
+    fn aileron_on(t: &Trim) -> Result<(Dual, I), Failure> {
+        let ((g0, _), (g0c, _), (den, den_c)) = (t.g, t.g_c, t.den);
+        let minus_two = I::point(-2.0);
+        let da_box = (Dual::constant(minus_two) * g0)
+            .div(den)
+            .ok_or(Failure::Turn)?;
+        let da_c = (minus_two * g0c).checked_div(den_c).ok_or(Failure::Turn)?;
+        Ok((tight(da_box, da_c, &t.x, &t.c)?, da_c))
+    }
+
+    /// The primary branch's aileron over `p x` the box ([`BoxPolys::aileron_on`]), from the
+    /// trim condition alone.
+    fn aileron(&self, bx: &LiftedBox, p: I) -> Result<Dual, Failure> {
+        Ok(BoxPolys::aileron_on(&self.trim_for(bx, p, Need::Trim)?)?.0)
     }
 
     /// What a primary branch that comes back into the slab `p x` the box on its *other* trim
@@ -490,7 +488,7 @@ impl BoxPolys {
     /// no other root at all (it has gone to infinity), which counts as beyond.
     pub fn other_beyond_range(&self, bx: &LiftedBox, p: I, range: f64) -> bool {
         let above = I::new(p.lo, next_up(p.hi + 2.0 * TURN_STEP));
-        let Ok(t) = self.trim(bx, above) else {
+        let Ok(t) = self.trim_for(bx, above, Need::Trim) else {
             return false;
         };
         let (g2, den) = (t.g.1.v, t.den.0.v);
@@ -535,15 +533,15 @@ impl BoxPolys {
     /// Whether the trim condition has no real root in delta_a at any roll rate of `p` for any
     /// aircraft of the box: `g2` of one sign and the discriminant negative.
     fn no_trim_on(&self, bx: &LiftedBox, p: I) -> bool {
-        self.quadratic(bx, p)
+        self.quadratic(bx, p, Need::Trim)
             .is_some_and(|(_, _, disc)| disc.v.hi < 0.0)
     }
 
     /// The trim condition over `p x` the box as a quadratic in delta_a: its coefficients, `g2`
     /// and the discriminant, both tightened by their mean-value forms; `None` when a link
     /// fails or `g2` may vanish.
-    fn quadratic(&self, bx: &LiftedBox, p: I) -> Option<(Coefficients, Dual, Dual)> {
-        let k = self.coefficients(bx, p).ok()?;
+    fn quadratic(&self, bx: &LiftedBox, p: I, need: Need) -> Option<(Coefficients, Dual, Dual)> {
+        let k = self.coefficients(bx, p, need).ok()?;
         let g2 = tight(k.g[2], k.g_c[2], &k.x, &k.c).ok()?;
         let (disc, _) = BoxPolys::discriminant(&k).ok()?;
         g2.v.sign()?;
@@ -562,7 +560,7 @@ impl BoxPolys {
     /// as one interval, J's mean-value form in the box and P0 around the centre, where it is
     /// evaluated over the same range of delta_a).
     pub fn turn_zone_clear(&self, bx: &LiftedBox, u: I) -> bool {
-        let Some((k, g2, disc)) = self.quadratic(bx, u) else {
+        let Some((k, g2, disc)) = self.quadratic(bx, u, Need::Jump) else {
             return false;
         };
         // Every real root: between the two roots where disc >= 0 (none where disc < 0).
@@ -588,8 +586,8 @@ impl BoxPolys {
     /// the face of the box towards which |delta_a| decreases in every coordinate where it is
     /// monotone (the mean-value form there), whichever is larger.
     pub fn aileron_lower(&self, bx: &LiftedBox, p: f64) -> Option<f64> {
-        let chain = self.chain(bx, I::point(p)).ok()?;
-        let da = chain.da.v;
+        let branch = self.aileron(bx, I::point(p)).ok()?;
+        let da = branch.v;
         let Some(sign) = da.sign() else {
             return Some(0.0);
         };
@@ -597,7 +595,7 @@ impl BoxPolys {
             .theta
             .iter()
             .enumerate()
-            .map(|(i, t)| match chain.da.g[i].sign() {
+            .map(|(i, t)| match branch.g[i].sign() {
                 // Towards smaller |delta_a|: against the gradient when delta_a > 0.
                 Some(g) if g * sign > 0.0 => I::point(t.lo),
                 Some(_) => I::point(t.hi),
@@ -605,10 +603,10 @@ impl BoxPolys {
             })
             .collect();
         let on_face = self
-            .chain(&self.face(&face, bx), I::point(p))
-            .map_or(0.0, |c| {
-                if c.da.v.sign() == Some(sign) {
-                    c.da.v.mig()
+            .aileron(&self.face(&face, bx), I::point(p))
+            .map_or(0.0, |d| {
+                if d.v.sign() == Some(sign) {
+                    d.v.mig()
                 } else {
                     0.0
                 }
@@ -648,7 +646,7 @@ impl BoxPolys {
         let piece = |i: usize| I::new(end(i), if i + 1 == PIECES { l } else { end(i + 1) });
         // The centre's aircraft first, in plain intervals: where it has a trim within l, so
         // has the box (the common case below the target, and a tenth of the cost).
-        let Ok(m) = at_roll_rate(&bx.at_centre, I::point(p)) else {
+        let Ok(m) = at_roll_rate_with(&bx.at_centre, I::point(p), false) else {
             return false;
         };
         let coef_c = |i: usize| m.g.get(i).copied().unwrap_or(I::point(0.0));
@@ -656,7 +654,7 @@ impl BoxPolys {
         if order.iter().any(|i| at_centre(piece(*i)).contains_zero()) {
             return false;
         }
-        let Ok(k) = self.coefficients(bx, I::point(p)) else {
+        let Ok(k) = self.coefficients(bx, I::point(p), Need::Trim) else {
             return false;
         };
         order.into_iter().all(|i| {

@@ -295,12 +295,22 @@ impl<'a> Search<'a> {
                 Ok(batch) => batch,
                 Err(note) => return stop(note, false),
             };
+            // The probe of the lowest leaf runs beside the batch's steps: they were set by the
+            // targets before it, so it changes nothing they do, and the worst case it may find
+            // counts from the next batch on, as it would after them.
             let first = batch[0];
-            if !self.leaves[first].probed {
+            let probe = (!self.leaves[first].probed).then(|| {
                 self.leaves[first].probed = true;
-                worst.probe(&self.leaves[first].theta, by_p0);
-            }
-            self.step(batch, by_p0, &t);
+                self.leaves[first].theta.clone()
+            });
+            rayon::join(
+                || {
+                    if let Some(theta) = probe {
+                        worst.probe(&theta, by_p0);
+                    }
+                },
+                || self.step(batch, by_p0, &t),
+            );
         }
     }
 

@@ -110,8 +110,7 @@ impl Walk {
             divergence: divergence.to_vec(),
             bound: max_abs_delta_a,
             walked: RefCell::new(Walked {
-                // A branch followed at `TURN_STEP` to about 4 rad/s, without growing.
-                steps: Vec::with_capacity(4096),
+                steps: Vec::new(),
                 walker: Err((Outcome::Lost("not started"), 0.0)),
             }),
         };

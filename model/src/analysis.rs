@@ -54,6 +54,7 @@ use crate::specialise::{on_trim, OnTrim};
 pub use departure::{omega_at, AtTrim, FirstDeparture, HopfPoint, HopfPolys, Landing, LocalPolys};
 pub(crate) use exact_jump::{exact_jump_part, ExactJumpPart};
 pub use primary::Outcome;
+use primary::Walk;
 
 /// A trim on the unconstrained roll (delta_r = 0) at which something happens: a jump point (a
 /// positive root of det K, i.e. of det J5 on the equilibrium curve) or a pole of det K (d = 0).
@@ -242,6 +243,7 @@ pub fn analyze_with(
     let ExactJumpPart {
         d,
         found,
+        walk,
         mut analysis,
         critical,
     } = exact_jump_part(aircraft, delta_e_rad)?;
@@ -260,7 +262,8 @@ pub fn analyze_with(
             zs_hopf_roots: roots(&hp.zs_hopf),
             landing_roots,
         };
-        found.add_departures(&mut analysis, critical, &input, (aircraft, delta_e_rad));
+        let marks = (aircraft, delta_e_rad);
+        found.add_departures(&mut analysis, critical, &input, marks, &walk);
     }
     withhold_zero_sideslip(&mut analysis);
     check(&analysis)?;
@@ -324,12 +327,14 @@ pub fn margin_deg(aircraft: &Aircraft, point: &JumpPoint) -> Option<f64> {
 
 impl Found {
     /// The jump part of the analysis (no Hopf points, landings or first departure) and the
-    /// index of the critical jump in its `jump` list.
+    /// index of the critical jump in its `jump` list; `walk` is the primary branch's
+    /// ([`Found::walk`]).
     pub(crate) fn assemble(
         &self,
         aircraft: &Aircraft,
         delta_e_rad: f64,
         zs_controls: &ZsControls<'_>,
+        walk: &Walk,
     ) -> (Analysis, Option<usize>) {
         let s = symbols();
         let point = |p0: f64, f: &InAileron| -> JumpPoint {
@@ -353,8 +358,7 @@ impl Found {
             .collect();
         let roots: Vec<(f64, f64)> = jump.iter().map(|j| (j.p0, j.delta_a_rad)).collect();
         let bound = aircraft.aileron_range();
-        let (critical, critical_note) =
-            match primary::follow(&self.g, &self.trims[0], &self.divergence, &roots, bound) {
+        let (critical, critical_note) = match walk.first(&roots).0 {
                 Outcome::Jump(i) => (Some(i), None),
                 Outcome::Divergence(p) => (
                     None,
@@ -430,15 +434,29 @@ impl Found {
         (analysis, critical)
     }
 
+    /// The f64 walk of the primary branch ([`primary::follow`]) on these polynomials, up to
+    /// `aircraft`'s aileron range: made once, read by [`Found::assemble`] and
+    /// [`Found::add_departures`].
+    pub(crate) fn walk(&self, aircraft: &Aircraft) -> Walk {
+        Walk::new(
+            &self.g,
+            &self.trims[0],
+            &self.divergence,
+            aircraft.aileron_range(),
+        )
+    }
+
     /// Adds the departure part to the jump part `analysis` (whose critical jump is `critical`):
     /// the landings of each jump, the Hopf points, the first departure and the zero-sideslip
-    /// Hopf roll rates, the same on both routes.
+    /// Hopf roll rates, the same on both routes; `walk` is the primary branch's
+    /// ([`Found::walk`]).
     pub(crate) fn add_departures(
         &self,
         analysis: &mut Analysis,
         critical: Option<usize>,
         d: &Departures<'_>,
         marks: (&Aircraft, f64),
+        walk: &Walk,
     ) {
         let (g, trims) = (&self.g, &self.trims);
         for (j, roots) in analysis.jump.iter_mut().zip(&d.landing_roots) {
@@ -449,13 +467,10 @@ impl Found {
         }
         analysis.hopf = departure::hopf_points(&d.at, &d.hopf_roots, &d.hopf_at, g, trims, marks);
         analysis.first_departure = departure::first_departure(
-            &d.at,
-            g,
-            trims,
-            &self.divergence,
+            departure::start(&d.at, trims),
             &analysis.jump,
             &analysis.hopf,
-            marks.0.aileron_range(),
+            walk,
         );
         analysis.zero_sideslip.hopf_roll_rates =
             departure::zs_hopf_roll_rates(&d.at, &d.zs_hopf_roots, &self.zs_trims)

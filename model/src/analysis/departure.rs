@@ -7,6 +7,7 @@
 //! roots include neutral saddles; `omega^2 = (c1 c4 - c5) / (c1 c2 - c3)` (derived in
 //! [`crate::derivation::hopf::orlando`]) tells them apart.
 
+use super::primary::Walk;
 use super::unstable_trim::{self, Start, UnstableTrim};
 use super::{
     aileron_of_root, exact_f64, parametric_characteristic, specialisation, strip, univariate,
@@ -622,17 +623,14 @@ pub(crate) fn start(h: &AtTrim<'_>, trims: &[InAileron]) -> Start {
 /// mirror point (-P0, -delta_a) with the same kind, omega and l1 (the symmetry maps J5 to a
 /// similar matrix). `None` when the wings-level trim's stability is undecided (an eigenvalue on
 /// the imaginary axis within rounding, or none computed), or the branch diverges or runs off the
-/// aileron range first.
+/// aileron range first. `start` is that trim's stability ([`start`]), `walk` the branch's.
 pub(crate) fn first_departure(
-    h: &AtTrim<'_>,
-    g: &InAileron,
-    trims: &[InAileron],
-    divergence: &[f64],
+    start: Start,
     jump: &[JumpPoint],
     hopf: &[HopfPoint],
-    bound: f64,
+    walk: &Walk,
 ) -> Option<FirstDeparture> {
-    match start(h, trims) {
+    match start {
         Start::Stable => {}
         Start::Unstable(u) => return Some(FirstDeparture::at_start(u)),
         Start::Undecided => return None,
@@ -642,7 +640,7 @@ pub(crate) fn first_departure(
         .map(|j| (j.p0, j.delta_a_rad))
         .chain(hopf.iter().map(|h| (h.point.p0, h.point.delta_a_rad)))
         .collect();
-    let i = match super::primary::follow(g, &trims[0], divergence, &hits, bound) {
+    let i = match walk.first(&hits).0 {
         super::Outcome::Jump(i) => i,
         _ => return None,
     };

@@ -2,6 +2,7 @@
 //! polynomials specialised in big rationals, their roots, and the jump analysis they give; shared
 //! by [`super::analyze_with`] and the first departure's fallback in [`super::fast`].
 
+use super::primary::Walk;
 use super::{
     cancel, eval_trim, in_aileron, in_aileron_all, parametric, positive_roots, strip, univariate,
     Analysis, AnalysisError, CriterionPolys, Found,
@@ -18,6 +19,8 @@ pub(crate) struct ExactJumpPart {
     pub d: CriterionPolys,
     /// Their roots and the f64 polynomials evaluated at them.
     pub found: Found,
+    /// The f64 walk of the primary branch on them ([`Found::walk`]).
+    pub walk: Walk,
     /// The jump part of the analysis (no Hopf points, landings or first departure).
     pub analysis: Analysis,
     /// The index of the critical jump in `analysis.jump`.
@@ -70,10 +73,12 @@ pub(crate) fn exact_jump_part(
     };
     let zs_controls =
         |at: &[(Sym, f64)]| (eval_trim(&d.zs_delta_a, at), eval_trim(&d.zs_delta_r, at));
-    let (analysis, critical) = found.assemble(aircraft, delta_e_rad, &zs_controls);
+    let walk = found.walk(aircraft);
+    let (analysis, critical) = found.assemble(aircraft, delta_e_rad, &zs_controls, &walk);
     Ok(ExactJumpPart {
         d,
         found,
+        walk,
         analysis,
         critical,
     })

@@ -19,6 +19,7 @@
 //! ```
 
 use super::departure::{self, fold_window};
+use super::primary::Walk;
 use super::{
     analyze_with, check, exact_jump_part, parametric, withhold_zero_sideslip, Analysis,
     AnalysisError, AtTrim, Departures, ExactJumpPart, Found, InAileron, JumpPoint, LocalPolys,
@@ -207,6 +208,7 @@ fn exact_jumps_then_branch(aircraft: &Aircraft, delta_e_rad: f64) -> Option<Anal
     }
     let ExactJumpPart {
         found,
+        walk,
         mut analysis,
         critical,
         ..
@@ -234,6 +236,7 @@ fn exact_jumps_then_branch(aircraft: &Aircraft, delta_e_rad: f64) -> Option<Anal
         v: &v,
         trim_condition: &e.trim_condition,
         found: &found,
+        walk: &walk,
         divergence: &divergence,
         marks: (aircraft, delta_e_rad),
     };
@@ -370,7 +373,8 @@ fn certified_with<'v>(
             r_num.eval(&look) / r_den.eval(&look),
         )
     };
-    let (mut analysis, critical) = found.assemble(aircraft, delta_e_rad, &zs_controls);
+    let walk = found.walk(aircraft);
+    let (mut analysis, critical) = found.assemble(aircraft, delta_e_rad, &zs_controls, &walk);
     if departures == Part::Jump {
         return Ok((analysis, width));
     }
@@ -384,6 +388,7 @@ fn certified_with<'v>(
                 v: v(),
                 trim_condition: &e.trim_condition,
                 found: &found,
+                walk: &walk,
                 divergence: &divergence,
                 marks,
             };
@@ -392,7 +397,8 @@ fn certified_with<'v>(
         }
         input => input?,
     };
-    found.add_departures(&mut analysis, critical, &input.0, (aircraft, delta_e_rad));
+    let marks = (aircraft, delta_e_rad);
+    found.add_departures(&mut analysis, critical, &input.0, marks, &walk);
     Ok((analysis, width.max(input.1)))
 }
 
@@ -401,6 +407,8 @@ struct Branch<'a> {
     v: &'a Values,
     trim_condition: &'a IPoly2,
     found: &'a Found,
+    /// The f64 walk of the primary branch on `found` ([`Found::walk`]).
+    walk: &'a Walk,
     divergence: &'a [Bracket],
     marks: (&'a Aircraft, f64),
 }
@@ -431,6 +439,7 @@ impl Branch<'_> {
     ) -> Result<f64, Uncertified> {
         let (g, trims) = (&self.found.g, &self.found.trims);
         let bound = self.marks.0.aileron_range();
+        let start = departure::start(at, trims);
         let end = match critical {
             Some(i) => BranchEnd::Fold {
                 p0: analysis.jump[i].p0,
@@ -439,7 +448,7 @@ impl Branch<'_> {
             None => end,
         };
         // An unstable trim at the branch's start is the first departure: no Hopf root to seek.
-        let root = match departure::start(at, trims) {
+        let root = match start {
             super::unstable_trim::Start::Unstable(_) => None,
             _ => first_hopf_on_branch(self.v, end, MAX_WIDTH)?,
         };
@@ -481,15 +490,7 @@ impl Branch<'_> {
             }
             None => Vec::new(),
         };
-        let first = departure::first_departure(
-            at,
-            g,
-            trims,
-            &self.found.divergence,
-            &analysis.jump,
-            &hopf,
-            bound,
-        );
+        let first = departure::first_departure(start, &analysis.jump, &hopf, self.walk);
         // The f64 walk of the branch must agree with the certified one on which comes first
         // (without a critical jump, on the branch leaving the aileron range first).
         let kind = first.as_ref().map(|f| f.kind);

@@ -13,6 +13,7 @@
 //! back. Without aileron yaw the curve is a graph over P0 and never turns.
 
 use crate::specialise::{InAileron, Roots};
+use std::cell::RefCell;
 
 /// How the primary branch ends.
 #[derive(Clone, Debug, PartialEq)]
@@ -56,97 +57,160 @@ pub fn follow(
     jumps: &[(f64, f64)],
     max_abs_delta_a: f64,
 ) -> Outcome {
-    follow_to(g, det_a, divergence, jumps, max_abs_delta_a).0
+    let curve = Curve {
+        g,
+        det_a,
+        divergence,
+        bound: max_abs_delta_a,
+    };
+    let mut walker = match Walker::new(&curve) {
+        Ok(w) => w,
+        Err((end, _)) => return end,
+    };
+    loop {
+        match walker.advance(&curve) {
+            Ok(step) => {
+                if let Some((end, _)) = step.meets(jumps) {
+                    return end;
+                }
+            }
+            Err((end, _)) => return end,
+        }
+    }
 }
 
-/// [`follow`], with the roll rate its last step started from: the branch up to there holds
-/// none of `jumps` and no divergence roll rate (a jump root between there and the end of a
-/// step that meets a divergence roll rate is not reached). NaN once the curve has turned in
-/// P0: the roll rate then no longer tells how far along the branch the walk is.
-pub fn follow_to(
-    g: &InAileron,
-    det_a: &InAileron,
-    divergence: &[f64],
-    jumps: &[(f64, f64)],
-    max_abs_delta_a: f64,
-) -> (Outcome, f64) {
-    let graph = g.0.len() <= 2 && det_a.0.len() <= 1;
-    let max_step: f64 = if graph { MAX_STEP } else { TURN_STEP };
-    const MAX_STEPS: usize = 2_000_000;
-    let Some(mut da) = g.aileron_roots(0.0).nearest(0.0) else {
-        return (Outcome::Lost("no trim at P0 = 0"), 0.0);
-    };
-    if da.abs() > 1e-9 {
-        return (
-            Outcome::Lost("the trim at P0 = 0 needs aileron (n_p or delta_r break the symmetry)"),
-            0.0,
-        );
+/// The walk of [`follow`] made once and asked many times: the steps taken are kept, and a
+/// question about other jump roots reads them, walking on only past the last one kept. The
+/// steps do not depend on the jump roots (they only end the walk), so every answer is
+/// [`follow`]'s to the bit. A route asks about the branch up to three times at one point (where
+/// its certified walks end, the critical jump among the jump roots, the first departure among
+/// those and the Hopf points), each time from the same start.
+pub struct Walk {
+    g: InAileron,
+    det_a: InAileron,
+    divergence: Vec<f64>,
+    bound: f64,
+    walked: RefCell<Walked>,
+}
+
+/// What a [`Walk`] has walked so far.
+struct Walked {
+    /// The steps taken, in walk order; the last one ends the walk if it has an end.
+    steps: Vec<Step>,
+    /// The walk's state after them, or how it ended without a step.
+    walker: Result<Walker, (Outcome, f64)>,
+}
+
+impl Walk {
+    /// The walk of [`follow`] on these arguments (without the jump roots), none of it taken yet.
+    pub fn new(g: &InAileron, det_a: &InAileron, divergence: &[f64], max_abs_delta_a: f64) -> Walk {
+        let mut walk = Walk {
+            g: g.clone(),
+            det_a: det_a.clone(),
+            divergence: divergence.to_vec(),
+            bound: max_abs_delta_a,
+            walked: RefCell::new(Walked {
+                steps: Vec::new(),
+                walker: Err((Outcome::Lost("not started"), 0.0)),
+            }),
+        };
+        walk.walked.get_mut().walker = Walker::new(&walk.curve());
+        walk
     }
-    let (mut p, mut dir, mut slope) = (0.0f64, 1.0f64, 0.0f64);
-    // `p` while the curve has not turned in P0, NaN after.
-    let mut since = p;
-    // Whether the last step's change of delta_a was at most its length: then |slope| <= 1 and
-    // the next step is full, `max_step / |slope| >= max_step` (the division rounds
-    // monotonically), without waiting for the division that gives the slope (its latency was
-    // most of a step's time; the slope itself is only the prediction's, off the chain).
-    let mut full = true;
-    // After a turn: the side of the fold (+1 above, -1 below in delta_a) the curve continues on.
-    let mut turned: Option<f64> = None;
-    let sign_det_a = det_a.eval(0.0, 0.0).signum();
-    let mut ahead = Ahead::new(g, det_a);
-    for _ in 0..MAX_STEPS {
-        let h = if full {
-            max_step
-        } else {
-            max_step.min(max_step / slope.abs().max(1e-300)).max(1e-10)
-        };
-        let (p_new, roots, det_a_new) = ahead.step(p, dir * h, h == max_step);
-        let back_from_turn = turned.take();
-        let next = match (back_from_turn, roots.pair()) {
-            // The first step back from a turn: the two roots straddle the fold, and the curve
-            // goes on with the one on the other root's side of it. The nearest root to a
-            // prediction is no guide here (the pair is nearly symmetric about the fold, so a
-            // step lands about as close to either): choosing by it could hop back onto the
-            // branch just followed and walk it again, back and forth, without end.
-            (Some(side), Some([lower, upper])) => Some(if side > 0.0 { upper } else { lower }),
-            _ => roots.nearest(da + slope * dir * h),
-        };
-        let Some(da_new) = next else {
-            if back_from_turn.is_some() {
-                // No trim a step to either side: the curve closes within one step of P0.
-                return (
-                    Outcome::Lost("the equilibrium curve turns twice within one step"),
-                    since,
-                );
+
+    fn curve(&self) -> Curve<'_> {
+        Curve {
+            g: &self.g,
+            det_a: &self.det_a,
+            divergence: &self.divergence,
+            bound: self.bound,
+        }
+    }
+
+    /// How the branch ends with the jump roots `jumps` ([`follow`]), with the roll rate its
+    /// last step started from: the branch up to there holds none of `jumps` and no divergence
+    /// roll rate (a jump root between there and the end of a step that meets a divergence roll
+    /// rate is not reached). NaN once the curve has turned in P0: the roll rate then no longer
+    /// tells how far along the branch the walk is.
+    pub fn first(&self, jumps: &[(f64, f64)]) -> (Outcome, f64) {
+        let curve = self.curve();
+        let mut walked = self.walked.borrow_mut();
+        let Walked { steps, walker } = &mut *walked;
+        for step in steps.iter() {
+            if let Some(end) = step.meets(jumps) {
+                return end;
             }
-            // The two trims of this roll rate merged and vanished: the curve turns in P0 and
-            // continues on the other root, P0 running back.
-            dir = -dir;
-            since = f64::NAN;
-            let back = g.aileron_roots(p);
-            match back
-                .into_iter()
-                .filter(|r| (r - da).abs() > 0.0)
-                .min_by(|a, b| (a - da).abs().total_cmp(&(b - da).abs()))
-            {
-                Some(other) => {
-                    // Near the fold delta_a - delta_a_f ~ -+sqrt(P0_f - P0): the other root
-                    // leaves it as fast as this one came, the other way in delta_a per P0.
-                    // Keeping that slope keeps the first steps back as short as the last ones.
-                    turned = Some((other - da).signum());
-                    slope = -slope;
-                    da = other;
-                    continue;
+        }
+        // The state walks on as a local, whose fields stay in registers between steps.
+        let mut w = match walker {
+            Ok(w) => w.clone(),
+            Err(end) => return end.clone(),
+        };
+        let (end, state) = loop {
+            match w.advance(&curve) {
+                Ok(step) => {
+                    steps.push(step);
+                    if let Some(end) = step.meets(jumps) {
+                        break (end, Ok(w));
+                    }
                 }
-                None => return (Outcome::Lost("the equilibrium curve ends"), since),
+                Err(end) => break (end.clone(), Err(end)),
             }
         };
+        *walker = state;
+        end
+    }
+}
+
+/// What the walk follows: the trim condition, det A, the divergence roll rates and the aileron
+/// bound (as [`follow`]'s arguments).
+struct Curve<'a> {
+    g: &'a InAileron,
+    det_a: &'a InAileron,
+    divergence: &'a [f64],
+    bound: f64,
+}
+
+/// How a step ends the walk, whatever the jump roots.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum StepEnd {
+    /// It meets a divergence roll rate, or det A changes sign over it.
+    Divergence,
+    /// Its end lies beyond the aileron bound.
+    Unbounded,
+}
+
+/// One step of the walk, from `(p, da)` to `(p_new, da_new)`.
+#[derive(Clone, Copy, Debug)]
+struct Step {
+    p: f64,
+    p_new: f64,
+    da: f64,
+    da_new: f64,
+    /// The roll rate the step starts from, NaN once the curve has turned in P0.
+    since: f64,
+    end: Option<StepEnd>,
+}
+
+impl Step {
+    /// How the walk ends at this step with the jump roots `jumps` (a divergence before a jump
+    /// root, a jump root before the aileron bound), and the roll rate the step started from;
+    /// `None` when it goes on.
+    #[inline(always)]
+    fn meets(&self, jumps: &[(f64, f64)]) -> Option<(Outcome, f64)> {
+        let Step {
+            p,
+            p_new,
+            da,
+            da_new,
+            since,
+            end,
+        } = *self;
+        if end == Some(StepEnd::Divergence) {
+            return Some((Outcome::Divergence(p_new), since));
+        }
         // A jump root between p and p_new whose aileron is this branch's.
         let (lo, hi) = if p < p_new { (p, p_new) } else { (p_new, p) };
-        let diverges = divergence.iter().any(|d| *d > lo && *d <= hi);
-        if diverges || det_a_new.signum() != sign_det_a {
-            return (Outcome::Divergence(p_new), since);
-        }
         let hit = jumps
             .iter()
             .enumerate()
@@ -158,23 +222,161 @@ pub fn follow_to(
             })
             .min_by(|a, b| ((a.1 .0 - p).abs()).total_cmp(&(b.1 .0 - p).abs()));
         if let Some((i, _)) = hit {
-            return (Outcome::Jump(i), since);
+            return Some((Outcome::Jump(i), since));
         }
-        if da_new.abs() > max_abs_delta_a {
-            return (Outcome::Unbounded, since);
+        (end == Some(StepEnd::Unbounded)).then_some((Outcome::Unbounded, since))
+    }
+}
+
+/// The state of the walk between two steps.
+#[derive(Clone)]
+struct Walker {
+    max_step: f64,
+    p: f64,
+    da: f64,
+    dir: f64,
+    slope: f64,
+    /// `p` while the curve has not turned in P0, NaN after.
+    since: f64,
+    /// Whether the last step's change of delta_a was at most its length: then |slope| <= 1 and
+    /// the next step is full, `max_step / |slope| >= max_step` (the division rounds
+    /// monotonically), without waiting for the division that gives the slope (its latency was
+    /// most of a step's time; the slope itself is only the prediction's, off the chain).
+    full: bool,
+    /// After a turn: the side of the fold (+1 above, -1 below in delta_a) the curve continues
+    /// on.
+    turned: Option<f64>,
+    sign_det_a: f64,
+    ahead: Ahead,
+    /// The loop's rounds so far (steps and turns).
+    rounds: usize,
+}
+
+impl Walker {
+    /// The walk's start at `(0, 0)`, or how it ends there (with roll rate 0).
+    fn new(c: &Curve) -> Result<Walker, (Outcome, f64)> {
+        let graph = c.g.0.len() <= 2 && c.det_a.0.len() <= 1;
+        let Some(da) = c.g.aileron_roots(0.0).nearest(0.0) else {
+            return Err((Outcome::Lost("no trim at P0 = 0"), 0.0));
+        };
+        if da.abs() > 1e-9 {
+            return Err((
+                Outcome::Lost(
+                    "the trim at P0 = 0 needs aileron (n_p or delta_r break the symmetry)",
+                ),
+                0.0,
+            ));
         }
-        slope = (da_new - da) / (dir * h);
-        full = (da_new - da).abs() <= h;
-        da = da_new;
-        p = p_new;
-        if !since.is_nan() {
-            since = p;
+        Ok(Walker {
+            max_step: if graph { MAX_STEP } else { TURN_STEP },
+            p: 0.0,
+            da,
+            dir: 1.0,
+            slope: 0.0,
+            since: 0.0,
+            full: true,
+            turned: None,
+            sign_det_a: c.det_a.eval(0.0, 0.0).signum(),
+            ahead: Ahead::new(),
+            rounds: 0,
+        })
+    }
+
+    /// The next step of the walk (one that ends it is the last), or how the walk ends without
+    /// one (the curve ends or cannot be followed), with the roll rate its last step started
+    /// from.
+    #[inline(always)]
+    fn advance(&mut self, c: &Curve) -> Result<Step, (Outcome, f64)> {
+        const MAX_STEPS: usize = 2_000_000;
+        let max_step = self.max_step;
+        while self.rounds < MAX_STEPS {
+            self.rounds += 1;
+            let h = if self.full {
+                max_step
+            } else {
+                max_step
+                    .min(max_step / self.slope.abs().max(1e-300))
+                    .max(1e-10)
+            };
+            let (p, da, dir) = (self.p, self.da, self.dir);
+            let (p_new, roots, det_a_new) = self.ahead.step(c, p, dir * h, h == max_step);
+            let back_from_turn = self.turned.take();
+            let next = match (back_from_turn, roots.pair()) {
+                // The first step back from a turn: the two roots straddle the fold, and the
+                // curve goes on with the one on the other root's side of it. The nearest root
+                // to a prediction is no guide here (the pair is nearly symmetric about the
+                // fold, so a step lands about as close to either): choosing by it could hop
+                // back onto the branch just followed and walk it again, back and forth,
+                // without end.
+                (Some(side), Some([lower, upper])) => Some(if side > 0.0 { upper } else { lower }),
+                _ => roots.nearest(da + self.slope * dir * h),
+            };
+            let Some(da_new) = next else {
+                if back_from_turn.is_some() {
+                    // No trim a step to either side: the curve closes within one step of P0.
+                    return Err((
+                        Outcome::Lost("the equilibrium curve turns twice within one step"),
+                        self.since,
+                    ));
+                }
+                self.turn(c)?;
+                continue;
+            };
+            let (lo, hi) = if p < p_new { (p, p_new) } else { (p_new, p) };
+            let diverges = c.divergence.iter().any(|d| *d > lo && *d <= hi);
+            let mut step = Step {
+                p,
+                p_new,
+                da,
+                da_new,
+                since: self.since,
+                end: None,
+            };
+            if diverges || det_a_new.signum() != self.sign_det_a {
+                step.end = Some(StepEnd::Divergence);
+            } else if da_new.abs() > c.bound {
+                step.end = Some(StepEnd::Unbounded);
+            } else {
+                self.slope = (da_new - da) / (dir * h);
+                self.full = (da_new - da).abs() <= h;
+                self.da = da_new;
+                self.p = p_new;
+                if !self.since.is_nan() {
+                    self.since = p_new;
+                }
+            }
+            return Ok(step);
+        }
+        Err((
+            Outcome::Lost("the primary branch was followed for 2e6 steps without an end"),
+            self.since,
+        ))
+    }
+
+    /// The two trims of this roll rate merged and vanished: the curve turns in P0 and
+    /// continues on the other root, P0 running back; how the walk ends if there is none.
+    fn turn(&mut self, c: &Curve) -> Result<(), (Outcome, f64)> {
+        self.dir = -self.dir;
+        self.since = f64::NAN;
+        let da = self.da;
+        let back = c.g.aileron_roots(self.p);
+        match back
+            .into_iter()
+            .filter(|r| (r - da).abs() > 0.0)
+            .min_by(|a, b| (a - da).abs().total_cmp(&(b - da).abs()))
+        {
+            Some(other) => {
+                // Near the fold delta_a - delta_a_f ~ -+sqrt(P0_f - P0): the other root
+                // leaves it as fast as this one came, the other way in delta_a per P0.
+                // Keeping that slope keeps the first steps back as short as the last ones.
+                self.turned = Some((other - da).signum());
+                self.slope = -self.slope;
+                self.da = other;
+                Ok(())
+            }
+            None => Err((Outcome::Lost("the equilibrium curve ends"), self.since)),
         }
     }
-    (
-        Outcome::Lost("the primary branch was followed for 2e6 steps without an end"),
-        since,
-    )
 }
 
 /// How many full steps [`Ahead`] evaluates at once.
@@ -191,9 +393,8 @@ const LANES: usize = 4;
 /// ([`InAileron::aileron_roots_lanes`], [`InAileron::eval_lanes`]) they overlap, with the same
 /// values to the bit, so the walk takes the same steps to the same outcome. Evaluations past a
 /// step that is not full are dropped.
-struct Ahead<'a> {
-    g: &'a InAileron,
-    det_a: &'a InAileron,
+#[derive(Clone)]
+struct Ahead {
     /// The steps evaluated ahead, in walk order.
     steps: [AheadStep; LANES],
     /// The next unused entry of `steps` (`LANES`: none).
@@ -212,27 +413,25 @@ struct AheadStep {
     det_a: f64,
 }
 
-impl<'a> Ahead<'a> {
-    fn new(g: &'a InAileron, det_a: &'a InAileron) -> Ahead<'a> {
+impl Ahead {
+    fn new() -> Ahead {
         Ahead {
-            g,
-            det_a,
             steps: [AheadStep::default(); LANES],
             next: LANES,
         }
     }
 
-    /// The step of signed length `dh` from `p`: the roll rate it reaches, the roots in delta_a
-    /// there and det A there; `full` says the step has the largest length, so that the next
-    /// ones may be evaluated with it.
+    /// The step of signed length `dh` from `p` along `c`: the roll rate it reaches, the roots
+    /// in delta_a there and det A there; `full` says the step has the largest length, so that
+    /// the next ones may be evaluated with it.
     #[inline(always)]
-    fn step(&mut self, p: f64, dh: f64, full: bool) -> (f64, Roots, f64) {
+    fn step(&mut self, c: &Curve, p: f64, dh: f64, full: bool) -> (f64, Roots, f64) {
         let s = match self.steps.get(self.next) {
             Some(s) if s.from == p && s.dh == dh => *s,
             _ if !full => {
                 self.next = LANES;
                 let to = p + dh;
-                return (to, self.g.aileron_roots(to), self.det_a.eval(to, 0.0));
+                return (to, c.g.aileron_roots(to), c.det_a.eval(to, 0.0));
             }
             _ => {
                 let mut from = [p; LANES];
@@ -240,8 +439,8 @@ impl<'a> Ahead<'a> {
                     from[l] = from[l - 1] + dh;
                 }
                 let to = from.map(|f| f + dh);
-                let roots = self.g.aileron_roots_lanes(to);
-                let det_a = self.det_a.eval_lanes(to, 0.0);
+                let roots = c.g.aileron_roots_lanes(to);
+                let det_a = c.det_a.eval_lanes(to, 0.0);
                 self.steps = std::array::from_fn(|l| AheadStep {
                     from: from[l],
                     dh,
@@ -277,14 +476,20 @@ mod tests {
         let linear = InAileron(vec![poly(&[0.0, -0.7, 0.3]), poly(&[-2.1, 0.05, 0.4])]);
         let det_a = InAileron(vec![poly(&[3.0, 0.0, -1.7, 0.0, 0.21])]);
         for g in [&yawing, &linear] {
-            let mut ahead = Ahead::new(g, &det_a);
+            let c = Curve {
+                g,
+                det_a: &det_a,
+                divergence: &[],
+                bound: 1.0,
+            };
+            let mut ahead = Ahead::new();
             let mut p = 0.0f64;
             let full = 2e-2;
             let steps = [
                 full, full, 3e-3, full, full, full, full, full, -full, -full, full,
             ];
             for (k, h) in steps.into_iter().cycle().take(60).enumerate() {
-                let (p_new, roots, det) = ahead.step(p, h, h.abs() == full);
+                let (p_new, roots, det) = ahead.step(&c, p, h, h.abs() == full);
                 assert_eq!(p_new.to_bits(), (p + h).to_bits(), "step {k}");
                 let want = g.aileron_roots(p_new);
                 assert_eq!(roots.len(), want.len(), "step {k}");
@@ -294,6 +499,59 @@ mod tests {
                 assert_eq!(det.to_bits(), det_a.eval(p_new, 0.0).to_bits(), "step {k}");
                 p = p_new;
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod walk_tests {
+    use super::*;
+    use crate::roots::F64Poly;
+
+    /// A [`Walk`] asked about several jump lists, in either order (a short walk first, then one
+    /// past the steps kept, or the whole walk first), answers as [`follow`] walking afresh for
+    /// each, with the same roll rate of the last step whichever order.
+    #[test]
+    fn a_kept_walk_answers_as_a_fresh_one() {
+        let poly = |c: &[f64]| F64Poly(c.to_vec());
+        let yawing = InAileron(vec![
+            poly(&[0.0, -0.7, 0.3, 1.1e-3]),
+            poly(&[-2.1, 0.05, 0.4]),
+            poly(&[0.0, 0.013, 0.0, -0.002]),
+        ]);
+        let linear = InAileron(vec![poly(&[0.0, -0.7, 0.3]), poly(&[-2.1, 0.05, 0.4])]);
+        let det_a = InAileron(vec![poly(&[3.0, 0.0, -1.7, 0.0, 0.21])]);
+        for g in [&yawing, &linear] {
+            let on = |p: f64| (p, g.aileron_roots(p).nearest(0.0).unwrap());
+            let lists: Vec<Vec<(f64, f64)>> = vec![
+                vec![],
+                vec![on(0.05)],
+                vec![(0.3, 5.0), on(0.4), on(0.2)],
+                vec![(0.3, 5.0)],
+            ];
+            for divergence in [vec![], vec![0.6]] {
+                for bound in [0.1, 1.0] {
+                    let fresh: Vec<Outcome> = lists
+                        .iter()
+                        .map(|j| follow(g, &det_a, &divergence, j, bound))
+                        .collect();
+                    let forward = Walk::new(g, &det_a, &divergence, bound);
+                    let backward = Walk::new(g, &det_a, &divergence, bound);
+                    let ahead: Vec<_> = lists.iter().map(|j| forward.first(j)).collect();
+                    let mut behind: Vec<_> =
+                        lists.iter().rev().map(|j| backward.first(j)).collect();
+                    behind.reverse();
+                    for (k, want) in fresh.iter().enumerate() {
+                        assert_eq!(&ahead[k].0, want, "list {k}, bound {bound}");
+                        assert_eq!(&behind[k].0, want, "list {k}, bound {bound}");
+                        assert_eq!(ahead[k].1.to_bits(), behind[k].1.to_bits(), "list {k}");
+                    }
+                }
+            }
+            assert!(matches!(
+                follow(g, &det_a, &[], &[on(0.05)], 1.0),
+                Outcome::Jump(0)
+            ));
         }
     }
 }

@@ -14,7 +14,7 @@
 
 use super::{apart, at_trim_values, Branch, MAX_WIDTH};
 use crate::aircraft::{Aircraft, Param};
-use crate::analysis::primary::{follow_to, Outcome};
+use crate::analysis::primary::{Outcome, Walk};
 use crate::analysis::{Analysis, Found, InAileron, LocalPolys};
 use crate::certified::dense::{IPoly, IPoly2};
 use crate::certified::{
@@ -53,7 +53,8 @@ pub(super) fn on_branch(
         MAX_WIDTH,
     )?;
     let mut found = found(&t, &divergence);
-    let end = end(aircraft, &found, &divergence)?;
+    let walk = found.walk(aircraft);
+    let end = end(aircraft, &walk, &divergence)?;
     let jump = first_root_on_branch(&v, Det::Jump, end, MAX_WIDTH)?;
     if let Some((b, _)) = &jump {
         apart(&[*b], &divergence)?;
@@ -62,7 +63,8 @@ pub(super) fn on_branch(
         }
     }
     found.jump_roots = jump.iter().map(|(b, _)| b.value).collect();
-    let (mut analysis, critical) = found.assemble(aircraft, delta_e_rad, &|_| (f64::NAN, f64::NAN));
+    let no_zs = |_: &[_]| (f64::NAN, f64::NAN);
+    let (mut analysis, critical) = found.assemble(aircraft, delta_e_rad, &no_zs, &walk);
     // The f64 walk must reach the certified jump, at its aileron, and find none without it.
     let agrees = match (&jump, critical) {
         (Some((_, e)), Some(0)) => {
@@ -79,6 +81,7 @@ pub(super) fn on_branch(
         v: &v,
         trim_condition: &t.trim_condition,
         found: &found,
+        walk: &walk,
         divergence: &divergence,
         marks: (aircraft, delta_e_rad),
     };
@@ -95,16 +98,16 @@ pub(super) fn on_branch(
 }
 
 /// Where the walks along the branch end: at the aileron range, or where the f64 walk of the
-/// branch ([`follow_to`]) starts the step that meets the first divergence roll rate (the exact
+/// branch (`walk`, without jump roots) starts the step that meets the first divergence roll rate (the exact
 /// path reports the divergence there, and no jump root between there and the divergence: the
 /// jump determinant, which holds the factor `det(A)^2`, need not be decided up to it). Where
 /// the f64 walk meets it after the branch turned in P0, the walks end at the first divergence
 /// roll rate: the certified walk past the turn (in delta_a) does not cover a branch that comes
 /// back to it, and a root before the turn is one the f64 walk must reach too.
-fn end(aircraft: &Aircraft, f: &Found, divergence: &[Bracket]) -> Result<BranchEnd, Uncertified> {
+fn end(aircraft: &Aircraft, walk: &Walk, divergence: &[Bracket]) -> Result<BranchEnd, Uncertified> {
     let bound = aircraft.aileron_range();
     let first = divergence.first().map_or(f64::INFINITY, |b| b.lo);
-    let p0 = match follow_to(&f.g, &f.trims[0], &f.divergence, &[], bound) {
+    let p0 = match walk.first(&[]) {
         (Outcome::Divergence(_), p) if p < first => p,
         (Outcome::Divergence(_), p) if p.is_nan() => first,
         (Outcome::Divergence(_), _) => return Err(Uncertified::Sign),

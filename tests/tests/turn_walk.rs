@@ -176,3 +176,44 @@ fn the_walk_past_the_turn_brackets_the_exact_hopf_root() {
         assert!(matches!(root, Ok(None)), "{det:?}: {root:?}");
     }
 }
+
+/// Where the fine 1-g map of the F-16 (`envelope --altitude-m 0:14500:100 --mach
+/// 0.3:0.95:0.01`) fell back to the exact path next to the first divergence roll rate, the
+/// route certifies the exact path's answer with the jump determinant of the trim states
+/// (`det J5`, not `det J5 det(A)^2`, whose cancellation kept its bracket from narrowing). At
+/// 2,600 m, Mach 0.86 and 4,100 m, Mach 0.87 the critical jump lies within 0.006 rad/s of det
+/// A's root; at 900 m, Mach 0.83 the branch turns a few millionths of a rad/s below it, without
+/// a jump. The exact path's answers (`model analyze "jsbsim:f16 --altitude-m A --mach M" --exact
+/// --json`): critical jump roll rate (rad/s) and aileron (rad), the first departure that jump.
+#[test]
+fn fine_map_points_next_to_a_divergence_roll_rate_are_certified_with_the_exact_answer() {
+    if !support::jsbsim_installed() {
+        return;
+    }
+    for (altitude_m, mach, jump) in [
+        (900.0, 0.83, None),
+        (2600.0, 0.86, Some((3.135257236463953, -0.499058561832254))),
+        (4100.0, 0.87, Some((3.154000371287608, -0.5084207439946957))),
+    ] {
+        let ac = jet("f16", altitude_m, mach);
+        let (a, route) = analyze_first_departure(&ac, 0.0).unwrap();
+        let Route::Certified(w) = route else {
+            panic!("{altitude_m} m, Mach {mach}: {route:?}");
+        };
+        let at = |a: &Analysis| a.critical.as_ref().map(|c| (c.p0, c.delta_a_rad));
+        let first = |a: &Analysis| a.first_departure.as_ref().map(|d| (d.kind, d.p0));
+        match (at(&a), jump) {
+            (Some((p, d)), Some((q, f))) => {
+                assert!(support::close_roots(p, q, w), "{altitude_m} m: {p} vs {q}");
+                assert!((d - f).abs() <= 1e-6, "{altitude_m} m: {d} vs {f}");
+                let (kind, p) = first(&a).expect("a first departure");
+                assert!(kind == "jump" && support::close_roots(p, q, w));
+            }
+            (None, None) => assert_eq!(first(&a), None, "{altitude_m} m"),
+            (x, y) => panic!("{altitude_m} m, Mach {mach}: {x:?} vs {y:?}"),
+        }
+        if let Err(e) = same(&a, &analyze(&ac, 0.0).unwrap(), w) {
+            panic!("{altitude_m} m, Mach {mach}: {e}");
+        }
+    }
+}

@@ -16,11 +16,12 @@
 //! of the order of the width: the form's error grows as the width squared), the Taylor form by
 //! the second derivative's times the width squared (the error grows as its cube), so its
 //! pieces are several times wider for the same decision. The jump determinant `det J5 det(A)^2` on
-//! the trim is walked the same way ([`Det::Jump`]): its first sign change on the branch is the
-//! critical jump, without isolating the roots of the jump resultant on every other branch.
+//! the trim (or `det J5` of the trim states, where det A is proven nonzero) is walked the same
+//! way ([`Det::Jump`]): its first sign change on the branch is the critical jump, without
+//! isolating the roots of the jump resultant on every other branch.
 
 use super::characteristic::hopf_in;
-use super::compiled::Characteristic;
+use super::compiled::{Characteristic, Parametric};
 use super::dense::horner;
 use super::elimination::Scalar;
 use super::isolate::{Bracket, Uncertified};
@@ -30,6 +31,7 @@ use super::rolls::Unconstrained;
 use super::slope::{Slope, Taylor2};
 use super::turn::round_turn;
 use super::values::Values;
+use crate::derivation::{TrimProducts, TRIM_DEGREE};
 use crate::interval::I;
 
 /// How many pieces [`first_hopf_on_branch`] evaluates before it gives up: a long walk (the
@@ -520,6 +522,26 @@ where
     M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
     T: Num,
 {
+    let (num, den) = trim_states(&mut m, v, da, per_trim)?;
+    let r = hopf_in(
+        &mut m,
+        &Characteristic::get().c,
+        &v.lifted.hopf().c,
+        &num,
+        &den,
+    )
+    .ok()?;
+    Some(r.delta4().0)
+}
+
+/// The trim at the aileron `da` as numerators (constants in delta_a) over their denominator
+/// det A, or with `per_trim` the trim states themselves (the numerators divided by det A, the
+/// denominator 1); `None` where det A may vanish.
+fn trim_states<M, T>(m: &mut M, v: &Values, da: T, per_trim: bool) -> Option<([Da<T>; 4], Da<T>)>
+where
+    M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
+    T: Num,
+{
     let t = &v.lifted;
     let zero = T::constant(I::point(0.0));
     let mut den = m.lifted(&t.det_a);
@@ -531,31 +553,43 @@ where
         }
         den = Da::new([T::constant(I::point(1.0)), zero, zero, zero]);
     }
-    let num = trims.map(|x| Da::new([x, zero, zero, zero]));
-    let r = hopf_in(&mut m, &Characteristic::get().c, &t.hopf().c, &num, &den).ok()?;
-    Some(r.delta4().0)
+    Some((trims.map(|x| Da::new([x, zero, zero, zero])), den))
 }
 
-/// Whether the Hopf determinant is evaluated per trim state over the roll rates `x`
-/// ([`hopf_with`]): where det A, the trims' denominator, is proven nonzero over `x`.
+/// Whether the determinants are evaluated per trim state over the roll rates `x`
+/// ([`hopf_with`], [`jump_with`]): where det A, the trims' denominator, is proven nonzero over `x`.
 fn per_trim_over(v: &Values, x: I) -> bool {
     let det_a = v.lifted.det_a.0.first().map_or(&[][..], |c| &c.0[..]);
     !horner(det_a, x).contains_zero()
 }
 
-/// An enclosure of `det J5 det(A)^2` on the trim in the ring `m` with the aileron `da`, or
-/// `None` where it cannot be formed.
-fn jump_with<M, T>(mut m: M, v: &Values, da: T) -> Option<T>
+/// An enclosure of `det J5 det(A)^2` on the trim in the ring `m` with the aileron `da`, or with
+/// `per_trim` of `det J5` of the trim states themselves (the same sign and roots where det A
+/// does not vanish: the power is even), or `None` where it cannot be formed.
+///
+/// As the Hopf determinant's ([`hopf_with`]), the cleared form holds `det(A)^2` only through
+/// cancellation among products of the trim's numerators: next to a divergence roll rate its
+/// enclosure over a bracket is too wide for interval Newton to contract it.
+fn jump_with<M, T>(mut m: M, v: &Values, da: T, per_trim: bool) -> Option<T>
 where
     M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
     T: Num,
 {
-    let u = Unconstrained::new(&mut m, &v.lifted).ok()?;
-    Some(u.on_trim(&mut m, &v.lifted, true).at(da))
+    if !per_trim {
+        let u = Unconstrained::new(&mut m, &v.lifted).ok()?;
+        return Some(u.on_trim(&mut m, &v.lifted, true).at(da));
+    }
+    let (num, den) = trim_states(&mut m, v, da, true)?;
+    let mut products = TrimProducts::new(&mut m, &den, TRIM_DEGREE);
+    let c = &Parametric::get().det_j5;
+    Some(
+        m.clear_with(c, &v.lifted.det_j5, &num, &den, &mut products)
+            .at(da),
+    )
 }
 
-/// An enclosure of the determinant `det` in the ring `m` with the aileron `da` (the Hopf
-/// determinant with `per_trim` as [`hopf_with`]'s: the same choice over a piece and at its
+/// An enclosure of the determinant `det` in the ring `m` with the aileron `da` (per trim state
+/// or not as `per_trim`, [`hopf_with`], [`jump_with`]: the same choice over a piece and at its
 /// centre, so that a form of the two encloses one function).
 pub(super) fn det_with<M, T>(det: Det, m: M, v: &Values, da: T, per_trim: bool) -> Option<T>
 where
@@ -564,7 +598,7 @@ where
 {
     match det {
         Det::Hopf => hopf_with(m, v, da, per_trim),
-        Det::Jump => jump_with(m, v, da),
+        Det::Jump => jump_with(m, v, da, per_trim),
     }
 }
 
@@ -601,6 +635,29 @@ mod tests {
             let (x, y) = (cleared.mid(), per_trim.mid() * scale);
             assert!(per_trim_over(&v, I::point(p)), "P0 = {p}");
             assert!((x - y).abs() <= 1e-8 * x.abs(), "P0 = {p}: {x} vs {y}");
+        }
+    }
+
+    /// The jump determinant per trim state is the cleared one divided by `det(A)^2`: the same
+    /// sign and roots wherever det A does not vanish. Aircraft B with aileron yaw, as above.
+    #[test]
+    fn the_jump_determinant_per_trim_is_the_cleared_one_over_det_a_squared() {
+        let ac = Aircraft::b().with(Param::NDeltaA, BigRational::new((-3).into(), 2.into()));
+        let v = Values::of(&ac, 2f64.to_radians(), 0.0);
+        let det_a = &v.lifted.det_a.0[0].0;
+        for p in [0.3, 0.9, 1.4] {
+            let g = trim_condition(&v, p).unwrap();
+            let guess = root_near(&g, 0.0).unwrap();
+            let da = contract(&g, I::new(guess - 1e-9, guess + 1e-9));
+            let cleared = jump_with(AtP0(I::point(p)), &v, da, false).unwrap();
+            let per_trim = jump_with(AtP0(I::point(p)), &v, da, true).unwrap();
+            let scale = horner(det_a, I::point(p)).mid().powi(2);
+            let (x, y) = (cleared.mid(), per_trim.mid() * scale);
+            assert!(per_trim_over(&v, I::point(p)), "P0 = {p}");
+            assert!(
+                x != 0.0 && (x - y).abs() <= 1e-8 * x.abs(),
+                "P0 = {p}: {x} vs {y}"
+            );
         }
     }
 }

@@ -45,11 +45,40 @@ impl Range {
         if steps.is_nan() || steps >= MAX_POINTS as f64 {
             return Err(bad(&format!("more than {MAX_POINTS} points")));
         }
+        let parts: Vec<&str> = text.split(':').map(str::trim).collect();
+        let on_grid = decimal_grid(parts[0], parts[2]);
         let values = (0..=steps as usize)
-            .map(|i| start + i as f64 * step)
+            .map(|i| {
+                on_grid.map_or(start + i as f64 * step, |(a, d, scale)| {
+                    (a + i as f64 * d) / scale
+                })
+            })
             .collect();
         Ok(Range { values })
     }
+}
+
+/// The grid of `START` and `STEP` written as plain decimals, as integers of their finest
+/// decimal place and that place's scale: the grid's `i`-th value `(a + i d) / scale` is then the
+/// double nearest the decimal the user means (0.3:0.95:0.01 steps through 0.83, not
+/// 0.8300000000000001, which `0.3 + 53 * 0.01` gives), because the integers and the scale are
+/// exact in f64 and the division rounds once. `None` for exponents or more than 15 places.
+fn decimal_grid(start: &str, step: &str) -> Option<(f64, f64, f64)> {
+    let places = |t: &str| {
+        let plain = t
+            .bytes()
+            .all(|b| b.is_ascii_digit() || b == b'.' || b == b'-' || b == b'+');
+        plain.then(|| t.split_once('.').map_or(0, |(_, f)| f.len()))
+    };
+    let p = places(start)?.max(places(step)?);
+    if p > 15 {
+        return None;
+    }
+    let scale = 10f64.powi(p as i32);
+    let as_integer = |t: &str| t.replacen('.', "", 1).parse::<i64>().ok();
+    let shift = |t: &str| Some(as_integer(t)? as f64 * 10f64.powi((p - places(t)?) as i32));
+    let (a, d) = (shift(start)?, shift(step)?);
+    (a.abs() < 2f64.powi(53) && d.abs() < 2f64.powi(53)).then_some((a, d, scale))
 }
 
 /// What the speed axis of a grid holds: Mach numbers (`--mach`) or true airspeeds in m/s
@@ -199,6 +228,21 @@ mod tests {
             Range::parse("6096", "--altitude-m").unwrap().values,
             [6096.0]
         );
+    }
+
+    /// Every value of a decimal grid is the double nearest its decimal, as Rust parses it.
+    #[test]
+    fn a_decimal_range_steps_through_the_decimals_written() {
+        let r = Range::parse("0.3:0.95:0.01", "--mach").unwrap();
+        assert_eq!(r.values.len(), 66);
+        for (i, v) in r.values.iter().enumerate() {
+            let written: f64 = format!("0.{:02}", 30 + i).parse().unwrap();
+            assert_eq!(*v, written, "the value {i}");
+        }
+        let r = Range::parse("-1.5:2:0.25", "--x").unwrap();
+        assert_eq!(r.values[7], 0.25);
+        let r = Range::parse("1e2:3e2:50", "--x").unwrap();
+        assert_eq!(r.values, [100.0, 150.0, 200.0, 250.0, 300.0]);
     }
 
     #[test]

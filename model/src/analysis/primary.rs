@@ -462,11 +462,9 @@ mod tests {
     use super::*;
     use crate::roots::F64Poly;
 
-    /// The evaluations made ahead are those of the one-at-a-time evaluation, to the bit, for
-    /// full steps, shorter ones and a change of direction, with aileron yaw (quadratic in
-    /// delta_a) and without.
-    #[test]
-    fn evaluations_made_ahead_are_the_same_to_the_bit() {
+    /// Trim conditions with aileron yaw (quadratic in delta_a) and without, and a det A with
+    /// roots on both sides of P0 = 0: the curves the walk's tests follow.
+    fn curves() -> ([InAileron; 2], InAileron) {
         let poly = |c: &[f64]| F64Poly(c.to_vec());
         let yawing = InAileron(vec![
             poly(&[0.0, -0.7, 0.3, 1.1e-3]),
@@ -475,6 +473,15 @@ mod tests {
         ]);
         let linear = InAileron(vec![poly(&[0.0, -0.7, 0.3]), poly(&[-2.1, 0.05, 0.4])]);
         let det_a = InAileron(vec![poly(&[3.0, 0.0, -1.7, 0.0, 0.21])]);
+        ([yawing, linear], det_a)
+    }
+
+    /// The evaluations made ahead are those of the one-at-a-time evaluation, to the bit, for
+    /// full steps, shorter ones and a change of direction, with aileron yaw (quadratic in
+    /// delta_a) and without.
+    #[test]
+    fn evaluations_made_ahead_are_the_same_to_the_bit() {
+        let ([yawing, linear], det_a) = curves();
         for g in [&yawing, &linear] {
             let c = Curve {
                 g,
@@ -501,26 +508,13 @@ mod tests {
             }
         }
     }
-}
-
-#[cfg(test)]
-mod walk_tests {
-    use super::*;
-    use crate::roots::F64Poly;
 
     /// A [`Walk`] asked about several jump lists, in either order (a short walk first, then one
     /// past the steps kept, or the whole walk first), answers as [`follow`] walking afresh for
     /// each, with the same roll rate of the last step whichever order.
     #[test]
     fn a_kept_walk_answers_as_a_fresh_one() {
-        let poly = |c: &[f64]| F64Poly(c.to_vec());
-        let yawing = InAileron(vec![
-            poly(&[0.0, -0.7, 0.3, 1.1e-3]),
-            poly(&[-2.1, 0.05, 0.4]),
-            poly(&[0.0, 0.013, 0.0, -0.002]),
-        ]);
-        let linear = InAileron(vec![poly(&[0.0, -0.7, 0.3]), poly(&[-2.1, 0.05, 0.4])]);
-        let det_a = InAileron(vec![poly(&[3.0, 0.0, -1.7, 0.0, 0.21])]);
+        let ([yawing, linear], det_a) = curves();
         for g in [&yawing, &linear] {
             let on = |p: f64| (p, g.aileron_roots(p).nearest(0.0).unwrap());
             let lists: Vec<Vec<(f64, f64)>> = vec![

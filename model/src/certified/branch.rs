@@ -617,31 +617,23 @@ mod tests {
 
     /// The Hopf determinant per trim state is the cleared one divided by `det(A)^6` (the
     /// trims' denominator to the power the exact path's `det(A)^6 Delta4` names): the same
-    /// sign and roots wherever det A does not vanish. Aircraft B with aileron yaw
-    /// (n_delta_a = -1.5) at delta_e = 2 deg, on its branch below its first divergence roll
-    /// rate, det A evaluated from its own lifted polynomial.
+    /// sign and roots wherever det A does not vanish.
     #[test]
     fn the_hopf_determinant_per_trim_is_the_cleared_one_over_det_a_to_the_sixth() {
-        let ac = Aircraft::b().with(Param::NDeltaA, BigRational::new((-3).into(), 2.into()));
-        let v = Values::of(&ac, 2f64.to_radians(), 0.0);
-        let det_a = &v.lifted.det_a.0[0].0;
-        for p in [0.3, 0.9, 1.4] {
-            let g = trim_condition(&v, p).unwrap();
-            let guess = root_near(&g, 0.0).unwrap();
-            let da = contract(&g, I::new(guess - 1e-9, guess + 1e-9));
-            let cleared = hopf_with(AtP0(I::point(p)), &v, da, false).unwrap();
-            let per_trim = hopf_with(AtP0(I::point(p)), &v, da, true).unwrap();
-            let scale = horner(det_a, I::point(p)).mid().powi(6);
-            let (x, y) = (cleared.mid(), per_trim.mid() * scale);
-            assert!(per_trim_over(&v, I::point(p)), "P0 = {p}");
-            assert!((x - y).abs() <= 1e-8 * x.abs(), "P0 = {p}: {x} vs {y}");
-        }
+        per_trim_is_cleared_over_a_power_of_det_a(Det::Hopf, 6);
     }
 
     /// The jump determinant per trim state is the cleared one divided by `det(A)^2`: the same
-    /// sign and roots wherever det A does not vanish. Aircraft B with aileron yaw, as above.
+    /// sign and roots wherever det A does not vanish.
     #[test]
     fn the_jump_determinant_per_trim_is_the_cleared_one_over_det_a_squared() {
+        per_trim_is_cleared_over_a_power_of_det_a(Det::Jump, 2);
+    }
+
+    /// The determinant `det` per trim state times `det(A)^power` is the cleared one (nonzero),
+    /// on aircraft B with aileron yaw (n_delta_a = -1.5) at delta_e = 2 deg, on its branch
+    /// below its first divergence roll rate, det A evaluated from its own lifted polynomial.
+    fn per_trim_is_cleared_over_a_power_of_det_a(det: Det, power: i32) {
         let ac = Aircraft::b().with(Param::NDeltaA, BigRational::new((-3).into(), 2.into()));
         let v = Values::of(&ac, 2f64.to_radians(), 0.0);
         let det_a = &v.lifted.det_a.0[0].0;
@@ -649,14 +641,14 @@ mod tests {
             let g = trim_condition(&v, p).unwrap();
             let guess = root_near(&g, 0.0).unwrap();
             let da = contract(&g, I::new(guess - 1e-9, guess + 1e-9));
-            let cleared = jump_with(AtP0(I::point(p)), &v, da, false).unwrap();
-            let per_trim = jump_with(AtP0(I::point(p)), &v, da, true).unwrap();
-            let scale = horner(det_a, I::point(p)).mid().powi(2);
+            let cleared = det_with(det, AtP0(I::point(p)), &v, da, false).unwrap();
+            let per_trim = det_with(det, AtP0(I::point(p)), &v, da, true).unwrap();
+            let scale = horner(det_a, I::point(p)).mid().powi(power);
             let (x, y) = (cleared.mid(), per_trim.mid() * scale);
-            assert!(per_trim_over(&v, I::point(p)), "P0 = {p}");
+            assert!(per_trim_over(&v, I::point(p)), "{det:?}, P0 = {p}");
             assert!(
                 x != 0.0 && (x - y).abs() <= 1e-8 * x.abs(),
-                "P0 = {p}: {x} vs {y}"
+                "{det:?}, P0 = {p}: {x} vs {y}"
             );
         }
     }

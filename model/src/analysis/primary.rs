@@ -10,7 +10,9 @@
 //! it and in what order: the reported point is always the exact root. Along the curve, P0 is the
 //! parameter until the curve turns in P0 (the discriminant of the quadratic in delta_a vanishes:
 //! the two trims of a roll rate merge), where it continues on the other root with P0 running
-//! back. Without aileron yaw the curve is a graph over P0 and never turns.
+//! back. The turn itself is walked too: the arc up to the fold and back from it to the step's
+//! roll rate on the other root holds jump and Hopf points like any other piece of the branch.
+//! Without aileron yaw the curve is a graph over P0 and never turns.
 
 use crate::specialise::{InAileron, Roots};
 use std::cell::RefCell;
@@ -246,6 +248,9 @@ struct Walker {
     /// After a turn: the side of the fold (+1 above, -1 below in delta_a) the curve continues
     /// on.
     turned: Option<f64>,
+    /// After a turn: the arc back from the fold to the roll rate the turn was found from, the
+    /// next step taken.
+    from_fold: Option<Step>,
     sign_det_a: f64,
     ahead: Ahead,
     /// The loop's rounds so far (steps and turns).
@@ -276,6 +281,7 @@ impl Walker {
             since: 0.0,
             full: true,
             turned: None,
+            from_fold: None,
             sign_det_a: c.det_a.eval(0.0, 0.0).signum(),
             ahead: Ahead::new(),
             rounds: 0,
@@ -289,6 +295,9 @@ impl Walker {
     fn advance(&mut self, c: &Curve) -> Result<Step, (Outcome, f64)> {
         const MAX_STEPS: usize = 2_000_000;
         let max_step = self.max_step;
+        if let Some(step) = self.from_fold.take() {
+            return Ok(step);
+        }
         while self.rounds < MAX_STEPS {
             self.rounds += 1;
             let h = if self.full {
@@ -319,24 +328,17 @@ impl Walker {
                         self.since,
                     ));
                 }
-                self.turn(c)?;
-                continue;
+                return self.turn(c, p + dir * h);
             };
-            let (lo, hi) = if p < p_new { (p, p_new) } else { (p_new, p) };
-            let diverges = c.divergence.iter().any(|d| *d > lo && *d <= hi);
-            let mut step = Step {
+            let step = Step {
                 p,
                 p_new,
                 da,
                 da_new,
                 since: self.since,
-                end: None,
+                end: self.end_of(c, p, p_new, da_new, det_a_new),
             };
-            if diverges || det_a_new.signum() != self.sign_det_a {
-                step.end = Some(StepEnd::Divergence);
-            } else if da_new.abs() > c.bound {
-                step.end = Some(StepEnd::Unbounded);
-            } else {
+            if step.end.is_none() {
                 self.slope = (da_new - da) / (dir * h);
                 self.full = (da_new - da).abs() <= h;
                 self.da = da_new;
@@ -353,28 +355,95 @@ impl Walker {
         ))
     }
 
-    /// The two trims of this roll rate merged and vanished: the curve turns in P0 and
-    /// continues on the other root, P0 running back; how the walk ends if there is none.
-    fn turn(&mut self, c: &Curve) -> Result<(), (Outcome, f64)> {
+    /// How a step from `p` to `(p_new, da_new)`, det A being `det_a_new` there, ends the walk:
+    /// at a divergence roll rate between, or det A's sign changed, or beyond the aileron bound.
+    fn end_of(
+        &self,
+        c: &Curve,
+        p: f64,
+        p_new: f64,
+        da_new: f64,
+        det_a_new: f64,
+    ) -> Option<StepEnd> {
+        let (lo, hi) = if p < p_new { (p, p_new) } else { (p_new, p) };
+        let diverges = c.divergence.iter().any(|d| *d > lo && *d <= hi);
+        if diverges || det_a_new.signum() != self.sign_det_a {
+            Some(StepEnd::Divergence)
+        } else if da_new.abs() > c.bound {
+            Some(StepEnd::Unbounded)
+        } else {
+            None
+        }
+    }
+
+    /// The two trims of this roll rate merge and vanish before `beyond` (where there is none):
+    /// the curve turns in P0 and continues on the other root, P0 running back. The step
+    /// returned walks the arc up to the fold; the next one ([`Walker::from_fold`]) walks the
+    /// arc back from the fold on the other root to this roll rate, and the walk goes on from
+    /// there. Both arcs are the branch's: a jump or Hopf point on either is met there, not
+    /// stepped over. How the walk ends if there is no other root.
+    fn turn(&mut self, c: &Curve, beyond: f64) -> Result<Step, (Outcome, f64)> {
+        let (p, da, since) = (self.p, self.da, self.since);
         self.dir = -self.dir;
         self.since = f64::NAN;
-        let da = self.da;
-        let back = c.g.aileron_roots(self.p);
-        match back
-            .into_iter()
-            .filter(|r| (r - da).abs() > 0.0)
-            .min_by(|a, b| (a - da).abs().total_cmp(&(b - da).abs()))
-        {
-            Some(other) => {
-                // Near the fold delta_a - delta_a_f ~ -+sqrt(P0_f - P0): the other root
-                // leaves it as fast as this one came, the other way in delta_a per P0.
-                // Keeping that slope keeps the first steps back as short as the last ones.
-                self.turned = Some((other - da).signum());
-                self.slope = -self.slope;
-                self.da = other;
-                Ok(())
-            }
-            None => Err((Outcome::Lost("the equilibrium curve ends"), self.since)),
+        let Some(other) =
+            c.g.aileron_roots(p)
+                .into_iter()
+                .filter(|r| (r - da).abs() > 0.0)
+                .min_by(|a, b| (a - da).abs().total_cmp(&(b - da).abs()))
+        else {
+            return Err((Outcome::Lost("the equilibrium curve ends"), self.since));
+        };
+        // Near the fold delta_a - delta_a_f ~ -+sqrt(P0_f - P0): the other root leaves it as
+        // fast as this one came, the other way in delta_a per P0. Keeping that slope keeps the
+        // first steps back as short as the last ones.
+        self.turned = Some((other - da).signum());
+        self.slope = -self.slope;
+        self.da = other;
+        let (p_fold, [lower, upper]) = fold(c.g, p, beyond);
+        let (near, far) = if da < other {
+            (lower, upper)
+        } else {
+            (upper, lower)
+        };
+        let det_a_fold = c.det_a.eval(p_fold, 0.0);
+        let to_fold = Step {
+            p,
+            p_new: p_fold,
+            da,
+            da_new: near,
+            since,
+            end: self.end_of(c, p, p_fold, near, det_a_fold),
+        };
+        if to_fold.end.is_none() {
+            self.from_fold = Some(Step {
+                p: p_fold,
+                p_new: p,
+                da: far,
+                da_new: other,
+                since: f64::NAN,
+                end: self.end_of(c, p_fold, p, other, c.det_a.eval(p, 0.0)),
+            });
+        }
+        Ok(to_fold)
+    }
+}
+
+/// The fold of the trim condition `g` between `p`, where it has two roots in delta_a, and
+/// `beyond`, where it has none, by bisection on whether the two roots exist: the last roll rate
+/// found with them (within rounding of the fold) and the two roots there, ascending.
+fn fold(g: &InAileron, mut p: f64, mut beyond: f64) -> (f64, [f64; 2]) {
+    let Some(mut pair) = g.aileron_roots(p).pair() else {
+        return (p, [f64::NAN; 2]);
+    };
+    loop {
+        let m = p + (beyond - p) / 2.0;
+        if m == p || m == beyond {
+            return (p, pair);
+        }
+        match g.aileron_roots(m).pair() {
+            Some(r) => (p, pair) = (m, r),
+            None => beyond = m,
         }
     }
 }

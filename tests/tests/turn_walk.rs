@@ -11,6 +11,7 @@ use model::analysis::{analyze, Analysis};
 use model::certified::{first_root_on_branch, BranchEnd, Det, TrimPolys, Values};
 use model::jsbsim::condition::Speed;
 use model::jsbsim::import::{import, Alpha, Request};
+use model::pss_model::{Controls, PssModel};
 
 /// `model` imported at `altitude_m`, `mach`, trimmed at 1 g.
 fn jet(model: &str, altitude_m: f64, mach: f64) -> Aircraft {
@@ -213,6 +214,173 @@ fn fine_map_points_next_to_a_divergence_roll_rate_are_certified_with_the_exact_a
             (x, y) => panic!("{altitude_m} m, Mach {mach}: {x:?} vs {y:?}"),
         }
         if let Err(e) = same(&a, &analyze(&ac, 0.0).unwrap(), w) {
+            panic!("{altitude_m} m, Mach {mach}: {e}");
+        }
+    }
+}
+
+/// A point of the PSS equilibrium curve `f(x, delta_a) = 0` (Appendix A.2, at delta_e = 0):
+/// the state `[alpha, beta, p, q, r]` and the aileron.
+type Y = nalgebra::SVector<f64, 6>;
+
+/// `f` at `y` and its 5x6 Jacobian in `(x, delta_a)` by central differences: the equations of
+/// motion themselves, apart from the trim condition the walks follow.
+fn pss(m: &PssModel, y: &Y) -> (nalgebra::SVector<f64, 5>, nalgebra::SMatrix<f64, 5, 6>) {
+    let f = |y: &Y| {
+        let x = [y[0], y[1], y[2], y[3], y[4]];
+        let u = Controls {
+            delta_a: y[5],
+            ..Controls::default()
+        };
+        nalgebra::SVector::<f64, 5>::from(m.rhs(&x, &u))
+    };
+    let mut d = nalgebra::SMatrix::<f64, 5, 6>::zeros();
+    for j in 0..6 {
+        let h = 1e-7 * (1.0 + y[j].abs());
+        let (mut a, mut b) = (*y, *y);
+        a[j] += h;
+        b[j] -= h;
+        d.set_column(j, &((f(&a) - f(&b)) / (2.0 * h)));
+    }
+    (f(y), d)
+}
+
+/// Newton's method on `f = 0` with `t . (y - at) = s`, from `at + s t`: the curve's point `s`
+/// along the tangent `t` from `at` (pseudo-arclength), or `None` without convergence.
+fn corrected(m: &PssModel, at: &Y, t: &Y, s: f64) -> Option<Y> {
+    let mut y = at + t * s;
+    for _ in 0..12 {
+        let (f, d) = pss(m, &y);
+        let mut a = nalgebra::SMatrix::<f64, 6, 6>::zeros();
+        a.fixed_view_mut::<5, 6>(0, 0).copy_from(&d);
+        a.set_row(5, &t.transpose());
+        let mut rhs = nalgebra::SVector::<f64, 6>::zeros();
+        rhs.fixed_rows_mut::<5>(0).copy_from(&f);
+        rhs[5] = t.dot(&(y - at)) - s;
+        let dy = a.lu().solve(&rhs)?;
+        y -= dy;
+        if dy.norm() <= 1e-12 * (1.0 + y.norm()) {
+            return Some(y);
+        }
+    }
+    None
+}
+
+/// The unit tangent of the curve at `y`, oriented along `prev`.
+fn tangent(m: &PssModel, y: &Y, prev: &Y) -> Y {
+    let (_, d) = pss(m, y);
+    let mut a = nalgebra::SMatrix::<f64, 6, 6>::zeros();
+    a.fixed_view_mut::<5, 6>(0, 0).copy_from(&d);
+    a.set_row(5, &prev.transpose());
+    let mut e = Y::zeros();
+    e[5] = 1.0;
+    let t = a.lu().solve(&e).unwrap();
+    t / t.norm()
+}
+
+/// The largest real part of the eigenvalues of the state Jacobian at `y`, and whether that
+/// eigenvalue is one of a complex pair (an oscillatory mode).
+fn stability(m: &PssModel, y: &Y) -> (f64, bool) {
+    let (_, d) = pss(m, y);
+    let j: nalgebra::SMatrix<f64, 5, 5> = d.fixed_view::<5, 5>(0, 0).into();
+    let l = j.complex_eigenvalues();
+    let top = l.iter().max_by(|a, b| a.re.total_cmp(&b.re)).unwrap();
+    (top.re, top.im.abs() > 1e-6)
+}
+
+/// The PSS equilibrium curve of `ac` continued by pseudo-arclength from the wings-level trim
+/// (`P0 = 0, delta_a = 0`) towards `P0 > 0`, up to the first loss of stability (the largest
+/// real part of J5's eigenvalues crossing zero, located by bisection along the arc): the
+/// largest roll rate reached before it (the turn in P0 if the curve came back), that point
+/// `(P0, delta_a)`, whether P0 runs back there (the curve's tangent, oriented along the walk,
+/// has dP0/ds < 0: the point lies past the turn) and whether the mode that loses stability is
+/// oscillatory (a Hopf point).
+fn first_loss_of_stability(ac: &Aircraft) -> (f64, (f64, f64), bool, bool) {
+    let m = PssModel::new(ac);
+    let mut up = Y::zeros();
+    up[2] = 1.0;
+    let mut y = corrected(&m, &Y::zeros(), &up, 0.0).expect("the trim at P0 = 0");
+    let mut t = tangent(&m, &y, &up);
+    let (re0, _) = stability(&m, &y);
+    assert!(re0 < 0.0, "the wings-level trim is unstable: {re0}");
+    let (mut ds, mut p_max) = (1e-3, 0.0f64);
+    for _ in 0..200_000 {
+        let Some(next) = corrected(&m, &y, &t, ds) else {
+            ds /= 2.0;
+            assert!(ds > 1e-12, "the continuation stalls at {y:?}");
+            continue;
+        };
+        let (re, _) = stability(&m, &next);
+        if re >= 0.0 {
+            let (mut lo, mut hi) = (0.0, ds);
+            for _ in 0..60 {
+                let mid = (lo + hi) / 2.0;
+                let z = corrected(&m, &y, &t, mid).unwrap();
+                if stability(&m, &z).0 < 0.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            let z = corrected(&m, &y, &t, lo).unwrap();
+            let back = tangent(&m, &z, &t)[2] < 0.0;
+            return (p_max.max(z[2]), (z[2], z[5]), back, stability(&m, &z).1);
+        }
+        p_max = p_max.max(next[2]);
+        t = tangent(&m, &next, &t);
+        y = next;
+        assert!(y[5].abs() <= ac.aileron_range(), "no loss of stability");
+        ds = (ds * 1.2).min(2e-3);
+    }
+    panic!("the continuation did not reach a loss of stability");
+}
+
+/// The F-16 at 12,800 m, Mach 0.76 and 13,800 m, Mach 0.77, 1 g: continued from the
+/// wings-level trim by pseudo-arclength on the PSS equations of motion (central differences,
+/// nalgebra), the equilibrium curve turns in P0 (at the trim condition's turn, by bisection on
+/// its discriminant) and, on the arc coming back from the turn, the largest real part of J5's
+/// eigenvalues crosses zero at a complex pair: a Hopf point, the branch's first loss of
+/// stability (outside the model's validity range, as at 12,500 m, Mach 0.75). Both routes
+/// report it as the first departure, at its roll rate and aileron: the walk of the branch
+/// steps across the turn, and without walking the arc to the fold and back it misses it.
+#[test]
+fn the_hopf_point_on_the_arc_back_from_a_turn_is_the_first_departure() {
+    if !support::jsbsim_installed() {
+        return;
+    }
+    for (altitude_m, mach) in [(12800.0, 0.76), (13800.0, 0.77)] {
+        let ac = jet("f16", altitude_m, mach);
+        let (p_max, (p0, da), back, oscillatory) = first_loss_of_stability(&ac);
+        let (p_turn, _) = turn(&Values::of(&ac, 0.0, 0.0), p_max - 1e-3, p_max + 1e-3);
+        assert!(oscillatory, "{altitude_m} m: not a Hopf point");
+        assert!(
+            (p_max - p_turn).abs() <= 1e-6,
+            "{altitude_m} m: turn {p_max} vs {p_turn}"
+        );
+        assert!(
+            back && p0 < p_turn,
+            "{altitude_m} m: {p0} is not past the turn {p_turn}"
+        );
+        let exact = analyze(&ac, 0.0).unwrap();
+        let (a, route) = analyze_first_departure(&ac, 0.0).unwrap();
+        let Route::Certified(w) = route else {
+            panic!("{altitude_m} m, Mach {mach}: {route:?}");
+        };
+        for (name, b) in [("exact", &exact), ("certified", &a)] {
+            let d = b.first_departure.as_ref();
+            let d = d.unwrap_or_else(|| panic!("{altitude_m} m, {name}: no first departure"));
+            assert_eq!(d.kind, "hopf", "{altitude_m} m, {name}");
+            assert!(
+                (d.p0 - p0).abs() <= 1e-7,
+                "{altitude_m} m, {name}: {} vs {p0}",
+                d.p0
+            );
+            assert!(
+                (d.delta_a_rad - da).abs() <= 1e-6,
+                "{altitude_m} m, {name}: {d:?} vs {da}"
+            );
+        }
+        if let Err(e) = same(&a, &exact, w) {
             panic!("{altitude_m} m, Mach {mach}: {e}");
         }
     }

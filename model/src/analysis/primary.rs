@@ -617,4 +617,27 @@ mod tests {
             ));
         }
     }
+
+    /// A branch that turns in P0 between two steps: `0.5 delta_a^2 + delta_a + k P0 = 0`
+    /// through `(0, 0)` turns at `P0 = 1 / (2k)`, `delta_a = -1`, and comes back on
+    /// `delta_a = -1 - sqrt(1 - 2k P0)`. A jump root a hair before the fold, on the arc up to
+    /// it or on the arc back from it (its aileron from the formula, apart from the walk), is
+    /// met, however close to the fold the walk's last step before it ends.
+    #[test]
+    fn a_root_on_either_arc_of_a_turn_is_met() {
+        let poly = |c: &[f64]| F64Poly(c.to_vec());
+        let det_a = InAileron(vec![poly(&[1.0])]);
+        for p_fold in [0.50045, 0.3337, 0.7071] {
+            let k = 0.5 / p_fold;
+            let g = InAileron(vec![poly(&[0.0, k]), poly(&[1.0]), poly(&[0.5])]);
+            for below in [1e-9, 1e-7, 1e-5] {
+                let p = p_fold - below;
+                let s = (1.0 - 2.0 * k * p).sqrt();
+                for (arc, da) in [("up", -1.0 + s), ("back", -1.0 - s)] {
+                    let end = follow(&g, &det_a, &[], &[(p, da)], 10.0);
+                    assert_eq!(end, Outcome::Jump(0), "fold {p_fold}, {below} below, {arc}");
+                }
+            }
+        }
+    }
 }

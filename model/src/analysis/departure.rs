@@ -73,6 +73,18 @@ pub struct FirstDeparture {
     pub delta_a_rad: f64,
     /// The same in degrees.
     pub delta_a_deg: f64,
+    /// For a jump or Hopf point: the trim's angle of attack there, rad (the increment from the
+    /// analysed trim, as in the jump and Hopf tables).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub alpha: Option<f64>,
+    /// For a jump or Hopf point: the trim's sideslip there, rad.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub beta: Option<f64>,
+    /// For a jump or Hopf point: whether |alpha| and |beta| there lie within the `[validity]`
+    /// range of the linear aerodynamics. Outside it the departure is the model's, which the
+    /// aircraft's aerodynamics need not share.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub within_validity: Option<bool>,
     /// For a Hopf point: its frequency, rad/s.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub omega: Option<f64>,
@@ -98,6 +110,9 @@ impl FirstDeparture {
             p0: 0.0,
             delta_a_rad: 0.0,
             delta_a_deg: 0.0,
+            alpha: None,
+            beta: None,
+            within_validity: None,
             omega: None,
             l1: None,
             hopf_kind: None,
@@ -650,6 +665,9 @@ pub(crate) fn first_departure(
             p0: j.p0,
             delta_a_rad: j.delta_a_rad,
             delta_a_deg: j.delta_a_deg,
+            alpha: Some(j.alpha),
+            beta: Some(j.beta),
+            within_validity: Some(j.within_validity),
             omega: None,
             l1: None,
             hopf_kind: None,
@@ -663,6 +681,9 @@ pub(crate) fn first_departure(
         p0: hp.point.p0,
         delta_a_rad: hp.point.delta_a_rad,
         delta_a_deg: hp.point.delta_a_deg,
+        alpha: Some(hp.point.alpha),
+        beta: Some(hp.point.beta),
+        within_validity: Some(hp.point.within_validity),
         omega: Some(hp.omega),
         l1: Some(hp.l1),
         hopf_kind: Some(hp.kind),

@@ -183,6 +183,14 @@ pub fn departure_kind(p: &Point) -> &'static str {
     }
 }
 
+/// Whether the first departure at `p` is a jump or Hopf point whose trim lies outside the
+/// aircraft's validity range.
+fn beyond_validity(p: &Point) -> bool {
+    p.first_departure
+        .as_ref()
+        .is_some_and(|d| d.within_validity == Some(false))
+}
+
 /// The headers of the flight state's columns that begin every table's rows: altitude, Mach and
 /// true airspeed, whichever the grid steps over.
 pub const STATE_HEADER: &str = "altitude_m   mach   V_m_s";
@@ -244,6 +252,10 @@ pub fn text(env: &Envelope) -> String {
                 _ if hopf_only =>
                     "hopf (no jump: p0, delta_a, margin of the Hopf point)".to_string(),
                 _ => departure_kind(p).to_string(),
+            } + if beyond_validity(p) {
+                "  [outside validity range]"
+            } else {
+                ""
             }
         );
     }
@@ -268,6 +280,14 @@ pub fn text(env: &Envelope) -> String {
             "{unstable} with an unstable trim at P0 = 0 (first_departure unstable_trim): the bare \
              airframe needs its stability augmentation there, and their jump figures describe an \
              airframe that cannot hold the trim unaided\n"
+        );
+    }
+    let beyond = env.points.iter().filter(|p| beyond_validity(p)).count();
+    if beyond > 0 {
+        s += &format!(
+            "{beyond} whose first departure lies outside the validity range (|alpha| or |beta| \
+             of its trim beyond the aircraft's [validity]): a departure of the linear \
+             aerodynamics, which the aircraft's own need not share\n"
         );
     }
     s += &warnings_text(env);

@@ -17,7 +17,8 @@ pub fn csv(env: &Envelope) -> String {
         "altitude_m,mach,speed_m_s,trimmed,alpha_deg,elevator_trim_deg,delta_e_deg,\
          critical_p0_rad_s,\
          critical_delta_a_deg,within_limits,aileron_limit_deg,margin_deg,first_departure,\
-         first_departure_p0_rad_s,first_departure_delta_a_deg,route",
+         first_departure_p0_rad_s,first_departure_delta_a_deg,first_departure_within_validity,\
+         route",
     );
     if cleared {
         s += CSV_HEADER;
@@ -48,6 +49,8 @@ pub fn csv(env: &Envelope) -> String {
             departure_kind(p).replace('-', ""),
             num(d.map(|d| d.p0)),
             num(d.map(|d| d.delta_a_deg)),
+            d.and_then(|d| d.within_validity)
+                .map_or(String::new(), |w| w.to_string()),
             p.route.unwrap_or("").to_string(),
         ];
         if cleared {

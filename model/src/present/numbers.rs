@@ -35,8 +35,8 @@ pub fn list(v: &[f64], digits: usize, unit: &str) -> String {
 
 /// Which instability the primary branch meets first (an unstable trim at its start with its
 /// unstable modes, a jump, or a Hopf point with its frequency, first Lyapunov coefficient and
-/// kind) and where a jump lands, as `analyze` prints it and the summary repeats it: lines
-/// ending in a blank line.
+/// kind, marked where its trim lies outside the validity range) and where a jump lands, as
+/// `analyze` prints it and the summary repeats it: lines ending in a blank line.
 pub fn first_departure_text(a: &Analysis) -> String {
     let Some(f) = &a.first_departure else {
         return "First loss of stability on the primary branch: none within the aileron range.\n\n"
@@ -57,6 +57,9 @@ pub fn first_departure_text(a: &Analysis) -> String {
             fixed(w, 4),
             significant(l1)
         );
+    }
+    if let (Some(alpha), Some(beta)) = (f.alpha, f.beta) {
+        s += &validity_mark(alpha, beta, a);
     }
     s += "\n";
     if let Some(l) = &f.lands_at {
@@ -194,5 +197,26 @@ mod tests {
         assert_eq!(fixed(2.5, 1), "2.5");
         assert_eq!(list(&[], 6, "rad/s"), "none");
         assert_eq!(list(&[1.0, -0.0], 2, "rad/s"), "1.00, 0.00 rad/s");
+    }
+
+    #[test]
+    fn a_first_departure_outside_the_validity_range_says_so_on_its_line() {
+        let mut a = crate::analysis::analyze(&crate::aircraft::Aircraft::a(), 0.0349).unwrap();
+        let mut f = a.first_departure.clone().unwrap();
+        let line = |a: &Analysis| first_departure_text(a).lines().next().unwrap().to_string();
+        a.first_departure = Some(f.clone());
+        assert!(!line(&a).contains("outside"), "{}", line(&a));
+        // A trim 158.8 deg of alpha and 40 deg of sideslip from the analysed one: both beyond
+        // aircraft A's default range of 30 deg.
+        f.alpha = Some(158.8f64.to_radians());
+        f.beta = Some(-40f64.to_radians());
+        a.first_departure = Some(f);
+        assert!(
+            line(&a).ends_with(
+                "  [outside validity range: |alpha| = 158.8 deg > 30 deg, |beta| = 40.0 deg > 30 deg]"
+            ),
+            "{}",
+            line(&a)
+        );
     }
 }

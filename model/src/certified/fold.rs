@@ -58,7 +58,8 @@ pub fn fold_intervals(
     for k in 0..3 {
         let r = first * 4f64.powi(k);
         let x = (fold.value - r, fold.value + r);
-        if !(x.0 <= fold.lo && fold.hi <= x.1) || !one_curvature(&at_d, I::new(x.0, x.1)) {
+        let holds = x.0 <= fold.lo && fold.hi <= x.1;
+        if !(holds && one_curvature(&at_d, I::new(x.0, x.1))) {
             break;
         }
         out.push(x);

@@ -385,3 +385,63 @@ fn the_hopf_point_on_the_arc_back_from_a_turn_is_the_first_departure() {
         }
     }
 }
+
+/// Where the fine 1-g maps of the F-16 and the T-38 (`envelope --altitude-m 0:14500:100 --mach
+/// 0.3:0.95:0.01`) fell back for the critical jump's landings, the route certifies the exact
+/// path's critical jump, first departure and landings. At the route's aileron, 1e-13 to 2e-11
+/// rad off the fold's, the fold's double root splits into two roots a few millionths of a
+/// rad/s either side of it (T-38 at 2,400 m, Mach 0.48, 4,400 m, Mach 0.61, 7,400 m, Mach 0.91;
+/// F-16 at 11,500 m, Mach 0.94), which only the proof that the trim condition has no other
+/// root around the fold leaves out; the landings themselves (a slope of 7e-3 at the T-38's
+/// 2.2547 rad/s; the F-16's at 1,300 m, Mach 0.85, next to det A's root) need the trim
+/// condition evaluated through the trim states to be bracketed within 1e-9.
+///
+/// The exact path's own aileron (1.3e-12 rad off the fold's at the T-38's 4,400 m, Mach 0.61,
+/// and at 7,400 m, Mach 0.91) splits the fold too, and it lists one root of the pair as a
+/// landing (`model analyze --exact`: "lands at P0 = 2.405892 rad/s (jump -0.000004 rad/s)"):
+/// such a root, within 1e-5 rad/s of the fold, is the fold's own, and the route rightly has
+/// none. The other landings agree to 1e-8 (relative): both routes take them at their own f64
+/// aileron of the fold.
+#[test]
+fn landings_next_to_the_fold_are_certified_with_the_exact_answer() {
+    if !support::jsbsim_installed() {
+        return;
+    }
+    for (model, altitude_m, mach, split) in [
+        ("f16", 1300.0, 0.85, 0),
+        ("f16", 11500.0, 0.94, 0),
+        ("T38", 2400.0, 0.48, 0),
+        ("T38", 4400.0, 0.61, 1),
+        ("T38", 7400.0, 0.91, 1),
+    ] {
+        let ac = jet(model, altitude_m, mach);
+        let exact = analyze(&ac, 0.0).unwrap();
+        let (a, route) = analyze_first_departure(&ac, 0.0).unwrap();
+        let Route::Certified(w) = route else {
+            panic!("{model} at {altitude_m} m, Mach {mach}: {route:?}");
+        };
+        if let Err(e) = same(&a, &exact, w) {
+            panic!("{model} at {altitude_m} m, Mach {mach}: {e}");
+        }
+        let fold = exact.critical.as_ref().expect("a critical jump").p0;
+        let lands = |a: &Analysis| -> Vec<f64> {
+            let c = a.critical.as_ref().expect("a critical jump");
+            c.lands_at.iter().flatten().map(|l| l.p0).collect()
+        };
+        let (x, all) = (lands(&a), lands(&exact));
+        let (own, y): (Vec<f64>, Vec<f64>) = all.iter().partition(|p| (*p - fold).abs() < 1e-5);
+        assert_eq!(own.len(), split, "{model} at {altitude_m} m: {all:?}");
+        assert!(!y.is_empty(), "{model} at {altitude_m} m: no landing");
+        assert_eq!(
+            x.len(),
+            y.len(),
+            "{model} at {altitude_m} m: {x:?} vs {y:?}"
+        );
+        for (p, q) in x.iter().zip(&y) {
+            assert!(
+                support::close_roots(*p, *q, 1e-8),
+                "{model} at {altitude_m} m, Mach {mach}: landing {p} vs {q}"
+            );
+        }
+    }
+}

@@ -28,8 +28,9 @@ use crate::aircraft::{Aircraft, Param};
 use crate::algebra::{PolyF64, Sym, MAX_SYMS};
 use crate::certified::dense::{IPoly, IPoly2};
 use crate::certified::{
-    first_hopf_on_branch, positive_roots_by, real_roots_outside, trim_condition_at, value_at,
-    Bracket, BranchEnd, Criterion, EnclosedHopf, EnclosedPolys, JumpPolys, Uncertified, Values,
+    first_hopf_on_branch, fold_intervals, positive_roots_by, real_roots_outside, trim_condition_at,
+    trim_condition_of_states, value_at, Bracket, BranchEnd, Criterion, EnclosedHopf, EnclosedPolys,
+    JumpPolys, Uncertified, Values,
 };
 use crate::equations::symbols;
 use crate::interval::I;
@@ -239,6 +240,7 @@ fn exact_jumps_then_branch(aircraft: &Aircraft, delta_e_rad: f64) -> Option<Anal
         walk: &walk,
         divergence: &divergence,
         marks: (aircraft, delta_e_rad),
+        fold: None,
     };
     on.first_departure(&mut analysis, critical, &LocalPolys::parametric().at(&at))
         .ok()?;
@@ -391,6 +393,7 @@ fn certified_with<'v>(
                 walk: &walk,
                 divergence: &divergence,
                 marks,
+                fold: None,
             };
             let w = on.first_departure(&mut analysis, critical, &at())?;
             return Ok((analysis, width.max(w)));
@@ -411,6 +414,11 @@ struct Branch<'a> {
     walk: &'a Walk,
     divergence: &'a [Bracket],
     marks: (&'a Aircraft, f64),
+    /// The critical jump's certified bracket and an enclosure of the branch's aileron at one
+    /// of its roll rates, where the walk along the branch found it: its landings are then
+    /// sought outside an interval proven to hold no root of the trim condition but the fold
+    /// itself ([`fold_intervals`]), not only outside [`fold_window`].
+    fold: Option<(Bracket, I)>,
 }
 
 impl Branch<'_> {
@@ -463,6 +471,7 @@ impl Branch<'_> {
                 self.trim_condition,
                 &fold,
                 &det_a_roots(self.divergence),
+                self.fold,
             )?;
             let value = |b: &[Bracket]| b.iter().map(|r| r.value).collect::<Vec<f64>>();
             analysis.jump[i].lands_at =
@@ -522,16 +531,38 @@ fn det_a_roots(divergence: &[Bracket]) -> Vec<Bracket> {
 }
 
 /// The certified real roots of the trim condition at the aileron of the fold `j` (where it can
-/// land), proven apart from det A's roots `det_a_roots`.
+/// land), proven apart from det A's roots `det_a_roots`: those outside [`fold_window`], or,
+/// with the fold's bracket and aileron enclosure `fold`, outside the first interval of
+/// [`fold_intervals`] (wider than the window, proven to hold no root at the fold's exact
+/// aileron but the fold) in which the roots outside can be certified.
 fn landing_roots(
     v: &Values,
     trim_condition: &IPoly2,
     j: &JumpPoint,
     det_a_roots: &[Bracket],
+    fold: Option<(Bracket, I)>,
 ) -> Result<Vec<Bracket>, Uncertified> {
     let g = trim_condition.at_aileron(I::point(j.delta_a_rad));
-    let value = |x: f64| trim_condition_at(v, x, j.delta_a_rad);
-    let roots = real_roots_outside(&g, fold_window(j), Some(&value), MAX_WIDTH)?;
+    let at = |x: f64, da: f64| {
+        let cleared = trim_condition_at(v, x, da);
+        trim_condition_of_states(v, x, da)
+            .and_then(|s| s.intersect(cleared))
+            .unwrap_or(cleared)
+    };
+    let value = |x: f64| at(x, j.delta_a_rad);
+    let window = fold_window(j);
+    let own = fold.map_or_else(Vec::new, |(b, near)| {
+        let half = (window.1 - window.0) / 2.0;
+        fold_intervals(trim_condition, &at, b, near, j.delta_a_rad, half)
+    });
+    let mut roots = Err(Uncertified::Sign);
+    for x in own.into_iter().chain([window]) {
+        roots = real_roots_outside(&g, x, Some(&value), MAX_WIDTH);
+        if roots.is_ok() {
+            break;
+        }
+    }
+    let roots = roots?;
     apart(&roots, det_a_roots)?;
     Ok(roots)
 }
@@ -578,7 +609,7 @@ fn certified_departures<'a>(
     let det_a_roots = det_a_roots(divergence);
     let landing = jump
         .iter()
-        .map(|j| landing_roots(v, &e.trim_condition, j, &det_a_roots))
+        .map(|j| landing_roots(v, &e.trim_condition, j, &det_a_roots, None))
         .collect::<Result<Vec<_>, _>>()?;
     let width = [&hopf, &zs_hopf]
         .into_iter()

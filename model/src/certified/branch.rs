@@ -537,7 +537,12 @@ where
 /// The trim at the aileron `da` as numerators (constants in delta_a) over their denominator
 /// det A, or with `per_trim` the trim states themselves (the numerators divided by det A, the
 /// denominator 1); `None` where det A may vanish.
-fn trim_states<M, T>(m: &mut M, v: &Values, da: T, per_trim: bool) -> Option<([Da<T>; 4], Da<T>)>
+pub(super) fn trim_states<M, T>(
+    m: &mut M,
+    v: &Values,
+    da: T,
+    per_trim: bool,
+) -> Option<([Da<T>; 4], Da<T>)>
 where
     M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
     T: Num,

@@ -45,6 +45,7 @@ mod branch;
 mod characteristic;
 mod elimination;
 mod enclosed;
+mod fold;
 mod hopf;
 mod lifted;
 mod mode;
@@ -55,11 +56,13 @@ mod turn;
 mod values;
 
 pub use at_roll_rate::{
-    at_roll_rate, at_roll_rate_with, trim_condition_at, value_at, value_over, AtRollRate, Criterion,
+    at_roll_rate, at_roll_rate_with, trim_condition_at, trim_condition_of_states, value_at,
+    value_over, AtRollRate, Criterion,
 };
 pub use branch::{first_hopf_on_branch, first_root_on_branch, BranchEnd, Det};
 pub use elimination::{eliminate, Coeff, Scalar};
 pub use enclosed::{EnclosedPolys, JumpPolys, TrimPolys};
+pub use fold::{fold_aileron, fold_intervals, one_curvature};
 pub use hopf::EnclosedHopf;
 pub use isolate::{
     positive_roots, positive_roots_by, positive_roots_windowed, positive_roots_windowed_even,

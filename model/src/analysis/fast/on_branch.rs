@@ -84,6 +84,7 @@ pub(super) fn on_branch(
         walk: &walk,
         divergence: &divergence,
         marks: (aircraft, delta_e_rad),
+        fold: jump,
     };
     let values = at_trim_values(aircraft, delta_e_rad);
     let at = LocalPolys::parametric().at(&values);

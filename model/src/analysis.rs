@@ -351,7 +351,10 @@ impl Found {
         let jump: Vec<JumpPoint> = self
             .jump_roots
             .iter()
-            .map(|p0| point(*p0, &self.jump_at))
+            .map(|p0| {
+                let da = branch_aileron(&self.g, *p0, aileron_of_root(&self.g, &self.jump_at, *p0));
+                departure::trim_point(*p0, da, &self.trims, (aircraft, delta_e_rad))
+            })
             // A root where the common aileron of the trim condition and det J5 is complex (a
             // conjugate pair shared by both) has no real trim.
             .filter(|j| j.delta_a_rad.is_finite())
@@ -581,6 +584,31 @@ fn indistinct(what: &str, x: f64) -> AnalysisError {
         what: what.to_string(),
         p0: x,
         ulp: f64::from_bits(x.to_bits() + 1) - x,
+    }
+}
+
+/// The aileron of the trim at `p0` next to `da` on the trim condition `g`: one Newton step in
+/// delta_a from `da`. At a jump the branch's aileron is stationary in P0 (the fold), so a roll
+/// rate known to within a bracket gives this aileron to the square of the bracket's width,
+/// where the common root of `g` and det J5 ([`aileron_of_root`]) moves with P0 at first order
+/// (70 rad per rad/s at the T-38's 7,400 m, Mach 0.91), and whose coefficients' rounding (2e-12
+/// rad there) splits the fold's double root into two landings. Without aileron yaw `g` is linear
+/// in delta_a and `da` is already its root; `da` itself too where the step is not small (the
+/// trim condition's slope in delta_a vanishing).
+pub(crate) fn branch_aileron(g: &InAileron, p0: f64, da: f64) -> f64 {
+    let c = g.at(p0);
+    if c.len() < 3 {
+        return da;
+    }
+    let (value, slope) = c
+        .iter()
+        .rev()
+        .fold((0.0, 0.0), |(v, s), c| (v * da + c, s * da + v));
+    let step = value / slope;
+    if step.is_finite() && step.abs() <= 1e-6 * (1.0 + da.abs()) {
+        da - step
+    } else {
+        da
     }
 }
 

@@ -40,6 +40,14 @@ use crate::interval::I;
 /// shrinking to nothing.
 pub const PIECE_BUDGET: usize = 4000;
 
+/// The half-width, relative to the value's magnitude, that [`Form::fit`] aims the next
+/// piece's Taylor form at. The cube law it extrapolates by is optimistic where the branch
+/// steepens (the F-104's Hopf walk at 0 m, Mach 0.7 towards 3.9 rad/s: a piece 1.4 times as
+/// wide had a form about ten times as wide, not three), so at 0.5 about a third of the pieces
+/// failed there and were decided again by halves (31 pieces and 10 halves); at 0.3 the next
+/// piece is 0.84 times as wide and 25 pieces, none failing, reach the same end.
+const FIT_MARGIN: f64 = 0.3;
+
 /// Which determinant [`first_root_on_branch`] follows along the branch.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Det {
@@ -281,11 +289,11 @@ pub(super) struct Form {
 
 impl Form {
     /// The width of the piece the Taylor form would decide here with a margin (its half-width
-    /// at half the value's magnitude), taking the half-width to grow as the cube of the
-    /// piece's width (the second derivative's overestimate grows with the piece).
+    /// at [`FIT_MARGIN`] times the value's magnitude), taking the half-width to grow as the
+    /// cube of the piece's width (the second derivative's overestimate grows with the piece).
     pub(super) fn fit(&self) -> f64 {
         let half = (self.range.hi - self.at_c.v.mid()).max(self.at_c.v.mid() - self.range.lo);
-        self.width * (0.5 * self.at_c.v.mig() / half).cbrt()
+        self.width * (FIT_MARGIN * self.at_c.v.mig() / half).cbrt()
     }
 }
 

@@ -64,8 +64,9 @@ fn the_json_gives_the_first_departures_trim_and_its_validity() {
     assert!(alpha_deg(1).abs() > 30.0, "{v}");
 }
 
-/// The table marks the row and counts it, the CSV has the column, `analyze` ends the first
-/// departure's line with the angle beyond the range.
+/// The table marks the row and counts it, the CSV has the column, the first-departure map
+/// gives it a class of its own, `analyze` ends the first departure's line with the angle beyond
+/// the range.
 #[test]
 fn the_table_the_csv_and_analyze_mark_a_departure_outside_the_validity_range() {
     if !installed() {
@@ -88,7 +89,12 @@ fn the_table_the_csv_and_analyze_mark_a_departure_outside_the_validity_range() {
     let dir = std::env::temp_dir().join(format!("envelope-validity-{}", std::process::id()));
     f16_at_1000_m(true, Some(dir.clone()));
     let csv = std::fs::read_to_string(dir.join("envelope.csv")).unwrap();
+    let map = std::fs::read_to_string(dir.join("first_departure.svg")).unwrap();
     let _ = std::fs::remove_dir_all(&dir);
+    assert!(
+        map.contains("jump or Hopf outside the validity range"),
+        "the map's legend"
+    );
     let column = |row: &str| -> String {
         let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
         let i = header

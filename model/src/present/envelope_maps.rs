@@ -253,6 +253,9 @@ const JUMP_BEYOND: Rgb = Rgb(240, 170, 170);
 /// Pale orange of cells whose first departure is a Hopf point beyond the aileron's travel.
 const HOPF_BEYOND: Rgb = Rgb(250, 215, 160);
 
+/// Lavender of cells whose first departure lies outside the aircraft's validity range.
+const BEYOND_VALIDITY: Rgb = Rgb(200, 185, 225);
+
 /// Whether the first departure of `p` needs more aileron than its limit (a full-stick roll
 /// does not reach it, which the map must not paint as the departure a pilot meets); `None`
 /// when the model gives no aileron limit.
@@ -264,15 +267,26 @@ fn beyond_the_stick(p: &Point) -> Option<bool> {
 }
 
 /// The region map of the first departure's kind, an unstable trim at P0 = 0 its own class,
-/// and a jump or Hopf point beyond the aileron's travel drawn pale, apart from those a
-/// full-stick roll reaches.
+/// a jump or Hopf point beyond the aileron's travel drawn pale, apart from those a full-stick
+/// roll reaches, and one whose trim lies outside the validity range a class of its own: the
+/// linear aerodynamics' departure, which the aircraft's own need not share.
 pub fn departure_regions(env: &Envelope, style: &PlotStyle) -> Figure {
     let title = format!("{}: first departure on the primary branch", env.aircraft);
+    let outside = |p: &Point| {
+        p.first_departure
+            .as_ref()
+            .is_some_and(|d| d.within_validity == Some(false))
+    };
     cells(
         env,
         title,
         style,
         &|p| match (departure_kind(p), beyond_the_stick(p)) {
+            (_, _) if outside(p) => (
+                BEYOND_VALIDITY,
+                "jump or Hopf outside the validity range".to_string(),
+                7,
+            ),
             ("unstable_trim", _) => (
                 UNSTABLE_TRIM,
                 "unstable trim (bare airframe)".to_string(),
@@ -284,7 +298,7 @@ pub fn departure_regions(env: &Envelope, style: &PlotStyle) -> Figure {
             ("hopf", Some(true)) => (HOPF_BEYOND, "Hopf beyond the stick's travel".to_string(), 4),
             ("jump", None) => (Rgb::RED, "jump (no aileron limit known)".to_string(), 5),
             ("hopf", None) => (Rgb::ORANGE, "Hopf (no aileron limit known)".to_string(), 6),
-            ("none", _) => (Rgb::GREEN, "none: stable throughout".to_string(), 7),
+            ("none", _) => (Rgb::GREEN, "none: stable throughout".to_string(), 8),
             _ => missing(p),
         },
     )

@@ -1,5 +1,6 @@
 //! A first departure whose trim lies outside the aircraft's validity range is a departure of the
-//! linear aerodynamics, which the aircraft's own need not share: `analyze` and `envelope` say so
+//! linear aerodynamics, which the aircraft's own need not share: `analyze`, `envelope` and the
+//! catalogue table say so
 //! wherever they give it. The F-16's primary branch from 1-g flight at 1,000 m meets a jump first
 //! at Mach 0.6 and a Hopf point first at Mach 0.7, the latter on a trim whose angle of attack is
 //! 48 deg from the analysed one. Skipped with a message when the JSBSim models are not installed.
@@ -65,7 +66,7 @@ fn the_json_gives_the_first_departures_trim_and_its_validity() {
 }
 
 /// The table marks the row and counts it, the CSV has the column, the first-departure map
-/// gives it a class of its own, `analyze` ends the first departure's line with the angle beyond
+/// gives it a class of its own, the catalogue's row says so, `analyze` ends the first departure's line with the angle beyond
 /// the range.
 #[test]
 fn the_table_the_csv_and_analyze_mark_a_departure_outside_the_validity_range() {
@@ -114,6 +115,8 @@ fn the_table_the_csv_and_analyze_mark_a_departure_outside_the_validity_range() {
         settings: Vec::new(),
     };
     let ac = aircraft::parse(&import(&request).unwrap(), "jsbsim:f16").unwrap();
+    let row = model::present::catalogue::row("f16", &Ok(ac.clone()));
+    assert!(row.contains("| hopf (outside validity range) |"), "{row}");
     let a = model::analysis::analyze(&ac, 0.0).unwrap();
     let text = first_departure_text(&a);
     assert!(

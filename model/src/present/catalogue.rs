@@ -173,7 +173,17 @@ fn answers(a: &Analysis) -> String {
         (None, note) => format!("none: {} | | ", cell(note.as_deref().unwrap_or("no fold"))),
     };
     let first = match &a.first_departure {
-        Some(f) => format!("{} | {:.4} | {:.2}", f.kind, f.p0, f.delta_a_deg),
+        Some(f) => format!(
+            "{}{} | {:.4} | {:.2}",
+            f.kind,
+            if f.within_validity == Some(false) {
+                " (outside validity range)"
+            } else {
+                ""
+            },
+            f.p0,
+            f.delta_a_deg
+        ),
         None => "none within the aileron range | | ".to_string(),
     };
     format!("{critical} | {first}")

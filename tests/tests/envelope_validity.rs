@@ -1,9 +1,9 @@
 //! A first departure whose trim lies outside the aircraft's validity range is a departure of the
 //! linear aerodynamics, which the aircraft's own need not share: `analyze`, `envelope` and the
-//! catalogue table say so
-//! wherever they give it. The F-16's primary branch from 1-g flight at 1,000 m meets a jump first
-//! at Mach 0.6 and a Hopf point first at Mach 0.7, the latter on a trim whose angle of attack is
-//! 48 deg from the analysed one. Skipped with a message when the JSBSim models are not installed.
+//! catalogue table say so wherever they give it. The F-16's primary branch from 1-g flight at
+//! 1,000 m meets a jump first at Mach 0.6 and a Hopf point first at Mach 0.7, the latter on a
+//! trim whose angle of attack is 48 deg from the analysed one. Skipped with a message when the
+//! JSBSim models are not installed.
 
 use model::aircraft;
 use model::jsbsim::catalogue;

@@ -40,6 +40,7 @@
 pub mod bound;
 mod clear;
 mod coordinates;
+mod data_map;
 pub mod monte_carlo;
 mod result;
 pub mod run;

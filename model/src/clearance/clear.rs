@@ -5,6 +5,7 @@
 
 use super::bound::{BoxPolys, Failure};
 use super::coordinates::split_box;
+use super::on_pool::on_pool;
 use super::tree::{Leaf, Walk, BATCH, MAX_ROLL_RATE};
 use super::verdict::{decide, AileronBounds, Tightening};
 use super::worst_case::{search_candidates, Worst};
@@ -15,35 +16,16 @@ use rayon::prelude::*;
 use std::time::Instant;
 
 /// Runs the clearance of `aircraft`'s `[uncertainty]` box; `progress` gets a fraction in [0, 1].
-///
-/// Called from outside rayon's pool, the proof runs on one of its threads and the fractions
-/// are passed back to this one: each round of the branch and bound forks its steps (about half
-/// a millisecond of work, thousands of rounds), and a fork from outside the pool hands the work
-/// in and waits for it through a wake-up of a sleeping thread each way, about a tenth of the
-/// round's time; from inside, the other thread steals the work from its neighbour's queue.
+/// The proof runs on a thread of rayon's pool, where each of its thousands of rounds forks its
+/// steps; `progress` is called on the calling thread.
 pub fn clear(
     aircraft: &Aircraft,
     settings: &Settings,
     progress: &mut dyn FnMut(f64),
 ) -> Result<Clearance, ClearError> {
-    if rayon::current_thread_index().is_some() {
-        return clear_in_pool(aircraft, settings, progress);
-    }
-    let (tx, rx) = std::sync::mpsc::channel();
-    let mut answer = None;
-    rayon::in_place_scope(|s| {
-        let answer = &mut answer;
-        s.spawn(move |_| {
-            // The sender goes with the proof, so that the fractions end when it does.
-            *answer = Some(clear_in_pool(aircraft, settings, &mut |f| {
-                let _ = tx.send(f);
-            }));
-        });
-        for f in rx {
-            progress(f);
-        }
-    });
-    answer.expect("the proof ran to its end")
+    on_pool(progress, |progress| {
+        clear_in_pool(aircraft, settings, progress)
+    })
 }
 
 /// [`clear`] on a thread of rayon's pool.

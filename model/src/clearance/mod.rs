@@ -42,6 +42,7 @@ mod clear;
 mod coordinates;
 mod data_map;
 pub mod monte_carlo;
+mod on_pool;
 mod result;
 pub mod run;
 mod settings;

@@ -14,9 +14,9 @@ use std::sync::Arc;
 pub(super) struct Faces(std::sync::Mutex<Vec<Arc<LiftedBox>>>);
 
 /// How many faces of a lifted box [`Faces`] keeps (each as large as the box lifted): J's face
-/// and the aileron's alternate, and each moves as a gradient's sign flips; on the F-104's
-/// 15-coefficient box four keep half the faces two lifted again (603 against 1297 lifts for
-/// 8071 faces asked, the same peak memory: most sub-boxes are lifted a few faces only).
+/// and the aileron's alternate, and either moves when a gradient's sign flips. On the F-104's
+/// 15-coefficient box four instead of two halve the faces lifted (603 instead of 1,297 of the
+/// 8,071 asked for) at the same peak memory.
 const FACES: usize = 4;
 
 impl Clone for Faces {

@@ -5,6 +5,7 @@
 
 use super::bound::{BoxPolys, Failure};
 use super::coordinates::split_box;
+use super::on_pool::on_pool;
 use super::tree::{Leaf, Walk, BATCH, MAX_ROLL_RATE};
 use super::verdict::{decide, AileronBounds, Tightening};
 use super::worst_case::{search_candidates, Worst};
@@ -15,7 +16,20 @@ use rayon::prelude::*;
 use std::time::Instant;
 
 /// Runs the clearance of `aircraft`'s `[uncertainty]` box; `progress` gets a fraction in [0, 1].
+/// The proof runs on a thread of rayon's pool, where each of its thousands of rounds forks its
+/// steps; `progress` is called on the calling thread.
 pub fn clear(
+    aircraft: &Aircraft,
+    settings: &Settings,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Clearance, ClearError> {
+    on_pool(progress, |progress| {
+        clear_in_pool(aircraft, settings, progress)
+    })
+}
+
+/// [`clear`] on a thread of rayon's pool.
+fn clear_in_pool(
     aircraft: &Aircraft,
     settings: &Settings,
     progress: &mut dyn FnMut(f64),

@@ -40,7 +40,9 @@
 pub mod bound;
 mod clear;
 mod coordinates;
+mod data_map;
 pub mod monte_carlo;
+mod on_pool;
 mod result;
 pub mod run;
 mod settings;

@@ -7,6 +7,7 @@
 //! yaw, against a fraction of a millisecond).
 
 use super::coordinates::{at, exact_coordinates, sample_coordinates, Rng};
+use super::data_map::DataMap;
 use super::{critical, CaseAircraft, ClearError, Settings};
 use crate::aircraft::{Aircraft, Param, Uncertain};
 use crate::analysis::JumpPoint;
@@ -39,6 +40,8 @@ fn case(a: &Aircraft, params: &[Uncertain], x: &[BigRational], j: &JumpPoint) ->
 pub(super) struct Worst<'a> {
     base: &'a Aircraft,
     params: &'a [Uncertain],
+    /// The data of the box's aircraft at coordinates, for the probes' screens.
+    map: DataMap,
     /// The lowest critical jump roll rate found, rad/s, and its aircraft.
     pub(super) p0: Option<(f64, CaseAircraft)>,
     /// The lowest |delta_a| at a critical jump found, deg, and its aircraft.
@@ -62,6 +65,7 @@ impl<'a> Worst<'a> {
         Worst {
             base,
             params,
+            map: DataMap::new(base, params),
             p0: None,
             da: None,
             limit_hit: None,
@@ -77,26 +81,29 @@ impl<'a> Worst<'a> {
     /// aircraft that sets hi is the exact path's, as before, at a fraction of its cost for
     /// the others (the certified route's roll rate lies within 1e-9 relative of the exact one).
     pub(super) fn try_at(&mut self, x: &[BigRational]) -> Result<Option<(f64, f64)>, ClearError> {
-        let a = at(self.base, self.params, x);
-        let screened = self.certified(&a);
-        self.settle(&a, x, screened)
+        let screened = self.certified_data(self.data_at(x));
+        self.settle(x, screened)
     }
 
-    /// [`Worst::try_at`] of the aircraft `a` at `x` whose certified answer is `screened`.
+    /// [`Worst::try_at`] of the aircraft at `x` whose certified answer is `screened`.
     fn settle(
         &mut self,
-        a: &Aircraft,
         x: &[BigRational],
         screened: Option<Option<(f64, f64)>>,
     ) -> Result<Option<(f64, f64)>, ClearError> {
         match screened {
             Some(None) => Ok(None),
             Some(Some((p0, da))) if !self.would_keep(p0, da) => Ok(Some((p0, da))),
-            _ => {
-                let j = critical(a, self.delta_e_rad)?;
-                Ok(self.record(a, x, j))
-            }
+            _ => self.exact_at(x),
         }
+    }
+
+    /// The enclosed data of the aircraft at coordinates `x`: by the map where it applies, else
+    /// of the aircraft built.
+    fn data_at(&self, x: &[BigRational]) -> [I; Param::COUNT] {
+        self.map
+            .data(x)
+            .unwrap_or_else(|| crate::certified::Values::data(&at(self.base, self.params, x)))
     }
 
     /// The exact path's critical (p0, |delta_a| deg) of the aircraft at coordinates `x`, if
@@ -107,14 +114,15 @@ impl<'a> Worst<'a> {
         Ok(self.record(&a, x, j))
     }
 
-    /// The critical (p0, |delta_a| deg) of `aircraft` by the certified route
-    /// ([`crate::analysis::fast::critical_of`], the Monte Carlo's lean route) without the exact
-    /// path's fallback: `Some(None)` when it proves that the primary branch has no jump
-    /// (it diverges or leaves the aileron range first), `None` when it cannot be certified.
-    fn certified(&self, aircraft: &Aircraft) -> Option<Option<(f64, f64)>> {
-        let lift = || crate::certified::Values::of(aircraft, self.delta_e_rad, 0.0);
-        let bound = aircraft.aileron_range();
-        let data = crate::certified::Values::data(aircraft);
+    /// The critical (p0, |delta_a| deg) of the aircraft of the box whose enclosed data are
+    /// `data` by the certified route ([`crate::analysis::fast::critical_of`], the Monte Carlo's
+    /// lean route) without the exact path's fallback: `Some(None)` when it proves that the
+    /// primary branch has no jump (it diverges or leaves the aileron range first), `None` when
+    /// it cannot be certified. Every aircraft of the box has the base's aileron range: the box
+    /// moves no limit.
+    fn certified_data(&self, data: [I; Param::COUNT]) -> Option<Option<(f64, f64)>> {
+        let lift = || crate::certified::Values::new(data, self.delta_e_rad, 0.0);
+        let bound = self.base.aileron_range();
         let width = crate::analysis::fast::MAX_WIDTH;
         let found =
             crate::analysis::fast::critical_of(&data, self.delta_e_rad, &lift, bound, width)
@@ -229,7 +237,7 @@ impl<'a> Worst<'a> {
     /// a cusp that fallback is the slow one, and an uncertified point only ends a bisection).
     fn screen(&self, x: &[f64]) -> Option<Screened> {
         let x = exact_coordinates(self.params, x);
-        let (p0, da_deg) = self.certified(&at(self.base, self.params, &x))??;
+        let (p0, da_deg) = self.certified_data(self.data_at(&x))??;
         Some(Screened { x, p0, da_deg })
     }
 
@@ -304,7 +312,7 @@ pub(super) fn search_candidates(
     settings: &Settings,
     progress: &mut dyn FnMut(f64),
 ) -> Result<(), ClearError> {
-    let (base, params) = (worst.base, worst.params);
+    let params = worst.params;
     let centre: Vec<BigRational> = params
         .iter()
         .map(|u| (&u.lo + &u.hi) / BigRational::from_integer(2.into()))
@@ -312,20 +320,16 @@ pub(super) fn search_candidates(
     worst.try_at(&centre)?;
     // The random candidates analysed on rayon's threads, kept in their seeded order.
     let mut rng = Rng::new(settings.seed);
-    let candidates: Vec<(Vec<BigRational>, Aircraft)> = (0..settings.candidates)
-        .map(|_| {
-            let x = sample_coordinates(params, &mut rng);
-            let a = at(base, params, &x);
-            (x, a)
-        })
+    let candidates: Vec<Vec<BigRational>> = (0..settings.candidates)
+        .map(|_| sample_coordinates(params, &mut rng))
         .collect();
     // Screened by the certified route on rayon's threads, settled in their seeded order.
     let screened: Vec<_> = candidates
         .par_iter()
-        .map(|(_, a)| worst.certified(a))
+        .map(|x| worst.certified_data(worst.data_at(x)))
         .collect();
-    for ((x, a), s) in candidates.iter().zip(screened) {
-        worst.settle(a, x, s)?;
+    for (x, s) in candidates.iter().zip(screened) {
+        worst.settle(x, s)?;
     }
     for x in settings
         .candidates_at

@@ -83,6 +83,21 @@ fn same(a: &Analysis, e: &Analysis, w: f64) -> Result<(), String> {
     Ok(())
 }
 
+/// The route's and the exact path's analyses of `ac` (flight state `at`) at elevator increment
+/// 0, and the route's bracket width: the route must certify and agree with the exact path
+/// ([`same`]).
+fn certified_as_exact(ac: &Aircraft, at: &str) -> (Analysis, Analysis, f64) {
+    let exact = analyze(ac, 0.0).unwrap();
+    let (a, route) = analyze_first_departure(ac, 0.0).unwrap();
+    let Route::Certified(w) = route else {
+        panic!("{at}: {route:?}");
+    };
+    if let Err(e) = same(&a, &exact, w) {
+        panic!("{at}: {e}");
+    }
+    (a, exact, w)
+}
+
 /// Where the 1-g maps of the F-16 and the T-38 (`envelope --altitude-m 0:14500:500 --mach
 /// 0.3:0.95:0.05`) fell back to the exact path, and the F-16 at 8,600 m, Mach 0.87 (its
 /// critical jump after a turn of the f64 walk), the route of the envelope certifies the exact
@@ -104,14 +119,7 @@ fn branches_that_turn_or_end_before_a_hopf_root_are_certified_with_the_exact_ans
         ("T38", 14500.0, 0.9),
     ] {
         let ac = jet(model, altitude_m, mach);
-        let exact = analyze(&ac, 0.0).unwrap();
-        let (a, route) = analyze_first_departure(&ac, 0.0).unwrap();
-        let Route::Certified(w) = route else {
-            panic!("{model} at {altitude_m} m, Mach {mach}: {route:?}");
-        };
-        if let Err(e) = same(&a, &exact, w) {
-            panic!("{model} at {altitude_m} m, Mach {mach}: {e}");
-        }
+        certified_as_exact(&ac, &format!("{model} at {altitude_m} m, Mach {mach}"));
     }
 }
 
@@ -197,10 +205,7 @@ fn fine_map_points_next_to_a_divergence_roll_rate_are_certified_with_the_exact_a
         (4100.0, 0.87, Some((3.154000371287608, -0.5084207439946957))),
     ] {
         let ac = jet("f16", altitude_m, mach);
-        let (a, route) = analyze_first_departure(&ac, 0.0).unwrap();
-        let Route::Certified(w) = route else {
-            panic!("{altitude_m} m, Mach {mach}: {route:?}");
-        };
+        let (a, _, w) = certified_as_exact(&ac, &format!("{altitude_m} m, Mach {mach}"));
         let at = |a: &Analysis| a.critical.as_ref().map(|c| (c.p0, c.delta_a_rad));
         let first = |a: &Analysis| a.first_departure.as_ref().map(|d| (d.kind, d.p0));
         match (at(&a), jump) {
@@ -212,9 +217,6 @@ fn fine_map_points_next_to_a_divergence_roll_rate_are_certified_with_the_exact_a
             }
             (None, None) => assert_eq!(first(&a), None, "{altitude_m} m"),
             (x, y) => panic!("{altitude_m} m, Mach {mach}: {x:?} vs {y:?}"),
-        }
-        if let Err(e) = same(&a, &analyze(&ac, 0.0).unwrap(), w) {
-            panic!("{altitude_m} m, Mach {mach}: {e}");
         }
     }
 }
@@ -361,11 +363,7 @@ fn the_hopf_point_on_the_arc_back_from_a_turn_is_the_first_departure() {
             back && p0 < p_turn,
             "{altitude_m} m: {p0} is not past the turn {p_turn}"
         );
-        let exact = analyze(&ac, 0.0).unwrap();
-        let (a, route) = analyze_first_departure(&ac, 0.0).unwrap();
-        let Route::Certified(w) = route else {
-            panic!("{altitude_m} m, Mach {mach}: {route:?}");
-        };
+        let (a, exact, _) = certified_as_exact(&ac, &format!("{altitude_m} m, Mach {mach}"));
         for (name, b) in [("exact", &exact), ("certified", &a)] {
             let d = b.first_departure.as_ref();
             let d = d.unwrap_or_else(|| panic!("{altitude_m} m, {name}: no first departure"));
@@ -379,9 +377,6 @@ fn the_hopf_point_on_the_arc_back_from_a_turn_is_the_first_departure() {
                 (d.delta_a_rad - da).abs() <= 1e-6,
                 "{altitude_m} m, {name}: {d:?} vs {da}"
             );
-        }
-        if let Err(e) = same(&a, &exact, w) {
-            panic!("{altitude_m} m, Mach {mach}: {e}");
         }
     }
 }
@@ -414,14 +409,8 @@ fn landings_next_to_the_fold_are_certified_with_the_exact_answer() {
         ("T38", 7400.0, 0.91),
     ] {
         let ac = jet(model, altitude_m, mach);
-        let exact = analyze(&ac, 0.0).unwrap();
-        let (a, route) = analyze_first_departure(&ac, 0.0).unwrap();
-        let Route::Certified(w) = route else {
-            panic!("{model} at {altitude_m} m, Mach {mach}: {route:?}");
-        };
-        if let Err(e) = same(&a, &exact, w) {
-            panic!("{model} at {altitude_m} m, Mach {mach}: {e}");
-        }
+        let (a, exact, _) =
+            certified_as_exact(&ac, &format!("{model} at {altitude_m} m, Mach {mach}"));
         let fold = exact.critical.as_ref().expect("a critical jump").p0;
         let lands = |a: &Analysis| -> Vec<f64> {
             let c = a.critical.as_ref().expect("a critical jump");

@@ -17,7 +17,8 @@ fn aircraft_a_with(extra: &str, name: &str) -> PathBuf {
 
 /// Writes `text` as the file `name` in this test run's folder; returns its path.
 fn test_file(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("model-clear-test-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("model-clear-test-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join(name);
     std::fs::write(&path, text).unwrap();
@@ -256,7 +257,8 @@ fn bad_clear_flags_exit_2_saying_what_is_expected() {
     assert_eq!(c["monte_carlo"]["samples"], 0);
     assert!(c["monte_carlo"]["fraction_within_limit"].is_null());
 
-    let file = std::env::temp_dir().join(format!("model-clear-out-{}", std::process::id()));
+    let file = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("model-clear-out-{}", std::process::id()));
     std::fs::write(&file, "a file, not a directory").unwrap();
     let out = model(&[
         "clear",
@@ -362,7 +364,8 @@ fn oversized_coefficient_boxes_exit_2_naming_the_coefficient_and_line() {
 #[test]
 fn a_sample_of_samples_csv_is_reproduced_by_analyze() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
-    let dir = std::env::temp_dir().join(format!("model-clear-samples-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("model-clear-samples-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let boxed = root.join("aircraft/a_uncertain.toml");
     let out = model(&[
@@ -440,7 +443,8 @@ fn a_limit_between_the_bounds_is_cleared_by_tightening_and_says_so() {
         c["critical_delta_a_deg"]["lo"].as_f64().unwrap() > 3.105,
         "{c}"
     );
-    let dir = std::env::temp_dir().join(format!("model-clear-tight-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("model-clear-tight-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let out = model(&[
         "clear",

@@ -170,7 +170,8 @@ fn every_page_of_the_guide_is_a_chapter_of_its_summary() {
 /// The check itself: a missing file, a missing heading and a heading's repeated anchor.
 #[test]
 fn the_link_check_sees_a_missing_file_and_a_missing_heading() {
-    let dir = std::env::temp_dir().join(format!("docs-links-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("docs-links-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(
         dir.join("b.md"),

@@ -332,7 +332,7 @@ fn out_writes_the_csv_the_summaries_and_the_maps() {
     if !installed() {
         return;
     }
-    let dir = std::env::temp_dir().join(format!("envelope-out-{}", std::process::id()));
+    let dir = support::scratch("envelope-out");
     let mut a = args("jsbsim:f104", "0:12000:12000", "0.3:0.6:0.3");
     a.json = false;
     a.out = Some(dir.clone());
@@ -361,7 +361,7 @@ struct Written {
 }
 
 fn written(altitude_m: &str, mach: &str, name: &str) -> Written {
-    let dir = std::env::temp_dir().join(format!("envelope-{name}-{}", std::process::id()));
+    let dir = support::scratch(&format!("envelope-{name}"));
     let mut a = args("jsbsim:f104", altitude_m, mach);
     a.json = false;
     a.out = Some(dir.clone());
@@ -493,7 +493,7 @@ fn an_unstable_trim_is_its_own_class_in_the_json_csv_map_and_counts() {
     if !installed() {
         return;
     }
-    let dir = std::env::temp_dir().join(format!("envelope-unstable-{}", std::process::id()));
+    let dir = support::scratch("envelope-unstable");
     let mut a = args("jsbsim:f16", "12000", "0.5:0.9:0.4");
     a.out = Some(dir.clone());
     let mut out = Vec::new();
@@ -543,8 +543,7 @@ fn the_departure_map_tells_departures_within_the_stick_from_those_beyond_it() {
         return;
     }
     for (altitude, n, within) in [("0", 1.0, false), ("12000", 0.0, true)] {
-        let dir =
-            std::env::temp_dir().join(format!("envelope-beyond-{altitude}-{}", std::process::id()));
+        let dir = support::scratch(&format!("envelope-beyond-{altitude}"));
         let mut a = args("jsbsim:f104", altitude, "0.9");
         (a.out, a.load_factor) = (Some(dir.clone()), Some(n));
         let mut out = Vec::new();
@@ -710,7 +709,7 @@ fn validate_gives_the_6_dof_verdict_at_predicted_jumps_and_a_sample() {
     if !installed() {
         return;
     }
-    let dir = std::env::temp_dir().join(format!("envelope-validate-{}", std::process::id()));
+    let dir = support::scratch("envelope-validate");
     let mut a = args("jsbsim:f104", "2000:10000:8000", "0.6:0.8:0.2");
     a.load_factor = Some(0.0);
     a.validate = true;

@@ -160,7 +160,8 @@ fn bad_specs_are_refused_naming_them() {
     if !installed() {
         return;
     }
-    let no_table = std::env::temp_dir().join(format!("no-uncertainty-{}.toml", std::process::id()));
+    let no_table = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("no-uncertainty-{}.toml", std::process::id()));
     std::fs::write(&no_table, "[coefficients]\nCl_p = 1\n").unwrap();
     let no_table = no_table.display().to_string();
     let bad = [
@@ -228,7 +229,8 @@ fn json_gives_every_point_its_clearance_with_the_documented_keys() {
 /// reads as the list's, an interval passes through to the loader unchanged.
 #[test]
 fn a_file_spec_is_its_uncertainty_table_as_written() {
-    let path = std::env::temp_dir().join(format!("uncertainty-{}.toml", std::process::id()));
+    let path = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("uncertainty-{}.toml", std::process::id()));
     let text = "[flight]\nspeed = 1\n\n[uncertainty]\nCl_p = \"5%\"  # roll damping\n\
                 Cn_r = [-0.8, -0.7]\n";
     std::fs::write(&path, text).unwrap();

@@ -87,7 +87,8 @@ fn the_table_the_csv_and_analyze_mark_a_departure_outside_the_validity_range() {
         table.contains("\n1 whose first departure lies outside the validity range"),
         "{table}"
     );
-    let dir = std::env::temp_dir().join(format!("envelope-validity-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("envelope-validity-{}", std::process::id()));
     f16_at_1000_m(true, Some(dir.clone()));
     let csv = std::fs::read_to_string(dir.join("envelope.csv")).unwrap();
     let map = std::fs::read_to_string(dir.join("first_departure.svg")).unwrap();

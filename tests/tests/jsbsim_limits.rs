@@ -209,7 +209,8 @@ fn a_missing_systems_file_is_an_error_naming_it() {
         eprintln!("skipped: {}", catalogue::HOW_TO_GET);
         return;
     };
-    let copy = std::env::temp_dir().join(format!("limits-missing-{}", std::process::id()));
+    let copy = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("limits-missing-{}", std::process::id()));
     let folder = copy.join("aircraft").join("DHC6");
     copy_dir(&root.join("aircraft").join("DHC6"), &folder);
     let (h, mach, alpha) = REFERENCE;

@@ -169,8 +169,8 @@ fn document_compiles_with_pdflatex() {
         );
         return;
     }
-    let dir: PathBuf =
-        std::env::temp_dir().join(format!("paper-tests-latex-{}", std::process::id()));
+    let dir: PathBuf = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("paper-tests-latex-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     std::fs::write(dir.join("formulas.tex"), doc()).expect("write formulas.tex");
     let out = Command::new("pdflatex")

@@ -333,7 +333,8 @@ fn bad_settings_are_errors() {
 
 /// A fresh directory for one test's output.
 fn out_dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("roll-coupling-{}-{name}", std::process::id()));
+    let d = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("roll-coupling-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d

@@ -58,7 +58,8 @@ fn analyze_prints_a_table_for_b_and_a_users_file() {
 
 #[test]
 fn bad_input_exits_2_with_a_message_naming_the_file_and_key() {
-    let dir = std::env::temp_dir().join(format!("model-cli-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("model-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let text = std::fs::read_to_string(repo("aircraft/a.toml")).unwrap();
     let bad = dir.join("bad.toml");

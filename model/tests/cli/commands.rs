@@ -52,7 +52,8 @@ fn convert_refuses_dimensional_and_bad_files_with_exit_2() {
 
 #[test]
 fn continue_reports_the_folds_of_fig_1_as_json_and_csv() {
-    let dir = std::env::temp_dir().join(format!("model-cli-cont-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("model-cli-cont-{}", std::process::id()));
     let csv = dir.join("a.csv");
     let v = json(&model(&[
         "continue",
@@ -117,7 +118,8 @@ fn continue_zero_sideslip_finds_the_branch_point_of_fig_9() {
 
 #[test]
 fn report_writes_every_figure_and_a_summary() {
-    let dir = std::env::temp_dir().join(format!("model-cli-report-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("model-cli-report-{}", std::process::id()));
     let out = model(&["report", "B", "--out", dir.to_str().unwrap()]);
     assert!(
         out.status.success(),
@@ -179,7 +181,8 @@ fn report_writes_every_figure_and_a_summary() {
 
 #[test]
 fn simulate_writes_a_time_history() {
-    let dir = std::env::temp_dir().join(format!("model-cli-sim-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("model-cli-sim-{}", std::process::id()));
     let csv = dir.join("run.csv");
     let out = model(&[
         "simulate",

@@ -40,7 +40,8 @@ fn scratch_file(name: &str, text: &str) -> PathBuf {
 
 /// Aircraft A's file with some values replaced, written to a temporary folder.
 fn variant(tag: &str, replace: &[(&str, &str)]) -> (PathBuf, PathBuf) {
-    let dir = std::env::temp_dir().join(format!("model-cli-{tag}-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("model-cli-{tag}-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let mut text = std::fs::read_to_string(repo("aircraft/a.toml")).unwrap();
     for (from, to) in replace {
@@ -54,7 +55,8 @@ fn variant(tag: &str, replace: &[(&str, &str)]) -> (PathBuf, PathBuf) {
 
 /// A fresh temporary folder for one test.
 fn scratch(tag: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("model-cli-{tag}-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("model-cli-{tag}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir

@@ -11,6 +11,14 @@ use model::aircraft::{Aircraft, Param};
 use model::analysis::{Analysis, JumpPoint};
 use num_rational::BigRational;
 
+/// The path of a test's scratch file or folder `name` (tagged with the process) in Cargo's
+/// scratch space for integration tests, under target/, so that no run leaves files in the
+/// system's temporary folder.
+pub fn scratch(name: &str) -> std::path::PathBuf {
+    let tagged = format!("{name}-{}", std::process::id());
+    std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(tagged)
+}
+
 /// The environment variable that asks the randomised tests for their full size.
 pub const FULL_SIZE: &str = "ROLL_FULL_SIZE";
 

@@ -3,7 +3,7 @@
 //! trim condition there ([`trim_condition_at`]), and the unconstrained roll's quantities as
 //! polynomials in delta_a ([`at_roll_rate`], what clearance evaluates over a box).
 
-use super::branch::trim_states;
+use super::branch::of_trim_states;
 use super::characteristic::hopf_in;
 use super::compiled::{Characteristic, Parametric};
 use super::isolate::Uncertified;
@@ -11,7 +11,6 @@ use super::mode::{AtP0, Da, Mode};
 use super::num::Num;
 use super::rolls::{zs_trim_in, Unconstrained, ZeroSideslip};
 use super::values::Values;
-use crate::derivation::{TrimProducts, TRIM_DEGREE};
 use crate::interval::I;
 
 /// Which criterion polynomial [`value_at`] encloses.
@@ -121,10 +120,8 @@ pub fn trim_condition_of_states(v: &Values, x: f64, da: f64) -> Option<I> {
     if det_a.contains_zero() {
         return None;
     }
-    let (num, den) = trim_states(&mut m, v, I::point(da), true)?;
-    let mut products = TrimProducts::new(&mut m, &den, TRIM_DEGREE);
     let roll = &Parametric::get().roll;
-    let p_dot = m.clear_with(roll, &v.lifted.roll, &num, &den, &mut products);
+    let p_dot = of_trim_states(&mut m, v, I::point(da), roll, &v.lifted.roll)?;
     Some(p_dot.at(I::point(da)) * det_a.sqr())
 }
 

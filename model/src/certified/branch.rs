@@ -21,8 +21,8 @@
 //! isolating the roots of the jump resultant on every other branch.
 
 use super::characteristic::hopf_in;
-use super::compiled::{Characteristic, Parametric};
-use super::dense::horner;
+use super::compiled::{Characteristic, Cleared, Parametric};
+use super::dense::{horner, Dense2};
 use super::elimination::Scalar;
 use super::isolate::{Bracket, Uncertified};
 use super::mode::{AtP0, Da, Mode, OverPiece};
@@ -545,12 +545,7 @@ where
 /// The trim at the aileron `da` as numerators (constants in delta_a) over their denominator
 /// det A, or with `per_trim` the trim states themselves (the numerators divided by det A, the
 /// denominator 1); `None` where det A may vanish.
-pub(super) fn trim_states<M, T>(
-    m: &mut M,
-    v: &Values,
-    da: T,
-    per_trim: bool,
-) -> Option<([Da<T>; 4], Da<T>)>
+fn trim_states<M, T>(m: &mut M, v: &Values, da: T, per_trim: bool) -> Option<([Da<T>; 4], Da<T>)>
 where
     M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
     T: Num,
@@ -592,13 +587,27 @@ where
         let u = Unconstrained::new(&mut m, &v.lifted).ok()?;
         return Some(u.on_trim(&mut m, &v.lifted, true).at(da));
     }
-    let (num, den) = trim_states(&mut m, v, da, true)?;
-    let mut products = TrimProducts::new(&mut m, &den, TRIM_DEGREE);
     let c = &Parametric::get().det_j5;
-    Some(
-        m.clear_with(c, &v.lifted.det_j5, &num, &den, &mut products)
-            .at(da),
-    )
+    Some(of_trim_states(&mut m, v, da, c, &v.lifted.det_j5)?.at(da))
+}
+
+/// The grouped result `c` (its group coefficients lifted as `lifted`) of the trim states
+/// themselves at the aileron `da` (the numerators divided by det A, [`trim_states`]), in the
+/// ring `m`; `None` where det A may vanish.
+pub(super) fn of_trim_states<M, T>(
+    m: &mut M,
+    v: &Values,
+    da: T,
+    c: &Cleared,
+    lifted: &[Dense2<I>],
+) -> Option<Da<T>>
+where
+    M: Mode<Num = I, Value = Da<T>, Coef = Scalar<T>>,
+    T: Num,
+{
+    let (num, den) = trim_states(m, v, da, true)?;
+    let mut products = TrimProducts::new(m, &den, TRIM_DEGREE);
+    Some(m.clear_with(c, lifted, &num, &den, &mut products))
 }
 
 /// An enclosure of the determinant `det` in the ring `m` with the aileron `da` (per trim state

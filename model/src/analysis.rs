@@ -603,7 +603,7 @@ pub(crate) fn branch_aileron(g: &InAileron, p0: f64, da: f64) -> f64 {
     let (value, slope) = c
         .iter()
         .rev()
-        .fold((0.0, 0.0), |(v, s), c| (v * da + c, s * da + v));
+        .fold((0.0, 0.0), |(v, s), ci| (v * da + ci, s * da + v));
     let step = value / slope;
     if step.is_finite() && step.abs() <= 1e-6 * (1.0 + da.abs()) {
         da - step

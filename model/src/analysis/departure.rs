@@ -103,6 +103,30 @@ pub struct FirstDeparture {
 }
 
 impl FirstDeparture {
+    /// Whether it is a jump or Hopf point whose trim lies outside the validity range.
+    pub fn outside_validity(&self) -> bool {
+        self.within_validity == Some(false)
+    }
+
+    /// The departure of `kind` at the jump or Hopf point `j`: its roll rate, aileron, trim
+    /// angles and validity, the rest of its kind's fields to be filled in.
+    fn at_point(kind: &'static str, j: &JumpPoint) -> FirstDeparture {
+        FirstDeparture {
+            kind,
+            p0: j.p0,
+            delta_a_rad: j.delta_a_rad,
+            delta_a_deg: j.delta_a_deg,
+            alpha: Some(j.alpha),
+            beta: Some(j.beta),
+            within_validity: Some(j.within_validity),
+            omega: None,
+            l1: None,
+            hopf_kind: None,
+            lands_at: None,
+            unstable_trim: None,
+        }
+    }
+
     /// The departure at the branch's start, P0 = 0 and delta_a = 0, whose trim is `u`.
     fn at_start(u: UnstableTrim) -> FirstDeparture {
         FirstDeparture {
@@ -661,34 +685,16 @@ pub(crate) fn first_departure(
     };
     if let Some(j) = jump.get(i) {
         return Some(FirstDeparture {
-            kind: "jump",
-            p0: j.p0,
-            delta_a_rad: j.delta_a_rad,
-            delta_a_deg: j.delta_a_deg,
-            alpha: Some(j.alpha),
-            beta: Some(j.beta),
-            within_validity: Some(j.within_validity),
-            omega: None,
-            l1: None,
-            hopf_kind: None,
             lands_at: j.lands_at.clone(),
-            unstable_trim: None,
+            ..FirstDeparture::at_point("jump", j)
         });
     }
     let hp = hopf.get(i - jump.len())?;
     Some(FirstDeparture {
-        kind: "hopf",
-        p0: hp.point.p0,
-        delta_a_rad: hp.point.delta_a_rad,
-        delta_a_deg: hp.point.delta_a_deg,
-        alpha: Some(hp.point.alpha),
-        beta: Some(hp.point.beta),
-        within_validity: Some(hp.point.within_validity),
         omega: Some(hp.omega),
         l1: Some(hp.l1),
         hopf_kind: Some(hp.kind),
-        lands_at: None,
-        unstable_trim: None,
+        ..FirstDeparture::at_point("hopf", &hp.point)
     })
 }
 

@@ -176,7 +176,7 @@ fn answers(a: &Analysis) -> String {
         Some(f) => format!(
             "{}{} | {:.4} | {:.2}",
             f.kind,
-            if f.within_validity == Some(false) {
+            if f.outside_validity() {
                 " (outside validity range)"
             } else {
                 ""

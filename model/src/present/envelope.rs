@@ -7,6 +7,7 @@ use super::numbers::fixed;
 use super::options::{elevator, EnvelopeArgs};
 use super::outputs::{begin_folder, commit_folder};
 use super::progress::{progress_bar, set};
+use crate::analysis::FirstDeparture;
 use crate::envelope::source::Source;
 use crate::envelope::uncertainty::Uncertainty;
 use crate::envelope::validation::validate_envelope;
@@ -185,10 +186,10 @@ pub fn departure_kind(p: &Point) -> &'static str {
 
 /// Whether the first departure at `p` is a jump or Hopf point whose trim lies outside the
 /// aircraft's validity range.
-fn beyond_validity(p: &Point) -> bool {
+pub fn beyond_validity(p: &Point) -> bool {
     p.first_departure
         .as_ref()
-        .is_some_and(|d| d.within_validity == Some(false))
+        .is_some_and(FirstDeparture::outside_validity)
 }
 
 /// The headers of the flight state's columns that begin every table's rows: altitude, Mach and

@@ -16,7 +16,7 @@
 //! they still show a departure where the line cannot be drawn (a grid of one row or one
 //! column, a point whose neighbours have no margin).
 
-use super::envelope::departure_kind;
+use super::envelope::{beyond_validity, departure_kind};
 use crate::envelope::{Envelope, Point, SpeedAxis};
 use crate::plot::isoline::{isolines, Field};
 use crate::plot::TextAt;
@@ -272,17 +272,12 @@ fn beyond_the_stick(p: &Point) -> Option<bool> {
 /// linear aerodynamics' departure, which the aircraft's own need not share.
 pub fn departure_regions(env: &Envelope, style: &PlotStyle) -> Figure {
     let title = format!("{}: first departure on the primary branch", env.aircraft);
-    let outside = |p: &Point| {
-        p.first_departure
-            .as_ref()
-            .is_some_and(|d| d.within_validity == Some(false))
-    };
     cells(
         env,
         title,
         style,
         &|p| match (departure_kind(p), beyond_the_stick(p)) {
-            (_, _) if outside(p) => (
+            _ if beyond_validity(p) => (
                 BEYOND_VALIDITY,
                 "jump or Hopf outside the validity range".to_string(),
                 7,

@@ -99,12 +99,13 @@ pub(super) fn on_branch(
 }
 
 /// Where the walks along the branch end: at the aileron range, or where the f64 walk of the
-/// branch (`walk`, without jump roots) starts the step that meets the first divergence roll rate (the exact
-/// path reports the divergence there, and no jump root between there and the divergence: the
-/// jump determinant, which holds the factor `det(A)^2`, need not be decided up to it). Where
-/// the f64 walk meets it after the branch turned in P0, the walks end at the first divergence
-/// roll rate: the certified walk past the turn (in delta_a) does not cover a branch that comes
-/// back to it, and a root before the turn is one the f64 walk must reach too.
+/// branch (`walk`, without jump roots) starts the step that meets the first divergence roll
+/// rate (the exact path reports the divergence there, and no jump root between there and the
+/// divergence: the jump determinant, which holds the factor `det(A)^2`, need not be decided up
+/// to it). Where the f64 walk meets it after the branch turned in P0, the walks end at the
+/// first divergence roll rate: the certified walk past the turn (in delta_a) does not cover a
+/// branch that comes back to it, and a root before the turn is one the f64 walk must reach
+/// too.
 fn end(aircraft: &Aircraft, walk: &Walk, divergence: &[Bracket]) -> Result<BranchEnd, Uncertified> {
     let bound = aircraft.aileron_range();
     let first = divergence.first().map_or(f64::INFINITY, |b| b.lo);
